@@ -1,0 +1,26 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+namespace crumple::ffd
+{
+
+/// What one FfdDeformer::ApplyDent did; counts are for instrumentation, tests and benchmarks.
+struct DentReport
+{
+    int mPointsApplied = 0;        ///< Constrained points that reached a zone (after merging)
+    int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance
+    int mPointsIgnored = 0;        ///< Points outside every zone (beyond the capture distance)
+    int mControlsChanged = 0;      ///< Controls whose displacement changed
+    int mControlsClamped = 0;      ///< Controls limited by the step bound or the zone's maximum total deformation
+    int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B): > 0 for coincident/collinear sets
+    std::uint32_t mVerticesMoved = 0;    ///< Vertices whose position was recomputed
+    std::uint32_t mTrianglesUpdated = 0; ///< Triangles whose face normal was recomputed
+    std::uint32_t mNormalsUpdated = 0;   ///< Vertices whose normal was recomputed
+    double mMaxPointError = 0.0;   ///< Max over applied points of |achieved - wanted displacement| (m)
+    double mMaxWanted = 0.0;       ///< Max wanted displacement magnitude (m), to make mMaxPointError relative
+};
+
+} // namespace crumple::ffd

@@ -1,0 +1,118 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/ffd/DentReport.h>
+#include <crumple/ffd/FfdDeformerSettings.h>
+#include <crumple/ffd/FfdLattice.h>
+#include <crumple/ffd/PointDisplacement.h>
+#include <crumple/ffd/TriangleMesh.h>
+#include <crumple/ffd/VertexRange.h>
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace crumple::ffd
+{
+
+/// Dents a render mesh through one or more FFD zones by direct manipulation (D4MD section 6.2).
+///
+/// Each vertex is bound once to the first zone whose box holds its rest position: its cell and local
+/// parameter are precomputed and it is bucketed by cell. A dent solves dC = B^+ dP per zone, then
+/// recomputes only the vertices in cells that a changed control reaches (a control reaches 4 cells per
+/// axis), the face normals of their triangles and the normals of those triangles' vertices. The rest mesh
+/// is kept, so damage can be reset or restored exactly. Not thread-safe; one deformer per object.
+class FfdDeformer
+{
+public:
+    /// Validates the mesh and zones and binds vertices.
+    static Result<FfdDeformer> Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings);
+
+    /// Moves each point by its displacement (body frame, m), accumulating onto earlier dents.
+    /// Points are assigned to zones; each zone solves its own minimum-norm system; control displacements
+    /// are clamped to the zone's maximum total deformation. A NaN/Inf anywhere refuses the whole dent and
+    /// changes nothing. A dent whose displacements are all zero changes no byte.
+    /// @param[in] inMaxStep  bound on how far this dent may move any point (m), enforced like the total
+    ///                       bound: on each control's change, so |change of any point| <= inMaxStep
+    Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
+                                 double inMaxStep = std::numeric_limits<double>::infinity());
+
+    /// Restores the undeformed mesh (all control displacements zero). Marks changed vertices dirty.
+    void Reset();
+
+    /// Recomputes every vertex and normal from the control displacements (the reference that the
+    /// incremental update must equal; also used after a load).
+    void RecomputeAll();
+
+    /// Replaces all control displacements (one vector per zone, in ControlIndex order), e.g. from a saved
+    /// state. Refused, changing nothing, when counts differ, a value is not finite or exceeds its zone's
+    /// maximum total deformation.
+    Status SetControlDisplacements(std::span<const std::vector<Vec3>> inPerZone);
+    /// The checks of SetControlDisplacements without the change, so a caller holding several deformers
+    /// can validate all of them before changing any.
+    Status ValidateControlDisplacements(std::span<const std::vector<Vec3>> inPerZone) const;
+
+    /// Current (deformed) positions, body frame (m), #V
+    const std::vector<Vec3>& GetPositions() const { return mPositions; }
+    /// Current unit vertex normals (area-weighted), body frame, #V
+    const std::vector<Vec3>& GetNormals() const { return mNormals; }
+    /// The undeformed mesh
+    const TriangleMesh& GetRestMesh() const { return mRestMesh; }
+    /// Zones, in settings order
+    const std::vector<FfdLattice>& GetZones() const { return mZones; }
+    const FfdDeformerSettings& GetSettings() const { return mSettings; }
+    /// Index of the zone a vertex is bound to, -1 when it is in none (it never moves)
+    int GetVertexZone(std::uint32_t inVertex) const { return mVertexZone[inVertex]; }
+    /// Smallest control spacing over all zones (m): the scale below which contacts need no interpolation
+    double GetMinSpacing() const;
+
+    /// Vertex ranges changed since the last call, then forgets them (for the game's buffer upload).
+    std::vector<VertexRange> TakeDirtyRanges();
+    /// Vertex ranges changed since the last TakeDirtyRanges, without forgetting them.
+    std::vector<VertexRange> PeekDirtyRanges() const { return VertexRangesFromFlags(mDirty); }
+
+    /// Running count of vertex evaluations (positions recomputed): proves that idle frames do no
+    /// per-vertex work without timing anything.
+    std::uint64_t GetVertexEvaluationCount() const { return mVertexEvaluations; }
+
+private:
+    FfdDeformer() = default;
+
+    // Where a deformed body-frame point lies in zone inZone, in rest lattice coordinates.
+    Vec3 RestLatticeCoordinate(int inZone, const Vec3& inPoint) const;
+    // Recompute positions of vertices in cells reached by inControls of inZone, then their normals.
+    void UpdateReachedVertices(int inZone, std::span<const int> inControls, DentReport& ioReport);
+    // Recompute face normals of triangles touching inMoved, then vertex normals of their corners.
+    void UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport);
+    Vec3 VertexNormal(std::uint32_t inVertex) const;
+    Vec3 FaceNormal(std::uint32_t inTriangle) const;
+
+    FfdDeformerSettings mSettings;
+    TriangleMesh mRestMesh;
+    std::vector<FfdLattice> mZones;
+
+    std::vector<Vec3> mPositions;
+    std::vector<Vec3> mNormals;
+    std::vector<Vec3> mFaceNormals;  ///< Unnormalized (area-weighted) face normals, #F
+    std::vector<Vec3> mRestNormals;
+
+    std::vector<int> mVertexZone;                 ///< #V zone index or -1
+    std::vector<LatticeLocation> mVertexLocation; ///< #V rest lattice location in its zone
+    std::vector<std::vector<std::uint32_t>> mCellStart;    ///< Per zone: CSR offsets, #cells + 1
+    std::vector<std::vector<std::uint32_t>> mCellVertices; ///< Per zone: vertices bucketed by cell
+    std::vector<std::uint32_t> mVertexTriangleStart;       ///< CSR offsets, #V + 1
+    std::vector<std::uint32_t> mVertexTriangles;           ///< Triangles around each vertex
+
+    // Scratch marks, all zero between calls.
+    std::vector<std::uint8_t> mCellMark;
+    std::vector<std::uint8_t> mTriangleMark;
+    std::vector<std::uint8_t> mVertexMark;
+
+    std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges
+    std::uint64_t mVertexEvaluations = 0;
+};
+
+} // namespace crumple::ffd

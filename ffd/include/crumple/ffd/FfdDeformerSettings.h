@@ -1,0 +1,36 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/ffd/DirectManipulation.h>
+#include <crumple/ffd/FfdLatticeSettings.h>
+
+#include <vector>
+
+namespace crumple::ffd
+{
+
+/// One deformation zone: a lattice and the most its points may ever move.
+struct FfdZoneSettings
+{
+    FfdLatticeSettings mLattice;        ///< The zone's volume and control resolution
+    double mMaxTotalDeformation = 0.25; ///< Bound on the total displacement of any point of the zone (m), >= 0.
+                                        ///< Enforced on the controls: a point's displacement is a convex
+                                        ///< combination of its controls', so |d(point)| <= max |d(control)|.
+};
+
+/// Settings of an FfdDeformer: the zones of one object and the solver's tolerances.
+struct FfdDeformerSettings
+{
+    std::vector<FfdZoneSettings> mZones; ///< One or more zones; a vertex belongs to the first zone containing it
+    double mRankTolerance = cDefaultRankTolerance; ///< Relative pivot threshold of B^+ (see DirectManipulation.h)
+    double mMergeDistance = 0.1;   ///< Constrained points of one dent closer than this, in lattice cells (max norm),
+                                   ///< are merged and their displacements averaged: a cubic B-spline cannot bend
+                                   ///< between them, and keeping both would only make B ill-conditioned
+    double mCaptureDistance = 0.5; ///< A constrained point outside every zone but within this many cells of one
+                                   ///< is moved onto its box; points further out are ignored (and counted)
+    int mInverseIterations = 3;    ///< Fixed-point iterations mapping a deformed point back to its rest lattice
+                                   ///< coordinate, so that repeated dents compose exactly where they are aimed
+};
+
+} // namespace crumple::ffd

@@ -1,0 +1,434 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/FfdDeformer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace crumple::ffd
+{
+
+namespace
+{
+
+// A constrained point after zone assignment and merging.
+struct ZonePoint
+{
+    Vec3 mLattice;      // rest lattice coordinate
+    Vec3 mDisplacement; // wanted displacement (m), averaged over merged points
+    int mMergedCount = 1;
+};
+
+} // namespace
+
+Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings)
+{
+    // Validate everything before building anything.
+    if (Status mesh_status = ValidateTriangleMesh(inRestMesh); !mesh_status)
+        return mesh_status.GetError();
+    if (inSettings.mZones.empty())
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mZones is empty: a deformer needs a zone");
+    if (!(inSettings.mRankTolerance > 0.0 && inSettings.mRankTolerance < 1.0))
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mRankTolerance must be in (0, 1)");
+    if (!(inSettings.mMergeDistance >= 0.0 && inSettings.mMergeDistance < 1.0))
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mMergeDistance must be in [0, 1) cells");
+    if (!(inSettings.mCaptureDistance >= 0.0 && inSettings.mCaptureDistance <= 4.0))
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mCaptureDistance must be in [0, 4] cells");
+    if (inSettings.mInverseIterations < 0 || inSettings.mInverseIterations > 32)
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mInverseIterations must be in [0, 32]");
+
+    FfdDeformer deformer;
+    for (std::size_t z = 0; z < inSettings.mZones.size(); ++z)
+    {
+        const FfdZoneSettings& zone = inSettings.mZones[z];
+        if (!(std::isfinite(zone.mMaxTotalDeformation) && zone.mMaxTotalDeformation >= 0.0))
+            return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mZones[" + std::to_string(z) +
+                                                          "].mMaxTotalDeformation must be finite and >= 0 m");
+        Result<FfdLattice> lattice = FfdLattice::Create(zone.mLattice);
+        if (!lattice)
+            return MakeError(lattice.GetError().mCode,
+                             "mZones[" + std::to_string(z) + "]: " + lattice.GetError().mMessage);
+        deformer.mZones.push_back(std::move(lattice).Get());
+    }
+    deformer.mSettings = inSettings;
+    deformer.mRestMesh = std::move(inRestMesh);
+
+    const auto vertex_count = static_cast<std::uint32_t>(deformer.mRestMesh.mPositions.size());
+    const auto triangle_count = static_cast<std::uint32_t>(deformer.mRestMesh.mTriangles.size());
+
+    // Bind each vertex to the first zone holding its rest position (a hair of tolerance for box faces).
+    constexpr double cBindMargin = 1.0e-9;
+    deformer.mVertexZone.assign(vertex_count, -1);
+    deformer.mVertexLocation.assign(vertex_count, LatticeLocation{});
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+        {
+            const Vec3 u = deformer.mZones[z].LatticeCoordinate(deformer.mRestMesh.mPositions[v]);
+            if (deformer.mZones[z].Contains(u, cBindMargin))
+            {
+                deformer.mVertexZone[v] = static_cast<int>(z);
+                deformer.mVertexLocation[v] = deformer.mZones[z].Locate(u);
+                break;
+            }
+        }
+
+    // Bucket vertices by cell per zone (counting sort keeps ascending vertex order inside a cell).
+    std::size_t max_cells = 0;
+    deformer.mCellStart.resize(deformer.mZones.size());
+    deformer.mCellVertices.resize(deformer.mZones.size());
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+    {
+        const FfdLattice& lattice = deformer.mZones[z];
+        const auto cells = static_cast<std::size_t>(lattice.GetCellTotal());
+        max_cells = std::max(max_cells, cells);
+        std::vector<std::uint32_t>& start = deformer.mCellStart[z];
+        start.assign(cells + 1, 0);
+        for (std::uint32_t v = 0; v < vertex_count; ++v)
+            if (deformer.mVertexZone[v] == static_cast<int>(z))
+                ++start[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell)) + 1];
+        for (std::size_t c = 0; c < cells; ++c)
+            start[c + 1] += start[c];
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        deformer.mCellVertices[z].resize(start[cells]);
+        for (std::uint32_t v = 0; v < vertex_count; ++v)
+            if (deformer.mVertexZone[v] == static_cast<int>(z))
+                deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell))]++] = v;
+    }
+
+    // Vertex -> triangle adjacency for normal updates.
+    deformer.mVertexTriangleStart.assign(vertex_count + 1, 0);
+    for (const auto& triangle : deformer.mRestMesh.mTriangles)
+        for (std::uint32_t v : triangle)
+            ++deformer.mVertexTriangleStart[v + 1];
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        deformer.mVertexTriangleStart[v + 1] += deformer.mVertexTriangleStart[v];
+    deformer.mVertexTriangles.resize(deformer.mVertexTriangleStart[vertex_count]);
+    std::vector<std::uint32_t> fill(deformer.mVertexTriangleStart.begin(), deformer.mVertexTriangleStart.end() - 1);
+    for (std::uint32_t f = 0; f < triangle_count; ++f)
+        for (std::uint32_t v : deformer.mRestMesh.mTriangles[f])
+            deformer.mVertexTriangles[fill[v]++] = f;
+
+    deformer.mCellMark.assign(max_cells, 0);
+    deformer.mTriangleMark.assign(triangle_count, 0);
+    deformer.mVertexMark.assign(vertex_count, 0);
+    deformer.mDirty.assign(vertex_count, 0);
+    deformer.mPositions = deformer.mRestMesh.mPositions;
+    deformer.mNormals.assign(vertex_count, Vec3::Zero());
+    deformer.mFaceNormals.assign(triangle_count, Vec3::Zero());
+    deformer.RecomputeAll();
+    deformer.mRestNormals = deformer.mNormals;
+    std::fill(deformer.mDirty.begin(), deformer.mDirty.end(), std::uint8_t{0});
+    deformer.mVertexEvaluations = 0;
+    return deformer;
+}
+
+double FfdDeformer::GetMinSpacing() const
+{
+    double spacing = std::numeric_limits<double>::infinity();
+    for (const FfdLattice& zone : mZones)
+        spacing = std::min(spacing, zone.GetSpacing().minCoeff());
+    return spacing;
+}
+
+Vec3 FfdDeformer::RestLatticeCoordinate(int inZone, const Vec3& inPoint) const
+{
+    // The point lies on the deformed surface: solve rest(u) + D(u) = p by fixed-point iteration
+    // u <- L(p - D(u)), which converges while the displacement field does not fold the lattice.
+    const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
+    Vec3 u = zone.LatticeCoordinate(inPoint);
+    for (int iteration = 0; iteration < mSettings.mInverseIterations; ++iteration)
+        u = zone.LatticeCoordinate(inPoint - zone.Displacement(zone.Locate(u)));
+    return u;
+}
+
+Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inPoints, double inMaxStep)
+{
+    // Refuse the whole dent before touching anything.
+    for (std::size_t i = 0; i < inPoints.size(); ++i)
+        if (!IsFinite(inPoints[i].mPoint) || !IsFinite(inPoints[i].mDisplacement))
+            return MakeError(EError::NonFinite, "ApplyDent: point " + std::to_string(i) + " is not finite");
+    if (!(inMaxStep >= 0.0))
+        return MakeError(EError::InvalidArgument, "ApplyDent: the maximum step must be >= 0 m");
+
+    DentReport report;
+    const bool any_motion = std::any_of(inPoints.begin(), inPoints.end(),
+                                        [](const PointDisplacement& p) { return !p.mDisplacement.isZero(0.0); });
+    if (!any_motion)
+        return report;
+
+    // Assign each point to the first zone that holds it (within the capture distance), then merge
+    // near-coincident points of a zone by averaging their displacements.
+    std::vector<std::vector<ZonePoint>> zone_points(mZones.size());
+    for (const PointDisplacement& point : inPoints)
+    {
+        report.mMaxWanted = std::max(report.mMaxWanted, point.mDisplacement.norm());
+        int zone_index = -1;
+        for (std::size_t z = 0; z < mZones.size() && zone_index < 0; ++z)
+            if (mZones[z].Contains(mZones[z].LatticeCoordinate(point.mPoint), mSettings.mCaptureDistance))
+                zone_index = static_cast<int>(z);
+        if (zone_index < 0)
+        {
+            ++report.mPointsIgnored;
+            continue;
+        }
+        const FfdLattice& zone = mZones[static_cast<std::size_t>(zone_index)];
+        Vec3 u = RestLatticeCoordinate(zone_index, point.mPoint);
+        u = u.cwiseMax(Vec3::Zero()).cwiseMin(Vec3(zone.GetCellCount()[0], zone.GetCellCount()[1], zone.GetCellCount()[2]));
+        std::vector<ZonePoint>& points = zone_points[static_cast<std::size_t>(zone_index)];
+        auto near = std::find_if(points.begin(), points.end(), [&](const ZonePoint& p) {
+            return (p.mLattice - u).cwiseAbs().maxCoeff() < mSettings.mMergeDistance;
+        });
+        if (near != points.end())
+        {
+            // Running sum; divided by the count below.
+            near->mDisplacement += point.mDisplacement;
+            ++near->mMergedCount;
+            ++report.mPointsMerged;
+        }
+        else
+            points.push_back({u, point.mDisplacement, 1});
+    }
+
+    for (std::size_t z = 0; z < mZones.size(); ++z)
+    {
+        std::vector<ZonePoint>& points = zone_points[z];
+        if (points.empty())
+            continue;
+        FfdLattice& zone = mZones[z];
+        std::vector<LatticeLocation> locations;
+        Eigen::MatrixX3d wanted(static_cast<Eigen::Index>(points.size()), 3);
+        for (std::size_t i = 0; i < points.size(); ++i)
+        {
+            locations.push_back(zone.Locate(points[i].mLattice));
+            wanted.row(static_cast<Eigen::Index>(i)) = (points[i].mDisplacement / points[i].mMergedCount).transpose();
+        }
+        report.mPointsApplied += static_cast<int>(points.size());
+
+        // Solve dC = B^+ dP over the controls these points reach.
+        const DirectManipulationData data = DirectManipulationPrecompute(zone, locations, mSettings.mRankTolerance);
+        report.mRankDeficiency += static_cast<int>(points.size()) - data.mRank;
+        const Eigen::MatrixX3d control_delta = DirectManipulationSolve(data, wanted);
+
+        // Where the points are now, to measure what the dent achieved.
+        std::vector<Vec3> before(locations.size());
+        for (std::size_t i = 0; i < locations.size(); ++i)
+            before[i] = zone.Displacement(locations[i]);
+
+        // Accumulate onto earlier dents: the change clamped to the step bound, the sum to the zone's maximum
+        // total deformation (a point moves by a convex combination of its controls, so it obeys both).
+        const double max_total = mSettings.mZones[z].mMaxTotalDeformation;
+        std::vector<Vec3>& controls = zone.GetControlDisplacements();
+        std::vector<int> changed;
+        for (std::size_t k = 0; k < data.mControls.size(); ++k)
+        {
+            Vec3 delta = control_delta.row(static_cast<Eigen::Index>(k)).transpose();
+            if (delta.isZero(0.0) || !IsFinite(delta))
+                continue;
+            if (const double step = delta.norm(); step > inMaxStep)
+            {
+                delta *= inMaxStep / step;
+                ++report.mControlsClamped;
+            }
+            Vec3& control = controls[static_cast<std::size_t>(data.mControls[k])];
+            Vec3 total = control + delta;
+            const double length = total.norm();
+            if (length > max_total)
+            {
+                total *= max_total / length;
+                ++report.mControlsClamped;
+            }
+            if (total == control)
+                continue;
+            control = total;
+            changed.push_back(data.mControls[k]);
+        }
+        report.mControlsChanged += static_cast<int>(changed.size());
+        UpdateReachedVertices(static_cast<int>(z), changed, report);
+
+        for (std::size_t i = 0; i < locations.size(); ++i)
+        {
+            const Vec3 achieved = zone.Displacement(locations[i]) - before[i];
+            const Vec3 target = wanted.row(static_cast<Eigen::Index>(i)).transpose();
+            report.mMaxPointError = std::max(report.mMaxPointError, (achieved - target).norm());
+        }
+    }
+    return report;
+}
+
+void FfdDeformer::UpdateReachedVertices(int inZone, std::span<const int> inControls, DentReport& ioReport)
+{
+    if (inControls.empty())
+        return;
+    const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
+    const std::array<int, 3>& n = zone.GetSettings().mControlCount;
+    const std::array<int, 3>& cells = zone.GetCellCount();
+
+    // A control (a,b,c) reaches cells a-3..a per axis: mark them once.
+    std::vector<int> touched_cells;
+    for (int control : inControls)
+    {
+        const int a = control % n[0];
+        const int b = (control / n[0]) % n[1];
+        const int c = control / (n[0] * n[1]);
+        for (int k = std::max(c - 3, 0); k <= std::min(c, cells[2] - 1); ++k)
+            for (int j = std::max(b - 3, 0); j <= std::min(b, cells[1] - 1); ++j)
+                for (int i = std::max(a - 3, 0); i <= std::min(a, cells[0] - 1); ++i)
+                {
+                    const int cell = zone.CellIndex({i, j, k});
+                    if (mCellMark[static_cast<std::size_t>(cell)] == 0)
+                    {
+                        mCellMark[static_cast<std::size_t>(cell)] = 1;
+                        touched_cells.push_back(cell);
+                    }
+                }
+    }
+    std::sort(touched_cells.begin(), touched_cells.end());
+
+    // Recompute the vertices bucketed in those cells.
+    const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(inZone)];
+    const std::vector<std::uint32_t>& bucket = mCellVertices[static_cast<std::size_t>(inZone)];
+    std::vector<std::uint32_t> moved;
+    for (int cell : touched_cells)
+    {
+        mCellMark[static_cast<std::size_t>(cell)] = 0;
+        for (std::uint32_t i = start[static_cast<std::size_t>(cell)]; i < start[static_cast<std::size_t>(cell) + 1]; ++i)
+        {
+            const std::uint32_t v = bucket[i];
+            mPositions[v] = mRestMesh.mPositions[v] + zone.Displacement(mVertexLocation[v]);
+            mDirty[v] = 1;
+            moved.push_back(v);
+        }
+    }
+    mVertexEvaluations += moved.size();
+    ioReport.mVerticesMoved += static_cast<std::uint32_t>(moved.size());
+    UpdateNormalsAround(moved, ioReport);
+}
+
+Vec3 FfdDeformer::FaceNormal(std::uint32_t inTriangle) const
+{
+    const auto& t = mRestMesh.mTriangles[inTriangle];
+    // Cross product of two edges: length is twice the area, so summing gives area weighting.
+    return (mPositions[t[1]] - mPositions[t[0]]).cross(mPositions[t[2]] - mPositions[t[0]]);
+}
+
+Vec3 FfdDeformer::VertexNormal(std::uint32_t inVertex) const
+{
+    Vec3 sum = Vec3::Zero();
+    for (std::uint32_t i = mVertexTriangleStart[inVertex]; i < mVertexTriangleStart[inVertex + 1]; ++i)
+        sum += mFaceNormals[mVertexTriangles[i]];
+    const double length = sum.norm();
+    // An isolated or degenerate vertex has no meaningful normal: report zero rather than NaN.
+    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
+}
+
+void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport)
+{
+    // Triangles touching a moved vertex.
+    std::vector<std::uint32_t> triangles;
+    for (std::uint32_t v : inMoved)
+        for (std::uint32_t i = mVertexTriangleStart[v]; i < mVertexTriangleStart[v + 1]; ++i)
+        {
+            const std::uint32_t f = mVertexTriangles[i];
+            if (mTriangleMark[f] == 0)
+            {
+                mTriangleMark[f] = 1;
+                triangles.push_back(f);
+            }
+        }
+    std::vector<std::uint32_t> corners;
+    for (std::uint32_t f : triangles)
+    {
+        mTriangleMark[f] = 0;
+        mFaceNormals[f] = FaceNormal(f);
+        for (std::uint32_t v : mRestMesh.mTriangles[f])
+            if (mVertexMark[v] == 0)
+            {
+                mVertexMark[v] = 1;
+                corners.push_back(v);
+            }
+    }
+    // Normals of every corner of those triangles (a corner may not have moved itself).
+    for (std::uint32_t v : corners)
+    {
+        mVertexMark[v] = 0;
+        mNormals[v] = VertexNormal(v);
+        mDirty[v] = 1;
+    }
+    ioReport.mTrianglesUpdated += static_cast<std::uint32_t>(triangles.size());
+    ioReport.mNormalsUpdated += static_cast<std::uint32_t>(corners.size());
+}
+
+void FfdDeformer::RecomputeAll()
+{
+    const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+    {
+        const int zone = mVertexZone[v];
+        const Vec3 position = zone < 0 ? mRestMesh.mPositions[v]
+                                       : Vec3(mRestMesh.mPositions[v] +
+                                              mZones[static_cast<std::size_t>(zone)].Displacement(mVertexLocation[v]));
+        if (position != mPositions[v])
+            mDirty[v] = 1;
+        mPositions[v] = position;
+    }
+    mVertexEvaluations += vertex_count;
+    for (std::uint32_t f = 0; f < mFaceNormals.size(); ++f)
+        mFaceNormals[f] = FaceNormal(f);
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+    {
+        const Vec3 normal = VertexNormal(v);
+        if (normal != mNormals[v])
+            mDirty[v] = 1;
+        mNormals[v] = normal;
+    }
+}
+
+void FfdDeformer::Reset()
+{
+    for (FfdLattice& zone : mZones)
+        std::fill(zone.GetControlDisplacements().begin(), zone.GetControlDisplacements().end(), Vec3::Zero());
+    RecomputeAll();
+}
+
+Status FfdDeformer::ValidateControlDisplacements(std::span<const std::vector<Vec3>> inPerZone) const
+{
+    if (inPerZone.size() != mZones.size())
+        return MakeError(EError::StateMismatch, "control state has " + std::to_string(inPerZone.size()) +
+                                                    " zones, the deformer " + std::to_string(mZones.size()));
+    for (std::size_t z = 0; z < mZones.size(); ++z)
+    {
+        if (inPerZone[z].size() != static_cast<std::size_t>(mZones[z].GetControlCount()))
+            return MakeError(EError::StateMismatch, "zone " + std::to_string(z) + ": control state has " +
+                                                        std::to_string(inPerZone[z].size()) + " controls, the lattice " +
+                                                        std::to_string(mZones[z].GetControlCount()));
+        const double limit = mSettings.mZones[z].mMaxTotalDeformation * (1.0 + 1.0e-12);
+        for (const Vec3& d : inPerZone[z])
+            if (!IsFinite(d) || d.norm() > limit)
+                return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) +
+                                                              ": a control displacement is not finite or exceeds the "
+                                                              "zone's maximum total deformation");
+    }
+    return Status::Ok();
+}
+
+Status FfdDeformer::SetControlDisplacements(std::span<const std::vector<Vec3>> inPerZone)
+{
+    // Validate all zones before changing any.
+    if (Status valid = ValidateControlDisplacements(inPerZone); !valid)
+        return valid;
+    for (std::size_t z = 0; z < mZones.size(); ++z)
+        mZones[z].GetControlDisplacements() = inPerZone[z];
+    RecomputeAll();
+    return Status::Ok();
+}
+
+std::vector<VertexRange> FfdDeformer::TakeDirtyRanges()
+{
+    std::vector<VertexRange> ranges = VertexRangesFromFlags(mDirty);
+    std::fill(mDirty.begin(), mDirty.end(), std::uint8_t{0});
+    return ranges;
+}
+
+} // namespace crumple::ffd

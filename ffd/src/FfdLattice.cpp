@@ -1,0 +1,124 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/CubicBSplineWeights.h>
+#include <crumple/ffd/FfdLattice.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace crumple::ffd
+{
+
+namespace
+{
+
+std::string AxisName(int inAxis)
+{
+    return std::string(1, static_cast<char>('x' + inAxis));
+}
+
+} // namespace
+
+Result<FfdLattice> FfdLattice::Create(const FfdLatticeSettings& inSettings)
+{
+    // Refuse anything that would make a lattice coordinate non-finite or a control index wrong.
+    if (!IsFinite(inSettings.mOrigin) || !IsFinite(inSettings.mSize) || !IsFinite(inSettings.mAxes))
+        return MakeError(EError::NonFinite, "FfdLatticeSettings: origin, axes and size must be finite");
+    if (!IsRotation(inSettings.mAxes, 1.0e-6))
+        return MakeError(EError::DegenerateGeometry,
+                         "FfdLatticeSettings.mAxes must be orthonormal with determinant +1");
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        if (!(inSettings.mSize[axis] > 1.0e-9))
+            return MakeError(EError::DegenerateGeometry, "FfdLatticeSettings.mSize." + AxisName(axis) + " = " +
+                                                             std::to_string(inSettings.mSize[axis]) +
+                                                             " m: the volume must have a positive size");
+        const int n = inSettings.mControlCount[axis];
+        if (n < FfdLatticeSettings::cMinControlsPerAxis || n > FfdLatticeSettings::cMaxControlsPerAxis)
+            return MakeError(EError::InvalidArgument, "FfdLatticeSettings.mControlCount." + AxisName(axis) + " = " +
+                                                          std::to_string(n) + ": a cubic lattice needs 4 to 256 "
+                                                                              "controls per axis");
+    }
+    return FfdLattice(inSettings);
+}
+
+FfdLattice::FfdLattice(const FfdLatticeSettings& inSettings) : mSettings(inSettings)
+{
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        mCellCount[axis] = inSettings.mControlCount[axis] - 3;
+        mSpacing[axis] = inSettings.mSize[axis] / mCellCount[axis];
+    }
+    const std::size_t count = static_cast<std::size_t>(inSettings.mControlCount[0]) * inSettings.mControlCount[1] *
+                              inSettings.mControlCount[2];
+    mControlDisplacements.assign(count, Vec3::Zero());
+}
+
+Vec3 FfdLattice::LatticeCoordinate(const Vec3& inBodyPoint) const
+{
+    return (mSettings.mAxes.transpose() * (inBodyPoint - mSettings.mOrigin)).cwiseQuotient(mSpacing);
+}
+
+bool FfdLattice::Contains(const Vec3& inU, double inMargin) const
+{
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(inU[axis] >= -inMargin && inU[axis] <= mCellCount[axis] + inMargin))
+            return false;
+    return true;
+}
+
+LatticeLocation FfdLattice::Locate(const Vec3& inU) const
+{
+    LatticeLocation location;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        // Clamp onto the box; u == n-3 belongs to the last cell with t = 1.
+        const double u = std::clamp(inU[axis], 0.0, static_cast<double>(mCellCount[axis]));
+        const int cell = std::min(static_cast<int>(std::floor(u)), mCellCount[axis] - 1);
+        location.mCell[axis] = cell;
+        location.mT[axis] = u - cell;
+    }
+    return location;
+}
+
+double FfdLattice::DistanceToBox(const Vec3& inBodyPoint) const
+{
+    const Vec3 local = mSettings.mAxes.transpose() * (inBodyPoint - mSettings.mOrigin);
+    const Vec3 outside = (-local).cwiseMax(local - mSettings.mSize).cwiseMax(Vec3::Zero());
+    return outside.norm();
+}
+
+Vec3 FfdLattice::RestControlPosition(int inA, int inB, int inC) const
+{
+    // Controls sit one spacing before the box: control a of cell i is at (i + a - 1) * spacing.
+    const Vec3 lattice_offset((inA - 1) * mSpacing.x(), (inB - 1) * mSpacing.y(), (inC - 1) * mSpacing.z());
+    return mSettings.mOrigin + mSettings.mAxes * lattice_offset;
+}
+
+Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation) const
+{
+    const std::array<double, 4> wx = CubicBSplineWeights(inLocation.mT.x());
+    const std::array<double, 4> wy = CubicBSplineWeights(inLocation.mT.y());
+    const std::array<double, 4> wz = CubicBSplineWeights(inLocation.mT.z());
+    const int nx = mSettings.mControlCount[0];
+    const int nxy = nx * mSettings.mControlCount[1];
+    const int base = ControlIndex(inLocation.mCell[0], inLocation.mCell[1], inLocation.mCell[2]);
+
+    // Fixed summation order (c, b, a) so the result is bitwise reproducible.
+    Vec3 sum = Vec3::Zero();
+    for (int c = 0; c < 4; ++c)
+    {
+        Vec3 plane = Vec3::Zero();
+        for (int b = 0; b < 4; ++b)
+        {
+            const Vec3* row = &mControlDisplacements[static_cast<std::size_t>(base + c * nxy + b * nx)];
+            const Vec3 line = wx[0] * row[0] + wx[1] * row[1] + wx[2] * row[2] + wx[3] * row[3];
+            plane += wy[b] * line;
+        }
+        sum += wz[c] * plane;
+    }
+    return sum;
+}
+
+} // namespace crumple::ffd

@@ -1,0 +1,235 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/InterpolateWideImpact.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace crumple::ffd
+{
+
+namespace
+{
+
+using Vec2 = Eigen::Vector2d;
+using Triangle = std::array<int, 3>;
+
+// Twice the signed area of (a, b, c): > 0 when counter-clockwise.
+double Orient(const Vec2& inA, const Vec2& inB, const Vec2& inC)
+{
+    return (inB.x() - inA.x()) * (inC.y() - inA.y()) - (inB.y() - inA.y()) * (inC.x() - inA.x());
+}
+
+// True when p lies strictly inside the circumcircle of the counter-clockwise triangle (a, b, c).
+bool InCircumcircle(const Vec2& inA, const Vec2& inB, const Vec2& inC, const Vec2& inP)
+{
+    const Vec2 a = inA - inP, b = inB - inP, c = inC - inP;
+    const double det = (a.squaredNorm()) * (b.x() * c.y() - c.x() * b.y()) -
+                       (b.squaredNorm()) * (a.x() * c.y() - c.x() * a.y()) +
+                       (c.squaredNorm()) * (a.x() * b.y() - b.x() * a.y());
+    return det > 0.0;
+}
+
+// Bowyer-Watson Delaunay triangulation of distinct 2D points; triangles are counter-clockwise.
+std::vector<Triangle> Delaunay(const std::vector<Vec2>& inPoints)
+{
+    const int n = static_cast<int>(inPoints.size());
+    Vec2 lo = inPoints[0], hi = inPoints[0];
+    for (const Vec2& p : inPoints)
+    {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const double extent = std::max((hi - lo).maxCoeff(), 1.0e-12);
+    const Vec2 centre = 0.5 * (lo + hi);
+    // A super-triangle far larger than the set, so its corners do not bend the hull.
+    std::vector<Vec2> vertices = inPoints;
+    vertices.push_back(centre + Vec2(-1.0e4 * extent, -1.0e4 * extent));
+    vertices.push_back(centre + Vec2(1.0e4 * extent, -1.0e4 * extent));
+    vertices.push_back(centre + Vec2(0.0, 1.0e4 * extent));
+    std::vector<Triangle> triangles{{n, n + 1, n + 2}};
+
+    for (int p = 0; p < n; ++p)
+    {
+        // Remove the triangles whose circumcircle holds p; keep their boundary edges.
+        std::map<std::pair<int, int>, int> edge_count;
+        std::vector<Triangle> kept;
+        std::vector<std::pair<int, int>> edges;
+        for (const Triangle& t : triangles)
+        {
+            if (InCircumcircle(vertices[t[0]], vertices[t[1]], vertices[t[2]], vertices[p]))
+            {
+                for (int e = 0; e < 3; ++e)
+                {
+                    const int a = t[e], b = t[(e + 1) % 3];
+                    edges.emplace_back(a, b);
+                    ++edge_count[{std::min(a, b), std::max(a, b)}];
+                }
+            }
+            else
+                kept.push_back(t);
+        }
+        // Re-triangulate the cavity from p.
+        for (const auto& [a, b] : edges)
+            if (edge_count[{std::min(a, b), std::max(a, b)}] == 1)
+                kept.push_back({a, b, p});
+        triangles = std::move(kept);
+    }
+    // Drop everything attached to the super-triangle.
+    std::vector<Triangle> result;
+    for (const Triangle& t : triangles)
+        if (t[0] < n && t[1] < n && t[2] < n && std::abs(Orient(vertices[t[0]], vertices[t[1]], vertices[t[2]])) > 0.0)
+            result.push_back(t);
+    return result;
+}
+
+PointDisplacement Lerp(const PointDisplacement& inA, const PointDisplacement& inB, double inT)
+{
+    return {inA.mPoint + inT * (inB.mPoint - inA.mPoint),
+            inA.mDisplacement + inT * (inB.mDisplacement - inA.mDisplacement)};
+}
+
+// Samples along segment a-b, strictly between its ends, every inSpacing at most.
+void SampleSegment(const PointDisplacement& inA, const PointDisplacement& inB, double inLength, double inSpacing,
+                   std::vector<PointDisplacement>& ioOut)
+{
+    const int pieces = static_cast<int>(std::ceil(inLength / inSpacing - 1.0e-9));
+    for (int k = 1; k < pieces; ++k)
+        ioOut.push_back(Lerp(inA, inB, static_cast<double>(k) / pieces));
+}
+
+std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> inPoints, double inSpacing)
+{
+    std::vector<PointDisplacement> out(inPoints.begin(), inPoints.end());
+
+    // Project on the plane normal to the mean dent direction (PCA normal when displacements cancel).
+    Vec3 centroid = Vec3::Zero();
+    Vec3 direction = Vec3::Zero();
+    for (const PointDisplacement& p : inPoints)
+    {
+        centroid += p.mPoint;
+        direction += p.mDisplacement;
+    }
+    centroid /= static_cast<double>(inPoints.size());
+    Mat3 covariance = Mat3::Zero();
+    for (const PointDisplacement& p : inPoints)
+        covariance += (p.mPoint - centroid) * (p.mPoint - centroid).transpose();
+    Eigen::SelfAdjointEigenSolver<Mat3> pca(covariance);
+    Vec3 normal = direction.norm() > 0.0 ? Vec3(direction.normalized()) : Vec3(pca.eigenvectors().col(0));
+    Vec3 e1 = normal.unitOrthogonal();
+    // Align the in-plane frame with the main spread, so a collinear set is detected on e1.
+    const Vec3 spread = pca.eigenvectors().col(2) - pca.eigenvectors().col(2).dot(normal) * normal;
+    if (spread.norm() > 1.0e-6)
+        e1 = spread.normalized();
+    const Vec3 e2 = normal.cross(e1);
+
+    // Distinct 2D points (coincident projections keep the first).
+    std::vector<Vec2> plane;
+    std::vector<int> source;
+    const double coincident = 1.0e-9 * inSpacing;
+    for (std::size_t i = 0; i < inPoints.size(); ++i)
+    {
+        const Vec3 d = inPoints[i].mPoint - centroid;
+        const Vec2 q(d.dot(e1), d.dot(e2));
+        if (std::none_of(plane.begin(), plane.end(), [&](const Vec2& o) { return (o - q).norm() <= coincident; }))
+        {
+            plane.push_back(q);
+            source.push_back(static_cast<int>(i));
+        }
+    }
+
+    double width = 0.0;
+    for (const Vec2& p : plane)
+        width = std::max(width, std::abs(p.y()));
+    if (plane.size() < 3 || width < 1.0e-6 * inSpacing)
+    {
+        // Collinear: sample consecutive points along the line.
+        std::vector<int> order(plane.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+            order[i] = static_cast<int>(i);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return plane[a].x() < plane[b].x(); });
+        for (std::size_t i = 1; i < order.size(); ++i)
+        {
+            const double length = (plane[order[i]] - plane[order[i - 1]]).norm();
+            SampleSegment(inPoints[source[order[i - 1]]], inPoints[source[order[i]]], length, inSpacing, out);
+        }
+        return out;
+    }
+
+    const std::vector<Triangle> triangles = Delaunay(plane);
+
+    // Edges longer than the spacing, each once.
+    std::set<std::pair<int, int>> edges;
+    for (const Triangle& t : triangles)
+        for (int e = 0; e < 3; ++e)
+            edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
+    for (const auto& [a, b] : edges)
+    {
+        const double length = (plane[a] - plane[b]).norm();
+        if (length > inSpacing)
+            SampleSegment(inPoints[source[a]], inPoints[source[b]], length, inSpacing, out);
+    }
+
+    // Grid samples strictly inside triangles, away from the given points.
+    Vec2 lo = plane[0];
+    for (const Vec2& p : plane)
+        lo = lo.cwiseMin(p);
+    std::set<std::pair<long, long>> taken;
+    for (const Triangle& t : triangles)
+    {
+        const Vec2 &a = plane[t[0]], &b = plane[t[1]], &c = plane[t[2]];
+        const double area = Orient(a, b, c);
+        const Vec2 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
+        for (long gy = static_cast<long>(std::ceil((tlo.y() - lo.y()) / inSpacing));
+             lo.y() + static_cast<double>(gy) * inSpacing <= thi.y(); ++gy)
+            for (long gx = static_cast<long>(std::ceil((tlo.x() - lo.x()) / inSpacing));
+                 lo.x() + static_cast<double>(gx) * inSpacing <= thi.x(); ++gx)
+            {
+                const Vec2 q = lo + inSpacing * Vec2(static_cast<double>(gx), static_cast<double>(gy));
+                const double wa = Orient(b, c, q) / area, wb = Orient(c, a, q) / area, wc = Orient(a, b, q) / area;
+                if (wa <= 1.0e-9 || wb <= 1.0e-9 || wc <= 1.0e-9 || !taken.insert({gx, gy}).second)
+                    continue;
+                if (std::any_of(plane.begin(), plane.end(), [&](const Vec2& o) { return (o - q).norm() < 0.5 * inSpacing; }))
+                    continue;
+                const PointDisplacement &pa = inPoints[source[t[0]]], &pb = inPoints[source[t[1]]],
+                                        &pc = inPoints[source[t[2]]];
+                out.push_back({wa * pa.mPoint + wb * pb.mPoint + wc * pc.mPoint,
+                               wa * pa.mDisplacement + wb * pb.mDisplacement + wc * pc.mDisplacement});
+            }
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<PointDisplacement> InterpolateWideImpact(std::span<const PointDisplacement> inPoints, double inSpacing,
+                                                     std::size_t inMaxPoints)
+{
+    if (inPoints.size() < 2 || !(inSpacing > 0.0) || !std::isfinite(inSpacing))
+        return {inPoints.begin(), inPoints.end()};
+
+    // Nothing to fill when every pair is within the spacing.
+    double diameter = 0.0;
+    for (std::size_t i = 0; i < inPoints.size(); ++i)
+        for (std::size_t j = i + 1; j < inPoints.size(); ++j)
+            diameter = std::max(diameter, (inPoints[i].mPoint - inPoints[j].mPoint).norm());
+    if (diameter <= inSpacing)
+        return {inPoints.begin(), inPoints.end()};
+
+    // Coarsen the pitch until the samples fit the cap.
+    double spacing = inSpacing;
+    for (int attempt = 0; attempt < 16; ++attempt, spacing *= 1.5)
+    {
+        std::vector<PointDisplacement> out = Interpolate(inPoints, spacing);
+        if (out.size() <= std::max(inMaxPoints, inPoints.size()))
+            return out;
+    }
+    return {inPoints.begin(), inPoints.end()};
+}
+
+} // namespace crumple::ffd

@@ -1,0 +1,51 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/plugin/Ids.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// One contact of a collision, on the surfaces, with its impulse. Stored with mBodyA < mBodyB of its
+/// Collision (the contact is flipped on arrival when the engine named the bodies the other way round).
+struct CollisionContact
+{
+    Vec3 mPointOnA = Vec3::Zero();      ///< Surface point on A, world frame at mTime (m)
+    Vec3 mPointOnB = Vec3::Zero();      ///< Surface point on B, world frame at mTime (m)
+    Vec3 mLocalPointOnA = Vec3::Zero(); ///< The same point in A's body frame (m)
+    Vec3 mLocalPointOnB = Vec3::Zero(); ///< The same point in B's body frame (m)
+    Vec3 mNormal = Vec3::UnitZ();       ///< Unit normal from B to A, world frame
+    Vec3 mLocalNormalOnA = Vec3::UnitZ(); ///< The normal in A's body frame (points out of A's dent: into A is +n)
+    Vec3 mLocalNormalOnB = Vec3::UnitZ(); ///< The normal in B's body frame
+    double mPenetrationDepth = 0.0;     ///< As reported (m)
+    double mImpulse = 0.0;              ///< Baraff impulse magnitude (N s), > 0: +n on A, -n on B
+    double mApproachSpeed = 0.0;        ///< Closing speed before the solver, -v_rel (m/s), > 0
+    double mTime = 0.0;                 ///< Step time (s)
+};
+
+/// Contacts of one body pair grouped over a time window: one physical impact.
+struct Collision
+{
+    BodyId mBodyA;                  ///< Lower body id of the pair
+    BodyId mBodyB;                  ///< Higher body id of the pair
+    double mStartTime = 0.0;        ///< Time of the first contact (s)
+    double mEndTime = 0.0;          ///< Time of the last contact (s)
+    std::uint64_t mSequence = 0;    ///< Creation order in its world, the last tie-breaker of dispatch order
+    std::vector<CollisionContact> mContacts; ///< In arrival order
+
+    /// Sum of the contact impulses (N s)
+    double TotalImpulse() const
+    {
+        double total = 0.0;
+        for (const CollisionContact& c : mContacts)
+            total += c.mImpulse;
+        return total;
+    }
+};
+
+} // namespace crumple::plugin

@@ -1,0 +1,37 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/ffd/DentReport.h>
+#include <crumple/plugin/Collision.h>
+#include <crumple/plugin/Ids.h>
+
+#include <span>
+
+namespace crumple::plugin
+{
+
+/// What one object did with a dispatched collision.
+struct ObjectDent
+{
+    ObjectId mObject;        ///< The object
+    ffd::DentReport mReport; ///< Its dent (all zero when the collision asked for none)
+};
+
+/// Receives every collision a DamageWorld dispatches, after the objects have been dented: the hook for
+/// game audio, particles, network replication and recorders (a listener per world, no global callback).
+///
+/// Threading: called synchronously from DamageWorld::Update/Flush on the calling thread, in dispatch order
+/// (start time, body ids, creation order). A listener must not call back into the same world.
+class DamageListener
+{
+public:
+    virtual ~DamageListener() = default;
+
+    /// One closed collision and the dents it made.
+    /// @param[in] inCollision the collision (contacts with surface points, normals, impulses)
+    /// @param[in] inDents     one entry per deformable object attached to either body, in ObjectId order
+    virtual void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) = 0;
+};
+
+} // namespace crumple::plugin

@@ -1,0 +1,119 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/BodyState.h>
+#include <crumple/plugin/CollisionGrouper.h>
+#include <crumple/plugin/ContactEvent.h>
+#include <crumple/plugin/DamageListener.h>
+#include <crumple/plugin/DamageState.h>
+#include <crumple/plugin/DamageWorldSettings.h>
+#include <crumple/plugin/DeformableObject.h>
+#include <crumple/plugin/Ids.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// What one DamageWorld::Update did.
+struct UpdateReport
+{
+    int mCollisionsDispatched = 0;     ///< Collisions whose window closed
+    int mObjectsDented = 0;            ///< Object dents that moved at least one vertex
+    std::uint64_t mVerticesMoved = 0;  ///< Vertex positions recomputed over all objects
+};
+
+/// The damage layer of one physics world. It owns bodies' pre-solve states and deformable objects, turns
+/// the engine's contacts into collisions with Baraff impulses, and dispatches closed collisions to the
+/// objects (dents) and to listeners.
+///
+/// Per engine step an adapter calls SetBodyState (before the solver) for moving bodies, SubmitContacts
+/// (after the step) with that step's contacts, then Update(time). A step without contacts and without open
+/// collisions costs nothing per body or vertex. All calls are on one thread; the world holds no global state,
+/// so several worlds may run on several threads. Every call that can fail validates all of its input first
+/// and changes nothing when it refuses it.
+class DamageWorld
+{
+public:
+    /// Validates the settings.
+    static Result<DamageWorld> Create(const DamageWorldSettings& inSettings = {});
+
+    /// Registers a rigid body with its current state; ids come in creation order.
+    Result<BodyId> CreateBody(const BodyState& inState);
+    /// Replaces a body's state (call before the engine's solver: impulses need pre-solve velocities).
+    Status SetBodyState(BodyId inBody, const BodyState& inState);
+    /// The body's last state.
+    const BodyState* GetBodyState(BodyId inBody) const;
+    /// Removes a body, its deformable objects and its open collisions. Ids are not reused.
+    Status RemoveBody(BodyId inBody);
+
+    /// Attaches a deformable object to a body; the object's mesh and zones are in that body's frame.
+    Result<ObjectId> CreateDeformableObject(BodyId inBody, const DeformableObjectSettings& inSettings);
+    /// The object, or nullptr for an invalid or removed id.
+    const DeformableObject* GetObject(ObjectId inObject) const;
+    DeformableObject* GetObject(ObjectId inObject);
+    /// The body an object is attached to.
+    BodyId GetObjectBody(ObjectId inObject) const;
+    /// Ids of all live objects, ascending.
+    std::vector<ObjectId> GetObjectIds() const;
+
+    /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
+    /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
+    /// time together, and groups the closing ones into collisions. Refused whole on any bad contact.
+    Status SubmitContacts(std::span<const ContactEvent> inContacts);
+
+    /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners.
+    UpdateReport Update(double inTime);
+    /// Dispatches every open collision now (end of a run, before saving).
+    UpdateReport Flush();
+
+    /// Adds a listener (not owned; it must outlive the world or be removed). Adding one twice is a no-op.
+    void AddListener(DamageListener* inListener);
+    void RemoveListener(DamageListener* inListener);
+
+    /// Restores every object's undeformed mesh.
+    void ResetDamage();
+    /// The damage of every object (control displacements), and its binary encoding.
+    DamageState GetDamageState() const;
+    std::vector<std::byte> SaveDamage() const;
+    /// Restores a saved damage state. Refused, changing nothing, when it is corrupt, of another version,
+    /// or does not match this world's objects (ids, zones, control counts).
+    Status SetDamageState(const DamageState& inState);
+    Status LoadDamage(std::span<const std::byte> inBytes);
+
+    const DamageWorldSettings& GetSettings() const { return mSettings; }
+    /// Collisions still waiting for their window to close.
+    std::size_t GetOpenCollisionCount() const { return mGrouper.GetOpenCount(); }
+
+private:
+    DamageWorld(const DamageWorldSettings& inSettings, CollisionGrouper inGrouper)
+        : mSettings(inSettings), mGrouper(std::move(inGrouper)) {}
+
+    struct BodySlot
+    {
+        BodyState mState;
+        bool mAlive = false;
+        std::vector<ObjectId> mObjects;
+    };
+    struct ObjectSlot
+    {
+        BodyId mBody;
+        std::vector<DeformableObject> mObject; ///< Empty once removed (DeformableObject has no default state)
+    };
+
+    bool IsLive(BodyId inBody) const { return inBody.mValue < mBodies.size() && mBodies[inBody.mValue].mAlive; }
+    Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
+    UpdateReport Dispatch(std::vector<Collision> inCollisions);
+
+    DamageWorldSettings mSettings;
+    CollisionGrouper mGrouper;
+    std::vector<BodySlot> mBodies;
+    std::vector<ObjectSlot> mObjects;
+    std::vector<DamageListener*> mListeners;
+};
+
+} // namespace crumple::plugin

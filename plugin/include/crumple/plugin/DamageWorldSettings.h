@@ -1,0 +1,21 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/plugin/CollisionGrouper.h>
+
+namespace crumple::plugin
+{
+
+/// Settings of a DamageWorld.
+struct DamageWorldSettings
+{
+    CollisionGrouperSettings mGrouping; ///< Time window and distance of a collision
+    double mRestitution = 0.1;          ///< Coefficient of restitution of impacts, in [0, 1]; car crashes are
+                                        ///< nearly plastic
+    double mRestingSpeed = 0.5;         ///< Contacts closing slower than this (m/s) are resting and make no
+                                        ///< impulse and no dent (like Box2D's hit-event threshold); it must
+                                        ///< exceed gravity x step (0.16 m/s at 60 Hz) so a parked car is never dented
+};
+
+} // namespace crumple::plugin

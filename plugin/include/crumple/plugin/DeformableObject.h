@@ -1,0 +1,53 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/ffd/FfdDeformer.h>
+#include <crumple/plugin/Collision.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
+
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// Which body of a collision an object belongs to.
+enum class ECollisionSide
+{
+    A, ///< The collision's mBodyA: dents go along +normal
+    B, ///< The collision's mBodyB: dents go along -normal
+};
+
+/// A deformable object: material plus an FFD deformer over its render mesh.
+class DeformableObject
+{
+public:
+    /// Validates the material and builds the deformer (fitting a zone when none is given).
+    static Result<DeformableObject> Create(const DeformableObjectSettings& inSettings);
+
+    /// The dent a collision asks of this object (D4MD section 6.2), in the body frame:
+    /// every contact moves along one direction, the impulse-weighted mean of the inward normals (so one
+    /// collision dents consistently), by depth_i = factor * J * (j_i / j_max), where J is the collision's
+    /// total impulse: the dent's depth follows the impulse of the impact, its shape the way the impulse was
+    /// distributed, and neither depends on how many points the engine reported. Depths below the minimum
+    /// are dropped, above the instantaneous maximum clamped. Wide contact sets are then interpolated.
+    std::vector<ffd::PointDisplacement> DentFor(const Collision& inCollision, ECollisionSide inSide) const;
+
+    /// DentFor, then ApplyDent with the instantaneous maximum as the step bound, so that no vertex (not
+    /// only no contact point) moves further than mMaxInstantDeformation in one collision.
+    ffd::DentReport ApplyCollision(const Collision& inCollision, ECollisionSide inSide);
+
+    const DamageMaterial& GetMaterial() const { return mMaterial; }
+    const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
+    ffd::FfdDeformer& GetDeformer() { return mDeformer; }
+
+private:
+    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, ffd::FfdDeformer inDeformer)
+        : mMaterial(inMaterial), mInterpolate(inInterpolate), mDeformer(std::move(inDeformer)) {}
+
+    DamageMaterial mMaterial;
+    bool mInterpolate = true;
+    ffd::FfdDeformer mDeformer;
+};
+
+} // namespace crumple::plugin

@@ -1,0 +1,37 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/plugin/BodyState.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <string>
+
+namespace crumple::plugin
+{
+
+Status ValidateBodyState(const BodyState& inState)
+{
+    if (!IsFinite(inState.mMass) || !IsFinite(inState.mInverseInertiaWorld) || !IsFinite(inState.mCenterOfMass) ||
+        !IsFinite(inState.mLinearVelocity) || !IsFinite(inState.mAngularVelocity) ||
+        !IsFinite(inState.mTransform.mRotation) || !IsFinite(inState.mTransform.mTranslation))
+        return MakeError(EError::NonFinite, "BodyState has a NaN or Inf field");
+    if (!IsRotation(inState.mTransform.mRotation, 1.0e-6))
+        return MakeError(EError::DegenerateGeometry, "BodyState.mTransform.mRotation is not a rotation");
+    if (inState.mMotionType == EMotionType::Dynamic)
+    {
+        if (!(inState.mMass > 0.0))
+            return MakeError(EError::InvalidArgument,
+                             "BodyState.mMass = " + std::to_string(inState.mMass) + " kg: a dynamic body needs mass > 0");
+        const Mat3& inverse_inertia = inState.mInverseInertiaWorld;
+        const double scale = inverse_inertia.cwiseAbs().maxCoeff();
+        if ((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() > 1.0e-9 * scale)
+            return MakeError(EError::InvalidArgument, "BodyState.mInverseInertiaWorld is not symmetric");
+        const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(inverse_inertia, Eigen::EigenvaluesOnly).eigenvalues();
+        if (eigenvalues.minCoeff() < -1.0e-12 * scale)
+            return MakeError(EError::InvalidArgument,
+                             "BodyState.mInverseInertiaWorld has a negative eigenvalue: inertia must be positive");
+    }
+    return Status::Ok();
+}
+
+} // namespace crumple::plugin

@@ -1,0 +1,303 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
+#include <crumple/plugin/BaraffImpulse.h>
+#include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/SurfaceContactPoints.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace crumple::plugin
+{
+
+Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
+{
+    if (!(inSettings.mRestitution >= 0.0 && inSettings.mRestitution <= 1.0))
+        return MakeError(EError::InvalidArgument, "DamageWorldSettings.mRestitution must be in [0, 1]");
+    if (!(std::isfinite(inSettings.mRestingSpeed) && inSettings.mRestingSpeed >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageWorldSettings.mRestingSpeed must be finite and >= 0 m/s");
+    Result<CollisionGrouper> grouper = CollisionGrouper::Create(inSettings.mGrouping);
+    if (!grouper)
+        return grouper.GetError();
+    return DamageWorld(inSettings, std::move(grouper).Get());
+}
+
+Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
+{
+    if (Status valid = ValidateBodyState(inState); !valid)
+        return valid.GetError();
+    if (mBodies.size() >= BodyId::cInvalid)
+        return MakeError(EError::OutOfRange, "too many bodies");
+    mBodies.push_back({inState, true, {}});
+    return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1)};
+}
+
+Status DamageWorld::SetBodyState(BodyId inBody, const BodyState& inState)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange, "SetBodyState: body " + std::to_string(inBody.mValue) + " does not exist");
+    if (Status valid = ValidateBodyState(inState); !valid)
+        return valid;
+    mBodies[inBody.mValue].mState = inState;
+    return Status::Ok();
+}
+
+const BodyState* DamageWorld::GetBodyState(BodyId inBody) const
+{
+    return IsLive(inBody) ? &mBodies[inBody.mValue].mState : nullptr;
+}
+
+Status DamageWorld::RemoveBody(BodyId inBody)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange, "RemoveBody: body " + std::to_string(inBody.mValue) + " does not exist");
+    BodySlot& slot = mBodies[inBody.mValue];
+    for (ObjectId object : slot.mObjects)
+        mObjects[object.mValue].mObject.clear();
+    slot.mObjects.clear();
+    slot.mAlive = false;
+    mGrouper.Forget(inBody);
+    return Status::Ok();
+}
+
+Result<ObjectId> DamageWorld::CreateDeformableObject(BodyId inBody, const DeformableObjectSettings& inSettings)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange,
+                         "CreateDeformableObject: body " + std::to_string(inBody.mValue) + " does not exist");
+    Result<DeformableObject> object = DeformableObject::Create(inSettings);
+    if (!object)
+        return object.GetError();
+    const ObjectId id{static_cast<std::uint32_t>(mObjects.size())};
+    ObjectSlot slot;
+    slot.mBody = inBody;
+    slot.mObject.push_back(std::move(object).Get());
+    mObjects.push_back(std::move(slot));
+    mBodies[inBody.mValue].mObjects.push_back(id);
+    return id;
+}
+
+const DeformableObject* DamageWorld::GetObject(ObjectId inObject) const
+{
+    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty())
+        return nullptr;
+    return &mObjects[inObject.mValue].mObject.front();
+}
+
+DeformableObject* DamageWorld::GetObject(ObjectId inObject)
+{
+    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty())
+        return nullptr;
+    return &mObjects[inObject.mValue].mObject.front();
+}
+
+BodyId DamageWorld::GetObjectBody(ObjectId inObject) const
+{
+    return GetObject(inObject) != nullptr ? mObjects[inObject.mValue].mBody : BodyId{};
+}
+
+std::vector<ObjectId> DamageWorld::GetObjectIds() const
+{
+    std::vector<ObjectId> ids;
+    for (std::uint32_t i = 0; i < mObjects.size(); ++i)
+        if (!mObjects[i].mObject.empty())
+            ids.push_back(ObjectId{i});
+    return ids;
+}
+
+Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const
+{
+    const std::string where = "contact " + std::to_string(inIndex) + ": ";
+    if (!IsLive(inContact.mBodyA) || !IsLive(inContact.mBodyB))
+        return MakeError(EError::OutOfRange, where + "names a body that does not exist");
+    if (inContact.mBodyA == inContact.mBodyB)
+        return MakeError(EError::InvalidArgument, where + "a body cannot collide with itself");
+    if (!IsFinite(inContact.mPointOnA) || !IsFinite(inContact.mPointOnB) || !IsFinite(inContact.mNormal) ||
+        !IsFinite(inContact.mPenetrationDepth) || !IsFinite(inContact.mTime))
+        return MakeError(EError::NonFinite, where + "has a NaN or Inf field");
+    if (std::abs(inContact.mNormal.norm() - 1.0) > 1.0e-3)
+        return MakeError(EError::InvalidArgument, where + "mNormal must be a unit vector");
+    return Status::Ok();
+}
+
+Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts)
+{
+    // Validate everything first: a refused batch changes nothing.
+    for (std::size_t i = 0; i < inContacts.size(); ++i)
+        if (Status valid = ValidateContact(inContacts[i], i); !valid)
+            return valid;
+
+    // Canonical orientation (A = lower id), surface points, and batches of the same pair and time.
+    struct Batch
+    {
+        BodyId mA, mB;
+        double mTime;
+        std::vector<CollisionContact> mContacts;
+    };
+    std::vector<Batch> batches;
+    for (const ContactEvent& event : inContacts)
+    {
+        const SurfacePoints surface = SurfaceContactPoints(event);
+        const bool flip = event.mBodyB < event.mBodyA;
+        CollisionContact contact;
+        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
+        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
+        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
+        contact.mPenetrationDepth = event.mPenetrationDepth;
+        contact.mTime = event.mTime;
+        const BodyId a = flip ? event.mBodyB : event.mBodyA;
+        const BodyId b = flip ? event.mBodyA : event.mBodyB;
+        auto batch = std::find_if(batches.begin(), batches.end(),
+                                  [&](const Batch& x) { return x.mA == a && x.mB == b && x.mTime == event.mTime; });
+        if (batch == batches.end())
+            batch = batches.insert(batches.end(), Batch{a, b, event.mTime, {}});
+        batch->mContacts.push_back(contact);
+    }
+
+    // Impulses per batch from the pre-solve states; keep only closing contacts.
+    std::vector<std::vector<CollisionContact>> accepted(batches.size());
+    for (std::size_t b = 0; b < batches.size(); ++b)
+    {
+        Batch& batch = batches[b];
+        const BodyState& state_a = mBodies[batch.mA.mValue].mState;
+        const BodyState& state_b = mBodies[batch.mB.mValue].mState;
+        std::vector<ImpulseContact> impulse_contacts;
+        for (const CollisionContact& c : batch.mContacts)
+            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal});
+        const std::vector<double> impulses =
+            SimultaneousImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
+        for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
+        {
+            if (!std::isfinite(impulses[i]))
+                return MakeError(EError::NonFinite, "contact impulse is not finite: check the bodies' masses");
+            if (!(impulses[i] > 0.0))
+                continue;
+            CollisionContact contact = batch.mContacts[i];
+            contact.mImpulse = impulses[i];
+            contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
+            contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
+            contact.mLocalPointOnB = state_b.mTransform.ToBody(contact.mPointOnB);
+            contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
+            contact.mLocalNormalOnB = state_b.mTransform.DirectionToBody(contact.mNormal);
+            accepted[b].push_back(contact);
+        }
+    }
+    for (std::size_t b = 0; b < batches.size(); ++b)
+        mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b]);
+    return Status::Ok();
+}
+
+UpdateReport DamageWorld::Update(double inTime)
+{
+    // The idle path: no open collision, no work.
+    if (!mGrouper.HasOpen())
+        return {};
+    return Dispatch(mGrouper.TakeClosed(inTime));
+}
+
+UpdateReport DamageWorld::Flush()
+{
+    if (!mGrouper.HasOpen())
+        return {};
+    return Dispatch(mGrouper.TakeAll());
+}
+
+UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
+{
+    UpdateReport report;
+    std::vector<ObjectDent> dents;
+    for (const Collision& collision : inCollisions)
+    {
+        ++report.mCollisionsDispatched;
+        dents.clear();
+        // Objects of A, then of B; each body's objects in creation (id) order.
+        for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
+            for (ObjectId id : mBodies[body.mValue].mObjects)
+            {
+                const ffd::DentReport dent = mObjects[id.mValue].mObject.front().ApplyCollision(collision, side);
+                report.mVerticesMoved += dent.mVerticesMoved;
+                if (dent.mVerticesMoved > 0)
+                    ++report.mObjectsDented;
+                dents.push_back({id, dent});
+            }
+        for (DamageListener* listener : mListeners)
+            listener->OnCollision(collision, dents);
+    }
+    return report;
+}
+
+void DamageWorld::AddListener(DamageListener* inListener)
+{
+    CRUMPLE_ASSERT(inListener != nullptr, "AddListener: null listener");
+    if (inListener != nullptr && std::find(mListeners.begin(), mListeners.end(), inListener) == mListeners.end())
+        mListeners.push_back(inListener);
+}
+
+void DamageWorld::RemoveListener(DamageListener* inListener)
+{
+    std::erase(mListeners, inListener);
+}
+
+void DamageWorld::ResetDamage()
+{
+    for (ObjectSlot& slot : mObjects)
+        if (!slot.mObject.empty())
+            slot.mObject.front().GetDeformer().Reset();
+}
+
+DamageState DamageWorld::GetDamageState() const
+{
+    DamageState state;
+    for (ObjectId id : GetObjectIds())
+    {
+        ObjectDamage damage;
+        damage.mObject = id;
+        for (const ffd::FfdLattice& zone : GetObject(id)->GetDeformer().GetZones())
+            damage.mZones.push_back(zone.GetControlDisplacements());
+        state.mObjects.push_back(std::move(damage));
+    }
+    return state;
+}
+
+std::vector<std::byte> DamageWorld::SaveDamage() const
+{
+    return EncodeDamageState(GetDamageState());
+}
+
+Status DamageWorld::SetDamageState(const DamageState& inState)
+{
+    // All objects must match before any changes.
+    const std::vector<ObjectId> ids = GetObjectIds();
+    if (inState.mObjects.size() != ids.size())
+        return MakeError(EError::StateMismatch, "damage state has " + std::to_string(inState.mObjects.size()) +
+                                                    " objects, the world " + std::to_string(ids.size()));
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+        const ObjectDamage& damage = inState.mObjects[i];
+        if (damage.mObject != ids[i])
+            return MakeError(EError::StateMismatch, "damage state names object " + std::to_string(damage.mObject.mValue) +
+                                                        " where the world has object " + std::to_string(ids[i].mValue));
+        if (Status valid = GetObject(ids[i])->GetDeformer().ValidateControlDisplacements(damage.mZones); !valid)
+            return MakeError(valid.GetError().mCode,
+                             "object " + std::to_string(ids[i].mValue) + ": " + valid.GetError().mMessage);
+    }
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+        Status applied = GetObject(ids[i])->GetDeformer().SetControlDisplacements(inState.mObjects[i].mZones);
+        CRUMPLE_ASSERT(applied.IsValid(), "validated damage state was refused");
+        (void)applied;
+    }
+    return Status::Ok();
+}
+
+Status DamageWorld::LoadDamage(std::span<const std::byte> inBytes)
+{
+    Result<DamageState> state = DecodeDamageState(inBytes);
+    if (!state)
+        return state.GetError();
+    return SetDamageState(state.Get());
+}
+
+} // namespace crumple::plugin

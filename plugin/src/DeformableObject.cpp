@@ -1,0 +1,103 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
+#include <crumple/ffd/InterpolateWideImpact.h>
+#include <crumple/plugin/DeformableObject.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace crumple::plugin
+{
+
+ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
+                                   double inMaxTotalDeformation)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = -lo;
+    for (const Vec3& p : inMesh.mPositions)
+    {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    // The margin keeps surface vertices strictly inside, where the spline is defined.
+    const Vec3 margin = 0.01 * (hi - lo) + Vec3::Constant(1.0e-3);
+    ffd::FfdZoneSettings zone;
+    zone.mLattice.mOrigin = lo - margin;
+    zone.mLattice.mSize = (hi - lo) + 2.0 * margin;
+    zone.mLattice.mControlCount = inControlCount;
+    zone.mMaxTotalDeformation = inMaxTotalDeformation;
+    return zone;
+}
+
+Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings& inSettings)
+{
+    const DamageMaterial& material = inSettings.mMaterial;
+    if (!(std::isfinite(material.mDeformationFactor) && material.mDeformationFactor >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mDeformationFactor must be finite and >= 0 m/(N s)");
+    if (!(std::isfinite(material.mMinDeformation) && material.mMinDeformation >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mMinDeformation must be finite and >= 0 m");
+    if (!(std::isfinite(material.mMaxInstantDeformation) && material.mMaxInstantDeformation >= material.mMinDeformation))
+        return MakeError(EError::InvalidArgument,
+                         "DamageMaterial.mMaxInstantDeformation must be finite and >= mMinDeformation (m)");
+
+    ffd::FfdDeformerSettings deformer_settings = inSettings.mDeformer;
+    if (deformer_settings.mZones.empty())
+    {
+        if (Status mesh = ffd::ValidateTriangleMesh(inSettings.mMesh); !mesh)
+            return mesh.GetError();
+        deformer_settings.mZones.push_back(
+            FitZoneToMesh(inSettings.mMesh, inSettings.mFittedControlCount, inSettings.mFittedMaxTotalDeformation));
+    }
+    Result<ffd::FfdDeformer> deformer = ffd::FfdDeformer::Create(inSettings.mMesh, deformer_settings);
+    if (!deformer)
+        return deformer.GetError();
+    return DeformableObject(material, inSettings.mInterpolateWideImpacts, std::move(deformer).Get());
+}
+
+std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide) const
+{
+    std::vector<ffd::PointDisplacement> dent;
+    const bool side_a = inSide == ECollisionSide::A;
+
+    // One direction for the whole collision: impulse-weighted mean inward normal.
+    Vec3 direction = Vec3::Zero();
+    double total = 0.0, peak = 0.0;
+    for (const CollisionContact& c : inCollision.mContacts)
+    {
+        direction += c.mImpulse * (side_a ? c.mLocalNormalOnA : Vec3(-c.mLocalNormalOnB));
+        total += c.mImpulse;
+        peak = std::max(peak, c.mImpulse);
+    }
+    const double length = direction.norm();
+    if (!(length > 0.0) || !(peak > 0.0))
+        return dent;
+    direction /= length;
+
+    // Depth from the collision's impulse, shape from each contact's share of it.
+    for (const CollisionContact& c : inCollision.mContacts)
+    {
+        double depth = mMaterial.mDeformationFactor * total * (c.mImpulse / peak);
+        if (!(depth >= mMaterial.mMinDeformation) || depth <= 0.0)
+            continue;
+        depth = std::min(depth, mMaterial.mMaxInstantDeformation);
+        dent.push_back({side_a ? c.mLocalPointOnA : c.mLocalPointOnB, depth * direction});
+    }
+    if (mInterpolate && dent.size() > 1)
+        dent = ffd::InterpolateWideImpact(dent, mDeformer.GetMinSpacing());
+    return dent;
+}
+
+ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, ECollisionSide inSide)
+{
+    const std::vector<ffd::PointDisplacement> dent = DentFor(inCollision, inSide);
+    if (dent.empty())
+        return {};
+    // Collisions are validated when their contacts are submitted, so the dent is finite.
+    Result<ffd::DentReport> report = mDeformer.ApplyDent(dent, mMaterial.mMaxInstantDeformation);
+    CRUMPLE_ASSERT(report.IsValid(), "a validated collision produced a non-finite dent");
+    return report ? report.Get() : ffd::DentReport{};
+}
+
+} // namespace crumple::plugin

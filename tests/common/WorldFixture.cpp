@@ -1,0 +1,67 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "WorldFixture.h"
+#include "BoxMesh.h"
+
+#include <cstring>
+
+namespace crumple::common
+{
+
+using namespace crumple::plugin;
+
+WorldFixture::WorldFixture(int inTriangles, std::array<int, 3> inControlCount, const DamageWorldSettings& inSettings)
+    : mWorld(DamageWorld::Create(inSettings).Get())
+{
+    BodyState floor;
+    floor.mMotionType = EMotionType::Static;
+    mFloor = mWorld.CreateBody(floor).Get();
+    BodyState wall;
+    wall.mMotionType = EMotionType::Static;
+    mWall = mWorld.CreateBody(wall).Get();
+    mCar = mWorld.CreateBody(CarState(0.0)).Get();
+
+    DeformableObjectSettings car;
+    car.mMesh = MakeBoxMesh(mHalfExtents, BoxSegmentsForTriangles(mHalfExtents, inTriangles));
+    car.mFittedControlCount = inControlCount;
+    mCarObject = mWorld.CreateDeformableObject(mCar, car).Get();
+}
+
+BodyState WorldFixture::CarState(double inSpeed) const
+{
+    BodyState car;
+    car.mMass = mMass;
+    const Vec3 size = 2.0 * mHalfExtents;
+    car.mInverseInertiaWorld = Vec3(12.0 / (mMass * (size.y() * size.y() + size.z() * size.z())),
+                                    12.0 / (mMass * (size.x() * size.x() + size.z() * size.z())),
+                                    12.0 / (mMass * (size.x() * size.x() + size.y() * size.y())))
+                                   .asDiagonal();
+    car.mTransform.mTranslation = Vec3(-mHalfExtents.x(), 0.0, 0.0);
+    car.mCenterOfMass = car.mTransform.mTranslation;
+    car.mLinearVelocity = Vec3(inSpeed, 0.0, 0.0);
+    return car;
+}
+
+ContactEvent WorldFixture::FrontContact(double inY, double inZ, double inTime, double inDepth) const
+{
+    ContactEvent contact;
+    contact.mBodyA = mCar;
+    contact.mBodyB = mWall;
+    contact.mPointOnA = Vec3(inDepth, inY, inZ); // the car's front has sunk inDepth past the wall
+    contact.mPointOnB = Vec3(0.0, inY, inZ);
+    contact.mNormal = -Vec3::UnitX(); // from the wall to the car
+    contact.mPenetrationDepth = inDepth;
+    contact.mTime = inTime;
+    return contact;
+}
+
+std::uint64_t HashPositions(const std::vector<Vec3>& inPositions)
+{
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(inPositions.data());
+    for (std::size_t i = 0; i < inPositions.size() * sizeof(Vec3); ++i)
+        hash = (hash ^ bytes[i]) * 1099511628211ull;
+    return hash;
+}
+
+} // namespace crumple::common

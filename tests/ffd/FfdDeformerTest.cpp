@@ -1,0 +1,258 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BoxMesh.h"
+
+#include <crumple/ffd/FfdDeformer.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <limits>
+#include <random>
+
+using namespace crumple;
+using namespace crumple::ffd;
+
+namespace
+{
+
+const Vec3 cHalf(2.0, 0.9, 0.7);
+
+FfdDeformer MakeDeformer(std::array<int, 3> inControls = {8, 6, 6}, double inMaxTotal = 0.5)
+{
+    TriangleMesh mesh = common::MakeBoxMesh(cHalf, {40, 18, 14});
+    FfdDeformerSettings settings;
+    settings.mZones.push_back(plugin::FitZoneToMesh(mesh, inControls, inMaxTotal));
+    return FfdDeformer::Create(std::move(mesh), settings).Get();
+}
+
+bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
+{
+    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
+}
+
+// A few points on the front face (x = +2) pushed backwards.
+std::vector<PointDisplacement> FrontDent(double inDepth)
+{
+    return {{Vec3(2.0, 0.3, 0.1), Vec3(-inDepth, 0.0, 0.0)},
+            {Vec3(2.0, -0.4, -0.2), Vec3(-0.5 * inDepth, 0.0, 0.0)},
+            {Vec3(2.0, 0.0, 0.45), Vec3(-0.8 * inDepth, 0.0, 0.1 * inDepth)}};
+}
+
+} // namespace
+
+TEST_CASE("FfdDeformer starts with the rest mesh, bit for bit", "[ffd]")
+{
+    const FfdDeformer deformer = MakeDeformer();
+    CHECK(SameBytes(deformer.GetPositions(), deformer.GetRestMesh().mPositions));
+    for (std::uint32_t v = 0; v < deformer.GetPositions().size(); ++v)
+        REQUIRE(deformer.GetVertexZone(v) == 0);
+}
+
+TEST_CASE("A zero dent changes no byte", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer();
+    REQUIRE(deformer.ApplyDent(FrontDent(0.05)));
+    (void)deformer.TakeDirtyRanges();
+    const std::vector<Vec3> positions = deformer.GetPositions();
+    const std::vector<Vec3> normals = deformer.GetNormals();
+    const std::uint64_t evaluations = deformer.GetVertexEvaluationCount();
+
+    std::vector<PointDisplacement> zero = FrontDent(0.0);
+    Result<DentReport> report = deformer.ApplyDent(zero);
+    REQUIRE(report);
+    CHECK(report.Get().mVerticesMoved == 0);
+    CHECK(SameBytes(deformer.GetPositions(), positions));
+    CHECK(SameBytes(deformer.GetNormals(), normals));
+    CHECK(deformer.GetVertexEvaluationCount() == evaluations);
+    CHECK(deformer.TakeDirtyRanges().empty());
+}
+
+TEST_CASE("Each constrained point moves by its requested displacement", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer();
+    const std::vector<PointDisplacement> dent = FrontDent(0.05);
+    Result<DentReport> report = deformer.ApplyDent(dent);
+    REQUIRE(report);
+    CHECK(report.Get().mPointsApplied == 3);
+    CHECK(report.Get().mControlsClamped == 0);
+    CHECK(report.Get().mMaxPointError <= 1.0e-9 * report.Get().mMaxWanted);
+    // Independently: evaluate the zone at each point's rest location.
+    const FfdLattice& zone = deformer.GetZones()[0];
+    for (const PointDisplacement& p : dent)
+    {
+        const Vec3 moved = zone.Displacement(zone.Locate(zone.LatticeCoordinate(p.mPoint)));
+        CHECK((moved - p.mDisplacement).norm() <= 1.0e-9 * p.mDisplacement.norm());
+    }
+}
+
+TEST_CASE("Repeated dents compose where they are aimed", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer();
+    const Vec3 rest_point(2.0, 0.2, 0.0);
+    REQUIRE(deformer.ApplyDent(std::vector<PointDisplacement>{{rest_point, Vec3(-0.04, 0.0, 0.0)}}));
+    // The second dent is aimed at the point where the surface now is.
+    const Vec3 dented_point = rest_point + Vec3(-0.04, 0.0, 0.0);
+    Result<DentReport> second = deformer.ApplyDent(std::vector<PointDisplacement>{{dented_point, Vec3(-0.03, 0.0, 0.0)}});
+    REQUIRE(second);
+    const FfdLattice& zone = deformer.GetZones()[0];
+    const Vec3 total = zone.Displacement(zone.Locate(zone.LatticeCoordinate(rest_point)));
+    CHECK((total - Vec3(-0.07, 0.0, 0.0)).norm() <= 1.0e-6);
+}
+
+TEST_CASE("Incremental update equals a full recompute", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer({10, 7, 6});
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> y(-0.9, 0.9), z(-0.7, 0.7), depth(0.0, 0.08);
+    for (int dent = 0; dent < 25; ++dent)
+    {
+        std::vector<PointDisplacement> points;
+        const double side = dent % 2 == 0 ? 2.0 : -2.0;
+        for (int i = 0; i < 1 + dent % 5; ++i)
+            points.push_back({Vec3(side, y(random), z(random)), Vec3(-side / 2.0 * depth(random), 0.0, 0.0)});
+        REQUIRE(deformer.ApplyDent(points));
+    }
+    FfdDeformer reference = deformer;
+    reference.RecomputeAll();
+    double position_error = 0.0, normal_error = 0.0;
+    for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+    {
+        position_error = std::max(position_error, (deformer.GetPositions()[v] - reference.GetPositions()[v]).norm());
+        normal_error = std::max(normal_error, (deformer.GetNormals()[v] - reference.GetNormals()[v]).norm());
+    }
+    CHECK(position_error <= 1.0e-12);
+    CHECK(normal_error <= 1.0e-12);
+}
+
+TEST_CASE("Only vertices reached by changed controls are touched, and dirty ranges cover them", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer({16, 8, 8});
+    const std::vector<Vec3> before = deformer.GetPositions();
+    const std::vector<Vec3> normals_before = deformer.GetNormals();
+    Result<DentReport> report = deformer.ApplyDent(std::vector<PointDisplacement>{{Vec3(2.0, 0.0, 0.0), Vec3(-0.05, 0.0, 0.0)}});
+    REQUIRE(report);
+    const std::size_t vertex_count = before.size();
+    // A single point on a 13-cell-long lattice reaches 7 cells along x: the rear half never moves.
+    CHECK(report.Get().mVerticesMoved < vertex_count / 2);
+    CHECK(report.Get().mVerticesMoved > 0);
+
+    std::vector<std::uint8_t> in_range(vertex_count, 0);
+    for (const VertexRange& range : deformer.TakeDirtyRanges())
+        for (std::uint32_t v = range.mBegin; v < range.mEnd; ++v)
+            in_range[v] = 1;
+    for (std::size_t v = 0; v < vertex_count; ++v)
+    {
+        const bool changed = deformer.GetPositions()[v] != before[v] || deformer.GetNormals()[v] != normals_before[v];
+        if (changed)
+            REQUIRE(in_range[v] == 1);
+        if (deformer.GetPositions()[v].x() < -0.5)
+            REQUIRE(deformer.GetPositions()[v] == before[v]);
+    }
+    CHECK(deformer.TakeDirtyRanges().empty());
+}
+
+TEST_CASE("No vertex moves beyond the zone's maximum total deformation", "[ffd]")
+{
+    const double max_total = 0.12;
+    FfdDeformer deformer = MakeDeformer({8, 6, 6}, max_total);
+    for (int i = 0; i < 30; ++i)
+    {
+        Result<DentReport> report = deformer.ApplyDent(FrontDent(0.1));
+        REQUIRE(report);
+    }
+    double worst = 0.0;
+    for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+        worst = std::max(worst, (deformer.GetPositions()[v] - deformer.GetRestMesh().mPositions[v]).norm());
+    CHECK(worst <= max_total * (1.0 + 1.0e-12));
+    CHECK(worst >= 0.5 * max_total); // it did dent
+}
+
+TEST_CASE("Reset restores the rest mesh exactly", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer();
+    const std::vector<Vec3> rest_normals = deformer.GetNormals();
+    REQUIRE(deformer.ApplyDent(FrontDent(0.07)));
+    (void)deformer.TakeDirtyRanges();
+    deformer.Reset();
+    CHECK(SameBytes(deformer.GetPositions(), deformer.GetRestMesh().mPositions));
+    CHECK(SameBytes(deformer.GetNormals(), rest_normals));
+    CHECK_FALSE(deformer.TakeDirtyRanges().empty());
+}
+
+TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    SECTION("a NaN in a dent")
+    {
+        FfdDeformer deformer = MakeDeformer();
+        REQUIRE(deformer.ApplyDent(FrontDent(0.03)));
+        const std::vector<Vec3> positions = deformer.GetPositions();
+        const std::vector<Vec3> controls = deformer.GetZones()[0].GetControlDisplacements();
+        std::vector<PointDisplacement> dent = FrontDent(0.05);
+        dent[2].mDisplacement.y() = nan;
+        Result<DentReport> report = deformer.ApplyDent(dent);
+        REQUIRE(report.HasError());
+        CHECK(report.GetError().mCode == EError::NonFinite);
+        CHECK(report.GetError().mMessage.find("point 2") != std::string::npos);
+        CHECK(SameBytes(deformer.GetPositions(), positions));
+        CHECK(SameBytes(deformer.GetZones()[0].GetControlDisplacements(), controls));
+    }
+    SECTION("a mesh index out of range")
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        mesh.mTriangles[3][1] = 1000;
+        FfdDeformerSettings settings;
+        settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {4, 4, 4}, 0.1));
+        Result<FfdDeformer> deformer = FfdDeformer::Create(mesh, settings);
+        REQUIRE(deformer.HasError());
+        CHECK(deformer.GetError().mCode == EError::OutOfRange);
+    }
+    SECTION("an empty mesh")
+    {
+        FfdDeformerSettings settings;
+        settings.mZones.emplace_back();
+        CHECK(FfdDeformer::Create(TriangleMesh{}, settings).GetError().mCode == EError::DegenerateGeometry);
+    }
+    SECTION("a NaN vertex")
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        FfdDeformerSettings settings;
+        settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {4, 4, 4}, 0.1));
+        mesh.mPositions[5].z() = nan;
+        CHECK(FfdDeformer::Create(mesh, settings).GetError().mCode == EError::NonFinite);
+    }
+    SECTION("fewer than four controls or no zone")
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        FfdDeformerSettings settings;
+        CHECK(FfdDeformer::Create(mesh, settings).GetError().mCode == EError::InvalidArgument);
+        settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {4, 4, 2}, 0.1));
+        Result<FfdDeformer> deformer = FfdDeformer::Create(mesh, settings);
+        REQUIRE(deformer.HasError());
+        CHECK(deformer.GetError().mMessage.find("mZones[0]") != std::string::npos);
+    }
+    SECTION("a control state of the wrong shape")
+    {
+        FfdDeformer deformer = MakeDeformer();
+        REQUIRE(deformer.ApplyDent(FrontDent(0.03)));
+        const std::vector<Vec3> positions = deformer.GetPositions();
+        std::vector<std::vector<Vec3>> state{std::vector<Vec3>(10, Vec3::Zero())};
+        CHECK(deformer.SetControlDisplacements(state).GetError().mCode == EError::StateMismatch);
+        state[0].assign(deformer.GetZones()[0].GetControlDisplacements().size(), Vec3(0.0, 0.0, 10.0));
+        CHECK(deformer.SetControlDisplacements(state).GetError().mCode == EError::InvalidArgument);
+        CHECK(SameBytes(deformer.GetPositions(), positions));
+    }
+}
+
+TEST_CASE("Points outside every zone are ignored, near ones captured", "[ffd]")
+{
+    FfdDeformer deformer = MakeDeformer();
+    const std::vector<PointDisplacement> points{{Vec3(50.0, 0.0, 0.0), Vec3(-0.1, 0.0, 0.0)},
+                                                {Vec3(2.1, 0.0, 0.0), Vec3(-0.02, 0.0, 0.0)}};
+    Result<DentReport> report = deformer.ApplyDent(points);
+    REQUIRE(report);
+    CHECK(report.Get().mPointsIgnored == 1);
+    CHECK(report.Get().mPointsApplied == 1);
+}

@@ -1,0 +1,83 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/InterpolateWideImpact.h>
+
+#include <catch2/catch.hpp>
+
+using namespace crumple;
+using namespace crumple::ffd;
+
+namespace
+{
+
+// An affine displacement field: linear interpolation must reproduce it exactly.
+Vec3 Affine(const Vec3& inPoint)
+{
+    Mat3 gradient;
+    gradient << 0.01, 0.02, 0.0, -0.03, 0.0, 0.01, 0.05, 0.04, 0.0;
+    return Vec3(-0.1, 0.0, 0.02) + gradient * inPoint;
+}
+
+} // namespace
+
+TEST_CASE("A box face's four corners become one coherent dent", "[ffd]")
+{
+    // The corners of a 1.2 m x 0.8 m face in the plane x = 2, pushed along -x.
+    std::vector<PointDisplacement> corners;
+    for (double y : {-0.6, 0.6})
+        for (double z : {-0.4, 0.4})
+            corners.push_back({Vec3(2.0, y, z), Affine(Vec3(2.0, y, z))});
+    const double spacing = 0.2;
+    const std::vector<PointDisplacement> filled = InterpolateWideImpact(corners, spacing);
+
+    REQUIRE(filled.size() > 20);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        CHECK(filled[i].mPoint == corners[i].mPoint);
+    for (const PointDisplacement& p : filled)
+    {
+        // On the face, inside it, with the linearly interpolated displacement.
+        CHECK(p.mPoint.x() == Approx(2.0).margin(1.0e-12));
+        CHECK(std::abs(p.mPoint.y()) <= 0.6 + 1.0e-12);
+        CHECK(std::abs(p.mPoint.z()) <= 0.4 + 1.0e-12);
+        CHECK((p.mDisplacement - Affine(p.mPoint)).norm() <= 1.0e-12);
+    }
+    // Coverage: every point of the face is within one spacing of a sample.
+    for (double y = -0.6; y <= 0.6; y += 0.05)
+        for (double z = -0.4; z <= 0.4; z += 0.05)
+        {
+            double nearest = 1.0e9;
+            for (const PointDisplacement& p : filled)
+                nearest = std::min(nearest, (p.mPoint - Vec3(2.0, y, z)).norm());
+            REQUIRE(nearest <= spacing);
+        }
+}
+
+TEST_CASE("Contacts within one spacing are left alone", "[ffd]")
+{
+    const std::vector<PointDisplacement> points{{Vec3(0.0, 0.0, 0.0), Vec3(-0.1, 0.0, 0.0)},
+                                                {Vec3(0.0, 0.1, 0.05), Vec3(-0.1, 0.0, 0.0)}};
+    CHECK(InterpolateWideImpact(points, 0.2).size() == 2);
+}
+
+TEST_CASE("A collinear contact pair is sampled along its segment", "[ffd]")
+{
+    const std::vector<PointDisplacement> points{{Vec3(0.0, -0.5, 0.0), Vec3(-0.1, 0.0, 0.0)},
+                                                {Vec3(0.0, 0.5, 0.0), Vec3(-0.2, 0.0, 0.0)}};
+    const std::vector<PointDisplacement> filled = InterpolateWideImpact(points, 0.25);
+    REQUIRE(filled.size() == 5);
+    for (const PointDisplacement& p : filled)
+    {
+        CHECK(p.mPoint.x() == Approx(0.0).margin(1.0e-15));
+        const double t = p.mPoint.y() + 0.5;
+        CHECK(p.mDisplacement.x() == Approx(-0.1 - 0.1 * t));
+    }
+}
+
+TEST_CASE("Interpolation respects its output cap", "[ffd]")
+{
+    std::vector<PointDisplacement> corners;
+    for (double y : {-5.0, 5.0})
+        for (double z : {-5.0, 5.0})
+            corners.push_back({Vec3(0.0, y, z), Vec3(-0.1, 0.0, 0.0)});
+    CHECK(InterpolateWideImpact(corners, 0.01, 300).size() <= 300);
+}

@@ -1,0 +1,107 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "WorldFixture.h"
+
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/Crc32.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace crumple;
+using namespace crumple::plugin;
+using crumple::common::WorldFixture;
+
+namespace
+{
+
+void Crash(WorldFixture& ioFixture, double inSpeed, double inY)
+{
+    REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(inSpeed)));
+    REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{ioFixture.FrontContact(inY, 0.2, 0.0)}));
+    ioFixture.mWorld.Flush();
+}
+
+const std::vector<Vec3>& CarPositions(const WorldFixture& inFixture)
+{
+    return inFixture.mWorld.GetObject(inFixture.mCarObject)->GetDeformer().GetPositions();
+}
+
+bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
+{
+    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
+}
+
+// Rewrites the trailing checksum so that a deliberate edit is not caught by the CRC.
+void FixChecksum(std::vector<std::byte>& ioBytes)
+{
+    ioBytes.resize(ioBytes.size() - 4);
+    ByteWriter tail;
+    tail.WriteU32(Crc32(ioBytes));
+    ioBytes.insert(ioBytes.end(), tail.GetBytes().begin(), tail.GetBytes().end());
+}
+
+} // namespace
+
+TEST_CASE("Damage saved and loaded into a fresh world rebuilds the same mesh bit for bit", "[plugin]")
+{
+    WorldFixture live;
+    Crash(live, 12.0, 0.3);
+    Crash(live, 6.0, -0.5);
+    const std::vector<std::byte> saved = live.mWorld.SaveDamage();
+
+    WorldFixture restored;
+    REQUIRE(restored.mWorld.LoadDamage(saved));
+    CHECK(SameBytes(CarPositions(restored), CarPositions(live)));
+    CHECK(restored.mWorld.SaveDamage() == saved);
+}
+
+TEST_CASE("A corrupt, truncated, foreign or mismatched damage file is refused and changes nothing", "[plugin]")
+{
+    WorldFixture live;
+    Crash(live, 12.0, 0.3);
+    std::vector<std::byte> saved = live.mWorld.SaveDamage();
+
+    WorldFixture target;
+    Crash(target, 5.0, -0.2);
+    const std::vector<Vec3> before = CarPositions(target);
+
+    SECTION("a flipped bit")
+    {
+        saved[saved.size() / 2] ^= std::byte{0x01};
+        const Status status = target.mWorld.LoadDamage(saved);
+        REQUIRE(status.HasError());
+        CHECK(status.GetError().mCode == EError::CorruptData);
+    }
+    SECTION("truncated at every length")
+    {
+        for (std::size_t length = 0; length < saved.size(); length += 97)
+            REQUIRE(target.mWorld.LoadDamage(std::span(saved).first(length)).HasError());
+    }
+    SECTION("another version")
+    {
+        saved[8] = std::byte{2};
+        FixChecksum(saved);
+        CHECK(target.mWorld.LoadDamage(saved).GetError().mCode == EError::VersionMismatch);
+    }
+    SECTION("not a damage file")
+    {
+        saved[0] = std::byte{'X'};
+        CHECK(target.mWorld.LoadDamage(saved).GetError().mCode == EError::CorruptData);
+    }
+    SECTION("a NaN displacement behind a valid checksum")
+    {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        std::memcpy(saved.data() + 28, &nan, sizeof(double)); // the first control displacement
+        FixChecksum(saved);
+        CHECK(target.mWorld.LoadDamage(saved).GetError().mCode == EError::CorruptData);
+    }
+    SECTION("a world with other objects")
+    {
+        WorldFixture other(4000, {6, 6, 6});
+        Crash(other, 12.0, 0.3);
+        CHECK(target.mWorld.LoadDamage(other.mWorld.SaveDamage()).GetError().mCode == EError::StateMismatch);
+    }
+    CHECK(SameBytes(CarPositions(target), before));
+}

@@ -1,0 +1,216 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "WorldFixture.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <limits>
+
+using namespace crumple;
+using namespace crumple::plugin;
+using crumple::common::WorldFixture;
+
+namespace
+{
+
+struct RecordingListener : DamageListener
+{
+    void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) override
+    {
+        mCollisions.push_back(inCollision);
+        mDents.assign(inDents.begin(), inDents.end());
+    }
+    std::vector<Collision> mCollisions;
+    std::vector<ObjectDent> mDents;
+};
+
+std::vector<ContactEvent> FrontCorners(const WorldFixture& inFixture, double inTime)
+{
+    return {inFixture.FrontContact(-0.8, -0.6, inTime), inFixture.FrontContact(0.8, -0.6, inTime),
+            inFixture.FrontContact(-0.8, 0.6, inTime), inFixture.FrontContact(0.8, 0.6, inTime)};
+}
+
+bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
+{
+    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
+}
+
+} // namespace
+
+TEST_CASE("A frontal wall hit dents the front of the car once its window closes", "[plugin]")
+{
+    WorldFixture fixture;
+    RecordingListener listener;
+    fixture.mWorld.AddListener(&listener);
+    const double speed = 15.0;
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(speed)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+
+    CHECK(fixture.mWorld.Update(0.049).mCollisionsDispatched == 0);
+    const UpdateReport report = fixture.mWorld.Update(0.05);
+    CHECK(report.mCollisionsDispatched == 1);
+    CHECK(report.mObjectsDented == 1);
+
+    // The listener saw one collision whose impulse is the analytic one, however many corners were reported.
+    REQUIRE(listener.mCollisions.size() == 1);
+    const Collision& collision = listener.mCollisions[0];
+    const double e = fixture.mWorld.GetSettings().mRestitution;
+    CHECK(collision.TotalImpulse() == Approx((1.0 + e) * fixture.mMass * speed).epsilon(1.0e-9));
+    CHECK(collision.mContacts[0].mApproachSpeed == Approx(speed));
+    CHECK(collision.mBodyA == fixture.mWall); // lower id first; contacts were flipped accordingly
+    CHECK(collision.mContacts[0].mNormal.isApprox(Vec3::UnitX()));
+    REQUIRE(listener.mDents.size() == 1);
+    CHECK(listener.mDents[0].mObject == fixture.mCarObject);
+
+    // The front moved backwards (into the car), the rear did not move at all.
+    const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    const ffd::TriangleMesh& rest = car.GetRestMesh();
+    double deepest = 0.0;
+    for (std::size_t v = 0; v < rest.mPositions.size(); ++v)
+    {
+        const Vec3 d = car.GetPositions()[v] - rest.mPositions[v];
+        if (rest.mPositions[v].x() < -1.35) // the first lattice cell: no front control reaches it
+            REQUIRE(d == Vec3::Zero());
+        deepest = std::min(deepest, d.x());
+    }
+    const DamageMaterial& material = fixture.mWorld.GetObject(fixture.mCarObject)->GetMaterial();
+    CHECK(deepest < -0.5 * material.mMaxInstantDeformation);
+    CHECK(deepest >= -material.mMaxInstantDeformation * (1.0 + 1.0e-12)); // no vertex beyond the instant bound
+}
+
+TEST_CASE("A frame without contacts does no per-vertex work", "[plugin]")
+{
+    WorldFixture fixture;
+    const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+    fixture.mWorld.Update(1.0);
+    const std::uint64_t evaluations = car.GetVertexEvaluationCount();
+    REQUIRE(evaluations > 0);
+
+    for (int frame = 0; frame < 600; ++frame)
+    {
+        REQUIRE(fixture.mWorld.SubmitContacts({}));
+        const UpdateReport report = fixture.mWorld.Update(1.0 + frame / 60.0);
+        REQUIRE(report.mCollisionsDispatched == 0);
+    }
+    CHECK(car.GetVertexEvaluationCount() == evaluations);
+}
+
+TEST_CASE("A car resting or driving on flat ground gets no damage", "[plugin]")
+{
+    WorldFixture fixture;
+    const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    BodyState driving = fixture.CarState(0.0);
+    driving.mLinearVelocity = Vec3(25.0, 0.0, -9.81 / 60.0); // gravity's one-step velocity at 60 Hz
+    for (int frame = 0; frame < 120; ++frame)
+    {
+        const double time = frame / 60.0;
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, driving));
+        std::vector<ContactEvent> wheels;
+        for (double x : {-1.4, 1.4})
+            for (double y : {-0.8, 0.8})
+            {
+                ContactEvent contact;
+                contact.mBodyA = fixture.mCar;
+                contact.mBodyB = fixture.mFloor;
+                contact.mPointOnA = contact.mPointOnB = Vec3(x - 2.1, y, -0.7);
+                contact.mNormal = Vec3::UnitZ();
+                contact.mPenetrationDepth = 0.002;
+                contact.mTime = time;
+                wheels.push_back(contact);
+            }
+        REQUIRE(fixture.mWorld.SubmitContacts(wheels));
+        fixture.mWorld.Update(time);
+        REQUIRE(fixture.mWorld.GetOpenCollisionCount() == 0);
+    }
+    CHECK(car.GetVertexEvaluationCount() == 0);
+}
+
+TEST_CASE("DamageWorld refuses bad contacts whole and changes nothing", "[plugin]")
+{
+    WorldFixture fixture;
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<ContactEvent> batch = FrontCorners(fixture, 0.0);
+
+    SECTION("a NaN point")
+    {
+        batch[3].mPointOnA.y() = nan;
+        const Status status = fixture.mWorld.SubmitContacts(batch);
+        REQUIRE(status.HasError());
+        CHECK(status.GetError().mCode == EError::NonFinite);
+        CHECK(status.GetError().mMessage.find("contact 3") != std::string::npos);
+    }
+    SECTION("an Inf time")
+    {
+        batch[0].mTime = std::numeric_limits<double>::infinity();
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::NonFinite);
+    }
+    SECTION("an unknown body")
+    {
+        batch[1].mBodyB = BodyId{99};
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::OutOfRange);
+    }
+    SECTION("a body against itself")
+    {
+        batch[1].mBodyB = batch[1].mBodyA;
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::InvalidArgument);
+    }
+    SECTION("a normal that is not unit length")
+    {
+        batch[2].mNormal = Vec3(-2.0, 0.0, 0.0);
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::InvalidArgument);
+    }
+    CHECK(fixture.mWorld.GetOpenCollisionCount() == 0);
+    CHECK(fixture.mWorld.Flush().mCollisionsDispatched == 0);
+}
+
+TEST_CASE("DamageWorld refuses bad bodies and objects and changes nothing", "[plugin]")
+{
+    WorldFixture fixture;
+    const BodyState before = *fixture.mWorld.GetBodyState(fixture.mCar);
+    BodyState negative = fixture.CarState(3.0);
+    negative.mMass = -5.0;
+    CHECK(fixture.mWorld.SetBodyState(fixture.mCar, negative).HasError());
+    CHECK(fixture.mWorld.GetBodyState(fixture.mCar)->mLinearVelocity == before.mLinearVelocity);
+    CHECK(fixture.mWorld.CreateBody(negative).HasError());
+    CHECK(fixture.mWorld.SetBodyState(BodyId{42}, before).GetError().mCode == EError::OutOfRange);
+
+    DeformableObjectSettings bad;
+    bad.mMaterial.mDeformationFactor = -1.0;
+    CHECK(fixture.mWorld.CreateDeformableObject(fixture.mCar, bad).HasError());
+    DeformableObjectSettings empty; // no mesh
+    CHECK(fixture.mWorld.CreateDeformableObject(fixture.mCar, empty).GetError().mCode == EError::DegenerateGeometry);
+    CHECK(fixture.mWorld.GetObjectIds().size() == 1);
+    CHECK(DamageWorld::Create({{}, 2.0, 0.5}).HasError());
+}
+
+TEST_CASE("Removing a body removes its objects and open collisions", "[plugin]")
+{
+    WorldFixture fixture;
+    RecordingListener listener;
+    fixture.mWorld.AddListener(&listener);
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+    REQUIRE(fixture.mWorld.RemoveBody(fixture.mCar));
+    CHECK(fixture.mWorld.GetObject(fixture.mCarObject) == nullptr);
+    CHECK(fixture.mWorld.GetOpenCollisionCount() == 0);
+    CHECK(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.1)).GetError().mCode == EError::OutOfRange);
+    CHECK(fixture.mWorld.RemoveBody(fixture.mCar).HasError());
+    fixture.mWorld.RemoveListener(&listener);
+    CHECK(listener.mCollisions.empty());
+}
+
+TEST_CASE("ResetDamage restores the undeformed car", "[plugin]")
+{
+    WorldFixture fixture;
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+    fixture.mWorld.Flush();
+    const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    REQUIRE_FALSE(SameBytes(car.GetPositions(), car.GetRestMesh().mPositions));
+    fixture.mWorld.ResetDamage();
+    CHECK(SameBytes(car.GetPositions(), car.GetRestMesh().mPositions));
+}
