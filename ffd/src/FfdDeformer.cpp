@@ -110,6 +110,8 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         for (std::uint32_t v : deformer.mRestMesh.mTriangles[f])
             deformer.mVertexTriangles[fill[v]++] = f;
 
+    for (const FfdLattice& zone : deformer.mZones)
+        deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
     deformer.mCellMark.assign(max_cells, 0);
     deformer.mTriangleMark.assign(triangle_count, 0);
     deformer.mVertexMark.assign(vertex_count, 0);
@@ -216,36 +218,23 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         for (std::size_t i = 0; i < locations.size(); ++i)
             before[i] = zone.Displacement(locations[i]);
 
-        // Accumulate onto earlier dents: the change clamped to the step bound, the sum to the zone's maximum
-        // total deformation (a point moves by a convex combination of its controls, so it obeys both).
-        const double max_total = mSettings.mZones[z].mMaxTotalDeformation;
-        std::vector<Vec3>& controls = zone.GetControlDisplacements();
+        // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
         std::vector<int> changed;
         for (std::size_t k = 0; k < data.mControls.size(); ++k)
-        {
-            Vec3 delta = control_delta.row(static_cast<Eigen::Index>(k)).transpose();
-            if (delta.isZero(0.0) || !IsFinite(delta))
-                continue;
-            if (const double step = delta.norm(); step > inMaxStep)
-            {
-                delta *= inMaxStep / step;
-                ++report.mControlsClamped;
-            }
-            Vec3& control = controls[static_cast<std::size_t>(data.mControls[k])];
-            Vec3 total = control + delta;
-            const double length = total.norm();
-            if (length > max_total)
-            {
-                total *= max_total / length;
-                ++report.mControlsClamped;
-            }
-            if (total == control)
-                continue;
-            control = total;
-            changed.push_back(data.mControls[k]);
-        }
-        report.mControlsChanged += static_cast<int>(changed.size());
-        UpdateReachedVertices(static_cast<int>(z), changed, report);
+            if (!control_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
+                changed.push_back(data.mControls[k]);
+        const std::vector<std::uint32_t> reached = ReachedVertices(static_cast<int>(z), changed);
+        const double scale = DentScale(static_cast<int>(z), data.mControls, control_delta, reached, inMaxStep);
+        report.mScale = std::min(report.mScale, scale);
+
+        // Commit the controls, then recompute the reached vertices from them.
+        std::vector<Vec3>& controls = zone.GetControlDisplacements();
+        for (std::size_t k = 0; k < data.mControls.size(); ++k)
+            controls[static_cast<std::size_t>(data.mControls[k])] +=
+                scale * control_delta.row(static_cast<Eigen::Index>(k)).transpose();
+        report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
+        if (scale > 0.0)
+            UpdateVertices(static_cast<int>(z), reached, report);
 
         for (std::size_t i = 0; i < locations.size(); ++i)
         {
@@ -257,10 +246,11 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
     return report;
 }
 
-void FfdDeformer::UpdateReachedVertices(int inZone, std::span<const int> inControls, DentReport& ioReport)
+std::vector<std::uint32_t> FfdDeformer::ReachedVertices(int inZone, std::span<const int> inControls)
 {
+    std::vector<std::uint32_t> reached;
     if (inControls.empty())
-        return;
+        return reached;
     const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
     const std::array<int, 3>& n = zone.GetSettings().mControlCount;
     const std::array<int, 3>& cells = zone.GetCellCount();
@@ -286,24 +276,63 @@ void FfdDeformer::UpdateReachedVertices(int inZone, std::span<const int> inContr
     }
     std::sort(touched_cells.begin(), touched_cells.end());
 
-    // Recompute the vertices bucketed in those cells.
+    // The vertices bucketed in those cells.
     const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(inZone)];
     const std::vector<std::uint32_t>& bucket = mCellVertices[static_cast<std::size_t>(inZone)];
-    std::vector<std::uint32_t> moved;
     for (int cell : touched_cells)
     {
         mCellMark[static_cast<std::size_t>(cell)] = 0;
-        for (std::uint32_t i = start[static_cast<std::size_t>(cell)]; i < start[static_cast<std::size_t>(cell) + 1]; ++i)
-        {
-            const std::uint32_t v = bucket[i];
-            mPositions[v] = mRestMesh.mPositions[v] + zone.Displacement(mVertexLocation[v]);
-            mDirty[v] = 1;
-            moved.push_back(v);
-        }
+        reached.insert(reached.end(), bucket.begin() + start[static_cast<std::size_t>(cell)],
+                       bucket.begin() + start[static_cast<std::size_t>(cell) + 1]);
     }
-    mVertexEvaluations += moved.size();
-    ioReport.mVerticesMoved += static_cast<std::uint32_t>(moved.size());
-    UpdateNormalsAround(moved, ioReport);
+    return reached;
+}
+
+double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                              std::span<const std::uint32_t> inVertices, double inMaxStep)
+{
+    const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
+    const double max_total = mSettings.mZones[static_cast<std::size_t>(inZone)].mMaxTotalDeformation;
+    std::vector<Vec3>& scratch = mScratchControls[static_cast<std::size_t>(inZone)];
+    for (std::size_t k = 0; k < inControls.size(); ++k)
+        scratch[static_cast<std::size_t>(inControls[k])] = inDelta.row(static_cast<Eigen::Index>(k)).transpose();
+
+    // Per vertex: the dent moves it by s n on top of its current displacement o. The step bound asks
+    // s |n| <= max_step; the total bound |o + s n| <= max_total holds up to the larger root of
+    // |n|^2 s^2 + 2 (o.n) s + |o|^2 - max_total^2 = 0.
+    double scale = 1.0;
+    for (std::uint32_t v : inVertices)
+    {
+        const Vec3 n = zone.Displacement(mVertexLocation[v], scratch);
+        const double n2 = n.squaredNorm();
+        if (n2 == 0.0)
+            continue;
+        scale = std::min(scale, inMaxStep / std::sqrt(n2));
+        const Vec3 o = mPositions[v] - mRestMesh.mPositions[v];
+        const double on = o.dot(n);
+        const double slack = max_total * max_total - o.squaredNorm();
+        const double discriminant = on * on + n2 * slack;
+        const double root = discriminant > 0.0 ? (-on + std::sqrt(discriminant)) / n2 : 0.0;
+        scale = std::min(scale, std::max(root, 0.0));
+    }
+    mVertexEvaluations += inVertices.size();
+    for (int control : inControls)
+        scratch[static_cast<std::size_t>(control)] = Vec3::Zero();
+    // Stay a hair inside the bound, so that round-off in the recomputed positions cannot cross it.
+    return scale < 1.0 ? scale * (1.0 - 1.0e-9) : 1.0;
+}
+
+void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport)
+{
+    const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
+    for (std::uint32_t v : inVertices)
+    {
+        mPositions[v] = mRestMesh.mPositions[v] + zone.Displacement(mVertexLocation[v]);
+        mDirty[v] = 1;
+    }
+    mVertexEvaluations += inVertices.size();
+    ioReport.mVerticesMoved += static_cast<std::uint32_t>(inVertices.size());
+    UpdateNormalsAround(inVertices, ioReport);
 }
 
 Vec3 FfdDeformer::FaceNormal(std::uint32_t inTriangle) const
@@ -403,12 +432,20 @@ Status FfdDeformer::ValidateControlDisplacements(std::span<const std::vector<Vec
             return MakeError(EError::StateMismatch, "zone " + std::to_string(z) + ": control state has " +
                                                         std::to_string(inPerZone[z].size()) + " controls, the lattice " +
                                                         std::to_string(mZones[z].GetControlCount()));
-        const double limit = mSettings.mZones[z].mMaxTotalDeformation * (1.0 + 1.0e-12);
         for (const Vec3& d : inPerZone[z])
-            if (!IsFinite(d) || d.norm() > limit)
-                return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) +
-                                                              ": a control displacement is not finite or exceeds the "
-                                                              "zone's maximum total deformation");
+            if (!IsFinite(d))
+                return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": a control displacement is not finite");
+    }
+    // The state must respect each zone's bound on every vertex, as a dent would.
+    for (std::uint32_t v = 0; v < mVertexZone.size(); ++v)
+    {
+        const int z = mVertexZone[v];
+        if (z < 0)
+            continue;
+        const double limit = mSettings.mZones[static_cast<std::size_t>(z)].mMaxTotalDeformation * (1.0 + 1.0e-9);
+        if (mZones[static_cast<std::size_t>(z)].Displacement(mVertexLocation[v], inPerZone[static_cast<std::size_t>(z)]).norm() > limit)
+            return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": the state moves vertex " +
+                                                          std::to_string(v) + " beyond the zone's maximum total deformation");
     }
     return Status::Ok();
 }

@@ -96,7 +96,7 @@ Vec3 FfdLattice::RestControlPosition(int inA, int inB, int inC) const
     return mSettings.mOrigin + mSettings.mAxes * lattice_offset;
 }
 
-Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation) const
+Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation, std::span<const Vec3> inControls) const
 {
     const std::array<double, 4> wx = CubicBSplineWeights(inLocation.mT.x());
     const std::array<double, 4> wy = CubicBSplineWeights(inLocation.mT.y());
@@ -112,7 +112,7 @@ Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation) const
         Vec3 plane = Vec3::Zero();
         for (int b = 0; b < 4; ++b)
         {
-            const Vec3* row = &mControlDisplacements[static_cast<std::size_t>(base + c * nxy + b * nx)];
+            const Vec3* row = &inControls[static_cast<std::size_t>(base + c * nxy + b * nx)];
             const Vec3 line = wx[0] * row[0] + wx[1] * row[1] + wx[2] * row[2] + wx[3] * row[3];
             plane += wy[b] * line;
         }

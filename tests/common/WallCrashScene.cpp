@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace crumple::common
@@ -89,10 +90,37 @@ void WallCrashScene::Step()
         if (p.x() > 0.0)
             candidates.push_back({p, p.x()});
     }
+    // Keep a manifold like Bullet's: the deepest point, then the points that spread the manifold most
+    // (farthest from those kept) among those nearly as deep.
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.mDepth > b.mDepth; });
-    if (candidates.size() > static_cast<std::size_t>(mSettings.mMaxContacts))
-        candidates.resize(static_cast<std::size_t>(mSettings.mMaxContacts));
+    std::vector<Candidate> manifold;
+    if (!candidates.empty())
+    {
+        const double floor_depth = candidates.front().mDepth - 0.05;
+        std::erase_if(candidates, [&](const Candidate& c) { return c.mDepth < floor_depth; });
+        manifold.push_back(candidates.front());
+        while (manifold.size() < static_cast<std::size_t>(mSettings.mMaxContacts))
+        {
+            double best_distance = 0.0;
+            const Candidate* best = nullptr;
+            for (const Candidate& c : candidates)
+            {
+                double nearest = std::numeric_limits<double>::infinity();
+                for (const Candidate& kept : manifold)
+                    nearest = std::min(nearest, (kept.mPoint - c.mPoint).norm());
+                if (nearest > best_distance + 1.0e-9)
+                {
+                    best_distance = nearest;
+                    best = &c;
+                }
+            }
+            if (best == nullptr)
+                break;
+            manifold.push_back(*best);
+        }
+    }
+    candidates = std::move(manifold);
 
     std::vector<ContactEvent> events;
     std::vector<ImpulseContact> solver_contacts;

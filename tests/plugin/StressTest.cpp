@@ -79,8 +79,6 @@ TEST_CASE("10,000 random impacts leave no NaN and no vertex beyond the maximum t
                 REQUIRE(car.GetNormals()[v].allFinite());
                 REQUIRE((car.GetPositions()[v] - car.GetRestMesh().mPositions[v]).norm() <= max_total * (1.0 + 1.0e-12));
             }
-            for (const Vec3& control : car.GetZones()[0].GetControlDisplacements())
-                REQUIRE(control.norm() <= max_total * (1.0 + 1.0e-12));
         }
     }
     CHECK(refused == 0);

@@ -14,7 +14,8 @@ struct DentReport
     int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance
     int mPointsIgnored = 0;        ///< Points outside every zone (beyond the capture distance)
     int mControlsChanged = 0;      ///< Controls whose displacement changed
-    int mControlsClamped = 0;      ///< Controls limited by the step bound or the zone's maximum total deformation
+    double mScale = 1.0;           ///< Smallest factor a zone's dent was scaled by to respect the step bound and
+                                   ///< the maximum total deformation (1 when nothing was limited)
     int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B): > 0 for coincident/collinear sets
     std::uint32_t mVerticesMoved = 0;    ///< Vertices whose position was recomputed
     std::uint32_t mTrianglesUpdated = 0; ///< Triangles whose face normal was recomputed

@@ -32,11 +32,12 @@ public:
     static Result<FfdDeformer> Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings);
 
     /// Moves each point by its displacement (body frame, m), accumulating onto earlier dents.
-    /// Points are assigned to zones; each zone solves its own minimum-norm system; control displacements
-    /// are clamped to the zone's maximum total deformation. A NaN/Inf anywhere refuses the whole dent and
-    /// changes nothing. A dent whose displacements are all zero changes no byte.
-    /// @param[in] inMaxStep  bound on how far this dent may move any point (m), enforced like the total
-    ///                       bound: on each control's change, so |change of any point| <= inMaxStep
+    /// Points are assigned to zones; each zone solves its own minimum-norm system dC = B^+ dP. If the
+    /// resulting field would move a vertex by more than inMaxStep, or beyond the zone's maximum total
+    /// deformation, the zone's dC is scaled down uniformly (the dent keeps its shape) to the largest factor
+    /// that respects both on every vertex. A NaN/Inf anywhere refuses the whole dent and changes nothing.
+    /// A dent whose displacements are all zero changes no byte.
+    /// @param[in] inMaxStep  bound on how far this dent may move any vertex (m), >= 0
     Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
                                  double inMaxStep = std::numeric_limits<double>::infinity());
 
@@ -83,8 +84,14 @@ private:
 
     // Where a deformed body-frame point lies in zone inZone, in rest lattice coordinates.
     Vec3 RestLatticeCoordinate(int inZone, const Vec3& inPoint) const;
-    // Recompute positions of vertices in cells reached by inControls of inZone, then their normals.
-    void UpdateReachedVertices(int inZone, std::span<const int> inControls, DentReport& ioReport);
+    // Vertices bucketed in the cells that inControls of inZone reach, ascending by cell then vertex.
+    std::vector<std::uint32_t> ReachedVertices(int inZone, std::span<const int> inControls);
+    // Largest s in [0, 1] such that moving every vertex in inVertices by s times the field of inDelta
+    // (control changes over inControls) respects inMaxStep and the zone's maximum total deformation.
+    double DentScale(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                     std::span<const std::uint32_t> inVertices, double inMaxStep);
+    // Recompute positions of inVertices from the zone's controls, then the normals around them.
+    void UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport);
     // Recompute face normals of triangles touching inMoved, then vertex normals of their corners.
     void UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport);
     Vec3 VertexNormal(std::uint32_t inVertex) const;
@@ -110,6 +117,7 @@ private:
     std::vector<std::uint8_t> mCellMark;
     std::vector<std::uint8_t> mTriangleMark;
     std::vector<std::uint8_t> mVertexMark;
+    std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
 
     std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges
     std::uint64_t mVertexEvaluations = 0;

@@ -14,9 +14,9 @@ namespace crumple::ffd
 struct FfdZoneSettings
 {
     FfdLatticeSettings mLattice;        ///< The zone's volume and control resolution
-    double mMaxTotalDeformation = 0.25; ///< Bound on the total displacement of any point of the zone (m), >= 0.
-                                        ///< Enforced on the controls: a point's displacement is a convex
-                                        ///< combination of its controls', so |d(point)| <= max |d(control)|.
+    double mMaxTotalDeformation = 0.25; ///< Bound on the total displacement of any vertex of the zone (m), >= 0.
+                                        ///< A dent that would push a vertex past it is scaled down as a whole
+                                        ///< (its shape kept) until the vertex sits on the bound.
 };
 
 /// Settings of an FfdDeformer: the zones of one object and the solver's tolerances.

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace crumple::ffd
@@ -61,7 +62,9 @@ public:
     Vec3 RestControlPosition(int inA, int inB, int inC) const;
 
     /// Displacement (m, body frame) of a point at inLocation: the tensor-product sum over its 64 controls.
-    Vec3 Displacement(const LatticeLocation& inLocation) const;
+    Vec3 Displacement(const LatticeLocation& inLocation) const { return Displacement(inLocation, mControlDisplacements); }
+    /// The same sum over another set of control displacements (#controls, ControlIndex order).
+    Vec3 Displacement(const LatticeLocation& inLocation, std::span<const Vec3> inControls) const;
 
     /// Control displacements, body frame (m), indexed by ControlIndex.
     const std::vector<Vec3>& GetControlDisplacements() const { return mControlDisplacements; }

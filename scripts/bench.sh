@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# The bench job: builds crumple-bench, prints its table, writes bench-output/results.csv, then runs
+# the long soak tests (CTest label "soak").
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+crumple_ensure_packages
+crumple_build -DCRUMPLE_BUILD_TESTS=ON -DCRUMPLE_BUILD_BENCH=ON
+mkdir -p "$CRUMPLE_ROOT/bench-output"
+"$CRUMPLE_BUILD_DIR/bench/crumple-bench" --csv "$CRUMPLE_ROOT/bench-output/results.csv" "$@"
+cd "$CRUMPLE_BUILD_DIR"
+ctest --output-on-failure --label-regex soak
