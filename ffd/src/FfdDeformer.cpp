@@ -112,6 +112,7 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
 
     for (const FfdLattice& zone : deformer.mZones)
         deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
+    deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
     deformer.mCellMark.assign(max_cells, 0);
     deformer.mTriangleMark.assign(triangle_count, 0);
     deformer.mVertexMark.assign(vertex_count, 0);
@@ -293,6 +294,16 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
 {
     const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
     const double max_total = mSettings.mZones[static_cast<std::size_t>(inZone)].mMaxTotalDeformation;
+
+    // Cheap test first: a vertex moves by a convex combination of its controls' changes, so no vertex moves
+    // further than the largest change. Within both bounds, the dent needs no per-vertex check.
+    double largest_change = 0.0;
+    for (Eigen::Index k = 0; k < inDelta.rows(); ++k)
+        largest_change = std::max(largest_change, inDelta.row(k).norm());
+    if (largest_change <= inMaxStep &&
+        mZoneDisplacementBound[static_cast<std::size_t>(inZone)] + largest_change <= max_total)
+        return 1.0;
+
     std::vector<Vec3>& scratch = mScratchControls[static_cast<std::size_t>(inZone)];
     for (std::size_t k = 0; k < inControls.size(); ++k)
         scratch[static_cast<std::size_t>(inControls[k])] = inDelta.row(static_cast<Eigen::Index>(k)).transpose();
@@ -325,9 +336,12 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
 void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport)
 {
     const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
+    double& bound = mZoneDisplacementBound[static_cast<std::size_t>(inZone)];
     for (std::uint32_t v : inVertices)
     {
-        mPositions[v] = mRestMesh.mPositions[v] + zone.Displacement(mVertexLocation[v]);
+        const Vec3 displacement = zone.Displacement(mVertexLocation[v]);
+        mPositions[v] = mRestMesh.mPositions[v] + displacement;
+        bound = std::max(bound, displacement.norm());
         mDirty[v] = 1;
     }
     mVertexEvaluations += inVertices.size();
@@ -392,6 +406,7 @@ void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, De
 void FfdDeformer::RecomputeAll()
 {
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
+    std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const int zone = mVertexZone[v];
@@ -401,6 +416,9 @@ void FfdDeformer::RecomputeAll()
         if (position != mPositions[v])
             mDirty[v] = 1;
         mPositions[v] = position;
+        if (zone >= 0)
+            mZoneDisplacementBound[static_cast<std::size_t>(zone)] =
+                std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], (position - mRestMesh.mPositions[v]).norm());
     }
     mVertexEvaluations += vertex_count;
     for (std::uint32_t f = 0; f < mFaceNormals.size(); ++f)

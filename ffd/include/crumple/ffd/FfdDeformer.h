@@ -118,6 +118,7 @@ private:
     std::vector<std::uint8_t> mTriangleMark;
     std::vector<std::uint8_t> mVertexMark;
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
+    std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
 
     std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges
     std::uint64_t mVertexEvaluations = 0;

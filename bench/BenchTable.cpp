@@ -1,0 +1,59 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BenchTable.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+namespace crumple::bench
+{
+
+void BenchTable::Add(BenchRow inRow)
+{
+    std::printf("  %-18s %-40s %10.4f ms  %10.3e %-22s %s\n", inRow.mBenchmark.c_str(), inRow.mCase.c_str(),
+                inRow.mMedianMs, inRow.mError, inRow.mErrorUnit.c_str(), inRow.mExtra.c_str());
+    std::fflush(stdout);
+    mRows.push_back(std::move(inRow));
+}
+
+void BenchTable::Print() const
+{
+    std::printf("\n%-20s %-40s %12s  %10s %-22s %s\n", "benchmark", "case", "median", "error", "error_unit", "extra");
+    for (const BenchRow& row : mRows)
+        std::printf("%-20s %-40s %9.4f ms  %10.3e %-22s %s\n", row.mBenchmark.c_str(), row.mCase.c_str(), row.mMedianMs,
+                    row.mError, row.mErrorUnit.c_str(), row.mExtra.c_str());
+}
+
+bool BenchTable::WriteCsv(const std::string& inPath) const
+{
+    std::ofstream out(inPath);
+    if (!out)
+        return false;
+    out << "benchmark,case,median_ms,error,error_unit,extra\n";
+    char number[64];
+    for (const BenchRow& row : mRows)
+    {
+        out << row.mBenchmark << ',' << row.mCase << ',';
+        std::snprintf(number, sizeof(number), "%.6f,%.6e", row.mMedianMs, row.mError);
+        out << number << ',' << row.mErrorUnit << ',' << row.mExtra << '\n';
+    }
+    return static_cast<bool>(out.flush());
+}
+
+double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun)
+{
+    std::vector<double> times;
+    for (int i = 0; i < inRepetitions; ++i)
+    {
+        inPrepare();
+        const auto start = std::chrono::steady_clock::now();
+        inRun();
+        const auto stop = std::chrono::steady_clock::now();
+        times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    }
+    std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+    return times[times.size() / 2];
+}
+
+} // namespace crumple::bench

@@ -1,0 +1,40 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace crumple::bench
+{
+
+/// One benchmark result: a row of the printed table and of the CSV
+/// (benchmark,case,median_ms,error,error_unit,extra).
+struct BenchRow
+{
+    std::string mBenchmark;  ///< e.g. "apply_collision"
+    std::string mCase;       ///< e.g. "50k_tris/1_zone/38_contacts"
+    double mMedianMs = 0.0;  ///< Median wall time of one repetition (ms)
+    double mError = 0.0;     ///< Accuracy figure of the case
+    std::string mErrorUnit;  ///< What mError measures, e.g. "rel_contact_error"
+    std::string mExtra;      ///< key=value pairs separated by ';'
+};
+
+/// Collects rows, prints them as a table and writes them as CSV.
+class BenchTable
+{
+public:
+    void Add(BenchRow inRow);
+    void Print() const;
+    bool WriteCsv(const std::string& inPath) const;
+
+private:
+    std::vector<BenchRow> mRows;
+};
+
+/// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
+double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);
+
+} // namespace crumple::bench

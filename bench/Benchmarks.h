@@ -1,0 +1,22 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "BenchTable.h"
+
+namespace crumple::bench
+{
+
+/// Run-wide options.
+struct BenchOptions
+{
+    bool mQuick = false; ///< Few repetitions and small meshes: a smoke run for the test suite
+};
+
+/// Dent application on a car-sized mesh: contacts, zones and lattice resolution against time and error.
+void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
+/// Simultaneous Baraff impulses against the analytic impulse, and the cost of frames without impacts.
+void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
+} // namespace crumple::bench

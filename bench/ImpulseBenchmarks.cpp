@@ -1,0 +1,106 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "Benchmarks.h"
+#include "WorldFixture.h"
+
+#include <crumple/plugin/BaraffImpulse.h>
+
+#include <cmath>
+#include <string>
+
+namespace crumple::bench
+{
+
+using namespace crumple::plugin;
+
+namespace
+{
+
+// N contacts in a grid on the bottom of a 1,200 kg, 4 m x 2 m box falling flat at 5 m/s on static ground.
+void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
+{
+    const double m = 1200.0, v = 5.0, e = 0.1;
+    BodyState box;
+    box.mMass = m;
+    box.mInverseInertiaWorld = Vec3(12.0 / (m * (4.0 + 1.96)), 12.0 / (m * (16.0 + 1.96)), 12.0 / (m * 20.0)).asDiagonal();
+    box.mCenterOfMass = Vec3(0.0, 0.0, 0.7);
+    box.mLinearVelocity = Vec3(0.0, 0.0, -v);
+    BodyState ground;
+    ground.mMotionType = EMotionType::Static;
+    std::vector<ImpulseContact> contacts;
+    for (int i = 0; i < inGrid; ++i)
+        for (int k = 0; k < inGrid; ++k)
+            contacts.push_back({Vec3(inGrid == 1 ? 0.0 : -2.0 + 4.0 * i / (inGrid - 1),
+                                     inGrid == 1 ? 0.0 : -1.0 + 2.0 * k / (inGrid - 1), 0.0),
+                                Vec3::UnitZ()});
+    std::vector<double> impulses;
+    constexpr int cInner = 20;
+    const double ms = MedianMs(inRepetitions, [] {}, [&] {
+        for (int i = 0; i < cInner; ++i)
+            impulses = SimultaneousImpulses(box, ground, contacts, e, 0.5);
+    }) / cInner;
+    double total = 0.0;
+    for (double j : impulses)
+        total += j;
+    const double expected = (1.0 + e) * m * v;
+    ioTable.Add({"impulse_solve", std::to_string(contacts.size()) + "_contacts", ms, std::abs(total - expected) / expected,
+                 "rel_total_impulse", "analytic=(1+e)mv=" + std::to_string(expected)});
+}
+
+// Frames without impacts: an empty frame and a car resting on four wheel contacts.
+void IdleCases(BenchTable& ioTable, int inRepetitions)
+{
+    common::WorldFixture fixture(50000);
+    const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    constexpr int cFrames = 1000;
+    double time = 0.0;
+    const double empty_ms = MedianMs(inRepetitions, [] {}, [&] {
+        for (int i = 0; i < cFrames; ++i)
+        {
+            (void)fixture.mWorld.SubmitContacts({});
+            fixture.mWorld.Update(time += 1.0 / 60.0);
+        }
+    }) / cFrames;
+    ioTable.Add({"frame_overhead", "no_contacts", empty_ms, 0.0, "none",
+                 "vertex_evaluations=" + std::to_string(car.GetVertexEvaluationCount())});
+
+    BodyState resting = fixture.CarState(0.0);
+    resting.mLinearVelocity = Vec3(20.0, 0.0, -9.81 / 60.0);
+    std::vector<ContactEvent> wheels;
+    for (double x : {-1.4, 1.4})
+        for (double y : {-0.8, 0.8})
+        {
+            ContactEvent contact;
+            contact.mBodyA = fixture.mCar;
+            contact.mBodyB = fixture.mFloor;
+            contact.mPointOnA = contact.mPointOnB = Vec3(x - 2.1, y, -0.7);
+            contact.mNormal = Vec3::UnitZ();
+            wheels.push_back(contact);
+        }
+    const double resting_ms = MedianMs(inRepetitions, [] {}, [&] {
+        for (int i = 0; i < cFrames; ++i)
+        {
+            time += 1.0 / 60.0;
+            for (ContactEvent& wheel : wheels)
+                wheel.mTime = time;
+            (void)fixture.mWorld.SetBodyState(fixture.mCar, resting);
+            (void)fixture.mWorld.SubmitContacts(wheels);
+            fixture.mWorld.Update(time);
+        }
+    }) / cFrames;
+    ioTable.Add({"frame_overhead", "4_resting_contacts", resting_ms, 0.0, "none",
+                 "vertex_evaluations=" + std::to_string(car.GetVertexEvaluationCount()) +
+                     ";open_collisions=" + std::to_string(fixture.mWorld.GetOpenCollisionCount())});
+}
+
+} // namespace
+
+void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+    const int repetitions = inOptions.mQuick ? 3 : 51;
+    for (int grid : {1, 2, 6, 8})
+        ImpulseCase(ioTable, grid, repetitions);
+    IdleCases(ioTable, repetitions);
+}
+
+} // namespace crumple::bench
