@@ -54,7 +54,8 @@ std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& 
     std::vector<std::size_t> active;
     for (std::size_t i = 0; i < n; ++i)
     {
-        v_rel[i] = RelativeNormalVelocity(inA, inB, inContacts[i].mPoint, inContacts[i].mNormal);
+        v_rel[i] = RelativeNormalVelocity(inA, inB, inContacts[i].mPoint, inContacts[i].mNormal) +
+                   std::max(inContacts[i].mSpeculativeSpeed, 0.0);
         if (v_rel[i] < -inClosingSpeed)
             active.push_back(i);
     }
@@ -65,7 +66,8 @@ std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& 
     if (active.size() == 1)
     {
         const ImpulseContact& c = inContacts[active[0]];
-        impulses[active[0]] = BaraffImpulse(inA, inB, c.mPoint, c.mNormal, inRestitution);
+        const double response = ImpulseResponse(inA, inB, c.mPoint, c.mNormal, c.mPoint, c.mNormal);
+        impulses[active[0]] = response > 0.0 ? -(1.0 + inRestitution) * v_rel[active[0]] / response : 0.0;
         return impulses;
     }
 

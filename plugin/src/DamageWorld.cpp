@@ -122,8 +122,10 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
     return Status::Ok();
 }
 
-Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts)
+Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep)
 {
+    if (!(std::isfinite(inTimeStep) && inTimeStep >= 0.0))
+        return MakeError(EError::InvalidArgument, "SubmitContacts: the time step must be finite and >= 0 s");
     // Validate everything first: a refused batch changes nothing.
     for (std::size_t i = 0; i < inContacts.size(); ++i)
         if (Status valid = ValidateContact(inContacts[i], i); !valid)
@@ -165,7 +167,11 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts)
         const BodyState& state_b = mBodies[batch.mB.mValue].mState;
         std::vector<ImpulseContact> impulse_contacts;
         for (const CollisionContact& c : batch.mContacts)
-            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal});
+        {
+            const double gap = std::max(-c.mPenetrationDepth, 0.0);
+            const double speculative = inTimeStep > 0.0 ? gap / inTimeStep : 0.0;
+            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative});
+        }
         const std::vector<double> impulses =
             SimultaneousImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
         for (std::size_t i = 0; i < batch.mContacts.size(); ++i)

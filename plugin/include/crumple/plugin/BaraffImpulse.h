@@ -31,6 +31,10 @@ struct ImpulseContact
 {
     Vec3 mPoint = Vec3::Zero();  ///< World contact point (m)
     Vec3 mNormal = Vec3::UnitZ(); ///< Unit normal from B to A
+    double mSpeculativeSpeed = 0.0; ///< Approach speed that only closes a gap within the step (m/s, >= 0): for a
+                                    ///< contact reported at a distance g before touching, g / dt. Only the approach
+                                    ///< beyond it is resolved now, as an engine's speculative contact solver does;
+                                    ///< the rest arrives with the next step's contact
 };
 
 /// Impulses of contacts that one engine step reported together for the same body pair (N s each, >= 0).
@@ -42,7 +46,8 @@ struct ImpulseContact
 /// minimum-norm solution (complete orthogonal decomposition), so symmetric contact sets share the impulse
 /// symmetrically and the total equals the single-contact impulse of the same impact. Contacts that would
 /// need a pulling impulse are dropped from the active set and the rest re-solved (at most N rounds).
-/// @param[in] inClosingSpeed  contacts approaching slower than this (m/s, >= 0) count as resting: zero impulse
+/// @param[in] inClosingSpeed  contacts approaching slower than this (m/s, >= 0), after their speculative
+///                            speed, count as resting: zero impulse
 std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& inB,
                                          std::span<const ImpulseContact> inContacts, double inRestitution,
                                          double inClosingSpeed);

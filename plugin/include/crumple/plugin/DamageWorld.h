@@ -64,7 +64,10 @@ public:
     /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
     /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
     /// time together, and groups the closing ones into collisions. Refused whole on any bad contact.
-    Status SubmitContacts(std::span<const ContactEvent> inContacts);
+    /// @param[in] inTimeStep the engine step that produced them (s), or 0. With a step, a contact reported
+    ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as the
+    ///            engine's speculative contacts do; without one, gap contacts resolve their whole approach.
+    Status SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep = 0.0);
 
     /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners.
     UpdateReport Update(double inTime);

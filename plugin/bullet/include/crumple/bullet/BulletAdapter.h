@@ -1,0 +1,116 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/DamageWorld.h>
+
+#include <LinearMath/btScalar.h>
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+class btCollisionObject;
+class btConvexHullShape;
+class btDiscreteDynamicsWorld;
+class btDynamicsWorld;
+
+namespace crumple::bullet
+{
+
+/// Settings of a BulletAdapter.
+struct BulletAdapterSettings
+{
+    double mMaxSeparation = 0.05; ///< Manifold points further apart than this (m) are not reported. Points with a
+                                  ///< small gap are reported as speculative contacts (their gap/dt of approach
+                                  ///< is left to the next step), because Bullet's solver already acts on them
+};
+
+/// What the adapter did in the last internal sub-step.
+struct BulletStepStats
+{
+    int mBodiesSnapshotted = 0; ///< Active mapped bodies whose pre-solve state was taken
+    int mContactsReported = 0;  ///< Manifold points submitted
+    int mContactsRefused = 0;   ///< Points of a batch the damage world refused (non-finite engine output)
+    plugin::UpdateReport mUpdate; ///< What the damage world dispatched
+};
+
+/// Connects a btDiscreteDynamicsWorld to a crumple::plugin::DamageWorld.
+///
+/// It installs Bullet's per-world internal tick callbacks (never the process-wide gContactAddedCallback):
+/// before each internal sub-step it snapshots the state of every awake mapped body (impulses need
+/// pre-solve velocities), after it reads the contact manifolds of mapped pairs, submits them and updates
+/// the damage world with the sub-step's time. Callbacks the game installed before are kept and called
+/// (with the game's own world user pointer restored around the call); the destructor puts them back.
+/// Bodies are mapped in a table, so the game keeps btCollisionObject user pointers for itself. Several
+/// adapters on several worlds are independent. Not thread-safe: one adapter per world, stepped on one thread.
+class BulletAdapter
+{
+public:
+    /// Attaches to inWorld. Both worlds must outlive the adapter.
+    static Result<std::unique_ptr<BulletAdapter>> Create(btDiscreteDynamicsWorld& inWorld, plugin::DamageWorld& inDamage,
+                                                         const BulletAdapterSettings& inSettings = {});
+    ~BulletAdapter();
+    BulletAdapter(const BulletAdapter&) = delete;
+    BulletAdapter& operator=(const BulletAdapter&) = delete;
+
+    /// Registers a rigid body or static collision object with the damage world (its current state).
+    /// Contacts between unregistered objects are ignored. Refused when already registered.
+    Result<plugin::BodyId> AddBody(btCollisionObject& inObject);
+    /// Unregisters an object and removes its body, deformable objects and open collisions from the damage world.
+    Status RemoveBody(const btCollisionObject& inObject);
+    /// The damage body of an object, invalid when not registered.
+    plugin::BodyId FindBody(const btCollisionObject& inObject) const;
+
+    /// Makes the physical shape follow a deformable object's dents: returns a convex hull over (up to
+    /// inMaxPoints) vertices of the object's mesh, in the body frame, owned by the adapter. Use it as the
+    /// body's collision shape or as a child of its compound; after each dent the adapter moves its points
+    /// to the deformed vertices, refreshes its bounds and the body's broadphase entry.
+    Result<btConvexHullShape*> CreateFollowingHull(plugin::ObjectId inObject, int inMaxPoints = 256);
+
+    /// Simulated time (s) the adapter has seen: the sum of internal sub-steps.
+    double GetTime() const { return mTime; }
+    const BulletStepStats& GetLastStepStats() const { return mLastStats; }
+    plugin::DamageWorld& GetDamageWorld() { return mDamage; }
+
+private:
+    BulletAdapter(btDiscreteDynamicsWorld& inWorld, plugin::DamageWorld& inDamage, const BulletAdapterSettings& inSettings);
+
+    friend struct BulletTickCallbacks;
+    void PreTick(double inTimeStep);
+    void PostTick(double inTimeStep);
+    void UpdateHulls();
+
+    struct MappedBody
+    {
+        btCollisionObject* mObject = nullptr;
+        plugin::BodyId mBody;
+    };
+    struct FollowingHull
+    {
+        plugin::ObjectId mObject;
+        btCollisionObject* mOwner = nullptr;
+        std::unique_ptr<btConvexHullShape> mShape;
+        std::vector<std::uint32_t> mVertices; ///< Mesh vertex per hull point
+    };
+
+    btDiscreteDynamicsWorld& mWorld;
+    plugin::DamageWorld& mDamage;
+    BulletAdapterSettings mSettings;
+    std::vector<MappedBody> mBodies; ///< In BodyId order: deterministic snapshot order
+    std::unordered_map<const btCollisionObject*, plugin::BodyId> mLookup; ///< Lookup only, never iterated
+    std::vector<FollowingHull> mHulls;
+    std::vector<plugin::ContactEvent> mEvents; ///< Scratch, reused every sub-step
+
+    // The game's callbacks and user pointer, chained and restored.
+    void (*mPreviousPreTick)(btDynamicsWorld*, btScalar) = nullptr;
+    void (*mPreviousPostTick)(btDynamicsWorld*, btScalar) = nullptr;
+    void* mPreviousUserInfo = nullptr;
+
+    double mTime = 0.0;
+    BulletStepStats mLastStats;
+};
+
+} // namespace crumple::bullet

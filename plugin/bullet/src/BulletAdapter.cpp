@@ -1,0 +1,200 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BulletTickCallbacks.h"
+
+#include <crumple/bullet/BulletAdapter.h>
+#include <crumple/bullet/BulletBodyState.h>
+
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <string>
+
+namespace crumple::bullet
+{
+
+using namespace crumple::plugin;
+
+namespace
+{
+
+Vec3 ToVec3(const btVector3& inV)
+{
+    return {static_cast<double>(inV.x()), static_cast<double>(inV.y()), static_cast<double>(inV.z())};
+}
+
+} // namespace
+
+Result<std::unique_ptr<BulletAdapter>> BulletAdapter::Create(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDamage,
+                                                             const BulletAdapterSettings& inSettings)
+{
+    if (!(inSettings.mMaxSeparation >= 0.0 && inSettings.mMaxSeparation < 1.0))
+        return MakeError(EError::InvalidArgument, "BulletAdapterSettings.mMaxSeparation must be in [0, 1) m");
+    // Two adapters on one world would each chain the other forever: refuse the second.
+    if (BulletTickCallbacks::InstalledPreTick(inWorld) == &BulletTickCallbacks::PreTick)
+        return MakeError(EError::InvalidArgument, "this btDynamicsWorld already has a Crumple adapter");
+    return std::unique_ptr<BulletAdapter>(new BulletAdapter(inWorld, inDamage, inSettings));
+}
+
+BulletAdapter::BulletAdapter(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDamage, const BulletAdapterSettings& inSettings)
+    : mWorld(inWorld), mDamage(inDamage), mSettings(inSettings)
+{
+    // Remember the game's callbacks and user pointer, then install ours (both use the one user pointer).
+    mPreviousPreTick = BulletTickCallbacks::InstalledPreTick(inWorld);
+    mPreviousPostTick = BulletTickCallbacks::InstalledPostTick(inWorld);
+    mPreviousUserInfo = inWorld.getWorldUserInfo();
+    inWorld.setInternalTickCallback(&BulletTickCallbacks::PreTick, this, true);
+    inWorld.setInternalTickCallback(&BulletTickCallbacks::PostTick, this, false);
+}
+
+BulletAdapter::~BulletAdapter()
+{
+    mWorld.setInternalTickCallback(mPreviousPreTick, mPreviousUserInfo, true);
+    mWorld.setInternalTickCallback(mPreviousPostTick, mPreviousUserInfo, false);
+    for (FollowingHull& hull : mHulls)
+        if (hull.mOwner != nullptr && hull.mOwner->getCollisionShape() == hull.mShape.get())
+            hull.mOwner->setCollisionShape(nullptr); // the shape dies with us: do not leave a dangling pointer
+}
+
+Result<BodyId> BulletAdapter::AddBody(btCollisionObject& inObject)
+{
+    if (mLookup.contains(&inObject))
+        return MakeError(EError::InvalidArgument, "AddBody: this collision object is already registered");
+    Result<BodyId> body = mDamage.CreateBody(BulletBodyState(inObject));
+    if (!body)
+        return body;
+    mLookup.emplace(&inObject, body.Get());
+    mBodies.push_back({&inObject, body.Get()});
+    return body;
+}
+
+Status BulletAdapter::RemoveBody(const btCollisionObject& inObject)
+{
+    const auto found = mLookup.find(&inObject);
+    if (found == mLookup.end())
+        return MakeError(EError::OutOfRange, "RemoveBody: this collision object is not registered");
+    const BodyId body = found->second;
+    if (Status removed = mDamage.RemoveBody(body); !removed)
+        return removed;
+    mLookup.erase(found);
+    std::erase_if(mBodies, [&](const MappedBody& m) { return m.mBody == body; });
+    std::erase_if(mHulls, [&](const FollowingHull& h) { return h.mOwner == &inObject; });
+    return Status::Ok();
+}
+
+BodyId BulletAdapter::FindBody(const btCollisionObject& inObject) const
+{
+    const auto found = mLookup.find(&inObject);
+    return found == mLookup.end() ? BodyId{} : found->second;
+}
+
+Result<btConvexHullShape*> BulletAdapter::CreateFollowingHull(ObjectId inObject, int inMaxPoints)
+{
+    const DeformableObject* object = mDamage.GetObject(inObject);
+    if (object == nullptr)
+        return MakeError(EError::OutOfRange, "CreateFollowingHull: no such deformable object");
+    if (inMaxPoints < 4)
+        return MakeError(EError::InvalidArgument, "CreateFollowingHull: a hull needs at least 4 points");
+    const BodyId body = mDamage.GetObjectBody(inObject);
+    const auto owner = std::find_if(mBodies.begin(), mBodies.end(), [&](const MappedBody& m) { return m.mBody == body; });
+    if (owner == mBodies.end())
+        return MakeError(EError::OutOfRange, "CreateFollowingHull: the object's body is not a Bullet body of this adapter");
+
+    // Hull points: an even subsample of the mesh vertices (the hull of a subsample of a closed car
+    // surface keeps its silhouette; Bullet's GJK then works on at most inMaxPoints support points).
+    const std::vector<Vec3>& positions = object->GetDeformer().GetPositions();
+    FollowingHull hull;
+    hull.mObject = inObject;
+    hull.mOwner = owner->mObject;
+    hull.mShape = std::make_unique<btConvexHullShape>();
+    const std::size_t stride = std::max<std::size_t>(1, positions.size() / static_cast<std::size_t>(inMaxPoints));
+    for (std::size_t v = 0; v < positions.size(); v += stride)
+    {
+        hull.mVertices.push_back(static_cast<std::uint32_t>(v));
+        const Vec3& p = positions[v];
+        hull.mShape->addPoint(btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())), false);
+    }
+    hull.mShape->recalcLocalAabb();
+    btConvexHullShape* shape = hull.mShape.get();
+    mHulls.push_back(std::move(hull));
+    return shape;
+}
+
+void BulletAdapter::PreTick(double)
+{
+    // Pre-solve snapshot of every awake mapped body; sleeping bodies keep their last (resting) state.
+    int snapshotted = 0;
+    for (const MappedBody& mapped : mBodies)
+    {
+        if (!mapped.mObject->isActive() || mapped.mObject->isStaticObject())
+            continue;
+        if (mDamage.SetBodyState(mapped.mBody, BulletBodyState(*mapped.mObject)))
+            ++snapshotted;
+    }
+    mLastStats = {};
+    mLastStats.mBodiesSnapshotted = snapshotted;
+}
+
+void BulletAdapter::PostTick(double inTimeStep)
+{
+    mTime += inTimeStep;
+
+    // Manifold points of mapped pairs that touch, in the dispatcher's (deterministic) order.
+    mEvents.clear();
+    btDispatcher* dispatcher = mWorld.getDispatcher();
+    const int manifolds = dispatcher->getNumManifolds();
+    for (int m = 0; m < manifolds; ++m)
+    {
+        const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+        if (manifold->getNumContacts() == 0)
+            continue;
+        const auto a = mLookup.find(manifold->getBody0());
+        const auto b = mLookup.find(manifold->getBody1());
+        if (a == mLookup.end() || b == mLookup.end())
+            continue;
+        for (int p = 0; p < manifold->getNumContacts(); ++p)
+        {
+            const btManifoldPoint& point = manifold->getContactPoint(p);
+            const double distance = static_cast<double>(point.getDistance());
+            if (distance > mSettings.mMaxSeparation)
+                continue;
+            ContactEvent event;
+            event.mBodyA = a->second;
+            event.mBodyB = b->second;
+            event.mPointOnA = ToVec3(point.getPositionWorldOnA());
+            event.mPointOnB = ToVec3(point.getPositionWorldOnB());
+            event.mNormal = ToVec3(point.m_normalWorldOnB).normalized(); // from B towards A, as Crumple expects
+            event.mPenetrationDepth = -distance;
+            event.mTime = mTime;
+            mEvents.push_back(event);
+        }
+    }
+    mLastStats.mContactsReported = static_cast<int>(mEvents.size());
+    // Bullet's output is finite unless the game's simulation already diverged; then the step is skipped.
+    if (!mEvents.empty() && !mDamage.SubmitContacts(mEvents, inTimeStep))
+        mLastStats.mContactsRefused = static_cast<int>(mEvents.size());
+    mLastStats.mUpdate = mDamage.Update(mTime);
+    if (mLastStats.mUpdate.mObjectsDented > 0)
+        UpdateHulls();
+}
+
+void BulletAdapter::UpdateHulls()
+{
+    for (FollowingHull& hull : mHulls)
+    {
+        const DeformableObject* object = mDamage.GetObject(hull.mObject);
+        if (object == nullptr)
+            continue;
+        const std::vector<Vec3>& positions = object->GetDeformer().GetPositions();
+        btVector3* points = hull.mShape->getUnscaledPoints();
+        for (std::size_t i = 0; i < hull.mVertices.size(); ++i)
+        {
+            const Vec3& p = positions[hull.mVertices[i]];
+            points[i] = btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z()));
+        }
+        hull.mShape->recalcLocalAabb();
+        mWorld.updateSingleAabb(hull.mOwner);
+    }
+}
+
+} // namespace crumple::bullet

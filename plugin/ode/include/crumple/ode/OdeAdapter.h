@@ -1,0 +1,82 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/DamageWorld.h>
+
+#include <ode/common.h>
+#include <ode/contact.h>
+
+#include <memory>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace crumple::ode
+{
+
+/// What the adapter did in the last step.
+struct OdeStepStats
+{
+    int mBodiesSnapshotted = 0;   ///< Bodies whose pre-solve state was taken (only bodies in contact)
+    int mContactsReported = 0;    ///< Contacts submitted
+    int mContactsRefused = 0;     ///< Contacts in a batch the damage world refused (non-finite engine output)
+    plugin::UpdateReport mUpdate; ///< What the damage world dispatched
+};
+
+/// Connects an ODE world to a crumple::plugin::DamageWorld with two calls per step:
+///
+///   near callback:  n = dCollide(o1, o2, ...); adapter.OnCollide(o1, o2, {contacts, n}); ...create joints...
+///   after step:     dWorldStep(world, dt);  adapter.AfterStep(dt);
+///
+/// OnCollide snapshots the bodies involved the first time they appear in a step (before dWorldStep, so the
+/// velocities are pre-solve) and buffers the contacts; AfterStep submits them and updates the damage world.
+/// Geoms without a body (the static environment) map to one static damage body unless registered with
+/// AddStaticGeom. Bodies are mapped in a table: the game keeps ODE's user data pointers. Single-threaded,
+/// one adapter per ODE world; no global state.
+class OdeAdapter
+{
+public:
+    /// Creates the adapter and the static environment body in inDamage (which must outlive it).
+    static Result<std::unique_ptr<OdeAdapter>> Create(plugin::DamageWorld& inDamage);
+
+    /// Registers a dynamic or kinematic body. Refused when already registered.
+    Result<plugin::BodyId> AddBody(dBodyID inBody);
+    /// Registers a body-less geom as its own static damage body (e.g. a wall that can carry dents).
+    Result<plugin::BodyId> AddStaticGeom(dGeomID inGeom);
+    /// Unregisters a body and removes it from the damage world.
+    Status RemoveBody(dBodyID inBody);
+    /// The damage body of an ODE body, invalid when not registered.
+    plugin::BodyId FindBody(dBodyID inBody) const;
+    /// The damage body standing for every unregistered body-less geom.
+    plugin::BodyId GetEnvironment() const { return mEnvironment; }
+
+    /// Takes the contacts dCollide returned for (inGeom1, inGeom2). Contacts involving an unregistered body
+    /// are ignored. ODE's normal points from geom 2 into geom 1, which is Crumple's B-to-A convention.
+    void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts);
+
+    /// Submits the step's contacts and dispatches closed collisions; call after dWorldStep/dWorldQuickStep.
+    void AfterStep(double inTimeStep);
+
+    double GetTime() const { return mTime; }
+    const OdeStepStats& GetLastStepStats() const { return mLastStats; }
+    plugin::DamageWorld& GetDamageWorld() { return mDamage; }
+
+private:
+    OdeAdapter(plugin::DamageWorld& inDamage, plugin::BodyId inEnvironment) : mDamage(inDamage), mEnvironment(inEnvironment) {}
+    plugin::BodyId BodyOfGeom(dGeomID inGeom);
+
+    plugin::DamageWorld& mDamage;
+    plugin::BodyId mEnvironment;
+    std::unordered_map<dBodyID, plugin::BodyId> mBodies;      ///< Lookup only, never iterated
+    std::unordered_map<dGeomID, plugin::BodyId> mStaticGeoms; ///< Lookup only, never iterated
+    std::vector<std::uint8_t> mSnapshotted;                   ///< Per BodyId: state taken this step
+    std::vector<plugin::BodyId> mSnapshottedList;
+    std::vector<plugin::ContactEvent> mEvents;
+    double mTime = 0.0;
+    OdeStepStats mCurrent;   ///< The step being collected
+    OdeStepStats mLastStats; ///< The last finished step
+};
+
+} // namespace crumple::ode

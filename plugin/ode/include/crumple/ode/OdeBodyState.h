@@ -1,0 +1,19 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/plugin/BodyState.h>
+
+#include <ode/common.h>
+
+namespace crumple::ode
+{
+
+/// The state a Baraff impulse needs, read from an ODE body. ODE keeps a body's centre of mass at its
+/// origin, so the body frame is the centre-of-mass frame: deformable meshes attached to it are given in it.
+plugin::BodyState OdeBodyState(dBodyID inBody);
+
+/// The state of a static geom (no body): static, at the geom's position and rotation.
+plugin::BodyState OdeStaticGeomState(dGeomID inGeom);
+
+} // namespace crumple::ode

@@ -1,0 +1,130 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ode/OdeAdapter.h>
+#include <crumple/ode/OdeBodyState.h>
+
+#include <ode/ode.h>
+
+namespace crumple::ode
+{
+
+using namespace crumple::plugin;
+
+Result<std::unique_ptr<OdeAdapter>> OdeAdapter::Create(DamageWorld& inDamage)
+{
+    BodyState environment;
+    environment.mMotionType = EMotionType::Static;
+    Result<BodyId> body = inDamage.CreateBody(environment);
+    if (!body)
+        return body.GetError();
+    return std::unique_ptr<OdeAdapter>(new OdeAdapter(inDamage, body.Get()));
+}
+
+Result<BodyId> OdeAdapter::AddBody(dBodyID inBody)
+{
+    if (inBody == nullptr)
+        return MakeError(EError::InvalidArgument, "AddBody: null dBodyID");
+    if (mBodies.contains(inBody))
+        return MakeError(EError::InvalidArgument, "AddBody: this ODE body is already registered");
+    Result<BodyId> body = mDamage.CreateBody(OdeBodyState(inBody));
+    if (body)
+        mBodies.emplace(inBody, body.Get());
+    return body;
+}
+
+Result<BodyId> OdeAdapter::AddStaticGeom(dGeomID inGeom)
+{
+    if (inGeom == nullptr || dGeomGetBody(inGeom) != nullptr)
+        return MakeError(EError::InvalidArgument, "AddStaticGeom: the geom must exist and have no body");
+    if (mStaticGeoms.contains(inGeom))
+        return MakeError(EError::InvalidArgument, "AddStaticGeom: this geom is already registered");
+    Result<BodyId> body = mDamage.CreateBody(OdeStaticGeomState(inGeom));
+    if (body)
+        mStaticGeoms.emplace(inGeom, body.Get());
+    return body;
+}
+
+Status OdeAdapter::RemoveBody(dBodyID inBody)
+{
+    const auto found = mBodies.find(inBody);
+    if (found == mBodies.end())
+        return MakeError(EError::OutOfRange, "RemoveBody: this ODE body is not registered");
+    if (Status removed = mDamage.RemoveBody(found->second); !removed)
+        return removed;
+    mBodies.erase(found);
+    return Status::Ok();
+}
+
+BodyId OdeAdapter::FindBody(dBodyID inBody) const
+{
+    const auto found = mBodies.find(inBody);
+    return found == mBodies.end() ? BodyId{} : found->second;
+}
+
+BodyId OdeAdapter::BodyOfGeom(dGeomID inGeom)
+{
+    dBodyID body = dGeomGetBody(inGeom);
+    if (body == nullptr)
+    {
+        const auto found = mStaticGeoms.find(inGeom);
+        return found == mStaticGeoms.end() ? mEnvironment : found->second;
+    }
+    const auto found = mBodies.find(body);
+    if (found == mBodies.end())
+        return BodyId{};
+    // Pre-solve snapshot, once per step, only for bodies that are in contact.
+    const BodyId id = found->second;
+    if (mSnapshotted.size() <= id.mValue)
+        mSnapshotted.resize(id.mValue + 1, 0);
+    if (mSnapshotted[id.mValue] == 0)
+    {
+        mSnapshotted[id.mValue] = 1;
+        mSnapshottedList.push_back(id);
+        if (mDamage.SetBodyState(id, OdeBodyState(body)))
+            ++mCurrent.mBodiesSnapshotted;
+    }
+    return id;
+}
+
+void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts)
+{
+    if (inContacts.empty())
+        return;
+    const BodyId a = BodyOfGeom(inGeom1);
+    const BodyId b = BodyOfGeom(inGeom2);
+    if (!a.IsValid() || !b.IsValid() || a == b)
+        return;
+    for (const dContactGeom& contact : inContacts)
+    {
+        ContactEvent event;
+        event.mBodyA = a;
+        event.mBodyB = b;
+        // ODE gives one point in the overlap: Crumple splits it onto the surfaces by the depth.
+        event.mPointOnA = event.mPointOnB = Vec3(contact.pos[0], contact.pos[1], contact.pos[2]);
+        event.mNormal = Vec3(contact.normal[0], contact.normal[1], contact.normal[2]);
+        event.mPenetrationDepth = static_cast<double>(contact.depth);
+        mEvents.push_back(event);
+    }
+}
+
+void OdeAdapter::AfterStep(double inTimeStep)
+{
+    mTime += inTimeStep;
+    for (ContactEvent& event : mEvents)
+        event.mTime = mTime;
+    mCurrent.mContactsReported = static_cast<int>(mEvents.size());
+    // ODE's output is finite unless the game's simulation already diverged; then the step is skipped.
+    if (!mEvents.empty() && !mDamage.SubmitContacts(mEvents, inTimeStep))
+        mCurrent.mContactsRefused = static_cast<int>(mEvents.size());
+    mCurrent.mUpdate = mDamage.Update(mTime);
+
+    // Ready for the next step.
+    mLastStats = mCurrent;
+    mCurrent = {};
+    mEvents.clear();
+    for (BodyId id : mSnapshottedList)
+        mSnapshotted[id.mValue] = 0;
+    mSnapshottedList.clear();
+}
+
+} // namespace crumple::ode

@@ -1,0 +1,245 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BulletWallCrash.h"
+
+#include <crumple/bullet/BulletAdapter.h>
+
+#include <btBulletDynamicsCommon.h>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace crumple;
+using namespace crumple::plugin;
+using namespace crumple::common;
+
+namespace
+{
+
+// A minimal Bullet world with its own lifetime management.
+struct BulletWorld
+{
+    BulletWorld()
+        : mDispatcher(&mConfiguration), mWorld(&mDispatcher, &mBroadphase, &mSolver, &mConfiguration)
+    {
+        mWorld.setGravity(btVector3(0, 0, btScalar(-9.81)));
+    }
+    ~BulletWorld()
+    {
+        for (int i = mWorld.getNumCollisionObjects() - 1; i >= 0; --i)
+            mWorld.removeCollisionObject(mWorld.getCollisionObjectArray()[i]);
+    }
+    btDefaultCollisionConfiguration mConfiguration;
+    btCollisionDispatcher mDispatcher;
+    btDbvtBroadphase mBroadphase;
+    btSequentialImpulseConstraintSolver mSolver;
+    btDiscreteDynamicsWorld mWorld;
+};
+
+// The game's own tick callbacks: they must keep running, with the game's user pointer.
+struct GameHooks
+{
+    int mPre = 0, mPost = 0;
+    std::vector<double> mStepImpulses; // per sub-step sum of m_appliedImpulse (N s)
+};
+
+void GamePreTick(btDynamicsWorld* inWorld, btScalar)
+{
+    static_cast<GameHooks*>(inWorld->getWorldUserInfo())->mPre++;
+}
+
+void GamePostTick(btDynamicsWorld* inWorld, btScalar)
+{
+    auto* hooks = static_cast<GameHooks*>(inWorld->getWorldUserInfo());
+    hooks->mPost++;
+    double sum = 0.0;
+    for (int m = 0; m < inWorld->getDispatcher()->getNumManifolds(); ++m)
+    {
+        const btPersistentManifold* manifold = inWorld->getDispatcher()->getManifoldByIndexInternal(m);
+        for (int p = 0; p < manifold->getNumContacts(); ++p)
+            sum += static_cast<double>(manifold->getContactPoint(p).m_appliedImpulse);
+    }
+    hooks->mStepImpulses.push_back(sum);
+}
+
+} // namespace
+
+TEST_CASE("Bullet: a sphere dropped on a plane gets (1+e) m v, and agrees with Bullet's solver", "[bullet]")
+{
+    BulletWorld bullet;
+    GameHooks hooks;
+    bullet.mWorld.setInternalTickCallback(&GamePreTick, &hooks, true);
+    bullet.mWorld.setInternalTickCallback(&GamePostTick, &hooks, false);
+
+    DamageWorldSettings settings;
+    settings.mRestitution = 0.0; // Bullet's default restitution is 0
+    DamageWorld damage = DamageWorld::Create(settings).Get();
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
+
+    btStaticPlaneShape plane_shape(btVector3(0, 0, 1), 0);
+    btCollisionObject plane;
+    plane.setCollisionShape(&plane_shape);
+    bullet.mWorld.addCollisionObject(&plane);
+    const double mass = 2.0, radius = 0.5, drop = 1.25;
+    btSphereShape sphere_shape{btScalar(radius)};
+    btVector3 inertia;
+    sphere_shape.calculateLocalInertia(btScalar(mass), inertia);
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, &sphere_shape, inertia);
+    info.m_startWorldTransform.setOrigin(btVector3(0, 0, btScalar(radius + drop)));
+    btRigidBody sphere(info);
+    bullet.mWorld.addRigidBody(&sphere);
+    REQUIRE(adapter->AddBody(plane));
+    REQUIRE(adapter->AddBody(sphere));
+    CHECK(adapter->AddBody(sphere).HasError());
+
+    CrashCounter counter;
+    damage.AddListener(&counter);
+    const btScalar dt = btScalar(1.0 / 240.0);
+    for (int i = 0; i < 240; ++i)
+        bullet.mWorld.stepSimulation(dt, 1, dt);
+    damage.Flush();
+
+    // Chained: the game's callbacks ran every sub-step with the game's own user pointer.
+    CHECK(hooks.mPre == 240);
+    CHECK(hooks.mPost == 240);
+    REQUIRE(counter.mCollisions >= 1);
+    const Collision& impact = counter.mLog.front();
+    double approach = 0.0;
+    for (const CollisionContact& c : impact.mContacts)
+        approach = std::max(approach, c.mApproachSpeed + 0.0);
+    // The free-fall speed at impact, within the sub-step the contact was found in.
+    const double v_fall = std::sqrt(2.0 * 9.81 * drop);
+    CHECK(approach == Approx(v_fall).epsilon(0.05));
+    // Crumple's impulse over the whole impact equals m v (e = 0), however Bullet split it into steps.
+    CHECK(impact.TotalImpulse() == Approx(mass * v_fall).epsilon(0.02));
+    // Bullet's solver spreads the impact over the speculative step and the touching one. Over the first
+    // three steps with contact it applied m v plus three steps of gravity (the sphere then rests), each
+    // m g dt: compare what is left with Crumple's, within one more step of gravity and 2 %.
+    const double gravity_step = mass * 9.81 * static_cast<double>(dt);
+    const auto first = std::find_if(hooks.mStepImpulses.begin(), hooks.mStepImpulses.end(), [](double j) { return j > 0.0; });
+    REQUIRE(hooks.mStepImpulses.end() - first >= 3);
+    const double bullet_impact = first[0] + first[1] + first[2] - 3.0 * gravity_step;
+    INFO("Bullet applied " << bullet_impact << " N s over the impact, Crumple " << impact.TotalImpulse() << " N s");
+    CHECK(std::abs(bullet_impact - impact.TotalImpulse()) <= gravity_step + 0.02 * impact.TotalImpulse());
+
+    // The destructor puts the game's callbacks back.
+    adapter.reset();
+    const int before = hooks.mPost;
+    bullet.mWorld.stepSimulation(dt, 1, dt);
+    CHECK(hooks.mPost == before + 1);
+    CHECK(bullet.mWorld.getWorldUserInfo() == &hooks);
+    bullet.mWorld.removeRigidBody(&sphere);
+    bullet.mWorld.removeCollisionObject(&plane);
+}
+
+TEST_CASE("Bullet: the box car crash dents the front, head-on and at 30 degrees", "[bullet]")
+{
+    for (double yaw : {0.0, 30.0})
+    {
+        EngineCrashSettings settings;
+        settings.mYawDegrees = yaw;
+        BulletWallCrash crash(settings);
+        const EngineCrashResult result = crash.Run();
+        INFO("yaw " << yaw << ": max dent " << result.mMaxDent << " m at " << result.mDentCentroid.transpose());
+        CHECK(result.mCollisions >= 1);
+        CHECK(result.mMaxDent > 0.1);
+        CHECK(result.mMaxDent <= settings.mMaterial.mMaxInstantDeformation * 2.0 + 1.0e-9);
+        CHECK(result.mDentCentroid.x() > 1.0); // the front of the car
+        if (yaw > 0.0)
+            CHECK(result.mDentCentroid.y() < -0.2); // yawed to +y, the front-right corner (body y < 0) hits first
+    }
+}
+
+TEST_CASE("Bullet: a car driving on flat ground gets no damage", "[bullet]")
+{
+    EngineCrashSettings settings;
+    settings.mDriveOnly = true;
+    settings.mSpeed = 25.0;
+    settings.mDuration = 1.0;
+    BulletWallCrash drive(settings);
+    const EngineCrashResult result = drive.Run();
+    CHECK(result.mMaxDent == 0.0);
+    CHECK(drive.GetAdapter().GetLastStepStats().mContactsReported > 0); // it is on the ground all along
+}
+
+TEST_CASE("Bullet: a compound chassis maps its children's contacts to its body", "[bullet]")
+{
+    BulletWorld bullet;
+    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
+    btStaticPlaneShape plane_shape(btVector3(0, 0, 1), 0);
+    btCollisionObject plane;
+    plane.setCollisionShape(&plane_shape);
+    bullet.mWorld.addCollisionObject(&plane);
+    REQUIRE(adapter->AddBody(plane));
+
+    btBoxShape lower(btVector3(2, 1, 0.3f)), cabin(btVector3(1, 0.8f, 0.3f));
+    btCompoundShape chassis;
+    chassis.addChildShape(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 0)), &lower);
+    chassis.addChildShape(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 0.6f)), &cabin);
+    btVector3 inertia;
+    chassis.calculateLocalInertia(1000, inertia);
+    btRigidBody::btRigidBodyConstructionInfo info(1000, nullptr, &chassis, inertia);
+    // Upside down, falling on its cabin from 2 m.
+    info.m_startWorldTransform = btTransform(btQuaternion(btVector3(1, 0, 0), SIMD_PI), btVector3(0, 0, 3));
+    btRigidBody car(info);
+    bullet.mWorld.addRigidBody(&car);
+    const BodyId car_body = adapter->AddBody(car).Get();
+    CrashCounter counter;
+    damage.AddListener(&counter);
+    for (int i = 0; i < 120; ++i)
+        bullet.mWorld.stepSimulation(btScalar(1.0 / 120.0), 1, btScalar(1.0 / 120.0));
+    damage.Flush();
+    REQUIRE(counter.mCollisions >= 1);
+    CHECK(counter.mLog.front().mBodyB == car_body);
+    // The roof (the cabin child, +z in the body frame) took the hit.
+    CHECK(counter.mLog.front().mContacts.front().mLocalPointOnB.z() > 0.6);
+    bullet.mWorld.removeRigidBody(&car);
+    bullet.mWorld.removeCollisionObject(&plane);
+}
+
+TEST_CASE("Bullet: two worlds with their own adapters stay independent, and one world takes one adapter", "[bullet]")
+{
+    EngineCrashSettings head_on;
+    EngineCrashSettings driving = head_on;
+    driving.mDriveOnly = true;
+    BulletWallCrash first(head_on);
+    BulletWallCrash second(driving);
+    for (int i = 0; i < 60; ++i)
+    {
+        first.Step();
+        second.Step();
+    }
+    first.GetDamage().Flush();
+    second.GetDamage().Flush();
+    CHECK(first.GetCounter().mCollisions >= 1);
+    CHECK(second.GetCounter().mCollisions == 0);
+    CHECK(bullet::BulletAdapter::Create(first.GetWorld(), first.GetDamage()).HasError());
+}
+
+TEST_CASE("Bullet: a following hull takes the dented shape", "[bullet]")
+{
+    EngineCrashSettings settings;
+    BulletWallCrash crash(settings);
+    Result<btConvexHullShape*> hull = crash.GetAdapter().CreateFollowingHull(crash.GetCarObject(), 200);
+    REQUIRE(hull);
+    btVector3 min_before, max_before;
+    hull.Get()->getAabb(btTransform::getIdentity(), min_before, max_before);
+    crash.Run();
+    btVector3 min_after, max_after;
+    hull.Get()->getAabb(btTransform::getIdentity(), min_after, max_after);
+    // The front of the hull moved back with the dent.
+    CHECK(static_cast<double>(max_after.x()) < static_cast<double>(max_before.x()) - 0.05);
+    CHECK(crash.GetAdapter().CreateFollowingHull(ObjectId{99}).HasError());
+}
+
+TEST_CASE("Bullet: the same crash twice gives bitwise identical meshes", "[bullet][determinism]")
+{
+    EngineCrashSettings settings;
+    settings.mYawDegrees = 30.0;
+    const EngineCrashResult first = BulletWallCrash(settings).Run();
+    const EngineCrashResult second = BulletWallCrash(settings).Run();
+    CHECK(first.mPositions == second.mPositions);
+    CHECK(first.mDamage == second.mDamage);
+}

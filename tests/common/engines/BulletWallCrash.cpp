@@ -1,0 +1,91 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BulletWallCrash.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace crumple::common
+{
+
+using namespace crumple::plugin;
+
+BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
+    : mSettings(inSettings), mDamage(DamageWorld::Create(inSettings.mWorld).Get())
+{
+    mConfiguration = std::make_unique<btDefaultCollisionConfiguration>();
+    mDispatcher = std::make_unique<btCollisionDispatcher>(mConfiguration.get());
+    mBroadphase = std::make_unique<btDbvtBroadphase>();
+    mSolver = std::make_unique<btSequentialImpulseConstraintSolver>();
+    mWorld = std::make_unique<btDiscreteDynamicsWorld>(mDispatcher.get(), mBroadphase.get(), mSolver.get(), mConfiguration.get());
+    mWorld->setGravity(btVector3(0, 0, btScalar(-9.81)));
+    mAdapter = std::move(bullet::BulletAdapter::Create(*mWorld, mDamage).Get());
+
+    // Ground z = 0 and, unless only driving, a wall whose face is the plane x = 0.
+    auto add_static = [&](std::unique_ptr<btCollisionShape> inShape, const btVector3& inOrigin) {
+        auto object = std::make_unique<btCollisionObject>();
+        object->setCollisionShape(inShape.get());
+        object->setWorldTransform(btTransform(btQuaternion::getIdentity(), inOrigin));
+        object->setFriction(btScalar(0.5));
+        mWorld->addCollisionObject(object.get());
+        (void)mAdapter->AddBody(*object);
+        mShapes.push_back(std::move(inShape));
+        mObjects.push_back(std::move(object));
+    };
+    add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
+    if (!inSettings.mDriveOnly)
+        add_static(std::make_unique<btBoxShape>(btVector3(1, 10, 3)), btVector3(1, 0, 3));
+
+    // The car: a box resting on the ground, yawed, its nearest point mGap before the wall.
+    const Vec3& h = inSettings.mHalfExtents;
+    const double yaw = inSettings.mYawDegrees * std::numbers::pi / 180.0;
+    const double reach = std::abs(h.x() * std::cos(yaw)) + std::abs(h.y() * std::sin(yaw));
+    auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(h.x()), btScalar(h.y()), btScalar(h.z())));
+    btVector3 inertia;
+    shape->calculateLocalInertia(btScalar(inSettings.mMass), inertia);
+    const btTransform start(btQuaternion(btVector3(0, 0, 1), btScalar(yaw)),
+                            btVector3(btScalar(-reach - inSettings.mGap), 0, btScalar(h.z())));
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), nullptr, shape.get(), inertia);
+    info.m_startWorldTransform = start;
+    info.m_friction = btScalar(0.5);
+    auto car = std::make_unique<btRigidBody>(info);
+    car->setLinearVelocity(btVector3(btScalar(inSettings.mSpeed), 0, 0));
+    car->setActivationState(DISABLE_DEACTIVATION);
+    mWorld->addRigidBody(car.get());
+    mCar = car.get();
+    const BodyId car_body = mAdapter->AddBody(*car).Get();
+    mShapes.push_back(std::move(shape));
+    mObjects.push_back(std::move(car));
+
+    mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
+    mDamage.AddListener(&mCounter);
+}
+
+BulletWallCrash::~BulletWallCrash()
+{
+    mAdapter.reset();
+    for (auto& object : mObjects)
+    {
+        if (btRigidBody* body = btRigidBody::upcast(object.get()))
+            mWorld->removeRigidBody(body);
+        else
+            mWorld->removeCollisionObject(object.get());
+    }
+}
+
+void BulletWallCrash::Step()
+{
+    const auto dt = btScalar(mSettings.mTimeStep);
+    mWorld->stepSimulation(dt, 1, dt);
+}
+
+EngineCrashResult BulletWallCrash::Run()
+{
+    const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
+    for (int i = 0; i < steps; ++i)
+        Step();
+    mDamage.Flush();
+    return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
+}
+
+} // namespace crumple::common

@@ -1,0 +1,51 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "EngineCrash.h"
+
+#include <crumple/bullet/BulletAdapter.h>
+
+#include <btBulletDynamicsCommon.h>
+
+#include <memory>
+
+namespace crumple::common
+{
+
+/// EngineCrashSettings run in Bullet (btDiscreteDynamicsWorld, fixed internal step).
+class BulletWallCrash
+{
+public:
+    explicit BulletWallCrash(const EngineCrashSettings& inSettings);
+    ~BulletWallCrash();
+
+    /// Steps to the end and summarizes.
+    EngineCrashResult Run();
+    /// One engine step of mTimeStep.
+    void Step();
+
+    btDiscreteDynamicsWorld& GetWorld() { return *mWorld; }
+    btRigidBody& GetCar() { return *mCar; }
+    bullet::BulletAdapter& GetAdapter() { return *mAdapter; }
+    plugin::DamageWorld& GetDamage() { return mDamage; }
+    plugin::ObjectId GetCarObject() const { return mCarObject; }
+    CrashCounter& GetCounter() { return mCounter; }
+
+private:
+    EngineCrashSettings mSettings;
+    std::unique_ptr<btDefaultCollisionConfiguration> mConfiguration;
+    std::unique_ptr<btCollisionDispatcher> mDispatcher;
+    std::unique_ptr<btDbvtBroadphase> mBroadphase;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> mSolver;
+    std::unique_ptr<btDiscreteDynamicsWorld> mWorld;
+    std::vector<std::unique_ptr<btCollisionShape>> mShapes;
+    std::vector<std::unique_ptr<btCollisionObject>> mObjects;
+    btRigidBody* mCar = nullptr;
+    plugin::DamageWorld mDamage;
+    std::unique_ptr<bullet::BulletAdapter> mAdapter;
+    plugin::ObjectId mCarObject;
+    CrashCounter mCounter;
+};
+
+} // namespace crumple::common

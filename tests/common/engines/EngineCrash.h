@@ -1,0 +1,60 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/plugin/DamageWorld.h>
+
+#include <array>
+#include <vector>
+
+namespace crumple::common
+{
+
+/// The same scripted crash for every engine: a box car on a ground plane driven into a static wall at
+/// x = 0 whose face is the plane x = 0, head-on or at a heading angle. Gravity and ground friction are on,
+/// so the car also has resting contacts with the ground that must make no damage.
+struct EngineCrashSettings
+{
+    Vec3 mHalfExtents{2.1, 0.9, 0.7};  ///< Car half size (m), body frame x forward, z up
+    double mMass = 1200.0;             ///< Car mass (kg)
+    double mSpeed = 15.0;              ///< Initial speed along +x (m/s)
+    double mYawDegrees = 0.0;          ///< Heading relative to the wall normal (degrees)
+    double mTimeStep = 1.0 / 120.0;    ///< Engine step (s)
+    double mDuration = 0.6;            ///< Simulated time (s)
+    double mGap = 0.3;                 ///< Distance from the car's nearest point to the wall at start (m)
+    int mTriangles = 8000;             ///< Car render mesh size
+    std::array<int, 3> mControlCount{{10, 6, 6}}; ///< Controls of the fitted FFD zone
+    plugin::DamageMaterial mMaterial;  ///< Car body material
+    plugin::DamageWorldSettings mWorld; ///< Damage world settings
+    bool mDriveOnly = false;           ///< No wall: the car just drives (and rests) on the ground
+};
+
+/// What a crash produced, in the car's body frame.
+struct EngineCrashResult
+{
+    double mMaxDent = 0.0;               ///< Largest vertex displacement (m)
+    Vec3 mDentCentroid = Vec3::Zero();   ///< Displacement-weighted mean rest position of dented vertices (m)
+    int mCollisions = 0;                 ///< Collisions dispatched that involve the car
+    double mTotalImpulse = 0.0;          ///< Sum of their impulses (N s)
+    std::vector<Vec3> mPositions;        ///< Final deformed positions
+    std::vector<std::byte> mDamage;      ///< SaveDamage() at the end
+};
+
+/// Settles the result of a finished run from its damage world.
+EngineCrashResult SummarizeCrash(const plugin::DamageWorld& inWorld, plugin::ObjectId inCar, int inCollisions,
+                                 double inTotalImpulse);
+
+/// Counts the car's collisions and impulses as they are dispatched.
+class CrashCounter : public plugin::DamageListener
+{
+public:
+    void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
+    int mCollisions = 0;
+    double mTotalImpulse = 0.0;
+    std::vector<plugin::Collision> mLog; ///< Every collision, in dispatch order
+};
+
+/// The car's render mesh and deformable-object settings shared by every engine scene.
+plugin::DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings);
+
+} // namespace crumple::common

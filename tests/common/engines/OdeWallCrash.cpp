@@ -1,0 +1,104 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "OdeWallCrash.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace crumple::common
+{
+
+using namespace crumple::plugin;
+
+OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
+    : mSettings(inSettings), mDamage(DamageWorld::Create(inSettings.mWorld).Get())
+{
+    dInitODE2(0); // reference counted by ODE; paired with dCloseODE in the destructor
+    mWorld = dWorldCreate();
+    dWorldSetGravity(mWorld, 0, 0, -9.81);
+    mSpace = dHashSpaceCreate(nullptr);
+    mContacts = dJointGroupCreate(0);
+    mAdapter = std::move(ode::OdeAdapter::Create(mDamage).Get());
+
+    dCreatePlane(mSpace, 0, 0, 1, 0);
+    if (!inSettings.mDriveOnly)
+    {
+        dGeomID wall = dCreateBox(mSpace, 2, 20, 6);
+        dGeomSetPosition(wall, 1, 0, 3);
+    }
+
+    const Vec3& h = inSettings.mHalfExtents;
+    const double yaw = inSettings.mYawDegrees * std::numbers::pi / 180.0;
+    const double reach = std::abs(h.x() * std::cos(yaw)) + std::abs(h.y() * std::sin(yaw));
+    mCar = dBodyCreate(mWorld);
+    dMass mass;
+    dMassSetBoxTotal(&mass, inSettings.mMass, 2 * h.x(), 2 * h.y(), 2 * h.z());
+    dBodySetMass(mCar, &mass);
+    dBodySetPosition(mCar, -reach - inSettings.mGap, 0, h.z());
+    dMatrix3 rotation;
+    dRFromAxisAndAngle(rotation, 0, 0, 1, yaw);
+    dBodySetRotation(mCar, rotation);
+    dBodySetLinearVel(mCar, inSettings.mSpeed, 0, 0);
+    dBodySetAutoDisableFlag(mCar, 0);
+    dGeomID box = dCreateBox(mSpace, 2 * h.x(), 2 * h.y(), 2 * h.z());
+    dGeomSetBody(box, mCar);
+
+    const BodyId car_body = mAdapter->AddBody(mCar).Get();
+    mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
+    mDamage.AddListener(&mCounter);
+}
+
+OdeWallCrash::~OdeWallCrash()
+{
+    mAdapter.reset();
+    dJointGroupDestroy(mContacts);
+    dSpaceDestroy(mSpace);
+    dWorldDestroy(mWorld);
+    dCloseODE();
+}
+
+void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
+{
+    auto* scene = static_cast<OdeWallCrash*>(inData);
+    std::array<dContact, 8> contacts{};
+    const int count = dCollide(inGeom1, inGeom2, static_cast<int>(contacts.size()), &contacts[0].geom, sizeof(dContact));
+    if (count <= 0)
+        return;
+    // The one extra call a game adds to its near callback.
+    std::array<dContactGeom, 8> geoms{};
+    for (int i = 0; i < count; ++i)
+        geoms[static_cast<std::size_t>(i)] = contacts[static_cast<std::size_t>(i)].geom;
+    scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span(geoms.data(), static_cast<std::size_t>(count)));
+
+    dBodyID b1 = dGeomGetBody(inGeom1), b2 = dGeomGetBody(inGeom2);
+    for (int i = 0; i < count; ++i)
+    {
+        dContact& contact = contacts[static_cast<std::size_t>(i)];
+        contact.surface.mode = dContactSoftCFM | dContactSoftERP;
+        contact.surface.mu = 0.5;
+        contact.surface.soft_cfm = 1.0e-5;
+        contact.surface.soft_erp = 0.2;
+        dJointID joint = dJointCreateContact(scene->mWorld, scene->mContacts, &contact);
+        dJointAttach(joint, b1, b2);
+    }
+}
+
+void OdeWallCrash::Step()
+{
+    dSpaceCollide(mSpace, this, &OdeWallCrash::NearCallback);
+    dWorldStep(mWorld, mSettings.mTimeStep);
+    mAdapter->AfterStep(mSettings.mTimeStep);
+    dJointGroupEmpty(mContacts);
+}
+
+EngineCrashResult OdeWallCrash::Run()
+{
+    const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
+    for (int i = 0; i < steps; ++i)
+        Step();
+    mDamage.Flush();
+    return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
+}
+
+} // namespace crumple::common

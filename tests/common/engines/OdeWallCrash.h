@@ -1,0 +1,49 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "EngineCrash.h"
+
+#include <crumple/ode/OdeAdapter.h>
+
+#include <ode/ode.h>
+
+#include <memory>
+
+namespace crumple::common
+{
+
+/// EngineCrashSettings run in ODE (dWorldStep, hash space, contact joints).
+class OdeWallCrash
+{
+public:
+    explicit OdeWallCrash(const EngineCrashSettings& inSettings);
+    ~OdeWallCrash();
+    OdeWallCrash(const OdeWallCrash&) = delete;
+    OdeWallCrash& operator=(const OdeWallCrash&) = delete;
+
+    EngineCrashResult Run();
+    void Step();
+
+    dWorldID GetWorld() const { return mWorld; }
+    dBodyID GetCar() const { return mCar; }
+    ode::OdeAdapter& GetAdapter() { return *mAdapter; }
+    plugin::DamageWorld& GetDamage() { return mDamage; }
+    plugin::ObjectId GetCarObject() const { return mCarObject; }
+    CrashCounter& GetCounter() { return mCounter; }
+
+private:
+    static void NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2);
+
+    EngineCrashSettings mSettings;
+    dWorldID mWorld = nullptr;
+    dSpaceID mSpace = nullptr;
+    dJointGroupID mContacts = nullptr;
+    dBodyID mCar = nullptr;
+    plugin::DamageWorld mDamage;
+    std::unique_ptr<ode::OdeAdapter> mAdapter;
+    plugin::ObjectId mCarObject;
+    CrashCounter mCounter;
+};
+
+} // namespace crumple::common
