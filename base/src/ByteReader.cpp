@@ -76,6 +76,12 @@ Vec3 ByteReader::ReadVec3()
     return v;
 }
 
+void ByteReader::Skip(std::size_t inCount)
+{
+    const std::byte* data = nullptr;
+    (void)Take(inCount, data);
+}
+
 bool ByteReader::ReadTag(std::string_view inTag)
 {
     const std::byte* data = nullptr;

@@ -218,6 +218,8 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
     {
         ++report.mCollisionsDispatched;
         dents.clear();
+        for (DamageListener* listener : mListeners)
+            listener->OnBeforeCollision(collision);
         // Objects of A, then of B; each body's objects in creation (id) order.
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ObjectId id : mBodies[body.mValue].mObjects)

@@ -5,8 +5,10 @@
 // deformed meshes as OBJ plus a summary. Exit 0 on success, 2 on bad input (nothing written).
 #include "ObjWriter.h"
 #include "WallCrashScene.h"
+#include "WorldFixture.h"
 
 #include <crumple/base/Version.h>
+#include <crumple/plugin/DamageRecorder.h>
 
 #include <cmath>
 #include <cstdio>
@@ -29,7 +31,8 @@ void PrintHelp()
                 "  --angle      heading relative to the wall normal in degrees (default 0, |angle| < 80)\n"
                 "  --mass       car mass in kg (default 1200, > 0)\n"
                 "  --triangles  approximate render mesh size (default 20000, 12..2000000)\n"
-                "  --out        output folder: rest.obj, deformed.obj, summary.txt\n");
+                "  --out        output folder: rest.obj, deformed.obj, summary.txt\n"
+                "  --replay     also record the run to this file, for crumple-replay\n");
 }
 
 bool ParseNumber(const char* inText, double& outValue)
@@ -74,7 +77,7 @@ int main(int argc, char** argv)
 {
     common::WallCrashSettings settings;
     settings.mDuration = 0.5;
-    std::filesystem::path out;
+    std::filesystem::path out, replay;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -97,6 +100,8 @@ int main(int argc, char** argv)
         double number = 0.0;
         if (arg == "--out")
             out = value;
+        else if (arg == "--replay")
+            replay = value;
         else if (!ParseNumber(value, number))
         {
             std::fprintf(stderr, "crumple-wall-crash: %s %s: not a finite number\n", arg.c_str(), value);
@@ -133,7 +138,28 @@ int main(int argc, char** argv)
     scene.GetWorld().AddListener(&printer);
     std::printf("crumple-wall-crash: %.0f kg box car at %.1f m/s, heading %.0f degrees, into a rigid wall\n",
                 settings.mMass, settings.mSpeed, settings.mYawDegrees);
+    std::unique_ptr<DamageRecorder> recorder;
+    if (!replay.empty())
+    {
+        Result<std::unique_ptr<DamageRecorder>> created_recorder = DamageRecorder::Create(replay, scene.GetWorld());
+        if (!created_recorder)
+        {
+            std::fprintf(stderr, "crumple-wall-crash: %s\n", created_recorder.GetError().mMessage.c_str());
+            return 2;
+        }
+        recorder = std::move(created_recorder).Get();
+    }
     scene.Run();
+    if (recorder != nullptr)
+    {
+        if (Status closed = recorder->Close(); !closed)
+        {
+            std::fprintf(stderr, "crumple-wall-crash: %s\n", closed.GetError().mMessage.c_str());
+            return 2;
+        }
+        std::printf("recorded %llu collisions to %s\n", static_cast<unsigned long long>(recorder->GetCollisionCount()),
+                    replay.string().c_str());
+    }
 
     // Results: deepest dent and the meshes.
     const ffd::FfdDeformer& car = scene.GetWorld().GetObject(scene.GetCarObject())->GetDeformer();
@@ -164,6 +190,7 @@ int main(int argc, char** argv)
                   deepest, rest.mPositions.size(), rest.mTriangles.size(), scene.GetCarState().mLinearVelocity.norm());
     summary << text;
     std::fputs(text, stdout);
-    std::printf("wrote %s\n", (out / "deformed.obj").string().c_str());
+    std::printf("wrote %s (mesh hash %016llx)\n", (out / "deformed.obj").string().c_str(),
+                static_cast<unsigned long long>(common::HashPositions(car.GetPositions())));
     return 0;
 }

@@ -6,6 +6,11 @@
 
 #include <btBulletDynamicsCommon.h>
 #include <catch2/catch.hpp>
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/ReplayDamage.h>
+
+#include <filesystem>
 
 #include <algorithm>
 #include <cmath>
@@ -242,4 +247,22 @@ TEST_CASE("Bullet: the same crash twice gives bitwise identical meshes", "[bulle
     const EngineCrashResult second = BulletWallCrash(settings).Run();
     CHECK(first.mPositions == second.mPositions);
     CHECK(first.mDamage == second.mDamage);
+}
+
+TEST_CASE("Bullet: a recorded crash replays headless to bitwise identical meshes", "[bullet][replay]")
+{
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "crumple-bullet-crash.crumple";
+    EngineCrashSettings settings;
+    settings.mYawDegrees = 30.0;
+    BulletWallCrash crash(settings);
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, crash.GetDamage()).Get());
+    const EngineCrashResult live = crash.Run();
+    REQUIRE(recorder->Close());
+    REQUIRE(recorder->GetCollisionCount() >= 1);
+    Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
+    REQUIRE(replay);
+    Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
+    REQUIRE(objects);
+    REQUIRE(objects.Get().size() == 1);
+    CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live.mPositions);
 }

@@ -5,6 +5,11 @@
 #include <crumple/ode/OdeAdapter.h>
 
 #include <catch2/catch.hpp>
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/ReplayDamage.h>
+
+#include <filesystem>
 #include <ode/ode.h>
 
 #include <array>
@@ -161,4 +166,22 @@ TEST_CASE("ODE: the same crash twice gives bitwise identical meshes", "[ode][det
     const EngineCrashResult second = OdeWallCrash(settings).Run();
     CHECK(first.mPositions == second.mPositions);
     CHECK(first.mDamage == second.mDamage);
+}
+
+TEST_CASE("ODE: a recorded crash replays headless to bitwise identical meshes", "[ode][replay]")
+{
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "crumple-ode-crash.crumple";
+    EngineCrashSettings settings;
+    settings.mYawDegrees = 30.0;
+    OdeWallCrash crash(settings);
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, crash.GetDamage()).Get());
+    const EngineCrashResult live = crash.Run();
+    REQUIRE(recorder->Close());
+    REQUIRE(recorder->GetCollisionCount() >= 1);
+    Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
+    REQUIRE(replay);
+    Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
+    REQUIRE(objects);
+    REQUIRE(objects.Get().size() == 1);
+    CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live.mPositions);
 }

@@ -29,6 +29,7 @@ public:
     double ReadDouble();
     Vec3 ReadVec3();
     bool ReadTag(std::string_view inTag); ///< True when the next bytes equal inTag
+    void Skip(std::size_t inCount);       ///< Moves past inCount bytes (fails when fewer remain)
 
     bool Failed() const { return mFailed; }
     std::size_t Remaining() const { return mBytes.size() - mOffset; }

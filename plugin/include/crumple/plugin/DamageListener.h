@@ -28,6 +28,10 @@ class DamageListener
 public:
     virtual ~DamageListener() = default;
 
+    /// A collision is about to dent its objects (a recorder captures objects it has not seen yet here, with
+    /// the damage they had before this collision). Optional.
+    virtual void OnBeforeCollision(const Collision& inCollision) { (void)inCollision; }
+
     /// One closed collision and the dents it made.
     /// @param[in] inCollision the collision (contacts with surface points, normals, impulses)
     /// @param[in] inDents     one entry per deformable object attached to either body, in ObjectId order

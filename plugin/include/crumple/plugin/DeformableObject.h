@@ -38,6 +38,7 @@ public:
     ffd::DentReport ApplyCollision(const Collision& inCollision, ECollisionSide inSide);
 
     const DamageMaterial& GetMaterial() const { return mMaterial; }
+    bool GetInterpolateWideImpacts() const { return mInterpolate; }
     const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
     ffd::FfdDeformer& GetDeformer() { return mDeformer; }
 

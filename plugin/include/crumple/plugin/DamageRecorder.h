@@ -1,0 +1,57 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/DamageListener.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+class DamageWorld;
+
+/// Records a damage world to a replay file as it runs (see ReplayFormat.h): each object's setup (mesh,
+/// material, zones, current damage) before the first collision that involves it, then every dispatched
+/// collision. Records are written and flushed one at a time; nothing is buffered for the whole run. The
+/// file is written as "<path>.partial" and renamed to <path> by Close(), so an interrupted run never
+/// leaves a file that looks complete. A game replicates damage over a network the same way: send these
+/// records, not meshes.
+class DamageRecorder : public DamageListener
+{
+public:
+    /// Opens the file and registers with inWorld (which must outlive the recorder or Close it first).
+    static Result<std::unique_ptr<DamageRecorder>> Create(const std::filesystem::path& inPath, DamageWorld& inWorld);
+    ~DamageRecorder() override;
+
+    /// Writes the end record, closes and renames the file, unregisters from the world. Idempotent.
+    Status Close();
+
+    void OnBeforeCollision(const Collision& inCollision) override;
+    void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) override;
+
+    /// Records written so far.
+    std::uint64_t GetCollisionCount() const { return mCollisions; }
+    /// The first write error, if any (later records are dropped after one).
+    const Status& GetStatus() const { return mStatus; }
+
+private:
+    DamageRecorder(std::FILE* inFile, std::filesystem::path inPath, DamageWorld& inWorld)
+        : mFile(inFile), mPath(std::move(inPath)), mWorld(&inWorld) {}
+    void Write(std::span<const std::byte> inBytes);
+    void RecordNewObjects();
+
+    std::FILE* mFile = nullptr;
+    std::filesystem::path mPath;
+    DamageWorld* mWorld = nullptr;
+    std::vector<std::uint8_t> mRecorded; ///< Per ObjectId: setup written
+    std::uint32_t mObjects = 0;
+    std::uint64_t mCollisions = 0;
+    Status mStatus;
+};
+
+} // namespace crumple::plugin

@@ -1,0 +1,26 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/plugin/DeformableObject.h>
+#include <crumple/plugin/ReplayFormat.h>
+
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// An object rebuilt from a recording, with its replayed damage.
+struct ReplayedObject
+{
+    ObjectId mObject; ///< Its id in the recorded world
+    BodyId mBody;     ///< Its body in the recorded world
+    DeformableObject mDeformable; ///< Mesh and deformer after the replay
+};
+
+/// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
+/// then applies each collision to the objects of body A, then of body B, in object id order, exactly as
+/// DamageWorld dispatched them. The deformed meshes are bitwise identical to the live run's.
+Result<std::vector<ReplayedObject>> ReplayDamage(const Replay& inReplay);
+
+} // namespace crumple::plugin

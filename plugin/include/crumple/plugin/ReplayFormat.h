@@ -1,0 +1,59 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/Collision.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
+#include <crumple/plugin/Ids.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// A deformable object as recorded: enough to rebuild it, including the damage it already had.
+struct RecordedObject
+{
+    ObjectId mObject;                          ///< Its id in the live world
+    BodyId mBody;                              ///< The body it is attached to
+    DeformableObjectSettings mSettings;        ///< Mesh, material and the resolved zones (never empty)
+    std::vector<std::vector<Vec3>> mInitialControls; ///< Control displacements when recording began (m)
+};
+
+/// A whole recording: objects and collisions, in the order the live world dispatched them.
+struct Replay
+{
+    std::vector<RecordedObject> mObjects; ///< In the order they were recorded
+    std::vector<Collision> mCollisions;   ///< In dispatch order
+};
+
+/// Replay file format version. Readers refuse other versions.
+constexpr std::uint32_t cReplayVersion = 1;
+
+/// The replay file layout (little-endian, IEEE-754):
+///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
+///   payload. Types: 1 object, 2 collision, 3 end (u32 objects, u64 collisions). A file without its end
+///   record (a run that crashed, a truncated copy) is refused.
+enum class EReplayRecord : std::uint8_t
+{
+    Object = 1,
+    Collision = 2,
+    End = 3,
+};
+
+/// The file header (magic and version).
+std::vector<std::byte> EncodeReplayHeader();
+/// One framed record.
+std::vector<std::byte> EncodeReplayRecord(EReplayRecord inType, std::span<const std::byte> inPayload);
+std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject);
+std::vector<std::byte> EncodeCollision(const Collision& inCollision);
+
+/// Parses and checks a whole replay file: magic, version, every record's CRC and length, the end record's
+/// counts, finite values, valid meshes. Refused with a message naming the record on any problem.
+Result<Replay> DecodeReplay(std::span<const std::byte> inBytes);
+
+} // namespace crumple::plugin

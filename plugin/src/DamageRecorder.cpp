@@ -1,0 +1,111 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/ReplayFormat.h>
+
+#include <crumple/base/ByteWriter.h>
+
+namespace crumple::plugin
+{
+
+namespace
+{
+
+std::filesystem::path PartialPath(const std::filesystem::path& inPath)
+{
+    return inPath.string() + ".partial";
+}
+
+} // namespace
+
+Result<std::unique_ptr<DamageRecorder>> DamageRecorder::Create(const std::filesystem::path& inPath, DamageWorld& inWorld)
+{
+    std::FILE* file = std::fopen(PartialPath(inPath).string().c_str(), "wb");
+    if (file == nullptr)
+        return MakeError(EError::IoError, "cannot write " + PartialPath(inPath).string());
+    std::unique_ptr<DamageRecorder> recorder(new DamageRecorder(file, inPath, inWorld));
+    recorder->Write(EncodeReplayHeader());
+    recorder->RecordNewObjects();
+    if (!recorder->mStatus)
+        return recorder->mStatus.GetError();
+    inWorld.AddListener(recorder.get());
+    return recorder;
+}
+
+DamageRecorder::~DamageRecorder()
+{
+    (void)Close();
+}
+
+void DamageRecorder::Write(std::span<const std::byte> inBytes)
+{
+    if (!mStatus || mFile == nullptr)
+        return;
+    if (std::fwrite(inBytes.data(), 1, inBytes.size(), mFile) != inBytes.size() || std::fflush(mFile) != 0)
+        mStatus = MakeError(EError::IoError, "write failed: " + PartialPath(mPath).string());
+}
+
+void DamageRecorder::RecordNewObjects()
+{
+    // Objects appear in the file before any collision that can dent them, with the damage they have now.
+    for (ObjectId id : mWorld->GetObjectIds())
+    {
+        if (mRecorded.size() <= id.mValue)
+            mRecorded.resize(id.mValue + 1, 0);
+        if (mRecorded[id.mValue] != 0)
+            continue;
+        mRecorded[id.mValue] = 1;
+        const DeformableObject& object = *mWorld->GetObject(id);
+        RecordedObject record;
+        record.mObject = id;
+        record.mBody = mWorld->GetObjectBody(id);
+        record.mSettings.mMesh = object.GetDeformer().GetRestMesh();
+        record.mSettings.mMaterial = object.GetMaterial();
+        record.mSettings.mDeformer = object.GetDeformer().GetSettings();
+        record.mSettings.mInterpolateWideImpacts = object.GetInterpolateWideImpacts();
+        for (const ffd::FfdLattice& zone : object.GetDeformer().GetZones())
+            record.mInitialControls.push_back(zone.GetControlDisplacements());
+        Write(EncodeReplayRecord(EReplayRecord::Object, EncodeRecordedObject(record)));
+        ++mObjects;
+    }
+}
+
+void DamageRecorder::OnBeforeCollision(const Collision&)
+{
+    if (mFile != nullptr)
+        RecordNewObjects();
+}
+
+void DamageRecorder::OnCollision(const Collision& inCollision, std::span<const ObjectDent>)
+{
+    if (mFile == nullptr)
+        return;
+    Write(EncodeReplayRecord(EReplayRecord::Collision, EncodeCollision(inCollision)));
+    ++mCollisions;
+}
+
+Status DamageRecorder::Close()
+{
+    if (mFile == nullptr)
+        return mStatus;
+    if (mWorld != nullptr)
+        mWorld->RemoveListener(this);
+    ByteWriter end;
+    end.WriteU32(mObjects);
+    end.WriteU64(mCollisions);
+    Write(EncodeReplayRecord(EReplayRecord::End, end.GetBytes()));
+    if (std::fclose(mFile) != 0 && mStatus)
+        mStatus = MakeError(EError::IoError, "close failed: " + PartialPath(mPath).string());
+    mFile = nullptr;
+    if (mStatus)
+    {
+        std::error_code error;
+        std::filesystem::rename(PartialPath(mPath), mPath, error);
+        if (error)
+            mStatus = MakeError(EError::IoError, "cannot rename to " + mPath.string() + ": " + error.message());
+    }
+    return mStatus;
+}
+
+} // namespace crumple::plugin

@@ -1,0 +1,284 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/Crc32.h>
+#include <crumple/plugin/ReplayFormat.h>
+
+#include <cmath>
+#include <string>
+
+namespace crumple::plugin
+{
+
+namespace
+{
+
+constexpr std::string_view cMagic = "CRUMPREC";
+
+void WriteMat3(ByteWriter& ioWriter, const Mat3& inM)
+{
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            ioWriter.WriteDouble(inM(r, c));
+}
+
+Mat3 ReadMat3(ByteReader& ioReader)
+{
+    Mat3 m;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            m(r, c) = ioReader.ReadDouble();
+    return m;
+}
+
+// A count read from a record, checked against the bytes that must follow it.
+bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& outCount)
+{
+    outCount = ioReader.ReadU32();
+    return !ioReader.Failed() && static_cast<std::uint64_t>(outCount) * inBytesEach <= ioReader.Remaining();
+}
+
+Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload)
+{
+    ByteReader reader(inPayload);
+    RecordedObject object;
+    object.mObject.mValue = reader.ReadU32();
+    object.mBody.mValue = reader.ReadU32();
+    DeformableObjectSettings& settings = object.mSettings;
+    settings.mMaterial.mDeformationFactor = reader.ReadDouble();
+    settings.mMaterial.mMinDeformation = reader.ReadDouble();
+    settings.mMaterial.mMaxInstantDeformation = reader.ReadDouble();
+    settings.mInterpolateWideImpacts = reader.ReadU8() != 0;
+    ffd::FfdDeformerSettings& deformer = settings.mDeformer;
+    deformer.mRankTolerance = reader.ReadDouble();
+    deformer.mMergeDistance = reader.ReadDouble();
+    deformer.mCaptureDistance = reader.ReadDouble();
+    deformer.mInverseIterations = static_cast<int>(reader.ReadU32());
+    std::uint32_t zones = 0;
+    if (!ReadCount(reader, 19 * 8, zones))
+        return MakeError(EError::CorruptData, "object record: zone count is corrupt");
+    for (std::uint32_t z = 0; z < zones; ++z)
+    {
+        ffd::FfdZoneSettings zone;
+        zone.mLattice.mOrigin = reader.ReadVec3();
+        zone.mLattice.mAxes = ReadMat3(reader);
+        zone.mLattice.mSize = reader.ReadVec3();
+        for (int& count : zone.mLattice.mControlCount)
+            count = static_cast<int>(reader.ReadU32());
+        zone.mMaxTotalDeformation = reader.ReadDouble();
+        deformer.mZones.push_back(zone);
+    }
+    std::uint32_t vertices = 0, triangles = 0;
+    if (!ReadCount(reader, 24, vertices))
+        return MakeError(EError::CorruptData, "object record: vertex count is corrupt");
+    settings.mMesh.mPositions.resize(vertices);
+    for (Vec3& p : settings.mMesh.mPositions)
+        p = reader.ReadVec3();
+    if (!ReadCount(reader, 12, triangles))
+        return MakeError(EError::CorruptData, "object record: triangle count is corrupt");
+    settings.mMesh.mTriangles.resize(triangles);
+    for (auto& t : settings.mMesh.mTriangles)
+        for (std::uint32_t& index : t)
+            index = reader.ReadU32();
+    std::uint32_t control_zones = 0;
+    if (!ReadCount(reader, 4, control_zones))
+        return MakeError(EError::CorruptData, "object record: control state is corrupt");
+    object.mInitialControls.resize(control_zones);
+    for (std::vector<Vec3>& controls : object.mInitialControls)
+    {
+        std::uint32_t count = 0;
+        if (!ReadCount(reader, 24, count))
+            return MakeError(EError::CorruptData, "object record: control count is corrupt");
+        controls.resize(count);
+        for (Vec3& d : controls)
+            d = reader.ReadVec3();
+    }
+    if (reader.Failed() || reader.Remaining() != 0)
+        return MakeError(EError::CorruptData, "object record: length does not match its contents");
+    return object;
+}
+
+Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
+{
+    ByteReader reader(inPayload);
+    Collision collision;
+    collision.mBodyA.mValue = reader.ReadU32();
+    collision.mBodyB.mValue = reader.ReadU32();
+    collision.mStartTime = reader.ReadDouble();
+    collision.mEndTime = reader.ReadDouble();
+    collision.mSequence = reader.ReadU64();
+    std::uint32_t contacts = 0;
+    if (!ReadCount(reader, 25 * 8, contacts))
+        return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
+    collision.mContacts.resize(contacts);
+    for (CollisionContact& c : collision.mContacts)
+    {
+        c.mPointOnA = reader.ReadVec3();
+        c.mPointOnB = reader.ReadVec3();
+        c.mLocalPointOnA = reader.ReadVec3();
+        c.mLocalPointOnB = reader.ReadVec3();
+        c.mNormal = reader.ReadVec3();
+        c.mLocalNormalOnA = reader.ReadVec3();
+        c.mLocalNormalOnB = reader.ReadVec3();
+        c.mPenetrationDepth = reader.ReadDouble();
+        c.mImpulse = reader.ReadDouble();
+        c.mApproachSpeed = reader.ReadDouble();
+        c.mTime = reader.ReadDouble();
+        if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
+            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0)
+            return MakeError(EError::CorruptData, "collision record: a contact is not finite");
+    }
+    if (reader.Failed() || reader.Remaining() != 0)
+        return MakeError(EError::CorruptData, "collision record: length does not match its contents");
+    return collision;
+}
+
+} // namespace
+
+std::vector<std::byte> EncodeReplayHeader()
+{
+    ByteWriter writer;
+    writer.WriteTag(cMagic);
+    writer.WriteU32(cReplayVersion);
+    return writer.TakeBytes();
+}
+
+std::vector<std::byte> EncodeReplayRecord(EReplayRecord inType, std::span<const std::byte> inPayload)
+{
+    ByteWriter writer;
+    writer.WriteU8(static_cast<std::uint8_t>(inType));
+    writer.WriteU32(static_cast<std::uint32_t>(inPayload.size()));
+    writer.WriteBytes(inPayload);
+    writer.WriteU32(Crc32(inPayload));
+    return writer.TakeBytes();
+}
+
+std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
+{
+    ByteWriter writer;
+    const DeformableObjectSettings& settings = inObject.mSettings;
+    writer.WriteU32(inObject.mObject.mValue);
+    writer.WriteU32(inObject.mBody.mValue);
+    writer.WriteDouble(settings.mMaterial.mDeformationFactor);
+    writer.WriteDouble(settings.mMaterial.mMinDeformation);
+    writer.WriteDouble(settings.mMaterial.mMaxInstantDeformation);
+    writer.WriteU8(settings.mInterpolateWideImpacts ? 1 : 0);
+    writer.WriteDouble(settings.mDeformer.mRankTolerance);
+    writer.WriteDouble(settings.mDeformer.mMergeDistance);
+    writer.WriteDouble(settings.mDeformer.mCaptureDistance);
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mInverseIterations));
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mZones.size()));
+    for (const ffd::FfdZoneSettings& zone : settings.mDeformer.mZones)
+    {
+        writer.WriteVec3(zone.mLattice.mOrigin);
+        WriteMat3(writer, zone.mLattice.mAxes);
+        writer.WriteVec3(zone.mLattice.mSize);
+        for (int count : zone.mLattice.mControlCount)
+            writer.WriteU32(static_cast<std::uint32_t>(count));
+        writer.WriteDouble(zone.mMaxTotalDeformation);
+    }
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mMesh.mPositions.size()));
+    for (const Vec3& p : settings.mMesh.mPositions)
+        writer.WriteVec3(p);
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mMesh.mTriangles.size()));
+    for (const auto& t : settings.mMesh.mTriangles)
+        for (std::uint32_t index : t)
+            writer.WriteU32(index);
+    writer.WriteU32(static_cast<std::uint32_t>(inObject.mInitialControls.size()));
+    for (const std::vector<Vec3>& controls : inObject.mInitialControls)
+    {
+        writer.WriteU32(static_cast<std::uint32_t>(controls.size()));
+        for (const Vec3& d : controls)
+            writer.WriteVec3(d);
+    }
+    return writer.TakeBytes();
+}
+
+std::vector<std::byte> EncodeCollision(const Collision& inCollision)
+{
+    ByteWriter writer;
+    writer.WriteU32(inCollision.mBodyA.mValue);
+    writer.WriteU32(inCollision.mBodyB.mValue);
+    writer.WriteDouble(inCollision.mStartTime);
+    writer.WriteDouble(inCollision.mEndTime);
+    writer.WriteU64(inCollision.mSequence);
+    writer.WriteU32(static_cast<std::uint32_t>(inCollision.mContacts.size()));
+    for (const CollisionContact& c : inCollision.mContacts)
+    {
+        writer.WriteVec3(c.mPointOnA);
+        writer.WriteVec3(c.mPointOnB);
+        writer.WriteVec3(c.mLocalPointOnA);
+        writer.WriteVec3(c.mLocalPointOnB);
+        writer.WriteVec3(c.mNormal);
+        writer.WriteVec3(c.mLocalNormalOnA);
+        writer.WriteVec3(c.mLocalNormalOnB);
+        writer.WriteDouble(c.mPenetrationDepth);
+        writer.WriteDouble(c.mImpulse);
+        writer.WriteDouble(c.mApproachSpeed);
+        writer.WriteDouble(c.mTime);
+    }
+    return writer.TakeBytes();
+}
+
+Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
+{
+    ByteReader reader(inBytes);
+    if (!reader.ReadTag(cMagic))
+        return MakeError(EError::CorruptData, "not a Crumple replay file (bad magic)");
+    const std::uint32_t version = reader.ReadU32();
+    if (reader.Failed())
+        return MakeError(EError::CorruptData, "replay file is truncated in its header");
+    if (version != cReplayVersion)
+        return MakeError(EError::VersionMismatch, "replay file version " + std::to_string(version) +
+                                                      ", this library reads version " + std::to_string(cReplayVersion));
+    Replay replay;
+    for (std::size_t index = 0;; ++index)
+    {
+        const std::string where = "record " + std::to_string(index) + ": ";
+        if (reader.Remaining() == 0)
+            return MakeError(EError::CorruptData, where + "the file ends without its end record (truncated)");
+        const auto type = static_cast<EReplayRecord>(reader.ReadU8());
+        const std::uint32_t length = reader.ReadU32();
+        if (reader.Failed() || static_cast<std::uint64_t>(length) + 4 > reader.Remaining())
+            return MakeError(EError::CorruptData, where + "truncated");
+        const std::span<const std::byte> payload = inBytes.subspan(inBytes.size() - reader.Remaining(), length);
+        reader.Skip(length);
+        if (reader.ReadU32() != Crc32(payload))
+            return MakeError(EError::CorruptData, where + "checksum mismatch (corrupt)");
+        switch (type)
+        {
+        case EReplayRecord::Object:
+        {
+            Result<RecordedObject> object = DecodeRecordedObject(payload);
+            if (!object)
+                return MakeError(object.GetError().mCode, where + object.GetError().mMessage);
+            replay.mObjects.push_back(std::move(object).Get());
+            break;
+        }
+        case EReplayRecord::Collision:
+        {
+            Result<Collision> collision = DecodeCollision(payload);
+            if (!collision)
+                return MakeError(collision.GetError().mCode, where + collision.GetError().mMessage);
+            replay.mCollisions.push_back(std::move(collision).Get());
+            break;
+        }
+        case EReplayRecord::End:
+        {
+            ByteReader end(payload);
+            const std::uint32_t objects = end.ReadU32();
+            const std::uint64_t collisions = end.ReadU64();
+            if (end.Failed() || objects != replay.mObjects.size() || collisions != replay.mCollisions.size())
+                return MakeError(EError::CorruptData, where + "the end record's counts do not match the file");
+            if (reader.Remaining() != 0)
+                return MakeError(EError::CorruptData, where + "data after the end record");
+            return replay;
+        }
+        default:
+            return MakeError(EError::CorruptData, where + "unknown record type " + std::to_string(static_cast<int>(type)));
+        }
+    }
+}
+
+} // namespace crumple::plugin

@@ -1,0 +1,117 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "WallCrashScene.h"
+#include "WorldFixture.h"
+
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/Crc32.h>
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/ReplayDamage.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+using namespace crumple;
+using namespace crumple::plugin;
+using namespace crumple::common;
+
+namespace
+{
+
+std::filesystem::path ScratchFile(const std::string& inName)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "crumple-replay-test";
+    std::filesystem::create_directories(dir);
+    return dir / inName;
+}
+
+// A 30-degree wall crash recorded to a file; returns the live car mesh.
+std::vector<Vec3> RecordCrash(const std::filesystem::path& inPath, bool inDentBeforeRecording)
+{
+    WallCrashSettings settings;
+    settings.mYawDegrees = 30.0;
+    settings.mTriangles = 4000;
+    WallCrashScene scene = WallCrashScene::Create(settings).Get();
+    if (inDentBeforeRecording)
+    {
+        // Damage the car's rear before recording starts: the recording must carry it.
+        DeformableObject& car = *scene.GetWorld().GetObject(scene.GetCarObject());
+        REQUIRE(car.GetDeformer().ApplyDent(std::vector<ffd::PointDisplacement>{{Vec3(-2.1, 0.0, 0.0), Vec3(0.05, 0.0, 0.0)}}));
+    }
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(inPath, scene.GetWorld()).Get());
+    // A second deformable object created mid-run, on the wall, is recorded before its first collision.
+    DeformableObjectSettings wall_panel;
+    wall_panel.mMesh.mPositions = {Vec3(0.0, -3.0, -1.0), Vec3(0.0, 3.0, -1.0), Vec3(0.0, 3.0, 2.0), Vec3(0.0, -3.0, 2.0)};
+    wall_panel.mMesh.mTriangles = {{0u, 2u, 1u}, {0u, 3u, 2u}};
+    REQUIRE(scene.GetWorld().CreateDeformableObject(scene.GetWall(), wall_panel));
+    scene.Run();
+    REQUIRE(recorder->Close());
+    CHECK(recorder->GetCollisionCount() >= 1);
+    return scene.GetWorld().GetObject(scene.GetCarObject())->GetDeformer().GetPositions();
+}
+
+} // namespace
+
+TEST_CASE("A recorded run replayed without an engine gives bitwise identical meshes", "[plugin][replay]")
+{
+    for (bool pre_damaged : {false, true})
+    {
+        const std::filesystem::path path = ScratchFile(pre_damaged ? "pre.crumple" : "fresh.crumple");
+        const std::vector<Vec3> live = RecordCrash(path, pre_damaged);
+        CHECK_FALSE(std::filesystem::exists(path.string() + ".partial"));
+        const std::vector<std::byte> bytes = ReadFileBytes(path).Get();
+        Result<Replay> replay = DecodeReplay(bytes);
+        REQUIRE(replay);
+        CHECK(replay.Get().mObjects.size() == 2);
+        Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
+        REQUIRE(objects);
+        REQUIRE(objects.Get().size() == 2);
+        CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live);
+    }
+}
+
+TEST_CASE("A truncated, corrupt or foreign replay file is refused with a clear message", "[plugin][replay]")
+{
+    const std::filesystem::path path = ScratchFile("refuse.crumple");
+    RecordCrash(path, false);
+    const std::vector<std::byte> bytes = ReadFileBytes(path).Get();
+
+    for (std::size_t length = 0; length < bytes.size(); length += 1 + bytes.size() / 50)
+    {
+        Result<Replay> truncated = DecodeReplay(std::span(bytes).first(length));
+        REQUIRE(truncated.HasError());
+        CHECK(truncated.GetError().mCode == EError::CorruptData);
+    }
+    std::vector<std::byte> corrupt = bytes;
+    corrupt[corrupt.size() / 2] ^= std::byte{0x40};
+    Result<Replay> corrupted = DecodeReplay(corrupt);
+    REQUIRE(corrupted.HasError());
+    CHECK(corrupted.GetError().mMessage.find("record") != std::string::npos);
+
+    std::vector<std::byte> newer = bytes;
+    newer[8] = std::byte{9};
+    CHECK(DecodeReplay(newer).GetError().mCode == EError::VersionMismatch);
+    std::vector<std::byte> foreign = bytes;
+    foreign[0] = std::byte{'Z'};
+    CHECK(DecodeReplay(foreign).GetError().mCode == EError::CorruptData);
+}
+
+TEST_CASE("An interrupted recording never looks complete", "[plugin][replay]")
+{
+    const std::filesystem::path path = ScratchFile("interrupted.crumple");
+    std::filesystem::remove(path);
+    WorldFixture fixture;
+    {
+        std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+        CHECK(std::filesystem::exists(path.string() + ".partial"));
+        CHECK_FALSE(std::filesystem::exists(path));
+        // Without Close() the partial file alone stays incomplete: it has no end record.
+        const std::vector<std::byte> partial = ReadFileBytes(path.string() + ".partial").Get();
+        CHECK(DecodeReplay(partial).HasError());
+    }
+    CHECK(std::filesystem::exists(path)); // the destructor closes it properly
+    CHECK(DecodeReplay(ReadFileBytes(path).Get()));
+    CHECK(DamageRecorder::Create("/nonexistent-dir/x.crumple", fixture.mWorld).GetError().mCode == EError::IoError);
+}
