@@ -9,7 +9,8 @@ CRUMPLE_BUILD_DIR="${CRUMPLE_BUILD_DIR:-$CRUMPLE_ROOT/build-release}"
 CRUMPLE_JOBS="${CRUMPLE_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 # Debian packages every build needs (the optional adapters switch themselves off without theirs).
-CRUMPLE_PACKAGES=(cmake make g++ pkg-config libeigen3-dev catch2 libbullet-dev libode-dev)
+CRUMPLE_PACKAGES=(cmake make g++ pkg-config libeigen3-dev catch2 libbullet-dev libode-dev libassimp-dev
+    libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev)
 
 crumple_ensure_packages() {
     local missing=()

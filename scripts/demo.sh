@@ -1,16 +1,38 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
-# The main job, until the engine adapters land: a box-shaped car driven into a wall head-on and at 30
-# degrees through the core API (scripted contacts); writes the deformed meshes (OBJ) and a summary.
+# The main job: a scripted racing session in Bullet (and the same in ODE). A car with a deformable body
+# scrapes along barriers and hits a parked car; each run writes a replay file, the deformed meshes (OBJ)
+# and PNG pictures (before/after and a frame sequence, rendered headless on EGL). The Bullet recording is
+# then replayed with no engine at all, and its mesh compared with the live one.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 crumple_ensure_packages
 crumple_build -DCRUMPLE_BUILD_TESTS=OFF -DCRUMPLE_BUILD_SAMPLES=ON
 out="${1:-$CRUMPLE_ROOT/demo-output}"
+bin="$CRUMPLE_BUILD_DIR/samples"
 mkdir -p "$out"
-"$CRUMPLE_BUILD_DIR/samples/crumple-wall-crash" --speed 15 --angle 0 --out "$out/head-on"
-"$CRUMPLE_BUILD_DIR/samples/crumple-wall-crash" --speed 15 --angle 30 --out "$out/angle-30"
+if [ ! -x "$bin/crumple-racing-bullet" ]; then
+    echo "crumple demo: the racing samples were not built (see the configure messages above)" >&2
+    exit 1
+fi
+
+echo "== Bullet racing session"
+"$bin/crumple-racing-bullet" --out "$out/racing-bullet"
+if [ -x "$bin/crumple-racing-ode" ]; then
+    echo; echo "== ODE racing session"
+    "$bin/crumple-racing-ode" --out "$out/racing-ode"
+fi
+echo; echo "== Headless replay of the Bullet recording (no physics engine)"
+"$bin/crumple-replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
+if cmp -s "$out/racing-bullet/car.obj" "$out/replay/object0.obj"; then
+    echo "replayed car mesh is byte-identical to the live one"
+else
+    echo "replayed car mesh differs from the live one" >&2
+    exit 1
+fi
+
 echo
-echo "crumple demo: meshes and summaries are in $out/head-on and $out/angle-30"
+echo "crumple demo: pictures are in $out/racing-bullet (before.png, after.png, frames/) and $out/racing-ode;"
+echo "              deformed meshes (OBJ) and replay files (race.crumple) beside them."

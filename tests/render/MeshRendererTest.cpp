@@ -43,8 +43,8 @@ struct TestMesh
     std::vector<std::array<std::uint32_t, 3>> mTriangles;
 };
 
-/// The cube [-0.5, 0.5]^3 (m) with flat faces: 4 vertices per face carrying the face normal, counter-clockwise
-/// seen from outside.
+/// The cube [-0.5, 0.5]^3 (m) with flat faces: 4 vertices per face carrying the face normal,
+/// counter-clockwise seen from outside.
 TestMesh MakeUnitCube()
 {
     TestMesh mesh;
@@ -127,7 +127,8 @@ double Luma(const std::array<int, 4>& inPixel)
 std::array<int, 2> ProjectToPixel(const Camera& inCamera, const Vec3& inPoint)
 {
     const Eigen::Vector4d clip = inCamera.GetProjectionMatrix(double(cWidth) / cHeight) *
-                                 inCamera.GetViewMatrix() * Eigen::Vector4d(inPoint.x(), inPoint.y(), inPoint.z(), 1.0);
+                                 inCamera.GetViewMatrix() *
+                                 Eigen::Vector4d(inPoint.x(), inPoint.y(), inPoint.z(), 1.0);
     const double x = 0.5 * (clip.x() / clip.w() + 1.0) * cWidth;
     const double y = 0.5 * (1.0 - clip.y() / clip.w()) * cHeight;
     return {static_cast<int>(x), static_cast<int>(y)};
@@ -136,7 +137,8 @@ std::array<int, 2> ProjectToPixel(const Camera& inCamera, const Vec3& inPoint)
 /// A renderer on inContext with inSettings; REQUIREs success.
 std::unique_ptr<MeshRenderer> MakeRenderer(gpu::EglContext& ioContext, const RenderSettings& inSettings = {})
 {
-    Result<std::unique_ptr<MeshRenderer>> renderer = MeshRenderer::Create(ioContext, cWidth, cHeight, inSettings);
+    Result<std::unique_ptr<MeshRenderer>> renderer =
+        MeshRenderer::Create(ioContext, cWidth, cHeight, inSettings);
     INFO((renderer ? std::string() : renderer.GetError().mMessage));
     REQUIRE(renderer.IsValid());
     return std::move(renderer).Get();
@@ -165,6 +167,34 @@ TEST_CASE("EglContext makes a headless core context of at least the requested ve
     CHECK(context->GetPlatform() != gpu::EEglPlatform::Any);
     CHECK(context->MakeCurrent().IsValid());
     CHECK(context->GetProcAddress("glDispatchCompute") != nullptr);
+}
+
+TEST_CASE("EglContext works on either platform and with two contexts alive", "[render]")
+{
+    std::unique_ptr<gpu::EglContext> first = TryCreateContext();
+    if (first == nullptr)
+        return;
+
+    // Mesa's surfaceless platform on its own (the fallback when no EGL device works).
+    gpu::EglContextSettings surfaceless;
+    surfaceless.mMajorVersion = 3;
+    surfaceless.mMinorVersion = 3;
+    surfaceless.mPlatform = gpu::EEglPlatform::Surfaceless;
+    Result<std::unique_ptr<gpu::EglContext>> second = gpu::EglContext::Create(surfaceless);
+    if (second)
+        CHECK(second.Get()->GetPlatform() == gpu::EEglPlatform::Surfaceless);
+    else
+        WARN("surfaceless platform unavailable: " << second.GetError().mMessage);
+
+    // A second context on the first one's display; destroying it leaves the first usable.
+    std::unique_ptr<gpu::EglContext> third = TryCreateContext();
+    REQUIRE(third != nullptr);
+    third.reset();
+    REQUIRE(first->MakeCurrent().IsValid());
+    std::unique_ptr<MeshRenderer> renderer = MakeRenderer(*first);
+    const TestMesh cube = MakeUnitCube();
+    std::vector<std::uint8_t> rgba;
+    CHECK(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, {}, Camera(), rgba).IsValid());
 }
 
 TEST_CASE("EglContext refuses versions without a core profile", "[render]")
@@ -196,8 +226,8 @@ TEST_CASE("MeshRenderer draws a cube over the background", "[render]")
         return;
     std::unique_ptr<MeshRenderer> renderer = MakeRenderer(*context);
     const TestMesh cube = MakeUnitCube();
-    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso, Vec3::UnitZ(),
-                                               Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
+    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso,
+                                               Vec3::UnitZ(), Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
 
     std::vector<std::uint8_t> rgba;
     const Status status = renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, {}, camera, rgba);
@@ -225,8 +255,8 @@ TEST_CASE("MeshRenderer lights the face towards the key light more than an obliq
     settings.mKeyLightDirection = Vec3::UnitZ();
     std::unique_ptr<MeshRenderer> renderer = MakeRenderer(*context, settings);
     const TestMesh cube = MakeUnitCube();
-    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso, Vec3::UnitZ(),
-                                               Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
+    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso,
+                                               Vec3::UnitZ(), Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
     std::vector<std::uint8_t> rgba;
     REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, {}, camera, rgba).IsValid());
 
@@ -277,7 +307,8 @@ TEST_CASE("MeshRenderer colours scalars and keeps the picture upright and unmirr
         lateral.push_back(position.y());
     }
     std::vector<std::uint8_t> by_height;
-    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, height, camera, by_height).IsValid());
+    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, height, camera, by_height)
+                .IsValid());
     const std::array<int, 4> top_pixel = PixelAt(by_height, high[0], high[1]);
     const std::array<int, 4> bottom_pixel = PixelAt(by_height, low[0], low[1]);
     CHECK(top_pixel != grey);
@@ -286,7 +317,8 @@ TEST_CASE("MeshRenderer colours scalars and keeps the picture upright and unmirr
 
     // Lateral position as the scalar: +y, high end, on the right.
     std::vector<std::uint8_t> by_side;
-    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, lateral, camera, by_side).IsValid());
+    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, lateral, camera, by_side)
+                .IsValid());
     const std::array<int, 4> right_pixel = PixelAt(by_side, right[0], right[1]);
     const std::array<int, 4> left_pixel = PixelAt(by_side, left[0], left[1]);
     CHECK(right_pixel[1] > right_pixel[2] + 40);
@@ -296,7 +328,8 @@ TEST_CASE("MeshRenderer colours scalars and keeps the picture upright and unmirr
     settings.mColorMap = EColorMap::CoolWarm;
     REQUIRE(renderer->SetSettings(settings).IsValid());
     std::vector<std::uint8_t> cool_warm;
-    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, height, camera, cool_warm).IsValid());
+    REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, height, camera, cool_warm)
+                .IsValid());
     const std::array<int, 4> warm = PixelAt(cool_warm, high[0], high[1]);
     const std::array<int, 4> cool = PixelAt(cool_warm, low[0], low[1]);
     CHECK(warm[0] > warm[2] + 40);
@@ -319,8 +352,9 @@ TEST_CASE("MeshRenderer refuses bad input", "[render]")
     const Camera camera;
     std::vector<std::uint8_t> rgba;
     const std::vector<Vec3> too_few_normals(cube.mNormals.begin(), cube.mNormals.end() - 1);
-    CHECK(renderer->Render(cube.mPositions, too_few_normals, cube.mTriangles, {}, camera, rgba).GetError().mCode ==
-          EError::InvalidArgument);
+    CHECK(renderer->Render(cube.mPositions, too_few_normals, cube.mTriangles, {}, camera, rgba)
+              .GetError()
+              .mCode == EError::InvalidArgument);
     const std::vector<double> too_few_scalars(3, 0.0);
     CHECK(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, too_few_scalars, camera, rgba)
               .GetError()
@@ -335,9 +369,10 @@ TEST_CASE("MeshRenderer refuses bad input", "[render]")
               .mCode == EError::OutOfRange);
     TestMesh not_finite = cube;
     not_finite.mPositions[5].x() = std::numeric_limits<double>::quiet_NaN();
-    CHECK(renderer->Render(not_finite.mPositions, not_finite.mNormals, not_finite.mTriangles, {}, camera, rgba)
-              .GetError()
-              .mCode == EError::NonFinite);
+    CHECK(
+        renderer->Render(not_finite.mPositions, not_finite.mNormals, not_finite.mTriangles, {}, camera, rgba)
+            .GetError()
+            .mCode == EError::NonFinite);
     CHECK(rgba.empty());
 
     // Still usable after the refusals.
@@ -354,7 +389,8 @@ TEST_CASE("WritePng writes a file that reads back with the same size and pixels"
     for (int y = 0; y < cHeight; ++y)
         for (int x = 0; x < cWidth; ++x)
         {
-            const std::size_t offset = 4 * (static_cast<std::size_t>(y) * cWidth + static_cast<std::size_t>(x));
+            const std::size_t offset =
+                4 * (static_cast<std::size_t>(y) * cWidth + static_cast<std::size_t>(x));
             rgba[offset] = static_cast<std::uint8_t>(x);
             rgba[offset + 1] = static_cast<std::uint8_t>(y);
             rgba[offset + 2] = 200;
@@ -376,13 +412,16 @@ TEST_CASE("WritePng writes a file that reads back with the same size and pixels"
     stbi_image_free(pixels);
 
     // Only the picture is left: no temporary file.
-    CHECK(std::distance(std::filesystem::directory_iterator(directory), std::filesystem::directory_iterator()) == 1);
+    CHECK(std::distance(std::filesystem::directory_iterator(directory),
+                        std::filesystem::directory_iterator()) == 1);
 
     // Refusals leave no file behind.
     CHECK(WritePng(directory / "short.png", cWidth, cHeight, std::span(rgba).first(16)).GetError().mCode ==
           EError::InvalidArgument);
-    CHECK(WritePng(directory / "missing" / "x.png", cWidth, cHeight, rgba).GetError().mCode == EError::IoError);
-    CHECK(std::distance(std::filesystem::directory_iterator(directory), std::filesystem::directory_iterator()) == 1);
+    CHECK(WritePng(directory / "missing" / "x.png", cWidth, cHeight, rgba).GetError().mCode ==
+          EError::IoError);
+    CHECK(std::distance(std::filesystem::directory_iterator(directory),
+                        std::filesystem::directory_iterator()) == 1);
     std::filesystem::remove_all(directory);
 }
 
@@ -393,8 +432,8 @@ TEST_CASE("A rendered cube round-trips through WritePng", "[render]")
         return;
     std::unique_ptr<MeshRenderer> renderer = MakeRenderer(*context);
     const TestMesh cube = MakeUnitCube();
-    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso, Vec3::UnitZ(),
-                                               Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
+    const Camera camera = Camera::LookAtBounds(Vec3::Constant(-0.5), Vec3::Constant(0.5), EView::Iso,
+                                               Vec3::UnitZ(), Vec3::UnitX(), 30.0, double(cWidth) / cHeight);
     std::vector<std::uint8_t> rgba;
     REQUIRE(renderer->Render(cube.mPositions, cube.mNormals, cube.mTriangles, {}, camera, rgba).IsValid());
 

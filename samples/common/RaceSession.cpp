@@ -1,0 +1,178 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "RaceSession.h"
+#include "BoxMesh.h"
+#include "CarMesh.h"
+#include "ObjWriter.h"
+
+#include <crumple/base/Version.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace crumple::samples
+{
+
+using namespace crumple::plugin;
+
+std::vector<Transform> RaceCourse::Barriers()
+{
+    std::vector<Transform> barriers;
+    for (int i = 0; i < 3; ++i)
+    {
+        const double x = 24.0 + 4.0 * i;
+        barriers.push_back({Eigen::AngleAxisd(cBarrierYaw, Vec3::UnitZ()).toRotationMatrix(),
+                            Vec3(x, -3.0 + 0.125 * (x - 20.0), BarrierHalfExtents().z())});
+    }
+    return barriers;
+}
+
+Transform RaceCourse::ParkedCar()
+{
+    return {Mat3::Identity(), Vec3(60.0, 1.0, ParkedHalfExtents().z())};
+}
+
+int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const char* inDescription, RaceOptions& outOptions)
+{
+    for (int i = 1; i < inArgc; ++i)
+    {
+        const std::string arg = inArgv[i];
+        if (arg == "--help" || arg == "-h")
+        {
+            std::printf("usage: %s [--out DIR] [--duration S] [--speed M_PER_S] [--no-pictures]\n  %s\n"
+                        "  Writes DIR/race.crumple (replay for crumple-replay), DIR/car.obj, DIR/parked.obj and, with\n"
+                        "  pictures, DIR/before.png, DIR/after.png and DIR/frames/frame_NNNN.png.\n",
+                        inProgram, inDescription);
+            return 0;
+        }
+        if (arg == "--version")
+        {
+            std::printf("%s %s\n", inProgram, VersionString());
+            return 0;
+        }
+        if (arg == "--no-pictures")
+            outOptions.mPictures = false;
+        else if (arg == "--out" && i + 1 < inArgc)
+            outOptions.mOut = inArgv[++i];
+        else if ((arg == "--duration" || arg == "--speed") && i + 1 < inArgc)
+        {
+            char* end = nullptr;
+            const double value = std::strtod(inArgv[++i], &end);
+            if (*end != '\0' || !(value > 0.0 && value <= 120.0))
+            {
+                std::fprintf(stderr, "%s: %s %s: expected a number in (0, 120]\n", inProgram, arg.c_str(), inArgv[i]);
+                return 2;
+            }
+            (arg == "--duration" ? outOptions.mDuration : outOptions.mSpeed) = value;
+        }
+        else
+        {
+            std::fprintf(stderr, "%s: unknown argument '%s' (see --help)\n", inProgram, arg.c_str());
+            return 2;
+        }
+    }
+    return -1;
+}
+
+ffd::TriangleMesh RaceCarMesh()
+{
+    Result<ffd::TriangleMesh> loaded = LoadCarMesh(ToyCarMesh(SharedDataFolder()));
+    if (loaded)
+        return std::move(loaded).Get();
+    std::printf("note: %s; using a procedural box car\n", loaded.GetError().mMessage.c_str());
+    return common::MakeBoxMesh(Vec3(2.1, 0.95, 0.6), {42, 19, 12});
+}
+
+Result<std::unique_ptr<RaceSession>> RaceSession::Create(const RaceOptions& inOptions, DamageWorld& ioDamage,
+                                                         std::map<BodyId, std::string> inNames)
+{
+    std::error_code error;
+    std::filesystem::create_directories(inOptions.mOut / "frames", error);
+    if (error)
+        return MakeError(EError::IoError, "cannot create " + inOptions.mOut.string() + ": " + error.message());
+    std::unique_ptr<RaceSession> session(new RaceSession(inOptions, std::move(inNames)));
+    Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(inOptions.mOut / "race.crumple", ioDamage);
+    if (!recorder)
+        return recorder.GetError();
+    session->mRecorder = std::move(recorder).Get();
+    ioDamage.AddListener(&session->mLog);
+    // The EGL context exists only when pictures are wanted.
+    if (inOptions.mPictures)
+    {
+        Result<std::unique_ptr<ScenePainter>> painter = ScenePainter::Create(960, 540, 0.25);
+        if (painter)
+            session->mPainter = std::move(painter).Get();
+        else
+            std::printf("note: no pictures: %s\n", painter.GetError().mMessage.c_str());
+    }
+    return session;
+}
+
+void RaceSession::PaintCar(const DeformableObject& inCar, const std::string& inName)
+{
+    if (mPainter == nullptr)
+        return;
+    mPainter->Clear();
+    const ffd::FfdDeformer& d = inCar.GetDeformer();
+    mPainter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles, DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), {});
+    Vec3 lo = d.GetRestMesh().mPositions[0], hi = lo;
+    for (const Vec3& p : d.GetRestMesh().mPositions)
+    {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const render::Camera camera = render::Camera::LookAtBounds(lo, hi, render::EView::Iso, Vec3::UnitZ(), Vec3::UnitX(), 30.0,
+                                                               mPainter->GetWidth() / static_cast<double>(mPainter->GetHeight()));
+    if (Status painted = mPainter->Paint(camera, mOptions.mOut / inName); !painted)
+        std::printf("note: %s\n", painted.GetError().mMessage.c_str());
+}
+
+void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inCarPose, const DeformableObject& inParked,
+                             const Transform& inParkedPose)
+{
+    if (mPainter == nullptr)
+        return;
+    mPainter->Clear();
+    mPainter->AddBox(Vec3(60.0, 12.0, 0.01), {Mat3::Identity(), Vec3(40.0, 0.0, -0.01)});
+    for (const Transform& barrier : RaceCourse::Barriers())
+        mPainter->AddBox(RaceCourse::BarrierHalfExtents(), barrier);
+    for (const auto& [object, pose] : {std::pair{&inCar, &inCarPose}, std::pair{&inParked, &inParkedPose}})
+    {
+        const ffd::FfdDeformer& d = object->GetDeformer();
+        mPainter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles, DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), *pose);
+    }
+    // A chase camera behind, left and above the racing car.
+    render::Camera camera;
+    camera.mTarget = inCarPose.mTranslation + Vec3(4.0, 0.0, 0.0);
+    camera.mEye = inCarPose.mTranslation + Vec3(-10.0, 6.0, 5.0);
+    camera.mFovYDegrees = 40.0;
+    camera.mFar = 300.0;
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", mFrames++);
+    if (Status painted = mPainter->Paint(camera, mOptions.mOut / "frames" / name); !painted)
+        std::printf("note: %s\n", painted.GetError().mMessage.c_str());
+}
+
+Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked)
+{
+    ioDamage.Flush();
+    ioDamage.RemoveListener(&mLog);
+    if (Status closed = mRecorder->Close(); !closed)
+        return closed;
+    PaintCar(inCar, "after.png");
+    for (const auto& [object, name] : {std::pair{&inCar, "car.obj"}, std::pair{&inParked, "parked.obj"}})
+    {
+        const ffd::FfdDeformer& d = object->GetDeformer();
+        if (Status written = common::WriteObj(mOptions.mOut / name, d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles); !written)
+            return written;
+    }
+    std::printf("%d collisions; racing car deepest dent %.3f m, parked car %.3f m; %d frames\n", mLog.GetCount(),
+                RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    std::printf("wrote %s: race.crumple (replay: crumple-replay %s --out DIR), car.obj, parked.obj%s\n",
+                mOptions.mOut.string().c_str(), (mOptions.mOut / "race.crumple").string().c_str(),
+                mPainter != nullptr ? ", before.png, after.png, frames/" : "");
+    return Status::Ok();
+}
+
+} // namespace crumple::samples

@@ -1,0 +1,76 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "RaceLog.h"
+#include "ScenePainter.h"
+
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/DamageWorld.h>
+
+#include <map>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace crumple::samples
+{
+
+/// The course every racing sample drives, whatever the engine: a straight along +x, three concrete
+/// barriers angled 7 degrees into the road from the right (the car scrapes along them), and a parked car
+/// further down. World frame: z up, metres.
+struct RaceCourse
+{
+    static constexpr double cBarrierYaw = 0.122;                 ///< Barrier heading (rad)
+    static Vec3 BarrierHalfExtents() { return {2.035, 0.405, 0.57}; } ///< A jersey barrier, 4.07 x 0.81 x 1.14 m
+    static std::vector<Transform> Barriers();                   ///< Their poses
+    static Vec3 ParkedHalfExtents() { return {2.1, 0.9, 0.7}; }   ///< The parked car's box
+    static Transform ParkedCar();                               ///< Its pose, resting on the ground
+    static constexpr double cParkedMass = 1100.0;               ///< kg
+};
+
+/// Command line of a racing sample.
+struct RaceOptions
+{
+    std::filesystem::path mOut = "racing-output"; ///< Output folder
+    double mDuration = 6.0;                       ///< Simulated time (s)
+    double mSpeed = 20.0;                         ///< Target speed (m/s)
+    bool mPictures = true;                        ///< PNG before/after and frames
+};
+
+/// Parses --out, --duration, --speed, --no-pictures, --help, --version. Returns -1 to go on, else an exit code.
+int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const char* inDescription, RaceOptions& outOptions);
+
+/// The racing car's body mesh: the shipped Toy Car when ../shared/data has it, else a procedural box.
+ffd::TriangleMesh RaceCarMesh();
+
+/// Everything a racing sample writes: the replay recording, a collision log, pictures and meshes.
+class RaceSession
+{
+public:
+    /// Creates the output folder, the recorder and (when pictures are wanted) the painter.
+    static Result<std::unique_ptr<RaceSession>> Create(const RaceOptions& inOptions, plugin::DamageWorld& ioDamage,
+                                                       std::map<plugin::BodyId, std::string> inNames);
+
+    /// The racing car alone, coloured by dent depth, from an iso view.
+    void PaintCar(const plugin::DeformableObject& inCar, const std::string& inName);
+    /// A frame of the scene with a chase camera on the racing car.
+    void PaintFrame(const plugin::DeformableObject& inCar, const Transform& inCarPose, const plugin::DeformableObject& inParked,
+                    const Transform& inParkedPose);
+    /// Flushes, closes the recording, writes after.png, car.obj and parked.obj, prints the summary.
+    Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar, const plugin::DeformableObject& inParked);
+
+private:
+    RaceSession(const RaceOptions& inOptions, std::map<plugin::BodyId, std::string> inNames)
+        : mOptions(inOptions), mLog(std::move(inNames)) {}
+
+    RaceOptions mOptions;
+    RaceLog mLog;
+    std::unique_ptr<plugin::DamageRecorder> mRecorder;
+    std::unique_ptr<ScenePainter> mPainter;
+    int mFrames = 0;
+};
+
+} // namespace crumple::samples
