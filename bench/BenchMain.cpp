@@ -44,6 +44,7 @@ int main(int argc, char** argv)
     std::printf("crumple-bench %s%s: running\n", crumple::VersionString(), options.mQuick ? " (quick)" : "");
     RunDentBenchmarks(table, options);
     RunImpulseBenchmarks(table, options);
+    RunAdapterBenchmarks(table, options);
     table.Print();
     if (!csv.empty() && !table.WriteCsv(csv))
     {

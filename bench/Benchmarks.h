@@ -19,4 +19,8 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// Simultaneous Baraff impulses against the analytic impulse, and the cost of frames without impacts.
 void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// Per engine step with the Bullet/ODE adapter attached, against the bare engine step of the same scene in
+/// the same run: no contacts, resting contacts only, and a wall crash.
+void RunAdapterBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 } // namespace crumple::bench

@@ -18,8 +18,9 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     mBroadphase = std::make_unique<btDbvtBroadphase>();
     mSolver = std::make_unique<btSequentialImpulseConstraintSolver>();
     mWorld = std::make_unique<btDiscreteDynamicsWorld>(mDispatcher.get(), mBroadphase.get(), mSolver.get(), mConfiguration.get());
-    mWorld->setGravity(btVector3(0, 0, btScalar(-9.81)));
-    mAdapter = std::move(bullet::BulletAdapter::Create(*mWorld, mDamage).Get());
+    mWorld->setGravity(btVector3(0, 0, btScalar(inSettings.mFloating ? 0.0 : -9.81)));
+    if (inSettings.mAttach)
+        mAdapter = std::move(bullet::BulletAdapter::Create(*mWorld, mDamage).Get());
 
     // Ground z = 0 and, unless only driving, a wall whose face is the plane x = 0.
     auto add_static = [&](std::unique_ptr<btCollisionShape> inShape, const btVector3& inOrigin) {
@@ -28,13 +29,31 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         object->setWorldTransform(btTransform(btQuaternion::getIdentity(), inOrigin));
         object->setFriction(btScalar(0.5));
         mWorld->addCollisionObject(object.get());
-        (void)mAdapter->AddBody(*object);
+        if (mAdapter != nullptr)
+            (void)mAdapter->AddBody(*object);
         mShapes.push_back(std::move(inShape));
         mObjects.push_back(std::move(object));
     };
-    add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
-    if (!inSettings.mDriveOnly)
+    if (!inSettings.mFloating)
+        add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
+    if (!inSettings.mDriveOnly && !inSettings.mFloating)
         add_static(std::make_unique<btBoxShape>(btVector3(1, 10, 3)), btVector3(1, 0, 3));
+
+    // Scenery: crates in a grid beside the road (not registered with Crumple).
+    if (inSettings.mSceneryBoxes > 0)
+        mShapes.push_back(std::make_unique<btBoxShape>(btVector3(0.5f, 0.5f, 0.5f)));
+    for (int i = 0; i < inSettings.mSceneryBoxes; ++i)
+    {
+        btCollisionShape* crate_shape = mShapes.back().get();
+        btVector3 crate_inertia;
+        crate_shape->calculateLocalInertia(50, crate_inertia);
+        btRigidBody::btRigidBodyConstructionInfo crate_info(50, nullptr, crate_shape, crate_inertia);
+        crate_info.m_startWorldTransform.setOrigin(btVector3(btScalar(-30 + 2 * (i % 20)), btScalar(15 + 2 * (i / 20)), 0.5f));
+        auto crate = std::make_unique<btRigidBody>(crate_info);
+        crate->setActivationState(DISABLE_DEACTIVATION); // keep the engine busy, as moving scenery would
+        mWorld->addRigidBody(crate.get());
+        mObjects.push_back(std::move(crate));
+    }
 
     // The car: a box resting on the ground, yawed, its nearest point mGap before the wall.
     const Vec3& h = inSettings.mHalfExtents;
@@ -53,10 +72,11 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     car->setActivationState(DISABLE_DEACTIVATION);
     mWorld->addRigidBody(car.get());
     mCar = car.get();
-    const BodyId car_body = mAdapter->AddBody(*car).Get();
     mShapes.push_back(std::move(shape));
     mObjects.push_back(std::move(car));
-
+    if (mAdapter == nullptr)
+        return;
+    const BodyId car_body = mAdapter->AddBody(*mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
     mDamage.AddListener(&mCounter);
 }
@@ -85,6 +105,8 @@ EngineCrashResult BulletWallCrash::Run()
     for (int i = 0; i < steps; ++i)
         Step();
     mDamage.Flush();
+    if (mAdapter == nullptr)
+        return {};
     return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
 }
 

@@ -27,6 +27,10 @@ struct EngineCrashSettings
     plugin::DamageMaterial mMaterial;  ///< Car body material
     plugin::DamageWorldSettings mWorld; ///< Damage world settings
     bool mDriveOnly = false;           ///< No wall: the car just drives (and rests) on the ground
+    bool mFloating = false;            ///< No gravity, no ground: the car flies and touches nothing
+    int mSceneryBoxes = 0;             ///< Loose 1 m crates resting beside the road, unknown to Crumple: a realistic
+                                       ///< engine load for overhead measurements
+    bool mAttach = true;               ///< Attach Crumple; false gives the bare engine scene, for overhead ratios
 };
 
 /// What a crash produced, in the car's body frame.

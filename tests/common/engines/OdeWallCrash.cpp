@@ -16,16 +16,30 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 {
     dInitODE2(0); // reference counted by ODE; paired with dCloseODE in the destructor
     mWorld = dWorldCreate();
-    dWorldSetGravity(mWorld, 0, 0, -9.81);
+    dWorldSetGravity(mWorld, 0, 0, inSettings.mFloating ? 0.0 : -9.81);
     mSpace = dHashSpaceCreate(nullptr);
     mContacts = dJointGroupCreate(0);
-    mAdapter = std::move(ode::OdeAdapter::Create(mDamage).Get());
+    if (inSettings.mAttach)
+        mAdapter = std::move(ode::OdeAdapter::Create(mDamage).Get());
 
-    dCreatePlane(mSpace, 0, 0, 1, 0);
-    if (!inSettings.mDriveOnly)
+    if (!inSettings.mFloating)
+        dCreatePlane(mSpace, 0, 0, 1, 0);
+    if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
         dGeomID wall = dCreateBox(mSpace, 2, 20, 6);
         dGeomSetPosition(wall, 1, 0, 3);
+    }
+
+    // Scenery: crates in a grid beside the road (not registered with Crumple).
+    for (int i = 0; i < inSettings.mSceneryBoxes; ++i)
+    {
+        dBodyID crate = dBodyCreate(mWorld);
+        dMass crate_mass;
+        dMassSetBoxTotal(&crate_mass, 50.0, 1.0, 1.0, 1.0);
+        dBodySetMass(crate, &crate_mass);
+        dBodySetPosition(crate, -30.0 + 2.0 * (i % 20), 15.0 + 2.0 * (i / 20), 0.5);
+        dBodySetAutoDisableFlag(crate, 0); // keep the engine busy, as moving scenery would
+        dGeomSetBody(dCreateBox(mSpace, 1.0, 1.0, 1.0), crate);
     }
 
     const Vec3& h = inSettings.mHalfExtents;
@@ -44,6 +58,8 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
     dGeomID box = dCreateBox(mSpace, 2 * h.x(), 2 * h.y(), 2 * h.z());
     dGeomSetBody(box, mCar);
 
+    if (mAdapter == nullptr)
+        return;
     const BodyId car_body = mAdapter->AddBody(mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
     mDamage.AddListener(&mCounter);
@@ -69,7 +85,8 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     std::array<dContactGeom, 8> geoms{};
     for (int i = 0; i < count; ++i)
         geoms[static_cast<std::size_t>(i)] = contacts[static_cast<std::size_t>(i)].geom;
-    scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span(geoms.data(), static_cast<std::size_t>(count)));
+    if (scene->mAdapter != nullptr)
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span(geoms.data(), static_cast<std::size_t>(count)));
 
     dBodyID b1 = dGeomGetBody(inGeom1), b2 = dGeomGetBody(inGeom2);
     for (int i = 0; i < count; ++i)
@@ -88,7 +105,8 @@ void OdeWallCrash::Step()
 {
     dSpaceCollide(mSpace, this, &OdeWallCrash::NearCallback);
     dWorldStep(mWorld, mSettings.mTimeStep);
-    mAdapter->AfterStep(mSettings.mTimeStep);
+    if (mAdapter != nullptr)
+        mAdapter->AfterStep(mSettings.mTimeStep);
     dJointGroupEmpty(mContacts);
 }
 
@@ -98,6 +116,8 @@ EngineCrashResult OdeWallCrash::Run()
     for (int i = 0; i < steps; ++i)
         Step();
     mDamage.Flush();
+    if (mAdapter == nullptr)
+        return {};
     return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
 }
 
