@@ -8,7 +8,8 @@
 namespace crumple::plugin
 {
 
-Result<std::vector<ReplayedObject>> ReplayDamage(const Replay& inReplay)
+Result<std::vector<ReplayedObject>> ReplayDamage(
+    const Replay& inReplay, const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision)
 {
     std::vector<ReplayedObject> objects;
     for (const RecordedObject& record : inReplay.mObjects)
@@ -25,11 +26,16 @@ Result<std::vector<ReplayedObject>> ReplayDamage(const Replay& inReplay)
     // Dispatch order of the live world: objects in id order, those of A before those of B.
     std::stable_sort(objects.begin(), objects.end(),
                      [](const ReplayedObject& a, const ReplayedObject& b) { return a.mObject < b.mObject; });
-    for (const Collision& collision : inReplay.mCollisions)
+    for (std::size_t index = 0; index < inReplay.mCollisions.size(); ++index)
+    {
+        const Collision& collision = inReplay.mCollisions[index];
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ReplayedObject& object : objects)
                 if (object.mBody == body)
                     object.mDeformable.ApplyCollision(collision, side);
+        if (inAfterCollision)
+            inAfterCollision(index, objects);
+    }
     return objects;
 }
 

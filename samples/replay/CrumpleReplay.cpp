@@ -10,7 +10,12 @@
 #include <crumple/plugin/ReplayDamage.h>
 
 #include <cstdio>
+#include <functional>
 #include <string>
+
+#if defined(CRUMPLE_REPLAY_PICTURES)
+#include "ScenePainter.h"
+#endif
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -18,14 +23,17 @@ using namespace crumple::plugin;
 int main(int argc, char** argv)
 {
     std::filesystem::path input, out;
+    bool pictures = false;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
         {
-            std::printf("usage: crumple-replay FILE --out DIR\n"
+            std::printf("usage: crumple-replay FILE --out DIR [--pictures]\n"
                         "  Replays a Crumple recording (written by DamageRecorder) without a physics engine and\n"
-                        "  writes each object's deformed mesh as DIR/object<ID>.obj, with one line per object.\n");
+                        "  writes each object's deformed mesh as DIR/object<ID>.obj, with one line per object.\n"
+                        "  --pictures  also DIR/object<ID>_before.png, _after.png (coloured by dent depth) and\n"
+                        "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n");
             return 0;
         }
         if (arg == "--version")
@@ -35,6 +43,8 @@ int main(int argc, char** argv)
         }
         if (arg == "--out" && i + 1 < argc)
             out = argv[++i];
+        else if (arg == "--pictures")
+            pictures = true;
         else if (!arg.starts_with("-") && input.empty())
             input = arg;
         else
@@ -63,18 +73,76 @@ int main(int argc, char** argv)
         return 2;
     }
     std::printf("crumple-replay: %zu objects, %zu collisions\n", replay.Get().mObjects.size(), replay.Get().mCollisions.size());
-    Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
-    if (!objects)
+    // A dry run first: a recording whose objects cannot be rebuilt is refused before anything is written.
+    if (Result<std::vector<ReplayedObject>> check = ReplayDamage(Replay{replay.Get().mObjects, {}}); !check)
     {
-        std::fprintf(stderr, "crumple-replay: %s\n", objects.GetError().mMessage.c_str());
+        std::fprintf(stderr, "crumple-replay: %s\n", check.GetError().mMessage.c_str());
         return 2;
     }
-
     std::error_code error;
-    std::filesystem::create_directories(out, error);
+    std::filesystem::create_directories(out / "frames", error);
     if (error)
     {
         std::fprintf(stderr, "crumple-replay: cannot create %s: %s\n", out.string().c_str(), error.message().c_str());
+        return 2;
+    }
+
+    // Pictures: each object alone, in its body frame, coloured by dent depth.
+    std::function<void(const ReplayedObject&, const std::filesystem::path&)> paint;
+#if defined(CRUMPLE_REPLAY_PICTURES)
+    std::unique_ptr<samples::ScenePainter> painter;
+    if (pictures)
+    {
+        Result<std::unique_ptr<samples::ScenePainter>> created = samples::ScenePainter::Create(800, 600, 0.25);
+        if (created)
+            painter = std::move(created).Get();
+        else
+            std::printf("note: no pictures: %s\n", created.GetError().mMessage.c_str());
+    }
+    if (painter != nullptr)
+        paint = [&](const ReplayedObject& inObject, const std::filesystem::path& inPath) {
+            const ffd::FfdDeformer& d = inObject.mDeformable.GetDeformer();
+            Vec3 lo = d.GetRestMesh().mPositions[0], hi = lo;
+            for (const Vec3& p : d.GetRestMesh().mPositions)
+            {
+                lo = lo.cwiseMin(p);
+                hi = hi.cwiseMax(p);
+            }
+            painter->Clear();
+            painter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles,
+                         samples::DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), {});
+            const render::Camera camera = render::Camera::LookAtBounds(lo, hi, render::EView::Iso, Vec3::UnitZ(), Vec3::UnitX(), 30.0, 800.0 / 600.0);
+            if (Status painted = painter->Paint(camera, inPath); !painted)
+                std::printf("note: %s\n", painted.GetError().mMessage.c_str());
+        };
+#else
+    if (pictures)
+        std::printf("note: this build has no renderer (CRUMPLE_WITH_RENDER and assimp); no pictures\n");
+#endif
+    auto name = [](const ReplayedObject& inObject, const char* inSuffix) {
+        return "object" + std::to_string(inObject.mObject.mValue) + inSuffix;
+    };
+    if (paint)
+        if (Result<std::vector<ReplayedObject>> rest = ReplayDamage(Replay{replay.Get().mObjects, {}}); rest)
+            for (const ReplayedObject& object : rest.Get())
+                paint(object, out / name(object, "_before.png"));
+
+    std::size_t frame = 0;
+    Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get(), [&](std::size_t inIndex, const std::vector<ReplayedObject>& inObjects) {
+        if (!paint)
+            return;
+        const Collision& collision = replay.Get().mCollisions[inIndex];
+        for (const ReplayedObject& object : inObjects)
+            if (object.mBody == collision.mBodyA || object.mBody == collision.mBodyB)
+            {
+                char suffix[32];
+                std::snprintf(suffix, sizeof(suffix), "_%04zu.png", frame++);
+                paint(object, out / "frames" / name(object, suffix));
+            }
+    });
+    if (!objects)
+    {
+        std::fprintf(stderr, "crumple-replay: %s\n", objects.GetError().mMessage.c_str());
         return 2;
     }
     for (const ReplayedObject& object : objects.Get())
@@ -89,6 +157,8 @@ int main(int argc, char** argv)
         double deepest = 0.0;
         for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
             deepest = std::max(deepest, (deformer.GetPositions()[v] - deformer.GetRestMesh().mPositions[v]).norm());
+        if (paint)
+            paint(object, out / name(object, "_after.png"));
         std::printf("object %u (body %u): %zu vertices, deepest dent %.4f m, mesh hash %016llx -> %s\n",
                     object.mObject.mValue, object.mBody.mValue, deformer.GetPositions().size(), deepest,
                     static_cast<unsigned long long>(common::HashPositions(deformer.GetPositions())), path.string().c_str());

@@ -18,7 +18,14 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIR}/live/deformed.o
 if(different)
     message(FATAL_ERROR "the replayed mesh differs from the live one")
 endif()
-# A truncated (here: empty) recording and a missing one are refused, and nothing is written.
+# A truncated recording (cut in the middle), an empty one and a missing one are refused; nothing is written.
+file(SIZE ${DIR}/crash.crumple size)
+math(EXPR half "${size} / 2")
+execute_process(COMMAND head -c ${half} ${DIR}/crash.crumple OUTPUT_FILE ${DIR}/truncated.crumple RESULT_VARIABLE cut)
+if(cut)
+    message(FATAL_ERROR "could not truncate the recording")
+endif()
+run(2 ${REPLAY} ${DIR}/truncated.crumple --out ${DIR}/refused)
 file(WRITE ${DIR}/empty.crumple "")
 run(2 ${REPLAY} ${DIR}/empty.crumple --out ${DIR}/refused)
 run(2 ${REPLAY} ${DIR}/missing.crumple --out ${DIR}/refused)

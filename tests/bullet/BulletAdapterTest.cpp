@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "BoxMesh.h"
 #include "BulletWallCrash.h"
 
 #include <crumple/bullet/BulletAdapter.h>
 
+#include <BulletDynamics/Vehicle/btRaycastVehicle.h>
 #include <btBulletDynamicsCommon.h>
 #include <catch2/catch.hpp>
 #include <crumple/base/FileBytes.h>
@@ -265,4 +267,55 @@ TEST_CASE("Bullet: a recorded crash replays headless to bitwise identical meshes
     REQUIRE(objects);
     REQUIRE(objects.Get().size() == 1);
     CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live.mPositions);
+}
+
+TEST_CASE("Bullet: a btRaycastVehicle driving on flat ground gets no damage", "[bullet]")
+{
+    BulletWorld bullet;
+    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
+    btStaticPlaneShape ground_shape(btVector3(0, 0, 1), 0);
+    btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ground_shape)); // raycast wheels need a rigid body
+    bullet.mWorld.addRigidBody(&ground);
+    REQUIRE(adapter->AddBody(ground));
+
+    btBoxShape chassis_shape(btVector3(2.1f, 0.9f, 0.5f));
+    btVector3 inertia;
+    chassis_shape.calculateLocalInertia(1200, inertia);
+    btRigidBody::btRigidBodyConstructionInfo info(1200, nullptr, &chassis_shape, inertia);
+    info.m_startWorldTransform.setOrigin(btVector3(0, 0, 0.95f));
+    btRigidBody chassis(info);
+    chassis.setActivationState(DISABLE_DEACTIVATION);
+    bullet.mWorld.addRigidBody(&chassis);
+    btDefaultVehicleRaycaster raycaster(&bullet.mWorld);
+    btRaycastVehicle::btVehicleTuning tuning;
+    btRaycastVehicle vehicle(tuning, &chassis, &raycaster);
+    vehicle.setCoordinateSystem(1, 2, 0);
+    bullet.mWorld.addAction(&vehicle);
+    for (int i = 0; i < 4; ++i)
+    {
+        btWheelInfo& wheel = vehicle.addWheel(btVector3(i < 2 ? 1.5f : -1.5f, i % 2 == 0 ? 0.8f : -0.8f, -0.2f), btVector3(0, 0, -1),
+                                              btVector3(0, -1, 0), 0.35f, 0.35f, tuning, i < 2);
+        wheel.m_suspensionStiffness = 30.0f;
+        wheel.m_wheelsDampingRelaxation = 4.0f;
+        wheel.m_wheelsDampingCompression = 3.0f;
+        wheel.m_maxSuspensionForce = 60000.0f;
+    }
+    const BodyId car = adapter->AddBody(chassis).Get();
+    DeformableObjectSettings body;
+    body.mMesh = MakeBoxMesh(Vec3(2.1, 0.9, 0.5), {20, 8, 6});
+    const ObjectId object = damage.CreateDeformableObject(car, body).Get();
+
+    for (int step = 0; step < 180; ++step)
+    {
+        vehicle.applyEngineForce(4000, 2);
+        vehicle.applyEngineForce(4000, 3);
+        bullet.mWorld.stepSimulation(btScalar(1.0 / 60.0), 4, btScalar(1.0 / 240.0));
+    }
+    damage.Flush();
+    CHECK(static_cast<double>(chassis.getLinearVelocity().x()) > 5.0); // it did drive
+    CHECK(damage.GetObject(object)->GetDeformer().GetVertexEvaluationCount() == 0);
+    bullet.mWorld.removeAction(&vehicle);
+    bullet.mWorld.removeRigidBody(&chassis);
+    bullet.mWorld.removeRigidBody(&ground);
 }

@@ -5,6 +5,8 @@
 #include <crumple/plugin/DeformableObject.h>
 #include <crumple/plugin/ReplayFormat.h>
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace crumple::plugin
@@ -21,6 +23,10 @@ struct ReplayedObject
 /// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
 /// then applies each collision to the objects of body A, then of body B, in object id order, exactly as
 /// DamageWorld dispatched them. The deformed meshes are bitwise identical to the live run's.
-Result<std::vector<ReplayedObject>> ReplayDamage(const Replay& inReplay);
+/// @param[in] inAfterCollision called after each collision with its index and the objects (for a frame
+///            sequence); may be empty
+Result<std::vector<ReplayedObject>> ReplayDamage(
+    const Replay& inReplay,
+    const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
 
 } // namespace crumple::plugin
