@@ -8,6 +8,8 @@
 #include <BulletDynamics/Vehicle/btRaycastVehicle.h>
 #include <btBulletDynamicsCommon.h>
 #include <catch2/catch.hpp>
+#include "ScratchDirectory.h"
+
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/ReplayDamage.h>
@@ -253,7 +255,7 @@ TEST_CASE("Bullet: the same crash twice gives bitwise identical meshes", "[bulle
 
 TEST_CASE("Bullet: a recorded crash replays headless to bitwise identical meshes", "[bullet][replay]")
 {
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "crumple-bullet-crash.crumple";
+    const std::filesystem::path path = ScratchDirectory() / "bullet-crash.crumple";
     EngineCrashSettings settings;
     settings.mYawDegrees = 30.0;
     BulletWallCrash crash(settings);

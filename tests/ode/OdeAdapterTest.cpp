@@ -5,6 +5,8 @@
 #include <crumple/ode/OdeAdapter.h>
 
 #include <catch2/catch.hpp>
+#include "ScratchDirectory.h"
+
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/ReplayDamage.h>
@@ -170,7 +172,7 @@ TEST_CASE("ODE: the same crash twice gives bitwise identical meshes", "[ode][det
 
 TEST_CASE("ODE: a recorded crash replays headless to bitwise identical meshes", "[ode][replay]")
 {
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "crumple-ode-crash.crumple";
+    const std::filesystem::path path = ScratchDirectory() / "ode-crash.crumple";
     EngineCrashSettings settings;
     settings.mYawDegrees = 30.0;
     OdeWallCrash crash(settings);

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "ScratchDirectory.h"
 #include "WallCrashScene.h"
 #include "WorldFixture.h"
 
@@ -22,9 +23,7 @@ namespace
 
 std::filesystem::path ScratchFile(const std::string& inName)
 {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "crumple-replay-test";
-    std::filesystem::create_directories(dir);
-    return dir / inName;
+    return ScratchDirectory() / inName;
 }
 
 // A 30-degree wall crash recorded to a file; returns the live car mesh.
