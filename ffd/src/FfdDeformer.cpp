@@ -167,10 +167,12 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
     for (const PointDisplacement& point : inPoints)
     {
         report.mMaxWanted = std::max(report.mMaxWanted, point.mDisplacement.norm());
+        // The first zone that holds the point; only if none does, the first within the capture distance.
         int zone_index = -1;
-        for (std::size_t z = 0; z < mZones.size() && zone_index < 0; ++z)
-            if (mZones[z].Contains(mZones[z].LatticeCoordinate(point.mPoint), mSettings.mCaptureDistance))
-                zone_index = static_cast<int>(z);
+        for (double margin : {1.0e-9, mSettings.mCaptureDistance})
+            for (std::size_t z = 0; z < mZones.size() && zone_index < 0; ++z)
+                if (mZones[z].Contains(mZones[z].LatticeCoordinate(point.mPoint), margin))
+                    zone_index = static_cast<int>(z);
         if (zone_index < 0)
         {
             ++report.mPointsIgnored;

@@ -98,7 +98,9 @@ PointDisplacement Lerp(const PointDisplacement& inA, const PointDisplacement& in
 void SampleSegment(const PointDisplacement& inA, const PointDisplacement& inB, double inLength, double inSpacing,
                    std::vector<PointDisplacement>& ioOut)
 {
-    const int pieces = static_cast<int>(std::ceil(inLength / inSpacing - 1.0e-9));
+    // The caller keeps inLength / inSpacing small (see InterpolateWideImpact); clamp anyway so a count can
+    // never overflow.
+    const int pieces = static_cast<int>(std::min(std::ceil(inLength / inSpacing - 1.0e-9), 1.0e6));
     for (int k = 1; k < pieces; ++k)
         ioOut.push_back(Lerp(inA, inB, static_cast<double>(k) / pieces));
 }
@@ -221,8 +223,11 @@ std::vector<PointDisplacement> InterpolateWideImpact(std::span<const PointDispla
     if (diameter <= inSpacing)
         return {inPoints.begin(), inPoints.end()};
 
-    // Coarsen the pitch until the samples fit the cap.
-    double spacing = inSpacing;
+    // Start at a pitch whose grid over the set's extent fits the cap (the extent bounds the hull's area and
+    // every edge), then coarsen until the samples really fit: the cost never depends on how fine the
+    // lattice or how wide the contact set is.
+    const double cap = static_cast<double>(std::max<std::size_t>(inMaxPoints, 4));
+    double spacing = std::max(inSpacing, diameter / std::sqrt(cap));
     for (int attempt = 0; attempt < 16; ++attempt, spacing *= 1.5)
     {
         std::vector<PointDisplacement> out = Interpolate(inPoints, spacing);

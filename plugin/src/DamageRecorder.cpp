@@ -60,6 +60,7 @@ void DamageRecorder::RecordNewObjects()
         RecordedObject record;
         record.mObject = id;
         record.mBody = mWorld->GetObjectBody(id);
+        record.mFirstCollision = mCollisions;
         record.mSettings.mMesh = object.GetDeformer().GetRestMesh();
         record.mSettings.mMaterial = object.GetMaterial();
         record.mSettings.mDeformer = object.GetDeformer().GetSettings();

@@ -197,8 +197,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
 
 UpdateReport DamageWorld::Update(double inTime)
 {
-    // The idle path: no open collision, no work.
-    if (!mGrouper.HasOpen())
+    // The idle path: no open collision, no work. A non-finite time closes nothing.
+    if (!mGrouper.HasOpen() || !std::isfinite(inTime))
         return {};
     return Dispatch(mGrouper.TakeClosed(inTime));
 }
@@ -214,12 +214,19 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
 {
     UpdateReport report;
     std::vector<ObjectDent> dents;
+    // Listeners may remove themselves (or others) from their callbacks: call the ones registered when the
+    // dispatch began, skipping any removed meanwhile.
+    const std::vector<DamageListener*> listeners = mListeners;
+    auto still_listening = [&](DamageListener* inListener) {
+        return std::find(mListeners.begin(), mListeners.end(), inListener) != mListeners.end();
+    };
     for (const Collision& collision : inCollisions)
     {
         ++report.mCollisionsDispatched;
         dents.clear();
-        for (DamageListener* listener : mListeners)
-            listener->OnBeforeCollision(collision);
+        for (DamageListener* listener : listeners)
+            if (still_listening(listener))
+                listener->OnBeforeCollision(collision);
         // Objects of A, then of B; each body's objects in creation (id) order.
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ObjectId id : mBodies[body.mValue].mObjects)
@@ -230,8 +237,9 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
                     ++report.mObjectsDented;
                 dents.push_back({id, dent});
             }
-        for (DamageListener* listener : mListeners)
-            listener->OnCollision(collision, dents);
+        for (DamageListener* listener : listeners)
+            if (still_listening(listener))
+                listener->OnCollision(collision, dents);
     }
     return report;
 }

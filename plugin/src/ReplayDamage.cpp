@@ -21,7 +21,7 @@ Result<std::vector<ReplayedObject>> ReplayDamage(
         if (Status restored = object.Get().GetDeformer().SetControlDisplacements(record.mInitialControls); !restored)
             return MakeError(restored.GetError().mCode,
                              "object " + std::to_string(record.mObject.mValue) + ": " + restored.GetError().mMessage);
-        objects.push_back({record.mObject, record.mBody, std::move(object).Get()});
+        objects.push_back({record.mObject, record.mBody, record.mFirstCollision, std::move(object).Get()});
     }
     // Dispatch order of the live world: objects in id order, those of A before those of B.
     std::stable_sort(objects.begin(), objects.end(),
@@ -31,7 +31,7 @@ Result<std::vector<ReplayedObject>> ReplayDamage(
         const Collision& collision = inReplay.mCollisions[index];
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ReplayedObject& object : objects)
-                if (object.mBody == body)
+                if (object.mBody == body && index >= object.mFirstCollision)
                     object.mDeformable.ApplyCollision(collision, side);
         if (inAfterCollision)
             inAfterCollision(index, objects);

@@ -45,6 +45,7 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     RecordedObject object;
     object.mObject.mValue = reader.ReadU32();
     object.mBody.mValue = reader.ReadU32();
+    object.mFirstCollision = reader.ReadU64();
     DeformableObjectSettings& settings = object.mSettings;
     settings.mMaterial.mDeformationFactor = reader.ReadDouble();
     settings.mMaterial.mMinDeformation = reader.ReadDouble();
@@ -96,6 +97,18 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "object record: length does not match its contents");
+    // The lattices must be exactly as large as the control state the record carries, so a forged zone size
+    // cannot make the replay allocate more than the file holds.
+    if (object.mInitialControls.size() != deformer.mZones.size())
+        return MakeError(EError::CorruptData, "object record: control state does not match its zones");
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+    {
+        const auto& n = deformer.mZones[z].mLattice.mControlCount;
+        if (n[0] < 4 || n[1] < 4 || n[2] < 4 ||
+            static_cast<std::uint64_t>(n[0]) * static_cast<std::uint64_t>(n[1]) * static_cast<std::uint64_t>(n[2]) !=
+                object.mInitialControls[z].size())
+            return MakeError(EError::CorruptData, "object record: zone " + std::to_string(z) + " size does not match its controls");
+    }
     return object;
 }
 
@@ -126,8 +139,9 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mApproachSpeed = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
-            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0)
-            return MakeError(EError::CorruptData, "collision record: a contact is not finite");
+            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e12 ||
+            std::abs(c.mLocalNormalOnA.norm() - 1.0) > 1.0e-6 || std::abs(c.mLocalNormalOnB.norm() - 1.0) > 1.0e-6)
+            return MakeError(EError::CorruptData, "collision record: a contact is not finite, not unit or out of range");
     }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "collision record: length does not match its contents");
@@ -160,6 +174,7 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     const DeformableObjectSettings& settings = inObject.mSettings;
     writer.WriteU32(inObject.mObject.mValue);
     writer.WriteU32(inObject.mBody.mValue);
+    writer.WriteU64(inObject.mFirstCollision);
     writer.WriteDouble(settings.mMaterial.mDeformationFactor);
     writer.WriteDouble(settings.mMaterial.mMinDeformation);
     writer.WriteDouble(settings.mMaterial.mMaxInstantDeformation);

@@ -79,5 +79,19 @@ TEST_CASE("Interpolation respects its output cap", "[ffd]")
     for (double y : {-5.0, 5.0})
         for (double z : {-5.0, 5.0})
             corners.push_back({Vec3(0.0, y, z), Vec3(-0.1, 0.0, 0.0)});
-    CHECK(InterpolateWideImpact(corners, 0.01, 300).size() <= 300);
+    const std::size_t filled = InterpolateWideImpact(corners, 0.01, 300).size();
+    CHECK(filled <= 300);
+    CHECK(filled > 4); // it did interpolate, at a coarser pitch
+}
+
+TEST_CASE("Interpolation cost does not depend on the spacing or the spread", "[ffd]")
+{
+    // A 1 km contact spread at a 0.4 mm lattice spacing (a thin zone) must return at once, within the cap.
+    std::vector<PointDisplacement> corners;
+    for (double y : {-500.0, 500.0})
+        for (double z : {-0.7, 0.7})
+            corners.push_back({Vec3(2.0, y, z), Vec3(-0.1, 0.0, 0.0)});
+    const std::size_t filled = InterpolateWideImpact(corners, 4.0e-4, 512).size();
+    CHECK(filled <= 512);
+    CHECK(filled > 4);
 }

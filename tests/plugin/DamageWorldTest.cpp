@@ -214,3 +214,36 @@ TEST_CASE("ResetDamage restores the undeformed car", "[plugin]")
     fixture.mWorld.ResetDamage();
     CHECK(SameBytes(car.GetPositions(), car.GetRestMesh().mPositions));
 }
+
+TEST_CASE("A listener may remove itself during dispatch without disturbing the others", "[plugin]")
+{
+    WorldFixture fixture;
+    struct OneShot : DamageListener
+    {
+        void OnCollision(const Collision&, std::span<const ObjectDent>) override
+        {
+            ++mCalls;
+            mWorld->RemoveListener(this);
+        }
+        DamageWorld* mWorld = nullptr;
+        int mCalls = 0;
+    } one_shot;
+    one_shot.mWorld = &fixture.mWorld;
+    RecordingListener first, second;
+    fixture.mWorld.AddListener(&one_shot);
+    fixture.mWorld.AddListener(&first);
+    fixture.mWorld.AddListener(&second);
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    // Two collisions closing in the same update: front and (far away) rear of the car.
+    ContactEvent rear = fixture.FrontContact(0.0, 0.0, 0.0);
+    rear.mPointOnA.x() -= 4.2;
+    rear.mPointOnB.x() -= 4.2;
+    rear.mNormal = Vec3::UnitX();
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(-10.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{rear}));
+    CHECK(fixture.mWorld.Flush().mCollisionsDispatched == 2);
+    CHECK(one_shot.mCalls == 1);
+    CHECK(first.mCollisions.size() == 2);
+    CHECK(second.mCollisions.size() == 2);
+}

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "BoxMesh.h"
 #include "ScratchDirectory.h"
 #include "WallCrashScene.h"
 #include "WorldFixture.h"
@@ -45,10 +46,33 @@ std::vector<Vec3> RecordCrash(const std::filesystem::path& inPath, bool inDentBe
     wall_panel.mMesh.mPositions = {Vec3(0.0, -3.0, -1.0), Vec3(0.0, 3.0, -1.0), Vec3(0.0, 3.0, 2.0), Vec3(0.0, -3.0, 2.0)};
     wall_panel.mMesh.mTriangles = {{0u, 2u, 1u}, {0u, 3u, 2u}};
     REQUIRE(scene.GetWorld().CreateDeformableObject(scene.GetWall(), wall_panel));
-    scene.Run();
+    // A third object, on the car, created after its first collision: replay must not give it that one.
+    while (recorder->GetCollisionCount() == 0 && scene.GetTime() < 1.0)
+        scene.Step();
+    REQUIRE(recorder->GetCollisionCount() >= 1);
+    DeformableObjectSettings bumper;
+    bumper.mMesh = MakeBoxMesh(Vec3(2.0, 0.8, 0.6), {8, 4, 4});
+    REQUIRE(scene.GetWorld().CreateDeformableObject(scene.GetCar(), bumper));
+    // A second hit, on the same front, so the late object is dented too.
+    BodyState again = scene.GetCarState();
+    again.mLinearVelocity = Vec3(8.0, 0.0, 0.0);
+    REQUIRE(scene.GetWorld().SetBodyState(scene.GetCar(), again));
+    ContactEvent hit;
+    hit.mBodyA = scene.GetCar();
+    hit.mBodyB = scene.GetWall();
+    hit.mPointOnA = hit.mPointOnB = again.mTransform.ToWorld(Vec3(2.1, 0.0, 0.0));
+    hit.mNormal = -Vec3::UnitX();
+    hit.mTime = scene.GetTime();
+    REQUIRE(scene.GetWorld().SubmitContacts(std::span(&hit, 1)));
+    scene.GetWorld().Flush();
     REQUIRE(recorder->Close());
-    CHECK(recorder->GetCollisionCount() >= 1);
-    return scene.GetWorld().GetObject(scene.GetCarObject())->GetDeformer().GetPositions();
+    std::vector<Vec3> positions;
+    for (ObjectId id : scene.GetWorld().GetObjectIds())
+    {
+        const std::vector<Vec3>& p = scene.GetWorld().GetObject(id)->GetDeformer().GetPositions();
+        positions.insert(positions.end(), p.begin(), p.end());
+    }
+    return positions;
 }
 
 } // namespace
@@ -63,11 +87,17 @@ TEST_CASE("A recorded run replayed without an engine gives bitwise identical mes
         const std::vector<std::byte> bytes = ReadFileBytes(path).Get();
         Result<Replay> replay = DecodeReplay(bytes);
         REQUIRE(replay);
-        CHECK(replay.Get().mObjects.size() == 2);
+        CHECK(replay.Get().mObjects.size() == 3);
         Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
         REQUIRE(objects);
-        REQUIRE(objects.Get().size() == 2);
-        CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live);
+        REQUIRE(objects.Get().size() == 3);
+        std::vector<Vec3> replayed;
+        for (const ReplayedObject& object : objects.Get())
+        {
+            const std::vector<Vec3>& p = object.mDeformable.GetDeformer().GetPositions();
+            replayed.insert(replayed.end(), p.begin(), p.end());
+        }
+        CHECK(replayed == live); // all three objects, the late one included
     }
 }
 

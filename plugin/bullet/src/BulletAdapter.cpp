@@ -78,7 +78,11 @@ Status BulletAdapter::RemoveBody(const btCollisionObject& inObject)
         return removed;
     mLookup.erase(found);
     std::erase_if(mBodies, [&](const MappedBody& m) { return m.mBody == body; });
-    std::erase_if(mHulls, [&](const FollowingHull& h) { return h.mOwner == &inObject; });
+    // The object may still use its hull as its shape: keep the shape alive (it stops following) until the
+    // adapter goes.
+    for (FollowingHull& hull : mHulls)
+        if (hull.mOwner == &inObject)
+            hull.mOwner = nullptr;
     return Status::Ok();
 }
 
@@ -183,7 +187,7 @@ void BulletAdapter::UpdateHulls()
     for (FollowingHull& hull : mHulls)
     {
         const DeformableObject* object = mDamage.GetObject(hull.mObject);
-        if (object == nullptr)
+        if (object == nullptr || hull.mOwner == nullptr)
             continue;
         const std::vector<Vec3>& positions = object->GetDeformer().GetPositions();
         btVector3* points = hull.mShape->getUnscaledPoints();

@@ -49,9 +49,12 @@ Status OdeAdapter::RemoveBody(dBodyID inBody)
     const auto found = mBodies.find(inBody);
     if (found == mBodies.end())
         return MakeError(EError::OutOfRange, "RemoveBody: this ODE body is not registered");
-    if (Status removed = mDamage.RemoveBody(found->second); !removed)
+    const BodyId body = found->second;
+    if (Status removed = mDamage.RemoveBody(body); !removed)
         return removed;
     mBodies.erase(found);
+    // Contacts buffered this step with the body would make the damage world refuse the whole step.
+    std::erase_if(mEvents, [&](const ContactEvent& e) { return e.mBodyA == body || e.mBodyB == body; });
     return Status::Ok();
 }
 

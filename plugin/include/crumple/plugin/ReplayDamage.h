@@ -17,12 +17,13 @@ struct ReplayedObject
 {
     ObjectId mObject; ///< Its id in the recorded world
     BodyId mBody;     ///< Its body in the recorded world
+    std::uint64_t mFirstCollision = 0; ///< Index of the first recorded collision that can dent it
     DeformableObject mDeformable; ///< Mesh and deformer after the replay
 };
 
 /// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
 /// then applies each collision to the objects of body A, then of body B, in object id order, exactly as
-/// DamageWorld dispatched them. The deformed meshes are bitwise identical to the live run's.
+/// DamageWorld dispatched them; an object created mid-run only takes the collisions recorded after it. The deformed meshes are bitwise identical to the live run's.
 /// @param[in] inAfterCollision called after each collision with its index and the objects (for a frame
 ///            sequence); may be empty
 Result<std::vector<ReplayedObject>> ReplayDamage(

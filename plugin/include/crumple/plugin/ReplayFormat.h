@@ -20,6 +20,7 @@ struct RecordedObject
 {
     ObjectId mObject;                          ///< Its id in the live world
     BodyId mBody;                              ///< The body it is attached to
+    std::uint64_t mFirstCollision = 0;         ///< Collisions recorded before it: only later ones can dent it
     DeformableObjectSettings mSettings;        ///< Mesh, material and the resolved zones (never empty)
     std::vector<std::vector<Vec3>> mInitialControls; ///< Control displacements when recording began (m)
 };
