@@ -1,0 +1,24 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/fem/EElasticModel.h>
+#include <crumple/fem/IsotropicMaterialMatrix.h>
+
+namespace crumple::fem
+{
+
+/// First Piola-Kirchhoff stress P of an element (force per rest area), the derivative of the strain energy
+/// density with respect to F:
+///  - StVenantKirchhoff: P = F C:E, E = GreenStrain(F)
+///  - CorotatedLinear:   P = R C:eps, eps = sym(R^T F) - I, R = PolarRotation(F); with the exact polar R this
+///    equals 2 mu (F - R) + lambda tr(eps) R, the exact gradient of the corotated energy.
+/// @param[in] inModel           strain measure
+/// @param[in] inF               deformation gradient, 3 by 3
+/// @param[in] inRotation        polar rotation of inF (used by CorotatedLinear only), 3 by 3
+/// @param[in] inMaterialMatrix  C (Pa), 6 by 6
+/// @return P (Pa), 3 by 3
+Mat3 FirstPiolaStress(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
+                      const Matrix6& inMaterialMatrix);
+
+} // namespace crumple::fem

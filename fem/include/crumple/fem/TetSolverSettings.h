@@ -1,0 +1,71 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/fem/EIntegrator.h>
+
+namespace crumple::fem
+{
+
+/// Settings of a TetSolver (the material comes separately in FemMaterialSettings). Validated by
+/// TetSolver::Create().
+struct TetSolverSettings
+{
+    /// Time integration; implicit is stable at game steps for any stiffness, symplectic is cheaper per
+    /// sub-step
+    EIntegrator mIntegrator = EIntegrator::ImplicitEuler;
+    Vec3 mGravity = Vec3(0.0, 0.0, -9.81); ///< Acceleration of gravity (m/s^2), world frame, z up
+
+    /// Symplectic Euler: each sub-step is mStabilitySafetyFactor x the proven stable limit of
+    /// StableTimeStep(), in (0, 1]. At 0.5 the stiffest mode has omega dt <= 1, so the paper's explicit-Euler
+    /// instability cannot occur for the corotated model whatever E, rho and the mesh.
+    double mStabilitySafetyFactor = 0.5;
+    /// Symplectic Euler: a Step() that would need more sub-steps than this is refused (nothing changes)
+    /// instead of being run unstably; use a smaller step, a softer material, coarser elements or the implicit
+    /// integrator.
+    int mMaxSubSteps = 10000;
+
+    /// Implicit Euler and SolveStatic(): conjugate gradient stops when |residual| <= tolerance x |right-hand
+    /// side| (Euclidean norms over the free degrees of freedom), in (0, 1).
+    double mCgRelativeTolerance = 1.0e-6;
+    /// Implicit Euler: at most this many conjugate-gradient iterations per linear solve (>= 1); when reached,
+    /// the step is kept (the truncated solution of an SPD system is still a descent step) and
+    /// ETetStepEvent::SolverNotConverged is set.
+    int mCgMaxIterations = 1000;
+    /// Implicit Euler: at most this many Newton iterations (linear solves) per step, >= 1. The first is the
+    /// classic one-solve linearised step; further ones re-evaluate forces and rotations at the new positions,
+    /// which a rotating body needs (one solve stretches it by ~(omega h)^2 / 2 per step). Reaching the limit
+    /// sets ETetStepEvent::SolverNotConverged and keeps the step.
+    int mImplicitMaxIterations = 4;
+    /// Implicit Euler: Newton stops when the energy of the remaining correction, 1/2 r^T A^-1 r with the
+    /// momentum residual r = h f(x0 + h v1) + h f_ext - M (v1 - v0) and A^-1 estimated by the block-Jacobi
+    /// inverse, is below this fraction of the step's kinetic energy scale (max of 1/2 m v^2 before and after,
+    /// plus that of the load's impulse h f_ext). In (0, 1); 1e-3 bounds the energy a rotating stiff body can
+    /// pick up per step to 0.1 %.
+    double mImplicitTolerance = 1.0e-3;
+
+    /// Sleep: when the kinetic energy stays below 1/2 M_free mSleepSpeed^2 (M_free the mass of the free
+    /// nodes, so mSleepSpeed is a root-mean-square speed in m/s) for mSleepStepCount consecutive steps,
+    /// velocities are zeroed and Step() does nothing (no element work) until an input changes: an impulse, a
+    /// force, gravity, a fixed node, new positions or velocities, or WakeUp(). >= 0; 0 never sleeps.
+    double mSleepSpeed = 1.0e-3;
+    int mSleepStepCount = 30; ///< Consecutive quiet steps before sleeping, >= 1
+
+    /// Divergence: a step has diverged when its end state has a NaN or Inf, or when its mechanical energy
+    /// H = kinetic + elastic - sum f_ext . (x - X) (gravity included in f_ext) exceeds the energy H_ref of
+    /// the last input change by more than mDivergenceEnergyRatio x C, C = kinetic + elastic + sum |f_ext . (x
+    /// - X)| of the end state (the energy content). A passive system cannot gain energy without input:
+    /// implicit Euler only loses it, symplectic Euler at the default safety factor fluctuates by well under
+    /// half of C; a real blow-up makes H approach C and is caught. In (0, 1). The state is then restored to
+    /// the start of the step and ETetStepEvent::Diverged reported.
+    double mDivergenceEnergyRatio = 0.5;
+    /// Divergence: a diverged step is retried from its start in 2, 4, ... 2^mMaxStepSplits equal pieces
+    /// (implicit Euler: that many implicit steps; symplectic Euler: that many times the sub-steps, within
+    /// mMaxSubSteps) before it is given up, restored and reported. Fast rotation is what usually needs it:
+    /// implicit Euler extrapolates a rotation along its tangent, which needs omega h below ~0.5 rad.
+    /// In [0, 16].
+    int mMaxStepSplits = 5;
+};
+
+} // namespace crumple::fem

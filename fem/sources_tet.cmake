@@ -1,0 +1,26 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# The tetrahedral half of crumple::fem (paths relative to fem/).
+set(CRUMPLE_FEM_TET_SOURCES
+    src/ConjugateGradient.cpp
+    src/DeformationGradient.cpp
+    src/EdgeMatrix.cpp
+    src/EElasticModel.cpp
+    src/EIntegrator.cpp
+    src/FemMaterial.cpp
+    src/FirstPiolaStress.cpp
+    src/GreenStrain.cpp
+    src/IsotropicMaterialMatrix.cpp
+    src/LumpedNodeMass.cpp
+    src/MaterialStress.cpp
+    src/PolarRotation.cpp
+    src/StableTimeStep.cpp
+    src/StrainEnergyDensity.cpp
+    src/TetElementPass.cpp
+    src/TetElementRest.cpp
+    src/TetGrid.cpp
+    src/TetMesh.cpp
+    src/TetNodalForces.cpp
+    src/TetPreconditioner.cpp
+    src/TetSolver.cpp
+    src/TetVolume.cpp)

@@ -1,0 +1,83 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "ConjugateGradient.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+double Dot(std::span<const Vec3> inA, std::span<const Vec3> inB)
+{
+    double sum = 0.0;
+    for (std::size_t i = 0; i < inA.size(); ++i)
+        sum += inA[i].dot(inB[i]);
+    return sum;
+}
+
+} // namespace
+
+ConjugateGradientResult ConjugateGradient(const LinearOperator3& inOperator,
+                                          const LinearOperator3& inPreconditioner,
+                                          std::span<const Vec3> inRhs, double inTolerance,
+                                          int inMaxIterations, std::span<Vec3> ioSolution)
+{
+    ConjugateGradientResult result;
+    const std::size_t n = inRhs.size();
+
+    // Scale of the right-hand side in the preconditioner's norm.
+    std::vector<Vec3> r(n), z(n), p(n), ap(n);
+    inPreconditioner(inRhs, z);
+    const double rhs_norm = std::sqrt(std::max(Dot(inRhs, z), 0.0));
+    if (!(rhs_norm > 0.0))
+    {
+        // b = 0 (or invisible to P): x = 0 is the solution.
+        for (Vec3& x : ioSolution)
+            x.setZero();
+        result.mConverged = true;
+        return result;
+    }
+
+    // r = b - A x, z = P r, p = z.
+    inOperator(ioSolution, ap);
+    for (std::size_t i = 0; i < n; ++i)
+        r[i] = inRhs[i] - ap[i];
+    inPreconditioner(r, z);
+    p = z;
+    double rz = Dot(r, z);
+    double residual = std::sqrt(std::max(rz, 0.0)) / rhs_norm;
+
+    while (residual > inTolerance && result.mIterations < inMaxIterations)
+    {
+        // Step along p to the minimum of the quadratic.
+        inOperator(p, ap);
+        const double curvature = Dot(p, ap);
+        if (!(curvature > 0.0))
+            break; // A is only semi-definite along p (or non-finite): no further progress possible
+        const double alpha = rz / curvature;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            ioSolution[i] += alpha * p[i];
+            r[i] -= alpha * ap[i];
+        }
+        ++result.mIterations;
+
+        // New conjugate direction.
+        inPreconditioner(r, z);
+        const double rz_new = Dot(r, z);
+        const double beta = rz_new / rz;
+        rz = rz_new;
+        for (std::size_t i = 0; i < n; ++i)
+            p[i] = z[i] + beta * p[i];
+        residual = std::sqrt(std::max(rz, 0.0)) / rhs_norm;
+    }
+    result.mRelativeResidual = residual;
+    result.mConverged = residual <= inTolerance;
+    return result;
+}
+
+} // namespace crumple::fem

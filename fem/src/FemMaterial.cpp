@@ -1,0 +1,79 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/FemMaterial.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+// "FemMaterialSettings.mX = v unit: reason", the message of every refusal.
+Error FieldError(EError inCode, const char* inField, double inValue, const char* inUnit, const char* inReason)
+{
+    std::ostringstream message;
+    message << "FemMaterialSettings." << inField << " = " << inValue << (inUnit[0] != 0 ? " " : "") << inUnit
+            << ": " << inReason;
+    return MakeError(inCode, message.str());
+}
+
+} // namespace
+
+Result<FemMaterial> FemMaterial::Create(const FemMaterialSettings& inSettings)
+{
+    // Every number must be finite before any range check can mean anything.
+    const struct
+    {
+        const char* mName;
+        double mValue;
+        const char* mUnit;
+    } fields[] = {{"mYoungsModulus", inSettings.mYoungsModulus, "Pa"},
+                  {"mPoissonRatio", inSettings.mPoissonRatio, ""},
+                  {"mDensity", inSettings.mDensity, "kg/m^3"},
+                  {"mMassDamping", inSettings.mMassDamping, "1/s"},
+                  {"mStiffnessDamping", inSettings.mStiffnessDamping, "s"}};
+    for (const auto& field : fields)
+        if (!std::isfinite(field.mValue))
+            return FieldError(EError::NonFinite, field.mName, field.mValue, field.mUnit, "must be finite");
+
+    // Physical ranges.
+    if (!(inSettings.mYoungsModulus > 0.0))
+        return FieldError(EError::InvalidArgument, "mYoungsModulus", inSettings.mYoungsModulus, "Pa",
+                          "must be > 0");
+    if (!(inSettings.mPoissonRatio > -1.0 &&
+          inSettings.mPoissonRatio <= FemMaterialSettings::cMaxPoissonRatio))
+        return FieldError(EError::InvalidArgument, "mPoissonRatio", inSettings.mPoissonRatio, "",
+                          "must lie in (-1, 0.495]; 0.5 (incompressible) makes lambda infinite");
+    if (!(inSettings.mDensity > 0.0))
+        return FieldError(EError::InvalidArgument, "mDensity", inSettings.mDensity, "kg/m^3", "must be > 0");
+    if (!(inSettings.mMassDamping >= 0.0))
+        return FieldError(EError::InvalidArgument, "mMassDamping", inSettings.mMassDamping, "1/s",
+                          "must be >= 0 (negative damping adds energy)");
+    if (!(inSettings.mStiffnessDamping >= 0.0))
+        return FieldError(EError::InvalidArgument, "mStiffnessDamping", inSettings.mStiffnessDamping, "s",
+                          "must be >= 0 (negative damping adds energy)");
+    if (inSettings.mModel != EElasticModel::StVenantKirchhoff &&
+        inSettings.mModel != EElasticModel::CorotatedLinear)
+        return FieldError(EError::InvalidArgument, "mModel", static_cast<double>(inSettings.mModel), "",
+                          "is not an EElasticModel");
+    return FemMaterial(inSettings);
+}
+
+FemMaterial::FemMaterial(const FemMaterialSettings& inSettings)
+    : mSettings(inSettings),
+      mMaterialMatrix(IsotropicMaterialMatrix(inSettings.mYoungsModulus, inSettings.mPoissonRatio)),
+      mLambda(inSettings.mYoungsModulus * inSettings.mPoissonRatio /
+              ((1.0 + inSettings.mPoissonRatio) * (1.0 - 2.0 * inSettings.mPoissonRatio))),
+      mShearModulus(inSettings.mYoungsModulus / (2.0 * (1.0 + inSettings.mPoissonRatio)))
+{
+}
+
+double FemMaterial::GetWaveSpeed() const
+{
+    return std::sqrt((mLambda + 2.0 * mShearModulus) / mSettings.mDensity);
+}
+
+} // namespace crumple::fem

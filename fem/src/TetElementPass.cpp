@@ -1,0 +1,175 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "TetElementPass.h"
+
+#include <crumple/fem/DeformationGradient.h>
+#include <crumple/fem/FirstPiolaStress.h>
+#include <crumple/fem/GreenStrain.h>
+#include <crumple/fem/MaterialStress.h>
+#include <crumple/fem/PolarRotation.h>
+#include <crumple/fem/StrainEnergyDensity.h>
+#include <crumple/fem/TetNodalForces.h>
+
+#include <Eigen/Eigenvalues>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+// Scatter the four corner forces of an element (element order, so sums are deterministic).
+void AddCornerForces(const TetIndices& inNodes, const std::array<Vec3, 4>& inForces, std::span<Vec3> ioForces)
+{
+    for (int corner = 0; corner < 4; ++corner)
+        ioForces[inNodes[corner]] += inForces[corner];
+}
+
+// dP of the linearisation applied to dF.
+Mat3 LinearizedStress(const TetLinearization& inLinearization, const Matrix6& inMaterialMatrix,
+                      const Mat3& inDeltaF)
+{
+    const Mat3& frame = inLinearization.mFrame;
+    const Mat3 local = frame.transpose() * inDeltaF;
+    const Mat3 strain = 0.5 * (local + local.transpose());
+    return frame * MaterialStress(inMaterialMatrix, strain) + inDeltaF * inLinearization.mStress;
+}
+
+// The positive semi-definite part of a symmetric matrix (negative eigenvalues set to zero).
+Mat3 PositivePart(const Mat3& inSymmetric)
+{
+    Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+    eigen.computeDirect(inSymmetric);
+    const Vec3 clamped = eigen.eigenvalues().cwiseMax(0.0);
+    return eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+} // namespace
+
+void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                      std::span<const Vec3> inVelocities, double inStiffnessDamping,
+                      std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
+                      std::span<Vec3> outForces)
+{
+    for (Vec3& force : outForces)
+        force.setZero();
+    const Matrix6& c = *inInput.mMaterialMatrix;
+    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    const bool viscous = !inVelocities.empty() && inStiffnessDamping > 0.0;
+
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        // Deformation gradient and, for the corotated model, its rotation.
+        const TetIndices& n = inInput.mTets[tet];
+        const TetElementRest& rest = inInput.mRest[tet];
+        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
+                                           inPositions[n[3]], rest.mRestEdgeInverse);
+        Mat3 r = Mat3::Identity();
+        if (corotated)
+        {
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
+            r = ioRotations[tet].toRotationMatrix();
+        }
+
+        // Elastic stress, plus the viscous stress beta C:strain_rate in the same frame.
+        Mat3 p = FirstPiolaStress(inInput.mModel, f, r, c);
+        if (viscous)
+        {
+            const Mat3 f_dot = DeformationGradient(inVelocities[n[0]], inVelocities[n[1]], inVelocities[n[2]],
+                                                   inVelocities[n[3]], rest.mRestEdgeInverse);
+            const Mat3& frame = corotated ? r : f;
+            const Mat3 local = frame.transpose() * f_dot;
+            p += frame * (inStiffnessDamping * MaterialStress(c, 0.5 * (local + local.transpose())));
+        }
+        AddCornerForces(n, TetNodalForces(p, rest.mRestEdgeInverse, rest.mRestVolume), outForces);
+
+        // Linearisation around this state for the implicit solve.
+        if (!outLinearization.empty())
+        {
+            TetLinearization& lin = outLinearization[tet];
+            if (corotated)
+            {
+                lin.mFrame = r;
+                lin.mStress.setZero();
+            }
+            else
+            {
+                lin.mFrame = f;
+                lin.mStress = PositivePart(MaterialStress(c, GreenStrain(f)));
+            }
+        }
+    }
+}
+
+void TetStiffnessProduct(const TetElementPassInput& inInput,
+                         std::span<const TetLinearization> inLinearization, std::span<const Vec3> inDirection,
+                         std::span<Vec3> outProduct)
+{
+    for (Vec3& product : outProduct)
+        product.setZero();
+    const Matrix6& c = *inInput.mMaterialMatrix;
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        // K d = -df: the nodal forces of the linearised stress change, negated.
+        const TetIndices& n = inInput.mTets[tet];
+        const TetElementRest& rest = inInput.mRest[tet];
+        const Mat3 delta_f = DeformationGradient(inDirection[n[0]], inDirection[n[1]], inDirection[n[2]],
+                                                 inDirection[n[3]], rest.mRestEdgeInverse);
+        const Mat3 delta_p = LinearizedStress(inLinearization[tet], c, delta_f);
+        AddCornerForces(n, TetNodalForces(-delta_p, rest.mRestEdgeInverse, rest.mRestVolume), outProduct);
+    }
+}
+
+void TetStiffnessDiagonal(const TetElementPassInput& inInput,
+                          std::span<const TetLinearization> inLinearization, std::span<Mat3> outBlocks)
+{
+    for (Mat3& block : outBlocks)
+        block.setZero();
+    const Matrix6& c = *inInput.mMaterialMatrix;
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        // Shape-function gradients g_a: rows of D_m^-1 for corners 1..3, minus their sum for corner 0.
+        const TetIndices& n = inInput.mTets[tet];
+        const TetElementRest& rest = inInput.mRest[tet];
+        const Mat3& dm_inverse = rest.mRestEdgeInverse;
+        std::array<Vec3, 4> g;
+        g[1] = dm_inverse.row(0).transpose();
+        g[2] = dm_inverse.row(1).transpose();
+        g[3] = dm_inverse.row(2).transpose();
+        g[0] = -(g[1] + g[2] + g[3]);
+
+        // Column j of K_aa: move corner a along e_j (dF = e_j g_a^T), force on a is -V0 dP g_a.
+        for (int corner = 0; corner < 4; ++corner)
+            for (int axis = 0; axis < 3; ++axis)
+            {
+                const Mat3 delta_f = Vec3::Unit(axis) * g[corner].transpose();
+                const Mat3 delta_p = LinearizedStress(inLinearization[tet], c, delta_f);
+                outBlocks[n[corner]].col(axis) += rest.mRestVolume * (delta_p * g[corner]);
+            }
+    }
+}
+
+double TetElasticEnergy(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                        std::span<Quat> ioRotations)
+{
+    const Matrix6& c = *inInput.mMaterialMatrix;
+    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    double energy = 0.0;
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        const TetIndices& n = inInput.mTets[tet];
+        const TetElementRest& rest = inInput.mRest[tet];
+        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
+                                           inPositions[n[3]], rest.mRestEdgeInverse);
+        Mat3 r = Mat3::Identity();
+        if (corotated)
+        {
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
+            r = ioRotations[tet].toRotationMatrix();
+        }
+        energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c);
+    }
+    return energy;
+}
+
+} // namespace crumple::fem

@@ -1,0 +1,59 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/fem/EElasticModel.h>
+#include <crumple/fem/IsotropicMaterialMatrix.h>
+#include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetLinearization.h>
+
+#include <span>
+
+namespace crumple::fem
+{
+
+/// What every element pass reads: connectivity, rest data and material (private to the solvers).
+struct TetElementPassInput
+{
+    std::span<const TetIndices> mTets;        ///< #T element -> node indices
+    std::span<const TetElementRest> mRest;    ///< #T rest data
+    const Matrix6* mMaterialMatrix = nullptr; ///< C (Pa)
+    EElasticModel mModel = EElasticModel::CorotatedLinear;
+};
+
+/// Elastic forces plus, when inVelocities is not empty and inStiffnessDamping > 0, the Kelvin-Voigt viscous
+/// forces of stress inStiffnessDamping C:strain_rate. Updates the corotated frames (warm-started polar
+/// decompositions) and, when outLinearization is not empty, the per-element linearisation for
+/// StiffnessProduct. Serial, element order.
+/// @param[in]  inPositions        #N (m)
+/// @param[in]  inVelocities       #N (m/s) or empty
+/// @param[in]  inStiffnessDamping beta (s)
+/// @param[in,out] ioRotations     #T element rotations (unit quaternions; untouched by St. Venant-Kirchhoff)
+/// @param[out] outLinearization   #T or empty
+/// @param[out] outForces          #N (N), overwritten
+void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                      std::span<const Vec3> inVelocities, double inStiffnessDamping,
+                      std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
+                      std::span<Vec3> outForces);
+
+/// Product of the linearised stiffness K (= -df/dx) with a direction: outProduct = K inDirection.
+/// @param[in]  inLinearization  #T from TetElasticForces
+/// @param[in]  inDirection      #N (m or m/s)
+/// @param[out] outProduct       #N (N or N/s), overwritten
+void TetStiffnessProduct(const TetElementPassInput& inInput,
+                         std::span<const TetLinearization> inLinearization, std::span<const Vec3> inDirection,
+                         std::span<Vec3> outProduct);
+
+/// The 3x3 diagonal blocks K_aa of the linearised stiffness (N/m), for block-Jacobi preconditioning.
+/// @param[out] outBlocks  #N, overwritten
+void TetStiffnessDiagonal(const TetElementPassInput& inInput,
+                          std::span<const TetLinearization> inLinearization, std::span<Mat3> outBlocks);
+
+/// Elastic energy sum V0 psi(F) (J); updates the corotated frames (warm-started) when ioRotations is
+/// writable.
+/// @param[in]     inPositions  #N (m)
+/// @param[in,out] ioRotations  #T element rotations (unit quaternions; untouched by St. Venant-Kirchhoff)
+double TetElasticEnergy(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                        std::span<Quat> ioRotations);
+
+} // namespace crumple::fem

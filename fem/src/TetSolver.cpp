@@ -1,0 +1,664 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/LumpedNodeMass.h>
+#include <crumple/fem/StableTimeStep.h>
+#include <crumple/fem/TetSolver.h>
+
+#include "ConjugateGradient.h"
+#include "TetElementPass.h"
+#include "TetPreconditioner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+// "TetSolverSettings.mX = v: reason", the message of every refused setting.
+Error SettingError(const char* inField, double inValue, const char* inReason)
+{
+    std::ostringstream message;
+    message << "TetSolverSettings." << inField << " = " << inValue << ": " << inReason;
+    return MakeError(std::isfinite(inValue) ? EError::InvalidArgument : EError::NonFinite, message.str());
+}
+
+Status ValidateSettings(const TetSolverSettings& inSettings)
+{
+    if (inSettings.mIntegrator != EIntegrator::SymplecticEuler &&
+        inSettings.mIntegrator != EIntegrator::ImplicitEuler)
+        return SettingError("mIntegrator", static_cast<double>(inSettings.mIntegrator),
+                            "is not an EIntegrator");
+    if (!IsFinite(inSettings.mGravity))
+        return MakeError(EError::NonFinite, "TetSolverSettings.mGravity must be finite");
+    if (!(inSettings.mStabilitySafetyFactor > 0.0 && inSettings.mStabilitySafetyFactor <= 1.0))
+        return SettingError("mStabilitySafetyFactor", inSettings.mStabilitySafetyFactor,
+                            "must lie in (0, 1]; above 1 symplectic Euler is not proven stable");
+    if (inSettings.mMaxSubSteps < 1)
+        return SettingError("mMaxSubSteps", inSettings.mMaxSubSteps, "must be >= 1");
+    if (!(inSettings.mCgRelativeTolerance > 0.0 && inSettings.mCgRelativeTolerance < 1.0))
+        return SettingError("mCgRelativeTolerance", inSettings.mCgRelativeTolerance, "must lie in (0, 1)");
+    if (inSettings.mCgMaxIterations < 1)
+        return SettingError("mCgMaxIterations", inSettings.mCgMaxIterations, "must be >= 1");
+    if (inSettings.mImplicitMaxIterations < 1)
+        return SettingError("mImplicitMaxIterations", inSettings.mImplicitMaxIterations, "must be >= 1");
+    if (!(inSettings.mImplicitTolerance > 0.0 && inSettings.mImplicitTolerance < 1.0))
+        return SettingError("mImplicitTolerance", inSettings.mImplicitTolerance, "must lie in (0, 1)");
+    if (!(inSettings.mSleepSpeed >= 0.0) || !std::isfinite(inSettings.mSleepSpeed))
+        return SettingError("mSleepSpeed", inSettings.mSleepSpeed, "must be finite and >= 0 m/s");
+    if (inSettings.mSleepStepCount < 1)
+        return SettingError("mSleepStepCount", inSettings.mSleepStepCount, "must be >= 1");
+    if (inSettings.mMaxStepSplits < 0 || inSettings.mMaxStepSplits > 16)
+        return SettingError("mMaxStepSplits", inSettings.mMaxStepSplits, "must lie in [0, 16]");
+    if (!(inSettings.mDivergenceEnergyRatio > 0.0 && inSettings.mDivergenceEnergyRatio < 1.0))
+        return SettingError("mDivergenceEnergyRatio", inSettings.mDivergenceEnergyRatio,
+                            "must lie in (0, 1); at 1 or more a blow-up is never detected");
+    return Status::Ok();
+}
+
+Status CheckNode(int inNode, int inNodeCount, const char* inCaller)
+{
+    if (inNode < 0 || inNode >= inNodeCount)
+        return MakeError(EError::OutOfRange, std::string("TetSolver::") + inCaller + ": node " +
+                                                 std::to_string(inNode) + " is outside [0, " +
+                                                 std::to_string(inNodeCount) + ")");
+    return Status::Ok();
+}
+
+bool AllFinite(std::span<const Vec3> inValues)
+{
+    for (const Vec3& value : inValues)
+        if (!IsFinite(value))
+            return false;
+    return true;
+}
+
+// Smallest energy content the divergence test compares against (J): keeps a body exactly at rest from
+// flagging round-off.
+constexpr double cEnergyFloor = 1.0e-12;
+
+} // namespace
+
+Result<TetSolver> TetSolver::Create(const TetMesh& inMesh, const FemMaterialSettings& inMaterial,
+                                    const TetSolverSettings& inSettings)
+{
+    Result<FemMaterial> material = FemMaterial::Create(inMaterial);
+    if (material.HasError())
+        return material.GetError();
+    if (Status status = ValidateSettings(inSettings); status.HasError())
+        return status.GetError();
+    return TetSolver(inMesh, material.Get(), inSettings);
+}
+
+TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
+                     const TetSolverSettings& inSettings)
+    : mMesh(inMesh), mMaterial(inMaterial), mSettings(inSettings)
+{
+    // Per-element rest data and per-node lumped masses.
+    mRest = TetRestData(mMesh);
+    mMasses = LumpedNodeMass(mMesh, mMaterial.GetSettings().mDensity);
+    mInverseMasses.resize(mMasses.size());
+    mFree.assign(mMasses.size(), 1);
+    for (std::size_t node = 0; node < mMasses.size(); ++node)
+    {
+        mInverseMasses[node] = 1.0 / mMasses[node];
+        mFreeMass += mMasses[node];
+    }
+
+    // State at rest.
+    mPositions = mMesh.GetRestPositions();
+    mVelocities.assign(mPositions.size(), Vec3::Zero());
+    mExternalForces.assign(mPositions.size(), Vec3::Zero());
+    mRotations.assign(mRest.size(), Quat::Identity());
+    mStableTimeStep = StableTimeStep(mRest, mMaterial, mSettings.mStabilitySafetyFactor);
+    mForces.resize(mPositions.size());
+    mLinearization.resize(mRest.size());
+}
+
+void TetSolver::InputChanged()
+{
+    mSleeping = false;
+    mQuietSteps = 0;
+    mReferenceValid = false;
+}
+
+Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
+{
+    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "SetNodeFixed"); status.HasError())
+        return status;
+    const bool was_fixed = mInverseMasses[inNode] == 0.0;
+    if (was_fixed != inFixed)
+        mFreeMass += inFixed ? -mMasses[inNode] : mMasses[inNode];
+    mInverseMasses[inNode] = inFixed ? 0.0 : 1.0 / mMasses[inNode];
+    mFree[inNode] = inFixed ? 0 : 1;
+    if (inFixed)
+        mVelocities[inNode].setZero();
+    InputChanged();
+    return Status::Ok();
+}
+
+Status TetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
+{
+    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "ApplyImpulse"); status.HasError())
+        return status;
+    if (!IsFinite(inImpulse))
+        return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: impulse on node " +
+                                                std::to_string(inNode) + " must be finite");
+    mVelocities[inNode] += mInverseMasses[inNode] * inImpulse;
+    InputChanged();
+    return Status::Ok();
+}
+
+Status TetSolver::SetExternalForce(int inNode, const Vec3& inForce)
+{
+    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "SetExternalForce"); status.HasError())
+        return status;
+    if (!IsFinite(inForce))
+        return MakeError(EError::NonFinite, "TetSolver::SetExternalForce: force on node " +
+                                                std::to_string(inNode) + " must be finite");
+    mExternalForces[inNode] = inForce;
+    InputChanged();
+    return Status::Ok();
+}
+
+void TetSolver::ClearExternalForces()
+{
+    for (Vec3& force : mExternalForces)
+        force.setZero();
+    InputChanged();
+}
+
+Status TetSolver::SetGravity(const Vec3& inGravity)
+{
+    if (!IsFinite(inGravity))
+        return MakeError(EError::NonFinite, "TetSolver::SetGravity: gravity must be finite");
+    mSettings.mGravity = inGravity;
+    InputChanged();
+    return Status::Ok();
+}
+
+Status TetSolver::SetPositions(std::span<const Vec3> inPositions)
+{
+    if (inPositions.size() != mPositions.size())
+        return MakeError(EError::InvalidArgument,
+                         "TetSolver::SetPositions: " + std::to_string(inPositions.size()) +
+                             " positions for " + std::to_string(mPositions.size()) + " nodes");
+    if (!AllFinite(inPositions))
+        return MakeError(EError::NonFinite, "TetSolver::SetPositions: positions must be finite");
+    std::copy(inPositions.begin(), inPositions.end(), mPositions.begin());
+    InputChanged();
+    return Status::Ok();
+}
+
+Status TetSolver::SetVelocities(std::span<const Vec3> inVelocities)
+{
+    if (inVelocities.size() != mVelocities.size())
+        return MakeError(EError::InvalidArgument,
+                         "TetSolver::SetVelocities: " + std::to_string(inVelocities.size()) +
+                             " velocities for " + std::to_string(mVelocities.size()) + " nodes");
+    if (!AllFinite(inVelocities))
+        return MakeError(EError::NonFinite, "TetSolver::SetVelocities: velocities must be finite");
+    for (std::size_t node = 0; node < mVelocities.size(); ++node)
+        mVelocities[node] = mInverseMasses[node] > 0.0 ? inVelocities[node] : Vec3::Zero();
+    InputChanged();
+    return Status::Ok();
+}
+
+void TetSolver::WakeUp()
+{
+    mSleeping = false;
+    mQuietSteps = 0;
+}
+
+void TetSolver::LoadForces(std::vector<Vec3>& outForces) const
+{
+    outForces.resize(mPositions.size());
+    for (std::size_t node = 0; node < mPositions.size(); ++node)
+        outForces[node] = mInverseMasses[node] > 0.0
+                              ? Vec3(mExternalForces[node] + mMasses[node] * mSettings.mGravity)
+                              : Vec3::Zero();
+}
+
+void TetSolver::ElasticForces(std::vector<Vec3>& outForces) const
+{
+    outForces.resize(mPositions.size());
+    std::vector<Quat> rotations = mRotations;
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
+                                    mMaterial.GetSettings().mModel};
+    TetElasticForces(input, mPositions, {}, 0.0, rotations, {}, outForces);
+}
+
+double TetSolver::KineticEnergy() const
+{
+    double energy = 0.0;
+    for (std::size_t node = 0; node < mVelocities.size(); ++node)
+        energy += 0.5 * mMasses[node] * mVelocities[node].squaredNorm();
+    return energy;
+}
+
+double TetSolver::ElasticEnergy() const
+{
+    std::vector<Quat> rotations = mRotations;
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
+                                    mMaterial.GetSettings().mModel};
+    return TetElasticEnergy(input, mPositions, rotations);
+}
+
+double TetSolver::ExternalPotentialEnergy() const
+{
+    double energy = 0.0;
+    const std::vector<Vec3>& rest = mMesh.GetRestPositions();
+    for (std::size_t node = 0; node < mPositions.size(); ++node)
+        if (mInverseMasses[node] > 0.0)
+            energy -= (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
+                          .dot(mPositions[node] - rest[node]);
+    return energy;
+}
+
+TetSolver::EnergyParts TetSolver::MeasureEnergy()
+{
+    EnergyParts parts;
+    parts.mKinetic = KineticEnergy();
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
+                                    mMaterial.GetSettings().mModel};
+    parts.mElastic = TetElasticEnergy(input, mPositions, mRotations);
+    mElementWork += mRest.size();
+    const std::vector<Vec3>& rest = mMesh.GetRestPositions();
+    for (std::size_t node = 0; node < mPositions.size(); ++node)
+        if (mInverseMasses[node] > 0.0)
+        {
+            const double work = (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
+                                    .dot(mPositions[node] - rest[node]);
+            parts.mPotential -= work;
+            parts.mPotentialMagnitude += std::abs(work);
+        }
+    return parts;
+}
+
+void TetSolver::StepSymplectic(double inDeltaTime, int inSubSteps)
+{
+    const double dt = inDeltaTime / inSubSteps;
+    const FemMaterialSettings& material = mMaterial.GetSettings();
+    const double damping_scale = 1.0 / (1.0 + material.mMassDamping * dt);
+    const bool viscous = material.mStiffnessDamping > 0.0;
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
+    for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
+    {
+        // Element pass: elastic (+ viscous) forces at the current state.
+        TetElasticForces(input, mPositions,
+                         viscous ? std::span<const Vec3>(mVelocities) : std::span<const Vec3>(),
+                         material.mStiffnessDamping, mRotations, {}, mForces);
+        mElementWork += mRest.size();
+
+        // Node pass (the paper's order): v += dt a, mass damping applied implicitly, x += dt v.
+        for (std::size_t node = 0; node < mPositions.size(); ++node)
+        {
+            const double inverse_mass = mInverseMasses[node];
+            if (inverse_mass == 0.0)
+                continue;
+            const Vec3 acceleration =
+                inverse_mass * (mForces[node] + mExternalForces[node]) + mSettings.mGravity;
+            mVelocities[node] = (mVelocities[node] + dt * acceleration) * damping_scale;
+            mPositions[node] += dt * mVelocities[node];
+        }
+    }
+}
+
+// Backward Euler with Rayleigh damping C_d = alpha M + beta K: find v1 with
+//   r(v1) = h (f(x0 + h v1) + f_ext - alpha M v1 - beta K v1) - M (v1 - v0) = 0.
+// Newton on v1 with the Jacobian -A, A = (1 + h alpha) M + (h^2 + h beta) K(x), K the linearised stiffness at
+// the current iterate (R K0 R^T for the corotated model). The first iteration linearises at x0, which is the
+// classic one-solve step of Baraff & Witkin 1998: A dv = h (f(x0) + f_ext - alpha M v0 - (h + beta) K v0).
+// One solve misses the second-order stretch of a rotation extrapolated along its tangent (x0 + h v): a body
+// spinning at w gets a strain of about (w h)^2 / 2 per step, and for stiff materials that elastic energy
+// dwarfs the kinetic one, so the step is iterated (re-evaluating forces and rotations at x0 + h v1) until the
+// energy of the remaining correction, 1/2 r^T A^-1 r, is below mImplicitTolerance of the step's kinetic
+// energy scale. For the stretch delta of a rotating element, r = h k delta and A ~ h^2 k, so that energy is
+// the spurious elastic energy k delta^2 / 2 itself.
+void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
+{
+    const double h = inDeltaTime;
+    const FemMaterialSettings& material = mMaterial.GetSettings();
+    const double mass_scale = 1.0 + h * material.mMassDamping;
+    const double stiffness_scale = h * h + h * material.mStiffnessDamping;
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
+    const std::size_t node_count = mPositions.size();
+    mStartPositions = mPositions;
+    mStartVelocities = mVelocities;
+    const std::vector<Vec3>& x0 = mStartPositions;
+    const std::vector<Vec3>& v0 = mStartVelocities;
+    std::vector<Vec3> k_v(node_count), residual(node_count), delta_v(node_count), preconditioned(node_count);
+    std::vector<Mat3> blocks(node_count);
+    std::uint64_t products = 0;
+    TetPreconditioner preconditioner;
+
+    // Matrix-free system operator A, masked to the free nodes.
+    const LinearOperator3 system = [&](std::span<const Vec3> inX, std::span<Vec3> outY)
+    {
+        TetStiffnessProduct(input, mLinearization, inX, outY);
+        ++products;
+        for (std::size_t node = 0; node < node_count; ++node)
+            outY[node] = mFree[node] != 0
+                             ? Vec3(mass_scale * mMasses[node] * inX[node] + stiffness_scale * outY[node])
+                             : Vec3::Zero();
+    };
+
+    // Energy scale of the step (J): kinetic energy at the start, relative to the free centre of mass when
+    // nothing is anchored (a translation must not loosen the test), plus that of the load's impulse over the
+    // step.
+    double load_energy = 0.0, start_energy = 0.0, free_mass = 0.0;
+    Vec3 momentum = Vec3::Zero();
+    bool anchored = false;
+    for (std::size_t node = 0; node < node_count; ++node)
+    {
+        if (mFree[node] == 0)
+        {
+            anchored = true;
+            continue;
+        }
+        const double m = mMasses[node];
+        free_mass += m;
+        momentum += m * v0[node];
+        start_energy += 0.5 * m * v0[node].squaredNorm();
+        load_energy +=
+            0.5 * m * (h * (mInverseMasses[node] * mExternalForces[node] + mSettings.mGravity)).squaredNorm();
+    }
+    if (!anchored && free_mass > 0.0)
+        start_energy = std::max(0.0, start_energy - 0.5 * momentum.squaredNorm() / free_mass);
+    const double energy_scale = start_energy + load_energy + cEnergyFloor;
+
+    bool converged = false;
+    for (int iteration = 0; iteration <= mSettings.mImplicitMaxIterations; ++iteration)
+    {
+        // Forces and linearisation at the current iterate (x0 itself on the first pass).
+        TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces);
+        mElementWork += mRest.size();
+        const bool first = iteration == 0;
+        if (first || material.mStiffnessDamping > 0.0)
+        {
+            TetStiffnessProduct(input, mLinearization, mVelocities, k_v);
+            mElementWork += mRest.size();
+        }
+
+        // Residual r(v) on the free nodes; on the first pass linearised at x0 (the extra -h K v0 term).
+        for (std::size_t node = 0; node < node_count; ++node)
+        {
+            if (mFree[node] == 0)
+            {
+                residual[node].setZero();
+                continue;
+            }
+            const double m = mMasses[node];
+            residual[node] = h * (mForces[node] + mExternalForces[node] + m * mSettings.mGravity -
+                                  material.mMassDamping * m * mVelocities[node] -
+                                  ((first ? h : 0.0) + material.mStiffnessDamping) * k_v[node]) -
+                             m * (mVelocities[node] - v0[node]);
+        }
+
+        // Converged when the energy of the remaining Newton correction, 1/2 r^T A^-1 r (A^-1 estimated by the
+        // previous iteration's preconditioner), is a small fraction of the step's energy scale.
+        if (!first)
+        {
+            preconditioner.Apply(residual, preconditioned);
+            double residual_energy = 0.0;
+            for (std::size_t node = 0; node < node_count; ++node)
+                residual_energy += 0.5 * residual[node].dot(preconditioned[node]);
+            if (residual_energy <= mSettings.mImplicitTolerance * energy_scale)
+            {
+                converged = true;
+                break;
+            }
+        }
+        if (iteration == mSettings.mImplicitMaxIterations)
+            break;
+
+        // Preconditioner of A at this linearisation: its diagonal blocks plus the rigid coarse space.
+        TetStiffnessDiagonal(input, mLinearization, blocks);
+        mElementWork += mRest.size();
+        for (std::size_t node = 0; node < node_count; ++node)
+            blocks[node] = mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * blocks[node];
+        preconditioner.Build(system, blocks, mPositions, mFree);
+
+        // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes.
+        std::fill(delta_v.begin(), delta_v.end(), Vec3::Zero());
+        const ConjugateGradientResult cg =
+            ConjugateGradient(system, preconditioner.AsOperator(), residual, mSettings.mCgRelativeTolerance,
+                              mSettings.mCgMaxIterations, delta_v);
+        ioResult.mSolverIterations += cg.mIterations;
+        ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, cg.mRelativeResidual);
+        if (!cg.mConverged)
+            ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
+        for (std::size_t node = 0; node < node_count; ++node)
+            if (mFree[node] != 0)
+            {
+                mVelocities[node] += delta_v[node];
+                mPositions[node] = x0[node] + h * mVelocities[node];
+            }
+        ++ioResult.mNewtonIterations;
+    }
+    mElementWork += products * mRest.size();
+    if (!converged)
+        ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
+}
+
+Result<TetStepResult> TetSolver::Step(double inDeltaTime)
+{
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+    {
+        std::ostringstream message;
+        message << "TetSolver::Step: time step " << inDeltaTime << " s must be finite and > 0";
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
+                         message.str());
+    }
+
+    // Explicit sub-step count, refused before anything changes.
+    int sub_steps = 1;
+    if (mSettings.mIntegrator == EIntegrator::SymplecticEuler)
+    {
+        const double count = std::ceil(inDeltaTime / mStableTimeStep);
+        if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
+        {
+            std::ostringstream message;
+            message
+                << "TetSolver::Step: " << inDeltaTime << " s needs " << count
+                << " symplectic sub-steps of at most " << mStableTimeStep
+                << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps
+                << "; use a smaller step, a softer material, coarser elements or EIntegrator::ImplicitEuler";
+            return MakeError(EError::InvalidArgument, message.str());
+        }
+        sub_steps = std::max(1, static_cast<int>(count));
+    }
+
+    TetStepResult result;
+    if (mSleeping)
+    {
+        result.mEvents = ETetStepEvent::Sleeping;
+        return result;
+    }
+
+    // Energy reference after the last input change, and a copy of the state to restore on divergence.
+    if (!mReferenceValid)
+    {
+        const EnergyParts parts = MeasureEnergy();
+        mReferenceEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
+        mReferenceValid = true;
+    }
+    mSavedPositions = mPositions;
+    mSavedVelocities = mVelocities;
+    mSavedRotations = mRotations;
+
+    // Integrate; on divergence retry from the saved state with the step split into 2, 4, ... parts.
+    bool diverged = true;
+    EnergyParts parts;
+    for (int split = 0; split <= mSettings.mMaxStepSplits && diverged; ++split)
+    {
+        const int pieces = 1 << split;
+        const bool symplectic = mSettings.mIntegrator == EIntegrator::SymplecticEuler;
+        if (symplectic && static_cast<long long>(sub_steps) * pieces > mSettings.mMaxSubSteps)
+            break; // no retry within the sub-step budget
+        if (split > 0)
+        {
+            result.mEvents = result.mEvents | ETetStepEvent::Split;
+            mPositions = mSavedPositions;
+            mVelocities = mSavedVelocities;
+            mRotations = mSavedRotations;
+        }
+        if (symplectic)
+        {
+            result.mSubSteps = sub_steps * pieces;
+            StepSymplectic(inDeltaTime, result.mSubSteps);
+        }
+        else
+        {
+            result.mSubSteps = pieces;
+            for (int piece = 0; piece < pieces; ++piece)
+                StepImplicit(inDeltaTime / pieces, result);
+        }
+
+        // Divergence: non-finite state or energy gained beyond the bound (see mDivergenceEnergyRatio).
+        diverged = !AllFinite(mPositions) || !AllFinite(mVelocities);
+        if (!diverged)
+        {
+            parts = MeasureEnergy();
+            const double energy = parts.mKinetic + parts.mElastic + parts.mPotential;
+            const double content = parts.mKinetic + parts.mElastic + parts.mPotentialMagnitude;
+            diverged = !std::isfinite(energy) ||
+                       energy - mReferenceEnergy >
+                           mSettings.mDivergenceEnergyRatio * std::max(content, cEnergyFloor);
+        }
+    }
+    if (diverged)
+    {
+        mPositions = mSavedPositions;
+        mVelocities = mSavedVelocities;
+        mRotations = mSavedRotations;
+        mQuietSteps = 0;
+        result.mEvents = result.mEvents | ETetStepEvent::Diverged;
+        result.mKineticEnergy = KineticEnergy();
+        result.mEnergy = mReferenceEnergy;
+        return result;
+    }
+    result.mKineticEnergy = parts.mKinetic;
+    result.mEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
+
+    // Sleep after mSleepStepCount quiet steps.
+    const double sleep_energy = 0.5 * mFreeMass * mSettings.mSleepSpeed * mSettings.mSleepSpeed;
+    mQuietSteps = parts.mKinetic < sleep_energy ? mQuietSteps + 1 : 0;
+    if (mQuietSteps >= mSettings.mSleepStepCount)
+    {
+        for (Vec3& velocity : mVelocities)
+            velocity.setZero();
+        mSleeping = true;
+        mReferenceValid = false;
+        result.mEvents = result.mEvents | ETetStepEvent::FellAsleep;
+    }
+    return result;
+}
+
+// Static equilibrium f_elastic(x) + f_load = 0 by repeated linearisation: K(x_k) dx = f_elastic(x_k) +
+// f_load, x_{k+1} = x_k + dx. For the corotated model K(x) = R K0 R^T lags the rotation (a fixed point
+// iteration that converges for moderate rotations); for St. Venant-Kirchhoff it is the tangent with its
+// stress term made PSD.
+Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRelativeTolerance,
+                                               int inMaxCgIterations)
+{
+    if (inMaxIterations < 1 || inMaxCgIterations < 1)
+        return MakeError(EError::InvalidArgument, "TetSolver::SolveStatic: iteration counts " +
+                                                      std::to_string(inMaxIterations) + ", " +
+                                                      std::to_string(inMaxCgIterations) + " must be >= 1");
+    if (!(inRelativeTolerance > 0.0 && inRelativeTolerance < 1.0))
+        return MakeError(EError::InvalidArgument, "TetSolver::SolveStatic: the tolerance must lie in (0, 1)");
+    const std::size_t node_count = mPositions.size();
+    if (std::none_of(mInverseMasses.begin(), mInverseMasses.end(),
+                     [](double inValue) { return inValue == 0.0; }))
+        return MakeError(EError::InvalidArgument,
+                         "TetSolver::SolveStatic: no node is fixed; a free body has no static "
+                         "equilibrium under load (anchor nodes with SetNodeFixed)");
+
+    // The load, and the force scale the residual is measured against.
+    std::vector<Vec3> load;
+    LoadForces(load);
+    double load_norm = 0.0;
+    for (const Vec3& force : load)
+        load_norm += force.squaredNorm();
+    load_norm = std::sqrt(load_norm);
+
+    // Keep the state to restore when the iteration fails.
+    mSavedPositions = mPositions;
+    mSavedRotations = mRotations;
+
+    const FemMaterialSettings& material = mMaterial.GetSettings();
+    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
+    TetStaticResult result;
+    std::vector<Vec3> residual(node_count), delta_x(node_count);
+    std::vector<Mat3> blocks(node_count);
+    double scale = load_norm;
+    for (int iteration = 0;; ++iteration)
+    {
+        // Residual force on the free nodes at the current linearisation point.
+        TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces);
+        mElementWork += mRest.size();
+        double residual_norm = 0.0;
+        for (std::size_t node = 0; node < node_count; ++node)
+        {
+            residual[node] = mInverseMasses[node] > 0.0 ? Vec3(mForces[node] + load[node]) : Vec3::Zero();
+            residual_norm += residual[node].squaredNorm();
+        }
+        residual_norm = std::sqrt(residual_norm);
+        if (iteration == 0 && !(scale > 0.0))
+            scale = residual_norm; // unloaded: relax towards the rest shape
+        result.mRelativeResidual = scale > 0.0 ? residual_norm / scale : 0.0;
+        result.mIterations = iteration;
+        if (!std::isfinite(residual_norm))
+            break;
+        if (result.mRelativeResidual <= inRelativeTolerance)
+        {
+            // Converged: at rest in equilibrium.
+            for (Vec3& velocity : mVelocities)
+                velocity.setZero();
+            InputChanged();
+            return result;
+        }
+        if (iteration == inMaxIterations)
+            break;
+
+        // Solve K dx = residual on the free nodes, preconditioned by K's diagonal blocks and the rigid coarse
+        // space.
+        std::uint64_t products = 0;
+        const LinearOperator3 stiffness = [&](std::span<const Vec3> inX, std::span<Vec3> outY)
+        {
+            TetStiffnessProduct(input, mLinearization, inX, outY);
+            ++products;
+            for (std::size_t node = 0; node < node_count; ++node)
+                if (mFree[node] == 0)
+                    outY[node].setZero();
+        };
+        TetStiffnessDiagonal(input, mLinearization, blocks);
+        mElementWork += mRest.size();
+        TetPreconditioner preconditioner;
+        preconditioner.Build(stiffness, blocks, mPositions, mFree);
+        std::fill(delta_x.begin(), delta_x.end(), Vec3::Zero());
+        const ConjugateGradientResult cg =
+            ConjugateGradient(stiffness, preconditioner.AsOperator(), residual, 0.5 * inRelativeTolerance,
+                              inMaxCgIterations, delta_x);
+        mElementWork += products * mRest.size();
+        result.mSolverIterations += cg.mIterations;
+        for (std::size_t node = 0; node < node_count; ++node)
+            mPositions[node] += delta_x[node];
+    }
+
+    // Not converged: put everything back.
+    mPositions = mSavedPositions;
+    mRotations = mSavedRotations;
+    std::ostringstream message;
+    message << "TetSolver::SolveStatic: no equilibrium after " << result.mIterations << " linearisations and "
+            << result.mSolverIterations << " CG iterations (relative residual " << result.mRelativeResidual
+            << " > " << inRelativeTolerance
+            << "); the load may be too large for the anchoring, or raise the limits";
+    return MakeError(EError::InvalidArgument, message.str());
+}
+
+} // namespace crumple::fem

@@ -1,0 +1,105 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/TetGrid.h>
+#include <crumple/fem/TetSolver.h>
+
+#include <catch2/catch.hpp>
+
+using namespace crumple;
+using namespace crumple::fem;
+
+namespace
+{
+
+// A 0.6 x 0.2 x 0.1 m plate of the default material (1 GPa), anchored along x = 0, sagging under gravity.
+TetSolver MakeShelf(EIntegrator inIntegrator, double inMassDamping)
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.1);
+    grid.mCellCount = {6, 2, 1};
+    FemMaterialSettings material;
+    material.mMassDamping = inMassDamping;
+    TetSolverSettings settings;
+    settings.mIntegrator = inIntegrator;
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+    for (int k = 0; k <= 1; ++k)
+        for (int j = 0; j <= 2; ++j)
+            REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    return solver;
+}
+
+} // namespace
+
+TEST_CASE("Sleep: a settled solver does no element work until an impulse wakes it", "[fem]")
+{
+    // Implicit Euler damps by itself; symplectic Euler needs material damping to come to rest.
+    struct Case
+    {
+        EIntegrator mIntegrator;
+        double mMassDamping;
+        double mStepTime;
+        int mMaxSteps;
+    };
+    for (const Case& c : {Case{EIntegrator::ImplicitEuler, 0.0, 1.0 / 60.0, 600},
+                          Case{EIntegrator::SymplecticEuler, 20.0, 1.0 / 240.0, 2400}})
+    {
+        TetSolver solver = MakeShelf(c.mIntegrator, c.mMassDamping);
+
+        // Settle: it must fall asleep, with zero velocities.
+        int steps = 0;
+        bool asleep = false;
+        for (; steps < c.mMaxSteps && !asleep; ++steps)
+        {
+            Result<TetStepResult> result = solver.Step(c.mStepTime);
+            REQUIRE(result.IsValid());
+            asleep = HasEvent(result.Get().mEvents, ETetStepEvent::FellAsleep);
+        }
+        WARN(ToString(c.mIntegrator) << ": asleep after " << steps << " steps of " << c.mStepTime << " s");
+        REQUIRE(asleep);
+        REQUIRE(solver.IsSleeping());
+        for (const Vec3& velocity : solver.GetVelocities())
+            CHECK(velocity == Vec3::Zero());
+
+        // Asleep: no element work at all, nothing moves.
+        const std::uint64_t work = solver.GetElementWorkCount();
+        const std::vector<Vec3> positions = solver.GetPositions();
+        for (int step = 0; step < 100; ++step)
+        {
+            Result<TetStepResult> result = solver.Step(c.mStepTime);
+            REQUIRE(result.IsValid());
+            CHECK(result.Get().mEvents == ETetStepEvent::Sleeping);
+        }
+        CHECK(solver.GetElementWorkCount() == work);
+        CHECK(solver.GetPositions() == positions);
+
+        // An impulse wakes it; the next step works and moves the body.
+        const int tip = solver.GetMesh().GetNodeCount() - 1;
+        REQUIRE(solver.ApplyImpulse(tip, Vec3(0.0, 0.0, 0.5)).IsValid());
+        CHECK(!solver.IsSleeping());
+        Result<TetStepResult> woken = solver.Step(c.mStepTime);
+        REQUIRE(woken.IsValid());
+        CHECK(!HasEvent(woken.Get().mEvents, ETetStepEvent::Sleeping));
+        CHECK(solver.GetElementWorkCount() > work);
+        CHECK(solver.GetPositions()[tip] != positions[tip]);
+    }
+}
+
+TEST_CASE("Sleep: a free-falling body never sleeps; mSleepSpeed 0 disables sleep", "[fem]")
+{
+    TetGridSettings grid;
+    grid.mCellCount = {2, 1, 1};
+    const TetMesh mesh = TetGrid(grid).Get();
+
+    TetSolver falling = TetSolver::Create(mesh, FemMaterialSettings(), TetSolverSettings()).Get();
+    TetSolverSettings no_sleep;
+    no_sleep.mSleepSpeed = 0.0;
+    no_sleep.mGravity = Vec3::Zero();
+    TetSolver resting = TetSolver::Create(mesh, FemMaterialSettings(), no_sleep).Get();
+    for (int step = 0; step < 120; ++step)
+    {
+        REQUIRE(falling.Step(1.0 / 60.0).IsValid());
+        REQUIRE(resting.Step(1.0 / 60.0).IsValid());
+    }
+    CHECK(!falling.IsSleeping());
+    CHECK(!resting.IsSleeping());
+}

@@ -1,0 +1,16 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# Tests of the tetrahedral half of crumple::fem (paths relative to tests/).
+set(CRUMPLE_FEM_TET_TESTS
+    fem/FemMaterialTest.cpp
+    fem/PolarRotationTest.cpp
+    fem/StableTimeStepTest.cpp
+    fem/TetCantileverTest.cpp
+    fem/TetEnergyTest.cpp
+    fem/TetGridTest.cpp
+    fem/TetMeshTest.cpp
+    fem/TetNodalForcesTest.cpp
+    fem/TetPatchTest.cpp
+    fem/TetSleepTest.cpp
+    fem/TetSolverTest.cpp
+    fem/TetStressTest.cpp)
