@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/base/Assert.h>
+#include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/InterpolateWideImpact.h>
 #include <crumple/plugin/DeformableObject.h>
 
@@ -14,13 +15,8 @@ namespace crumple::plugin
 ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
                                    double inMaxTotalDeformation)
 {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-    Vec3 hi = -lo;
-    for (const Vec3& p : inMesh.mPositions)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
+    const ffd::AlignedBox bounds = ffd::BoundingBox(inMesh.mPositions);
+    const Vec3 lo = bounds.mMin, hi = bounds.mMax;
     // The margin keeps surface vertices strictly inside, where the spline is defined.
     const Vec3 margin = 0.01 * (hi - lo) + Vec3::Constant(1.0e-3);
     ffd::FfdZoneSettings zone;

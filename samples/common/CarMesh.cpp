@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "CarMesh.h"
 
+#include <crumple/ffd/BoundingBox.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -71,12 +72,8 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
                                                          inSettings.mMeshName + "'");
 
     // Centre on the bounding box and scale to the wanted length.
-    Vec3 lo = mesh.mPositions[0], hi = lo;
-    for (const Vec3& p : mesh.mPositions)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
+    const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);
+    const Vec3 lo = bounds.mMin, hi = bounds.mMax;
     const double scale = inSettings.mLength / (hi.x() - lo.x());
     const Vec3 centre = 0.5 * (lo + hi);
     for (Vec3& p : mesh.mPositions)

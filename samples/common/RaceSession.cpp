@@ -5,6 +5,7 @@
 #include "CarMesh.h"
 #include "ObjWriter.h"
 
+#include <crumple/ffd/BoundingBox.h>
 #include <crumple/base/Version.h>
 
 #include <cmath>
@@ -116,12 +117,8 @@ void RaceSession::PaintCar(const DeformableObject& inCar, const std::string& inN
     mPainter->Clear();
     const ffd::FfdDeformer& d = inCar.GetDeformer();
     mPainter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles, DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), {});
-    Vec3 lo = d.GetRestMesh().mPositions[0], hi = lo;
-    for (const Vec3& p : d.GetRestMesh().mPositions)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
+    const ffd::AlignedBox bounds = ffd::BoundingBox(d.GetRestMesh().mPositions);
+    const Vec3 lo = bounds.mMin, hi = bounds.mMax;
     const render::Camera camera = render::Camera::LookAtBounds(lo, hi, render::EView::Iso, Vec3::UnitZ(), Vec3::UnitX(), 30.0,
                                                                mPainter->GetWidth() / static_cast<double>(mPainter->GetHeight()));
     if (Status painted = mPainter->Paint(camera, mOptions.mOut / inName); !painted)

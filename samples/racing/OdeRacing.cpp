@@ -6,6 +6,7 @@
 #include "BoxMesh.h"
 #include "RaceSession.h"
 
+#include <crumple/ffd/BoundingBox.h>
 #include <crumple/ode/OdeAdapter.h>
 
 #include <ode/ode.h>
@@ -83,12 +84,8 @@ int main(int argc, char** argv)
         return code;
 
     const ffd::TriangleMesh car_mesh = RaceCarMesh();
-    Vec3 lo = car_mesh.mPositions[0], hi = lo;
-    for (const Vec3& p : car_mesh.mPositions)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
+    const ffd::AlignedBox bounds = ffd::BoundingBox(car_mesh.mPositions);
+    const Vec3 lo = bounds.mMin, hi = bounds.mMax;
     const Vec3 half = 0.5 * (hi - lo);
 
     dInitODE2(0);

@@ -5,6 +5,7 @@
 #include "ObjWriter.h"
 #include "WorldFixture.h"
 
+#include <crumple/ffd/BoundingBox.h>
 #include <crumple/base/FileBytes.h>
 #include <crumple/base/Version.h>
 #include <crumple/plugin/ReplayDamage.h>
@@ -102,12 +103,8 @@ int main(int argc, char** argv)
     if (painter != nullptr)
         paint = [&](const ReplayedObject& inObject, const std::filesystem::path& inPath) {
             const ffd::FfdDeformer& d = inObject.mDeformable.GetDeformer();
-            Vec3 lo = d.GetRestMesh().mPositions[0], hi = lo;
-            for (const Vec3& p : d.GetRestMesh().mPositions)
-            {
-                lo = lo.cwiseMin(p);
-                hi = hi.cwiseMax(p);
-            }
+            const ffd::AlignedBox bounds = ffd::BoundingBox(d.GetRestMesh().mPositions);
+            const Vec3 lo = bounds.mMin, hi = bounds.mMax;
             painter->Clear();
             painter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles,
                          samples::DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), {});
