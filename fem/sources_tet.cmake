@@ -6,6 +6,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/DeformationGradient.cpp
     src/EdgeMatrix.cpp
     src/EElasticModel.cpp
+    src/EFractureMode.cpp
     src/EIntegrator.cpp
     src/FemMaterial.cpp
     src/FirstPiolaStress.cpp

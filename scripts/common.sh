@@ -8,9 +8,10 @@ CRUMPLE_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CRUMPLE_BUILD_DIR="${CRUMPLE_BUILD_DIR:-$CRUMPLE_ROOT/build-release}"
 CRUMPLE_JOBS="${CRUMPLE_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
-# Debian packages every build needs (the optional adapters switch themselves off without theirs).
+# Debian packages every build needs (the optional adapters switch themselves off without theirs; tetgen is
+# the optional command-line tetrahedralizer that fem surface import runs).
 CRUMPLE_PACKAGES=(cmake make g++ pkg-config libeigen3-dev catch2 libbullet-dev libode-dev libassimp-dev
-    libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev)
+    libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev tetgen)
 
 crumple_ensure_packages() {
     local missing=()

@@ -59,6 +59,24 @@ Result<FemMaterial> FemMaterial::Create(const FemMaterialSettings& inSettings)
         inSettings.mModel != EElasticModel::CorotatedLinear)
         return FieldError(EError::InvalidArgument, "mModel", static_cast<double>(inSettings.mModel), "",
                           "is not an EElasticModel");
+
+    // Plasticity and fracture: infinity switches them off, NaN is never accepted.
+    if (!(inSettings.mYieldStress > 0.0))
+        return FieldError(EError::InvalidArgument, "mYieldStress", inSettings.mYieldStress, "Pa",
+                          "must be > 0 (infinity: no plasticity)");
+    if (!(inSettings.mCreepRate > 0.0))
+        return FieldError(EError::InvalidArgument, "mCreepRate", inSettings.mCreepRate, "1/s",
+                          "must be > 0 (infinity: instantaneous plastic flow)");
+    if (!(inSettings.mMaxPlasticStrain >= 0.0 && std::isfinite(inSettings.mMaxPlasticStrain)))
+        return FieldError(EError::InvalidArgument, "mMaxPlasticStrain", inSettings.mMaxPlasticStrain, "",
+                          "must be finite and >= 0");
+    if (!(inSettings.mTensileStrength > 0.0))
+        return FieldError(EError::InvalidArgument, "mTensileStrength", inSettings.mTensileStrength, "Pa",
+                          "must be > 0 (infinity: unbreakable)");
+    if (inSettings.mFractureMode != EFractureMode::CrackPlane &&
+        inSettings.mFractureMode != EFractureMode::DetachGroup)
+        return FieldError(EError::InvalidArgument, "mFractureMode", static_cast<double>(inSettings.mFractureMode),
+                          "", "is not an EFractureMode");
     return FemMaterial(inSettings);
 }
 
@@ -74,6 +92,16 @@ FemMaterial::FemMaterial(const FemMaterialSettings& inSettings)
 double FemMaterial::GetWaveSpeed() const
 {
     return std::sqrt((mLambda + 2.0 * mShearModulus) / mSettings.mDensity);
+}
+
+bool FemMaterial::IsPlastic() const
+{
+    return std::isfinite(mSettings.mYieldStress);
+}
+
+bool FemMaterial::IsBreakable() const
+{
+    return std::isfinite(mSettings.mTensileStrength);
 }
 
 } // namespace crumple::fem

@@ -1,10 +1,13 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
-# test_fem: the tet and hex halves each list their test files in their own include.
-set(CRUMPLE_FEM_TET_TESTS "")
-set(CRUMPLE_FEM_HEX_TESTS "")
-include(${CMAKE_CURRENT_LIST_DIR}/tests_tet.cmake OPTIONAL)
-include(${CMAKE_CURRENT_LIST_DIR}/tests_hex.cmake OPTIONAL)
-if(CRUMPLE_FEM_TET_TESTS OR CRUMPLE_FEM_HEX_TESTS)
-    crumple_add_test(fem ${CRUMPLE_FEM_TET_TESTS} ${CRUMPLE_FEM_HEX_TESTS} LINK crumple::fem)
+# test_fem: each part of crumple::fem lists its test files in its own include (tests_<part>.cmake).
+set(CRUMPLE_FEM_TESTS "")
+foreach(part IN ITEMS tet fracture edges io hex)
+    string(TOUPPER ${part} upper)
+    set(CRUMPLE_FEM_${upper}_TESTS "")
+    include(${CMAKE_CURRENT_LIST_DIR}/tests_${part}.cmake OPTIONAL)
+    list(APPEND CRUMPLE_FEM_TESTS ${CRUMPLE_FEM_${upper}_TESTS})
+endforeach()
+if(CRUMPLE_FEM_TESTS)
+    crumple_add_test(fem ${CRUMPLE_FEM_TESTS} LINK crumple::fem)
 endif()

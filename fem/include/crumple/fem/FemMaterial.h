@@ -14,8 +14,9 @@ namespace crumple::fem
 class FemMaterial
 {
 public:
-    /// Refuses non-finite values, E <= 0, density <= 0, nu outside (-1, cMaxPoissonRatio], negative damping
-    /// or an unknown model, naming the field and value.
+    /// Refuses non-finite values, E <= 0, density <= 0, nu outside (-1, cMaxPoissonRatio], negative damping,
+    /// an unknown model or fracture mode, a yield stress, creep rate or tensile strength <= 0 (infinity is
+    /// accepted: "off") or a negative or infinite plastic strain cap, naming the field and value.
     static Result<FemMaterial> Create(const FemMaterialSettings& inSettings);
 
     /// The settings it was created from
@@ -28,6 +29,10 @@ public:
     double GetShearModulus() const { return mShearModulus; }
     /// Dilatational (P-wave) speed sqrt((lambda + 2 mu) / rho) (m/s), the fastest wave in the material
     double GetWaveSpeed() const;
+    /// True when the yield stress is finite: elements accumulate plastic strain
+    bool IsPlastic() const;
+    /// True when the tensile strength is finite: element groups can detach
+    bool IsBreakable() const;
 
 private:
     explicit FemMaterial(const FemMaterialSettings& inSettings);

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <crumple/fem/EElasticModel.h>
+#include <crumple/fem/EFractureMode.h>
+
+#include <limits>
 
 namespace crumple::fem
 {
@@ -31,6 +34,24 @@ struct FemMaterialSettings
     double mMassDamping = 0.0;      ///< Rayleigh mass-proportional damping alpha (1/s), >= 0; 0 is undamped
     double mStiffnessDamping = 0.0; ///< Rayleigh stiffness-proportional damping beta (s), >= 0; 0 is undamped
     EElasticModel mModel = EElasticModel::CorotatedLinear; ///< Strain measure and stress law
+
+    /// Plasticity (von Mises, associative, perfectly plastic up to a cap), applied once per TetSolver::Step()
+    /// to each element: with the elastic strain e = eps - eps_p and sigma = C:e, when the von Mises stress
+    /// sigma_vm = sqrt(3/2 s:s) (s the deviatoric part of sigma) exceeds mYieldStress, the plastic strain
+    /// takes min(1, mCreepRate dt) of the deviatoric elastic strain beyond the yield surface (radial
+    /// return: with an infinite creep rate sigma_vm comes back exactly to the yield stress), then the
+    /// equivalent plastic strain sqrt(2/3 eps_p:eps_p) is clamped to mMaxPlasticStrain. Plastic flow is
+    /// deviatoric, so it keeps the volume. The element's rest shape is that of eps_p: a barrier bent past
+    /// yield stays bent. Infinity switches plasticity off (and costs nothing).
+    double mYieldStress = std::numeric_limits<double>::infinity(); ///< sigma_y (Pa), > 0 (mild steel 2.5e8)
+    double mCreepRate = std::numeric_limits<double>::infinity();   ///< Plastic flow rate (1/s), > 0
+    double mMaxPlasticStrain = 0.5; ///< Cap of the equivalent plastic strain (dimensionless), >= 0
+
+    /// Fracture (Rankine): after each TetSolver::Step() the volume-weighted mean stress of each element group
+    /// (cube) is decomposed into principal stresses; where the largest exceeds mTensileStrength the group
+    /// detaches from neighbours as mFractureMode says. Infinity means unbreakable (and costs nothing).
+    double mTensileStrength = std::numeric_limits<double>::infinity(); ///< sigma_t (Pa), > 0 (glass ~5e7)
+    EFractureMode mFractureMode = EFractureMode::CrackPlane;           ///< Which faces a crack opens
 
     /// Largest accepted Poisson's ratio: above it lambda / mu > 99 and linear tetrahedra lock in volume
     static constexpr double cMaxPoissonRatio = 0.495;
