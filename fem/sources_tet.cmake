@@ -10,6 +10,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/EIntegrator.cpp
     src/FemMaterial.cpp
     src/FirstPiolaStress.cpp
+    src/ModelStrain.cpp
     src/GreenStrain.cpp
     src/IsotropicMaterialMatrix.cpp
     src/LumpedNodeMass.cpp

@@ -1,27 +1,19 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include <crumple/fem/GreenStrain.h>
 #include <crumple/fem/MaterialStress.h>
+#include <crumple/fem/ModelStrain.h>
 #include <crumple/fem/StrainEnergyDensity.h>
 
 namespace crumple::fem
 {
 
 double StrainEnergyDensity(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
-                           const Matrix6& inMaterialMatrix)
+                           const Matrix6& inMaterialMatrix, const Mat3& inPlasticStrain)
 {
-    // The model's strain tensor.
-    Mat3 strain;
-    if (inModel == EElasticModel::StVenantKirchhoff)
-        strain = GreenStrain(inF);
-    else
-    {
-        const Mat3 unrotated = inRotation.transpose() * inF;
-        strain = 0.5 * (unrotated + unrotated.transpose()) - Mat3::Identity();
-    }
-
-    // psi = sigma : eps / 2 with sigma = C:eps (the tensor double contraction equals the Voigt product).
-    return 0.5 * MaterialStress(inMaterialMatrix, strain).cwiseProduct(strain).sum();
+    // psi = sigma : e / 2 with the elastic strain e and sigma = C:e (the double contraction equals the Voigt
+    // product).
+    const Mat3 elastic = ModelStrain(inModel, inF, inRotation) - inPlasticStrain;
+    return 0.5 * MaterialStress(inMaterialMatrix, elastic).cwiseProduct(elastic).sum();
 }
 
 } // namespace crumple::fem

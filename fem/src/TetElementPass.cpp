@@ -4,8 +4,9 @@
 
 #include <crumple/fem/DeformationGradient.h>
 #include <crumple/fem/FirstPiolaStress.h>
-#include <crumple/fem/GreenStrain.h>
 #include <crumple/fem/MaterialStress.h>
+#include <crumple/fem/ModelStrain.h>
+#include <crumple/fem/PlasticFlow.h>
 #include <crumple/fem/PolarRotation.h>
 #include <crumple/fem/StrainEnergyDensity.h>
 #include <crumple/fem/TetNodalForces.h>
@@ -72,7 +73,8 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
         }
 
         // Elastic stress, plus the viscous stress beta C:strain_rate in the same frame.
-        Mat3 p = FirstPiolaStress(inInput.mModel, f, r, c);
+        const Mat3 plastic = inInput.PlasticStrain(tet);
+        Mat3 p = FirstPiolaStress(inInput.mModel, f, r, c, plastic);
         if (viscous)
         {
             const Mat3 f_dot = DeformationGradient(inVelocities[n[0]], inVelocities[n[1]], inVelocities[n[2]],
@@ -95,7 +97,7 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
             else
             {
                 lin.mFrame = f;
-                lin.mStress = PositivePart(MaterialStress(c, GreenStrain(f)));
+                lin.mStress = PositivePart(MaterialStress(c, ModelStrain(inInput.mModel, f, r) - plastic));
             }
         }
     }
@@ -167,9 +169,66 @@ double TetElasticEnergy(const TetElementPassInput& inInput, std::span<const Vec3
             ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
             r = ioRotations[tet].toRotationMatrix();
         }
-        energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c);
+        energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, inInput.PlasticStrain(tet));
     }
     return energy;
+}
+
+int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                   std::span<Quat> ioRotations, double inShearModulus, const FemMaterialSettings& inMaterial,
+                   double inDeltaTime, std::span<Mat3> ioPlasticStrains)
+{
+    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    int flowed = 0;
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        const TetIndices& n = inInput.mTets[tet];
+        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
+                                           inPositions[n[3]], inInput.mRest[tet].mRestEdgeInverse);
+        Mat3 r = Mat3::Identity();
+        if (corotated)
+        {
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
+            r = ioRotations[tet].toRotationMatrix();
+        }
+        const Mat3 updated = PlasticFlow(ModelStrain(inInput.mModel, f, r), ioPlasticStrains[tet], inShearModulus,
+                                         inMaterial, inDeltaTime);
+        if (updated != ioPlasticStrains[tet])
+        {
+            ioPlasticStrains[tet] = updated;
+            ++flowed;
+        }
+    }
+    return flowed;
+}
+
+void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                     std::span<Quat> ioRotations, std::span<Mat3> outStress)
+{
+    const Matrix6& c = *inInput.mMaterialMatrix;
+    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    {
+        const TetIndices& n = inInput.mTets[tet];
+        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
+                                           inPositions[n[3]], inInput.mRest[tet].mRestEdgeInverse);
+        if (corotated)
+        {
+            // Small strain in the rotated frame: the Cauchy stress is the rotated linear stress.
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
+            const Mat3 r = ioRotations[tet].toRotationMatrix();
+            const Mat3 local = MaterialStress(c, ModelStrain(inInput.mModel, f, r) - inInput.PlasticStrain(tet));
+            outStress[tet] = r * local * r.transpose();
+        }
+        else
+        {
+            // sigma = F S F^T / J; an inverted element (J <= 0) has no meaningful Cauchy stress: use S.
+            const Mat3 s = MaterialStress(c, ModelStrain(inInput.mModel, f, Mat3::Identity()) -
+                                                 inInput.PlasticStrain(tet));
+            const double j = f.determinant();
+            outStress[tet] = j > 0.0 ? Mat3(f * s * f.transpose() / j) : s;
+        }
+    }
 }
 
 } // namespace crumple::fem

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/fem/EElasticModel.h>
+#include <crumple/fem/FemMaterialSettings.h>
 #include <crumple/fem/IsotropicMaterialMatrix.h>
 #include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetLinearization.h>
@@ -19,6 +20,14 @@ struct TetElementPassInput
     std::span<const TetElementRest> mRest;    ///< #T rest data
     const Matrix6* mMaterialMatrix = nullptr; ///< C (Pa)
     EElasticModel mModel = EElasticModel::CorotatedLinear;
+    /// #T plastic strains (in the model's frame), or empty when the material has no plasticity
+    std::span<const Mat3> mPlasticStrains;
+
+    /// Plastic strain of element inTet (zero without plasticity)
+    Mat3 PlasticStrain(std::size_t inTet) const
+    {
+        return mPlasticStrains.empty() ? Mat3(Mat3::Zero()) : mPlasticStrains[inTet];
+    }
 };
 
 /// Elastic forces plus, when inVelocities is not empty and inStiffnessDamping > 0, the Kelvin-Voigt viscous
@@ -48,6 +57,27 @@ void TetStiffnessProduct(const TetElementPassInput& inInput,
 /// @param[out] outBlocks  #N, overwritten
 void TetStiffnessDiagonal(const TetElementPassInput& inInput,
                           std::span<const TetLinearization> inLinearization, std::span<Mat3> outBlocks);
+
+/// One step of plasticity (PlasticFlow) for every element at the current positions; updates the corotated
+/// frames (warm-started).
+/// @param[in]     inPositions        #N (m)
+/// @param[in,out] ioRotations        #T element rotations (unit quaternions)
+/// @param[in]     inShearModulus     mu (Pa)
+/// @param[in]     inMaterial         yield stress, creep rate, plastic strain cap
+/// @param[in]     inDeltaTime        dt (s)
+/// @param[in,out] ioPlasticStrains   #T plastic strains
+/// @return number of elements that flowed
+int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                   std::span<Quat> ioRotations, double inShearModulus, const FemMaterialSettings& inMaterial,
+                   double inDeltaTime, std::span<Mat3> ioPlasticStrains);
+
+/// Cauchy stress of every element in world axes (Pa): R C:(eps - eps_p) R^T for the corotated model,
+/// F S F^T / det F for St. Venant-Kirchhoff. Updates the corotated frames (warm-started).
+/// @param[in]     inPositions  #N (m)
+/// @param[in,out] ioRotations  #T element rotations (unit quaternions)
+/// @param[out]    outStress    #T symmetric 3 by 3, overwritten
+void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
+                     std::span<Quat> ioRotations, std::span<Mat3> outStress);
 
 /// Elastic energy sum V0 psi(F) (J); updates the corotated frames (warm-started) when ioRotations is
 /// writable.

@@ -1,6 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
+#include <crumple/fem/OpenCracks.h>
 #include <crumple/fem/StableTimeStep.h>
 #include <crumple/fem/TetSolver.h>
 
@@ -98,6 +100,8 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
     : mMesh(inMesh), mMaterial(inMaterial), mSettings(inSettings)
 {
     // Per-element rest data and per-node lumped masses.
+    mElementNodes = mMesh.GetTets();
+    mNodeRestPositions = mMesh.GetRestPositions();
     mRest = TetRestData(mMesh);
     mMasses = LumpedNodeMass(mMesh, mMaterial.GetSettings().mDensity);
     mInverseMasses.resize(mMasses.size());
@@ -116,6 +120,160 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
     mStableTimeStep = StableTimeStep(mRest, mMaterial, mSettings.mStabilitySafetyFactor);
     mForces.resize(mPositions.size());
     mLinearization.resize(mRest.size());
+
+    // Plasticity and fracture state only for materials that have them: nothing to pay otherwise.
+    if (mMaterial.IsPlastic())
+        mPlasticStrains.assign(mRest.size(), Mat3::Zero());
+    if (mMaterial.IsBreakable())
+    {
+        mLinks = BuildFractureLinks(mMesh);
+        mBroken.assign(mLinks.GetLinkCount(), 0);
+        mElementStress.resize(mRest.size());
+        mPrincipal.resize(mLinks.GetGroupCount());
+    }
+}
+
+TetElementPassInput TetSolver::PassInput() const
+{
+    return TetElementPassInput{mElementNodes, mRest, &mMaterial.GetMaterialMatrix(),
+                               mMaterial.GetSettings().mModel, mPlasticStrains};
+}
+
+void TetSolver::AfterSubStep(double inDeltaTime)
+{
+    // Plastic flow and fracture on the state at the end of each (sub-)step: a crack must open while the stress
+    // peak passes, before the wave that carries it reaches the rest of the body. The corotated frames are
+    // those of the forces just computed (symplectic) or of the last Newton iteration (implicit).
+    if (mMaterial.IsPlastic())
+        mStepPlasticElements += FlowPlastically(inDeltaTime);
+    if (mMaterial.IsBreakable())
+        mStepBrokenLinks += Fracture();
+}
+
+void TetSolver::SaveShape(ShapeState& outShape) const
+{
+    outShape.mElementNodes = mElementNodes;
+    outShape.mNodeRestPositions = mNodeRestPositions;
+    outShape.mMasses = mMasses;
+    outShape.mInverseMasses = mInverseMasses;
+    outShape.mFree = mFree;
+    outShape.mExternalForces = mExternalForces;
+    outShape.mPlasticStrains = mPlasticStrains;
+    outShape.mBroken = mBroken;
+    outShape.mFreeMass = mFreeMass;
+}
+
+void TetSolver::RestoreShape(const ShapeState& inShape)
+{
+    mElementNodes = inShape.mElementNodes;
+    mNodeRestPositions = inShape.mNodeRestPositions;
+    mMasses = inShape.mMasses;
+    mInverseMasses = inShape.mInverseMasses;
+    mFree = inShape.mFree;
+    mExternalForces = inShape.mExternalForces;
+    mPlasticStrains = inShape.mPlasticStrains;
+    mBroken = inShape.mBroken;
+    mFreeMass = inShape.mFreeMass;
+    mForces.resize(mMasses.size());
+}
+
+std::vector<double> TetSolver::ElementMasses() const
+{
+    std::vector<double> masses(mRest.size());
+    for (std::size_t tet = 0; tet < mRest.size(); ++tet)
+        masses[tet] = mMaterial.GetSettings().mDensity * mRest[tet].mRestVolume;
+    return masses;
+}
+
+int TetSolver::FlowPlastically(double inDeltaTime)
+{
+    const int flowed = TetPlasticFlow(PassInput(), mPositions, mRotations, mMaterial.GetShearModulus(),
+                                      mMaterial.GetSettings(), inDeltaTime, mPlasticStrains);
+    mElementWork += mRest.size();
+    return flowed;
+}
+
+int TetSolver::Fracture()
+{
+    // Rankine's criterion on every group's mean stress, then node duplication along the opened links.
+    const TetElementPassInput input = PassInput();
+    TetCauchyStress(input, mPositions, mRotations, mElementStress);
+    mElementWork += mRest.size();
+    std::vector<double> volumes(mRest.size());
+    for (std::size_t tet = 0; tet < mRest.size(); ++tet)
+        volumes[tet] = mRest[tet].mRestVolume;
+    GroupPrincipalStress(mLinks, mElementStress, volumes, mPrincipal);
+    const FemMaterialSettings& material = mMaterial.GetSettings();
+    const int opened = OpenCracks(mLinks, mPrincipal, mElementNodes, mPositions, material.mTensileStrength,
+                                  material.mFractureMode, mBroken);
+    if (opened > 0)
+        Reconnect(FractureTopology(mMesh, mLinks, mBroken));
+    return opened;
+}
+
+// Moves the node state onto a new connectivity. Breaking only splits nodes, so every new node is a copy of
+// the old node at the same element corner; an external force is shared among the copies by mass.
+void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
+{
+    const std::size_t new_count = inConnectivity.mNodeOrigin.size();
+    std::vector<int> old_of_new(new_count, -1);
+    for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
+        for (int corner = 0; corner < 4; ++corner)
+            old_of_new[inConnectivity.mElementNodes[tet][corner]] = mElementNodes[tet][corner];
+
+    // New lumped masses from the element masses, element order.
+    std::vector<double> masses(new_count, 0.0);
+    const double density = mMaterial.GetSettings().mDensity;
+    for (std::size_t tet = 0; tet < mRest.size(); ++tet)
+        for (int node : inConnectivity.mElementNodes[tet])
+            masses[node] += 0.25 * density * mRest[tet].mRestVolume;
+
+    std::vector<Vec3> positions(new_count), velocities(new_count), forces(new_count), rest(new_count);
+    std::vector<double> inverse_masses(new_count);
+    std::vector<std::uint8_t> free(new_count);
+    mFreeMass = 0.0;
+    for (std::size_t node = 0; node < new_count; ++node)
+    {
+        const int old = old_of_new[node];
+        positions[node] = mPositions[old];
+        velocities[node] = mVelocities[old];
+        forces[node] = mExternalForces[old] * (masses[node] / mMasses[old]);
+        rest[node] = mNodeRestPositions[old];
+        free[node] = mFree[old];
+        inverse_masses[node] = free[node] != 0 ? 1.0 / masses[node] : 0.0;
+        if (free[node] != 0)
+            mFreeMass += masses[node];
+    }
+    mElementNodes = inConnectivity.mElementNodes;
+    mPositions = std::move(positions);
+    mVelocities = std::move(velocities);
+    mExternalForces = std::move(forces);
+    mNodeRestPositions = std::move(rest);
+    mMasses = std::move(masses);
+    mInverseMasses = std::move(inverse_masses);
+    mFree = std::move(free);
+    mForces.resize(new_count);
+    mReferenceValid = false; // the energy bookkeeping restarts on the new topology
+}
+
+std::vector<TetFragment> TetSolver::ComputeFragments() const
+{
+    if (!mMaterial.IsBreakable())
+    {
+        // One piece: all groups joined.
+        const FractureLinks links = BuildFractureLinks(mMesh);
+        const std::vector<std::uint8_t> none(links.GetLinkCount(), 0);
+        return TetFragments(links, none, mElementNodes, ElementMasses(), mPositions, mInverseMasses);
+    }
+    return TetFragments(mLinks, mBroken, mElementNodes, ElementMasses(), mPositions, mInverseMasses);
+}
+
+int TetSolver::GetBrokenLinkCount() const
+{
+    int count = 0;
+    for (std::uint8_t broken : mBroken)
+        count += broken != 0 ? 1 : 0;
+    return count;
 }
 
 void TetSolver::InputChanged()
@@ -127,7 +285,7 @@ void TetSolver::InputChanged()
 
 Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
 {
-    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "SetNodeFixed"); status.HasError())
+    if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
         return status;
     const bool was_fixed = mInverseMasses[inNode] == 0.0;
     if (was_fixed != inFixed)
@@ -142,7 +300,7 @@ Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
 
 Status TetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
 {
-    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "ApplyImpulse"); status.HasError())
+    if (Status status = CheckNode(inNode, GetNodeCount(), "ApplyImpulse"); status.HasError())
         return status;
     if (!IsFinite(inImpulse))
         return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: impulse on node " +
@@ -154,7 +312,7 @@ Status TetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
 
 Status TetSolver::SetExternalForce(int inNode, const Vec3& inForce)
 {
-    if (Status status = CheckNode(inNode, mMesh.GetNodeCount(), "SetExternalForce"); status.HasError())
+    if (Status status = CheckNode(inNode, GetNodeCount(), "SetExternalForce"); status.HasError())
         return status;
     if (!IsFinite(inForce))
         return MakeError(EError::NonFinite, "TetSolver::SetExternalForce: force on node " +
@@ -226,8 +384,7 @@ void TetSolver::ElasticForces(std::vector<Vec3>& outForces) const
 {
     outForces.resize(mPositions.size());
     std::vector<Quat> rotations = mRotations;
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
-                                    mMaterial.GetSettings().mModel};
+    const TetElementPassInput input = PassInput();
     TetElasticForces(input, mPositions, {}, 0.0, rotations, {}, outForces);
 }
 
@@ -242,15 +399,14 @@ double TetSolver::KineticEnergy() const
 double TetSolver::ElasticEnergy() const
 {
     std::vector<Quat> rotations = mRotations;
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
-                                    mMaterial.GetSettings().mModel};
+    const TetElementPassInput input = PassInput();
     return TetElasticEnergy(input, mPositions, rotations);
 }
 
 double TetSolver::ExternalPotentialEnergy() const
 {
     double energy = 0.0;
-    const std::vector<Vec3>& rest = mMesh.GetRestPositions();
+    const std::vector<Vec3>& rest = mNodeRestPositions;
     for (std::size_t node = 0; node < mPositions.size(); ++node)
         if (mInverseMasses[node] > 0.0)
             energy -= (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
@@ -262,11 +418,10 @@ TetSolver::EnergyParts TetSolver::MeasureEnergy()
 {
     EnergyParts parts;
     parts.mKinetic = KineticEnergy();
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(),
-                                    mMaterial.GetSettings().mModel};
+    const TetElementPassInput input = PassInput();
     parts.mElastic = TetElasticEnergy(input, mPositions, mRotations);
     mElementWork += mRest.size();
-    const std::vector<Vec3>& rest = mMesh.GetRestPositions();
+    const std::vector<Vec3>& rest = mNodeRestPositions;
     for (std::size_t node = 0; node < mPositions.size(); ++node)
         if (mInverseMasses[node] > 0.0)
         {
@@ -284,9 +439,9 @@ void TetSolver::StepSymplectic(double inDeltaTime, int inSubSteps)
     const FemMaterialSettings& material = mMaterial.GetSettings();
     const double damping_scale = 1.0 / (1.0 + material.mMassDamping * dt);
     const bool viscous = material.mStiffnessDamping > 0.0;
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
     for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
     {
+        const TetElementPassInput input = PassInput(); // fracture may have changed the connectivity
         // Element pass: elastic (+ viscous) forces at the current state.
         TetElasticForces(input, mPositions,
                          viscous ? std::span<const Vec3>(mVelocities) : std::span<const Vec3>(),
@@ -304,6 +459,7 @@ void TetSolver::StepSymplectic(double inDeltaTime, int inSubSteps)
             mVelocities[node] = (mVelocities[node] + dt * acceleration) * damping_scale;
             mPositions[node] += dt * mVelocities[node];
         }
+        AfterSubStep(dt);
     }
 }
 
@@ -324,7 +480,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     const FemMaterialSettings& material = mMaterial.GetSettings();
     const double mass_scale = 1.0 + h * material.mMassDamping;
     const double stiffness_scale = h * h + h * material.mStiffnessDamping;
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
+    const TetElementPassInput input = PassInput();
     const std::size_t node_count = mPositions.size();
     mStartPositions = mPositions;
     mStartVelocities = mVelocities;
@@ -489,6 +645,9 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
     mSavedPositions = mPositions;
     mSavedVelocities = mVelocities;
     mSavedRotations = mRotations;
+    const bool changes_shape = mMaterial.IsPlastic() || mMaterial.IsBreakable();
+    if (changes_shape)
+        SaveShape(mSavedShape);
 
     // Integrate; on divergence retry from the saved state with the step split into 2, 4, ... parts.
     bool diverged = true;
@@ -499,9 +658,13 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
         const bool symplectic = mSettings.mIntegrator == EIntegrator::SymplecticEuler;
         if (symplectic && static_cast<long long>(sub_steps) * pieces > mSettings.mMaxSubSteps)
             break; // no retry within the sub-step budget
+        mStepPlasticElements = 0;
+        mStepBrokenLinks = 0;
         if (split > 0)
         {
             result.mEvents = result.mEvents | ETetStepEvent::Split;
+            if (changes_shape)
+                RestoreShape(mSavedShape);
             mPositions = mSavedPositions;
             mVelocities = mSavedVelocities;
             mRotations = mSavedRotations;
@@ -515,7 +678,10 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
         {
             result.mSubSteps = pieces;
             for (int piece = 0; piece < pieces; ++piece)
+            {
                 StepImplicit(inDeltaTime / pieces, result);
+                AfterSubStep(inDeltaTime / pieces);
+            }
         }
 
         // Divergence: non-finite state or energy gained beyond the bound (see mDivergenceEnergyRatio).
@@ -532,6 +698,10 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
     }
     if (diverged)
     {
+        if (changes_shape)
+            RestoreShape(mSavedShape);
+        mStepPlasticElements = 0;
+        mStepBrokenLinks = 0;
         mPositions = mSavedPositions;
         mVelocities = mSavedVelocities;
         mRotations = mSavedRotations;
@@ -543,6 +713,16 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
     }
     result.mKineticEnergy = parts.mKinetic;
     result.mEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
+
+    result.mPlasticElements = mStepPlasticElements;
+    result.mBrokenLinks = mStepBrokenLinks;
+    if (mStepPlasticElements > 0)
+        result.mEvents = result.mEvents | ETetStepEvent::Yielded;
+    if (mStepBrokenLinks > 0)
+    {
+        result.mEvents = result.mEvents | ETetStepEvent::Fractured;
+        mQuietSteps = 0;
+    }
 
     // Sleep after mSleepStepCount quiet steps.
     const double sleep_energy = 0.5 * mFreeMass * mSettings.mSleepSpeed * mSettings.mSleepSpeed;
@@ -591,7 +771,7 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
     mSavedRotations = mRotations;
 
     const FemMaterialSettings& material = mMaterial.GetSettings();
-    const TetElementPassInput input{mMesh.GetTets(), mRest, &mMaterial.GetMaterialMatrix(), material.mModel};
+    const TetElementPassInput input = PassInput();
     TetStaticResult result;
     std::vector<Vec3> residual(node_count), delta_x(node_count);
     std::vector<Mat3> blocks(node_count);

@@ -13,12 +13,14 @@ namespace crumple::fem
 ///  - StVenantKirchhoff: P = F C:E, E = GreenStrain(F)
 ///  - CorotatedLinear:   P = R C:eps, eps = sym(R^T F) - I, R = PolarRotation(F); with the exact polar R this
 ///    equals 2 mu (F - R) + lambda tr(eps) R, the exact gradient of the corotated energy.
+/// With plastic strain eps_p the stress is that of the elastic strain: C:(E - eps_p), C:(eps - eps_p).
 /// @param[in] inModel           strain measure
 /// @param[in] inF               deformation gradient, 3 by 3
 /// @param[in] inRotation        polar rotation of inF (used by CorotatedLinear only), 3 by 3
 /// @param[in] inMaterialMatrix  C (Pa), 6 by 6
+/// @param[in] inPlasticStrain   eps_p (dimensionless), 3 by 3 symmetric, in the model's frame
 /// @return P (Pa), 3 by 3
 Mat3 FirstPiolaStress(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
-                      const Matrix6& inMaterialMatrix);
+                      const Matrix6& inMaterialMatrix, const Mat3& inPlasticStrain = Mat3::Zero());
 
 } // namespace crumple::fem

@@ -15,8 +15,9 @@ namespace crumple::fem
 /// @param[in] inF               deformation gradient, 3 by 3
 /// @param[in] inRotation        polar rotation of inF (used by CorotatedLinear only), 3 by 3
 /// @param[in] inMaterialMatrix  C (Pa), 6 by 6
+/// @param[in] inPlasticStrain   eps_p (dimensionless), 3 by 3 symmetric; psi is that of eps - eps_p
 /// @return psi (J/m^3), >= 0
 double StrainEnergyDensity(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
-                           const Matrix6& inMaterialMatrix);
+                           const Matrix6& inMaterialMatrix, const Mat3& inPlasticStrain = Mat3::Zero());
 
 } // namespace crumple::fem

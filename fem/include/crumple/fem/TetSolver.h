@@ -4,10 +4,14 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterial.h>
+#include <crumple/fem/FractureLinks.h>
+#include <crumple/fem/GroupPrincipalStress.h>
+#include <crumple/fem/TetFragment.h>
 #include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetLinearization.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem/TetSolverSettings.h>
+#include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/TetStepResult.h>
 
 #include <cstdint>
@@ -16,6 +20,8 @@
 
 namespace crumple::fem
 {
+
+struct TetElementPassInput; // private to the solvers (src/TetElementPass.h)
 
 /// A tetrahedral finite-element body (destructible prop): linear tetrahedra, lumped masses, the elasticity
 /// model of its FemMaterial, symplectic or implicit Euler. Node and element order are the mesh's; every loop
@@ -82,8 +88,16 @@ public:
     /// system
     double TotalEnergy() const { return KineticEnergy() + ElasticEnergy() + ExternalPotentialEnergy(); }
 
-    /// The rest mesh (connectivity, rest positions, groups)
+    /// The rest mesh as created (connectivity before any fracture, rest positions, groups)
     const TetMesh& GetMesh() const { return mMesh; }
+    /// Number of nodes #N now: the mesh's nodes plus the copies fracture made (see GetElementNodes())
+    int GetNodeCount() const { return static_cast<int>(mPositions.size()); }
+    /// Current element -> node connectivity, #T. Equal to the mesh's until a fracture: then the nodes on a
+    /// crack are duplicated and the elements on one side point to the copies. Element indices never change;
+    /// node i < GetMesh().GetNodeCount() keeps its index, copies are appended.
+    const std::vector<TetIndices>& GetElementNodes() const { return mElementNodes; }
+    /// Rest position (m, body frame) of every current node, #N: a copy has its original's
+    const std::vector<Vec3>& GetNodeRestPositions() const { return mNodeRestPositions; }
     /// The validated material
     const FemMaterial& GetMaterial() const { return mMaterial; }
     /// The settings, with gravity as last set by SetGravity()
@@ -98,6 +112,21 @@ public:
     const std::vector<double>& GetMasses() const { return mMasses; }
     /// Inverse masses (1/kg), #N; 0 for anchored nodes
     const std::vector<double>& GetInverseMasses() const { return mInverseMasses; }
+    /// Plastic strain of every element (in its model's frame: rotated for the corotated model), #T; empty when
+    /// the material has no plasticity (infinite yield stress)
+    const std::vector<Mat3>& GetPlasticStrains() const { return mPlasticStrains; }
+    /// The links fracture can break (empty for an unbreakable material)
+    const FractureLinks& GetFractureLinks() const { return mLinks; }
+    /// #L, 1 where a link is broken (empty for an unbreakable material)
+    const std::vector<std::uint8_t>& GetBrokenLinks() const { return mBroken; }
+    /// Number of broken links
+    int GetBrokenLinkCount() const;
+    /// Largest principal stress of each group's mean stress at the end of the last step, #G (empty for an
+    /// unbreakable material, zeros before the first step)
+    const std::vector<PrincipalStress>& GetGroupPrincipalStress() const { return mPrincipal; }
+    /// The connected pieces now (TetFragments), ordered by lowest group; one piece while nothing is broken.
+    /// O(#T); call it after a step that reported ETetStepEvent::Fractured.
+    std::vector<TetFragment> ComputeFragments() const;
     /// Element rest data, #T
     const std::vector<TetElementRest>& GetElementRest() const { return mRest; }
     /// Element rotations, #T: corotated frames after the last step as unit quaternions (identity for
@@ -113,6 +142,34 @@ public:
 
 private:
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
+
+    // Element pass input with the current connectivity and plastic strains.
+    TetElementPassInput PassInput() const;
+    // Density x rest volume per element (kg).
+    std::vector<double> ElementMasses() const;
+    // One step of plastic flow; returns the number of elements that flowed.
+    int FlowPlastically(double inDeltaTime);
+    // Rankine fracture on the current state; returns the number of links broken.
+    int Fracture();
+    // Moves node state onto a new connectivity after fracture.
+    void Reconnect(const FractureConnectivity& inConnectivity);
+    // Plastic flow and fracture after each symplectic sub-step or implicit piece.
+    void AfterSubStep(double inDeltaTime);
+    // What plasticity and fracture change, kept to restore a diverged step.
+    struct ShapeState
+    {
+        std::vector<TetIndices> mElementNodes;
+        std::vector<Vec3> mNodeRestPositions;
+        std::vector<double> mMasses;
+        std::vector<double> mInverseMasses;
+        std::vector<std::uint8_t> mFree;
+        std::vector<Vec3> mExternalForces;
+        std::vector<Mat3> mPlasticStrains;
+        std::vector<std::uint8_t> mBroken;
+        double mFreeMass = 0.0;
+    };
+    void SaveShape(ShapeState& outShape) const;
+    void RestoreShape(const ShapeState& inShape);
 
     // Marks that an input changed: wake up and take a new energy reference before the next step.
     void InputChanged();
@@ -134,6 +191,8 @@ private:
     EnergyParts MeasureEnergy();
 
     TetMesh mMesh;
+    std::vector<TetIndices> mElementNodes;  // current connectivity (fracture duplicates nodes)
+    std::vector<Vec3> mNodeRestPositions;   // rest position of each current node
     FemMaterial mMaterial;
     TetSolverSettings mSettings;
     std::vector<TetElementRest> mRest;
@@ -144,8 +203,16 @@ private:
     std::vector<Vec3> mVelocities;
     std::vector<Vec3> mExternalForces;
     std::vector<Quat> mRotations;
+    std::vector<Mat3> mPlasticStrains;       // #T, empty without plasticity
+    FractureLinks mLinks;                    // empty when unbreakable
+    std::vector<std::uint8_t> mBroken;       // #L
+    std::vector<Mat3> mElementStress;        // #T scratch of the fracture pass
+    std::vector<PrincipalStress> mPrincipal; // #G
     double mStableTimeStep = 0.0;
     double mFreeMass = 0.0;
+    int mStepPlasticElements = 0; // plastic flow events of the current step attempt
+    int mStepBrokenLinks = 0;     // links broken by the current step attempt
+    ShapeState mSavedShape;
 
     // Energy reference for divergence detection.
     double mReferenceEnergy = 0.0;

@@ -1,0 +1,29 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/fem/FractureLinks.h>
+
+#include <span>
+
+namespace crumple::fem
+{
+
+/// The largest principal stress of an element group and its direction.
+struct PrincipalStress
+{
+    double mValue = 0.0;               ///< Largest eigenvalue of the stress tensor (Pa), > 0 is tension
+    Vec3 mDirection = Vec3::UnitX();   ///< Unit eigenvector (sign arbitrary), world axes
+};
+
+/// Largest principal stress of each group's rest-volume-weighted mean stress, by Eigen's closed-form
+/// symmetric 3x3 eigen solver (Mueller et al. 2004 and the GPU destruction paper, section IV.B, take the
+/// largest tensile eigenvalue as the fracture measure).
+/// @param[in]  inLinks          links of the rest mesh (groups and their elements)
+/// @param[in]  inElementStress  #T Cauchy stresses (Pa), symmetric 3 by 3
+/// @param[in]  inRestVolumes    #T rest volumes (m^3)
+/// @param[out] outPrincipal     #G, overwritten
+void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
+                          std::span<const double> inRestVolumes, std::span<PrincipalStress> outPrincipal);
+
+} // namespace crumple::fem

@@ -1,0 +1,95 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/TetFragment.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+int Root(std::vector<int>& ioParent, int inItem)
+{
+    while (ioParent[inItem] != inItem)
+    {
+        ioParent[inItem] = ioParent[ioParent[inItem]];
+        inItem = ioParent[inItem];
+    }
+    return inItem;
+}
+
+} // namespace
+
+std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const std::uint8_t> inBroken,
+                                      std::span<const TetIndices> inElementNodes,
+                                      std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
+                                      std::span<const double> inInverseMasses)
+{
+    // Groups joined by unbroken links; each root is the lowest group of its component.
+    const int group_count = inLinks.GetGroupCount();
+    std::vector<int> parent(group_count);
+    std::iota(parent.begin(), parent.end(), 0);
+    for (int link = 0; link < inLinks.GetLinkCount(); ++link)
+        if (inBroken[link] == 0)
+        {
+            const int a = Root(parent, inLinks.mLinkGroups[link][0]);
+            const int b = Root(parent, inLinks.mLinkGroups[link][1]);
+            parent[std::max(a, b)] = std::min(a, b);
+        }
+
+    // Fragment index per component, in order of lowest group.
+    std::vector<int> fragment_of_group(group_count, -1);
+    std::vector<TetFragment> fragments;
+    for (int group = 0; group < group_count; ++group)
+    {
+        const int root = Root(parent, group);
+        if (fragment_of_group[root] < 0)
+        {
+            fragment_of_group[root] = static_cast<int>(fragments.size());
+            fragments.emplace_back();
+        }
+        fragment_of_group[group] = fragment_of_group[root];
+        fragments[fragment_of_group[group]].mGroups.push_back(group);
+    }
+
+    // Mass, first and second moments per fragment, element by element (element order: deterministic sums).
+    std::vector<Mat3> second_moments(fragments.size(), Mat3::Zero());
+    for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
+    {
+        TetFragment& fragment = fragments[fragment_of_group[inLinks.mGroupOfElement[tet]]];
+        fragment.mElements.push_back(static_cast<int>(tet));
+        const double mass = inElementMasses[tet];
+        Vec3 sum = Vec3::Zero();
+        Mat3 outer = Mat3::Zero();
+        for (int node : inElementNodes[tet])
+        {
+            sum += inPositions[node];
+            outer += inPositions[node] * inPositions[node].transpose();
+            fragment.mNodes.push_back(node);
+        }
+        fragment.mMass += mass;
+        fragment.mCenterOfMass += 0.25 * mass * sum;
+        second_moments[&fragment - fragments.data()] += mass / 20.0 * (outer + sum * sum.transpose());
+    }
+
+    // Centre of mass, inertia about it, node lists, anchoring.
+    for (std::size_t index = 0; index < fragments.size(); ++index)
+    {
+        TetFragment& fragment = fragments[index];
+        fragment.mCenterOfMass /= fragment.mMass;
+        const Mat3 central = second_moments[index] -
+                             fragment.mMass * fragment.mCenterOfMass * fragment.mCenterOfMass.transpose();
+        fragment.mInertia = central.trace() * Mat3::Identity() - central;
+        fragment.mInertia = 0.5 * (fragment.mInertia + fragment.mInertia.transpose());
+        std::sort(fragment.mNodes.begin(), fragment.mNodes.end());
+        fragment.mNodes.erase(std::unique(fragment.mNodes.begin(), fragment.mNodes.end()), fragment.mNodes.end());
+        fragment.mAnchored = std::any_of(fragment.mNodes.begin(), fragment.mNodes.end(),
+                                         [&](int inNode) { return inInverseMasses[inNode] == 0.0; });
+    }
+    return fragments;
+}
+
+} // namespace crumple::fem

@@ -1,0 +1,10 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# Tests of plasticity, fracture and fragments (paths relative to tests/).
+set(CRUMPLE_FEM_FRACTURE_TESTS
+    fem/FractureLinksTest.cpp
+    fem/FractureTopologyTest.cpp
+    fem/PlasticFlowTest.cpp
+    fem/TetFractureTest.cpp
+    fem/TetFragmentsTest.cpp
+    fem/TetPlasticityTest.cpp)
