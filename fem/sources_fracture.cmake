@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
-# Plasticity, fracture and fragments of crumple::fem (paths relative to fem/).
+# Plasticity, fracture, fragments and collision impulses of crumple::fem (paths relative to fem/).
 set(CRUMPLE_FEM_FRACTURE_SOURCES
+    src/CollisionImpulses.cpp
     src/FractureLinks.cpp
     src/FractureTopology.cpp
     src/GroupPrincipalStress.cpp

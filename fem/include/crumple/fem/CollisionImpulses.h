@@ -1,0 +1,46 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/fem/TetMesh.h>
+#include <crumple/plugin/Collision.h>
+
+#include <span>
+#include <vector>
+
+namespace crumple::fem
+{
+
+class TetSolver;
+
+/// An impulse on one node of a prop.
+struct NodalImpulse
+{
+    int mNode = 0;                  ///< Current node index
+    Vec3 mImpulse = Vec3::Zero();   ///< N s, in the prop's body frame
+};
+
+/// Turns the contacts of a dispatched collision (the core's plugin::Collision) into nodal impulses on a
+/// prop. The prop's solver works in its body's frame, so each contact is read in that frame: its local point
+/// (mLocalPointOnA/B) and its impulse along the local normal (+j n on body A, -j n on body B). Each contact
+/// impulse goes to the four nodes of the element that contains its point, by the point's barycentric
+/// coordinates (of the nearest element, with negative coordinates clamped and the rest renormalised, when the
+/// point lies on or just off the surface). Inside an element this keeps the total impulse and its moment
+/// about any point exactly. O(#contacts x #T).
+/// @param[in] inCollision     a collision one of whose bodies is the prop
+/// @param[in] inPropBody      the prop's body id (mBodyA or mBodyB of inCollision)
+/// @param[in] inElementNodes  #T current connectivity (TetSolver::GetElementNodes())
+/// @param[in] inPositions     #N current node positions (m, body frame)
+/// @return impulses in contact order, four per contact; refused when the prop is not in the collision, the
+///         mesh is empty, or a contact is not finite
+Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
+                                                         plugin::BodyId inPropBody,
+                                                         std::span<const TetIndices> inElementNodes,
+                                                         std::span<const Vec3> inPositions);
+
+/// Applies CollisionNodalImpulses() to a solver (waking it). All or nothing: a refused collision changes
+/// nothing.
+Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody);
+
+} // namespace crumple::fem

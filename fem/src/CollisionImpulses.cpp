@@ -1,0 +1,98 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/CollisionImpulses.h>
+#include <crumple/fem/TetSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+// Barycentric coordinates of inPoint in the tetrahedron inCorners (weights of corners 0..3); NaN weights
+// for a degenerate element.
+std::array<double, 4> Barycentric(const std::array<Vec3, 4>& inCorners, const Vec3& inPoint)
+{
+    Mat3 edges;
+    edges << inCorners[1] - inCorners[0], inCorners[2] - inCorners[0], inCorners[3] - inCorners[0];
+    const Vec3 local = edges.partialPivLu().solve(inPoint - inCorners[0]);
+    return {1.0 - local.sum(), local.x(), local.y(), local.z()};
+}
+
+} // namespace
+
+Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
+                                                         plugin::BodyId inPropBody,
+                                                         std::span<const TetIndices> inElementNodes,
+                                                         std::span<const Vec3> inPositions)
+{
+    const bool is_a = inCollision.mBodyA == inPropBody;
+    if (!is_a && inCollision.mBodyB != inPropBody)
+        return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: body " +
+                                                      std::to_string(inPropBody.mValue) +
+                                                      " is not one of the collision's bodies");
+    if (inElementNodes.empty() || inPositions.empty())
+        return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the prop has no element");
+
+    std::vector<NodalImpulse> impulses;
+    impulses.reserve(4 * inCollision.mContacts.size());
+    for (std::size_t index = 0; index < inCollision.mContacts.size(); ++index)
+    {
+        // The contact in the prop's body frame: +j n on A, -j n on B.
+        const plugin::CollisionContact& contact = inCollision.mContacts[index];
+        const Vec3 point = is_a ? contact.mLocalPointOnA : contact.mLocalPointOnB;
+        const Vec3 impulse = (is_a ? contact.mImpulse : -contact.mImpulse) *
+                             (is_a ? contact.mLocalNormalOnA : contact.mLocalNormalOnB);
+        if (!IsFinite(point) || !IsFinite(impulse))
+            return MakeError(EError::NonFinite,
+                             "CollisionNodalImpulses: contact " + std::to_string(index) + " is not finite");
+
+        // The element whose smallest barycentric weight is largest: the containing one if any.
+        int best = -1;
+        std::array<double, 4> best_weights{};
+        double best_min = -std::numeric_limits<double>::infinity();
+        for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
+        {
+            const TetIndices& n = inElementNodes[tet];
+            const std::array<double, 4> weights =
+                Barycentric({inPositions[n[0]], inPositions[n[1]], inPositions[n[2]], inPositions[n[3]]}, point);
+            const double smallest = *std::min_element(weights.begin(), weights.end());
+            if (smallest > best_min) // NaN (degenerate) never wins
+            {
+                best_min = smallest;
+                best = static_cast<int>(tet);
+                best_weights = weights;
+            }
+        }
+        if (best < 0)
+            return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: every element is degenerate");
+
+        // Outside the element: clamp and renormalise so the impulse stays on its nodes, in full.
+        double total = 0.0;
+        for (double& weight : best_weights)
+            total += (weight = std::max(weight, 0.0));
+        for (int corner = 0; corner < 4; ++corner)
+            impulses.push_back({inElementNodes[best][corner], best_weights[corner] / total * impulse});
+    }
+    return impulses;
+}
+
+Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody)
+{
+    Result<std::vector<NodalImpulse>> impulses =
+        CollisionNodalImpulses(inCollision, inPropBody, ioSolver.GetElementNodes(), ioSolver.GetPositions());
+    if (impulses.HasError())
+        return impulses.GetError();
+    // Every node index comes from the solver's own connectivity and every impulse is finite: nothing below can
+    // be refused, so the collision applies in full.
+    for (const NodalImpulse& impulse : impulses.Get())
+        if (Status status = ioSolver.ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
+            return status;
+    return Status::Ok();
+}
+
+} // namespace crumple::fem
