@@ -20,6 +20,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/StrainEnergyDensity.cpp
     src/TetElementPass.cpp
     src/TetElementRest.cpp
+    src/TetFence.cpp
     src/TetGrid.cpp
     src/TetMesh.cpp
     src/TetNodalForces.cpp

@@ -47,6 +47,11 @@ int TetGridNode(const std::array<int, 3>& inCellCount, int inI, int inJ, int inK
 
 Result<TetMesh> TetGrid(const TetGridSettings& inSettings)
 {
+    return TetGridCells(inSettings, {});
+}
+
+Result<TetMesh> TetGridCells(const TetGridSettings& inSettings, std::span<const std::uint8_t> inKeepCells)
+{
     // Refuse a box that is not finite, has no extent or too many cells.
     if (!IsFinite(inSettings.mOrigin) || !IsFinite(inSettings.mSize))
         return MakeError(EError::NonFinite, "TetGridSettings: mOrigin and mSize must be finite");
@@ -71,6 +76,10 @@ Result<TetMesh> TetGrid(const TetGridSettings& inSettings)
                                                       " cells is more than the 2^22 allowed");
     if (inSettings.mSplit != ECubeSplit::Five && inSettings.mSplit != ECubeSplit::Six)
         return MakeError(EError::InvalidArgument, "TetGridSettings.mSplit is not an ECubeSplit");
+    if (!inKeepCells.empty() && static_cast<long long>(inKeepCells.size()) != cells)
+        return MakeError(EError::InvalidArgument, "TetGridCells: " + std::to_string(inKeepCells.size()) +
+                                                      " cell flags for " + std::to_string(cells) + " cells");
+    const auto kept = [&](long long inCell) { return inKeepCells.empty() || inKeepCells[inCell] != 0; };
 
     // Nodes on the lattice, x fastest.
     const std::array<int, 3>& n = inSettings.mCellCount;
@@ -93,6 +102,8 @@ Result<TetMesh> TetGrid(const TetGridSettings& inSettings)
             for (int i = 0; i < n[0]; ++i)
             {
                 const int group = i + n[0] * (j + n[1] * k);
+                if (!kept(group))
+                    continue;
                 const bool odd = ((i + j + k) & 1) != 0;
                 for (int t = 0; t < per_cell; ++t)
                 {
@@ -115,6 +126,28 @@ Result<TetMesh> TetGrid(const TetGridSettings& inSettings)
                 }
             }
 
+    if (tets.empty())
+        return MakeError(EError::InvalidArgument, "TetGridCells: no cell is kept");
+
+    // Without a mask every lattice node is used; with one, drop the unused nodes, keeping lattice order.
+    if (!inKeepCells.empty())
+    {
+        std::vector<int> new_index(positions.size(), -1);
+        for (const TetIndices& tet : tets)
+            for (int node : tet)
+                new_index[node] = 0;
+        std::vector<Vec3> used;
+        for (std::size_t node = 0; node < positions.size(); ++node)
+            if (new_index[node] == 0)
+            {
+                new_index[node] = static_cast<int>(used.size());
+                used.push_back(positions[node]);
+            }
+        for (TetIndices& tet : tets)
+            for (int& node : tet)
+                node = new_index[node];
+        positions = std::move(used);
+    }
     return TetMesh::Create(std::move(positions), std::move(tets), std::move(groups));
 }
 

@@ -7,6 +7,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/StableTimeStepTest.cpp
     fem/TetCantileverTest.cpp
     fem/TetEnergyTest.cpp
+    fem/TetFenceTest.cpp
     fem/TetGridTest.cpp
     fem/TetMeshTest.cpp
     fem/TetNodalForcesTest.cpp

@@ -5,6 +5,7 @@
 #include <crumple/fem/TetMesh.h>
 
 #include <cstdint>
+#include <span>
 
 namespace crumple::fem
 {
@@ -40,6 +41,13 @@ struct TetGridSettings
 /// @param[in] inSettings  the box
 /// @return (n_x+1)(n_y+1)(n_z+1) nodes and 5 or 6 n_x n_y n_z elements
 Result<TetMesh> TetGrid(const TetGridSettings& inSettings);
+
+/// TetGrid() restricted to the cells whose flag in inKeepCells is nonzero (cell (i, j, k) at index
+/// i + n_x (j + n_y k)); the nodes no kept cell uses are dropped and the others keep lattice order, so
+/// TetGridNode() does not apply unless every cell is kept. Groups stay the cell indices. Cells that share
+/// only an edge or a corner are joined there (conforming). Refused: the TetGrid() cases, a flag count that
+/// is not the cell count, no cell kept. An empty span keeps every cell (TetGrid()).
+Result<TetMesh> TetGridCells(const TetGridSettings& inSettings, std::span<const std::uint8_t> inKeepCells);
 
 /// Index of grid node (i, j, k) in a TetGrid with inCellCount cells: i + (n_x + 1)(j + (n_y + 1) k).
 int TetGridNode(const std::array<int, 3>& inCellCount, int inI, int inJ, int inK);
