@@ -7,3 +7,11 @@ set(CRUMPLE_FEM_IO_TESTS
     fem/SurfaceMeshTest.cpp
     fem/SurfaceReadBack.cpp
     fem/TetBoundaryTest.cpp)
+# crumple::fem_import (assimp + the tetgen program) has its own executable, test_fem_import.
+if(TARGET crumple::fem_import)
+    crumple_add_test(fem_import
+        fem/import/ImportTestShapes.cpp
+        fem/import/LoadSurfaceMeshTest.cpp
+        fem/import/TetrahedralizeTest.cpp
+        LINK crumple::fem_import)
+endif()
