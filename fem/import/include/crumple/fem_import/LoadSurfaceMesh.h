@@ -1,0 +1,31 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/fem/SurfaceMesh.h>
+
+#include <filesystem>
+
+namespace crumple::fem
+{
+
+/// Reads a closed triangle surface with assimp (crumple::fem_import links it): OBJ, PLY, STL, glTF / GLB, OFF
+/// and the other formats assimp knows. Polygons are triangulated; points and lines are ignored. All meshes of
+/// the scene are merged, each placed by its node transforms (applied in double precision). Vertices with
+/// exactly the same position are joined across meshes (so faces with separate normals or UVs share their
+/// corners), in order of first appearance; a triangle that then repeats a vertex (zero area) is dropped.
+///
+/// Units: positions are taken as metres, as stored, without any unit conversion (glTF is metres by its
+/// specification; OBJ, PLY and STL carry no unit). Assimp stores positions as 32-bit floats, so a file's
+/// doubles arrive rounded to float precision (about 6e-8 relative).
+///
+/// Refused: a missing file (EError::IoError), a file assimp cannot parse (EError::CorruptData with assimp's
+/// message), no triangle, a non-finite coordinate, or a surface that ValidateClosedSurface refuses, such as
+/// an open one (the message counts the edges not used by exactly two triangles and gives one by its end
+/// positions). Every message starts with the path.
+/// @param[in] inPath  the file
+/// @return #V joined vertex positions (m) and #F triangles (winding as in the file)
+Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath);
+
+} // namespace crumple::fem

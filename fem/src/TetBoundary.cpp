@@ -1,0 +1,69 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/TetBoundary.h>
+
+#include <algorithm>
+
+namespace crumple::fem
+{
+
+namespace
+{
+
+// The faces of a positively oriented element, outward, indexed by the corner they are opposite to.
+constexpr int cFaceCorners[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+// One element face: its sorted node triple (the key) and where it came from (element * 4 + face).
+struct FaceKey
+{
+    std::array<int, 3> mSorted;
+    long long mOrigin;
+
+    bool operator<(const FaceKey& inOther) const
+    {
+        return mSorted != inOther.mSorted ? mSorted < inOther.mSorted : mOrigin < inOther.mOrigin;
+    }
+};
+
+} // namespace
+
+std::vector<TriangleIndices> TetBoundary(std::span<const TetIndices> inTets)
+{
+    // Every face with its sorted key; sorting groups the copies of a face together.
+    std::vector<FaceKey> faces;
+    faces.reserve(4 * inTets.size());
+    for (std::size_t tet = 0; tet < inTets.size(); ++tet)
+        for (int face = 0; face < 4; ++face)
+        {
+            std::array<int, 3> sorted{inTets[tet][cFaceCorners[face][0]], inTets[tet][cFaceCorners[face][1]],
+                                      inTets[tet][cFaceCorners[face][2]]};
+            std::sort(sorted.begin(), sorted.end());
+            faces.push_back({sorted, static_cast<long long>(4 * tet + face)});
+        }
+    std::sort(faces.begin(), faces.end());
+
+    // Faces whose key occurs once are boundary; flag them by origin so the output follows element order.
+    std::vector<char> is_boundary(faces.size(), 0);
+    for (std::size_t first = 0; first < faces.size();)
+    {
+        std::size_t last = first + 1;
+        while (last < faces.size() && faces[last].mSorted == faces[first].mSorted)
+            ++last;
+        if (last - first == 1)
+            is_boundary[static_cast<std::size_t>(faces[first].mOrigin)] = 1;
+        first = last;
+    }
+
+    // Boundary triangles in element, then face order, with the element's outward winding.
+    std::vector<TriangleIndices> boundary;
+    for (std::size_t origin = 0; origin < is_boundary.size(); ++origin)
+        if (is_boundary[origin])
+        {
+            const TetIndices& tet = inTets[origin / 4];
+            const int* corners = cFaceCorners[origin % 4];
+            boundary.push_back({tet[corners[0]], tet[corners[1]], tet[corners[2]]});
+        }
+    return boundary;
+}
+
+} // namespace crumple::fem
