@@ -1,0 +1,6 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# Tests of the procedural edges and prop material presets of crumple::fem (paths relative to tests/).
+set(CRUMPLE_FEM_EDGES_TESTS
+    fem/ProceduralEdgeSettingsTest.cpp
+    fem/SplitMix64Test.cpp)
