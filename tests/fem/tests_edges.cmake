@@ -2,5 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Tests of the procedural edges and prop material presets of crumple::fem (paths relative to tests/).
 set(CRUMPLE_FEM_EDGES_TESTS
+    fem/EmbeddedMeshTest.cpp
     fem/ProceduralEdgeSettingsTest.cpp
-    fem/SplitMix64Test.cpp)
+    fem/SplitMix64Test.cpp
+    fem/TriangleNormalsTest.cpp)
