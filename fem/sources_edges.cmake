@@ -2,6 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Procedural broken edges (display mesh embedded in the tets) and prop material presets (paths relative to fem/).
 set(CRUMPLE_FEM_EDGES_SOURCES
+    src/CellCountForSections.cpp
     src/EmbeddedMesh.cpp
+    src/ProceduralEdgeMesh.cpp
     src/ProceduralEdgeSettings.cpp
-    src/TriangleNormals.cpp)
+    src/TriangleNormals.cpp
+    src/WallAxes.cpp)
