@@ -4,7 +4,9 @@
 set(CRUMPLE_FEM_EDGES_SOURCES
     src/CellCountForSections.cpp
     src/EmbeddedMesh.cpp
+    src/EPropMaterial.cpp
     src/ProceduralEdgeMesh.cpp
     src/ProceduralEdgeSettings.cpp
+    src/PropMaterialPreset.cpp
     src/TriangleNormals.cpp
     src/WallAxes.cpp)

@@ -6,6 +6,7 @@ set(CRUMPLE_FEM_EDGES_TESTS
     fem/EmbeddedMeshTest.cpp
     fem/ProceduralEdgeMeshTest.cpp
     fem/ProceduralEdgeSettingsTest.cpp
+    fem/PropMaterialPresetTest.cpp
     fem/SplitMix64Test.cpp
     fem/TriangleNormalsTest.cpp
     fem/WallAxesTest.cpp)
