@@ -48,14 +48,16 @@ Result<CantileverScene> CantileverScene::Create(const CantileverSettings& inSett
     for (int k = 0; k <= n; ++k)
         for (int j = 0; j <= n; ++j)
         {
-            if (Status fixed = scene.mSolver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true); !fixed)
+            if (Status fixed = scene.mSolver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true);
+                !fixed)
                 return fixed.GetError();
             scene.mTip.push_back(TetGridNode(grid.mCellCount, inSettings.mLengthCells, j, k));
-            scene.mWeights.push_back((j == 0 || j == n ? 0.5 : 1.0) * (k == 0 || k == n ? 0.5 : 1.0) / (n * n));
+            scene.mWeights.push_back((j == 0 || j == n ? 0.5 : 1.0) * (k == 0 || k == n ? 0.5 : 1.0) /
+                                     (n * n));
         }
     for (std::size_t i = 0; i < scene.mTip.size(); ++i)
-        if (Status force = scene.mSolver.SetExternalForce(scene.mTip[i],
-                                                          Vec3(0.0, 0.0, -inSettings.mLoad * scene.mWeights[i]));
+        if (Status force = scene.mSolver.SetExternalForce(
+                scene.mTip[i], Vec3(0.0, 0.0, -inSettings.mLoad * scene.mWeights[i]));
             !force)
             return force.GetError();
     return scene;
@@ -67,7 +69,8 @@ double CantileverScene::TipDeflection() const
     for (std::size_t i = 0; i < mTip.size(); ++i)
     {
         const int node = mTip[i];
-        deflection -= mWeights[i] * (mSolver.GetPositions()[node].z() - mSolver.GetMesh().GetRestPositions()[node].z());
+        deflection -=
+            mWeights[i] * (mSolver.GetPositions()[node].z() - mSolver.GetMesh().GetRestPositions()[node].z());
     }
     return deflection;
 }
@@ -83,7 +86,8 @@ double TimoshenkoDeflection(const CantileverSettings& inSettings)
     const FemMaterialSettings& material = inSettings.mMaterial;
     const double length = inSettings.mLength;
     const double shear = material.mYoungsModulus / (2.0 * (1.0 + material.mPoissonRatio));
-    return inSettings.mLoad * length * length * length / (3.0 * material.mYoungsModulus * CantileverInertia(inSettings)) +
+    return inSettings.mLoad * length * length * length /
+               (3.0 * material.mYoungsModulus * CantileverInertia(inSettings)) +
            inSettings.mLoad * length / (5.0 / 6.0 * shear * inSettings.mSide * inSettings.mSide);
 }
 

@@ -4,6 +4,7 @@
 
 #include <crumple/fem/TetSolver.h>
 
+#include <utility>
 #include <vector>
 
 namespace crumple::common
@@ -22,12 +23,12 @@ fem::TetSolverSettings CantileverSolverSettings();
 /// trapezoidal area weights. No gravity, no sleep. Used by the cantilever test and the FEM benchmark.
 struct CantileverSettings
 {
-    double mLength = 1.0;    ///< Beam length along x (m)
-    double mSide = 0.1;      ///< Side of the square section (m)
-    double mLoad = 1000.0;   ///< Total tip load (N), applied downwards (-z)
-    int mLengthCells = 10;   ///< Cells along the length, >= 1
-    int mSectionCells = 1;   ///< Cells along each side of the section, >= 1
-    fem::FemMaterialSettings mMaterial = CantileverSteel();      ///< The beam's material
+    double mLength = 1.0;                                   ///< Beam length along x (m)
+    double mSide = 0.1;                                     ///< Side of the square section (m)
+    double mLoad = 1000.0;                                  ///< Total tip load (N), applied downwards (-z)
+    int mLengthCells = 10;                                  ///< Cells along the length, >= 1
+    int mSectionCells = 1;                                  ///< Cells along each side of the section, >= 1
+    fem::FemMaterialSettings mMaterial = CantileverSteel(); ///< The beam's material
     fem::TetSolverSettings mSolver = CantileverSolverSettings(); ///< Integrator and solver settings
 };
 
@@ -42,15 +43,19 @@ public:
     /// Area-weighted mean vertical displacement of the tip face (m, positive down)
     double TipDeflection() const;
 
+    /// The beam's solver: step it, solve statics, read positions
     fem::TetSolver& GetSolver() { return mSolver; }
     const fem::TetSolver& GetSolver() const { return mSolver; }
+    /// The settings it was built from
     const CantileverSettings& GetSettings() const { return mSettings; }
     /// Tip-face nodes, (n+1)^2 for n section cells
     const std::vector<int>& GetTipNodes() const { return mTip; }
 
 private:
     CantileverScene(const CantileverSettings& inSettings, fem::TetSolver inSolver)
-        : mSettings(inSettings), mSolver(std::move(inSolver)) {}
+        : mSettings(inSettings), mSolver(std::move(inSolver))
+    {
+    }
 
     CantileverSettings mSettings;
     fem::TetSolver mSolver;

@@ -138,9 +138,10 @@ TEST_CASE("Cantilever: static tip deflection converges towards Timoshenko beam t
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         WARN("cantilever " << 10 * section << "x" << section << "x" << section << " cells ("
-                           << beam.GetSolver().GetMesh().GetTetCount() << " tets): tip deflection " << deflection
-                           << " m, Timoshenko " << reference << " m, error " << 100.0 * error << " % ("
-                           << result.Get().mSolverIterations << " CG iterations, " << seconds << " s)");
+                           << beam.GetSolver().GetMesh().GetTetCount() << " tets): tip deflection "
+                           << deflection << " m, Timoshenko " << reference << " m, error " << 100.0 * error
+                           << " % (" << result.Get().mSolverIterations << " CG iterations, " << seconds
+                           << " s)");
         CHECK(error < 0.0);                      // stiffer than the beam, never softer
         CHECK(std::abs(error) < previous_error); // converging
         previous_error = std::abs(error);
