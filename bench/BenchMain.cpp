@@ -45,6 +45,7 @@ int main(int argc, char** argv)
     RunDentBenchmarks(table, options);
     RunImpulseBenchmarks(table, options);
     RunAdapterBenchmarks(table, options);
+    RunFemBenchmarks(table, options);
     table.Print();
     if (!csv.empty() && !table.WriteCsv(csv))
     {

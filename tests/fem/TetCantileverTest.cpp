@@ -3,7 +3,8 @@
 // The steel cantilever of the FEM issue: 1 m x 0.1 m x 0.1 m, E = 200 GPa, nu = 0.3, rho = 7850 kg/m^3,
 // clamped at x = 0 (every node of that face anchored), 1 kN downwards at the tip spread over the tip face by
 // area.
-#include <crumple/fem/TetGrid.h>
+#include "CantileverScene.h"
+
 #include <crumple/fem/TetSolver.h>
 
 #include <catch2/catch.hpp>
@@ -13,106 +14,53 @@
 
 using namespace crumple;
 using namespace crumple::fem;
+using common::CantileverScene;
 
 namespace
 {
 
-constexpr double cLength = 1.0;
-constexpr double cSide = 0.1;
-constexpr double cYoung = 200.0e9;
-constexpr double cPoisson = 0.3;
-constexpr double cDensity = 7850.0;
 constexpr double cLoad = 1000.0;
 constexpr double cPi = 3.14159265358979323846;
+
+/// The issue's cantilever (tests/common/CantileverScene.h) with its defaults: steel, 1 kN at the tip.
+const common::CantileverSettings cBeam;
 
 /// Timoshenko tip deflection PL^3 / (3EI) + PL / (kappa G A), kappa = 5/6 (m).
 double TimoshenkoDeflection()
 {
-    const double inertia = cSide * cSide * cSide * cSide / 12.0;
-    const double shear = cYoung / (2.0 * (1.0 + cPoisson));
-    return cLoad * cLength * cLength * cLength / (3.0 * cYoung * inertia) +
-           cLoad * cLength / (5.0 / 6.0 * shear * cSide * cSide);
+    return common::TimoshenkoDeflection(cBeam);
 }
 
 /// Euler-Bernoulli first bending frequency (1.8751^2 / 2 pi) sqrt(EI / (rho A L^4)) (Hz).
 double EulerBernoulliFrequency()
 {
-    const double inertia = cSide * cSide * cSide * cSide / 12.0;
-    const double beta = 1.875104069;
-    return beta * beta / (2.0 * cPi) *
-           std::sqrt(cYoung * inertia / (cDensity * cSide * cSide * cLength * cLength * cLength * cLength));
+    return common::EulerBernoulliFrequency(cBeam);
 }
 
-/// Dunkerley combination of the Euler-Bernoulli frequency with that of a pure shear cantilever,
-/// 1/f^2 = 1/f_EB^2 + 1/f_s^2, f_s = sqrt(kappa G / rho) / (4 L): an estimate of the Timoshenko frequency
-/// (Hz).
+/// Dunkerley estimate of the Timoshenko frequency (Hz), see common::ShearCorrectedFrequency.
 double ShearCorrectedFrequency()
 {
-    const double shear = cYoung / (2.0 * (1.0 + cPoisson));
-    const double f_shear = std::sqrt(5.0 / 6.0 * shear / cDensity) / (4.0 * cLength);
-    const double f_bending = EulerBernoulliFrequency();
-    return 1.0 / std::sqrt(1.0 / (f_bending * f_bending) + 1.0 / (f_shear * f_shear));
+    return common::ShearCorrectedFrequency(cBeam);
 }
-
-struct Cantilever
-{
-    TetSolver mSolver;
-    std::vector<int> mTip;        // tip-face nodes
-    std::vector<double> mWeights; // their area weights, summing to 1
-};
 
 /// A cantilever of inLengthCells x inSectionCells x inSectionCells five-tet cells, undamped, no gravity, tip
 /// load set.
-Cantilever MakeCantilever(int inLengthCells, int inSectionCells, EIntegrator inIntegrator)
+CantileverScene MakeCantilever(int inLengthCells, int inSectionCells, EIntegrator inIntegrator)
 {
-    TetGridSettings grid;
-    grid.mSize = Vec3(cLength, cSide, cSide);
-    grid.mCellCount = {inLengthCells, inSectionCells, inSectionCells};
-    FemMaterialSettings steel;
-    steel.mYoungsModulus = cYoung;
-    steel.mPoissonRatio = cPoisson;
-    steel.mDensity = cDensity;
-    TetSolverSettings settings;
-    settings.mIntegrator = inIntegrator;
-    settings.mGravity = Vec3::Zero();
-    settings.mMaxSubSteps = 1000000;
-    settings.mSleepSpeed = 0.0;
-    Cantilever beam{TetSolver::Create(TetGrid(grid).Get(), steel, settings).Get(), {}, {}};
-
-    // Clamp x = 0; the tip load by trapezoidal area weights over the tip face.
-    const int n = inSectionCells;
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-        {
-            REQUIRE(beam.mSolver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
-            beam.mTip.push_back(TetGridNode(grid.mCellCount, inLengthCells, j, k));
-            beam.mWeights.push_back((j == 0 || j == n ? 0.5 : 1.0) * (k == 0 || k == n ? 0.5 : 1.0) /
-                                    (n * n));
-        }
-    for (std::size_t i = 0; i < beam.mTip.size(); ++i)
-        REQUIRE(
-            beam.mSolver.SetExternalForce(beam.mTip[i], Vec3(0.0, 0.0, -cLoad * beam.mWeights[i])).IsValid());
-    return beam;
-}
-
-/// Area-weighted mean vertical displacement of the tip face (m, positive down).
-double TipDeflection(const Cantilever& inBeam)
-{
-    double deflection = 0.0;
-    for (std::size_t i = 0; i < inBeam.mTip.size(); ++i)
-    {
-        const int node = inBeam.mTip[i];
-        deflection -= inBeam.mWeights[i] * (inBeam.mSolver.GetPositions()[node].z() -
-                                            inBeam.mSolver.GetMesh().GetRestPositions()[node].z());
-    }
-    return deflection;
+    common::CantileverSettings settings = cBeam;
+    settings.mLengthCells = inLengthCells;
+    settings.mSectionCells = inSectionCells;
+    settings.mSolver.mIntegrator = inIntegrator;
+    Result<CantileverScene> beam = CantileverScene::Create(settings);
+    REQUIRE(beam.IsValid());
+    return std::move(beam).Get();
 }
 
 /// The FE model's first eigenfrequency (Hz, lumped mass) by inverse iteration from the static tip-load shape,
 /// each iteration a SolveStatic under the load M u; the Rayleigh quotient of the last iterate.
-double InverseIterationFrequency(Cantilever& ioBeam, int inIterations)
+double InverseIterationFrequency(CantileverScene& ioBeam, int inIterations)
 {
-    TetSolver& solver = ioBeam.mSolver;
+    TetSolver& solver = ioBeam.GetSolver();
     const std::vector<Vec3>& rest = solver.GetMesh().GetRestPositions();
     const std::vector<double>& mass = solver.GetMasses();
     const int node_count = solver.GetMesh().GetNodeCount();
@@ -150,18 +98,18 @@ double InverseIterationFrequency(Cantilever& ioBeam, int inIterations)
 /// First frequency (Hz) from a free vibration: release the static tip-load shape, integrate undamped with
 /// symplectic Euler and time two full periods of the tip between upward zero crossings (linear
 /// interpolation).
-double FreeVibrationFrequency(Cantilever& ioBeam, double inFrameTime, int inFrames)
+double FreeVibrationFrequency(CantileverScene& ioBeam, double inFrameTime, int inFrames)
 {
-    TetSolver& solver = ioBeam.mSolver;
+    TetSolver& solver = ioBeam.GetSolver();
     solver.ClearExternalForces();
     std::vector<double> crossings;
-    double previous = TipDeflection(ioBeam);
+    double previous = ioBeam.TipDeflection();
     for (int frame = 1; frame <= inFrames && crossings.size() < 3; ++frame)
     {
         Result<TetStepResult> step = solver.Step(inFrameTime);
         REQUIRE(step.IsValid());
         REQUIRE(step.Get().mEvents == ETetStepEvent::None);
-        const double deflection = TipDeflection(ioBeam);
+        const double deflection = ioBeam.TipDeflection();
         if (previous > 0.0 && deflection <= 0.0) // tip moving up through rest
             crossings.push_back((frame - 1 + previous / (previous - deflection)) * inFrameTime);
         previous = deflection;
@@ -182,17 +130,18 @@ TEST_CASE("Cantilever: static tip deflection converges towards Timoshenko beam t
     for (int section : sections)
     {
         const auto start = std::chrono::steady_clock::now();
-        Cantilever beam = MakeCantilever(10 * section, section, EIntegrator::ImplicitEuler);
-        Result<TetStaticResult> result = beam.mSolver.SolveStatic();
+        CantileverScene beam = MakeCantilever(10 * section, section, EIntegrator::ImplicitEuler);
+        Result<TetStaticResult> result = beam.GetSolver().SolveStatic();
         REQUIRE(result.IsValid());
-        const double deflection = TipDeflection(beam);
+        const double deflection = beam.TipDeflection();
         const double error = (deflection - reference) / reference;
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         WARN("cantilever " << 10 * section << "x" << section << "x" << section << " cells ("
-                           << beam.mSolver.GetMesh().GetTetCount() << " tets): tip deflection " << deflection
-                           << " m, Timoshenko " << reference << " m, error " << 100.0 * error << " % ("
-                           << result.Get().mSolverIterations << " CG iterations, " << seconds << " s)");
+                           << beam.GetSolver().GetMesh().GetTetCount() << " tets): tip deflection "
+                           << deflection << " m, Timoshenko " << reference << " m, error " << 100.0 * error
+                           << " % (" << result.Get().mSolverIterations << " CG iterations, " << seconds
+                           << " s)");
         CHECK(error < 0.0);                      // stiffer than the beam, never softer
         CHECK(std::abs(error) < previous_error); // converging
         previous_error = std::abs(error);
@@ -205,8 +154,8 @@ TEST_CASE("Cantilever: first bending frequency against Euler-Bernoulli", "[fem]"
 {
     // The FE model's frequency on the finest mesh by inverse iteration (static solves), against the analytic
     // value.
-    Cantilever fine = MakeCantilever(80, 8, EIntegrator::ImplicitEuler);
-    REQUIRE(fine.mSolver.SolveStatic().IsValid());
+    CantileverScene fine = MakeCantilever(80, 8, EIntegrator::ImplicitEuler);
+    REQUIRE(fine.GetSolver().SolveStatic().IsValid());
     const double f_fine = InverseIterationFrequency(fine, 2);
     const double f_bernoulli = EulerBernoulliFrequency(); // 81.5 Hz
     const double f_shear = ShearCorrectedFrequency();     // 81.0 Hz
@@ -219,13 +168,13 @@ TEST_CASE("Cantilever: first bending frequency against Euler-Bernoulli", "[fem]"
 
     // The dynamics agree with the stiffness: the free vibration of the 20 x 2 x 2 mesh under symplectic Euler
     // has the frequency the inverse iteration finds for that mesh.
-    Cantilever coarse = MakeCantilever(20, 2, EIntegrator::SymplecticEuler);
-    REQUIRE(coarse.mSolver.SolveStatic().IsValid());
-    const std::vector<Vec3> released = coarse.mSolver.GetPositions();
-    Cantilever coarse_modal = MakeCantilever(20, 2, EIntegrator::ImplicitEuler);
-    REQUIRE(coarse_modal.mSolver.SolveStatic().IsValid());
+    CantileverScene coarse = MakeCantilever(20, 2, EIntegrator::SymplecticEuler);
+    REQUIRE(coarse.GetSolver().SolveStatic().IsValid());
+    const std::vector<Vec3> released = coarse.GetSolver().GetPositions();
+    CantileverScene coarse_modal = MakeCantilever(20, 2, EIntegrator::ImplicitEuler);
+    REQUIRE(coarse_modal.GetSolver().SolveStatic().IsValid());
     const double f_modal = InverseIterationFrequency(coarse_modal, 3);
-    REQUIRE(coarse.mSolver.SetPositions(released).IsValid());
+    REQUIRE(coarse.GetSolver().SetPositions(released).IsValid());
     const double f_dynamic = FreeVibrationFrequency(coarse, 1.0e-4, 400);
     WARN("cantilever 20x2x2: free-vibration frequency " << f_dynamic << " Hz, inverse iteration " << f_modal
                                                         << " Hz, Euler-Bernoulli " << f_bernoulli << " Hz");
@@ -237,8 +186,8 @@ TEST_CASE("Cantilever: free vibration of the 40 x 4 x 4 mesh", "[fem][slow][.]")
     // Symplectic Euler over two periods (~23 ms) at the stable sub-step of 0.025 m steel cells (0.78 us):
     // ~30,000 sub-steps of 3,200 elements, about 15 s, hence hidden ([.]) and tagged [slow]: run it with
     // test_fem "[slow]".
-    Cantilever beam = MakeCantilever(40, 4, EIntegrator::SymplecticEuler);
-    REQUIRE(beam.mSolver.SolveStatic().IsValid());
+    CantileverScene beam = MakeCantilever(40, 4, EIntegrator::SymplecticEuler);
+    REQUIRE(beam.GetSolver().SolveStatic().IsValid());
     const double f_dynamic = FreeVibrationFrequency(beam, 1.0e-4, 400);
     const double f_bernoulli = EulerBernoulliFrequency();
     WARN("cantilever 40x4x4: free-vibration frequency "
