@@ -2,27 +2,13 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem/FractureTopology.h>
 
+#include "UnionFindRoot.h"
+
 #include <algorithm>
 #include <numeric>
 
 namespace crumple::fem
 {
-
-namespace
-{
-
-// Root of inItem in a small union-find over positions in a node's group list.
-int Root(std::vector<int>& ioParent, int inItem)
-{
-    while (ioParent[inItem] != inItem)
-    {
-        ioParent[inItem] = ioParent[ioParent[inItem]];
-        inItem = ioParent[inItem];
-    }
-    return inItem;
-}
-
-} // namespace
 
 FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
                                       std::span<const std::uint8_t> inBroken)
@@ -51,8 +37,8 @@ FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks
                 continue;
             const auto a = std::lower_bound(groups.begin(), groups.end(), inLinks.mLinkGroups[link][0]);
             const auto b = std::lower_bound(groups.begin(), groups.end(), inLinks.mLinkGroups[link][1]);
-            const int root_a = Root(parent, static_cast<int>(a - groups.begin()));
-            const int root_b = Root(parent, static_cast<int>(b - groups.begin()));
+            const int root_a = UnionFindRoot(parent, static_cast<int>(a - groups.begin()));
+            const int root_b = UnionFindRoot(parent, static_cast<int>(b - groups.begin()));
             // Keep the lower position as root, so a cluster's root is its lowest group.
             parent[std::max(root_a, root_b)] = std::min(root_a, root_b);
         }
@@ -61,7 +47,7 @@ FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks
         cluster_node.assign(count, -1);
         for (int item = 0; item < count; ++item)
         {
-            const int root = Root(parent, item);
+            const int root = UnionFindRoot(parent, item);
             if (cluster_node[root] < 0)
             {
                 if (root == 0)

@@ -2,26 +2,13 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem/TetFragment.h>
 
+#include "UnionFindRoot.h"
+
 #include <algorithm>
 #include <numeric>
 
 namespace crumple::fem
 {
-
-namespace
-{
-
-int Root(std::vector<int>& ioParent, int inItem)
-{
-    while (ioParent[inItem] != inItem)
-    {
-        ioParent[inItem] = ioParent[ioParent[inItem]];
-        inItem = ioParent[inItem];
-    }
-    return inItem;
-}
-
-} // namespace
 
 std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const std::uint8_t> inBroken,
                                       std::span<const TetIndices> inElementNodes,
@@ -35,8 +22,8 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
     for (int link = 0; link < inLinks.GetLinkCount(); ++link)
         if (inBroken[link] == 0)
         {
-            const int a = Root(parent, inLinks.mLinkGroups[link][0]);
-            const int b = Root(parent, inLinks.mLinkGroups[link][1]);
+            const int a = UnionFindRoot(parent, inLinks.mLinkGroups[link][0]);
+            const int b = UnionFindRoot(parent, inLinks.mLinkGroups[link][1]);
             parent[std::max(a, b)] = std::min(a, b);
         }
 
@@ -45,7 +32,7 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
     std::vector<TetFragment> fragments;
     for (int group = 0; group < group_count; ++group)
     {
-        const int root = Root(parent, group);
+        const int root = UnionFindRoot(parent, group);
         if (fragment_of_group[root] < 0)
         {
             fragment_of_group[root] = static_cast<int>(fragments.size());
