@@ -45,6 +45,29 @@ Mat3 PositivePart(const Mat3& inSymmetric)
     return eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
+// The deformation gradient of element inTet and, for the corotated model, its rotation (warm-started polar
+// decomposition, stored back); identity for St. Venant-Kirchhoff.
+struct ElementFrame
+{
+    Mat3 mF;
+    Mat3 mRotation;
+};
+
+ElementFrame CurrentFrame(const TetElementPassInput& inInput, std::span<const Vec3> inPositions, std::size_t inTet,
+                          std::span<Quat> ioRotations)
+{
+    const TetIndices& n = inInput.mTets[inTet];
+    ElementFrame frame{DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]], inPositions[n[3]],
+                                           inInput.mRest[inTet].mRestEdgeInverse),
+                       Mat3::Identity()};
+    if (inInput.mModel == EElasticModel::CorotatedLinear)
+    {
+        ioRotations[inTet] = PolarRotation(frame.mF, ioRotations[inTet]);
+        frame.mRotation = ioRotations[inTet].toRotationMatrix();
+    }
+    return frame;
+}
+
 } // namespace
 
 void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
@@ -63,14 +86,7 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
         // Deformation gradient and, for the corotated model, its rotation.
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
-        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
-                                           inPositions[n[3]], rest.mRestEdgeInverse);
-        Mat3 r = Mat3::Identity();
-        if (corotated)
-        {
-            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
-            r = ioRotations[tet].toRotationMatrix();
-        }
+        const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
 
         // Elastic stress, plus the viscous stress beta C:strain_rate in the same frame.
         const Mat3 plastic = inInput.PlasticStrain(tet);
@@ -155,21 +171,11 @@ double TetElasticEnergy(const TetElementPassInput& inInput, std::span<const Vec3
                         std::span<Quat> ioRotations)
 {
     const Matrix6& c = *inInput.mMaterialMatrix;
-    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     double energy = 0.0;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        const TetIndices& n = inInput.mTets[tet];
-        const TetElementRest& rest = inInput.mRest[tet];
-        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
-                                           inPositions[n[3]], rest.mRestEdgeInverse);
-        Mat3 r = Mat3::Identity();
-        if (corotated)
-        {
-            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
-            r = ioRotations[tet].toRotationMatrix();
-        }
-        energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, inInput.PlasticStrain(tet));
+        const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
+        energy += inInput.mRest[tet].mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, inInput.PlasticStrain(tet));
     }
     return energy;
 }
@@ -178,19 +184,10 @@ int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inP
                    std::span<Quat> ioRotations, double inShearModulus, const FemMaterialSettings& inMaterial,
                    double inDeltaTime, std::span<Mat3> ioPlasticStrains)
 {
-    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     int flowed = 0;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        const TetIndices& n = inInput.mTets[tet];
-        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
-                                           inPositions[n[3]], inInput.mRest[tet].mRestEdgeInverse);
-        Mat3 r = Mat3::Identity();
-        if (corotated)
-        {
-            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
-            r = ioRotations[tet].toRotationMatrix();
-        }
+        const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         const Mat3 updated = PlasticFlow(ModelStrain(inInput.mModel, f, r), ioPlasticStrains[tet], inShearModulus,
                                          inMaterial, inDeltaTime);
         if (updated != ioPlasticStrains[tet])
@@ -209,14 +206,10 @@ void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> i
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        const TetIndices& n = inInput.mTets[tet];
-        const Mat3 f = DeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
-                                           inPositions[n[3]], inInput.mRest[tet].mRestEdgeInverse);
+        const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         if (corotated)
         {
             // Small strain in the rotated frame: the Cauchy stress is the rotated linear stress.
-            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
-            const Mat3 r = ioRotations[tet].toRotationMatrix();
             const Mat3 local = MaterialStress(c, ModelStrain(inInput.mModel, f, r) - inInput.PlasticStrain(tet));
             outStress[tet] = r * local * r.transpose();
         }
