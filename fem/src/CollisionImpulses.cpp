@@ -13,15 +13,19 @@ namespace crumple::fem
 namespace
 {
 
-// Barycentric coordinates of inPoint in the tetrahedron inCorners (weights of corners 0..3); NaN weights
-// for a degenerate element.
-std::array<double, 4> Barycentric(const std::array<Vec3, 4>& inCorners, const Vec3& inPoint)
+// What barycentric coordinates in one element need: its first corner and the inverse of its edge matrix
+// (non-finite for a degenerate element, whose weights then never win).
+struct ElementMap
 {
-    Mat3 edges;
-    edges << inCorners[1] - inCorners[0], inCorners[2] - inCorners[0], inCorners[3] - inCorners[0];
-    const Vec3 local = edges.partialPivLu().solve(inPoint - inCorners[0]);
-    return {1.0 - local.sum(), local.x(), local.y(), local.z()};
-}
+    Vec3 mOrigin;
+    Mat3 mInverseEdges;
+
+    std::array<double, 4> Barycentric(const Vec3& inPoint) const
+    {
+        const Vec3 local = mInverseEdges * (inPoint - mOrigin);
+        return {1.0 - local.sum(), local.x(), local.y(), local.z()};
+    }
+};
 
 } // namespace
 
@@ -37,6 +41,17 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                                                       " is not one of the collision's bodies");
     if (inElementNodes.empty() || inPositions.empty())
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the prop has no element");
+
+    // Invert every element's edge matrix once for all contacts.
+    std::vector<ElementMap> maps(inElementNodes.size());
+    for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
+    {
+        const TetIndices& n = inElementNodes[tet];
+        Mat3 edges;
+        edges << inPositions[n[1]] - inPositions[n[0]], inPositions[n[2]] - inPositions[n[0]],
+            inPositions[n[3]] - inPositions[n[0]];
+        maps[tet] = {inPositions[n[0]], edges.inverse()};
+    }
 
     std::vector<NodalImpulse> impulses;
     impulses.reserve(4 * inCollision.mContacts.size());
@@ -57,9 +72,7 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
         double best_min = -std::numeric_limits<double>::infinity();
         for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
         {
-            const TetIndices& n = inElementNodes[tet];
-            const std::array<double, 4> weights =
-                Barycentric({inPositions[n[0]], inPositions[n[1]], inPositions[n[2]], inPositions[n[3]]}, point);
+            const std::array<double, 4> weights = maps[tet].Barycentric(point);
             const double smallest = *std::min_element(weights.begin(), weights.end());
             if (smallest > best_min) // NaN (degenerate) never wins
             {

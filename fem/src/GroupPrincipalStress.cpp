@@ -8,7 +8,7 @@ namespace crumple::fem
 {
 
 void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
-                          std::span<const double> inRestVolumes, std::span<PrincipalStress> outPrincipal)
+                          std::span<const TetElementRest> inRest, std::span<PrincipalStress> outPrincipal)
 {
     Eigen::SelfAdjointEigenSolver<Mat3> eigen;
     for (int group = 0; group < inLinks.GetGroupCount(); ++group)
@@ -20,8 +20,8 @@ void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> in
              ++entry)
         {
             const int tet = inLinks.mGroupElements[entry];
-            sum += inRestVolumes[tet] * inElementStress[tet];
-            volume += inRestVolumes[tet];
+            sum += inRest[tet].mRestVolume * inElementStress[tet];
+            volume += inRest[tet].mRestVolume;
         }
         const Mat3 mean = 0.5 * (sum + sum.transpose()) / volume;
 

@@ -103,7 +103,7 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
     mElementNodes = mMesh.GetTets();
     mNodeRestPositions = mMesh.GetRestPositions();
     mRest = TetRestData(mMesh);
-    mMasses = LumpedNodeMass(mMesh, mMaterial.GetSettings().mDensity);
+    mMasses = LumpedNodeMass(mElementNodes, mRest, mMesh.GetNodeCount(), mMaterial.GetSettings().mDensity);
     mInverseMasses.resize(mMasses.size());
     mFree.assign(mMasses.size(), 1);
     for (std::size_t node = 0; node < mMasses.size(); ++node)
@@ -199,10 +199,7 @@ int TetSolver::Fracture()
     const TetElementPassInput input = PassInput();
     TetCauchyStress(input, mPositions, mRotations, mElementStress);
     mElementWork += mRest.size();
-    std::vector<double> volumes(mRest.size());
-    for (std::size_t tet = 0; tet < mRest.size(); ++tet)
-        volumes[tet] = mRest[tet].mRestVolume;
-    GroupPrincipalStress(mLinks, mElementStress, volumes, mPrincipal);
+    GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
     const FemMaterialSettings& material = mMaterial.GetSettings();
     const int opened = OpenCracks(mLinks, mPrincipal, mElementNodes, mPositions, material.mTensileStrength,
                                   material.mFractureMode, mBroken);
@@ -221,12 +218,8 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
         for (int corner = 0; corner < 4; ++corner)
             old_of_new[inConnectivity.mElementNodes[tet][corner]] = mElementNodes[tet][corner];
 
-    // New lumped masses from the element masses, element order.
-    std::vector<double> masses(new_count, 0.0);
-    const double density = mMaterial.GetSettings().mDensity;
-    for (std::size_t tet = 0; tet < mRest.size(); ++tet)
-        for (int node : inConnectivity.mElementNodes[tet])
-            masses[node] += 0.25 * density * mRest[tet].mRestVolume;
+    std::vector<double> masses = LumpedNodeMass(inConnectivity.mElementNodes, mRest, static_cast<int>(new_count),
+                                                mMaterial.GetSettings().mDensity);
 
     std::vector<Vec3> positions(new_count), velocities(new_count), forces(new_count), rest(new_count);
     std::vector<double> inverse_masses(new_count);
@@ -770,7 +763,6 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
     mSavedPositions = mPositions;
     mSavedRotations = mRotations;
 
-    const FemMaterialSettings& material = mMaterial.GetSettings();
     const TetElementPassInput input = PassInput();
     TetStaticResult result;
     std::vector<Vec3> residual(node_count), delta_x(node_count);

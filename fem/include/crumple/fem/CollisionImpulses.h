@@ -27,7 +27,7 @@ struct NodalImpulse
 /// impulse goes to the four nodes of the element that contains its point, by the point's barycentric
 /// coordinates (of the nearest element, with negative coordinates clamped and the rest renormalised, when the
 /// point lies on or just off the surface). Inside an element this keeps the total impulse and its moment
-/// about any point exactly. O(#contacts x #T).
+/// about any point exactly. O(#T) to prepare, then O(#T) per contact.
 /// @param[in] inCollision     a collision one of whose bodies is the prop
 /// @param[in] inPropBody      the prop's body id (mBodyA or mBodyB of inCollision)
 /// @param[in] inElementNodes  #T current connectivity (TetSolver::GetElementNodes())

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/fem/FractureLinks.h>
+#include <crumple/fem/TetElementRest.h>
 
 #include <span>
 
@@ -21,9 +22,9 @@ struct PrincipalStress
 /// largest tensile eigenvalue as the fracture measure).
 /// @param[in]  inLinks          links of the rest mesh (groups and their elements)
 /// @param[in]  inElementStress  #T Cauchy stresses (Pa), symmetric 3 by 3
-/// @param[in]  inRestVolumes    #T rest volumes (m^3)
+/// @param[in]  inRest           #T element rest data (its rest volume weighs the mean)
 /// @param[out] outPrincipal     #G, overwritten
 void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
-                          std::span<const double> inRestVolumes, std::span<PrincipalStress> outPrincipal);
+                          std::span<const TetElementRest> inRest, std::span<PrincipalStress> outPrincipal);
 
 } // namespace crumple::fem

@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetMesh.h>
+
+#include <span>
 
 #include <vector>
 
@@ -15,5 +18,14 @@ namespace crumple::fem
 /// @param[in] inDensity  rho (kg/m^3), > 0
 /// @return #N node masses (kg), each > 0 for a valid mesh
 std::vector<double> LumpedNodeMass(const TetMesh& inMesh, double inDensity);
+
+/// The same for a connectivity that differs from a mesh's (after fracture duplicated nodes).
+/// @param[in] inElementNodes  #T element -> node indices, each < inNodeCount
+/// @param[in] inRest          #T element rest data (rest volumes)
+/// @param[in] inNodeCount     #N
+/// @param[in] inDensity       rho (kg/m^3), > 0
+/// @return #N node masses (kg)
+std::vector<double> LumpedNodeMass(std::span<const TetIndices> inElementNodes, std::span<const TetElementRest> inRest,
+                                   int inNodeCount, double inDensity);
 
 } // namespace crumple::fem
