@@ -1,0 +1,106 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/fem/FemMaterial.h>
+#include <crumple/fem/TetMesh.h>
+#include <crumple/fem/TetSolver.h>
+#include <crumple/fem/TetSolverSettings.h>
+#include <crumple/fem/TetStepResult.h>
+#include <crumple/gpu/ComputeDevice.h>
+#include <crumple/gpu/ComputeProgram.h>
+#include <crumple/gpu/StorageBuffer.h>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace crumple::gpu
+{
+
+/// The tetrahedral FEM of fem::TetSolver as GLSL compute shaders (the GPU destruction paper, section IV, in
+/// compute form), in single precision: the same mesh, material and settings structs, the same symplectic
+/// Euler with the same proven stable sub-step (fem::StableTimeStep), the same corotated or St. Venant-Kirchhoff
+/// elasticity with Rayleigh damping. Per sub-step an element pass writes each element's four corner forces,
+/// then a node pass gathers them per node through an adjacency list in element order (deterministic: no
+/// float atomics) and integrates.
+///
+/// Structure of arrays on the GPU: positions with the inverse mass in w, velocities, external forces (vec4
+/// each), element nodes (ivec4), rest data (three vec4 per element), rotations (quaternions), corner forces,
+/// adjacency offsets and entries. Nothing is read back per step except a 4-byte status word (the divergence
+/// flag); positions are read only when asked (ReadPositions).
+///
+/// Not (yet) on the GPU, refused by Create with a clear message: implicit Euler, plasticity, fracture. A
+/// refused input changes nothing.
+class GpuTetSolver
+{
+public:
+    /// Validates like fem::TetSolver::Create and uploads the mesh. inDevice comes from a ComputeDeviceProvider.
+    static Result<GpuTetSolver> Create(std::shared_ptr<ComputeDevice> inDevice, const fem::TetMesh& inMesh,
+                                       const fem::FemMaterialSettings& inMaterial,
+                                       const fem::TetSolverSettings& inSettings);
+
+    /// A GPU solver in the state of a CPU one (positions, velocities, rotations, anchoring, external forces,
+    /// gravity): how a prop moves from the CPU to the GPU. Refused like Create, and for a CPU solver whose
+    /// prop has fractured.
+    static Result<GpuTetSolver> CreateFrom(std::shared_ptr<ComputeDevice> inDevice, const fem::TetSolver& inSolver);
+
+    /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again.
+    Status SetNodeFixed(int inNode, bool inFixed);
+    /// Adds inImpulse (N s, world) to node inNode: dv = inImpulse / m; an anchored node absorbs it.
+    Status ApplyImpulse(int inNode, const Vec3& inImpulse);
+    /// Sets the constant external force (N, world) on node inNode.
+    Status SetExternalForce(int inNode, const Vec3& inForce);
+    /// Sets the acceleration of gravity (m/s^2, world).
+    Status SetGravity(const Vec3& inGravity);
+    /// Replaces all node positions (m), #N.
+    Status SetPositions(std::span<const Vec3> inPositions);
+
+    /// Advances by inDeltaTime (s) in ceil(dt / GetStableTimeStep()) symplectic sub-steps, refused beyond
+    /// mMaxSubSteps. A step whose state becomes NaN or Inf is retried split into 2, 4, ... as many sub-steps
+    /// (up to 2^mMaxStepSplits within mMaxSubSteps); if all fail the state is restored to the start of the
+    /// step and ETetStepEvent::Diverged is reported.
+    Result<fem::TetStepResult> Step(double inDeltaTime);
+
+    /// Reads the node positions back (m), #N (waits for the GPU).
+    void ReadPositions(std::vector<Vec3>& outPositions) const;
+    /// Reads the node velocities back (m/s), #N.
+    void ReadVelocities(std::vector<Vec3>& outVelocities) const;
+
+    /// Number of nodes #N
+    int GetNodeCount() const { return static_cast<int>(mInverseMasses.size()); }
+    /// The symplectic sub-step (s), the CPU solver's
+    double GetStableTimeStep() const { return mStableTimeStep; }
+    /// Element evaluations so far (one per element per sub-step), as fem::TetSolver counts them
+    std::uint64_t GetElementWorkCount() const { return mElementWork; }
+    /// The device this solver runs on
+    const ComputeDevice& GetDevice() const { return *mDevice; }
+
+private:
+    GpuTetSolver() = default;
+
+    // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps; returns true when the state stayed finite.
+    bool Integrate(double inDeltaTime, int inSubSteps);
+    Status CheckNode(int inNode, const char* inCaller) const;
+
+    std::shared_ptr<ComputeDevice> mDevice;
+    fem::TetSolverSettings mSettings;
+    fem::FemMaterialSettings mMaterial;
+    float mLambda = 0.0f;
+    float mMu = 0.0f;
+    std::vector<double> mMasses;        // kg, #N (CPU copy: inputs need it without a readback)
+    std::vector<double> mInverseMasses; // 1/kg, #N, 0 = anchored
+    std::uint32_t mElementCount = 0;
+    double mStableTimeStep = 0.0;
+    std::uint64_t mElementWork = 0;
+
+    ComputeProgram mElementPass;
+    ComputeProgram mNodePass;
+    StorageBuffer mPositions, mVelocities, mElements, mRest, mRotations, mCorners, mExternal, mOffsets, mIncident,
+        mStatus;
+    StorageBuffer mSavedPositions, mSavedVelocities, mSavedRotations;
+};
+
+} // namespace crumple::gpu

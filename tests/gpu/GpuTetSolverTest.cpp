@@ -1,0 +1,244 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// The FEM solver as compute shaders against the CPU: parity with the float build of the same equations and
+// with the double CPU solver, the cantilever within float limits, stability under random impulses, a
+// diverging step restored, determinism, refusals. Runs on llvmpipe where no GPU exists; skips without EGL.
+#include "CantileverScene.h"
+#include "FloatTetReference.h"
+
+#include <crumple/fem/TetGrid.h>
+#include <crumple/gpu/GpuTetSolver.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::gpu;
+
+namespace
+{
+
+std::shared_ptr<ComputeDevice> DeviceOrSkip()
+{
+    ComputeDeviceProvider provider;
+    Result<std::shared_ptr<ComputeDevice>> device = provider.Acquire();
+    if (device.HasError())
+    {
+        WARN("skipped: no compute device: " << device.GetError().mMessage);
+        return nullptr;
+    }
+    return device.Get();
+}
+
+// A soft 0.6 m x 0.2 m x 0.2 m bar of 6 x 2 x 2 cubes clamped at x = 0: a few hundred sub-steps per frame.
+FemMaterialSettings Soft(EElasticModel inModel)
+{
+    FemMaterialSettings material;
+    material.mYoungsModulus = 1.0e7;
+    material.mPoissonRatio = 0.3;
+    material.mDensity = 1000.0;
+    material.mMassDamping = 1.0;
+    material.mStiffnessDamping = 1.0e-4;
+    material.mModel = inModel;
+    return material;
+}
+
+TetSolver ClampedBar(EElasticModel inModel)
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.2);
+    grid.mCellCount = {6, 2, 2};
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mSleepSpeed = 0.0;
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), Soft(inModel), settings).Get();
+    for (int k = 0; k <= 2; ++k)
+        for (int j = 0; j <= 2; ++j)
+            REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    return solver;
+}
+
+// The tip corner node and an impulse that bends and twists the bar (N s).
+constexpr int cTipNode = 6 + 7 * (2 + 3 * 2); // node (6, 2, 2)
+const Vec3 cHit(0.3, -2.0, 4.0);
+
+double MaxDistance(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
+{
+    double largest = 0.0;
+    for (std::size_t node = 0; node < inA.size(); ++node)
+        largest = std::max(largest, (inA[node] - inB[node]).norm());
+    return largest;
+}
+
+} // namespace
+
+TEST_CASE("GPU parity: the shaders match the float CPU build of the same equations and the double CPU solver",
+          "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    const EElasticModel model = GENERATE(EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff);
+    CAPTURE(ToString(model));
+
+    TetSolver cpu = ClampedBar(model);
+    Result<GpuTetSolver> created = GpuTetSolver::CreateFrom(device, cpu);
+    REQUIRE(created.IsValid());
+    GpuTetSolver& gpu = created.Get();
+    test::FloatTetReference reference(cpu);
+
+    REQUIRE(cpu.ApplyImpulse(cTipNode, cHit).IsValid());
+    REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
+    reference.ApplyImpulse(cTipNode, cHit);
+    const std::vector<Vec3> rest = cpu.GetPositions();
+    double largest_motion = 0.0, float_gap = 0.0, double_gap = 0.0;
+    std::vector<Vec3> positions;
+    for (int step = 0; step < 30; ++step)
+    {
+        const Result<TetStepResult> gpu_step = gpu.Step(1.0 / 60.0);
+        REQUIRE(gpu_step.IsValid());
+        REQUIRE_FALSE(HasEvent(gpu_step.Get().mEvents, ETetStepEvent::Diverged));
+        REQUIRE(cpu.Step(1.0 / 60.0).IsValid());
+        reference.Step(1.0 / 60.0);
+        CHECK(gpu_step.Get().mSubSteps == static_cast<int>(std::ceil(1.0 / 60.0 / cpu.GetStableTimeStep())));
+        gpu.ReadPositions(positions);
+        largest_motion = std::max(largest_motion, MaxDistance(positions, rest));
+        float_gap = std::max(float_gap, MaxDistance(positions, reference.GetPositions()));
+        double_gap = std::max(double_gap, MaxDistance(positions, cpu.GetPositions()));
+    }
+    // Float round-off: positions near 0.6 m carry an ulp of 6e-8 m, and the two builds round differently
+    // (the GLSL compiler may fuse multiply-adds and orders 3x3 products its own way); over ~3,000 sub-steps
+    // of a stable, damped system the gap stays a few ulps per step's worth: measured 2.7e-5 of the motion
+    // against the float CPU build, so 1e-4 leaves margin without hiding a wrong equation (a missing term
+    // gives gaps of order 1). Against the double solver the gap adds float's own error.
+    INFO("largest motion " << largest_motion << " m; GPU vs float CPU " << float_gap << " m; GPU vs double CPU "
+                           << double_gap << " m");
+    REQUIRE(largest_motion > 0.01);
+    CHECK(float_gap < 1.0e-4 * largest_motion);
+    CHECK(double_gap < 1.0e-3 * largest_motion);
+}
+
+TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float limits", "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    // A soft version of the cantilever (E = 10 MPa, 1 N at the tip, 20 x 2 x 2 cells) so the
+    // explicit sub-steps stay few; mass damping critical for the first bending mode.
+    common::CantileverSettings settings;
+    settings.mMaterial.mYoungsModulus = 1.0e7;
+    settings.mMaterial.mDensity = 1000.0;
+    settings.mLoad = 1.0;
+    settings.mLengthCells = 20;
+    settings.mSectionCells = 2;
+    settings.mSolver.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mMaterial.mMassDamping = 2.0 * 2.0 * 3.14159265358979 * common::EulerBernoulliFrequency(settings);
+    common::CantileverScene scene = common::CantileverScene::Create(settings).Get();
+    Result<GpuTetSolver> created = GpuTetSolver::CreateFrom(device, scene.GetSolver());
+    REQUIRE(created.IsValid());
+    GpuTetSolver& gpu = created.Get();
+
+    common::CantileverScene reference = common::CantileverScene::Create(settings).Get();
+    REQUIRE(reference.GetSolver().SolveStatic().IsValid());
+    for (int step = 0; step < 90; ++step)
+        REQUIRE(gpu.Step(1.0 / 60.0).IsValid());
+    std::vector<Vec3> positions;
+    gpu.ReadPositions(positions);
+    double gpu_tip = 0.0, static_tip = 0.0;
+    for (int node : scene.GetTipNodes())
+    {
+        gpu_tip += (scene.GetSolver().GetPositions()[node] - positions[node]).z();
+        static_tip += (scene.GetSolver().GetPositions()[node] - reference.GetSolver().GetPositions()[node]).z();
+    }
+    const double timoshenko = common::TimoshenkoDeflection(settings);
+    const double count = static_cast<double>(scene.GetTipNodes().size());
+    INFO("mean tip deflection: GPU " << gpu_tip / count << " m, CPU static " << static_tip / count
+                                     << " m, Timoshenko " << timoshenko << " m (the coarse mesh is stiffer)");
+    CHECK(gpu_tip == Approx(static_tip).epsilon(1.0e-3));
+}
+
+TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-up is restored and reported",
+          "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    TetSolver cpu = ClampedBar(EElasticModel::CorotatedLinear);
+    GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
+    std::mt19937_64 random(5);
+    std::vector<Vec3> positions;
+    for (int step = 0; step < 20; ++step)
+    {
+        const double magnitude = std::pow(10.0, -3.0 + 8.0 * static_cast<double>(random() >> 11) * 0x1.0p-53);
+        const int node = static_cast<int>(random() % static_cast<std::uint64_t>(gpu.GetNodeCount()));
+        REQUIRE(gpu.ApplyImpulse(node, magnitude * Vec3(0.6, -0.48, 0.64)).IsValid());
+        REQUIRE(gpu.Step(1.0 / 30.0).IsValid());
+        gpu.ReadPositions(positions);
+        for (const Vec3& x : positions)
+            REQUIRE(IsFinite(x));
+    }
+
+    // 1e30 N s overflows float: the step is retried, then restored bit for bit and reported.
+    std::vector<Vec3> before, after;
+    gpu.ReadPositions(before);
+    REQUIRE(gpu.ApplyImpulse(cTipNode, Vec3(0.0, 0.0, 1.0e30)).IsValid());
+    const Result<TetStepResult> blown = gpu.Step(1.0 / 60.0);
+    REQUIRE(blown.IsValid());
+    CHECK(HasEvent(blown.Get().mEvents, ETetStepEvent::Diverged));
+    gpu.ReadPositions(after);
+    CHECK(after == before);
+}
+
+TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same positions", "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    auto run = [&]()
+    {
+        GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, ClampedBar(EElasticModel::CorotatedLinear)).Get();
+        REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
+        for (int step = 0; step < 10; ++step)
+            REQUIRE(gpu.Step(1.0 / 60.0).IsValid());
+        std::vector<Vec3> positions;
+        gpu.ReadPositions(positions);
+        return positions;
+    };
+    CHECK(run() == run());
+}
+
+TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothing", "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    TetGridSettings grid;
+    grid.mCellCount = {2, 1, 1};
+    const TetMesh mesh = TetGrid(grid).Get();
+    Result<GpuTetSolver> implicit = GpuTetSolver::Create(device, mesh, FemMaterialSettings{}, TetSolverSettings{});
+    REQUIRE(implicit.HasError());
+    CHECK(implicit.GetError().mMessage.find("implicit") != std::string::npos);
+    TetSolverSettings explicit_settings;
+    explicit_settings.mIntegrator = EIntegrator::SymplecticEuler;
+    FemMaterialSettings breakable;
+    breakable.mTensileStrength = 1.0e6;
+    CHECK(GpuTetSolver::Create(device, mesh, breakable, explicit_settings).HasError());
+    FemMaterialSettings negative;
+    negative.mDensity = -1.0;
+    CHECK(GpuTetSolver::Create(device, mesh, negative, explicit_settings).HasError());
+
+    GpuTetSolver gpu = GpuTetSolver::Create(device, mesh, FemMaterialSettings{}, explicit_settings).Get();
+    std::vector<Vec3> before, after;
+    gpu.ReadVelocities(before);
+    CHECK(gpu.ApplyImpulse(-1, Vec3::UnitX()).HasError());
+    CHECK(gpu.ApplyImpulse(0, Vec3(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0)).HasError());
+    CHECK(gpu.SetExternalForce(gpu.GetNodeCount(), Vec3::UnitX()).HasError());
+    CHECK(gpu.Step(-1.0).HasError());
+    CHECK(gpu.Step(std::numeric_limits<double>::infinity()).HasError());
+    gpu.ReadVelocities(after);
+    CHECK(after == before);
+}

@@ -1,0 +1,8 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# test_gpu: the compute module and the GPU FEM solver (on llvmpipe where no GPU exists).
+crumple_add_test(gpu
+    gpu/ComputeDeviceTest.cpp
+    gpu/FloatTetReference.cpp
+    gpu/GpuTetSolverTest.cpp
+    LINK crumple::gpu crumple_common_fem)
