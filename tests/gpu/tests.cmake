@@ -3,6 +3,7 @@
 # test_gpu: the compute module and the GPU FEM solver (on llvmpipe where no GPU exists).
 crumple_add_test(gpu
     gpu/ComputeDeviceTest.cpp
+    gpu/FemPropTest.cpp
     gpu/FloatTetReference.cpp
     gpu/GpuTetSolverTest.cpp
     LINK crumple::gpu crumple_common_fem)

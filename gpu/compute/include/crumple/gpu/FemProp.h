@@ -1,0 +1,77 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/fem/TetSolver.h>
+#include <crumple/gpu/GpuTetSolver.h>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace crumple::gpu
+{
+
+/// Where a prop's FEM runs.
+enum class EFemBackend : std::uint8_t
+{
+    Cpu, ///< fem::TetSolver, double precision: every feature
+    Gpu, ///< GpuTetSolver, float, compute shaders: symplectic Euler, elasticity and damping
+};
+
+/// Short name of an EFemBackend, for messages.
+const char* ToString(EFemBackend inBackend);
+
+/// How a FemProp chooses its backend.
+struct FemPropSettings
+{
+    EFemBackend mBackend = EFemBackend::Cpu; ///< The wanted backend
+    /// Called once with the reason when a GPU prop falls back to the CPU (no device, or a feature the GPU
+    /// solver lacks); empty: no log. The reason is also in GetFallbackReason().
+    std::function<void(std::string_view)> mLog;
+};
+
+/// A destructible prop's solver on the CPU or the GPU behind one interface, so a game can balance load per
+/// prop. A prop that asks for the GPU where there is none (or for what the GPU solver cannot do) runs on the
+/// CPU instead: GetBackend() says which, GetFallbackReason() why. Bad input (mesh, material, settings) is an
+/// error either way, never a fallback. A CPU prop never touches the device provider, so a scene without GPU
+/// props makes no EGL context.
+class FemProp
+{
+public:
+    /// @param ioProvider  shared device provider of the scene; may be nullptr for CPU-only scenes
+    static Result<FemProp> Create(ComputeDeviceProvider* ioProvider, const fem::TetMesh& inMesh,
+                                  const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
+                                  const FemPropSettings& inPropSettings);
+
+    /// The backend actually used
+    EFemBackend GetBackend() const { return mGpu ? EFemBackend::Gpu : EFemBackend::Cpu; }
+    /// Why a GPU request runs on the CPU; empty otherwise
+    const std::string& GetFallbackReason() const { return mFallbackReason; }
+
+    /// As fem::TetSolver / GpuTetSolver.
+    Status SetNodeFixed(int inNode, bool inFixed);
+    Status ApplyImpulse(int inNode, const Vec3& inImpulse);
+    Status SetExternalForce(int inNode, const Vec3& inForce);
+    Status SetGravity(const Vec3& inGravity);
+    Result<fem::TetStepResult> Step(double inDeltaTime);
+    /// Current node positions (m), #N (a readback on the GPU)
+    void ReadPositions(std::vector<Vec3>& outPositions) const;
+    /// Number of nodes #N
+    int GetNodeCount() const;
+    /// The CPU solver, or nullptr on the GPU backend
+    fem::TetSolver* GetCpuSolver() { return mCpu ? &*mCpu : nullptr; }
+    /// The GPU solver, or nullptr on the CPU backend
+    GpuTetSolver* GetGpuSolver() { return mGpu ? &*mGpu : nullptr; }
+
+private:
+    FemProp() = default;
+
+    std::optional<fem::TetSolver> mCpu;
+    std::optional<GpuTetSolver> mGpu;
+    std::string mFallbackReason;
+};
+
+} // namespace crumple::gpu

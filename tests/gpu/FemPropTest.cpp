@@ -1,0 +1,137 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// CPU and GPU behind one prop: a CPU prop never makes a context, a GPU prop without EGL (or with a feature
+// the GPU lacks) runs on the CPU with its reason logged and visible, and bad input is an error either way.
+#include <crumple/fem/TetGrid.h>
+#include <crumple/gpu/FemProp.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::gpu;
+
+namespace
+{
+
+TetMesh Bar()
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.2);
+    grid.mCellCount = {6, 2, 2};
+    return TetGrid(grid).Get();
+}
+
+FemMaterialSettings Soft()
+{
+    FemMaterialSettings material;
+    material.mYoungsModulus = 1.0e7;
+    material.mMassDamping = 1.0;
+    return material;
+}
+
+TetSolverSettings Explicit()
+{
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    return settings;
+}
+
+} // namespace
+
+TEST_CASE("FemProp on the CPU never touches the device provider", "[gpu]")
+{
+    ComputeDeviceProvider provider;
+    Result<FemProp> prop = FemProp::Create(&provider, Bar(), Soft(), Explicit(), FemPropSettings{});
+    REQUIRE(prop.IsValid());
+    CHECK(prop.Get().GetBackend() == EFemBackend::Cpu);
+    CHECK(prop.Get().GetFallbackReason().empty());
+    REQUIRE(prop.Get().Step(1.0 / 60.0).IsValid());
+    CHECK_FALSE(provider.HasTried()); // no EGL context for a scene without GPU props
+}
+
+TEST_CASE("FemProp asking for the GPU without EGL runs on the CPU, logs why, and steps like the CPU solver",
+          "[gpu]")
+{
+    ::setenv("CRUMPLE_DISABLE_EGL", "1", 1);
+    ComputeDeviceProvider provider;
+    std::vector<std::string> log;
+    FemPropSettings settings;
+    settings.mBackend = EFemBackend::Gpu;
+    settings.mLog = [&](std::string_view inMessage) { log.emplace_back(inMessage); };
+    Result<FemProp> prop = FemProp::Create(&provider, Bar(), Soft(), Explicit(), settings);
+    ::unsetenv("CRUMPLE_DISABLE_EGL");
+    REQUIRE(prop.IsValid());
+    CHECK(prop.Get().GetBackend() == EFemBackend::Cpu);
+    CHECK(prop.Get().GetFallbackReason().find("CRUMPLE_DISABLE_EGL") != std::string::npos);
+    REQUIRE(log.size() == 1u);
+    CHECK(log[0].find("running on the CPU") != std::string::npos);
+
+    // The fallback is the CPU solver itself: bitwise the same states.
+    TetSolver plain = TetSolver::Create(Bar(), Soft(), Explicit()).Get();
+    REQUIRE(prop.Get().ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
+    REQUIRE(plain.ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
+    for (int step = 0; step < 5; ++step)
+    {
+        REQUIRE(prop.Get().Step(1.0 / 60.0).IsValid());
+        REQUIRE(plain.Step(1.0 / 60.0).IsValid());
+    }
+    std::vector<Vec3> positions;
+    prop.Get().ReadPositions(positions);
+    CHECK(positions == plain.GetPositions());
+}
+
+TEST_CASE("FemProp falls back to the CPU for what the GPU solver lacks, and refuses bad input", "[gpu]")
+{
+    ComputeDeviceProvider provider;
+    FemPropSettings settings;
+    settings.mBackend = EFemBackend::Gpu;
+    FemMaterialSettings breakable = Soft();
+    breakable.mTensileStrength = 1.0e5;
+    Result<FemProp> prop = FemProp::Create(&provider, Bar(), breakable, Explicit(), settings);
+    REQUIRE(prop.IsValid());
+    CHECK(prop.Get().GetBackend() == EFemBackend::Cpu);
+    CHECK_FALSE(prop.Get().GetFallbackReason().empty());
+
+    FemMaterialSettings negative = Soft();
+    negative.mDensity = -1.0;
+    CHECK(FemProp::Create(&provider, Bar(), negative, Explicit(), settings).HasError());
+    CHECK(FemProp::Create(nullptr, Bar(), negative, Explicit(), FemPropSettings{}).HasError());
+}
+
+TEST_CASE("FemProp on the GPU steps like the CPU within float limits", "[gpu]")
+{
+    ComputeDeviceProvider provider;
+    FemPropSettings settings;
+    settings.mBackend = EFemBackend::Gpu;
+    Result<FemProp> prop = FemProp::Create(&provider, Bar(), Soft(), Explicit(), settings);
+    REQUIRE(prop.IsValid());
+    if (prop.Get().GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << prop.Get().GetFallbackReason());
+        return;
+    }
+    TetSolver plain = TetSolver::Create(Bar(), Soft(), Explicit()).Get();
+    REQUIRE(prop.Get().ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
+    REQUIRE(plain.ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
+    for (int step = 0; step < 5; ++step)
+    {
+        REQUIRE(prop.Get().Step(1.0 / 60.0).IsValid());
+        REQUIRE(plain.Step(1.0 / 60.0).IsValid());
+    }
+    std::vector<Vec3> positions;
+    prop.Get().ReadPositions(positions);
+    double gap = 0.0, motion = 0.0;
+    for (std::size_t node = 0; node < positions.size(); ++node)
+    {
+        gap = std::max(gap, (positions[node] - plain.GetPositions()[node]).norm());
+        motion = std::max(motion, (plain.GetPositions()[node] - plain.GetMesh().GetRestPositions()[node]).norm());
+    }
+    INFO("gap " << gap << " m over " << motion << " m of motion");
+    REQUIRE(motion > 1.0e-3);
+    CHECK(gap < 1.0e-3 * motion);
+}
