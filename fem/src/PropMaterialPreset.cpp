@@ -62,7 +62,7 @@ Result<PropMaterialPreset> MakePropMaterialPreset(EPropMaterial inMaterial)
         return preset;
     case EPropMaterial::Wood:
         preset.mMaterial = Physical(10.0e9, 0.3, 500.0, 0.2, 2.0e-6, 40.0e6, EFractureMode::CrackPlane);
-        preset.mEdges = Edges(0.6, 0.1, 0.3, 0.05, 40.0, 0.0, 0.03, 0.0);
+        preset.mEdges = Edges(0.6, 0.1, 0.3, 0.05, 40.0, 0.0, 0.024, 0.0);
         return preset;
     case EPropMaterial::Brick:
         preset.mMaterial = Physical(12.0e9, 0.2, 1900.0, 0.2, 4.0e-6, 1.5e6, EFractureMode::DetachGroup);

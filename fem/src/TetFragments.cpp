@@ -10,35 +10,35 @@
 namespace crumple::fem
 {
 
-std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const std::uint8_t> inBroken,
-                                      std::span<const TetIndices> inElementNodes,
+std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const TetIndices> inElementNodes,
                                       std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
                                       std::span<const double> inInverseMasses)
 {
-    // Groups joined by unbroken links; each root is the lowest group of its component.
-    const int group_count = inLinks.GetGroupCount();
-    std::vector<int> parent(group_count);
+    // Elements joined through shared current nodes (fracture has duplicated the nodes of open cracks).
+    std::vector<int> parent(inPositions.size());
     std::iota(parent.begin(), parent.end(), 0);
-    for (int link = 0; link < inLinks.GetLinkCount(); ++link)
-        if (inBroken[link] == 0)
+    for (const TetIndices& nodes : inElementNodes)
+        for (int corner = 1; corner < 4; ++corner)
         {
-            const int a = UnionFindRoot(parent, inLinks.mLinkGroups[link][0]);
-            const int b = UnionFindRoot(parent, inLinks.mLinkGroups[link][1]);
+            const int a = UnionFindRoot(parent, nodes[0]);
+            const int b = UnionFindRoot(parent, nodes[corner]);
             parent[std::max(a, b)] = std::min(a, b);
         }
 
-    // Fragment index per component, in order of lowest group.
-    std::vector<int> fragment_of_group(group_count, -1);
+    // Fragment index per component, in order of lowest group (a group's elements always share nodes).
+    const int group_count = inLinks.GetGroupCount();
+    std::vector<int> fragment_of_root(inPositions.size(), -1), fragment_of_group(group_count, -1);
     std::vector<TetFragment> fragments;
     for (int group = 0; group < group_count; ++group)
     {
-        const int root = UnionFindRoot(parent, group);
-        if (fragment_of_group[root] < 0)
+        const int first_element = inLinks.mGroupElements[inLinks.mGroupElementOffsets[group]];
+        const int root = UnionFindRoot(parent, inElementNodes[first_element][0]);
+        if (fragment_of_root[root] < 0)
         {
-            fragment_of_group[root] = static_cast<int>(fragments.size());
+            fragment_of_root[root] = static_cast<int>(fragments.size());
             fragments.emplace_back();
         }
-        fragment_of_group[group] = fragment_of_group[root];
+        fragment_of_group[group] = fragment_of_root[root];
         fragments[fragment_of_group[group]].mGroups.push_back(group);
     }
 

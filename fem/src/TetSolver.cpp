@@ -130,6 +130,11 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
         mBroken.assign(mLinks.GetLinkCount(), 0);
         mElementStress.resize(mRest.size());
         mPrincipal.resize(mLinks.GetGroupCount());
+        // Groups that touch only along an edge or at a corner have no face to judge a crack by, and such a
+        // joint carries no stress: they are separate pieces from the start.
+        FractureConnectivity intact = FractureTopology(mMesh, mLinks, mBroken);
+        if (intact.mNodeOrigin.size() != mPositions.size())
+            Reconnect(intact);
     }
 }
 
@@ -160,6 +165,7 @@ void TetSolver::SaveShape(ShapeState& outShape) const
     outShape.mExternalForces = mExternalForces;
     outShape.mPlasticStrains = mPlasticStrains;
     outShape.mBroken = mBroken;
+    outShape.mPrincipal = mPrincipal;
     outShape.mFreeMass = mFreeMass;
 }
 
@@ -173,6 +179,7 @@ void TetSolver::RestoreShape(const ShapeState& inShape)
     mExternalForces = inShape.mExternalForces;
     mPlasticStrains = inShape.mPlasticStrains;
     mBroken = inShape.mBroken;
+    mPrincipal = inShape.mPrincipal;
     mFreeMass = inShape.mFreeMass;
     mForces.resize(mMasses.size());
 }
@@ -251,14 +258,10 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
 
 std::vector<TetFragment> TetSolver::ComputeFragments() const
 {
-    if (!mMaterial.IsBreakable())
-    {
-        // One piece: all groups joined.
-        const FractureLinks links = BuildFractureLinks(mMesh);
-        const std::vector<std::uint8_t> none(links.GetLinkCount(), 0);
-        return TetFragments(links, none, mElementNodes, ElementMasses(), mPositions, mInverseMasses);
-    }
-    return TetFragments(mLinks, mBroken, mElementNodes, ElementMasses(), mPositions, mInverseMasses);
+    if (mMaterial.IsBreakable())
+        return TetFragments(mLinks, mElementNodes, ElementMasses(), mPositions, mInverseMasses);
+    // An unbreakable prop keeps no links; build them here only for the element groups.
+    return TetFragments(BuildFractureLinks(mMesh), mElementNodes, ElementMasses(), mPositions, mInverseMasses);
 }
 
 int TetSolver::GetBrokenLinkCount() const

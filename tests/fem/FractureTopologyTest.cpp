@@ -90,3 +90,16 @@ TEST_CASE("FractureTopology of an all-broken block gives every cube its own eigh
     CHECK(FractureTopology(mesh, links, std::vector<std::uint8_t>(links.GetLinkCount(), 1)).mElementNodes ==
           result.mElementNodes);
 }
+
+TEST_CASE("FractureTopology separates groups that touch only along an edge (no face to hold them)", "[fem]")
+{
+    // A 2 x 2 x 1 lattice keeping the diagonal cells 0 and 3: they share the two nodes of the centre edge.
+    TetGridSettings grid;
+    grid.mSize = Vec3(2.0, 2.0, 1.0);
+    grid.mCellCount = {2, 2, 1};
+    const TetMesh mesh = TetGridCells(grid, std::vector<std::uint8_t>{1, 0, 0, 1}).Get();
+    REQUIRE(mesh.GetNodeCount() == 14);
+    const FractureLinks links = BuildFractureLinks(mesh);
+    CHECK(links.GetLinkCount() == 0);
+    CHECK(FractureTopology(mesh, links, {}).mNodeOrigin.size() == 16u);
+}

@@ -3,11 +3,13 @@
 // Fracture in the solver: Rankine's threshold on an analytic uniaxial stress, crack planes perpendicular to
 // the principal direction, a wall that breaks where it is hit, reproducible fragments, and no NaN under
 // random impulses.
+#include <crumple/fem/LumpedNodeMass.h>
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -213,11 +215,31 @@ TEST_CASE("Fracture: an unbreakable material builds no links and reports one pie
     CHECK(solver.ComputeFragments().size() == 1u);
 }
 
+TEST_CASE("Fracture: cubes that touch only along an edge are separate pieces for a breakable material", "[fem]")
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(2.0, 2.0, 1.0);
+    grid.mCellCount = {2, 2, 1};
+    const TetMesh mesh = TetGridCells(grid, std::vector<std::uint8_t>{1, 0, 0, 1}).Get();
+    // Unbreakable: one piece through the shared edge. Breakable: no face joins them, so two pieces with
+    // their own nodes from the start, and the first crack elsewhere changes nothing about them.
+    TetSolver whole = TetSolver::Create(mesh, FemMaterialSettings{}, TetSolverSettings{}).Get();
+    CHECK(whole.GetNodeCount() == 14);
+    CHECK(whole.ComputeFragments().size() == 1u);
+    TetSolver breakable = TetSolver::Create(mesh, Brittle(EFractureMode::CrackPlane), TetSolverSettings{}).Get();
+    CHECK(breakable.GetNodeCount() == 16);
+    const std::vector<TetFragment> pieces = breakable.ComputeFragments();
+    REQUIRE(pieces.size() == 2u);
+    CHECK(pieces[0].mNodes.size() == 8u);
+    CHECK(pieces[1].mNodes.size() == 8u);
+}
+
 TEST_CASE("Stress: random impulses on a breakable wall never produce NaN and conserve mass", "[fem]")
 {
     Wall wall = MakeWall(TetSolverSettings{}.mIntegrator); // the defaults
     std::mt19937_64 random(20261123);
     int previous_nodes = wall.mSolver.GetNodeCount();
+    int fractured = 0;
     for (int step = 0; step < 60; ++step)
     {
         // One impulse of 1e-3 ... 1e5 N s (log-uniform) on a random node in a random direction.
@@ -229,11 +251,27 @@ TEST_CASE("Stress: random impulses on a breakable wall never produce NaN and con
         REQUIRE(wall.mSolver.ApplyImpulse(node, magnitude * direction).IsValid());
         const Result<TetStepResult> result = wall.mSolver.Step(1.0 / 30.0);
         REQUIRE(result.IsValid());
+        fractured += HasEvent(result.Get().mEvents, ETetStepEvent::Fractured) ? 1 : 0;
         for (const Vec3& x : wall.mSolver.GetPositions())
             REQUIRE(IsFinite(x));
         CHECK(wall.mSolver.GetNodeCount() >= previous_nodes);
         previous_nodes = wall.mSolver.GetNodeCount();
     }
+    REQUIRE(fractured > 0); // the run did exercise node duplication
+
+    // Node duplication shares each rest node's lumped mass among its copies: the copies of every rest node
+    // (found by rest position) weigh what the node weighed in the intact mesh.
+    const std::vector<double> intact = LumpedNodeMass(wall.mSolver.GetMesh(), 2000.0);
+    std::vector<double> shared(intact.size(), 0.0);
+    const std::vector<Vec3>& rest = wall.mSolver.GetMesh().GetRestPositions();
+    for (int node = 0; node < wall.mSolver.GetNodeCount(); ++node)
+    {
+        const auto origin = std::find(rest.begin(), rest.end(), wall.mSolver.GetNodeRestPositions()[node]);
+        REQUIRE(origin != rest.end());
+        shared[origin - rest.begin()] += wall.mSolver.GetMasses()[node];
+    }
+    for (std::size_t node = 0; node < intact.size(); ++node)
+        CHECK(shared[node] == Approx(intact[node]).epsilon(1e-12));
     double mass = 0.0;
     for (const TetFragment& fragment : wall.mSolver.ComputeFragments())
         mass += fragment.mMass;

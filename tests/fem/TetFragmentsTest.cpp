@@ -49,7 +49,7 @@ TEST_CASE("TetFragments of an intact box: one piece with the box's exact mass, c
     const Block block = MakeBlock(size, {4, 1, 2});
     std::vector<double> inverse_masses(block.mMesh.GetNodeCount(), 1.0);
     const std::vector<TetFragment> fragments =
-        TetFragments(block.mLinks, std::vector<std::uint8_t>(block.mLinks.GetLinkCount(), 0), block.mMesh.GetTets(),
+        TetFragments(block.mLinks, block.mMesh.GetTets(),
                      block.mElementMasses, block.mMesh.GetRestPositions(), inverse_masses);
     REQUIRE(fragments.size() == 1);
     const double mass = cDensity * size.prod();
@@ -72,7 +72,7 @@ TEST_CASE("TetFragments of a box broken everywhere: one cube each, anchored wher
     std::vector<double> inverse_masses(positions.size(), 1.0);
     inverse_masses[0] = 0.0; // node 0 stays with cube 0
 
-    const std::vector<TetFragment> fragments = TetFragments(block.mLinks, broken, connectivity.mElementNodes,
+    const std::vector<TetFragment> fragments = TetFragments(block.mLinks, connectivity.mElementNodes,
                                                             block.mElementMasses, positions, inverse_masses);
     REQUIRE(fragments.size() == 8);
     const Vec3 cell(0.5, 0.5, 0.5);
@@ -99,7 +99,7 @@ TEST_CASE("TetFragments follows the current positions: a rotated piece has the r
     for (const Vec3& rest : block.mMesh.GetRestPositions())
         positions.push_back(rotation * rest + shift);
     const std::vector<TetFragment> fragments =
-        TetFragments(block.mLinks, std::vector<std::uint8_t>(1, 0), block.mMesh.GetTets(), block.mElementMasses,
+        TetFragments(block.mLinks, block.mMesh.GetTets(), block.mElementMasses,
                      positions, std::vector<double>(positions.size(), 1.0));
     REQUIRE(fragments.size() == 1);
     const double mass = cDensity * size.prod();

@@ -51,6 +51,7 @@ Bar MakeBar(EElasticModel inModel)
     grid.mCellCount = {10, 1, 1};
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
+    settings.mSleepSpeed = 0.0; // never asleep: "stays as it is" must be the material's doing
     Bar bar{TetSolver::Create(TetGrid(grid).Get(), SoftMetal(inModel), settings).Get(), {}, {}};
     for (int k = 0; k <= 1; ++k)
         for (int j = 0; j <= 1; ++j)

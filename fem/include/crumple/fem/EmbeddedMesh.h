@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/fem/TriangleIndices.h>
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
@@ -12,9 +13,6 @@
 
 namespace crumple::fem
 {
-
-/// The three vertex indices of a triangle, counter-clockwise seen from the side its normal points to.
-using TriangleIndices = std::array<int, 3>;
 
 /// Where one display vertex sits inside the simulation mesh: an element and the vertex's barycentric
 /// coordinates in it, x = sum_i mWeights[i] x[corner i of mElement].

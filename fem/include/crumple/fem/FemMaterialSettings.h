@@ -35,8 +35,8 @@ struct FemMaterialSettings
     double mStiffnessDamping = 0.0; ///< Rayleigh stiffness-proportional damping beta (s), >= 0; 0 is undamped
     EElasticModel mModel = EElasticModel::CorotatedLinear; ///< Strain measure and stress law
 
-    /// Plasticity (von Mises, associative, perfectly plastic up to a cap), applied once per TetSolver::Step()
-    /// to each element: with the elastic strain e = eps - eps_p and sigma = C:e, when the von Mises stress
+    /// Plasticity (von Mises, associative, perfectly plastic up to a cap), applied to each element after
+    /// every symplectic sub-step or implicit piece, with that (sub-)step's dt: with the elastic strain e = eps - eps_p and sigma = C:e, when the von Mises stress
     /// sigma_vm = sqrt(3/2 s:s) (s the deviatoric part of sigma) exceeds mYieldStress, the plastic strain
     /// takes min(1, mCreepRate dt) of the deviatoric elastic strain beyond the yield surface (radial
     /// return: with an infinite creep rate sigma_vm comes back exactly to the yield stress), then the
@@ -47,7 +47,7 @@ struct FemMaterialSettings
     double mCreepRate = std::numeric_limits<double>::infinity();   ///< Plastic flow rate (1/s), > 0
     double mMaxPlasticStrain = 0.5; ///< Cap of the equivalent plastic strain (dimensionless), >= 0
 
-    /// Fracture (Rankine): after each TetSolver::Step() the volume-weighted mean stress of each element group
+    /// Fracture (Rankine): after every symplectic sub-step or implicit piece the volume-weighted mean stress of each element group
     /// (cube) is decomposed into principal stresses; where the largest exceeds mTensileStrength the group
     /// detaches from neighbours as mFractureMode says. Infinity means unbreakable (and costs nothing).
     double mTensileStrength = std::numeric_limits<double>::infinity(); ///< sigma_t (Pa), > 0 (glass ~5e7)

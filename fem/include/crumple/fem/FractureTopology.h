@@ -22,7 +22,9 @@ struct FractureConnectivity
 /// numbering whatever order they opened in). At each rest node the groups touching it are joined by the
 /// unbroken links through it; each resulting cluster is one node. The cluster with the lowest group keeps
 /// the rest node's index, the others get new indices appended in order of rest node, then lowest group.
-/// With no broken link the result is the mesh's own connectivity.
+/// With no broken link the result is the mesh's own connectivity when groups sharing a node are joined
+/// through faces around it (any grid of whole cubes); groups that touch only along an edge or at a corner
+/// (a masked grid) have no link there and get separate nodes.
 /// @param[in] inMesh    the rest mesh the links were built from
 /// @param[in] inLinks   BuildFractureLinks(inMesh)
 /// @param[in] inBroken  #L, nonzero where a link is broken

@@ -24,8 +24,9 @@ struct PropMaterialPreset
 ///    cube-sized shards). Edges: square-ish 0.2 m sections, few edge vertices (5 /m, +-1 cm).
 ///  - Wood, spruce / pine along the grain (EN 338 C24 class: E_0,mean 11 GPa; clear wood tensile strength
 ///    parallel to the grain 40-90 MPa), simplified to isotropic: E 10 GPa, nu 0.3, 500 kg/m^3, tensile
-///    40 MPa, no plasticity, CrackPlane. Edges: long thin planks 0.6 x 0.1 m, 40 vertices /m at +-3 cm on
-///    horizontal edges (splinters along the grain), none on vertical ones.
+///    40 MPa, no plasticity, CrackPlane. Edges: long thin planks 0.6 x 0.1 m, 40 vertices /m at +-2.4 cm on
+///    horizontal edges (splinters along the grain; the most ProceduralEdgeMesh accepts when sections shrink
+///    to 2/3 of 0.1 m), none on vertical ones.
 ///  - Brick, clay-brick masonry in cement-lime mortar: E 12 GPa (Eurocode 6 suggests 1000 f_k, 5-15 GPa),
 ///    nu 0.2, 1900 kg/m^3; tensile strength governed by the mortar bond, 0.1-2 MPa, taken as 1.5 MPa;
 ///    no plasticity; DetachGroup (whole bricks come out). Edges: UK brick faces 0.215 x 0.065 m, straight

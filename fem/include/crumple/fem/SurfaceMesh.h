@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/fem/TriangleIndices.h>
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -10,10 +11,6 @@
 
 namespace crumple::fem
 {
-
-/// The three vertex (or node) indices of a triangle. Where an orientation is stated, the right-handed normal
-/// (p1 - p0) x (p2 - p0) points out of the enclosed solid.
-using TriangleIndices = std::array<int, 3>;
 
 /// A triangle surface in double precision: the input of Tetrahedralize and what LoadSurfaceMesh returns.
 struct SurfaceMesh

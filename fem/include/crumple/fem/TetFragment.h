@@ -11,7 +11,7 @@
 namespace crumple::fem
 {
 
-/// A connected piece of a prop: element groups joined by unbroken links. What an adapter needs to turn a
+/// A connected piece of a prop: element groups joined through shared nodes. What an adapter needs to turn a
 /// loose piece into a rigid body: its mass, centre of mass and inertia (uniform density, exact for linear
 /// tetrahedra), plus whether it is still held by an anchored node.
 struct TetFragment
@@ -25,17 +25,16 @@ struct TetFragment
     bool mAnchored = false;            ///< True when one of its nodes is fixed (inverse mass 0)
 };
 
-/// The fragments of a prop, ordered by their lowest group (so fragment 0 holds group 0). A tetrahedron of
-/// mass m and corners x_i has the second moment integral x x^T dm = m / 20 (sum x_i x_i^T + s s^T), s = sum x_i
-/// (Tonon 2004), from which the inertia about the fragment's centre of mass follows.
-/// @param[in] inLinks          links of the rest mesh
-/// @param[in] inBroken         #L, nonzero where broken
+/// The fragments of a prop: its elements joined through shared current nodes (so an open crack, whose nodes
+/// fracture duplicated, separates them), ordered by their lowest group (fragment 0 holds group 0). A
+/// tetrahedron of mass m and corners x_i has the second moment integral x x^T dm = m / 20 (sum x_i x_i^T +
+/// s s^T), s = sum x_i (Tonon 2004), from which the inertia about the fragment's centre of mass follows.
+/// @param[in] inLinks          links of the rest mesh (for the element groups)
 /// @param[in] inElementNodes   #T current connectivity
 /// @param[in] inElementMasses  #T element masses (kg): density x rest volume
 /// @param[in] inPositions      #N current node positions (m)
 /// @param[in] inInverseMasses  #N (1/kg), 0 = anchored
-std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const std::uint8_t> inBroken,
-                                      std::span<const TetIndices> inElementNodes,
+std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const TetIndices> inElementNodes,
                                       std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
                                       std::span<const double> inInverseMasses);
 

@@ -93,7 +93,8 @@ public:
     /// Number of nodes #N now: the mesh's nodes plus the copies fracture made (see GetElementNodes())
     int GetNodeCount() const { return static_cast<int>(mPositions.size()); }
     /// Current element -> node connectivity, #T. Equal to the mesh's until a fracture: then the nodes on a
-    /// crack are duplicated and the elements on one side point to the copies. Element indices never change;
+    /// crack are duplicated and the elements on one side point to the copies. (For a breakable material,
+    /// groups that touch only along an edge or at a corner get their own nodes from the start.) Element indices never change;
     /// node i < GetMesh().GetNodeCount() keeps its index, copies are appended.
     const std::vector<TetIndices>& GetElementNodes() const { return mElementNodes; }
     /// Rest position (m, body frame) of every current node, #N: a copy has its original's
@@ -124,8 +125,9 @@ public:
     /// Largest principal stress of each group's mean stress at the end of the last step, #G (empty for an
     /// unbreakable material, zeros before the first step)
     const std::vector<PrincipalStress>& GetGroupPrincipalStress() const { return mPrincipal; }
-    /// The connected pieces now (TetFragments), ordered by lowest group; one piece while nothing is broken.
-    /// O(#T); call it after a step that reported ETetStepEvent::Fractured.
+    /// The connected pieces now (TetFragments), ordered by lowest group; one piece while nothing is broken
+    /// and the groups are joined through faces. O(#T) for a breakable material (O(#T log #T) otherwise, which
+    /// builds the links); call it after a step that reported ETetStepEvent::Fractured.
     std::vector<TetFragment> ComputeFragments() const;
     /// Element rest data, #T
     const std::vector<TetElementRest>& GetElementRest() const { return mRest; }
@@ -166,6 +168,7 @@ private:
         std::vector<Vec3> mExternalForces;
         std::vector<Mat3> mPlasticStrains;
         std::vector<std::uint8_t> mBroken;
+        std::vector<PrincipalStress> mPrincipal;
         double mFreeMass = 0.0;
     };
     void SaveShape(ShapeState& outShape) const;

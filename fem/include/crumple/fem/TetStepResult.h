@@ -26,8 +26,8 @@ enum class ETetStepEvent : std::uint32_t
     /// Information: an attempt diverged and the step was retried from its start in more pieces (mSubSteps
     /// says how many the accepted attempt used); without Diverged the retry succeeded.
     Split = 1u << 4,
-    /// Information: elements flowed plastically this step (mPlasticElements says how many); their rest shape
-    /// changed.
+    /// Information: elements flowed plastically this step (mPlasticElements counts the flow events); their
+    /// rest shape changed.
     Yielded = 1u << 5,
     /// Information: links broke this step (mBrokenLinks says how many); nodes were duplicated, so node count
     /// and GetElementNodes() changed. Call ComputeFragments() for the pieces.
@@ -63,8 +63,8 @@ struct TetStepResult
     double mSolverResidual = 0.0; ///< Largest final relative CG residual |r| / |b| (implicit Euler)
     double mKineticEnergy = 0.0;  ///< Kinetic energy after the step (J)
     double mEnergy = 0.0;         ///< Mechanical energy H after the step (J), see mDivergenceEnergyRatio
-    int mPlasticElements = 0;     ///< Elements that flowed plastically at the end of the step
-    int mBrokenLinks = 0;         ///< Links broken at the end of the step
+    int mPlasticElements = 0;     ///< Plastic flow events: elements that flowed, summed over the sub-steps
+    int mBrokenLinks = 0;         ///< Links broken during the step
 };
 
 /// Outcome of TetSolver::SolveStatic().

@@ -4,7 +4,7 @@
 
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
-#include <crumple/fem/EmbeddedMesh.h>
+#include <crumple/fem/TriangleIndices.h>
 
 #include <span>
 #include <vector>
