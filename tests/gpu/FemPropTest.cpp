@@ -90,9 +90,9 @@ TEST_CASE("FemProp falls back to the CPU for what the GPU solver lacks, and refu
     ComputeDeviceProvider provider;
     FemPropSettings settings;
     settings.mBackend = EFemBackend::Gpu;
-    FemMaterialSettings breakable = Soft();
-    breakable.mTensileStrength = 1.0e5;
-    Result<FemProp> prop = FemProp::Create(&provider, Bar(), breakable, Explicit(), settings);
+    FemMaterialSettings plastic = Soft();
+    plastic.mYieldStress = 1.0e5;
+    Result<FemProp> prop = FemProp::Create(&provider, Bar(), plastic, Explicit(), settings);
     REQUIRE(prop.IsValid());
     CHECK(prop.Get().GetBackend() == EFemBackend::Cpu);
     CHECK_FALSE(prop.Get().GetFallbackReason().empty());

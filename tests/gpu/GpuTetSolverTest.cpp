@@ -224,9 +224,11 @@ TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothin
     CHECK(implicit.GetError().mMessage.find("implicit") != std::string::npos);
     TetSolverSettings explicit_settings;
     explicit_settings.mIntegrator = EIntegrator::SymplecticEuler;
-    FemMaterialSettings breakable;
-    breakable.mTensileStrength = 1.0e6;
-    CHECK(GpuTetSolver::Create(device, mesh, breakable, explicit_settings).HasError());
+    FemMaterialSettings plastic;
+    plastic.mYieldStress = 1.0e6;
+    Result<GpuTetSolver> refused = GpuTetSolver::Create(device, mesh, plastic, explicit_settings);
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mMessage.find("plasticity") != std::string::npos);
     FemMaterialSettings negative;
     negative.mDensity = -1.0;
     CHECK(GpuTetSolver::Create(device, mesh, negative, explicit_settings).HasError());

@@ -5,5 +5,6 @@ crumple_add_test(gpu
     gpu/ComputeDeviceTest.cpp
     gpu/FemPropTest.cpp
     gpu/FloatTetReference.cpp
+    gpu/GpuFractureTest.cpp
     gpu/GpuTetSolverTest.cpp
     LINK crumple::gpu crumple_common_fem)

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
-#include <crumple/fem/StableTimeStep.h>
-#include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/OpenCracks.h>
 #include <crumple/fem/TetSolver.h>
 #include <crumple/gpu/GpuTetSolver.h>
 
@@ -36,7 +36,47 @@ Vec3 ToVec3(const Float4& inValue)
 template <class T>
 Result<StorageBuffer> MakeBuffer(const std::shared_ptr<ComputeDevice>& inDevice, const std::vector<T>& inData)
 {
+    // A buffer never has size 0 (an unbreakable prop's link arrays are empty): keep one dummy element.
+    if (inData.empty())
+        return StorageBuffer::Create(inDevice, sizeof(T));
     return StorageBuffer::Create(inDevice, inData.size() * sizeof(T), inData.data());
+}
+
+// Fills *ioBuffer from a Result, or returns its error.
+Status Assign(StorageBuffer& ioBuffer, Result<StorageBuffer> inResult)
+{
+    if (inResult.HasError())
+        return inResult.GetError();
+    ioBuffer = std::move(inResult.Get());
+    return Status::Ok();
+}
+
+// Each node's (element, corner) entries in element order, so the gather sums in the CPU's scatter order.
+void Adjacency(const std::vector<fem::TetIndices>& inElements, std::size_t inNodeCount, std::vector<std::uint32_t>& outOffsets,
+               std::vector<std::uint32_t>& outIncident)
+{
+    outOffsets.assign(inNodeCount + 1, 0);
+    for (const fem::TetIndices& element : inElements)
+        for (int node : element)
+            ++outOffsets[node + 1];
+    for (std::size_t node = 0; node < inNodeCount; ++node)
+        outOffsets[node + 1] += outOffsets[node];
+    outIncident.resize(4 * inElements.size());
+    std::vector<std::uint32_t> cursor(outOffsets.begin(), outOffsets.end() - 1);
+    for (std::size_t tet = 0; tet < inElements.size(); ++tet)
+        for (std::uint32_t corner = 0; corner < 4; ++corner)
+            outIncident[cursor[inElements[tet][corner]]++] = static_cast<std::uint32_t>(4 * tet + corner);
+}
+
+// The shader programs, compiled from the embedded sources.
+Status Compile(const std::shared_ptr<ComputeDevice>& inDevice, ComputeProgram& outProgram, const char* inName,
+               std::string_view inSource)
+{
+    Result<ComputeProgram> program = ComputeProgram::Create(inDevice, inName, inSource);
+    if (program.HasError())
+        return program.GetError();
+    outProgram = std::move(program.Get());
+    return Status::Ok();
 }
 
 } // namespace
@@ -45,7 +85,8 @@ Result<GpuTetSolver> GpuTetSolver::Create(std::shared_ptr<ComputeDevice> inDevic
                                           const fem::FemMaterialSettings& inMaterial,
                                           const fem::TetSolverSettings& inSettings)
 {
-    // The CPU solver's validation, then what the GPU path does not do yet.
+    // The CPU solver's validation (and its initial state: masses, rest data, stable step, the connectivity of
+    // a breakable mesh), then what the GPU path does not do.
     Result<fem::TetSolver> reference = fem::TetSolver::Create(inMesh, inMaterial, inSettings);
     if (reference.HasError())
         return reference.GetError();
@@ -55,103 +96,145 @@ Result<GpuTetSolver> GpuTetSolver::Create(std::shared_ptr<ComputeDevice> inDevic
         return MakeError(EError::InvalidArgument,
                          "GpuTetSolver: implicit Euler is not implemented on the GPU; use "
                          "EIntegrator::SymplecticEuler (the CPU's stable sub-steps) or the CPU solver");
-    const fem::FemMaterial& material = reference.Get().GetMaterial();
-    if (material.IsPlastic() || material.IsBreakable())
-        return MakeError(EError::InvalidArgument,
-                         "GpuTetSolver: plasticity and fracture are not implemented on the GPU yet; use the CPU "
-                         "solver for a plastic or breakable material");
+    const fem::TetSolver& cpu = reference.Get();
+    const fem::FemMaterial& material = cpu.GetMaterial();
+    if (material.IsPlastic())
+        return MakeError(EError::InvalidArgument, "GpuTetSolver: plasticity is not implemented on the GPU; use the "
+                                                  "CPU solver for a plastic material");
 
-    GpuTetSolver solver;
+    GpuTetSolver solver(inMesh);
     solver.mDevice = inDevice;
+    solver.mRest = cpu.GetElementRest();
     solver.mSettings = inSettings;
     solver.mMaterial = inMaterial;
     solver.mLambda = static_cast<float>(material.GetLambda());
     solver.mMu = static_cast<float>(material.GetShearModulus());
-    solver.mMasses = reference.Get().GetMasses();
-    solver.mInverseMasses = reference.Get().GetInverseMasses();
+    solver.mMasses = cpu.GetMasses();
+    solver.mInverseMasses = cpu.GetInverseMasses();
     solver.mElementCount = static_cast<std::uint32_t>(inMesh.GetTetCount());
-    solver.mStableTimeStep = reference.Get().GetStableTimeStep();
-
-    // Host-side arrays in the shaders' layouts.
-    const std::size_t node_count = solver.mMasses.size();
-    std::vector<Float4> positions(node_count), zeros(node_count, Float4{0.0f, 0.0f, 0.0f, 0.0f});
-    for (std::size_t node = 0; node < node_count; ++node)
-        positions[node] = ToFloat4(inMesh.GetRestPositions()[node], solver.mInverseMasses[node]);
-    std::vector<Int4> elements;
-    std::vector<Float4> rest, rotations(solver.mElementCount, Float4{0.0f, 0.0f, 0.0f, 1.0f});
-    const std::vector<fem::TetElementRest>& rest_data = reference.Get().GetElementRest();
-    for (std::uint32_t tet = 0; tet < solver.mElementCount; ++tet)
+    solver.mStableTimeStep = cpu.GetStableTimeStep();
+    solver.mBreakable = material.IsBreakable();
+    if (solver.mBreakable)
     {
-        const fem::TetIndices& nodes = inMesh.GetTets()[tet];
-        elements.push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
-        const Mat3& inverse = rest_data[tet].mRestEdgeInverse;
-        rest.push_back(ToFloat4(inverse.col(0), rest_data[tet].mRestVolume));
-        rest.push_back(ToFloat4(inverse.col(1)));
-        rest.push_back(ToFloat4(inverse.col(2)));
+        solver.mLinks = cpu.GetFractureLinks();
+        solver.mBroken = cpu.GetBrokenLinks();
     }
 
-    // Adjacency: each node's (element, corner) entries in element order, so the gather sums in the CPU's
-    // scatter order.
-    std::vector<std::uint32_t> offsets(node_count + 1, 0), incident(4 * static_cast<std::size_t>(solver.mElementCount));
-    for (const Int4& element : elements)
-        for (std::int32_t node : element)
-            ++offsets[node + 1];
-    for (std::size_t node = 0; node < node_count; ++node)
-        offsets[node + 1] += offsets[node];
-    std::vector<std::uint32_t> cursor(offsets.begin(), offsets.end() - 1);
-    for (std::uint32_t tet = 0; tet < solver.mElementCount; ++tet)
-        for (std::uint32_t corner = 0; corner < 4; ++corner)
-            incident[cursor[elements[tet][corner]]++] = 4 * tet + corner;
+    // Programs.
+    const struct
+    {
+        ComputeProgram* mProgram;
+        const char* mName;
+        std::string_view mSource;
+    } programs[] = {{&solver.mElementPass, "TetElementForces", cShaderTetElementForces},
+                    {&solver.mNodePass, "TetNodeUpdate", cShaderTetNodeUpdate},
+                    {&solver.mStressPass, "TetElementStress", cShaderTetElementStress},
+                    {&solver.mGroupPass, "TetGroupStress", cShaderTetGroupStress},
+                    {&solver.mCrackPass, "TetOpenCracks", cShaderTetOpenCracks}};
+    for (const auto& program : programs)
+        if (Status status = Compile(inDevice, *program.mProgram, program.mName, program.mSource); status.HasError())
+            return status.GetError();
 
-    // Programs and buffers.
-    Result<ComputeProgram> element_pass = ComputeProgram::Create(inDevice, "TetElementForces", cShaderTetElementForces);
-    if (element_pass.HasError())
-        return element_pass.GetError();
-    Result<ComputeProgram> node_pass = ComputeProgram::Create(inDevice, "TetNodeUpdate", cShaderTetNodeUpdate);
-    if (node_pass.HasError())
-        return node_pass.GetError();
-    solver.mElementPass = std::move(element_pass.Get());
-    solver.mNodePass = std::move(node_pass.Get());
-    const std::uint32_t zero_status = 0;
-    const std::vector<Float4> corners(4 * static_cast<std::size_t>(solver.mElementCount), Float4{});
-    struct Upload
+    // Per-element data that never changes.
+    std::vector<Float4> rest, rotations(solver.mElementCount, Float4{0.0f, 0.0f, 0.0f, 1.0f});
+    for (const fem::TetElementRest& element : solver.mRest)
+    {
+        rest.push_back(ToFloat4(element.mRestEdgeInverse.col(0), element.mRestVolume));
+        rest.push_back(ToFloat4(element.mRestEdgeInverse.col(1)));
+        rest.push_back(ToFloat4(element.mRestEdgeInverse.col(2)));
+    }
+    const std::uint32_t status_words[2] = {0, 0};
+    if (Status status = Assign(solver.mRestBuffer, MakeBuffer(inDevice, rest)); status.HasError())
+        return status.GetError();
+    if (Status status = Assign(solver.mRotations, MakeBuffer(inDevice, rotations)); status.HasError())
+        return status.GetError();
+    if (Status status = Assign(solver.mSavedRotations, MakeBuffer(inDevice, rotations)); status.HasError())
+        return status.GetError();
+    if (Status status = Assign(solver.mCorners, StorageBuffer::Create(inDevice, 4 * sizeof(Float4) * solver.mElementCount));
+        status.HasError())
+        return status.GetError();
+    if (Status status = Assign(solver.mStatus, StorageBuffer::Create(inDevice, sizeof(status_words), status_words));
+        status.HasError())
+        return status.GetError();
+
+    // Fracture data: stresses, group membership, links, broken flags (dummies when unbreakable).
+    std::vector<std::uint32_t> group_offsets(solver.mLinks.mGroupElementOffsets.begin(), solver.mLinks.mGroupElementOffsets.end());
+    std::vector<std::uint32_t> group_elements(solver.mLinks.mGroupElements.begin(), solver.mLinks.mGroupElements.end());
+    std::vector<Int4> links, faces;
+    std::vector<Float4> normals;
+    for (int link = 0; link < solver.mLinks.GetLinkCount(); ++link)
+    {
+        links.push_back({solver.mLinks.mLinkGroups[link][0], solver.mLinks.mLinkGroups[link][1],
+                         solver.mLinks.mLinkFaceOffsets[link], solver.mLinks.mLinkFaceOffsets[link + 1]});
+        normals.push_back(ToFloat4(solver.mLinks.mLinkRestNormals[link]));
+    }
+    for (const fem::FractureLinkFace& face : solver.mLinks.mLinkFaces)
+        faces.push_back({face.mElement, face.mCorners[0], face.mCorners[1], face.mCorners[2]});
+    const std::vector<std::uint32_t> broken(solver.mBroken.begin(), solver.mBroken.end());
+    const std::size_t stress_count = solver.mBreakable ? 2 * static_cast<std::size_t>(solver.mElementCount) : 1;
+    const std::size_t principal_count = std::max<std::size_t>(1, solver.mLinks.GetGroupCount());
+    struct
     {
         StorageBuffer* mBuffer;
         Result<StorageBuffer> mResult;
-    } uploads[] = {{&solver.mPositions, MakeBuffer(inDevice, positions)},
-                   {&solver.mVelocities, MakeBuffer(inDevice, zeros)},
-                   {&solver.mExternal, MakeBuffer(inDevice, zeros)},
-                   {&solver.mElements, MakeBuffer(inDevice, elements)},
-                   {&solver.mRest, MakeBuffer(inDevice, rest)},
-                   {&solver.mRotations, MakeBuffer(inDevice, rotations)},
-                   {&solver.mCorners, MakeBuffer(inDevice, corners)},
-                   {&solver.mOffsets, MakeBuffer(inDevice, offsets)},
-                   {&solver.mIncident, MakeBuffer(inDevice, incident)},
-                   {&solver.mStatus, StorageBuffer::Create(inDevice, sizeof(zero_status), &zero_status)},
-                   {&solver.mSavedPositions, MakeBuffer(inDevice, positions)},
-                   {&solver.mSavedVelocities, MakeBuffer(inDevice, zeros)},
-                   {&solver.mSavedRotations, MakeBuffer(inDevice, rotations)}};
-    for (Upload& upload : uploads)
-    {
-        if (upload.mResult.HasError())
-            return upload.mResult.GetError();
-        *upload.mBuffer = std::move(upload.mResult.Get());
-    }
+    } fracture[] = {{&solver.mStress, StorageBuffer::Create(inDevice, stress_count * sizeof(Float4))},
+                    {&solver.mGroupOffsets, MakeBuffer(inDevice, group_offsets)},
+                    {&solver.mGroupElements, MakeBuffer(inDevice, group_elements)},
+                    {&solver.mPrincipal, StorageBuffer::Create(inDevice, principal_count * sizeof(Float4))},
+                    {&solver.mLinkBuffer, MakeBuffer(inDevice, links)},
+                    {&solver.mLinkFaces, MakeBuffer(inDevice, faces)},
+                    {&solver.mLinkNormals, MakeBuffer(inDevice, normals)},
+                    {&solver.mBrokenBuffer, MakeBuffer(inDevice, broken)}};
+    for (auto& buffer : fracture)
+        if (Status status = Assign(*buffer.mBuffer, std::move(buffer.mResult)); status.HasError())
+            return status.GetError();
+
+    // Node state and connectivity (the CPU solver's: a breakable mesh may start with split edge joints).
+    std::vector<Float4> positions, zeros(cpu.GetPositions().size(), Float4{});
+    for (std::size_t node = 0; node < cpu.GetPositions().size(); ++node)
+        positions.push_back(ToFloat4(cpu.GetPositions()[node], solver.mInverseMasses[node]));
+    if (Status status = solver.UploadTopology(cpu.GetElementNodes(), positions, zeros, zeros); status.HasError())
+        return status.GetError();
     return solver;
+}
+
+Status GpuTetSolver::UploadTopology(const std::vector<fem::TetIndices>& inElementNodes, const std::vector<Float4>& inPositions,
+                                    const std::vector<Float4>& inVelocities, const std::vector<Float4>& inForces)
+{
+    std::vector<Int4> elements;
+    for (const fem::TetIndices& nodes : inElementNodes)
+        elements.push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
+    std::vector<std::uint32_t> offsets, incident;
+    Adjacency(inElementNodes, inPositions.size(), offsets, incident);
+    struct
+    {
+        StorageBuffer* mBuffer;
+        Result<StorageBuffer> mResult;
+    } uploads[] = {{&mElements, MakeBuffer(mDevice, elements)},
+                   {&mOffsets, MakeBuffer(mDevice, offsets)},
+                   {&mIncident, MakeBuffer(mDevice, incident)},
+                   {&mPositions, MakeBuffer(mDevice, inPositions)},
+                   {&mVelocities, MakeBuffer(mDevice, inVelocities)},
+                   {&mExternal, MakeBuffer(mDevice, inForces)}};
+    for (const auto& upload : uploads)
+        if (upload.mResult.HasError())
+            return upload.mResult.GetError(); // nothing replaced yet
+    for (auto& upload : uploads)
+        *upload.mBuffer = std::move(upload.mResult.Get());
+    mElementNodes = inElementNodes;
+    return Status::Ok();
 }
 
 Result<GpuTetSolver> GpuTetSolver::CreateFrom(std::shared_ptr<ComputeDevice> inDevice, const fem::TetSolver& inSolver)
 {
-    if (inSolver.GetNodeCount() != inSolver.GetMesh().GetNodeCount())
-        return MakeError(EError::InvalidArgument, "GpuTetSolver::CreateFrom: the prop has fractured; the GPU "
-                                                  "solver starts from an intact mesh");
     Result<GpuTetSolver> created =
         Create(std::move(inDevice), inSolver.GetMesh(), inSolver.GetMaterial().GetSettings(), inSolver.GetSettings());
     if (created.HasError())
         return created;
     GpuTetSolver& solver = created.Get();
 
-    // The CPU state, packed as the shaders read it.
+    // The CPU state, cracks included, packed as the shaders read it.
+    solver.mMasses = inSolver.GetMasses();
     solver.mInverseMasses = inSolver.GetInverseMasses();
     std::vector<Float4> positions, velocities, forces, rotations;
     for (int node = 0; node < inSolver.GetNodeCount(); ++node)
@@ -163,10 +246,16 @@ Result<GpuTetSolver> GpuTetSolver::CreateFrom(std::shared_ptr<ComputeDevice> inD
     for (const Quat& rotation : inSolver.GetElementRotations())
         rotations.push_back({static_cast<float>(rotation.x()), static_cast<float>(rotation.y()),
                              static_cast<float>(rotation.z()), static_cast<float>(rotation.w())});
-    solver.mPositions.Upload(0, positions.size() * sizeof(Float4), positions.data());
-    solver.mVelocities.Upload(0, velocities.size() * sizeof(Float4), velocities.data());
-    solver.mExternal.Upload(0, forces.size() * sizeof(Float4), forces.data());
+    if (Status status = solver.UploadTopology(inSolver.GetElementNodes(), positions, velocities, forces); status.HasError())
+        return status.GetError();
     solver.mRotations.Upload(0, rotations.size() * sizeof(Float4), rotations.data());
+    if (solver.mBreakable)
+    {
+        solver.mBroken = inSolver.GetBrokenLinks();
+        const std::vector<std::uint32_t> broken(solver.mBroken.begin(), solver.mBroken.end());
+        if (!broken.empty())
+            solver.mBrokenBuffer.Upload(0, broken.size() * sizeof(std::uint32_t), broken.data());
+    }
     return created;
 }
 
@@ -205,8 +294,7 @@ Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
         return status;
     Float4 velocity;
     mVelocities.Download(inNode * sizeof(Float4), sizeof(Float4), &velocity);
-    const Vec3 updated = ToVec3(velocity) + mInverseMasses[inNode] * inImpulse;
-    velocity = ToFloat4(updated);
+    velocity = ToFloat4(ToVec3(velocity) + mInverseMasses[inNode] * inImpulse);
     mVelocities.Upload(inNode * sizeof(Float4), sizeof(Float4), &velocity);
     return Status::Ok();
 }
@@ -248,25 +336,105 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
     return Status::Ok();
 }
 
-bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps)
+void GpuTetSolver::BindAll() const
 {
-    const double dt = inDeltaTime / inSubSteps;
     mPositions.Bind(0);
     mVelocities.Bind(1);
     mElements.Bind(2);
-    mRest.Bind(3);
+    mRestBuffer.Bind(3);
     mRotations.Bind(4);
     mCorners.Bind(5);
     mExternal.Bind(6);
     mOffsets.Bind(7);
     mIncident.Bind(8);
     mStatus.Bind(9);
-    const std::uint32_t zero = 0;
-    mStatus.Upload(0, sizeof(zero), &zero);
-    const std::uint32_t node_count = static_cast<std::uint32_t>(mMasses.size());
-    const float damping_scale = static_cast<float>(1.0 / (1.0 + mMaterial.mMassDamping * dt));
+    mStress.Bind(10);
+    mGroupOffsets.Bind(11);
+    mGroupElements.Bind(12);
+    mPrincipal.Bind(13);
+    mLinkBuffer.Bind(14);
+    mLinkFaces.Bind(15);
+    mLinkNormals.Bind(16);
+    mBrokenBuffer.Bind(17);
+}
 
-    // Uniforms are per program and stay set: set them once, then alternate the two passes.
+int GpuTetSolver::Fracture()
+{
+    // Stress, group principal stress, links: the CPU's Fracture() in three passes.
+    mStressPass.Use();
+    mStressPass.SetUInt("uElementCount", mElementCount);
+    mStressPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
+    mStressPass.SetFloat("uLambda", mLambda);
+    mStressPass.SetFloat("uMu", mMu);
+    mStressPass.Dispatch(mElementCount);
+    mGroupPass.Use();
+    mGroupPass.SetUInt("uGroupCount", static_cast<std::uint32_t>(mLinks.GetGroupCount()));
+    mGroupPass.Dispatch(static_cast<std::uint32_t>(mLinks.GetGroupCount()));
+    mCrackPass.Use();
+    mCrackPass.SetUInt("uLinkCount", static_cast<std::uint32_t>(mLinks.GetLinkCount()));
+    mCrackPass.SetFloat("uStrength", static_cast<float>(mMaterial.mTensileStrength));
+    mCrackPass.SetInt("uDetachGroup", mMaterial.mFractureMode == fem::EFractureMode::DetachGroup ? 1 : 0);
+    mCrackPass.SetFloat("uCrackCosine", static_cast<float>(fem::cCrackFaceCosine));
+    mCrackPass.Dispatch(static_cast<std::uint32_t>(mLinks.GetLinkCount()));
+
+    // The opened-link count (a sync point: see the class comment).
+    std::uint32_t words[2] = {0, 0};
+    mStatus.Download(0, sizeof(words), words);
+    if (words[1] == 0)
+        return 0;
+    const std::uint32_t clear = 0;
+    mStatus.Upload(sizeof(std::uint32_t), sizeof(clear), &clear);
+    Reconnect();
+    BindAll(); // the node buffers were replaced
+    return static_cast<int>(words[1]);
+}
+
+// As fem::TetSolver::Reconnect: every new node copies the old node at the same element corner; masses are
+// lumped anew; an external force is shared among the copies by mass; anchoring is inherited.
+void GpuTetSolver::Reconnect()
+{
+    std::vector<std::uint32_t> broken(mBroken.size());
+    mBrokenBuffer.Download(0, broken.size() * sizeof(std::uint32_t), broken.data());
+    for (std::size_t link = 0; link < broken.size(); ++link)
+        mBroken[link] = broken[link] != 0 ? 1 : 0;
+    const fem::FractureConnectivity connectivity = fem::FractureTopology(mMesh, mLinks, mBroken);
+
+    const std::size_t old_count = mMasses.size(), new_count = connectivity.mNodeOrigin.size();
+    std::vector<Float4> positions(old_count), velocities(old_count), forces(old_count);
+    mPositions.Download(0, old_count * sizeof(Float4), positions.data());
+    mVelocities.Download(0, old_count * sizeof(Float4), velocities.data());
+    mExternal.Download(0, old_count * sizeof(Float4), forces.data());
+    std::vector<int> old_of_new(new_count, -1);
+    for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
+        for (int corner = 0; corner < 4; ++corner)
+            old_of_new[connectivity.mElementNodes[tet][corner]] = mElementNodes[tet][corner];
+    const std::vector<double> masses =
+        fem::LumpedNodeMass(connectivity.mElementNodes, mRest, static_cast<int>(new_count), mMaterial.mDensity);
+    std::vector<double> inverse_masses(new_count);
+    std::vector<Float4> new_positions(new_count), new_velocities(new_count), new_forces(new_count);
+    for (std::size_t node = 0; node < new_count; ++node)
+    {
+        const int old = old_of_new[node];
+        inverse_masses[node] = mInverseMasses[old] == 0.0 ? 0.0 : 1.0 / masses[node];
+        new_positions[node] = positions[old];
+        new_positions[node][3] = static_cast<float>(inverse_masses[node]);
+        new_velocities[node] = velocities[old];
+        new_forces[node] = ToFloat4(ToVec3(forces[old]) * (masses[node] / mMasses[old]));
+    }
+    if (UploadTopology(connectivity.mElementNodes, new_positions, new_velocities, new_forces).IsValid())
+    {
+        mMasses = masses;
+        mInverseMasses = inverse_masses;
+    }
+}
+
+bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks)
+{
+    const double dt = inDeltaTime / inSubSteps;
+    BindAll();
+    const std::uint32_t zero[2] = {0, 0};
+    mStatus.Upload(0, sizeof(zero), zero);
+    const float damping_scale = static_cast<float>(1.0 / (1.0 + mMaterial.mMassDamping * dt));
     mElementPass.Use();
     mElementPass.SetUInt("uElementCount", mElementCount);
     mElementPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
@@ -274,7 +442,6 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps)
     mElementPass.SetFloat("uMu", mMu);
     mElementPass.SetFloat("uBeta", static_cast<float>(mMaterial.mStiffnessDamping));
     mNodePass.Use();
-    mNodePass.SetUInt("uNodeCount", node_count);
     mNodePass.SetFloat("uDeltaTime", static_cast<float>(dt));
     mNodePass.SetFloat("uDampingScale", damping_scale);
     mNodePass.SetVec3("uGravity", mSettings.mGravity);
@@ -283,11 +450,14 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps)
         mElementPass.Use();
         mElementPass.Dispatch(mElementCount);
         mNodePass.Use();
-        mNodePass.Dispatch(node_count);
+        mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size())); // fracture may add nodes
+        mNodePass.Dispatch(static_cast<std::uint32_t>(mMasses.size()));
+        if (mBreakable)
+            ioBrokenLinks += Fracture();
     }
     mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
 
-    // The one readback of a step: the divergence flag.
+    // The divergence flag.
     std::uint32_t status = 0;
     mStatus.Download(0, sizeof(status), &status);
     return status == 0;
@@ -313,10 +483,41 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
         return status.GetError();
     const int sub_steps = std::max(1, static_cast<int>(count));
 
-    // Keep the start of the step on the GPU (copies, no readback) to restore on divergence.
-    mSavedPositions.CopyFrom(mPositions);
-    mSavedVelocities.CopyFrom(mVelocities);
-    mSavedRotations.CopyFrom(mRotations);
+    // The start of the step, to restore on divergence: node state on the GPU (copies, no readback) and, for
+    // a breakable prop, the connectivity on the host.
+    auto save = [this](StorageBuffer& outCopy, const StorageBuffer& inSource)
+    {
+        if (outCopy.GetSize() != inSource.GetSize())
+            (void)Assign(outCopy, StorageBuffer::Create(mDevice, inSource.GetSize()));
+        outCopy.CopyFrom(inSource);
+    };
+    save(mSavedPositions, mPositions);
+    save(mSavedVelocities, mVelocities);
+    save(mSavedExternal, mExternal);
+    save(mSavedRotations, mRotations);
+    const std::vector<fem::TetIndices> saved_elements = mElementNodes;
+    const std::vector<std::uint8_t> saved_broken = mBroken;
+    const std::vector<double> saved_masses = mMasses, saved_inverse_masses = mInverseMasses;
+    auto restore = [&]()
+    {
+        if (mElementNodes != saved_elements)
+        {
+            // A crack opened during the attempt: put the connectivity back first (buffer sizes follow it).
+            std::vector<Float4> node_state(saved_masses.size());
+            (void)UploadTopology(saved_elements, node_state, node_state, node_state);
+            mBroken = saved_broken;
+            const std::vector<std::uint32_t> broken(saved_broken.begin(), saved_broken.end());
+            if (!broken.empty())
+                mBrokenBuffer.Upload(0, broken.size() * sizeof(std::uint32_t), broken.data());
+            mMasses = saved_masses;
+            mInverseMasses = saved_inverse_masses;
+        }
+        mPositions.CopyFrom(mSavedPositions);
+        mVelocities.CopyFrom(mSavedVelocities);
+        mExternal.CopyFrom(mSavedExternal);
+        mRotations.CopyFrom(mSavedRotations);
+    };
+
     fem::TetStepResult result;
     bool finite = false;
     for (int split = 0; split <= mSettings.mMaxStepSplits && !finite; ++split)
@@ -327,21 +528,33 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
         if (split > 0)
         {
             result.mEvents = result.mEvents | fem::ETetStepEvent::Split;
-            mPositions.CopyFrom(mSavedPositions);
-            mVelocities.CopyFrom(mSavedVelocities);
-            mRotations.CopyFrom(mSavedRotations);
+            restore();
         }
         result.mSubSteps = static_cast<int>(pieces);
-        finite = Integrate(inDeltaTime, result.mSubSteps);
+        result.mBrokenLinks = 0;
+        finite = Integrate(inDeltaTime, result.mSubSteps, result.mBrokenLinks);
     }
     if (!finite)
     {
-        mPositions.CopyFrom(mSavedPositions);
-        mVelocities.CopyFrom(mSavedVelocities);
-        mRotations.CopyFrom(mSavedRotations);
+        restore();
+        result.mBrokenLinks = 0;
         result.mEvents = result.mEvents | fem::ETetStepEvent::Diverged;
     }
+    if (result.mBrokenLinks > 0)
+        result.mEvents = result.mEvents | fem::ETetStepEvent::Fractured;
     return result;
+}
+
+std::vector<fem::TetFragment> GpuTetSolver::ComputeFragments() const
+{
+    std::vector<Vec3> positions;
+    ReadPositions(positions);
+    std::vector<double> element_masses;
+    for (const fem::TetElementRest& element : mRest)
+        element_masses.push_back(mMaterial.mDensity * element.mRestVolume);
+    if (mBreakable)
+        return fem::TetFragments(mLinks, mElementNodes, element_masses, positions, mInverseMasses);
+    return fem::TetFragments(fem::BuildFractureLinks(mMesh), mElementNodes, element_masses, positions, mInverseMasses);
 }
 
 void GpuTetSolver::ReadPositions(std::vector<Vec3>& outPositions) const

@@ -8,10 +8,14 @@
 #include <crumple/fem/TetSolver.h>
 #include <crumple/fem/TetSolverSettings.h>
 #include <crumple/fem/TetStepResult.h>
+#include <crumple/fem/FractureLinks.h>
+#include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetFragment.h>
 #include <crumple/gpu/ComputeDevice.h>
 #include <crumple/gpu/ComputeProgram.h>
 #include <crumple/gpu/StorageBuffer.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -29,11 +33,19 @@ namespace crumple::gpu
 ///
 /// Structure of arrays on the GPU: positions with the inverse mass in w, velocities, external forces (vec4
 /// each), element nodes (ivec4), rest data (three vec4 per element), rotations (quaternions), corner forces,
-/// adjacency offsets and entries. Nothing is read back per step except a 4-byte status word (the divergence
-/// flag); positions are read only when asked (ReadPositions).
+/// adjacency offsets and entries. Nothing is read back per step except a status word (the divergence flag);
+/// positions are read only when asked (ReadPositions).
 ///
-/// Not (yet) on the GPU, refused by Create with a clear message: implicit Euler, plasticity, fracture. A
-/// refused input changes nothing.
+/// Fracture (breakable materials) runs the CPU's criterion after every sub-step in three more passes:
+/// element Cauchy stress, group principal stress (closed-form eigen solution), and the links that open
+/// (fem::OpenCracks, the same byte-per-link state as the CPU). A breakable prop therefore reads the 8-byte
+/// status after every sub-step; when links opened, the broken flags and the node state come back, the
+/// CPU's fem::FractureTopology duplicates the nodes, and the new connectivity goes up (cracks are rare, so
+/// this costs little, but the per-sub-step status read is a GPU sync: on a discrete GPU it dominates small
+/// props). ComputeFragments() reports the pieces as the CPU does.
+///
+/// Not on the GPU, refused by Create with a clear message: implicit Euler and plasticity. Sleep is not
+/// implemented either (a GPU prop steps until the game stops stepping it). A refused input changes nothing.
 class GpuTetSolver
 {
 public:
@@ -64,6 +76,13 @@ public:
     /// step and ETetStepEvent::Diverged is reported.
     Result<fem::TetStepResult> Step(double inDeltaTime);
 
+    /// The pieces now, as fem::TetSolver::ComputeFragments (reads positions back).
+    std::vector<fem::TetFragment> ComputeFragments() const;
+    /// #L, 1 where a link is broken (host copy, current after every Step); empty for an unbreakable material
+    const std::vector<std::uint8_t>& GetBrokenLinks() const { return mBroken; }
+    /// Current element -> node connectivity (host copy), #T
+    const std::vector<fem::TetIndices>& GetElementNodes() const { return mElementNodes; }
+
     /// Reads the node positions back (m), #N (waits for the GPU).
     void ReadPositions(std::vector<Vec3>& outPositions) const;
     /// Reads the node velocities back (m/s), #N.
@@ -79,13 +98,30 @@ public:
     const ComputeDevice& GetDevice() const { return *mDevice; }
 
 private:
-    GpuTetSolver() = default;
+    explicit GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
 
     // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps; returns true when the state stayed finite.
-    bool Integrate(double inDeltaTime, int inSubSteps);
+    // Counts the links opened in ioBrokenLinks.
+    bool Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks);
+    // The fracture passes after a sub-step; returns the number of links opened.
+    int Fracture();
+    // Uploads a new connectivity: element nodes, adjacency, and node buffers of inPositions etc.
+    Status UploadTopology(const std::vector<fem::TetIndices>& inElementNodes, const std::vector<std::array<float, 4>>& inPositions,
+                          const std::vector<std::array<float, 4>>& inVelocities,
+                          const std::vector<std::array<float, 4>>& inForces);
+    // Duplicates nodes along the opened links (CPU topology, GPU state).
+    void Reconnect();
+    // Binds every buffer to its binding point.
+    void BindAll() const;
     Status CheckNode(int inNode, const char* inCaller) const;
 
     std::shared_ptr<ComputeDevice> mDevice;
+    fem::TetMesh mMesh;
+    std::vector<fem::TetElementRest> mRest;
+    std::vector<fem::TetIndices> mElementNodes; // host copy of the current connectivity
+    fem::FractureLinks mLinks;                  // empty when unbreakable
+    std::vector<std::uint8_t> mBroken;          // host copy of the broken flags, #L
+    bool mBreakable = false;
     fem::TetSolverSettings mSettings;
     fem::FemMaterialSettings mMaterial;
     float mLambda = 0.0f;
@@ -96,11 +132,12 @@ private:
     double mStableTimeStep = 0.0;
     std::uint64_t mElementWork = 0;
 
-    ComputeProgram mElementPass;
-    ComputeProgram mNodePass;
-    StorageBuffer mPositions, mVelocities, mElements, mRest, mRotations, mCorners, mExternal, mOffsets, mIncident,
-        mStatus;
-    StorageBuffer mSavedPositions, mSavedVelocities, mSavedRotations;
+    ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass;
+    StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
+        mIncident, mStatus;
+    StorageBuffer mStress, mGroupOffsets, mGroupElements, mPrincipal, mLinkBuffer, mLinkFaces, mLinkNormals,
+        mBrokenBuffer;
+    StorageBuffer mSavedPositions, mSavedVelocities, mSavedRotations, mSavedExternal;
 };
 
 } // namespace crumple::gpu
