@@ -46,6 +46,7 @@ int main(int argc, char** argv)
     RunImpulseBenchmarks(table, options);
     RunAdapterBenchmarks(table, options);
     RunFemBenchmarks(table, options);
+    RunGpuBenchmarks(table, options);
     table.Print();
     if (!csv.empty() && !table.WriteCsv(csv))
     {
