@@ -244,3 +244,57 @@ TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothin
     gpu.ReadVelocities(after);
     CHECK(after == before);
 }
+
+TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it", "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    if (!device)
+        return;
+    FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
+    material.mMassDamping = 20.0; // comes to rest within a second
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.2);
+    grid.mCellCount = {6, 2, 2};
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mGravity = Vec3::Zero();
+    TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+    for (int k = 0; k <= 2; ++k)
+        for (int j = 0; j <= 2; ++j)
+            REQUIRE(cpu.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
+    REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
+
+    int fell_asleep_at = -1;
+    double first_energy = 0.0;
+    for (int step = 0; step < 240 && fell_asleep_at < 0; ++step)
+    {
+        const Result<TetStepResult> result = gpu.Step(1.0 / 60.0);
+        REQUIRE(result.IsValid());
+        if (step == 0)
+            first_energy = result.Get().mKineticEnergy;
+        if (HasEvent(result.Get().mEvents, ETetStepEvent::FellAsleep))
+            fell_asleep_at = step;
+    }
+    INFO("kinetic energy after the first step " << first_energy << " J");
+    CHECK(first_energy > 0.0);
+    REQUIRE(fell_asleep_at > 0);
+    CHECK(gpu.IsSleeping());
+
+    // Asleep: no element work, no motion.
+    const std::uint64_t work = gpu.GetElementWorkCount();
+    std::vector<Vec3> before, after;
+    gpu.ReadPositions(before);
+    const Result<TetStepResult> asleep = gpu.Step(1.0 / 60.0);
+    REQUIRE(asleep.IsValid());
+    CHECK(HasEvent(asleep.Get().mEvents, ETetStepEvent::Sleeping));
+    CHECK(gpu.GetElementWorkCount() == work);
+    gpu.ReadPositions(after);
+    CHECK(after == before);
+
+    // An impulse wakes it.
+    REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
+    CHECK_FALSE(gpu.IsSleeping());
+    REQUIRE(gpu.Step(1.0 / 60.0).IsValid());
+    CHECK(gpu.GetElementWorkCount() > work);
+}

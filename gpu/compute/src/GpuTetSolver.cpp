@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace crumple::gpu
@@ -130,7 +131,8 @@ Result<GpuTetSolver> GpuTetSolver::Create(std::shared_ptr<ComputeDevice> inDevic
                     {&solver.mNodePass, "TetNodeUpdate", cShaderTetNodeUpdate},
                     {&solver.mStressPass, "TetElementStress", cShaderTetElementStress},
                     {&solver.mGroupPass, "TetGroupStress", cShaderTetGroupStress},
-                    {&solver.mCrackPass, "TetOpenCracks", cShaderTetOpenCracks}};
+                    {&solver.mCrackPass, "TetOpenCracks", cShaderTetOpenCracks},
+                    {&solver.mEnergyPass, "TetKineticEnergy", cShaderTetKineticEnergy}};
     for (const auto& program : programs)
         if (Status status = Compile(inDevice, *program.mProgram, program.mName, program.mSource); status.HasError())
             return status.GetError();
@@ -143,7 +145,7 @@ Result<GpuTetSolver> GpuTetSolver::Create(std::shared_ptr<ComputeDevice> inDevic
         rest.push_back(ToFloat4(element.mRestEdgeInverse.col(1)));
         rest.push_back(ToFloat4(element.mRestEdgeInverse.col(2)));
     }
-    const std::uint32_t status_words[2] = {0, 0};
+    const std::uint32_t status_words[3] = {0, 0, 0}; // divergence flag, links opened, kinetic energy bits
     if (Status status = Assign(solver.mRestBuffer, MakeBuffer(inDevice, rest)); status.HasError())
         return status.GetError();
     if (Status status = Assign(solver.mRotations, MakeBuffer(inDevice, rotations)); status.HasError())
@@ -272,6 +274,7 @@ Status GpuTetSolver::SetNodeFixed(int inNode, bool inFixed)
 {
     if (Status status = CheckNode(inNode, "SetNodeFixed"); status.HasError())
         return status;
+    InputChanged();
     mInverseMasses[inNode] = inFixed ? 0.0 : 1.0 / mMasses[inNode];
     Float4 position;
     mPositions.Download(inNode * sizeof(Float4), sizeof(Float4), &position);
@@ -292,6 +295,7 @@ Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
                                                 " must be finite");
     if (Status status = CheckNode(inNode, "ApplyImpulse"); status.HasError())
         return status;
+    InputChanged();
     Float4 velocity;
     mVelocities.Download(inNode * sizeof(Float4), sizeof(Float4), &velocity);
     velocity = ToFloat4(ToVec3(velocity) + mInverseMasses[inNode] * inImpulse);
@@ -306,6 +310,7 @@ Status GpuTetSolver::SetExternalForce(int inNode, const Vec3& inForce)
                                                 std::to_string(inNode) + " must be finite");
     if (Status status = CheckNode(inNode, "SetExternalForce"); status.HasError())
         return status;
+    InputChanged();
     const Float4 force = ToFloat4(inForce);
     mExternal.Upload(inNode * sizeof(Float4), sizeof(Float4), &force);
     return Status::Ok();
@@ -316,6 +321,7 @@ Status GpuTetSolver::SetGravity(const Vec3& inGravity)
     if (!IsFinite(inGravity))
         return MakeError(EError::NonFinite, "GpuTetSolver::SetGravity: gravity must be finite");
     mSettings.mGravity = inGravity;
+    InputChanged();
     return Status::Ok();
 }
 
@@ -333,7 +339,19 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
     for (std::size_t node = 0; node < packed.size(); ++node)
         packed[node] = ToFloat4(inPositions[node], mInverseMasses[node]);
     mPositions.Upload(0, packed.size() * sizeof(Float4), packed.data());
+    InputChanged();
     return Status::Ok();
+}
+
+void GpuTetSolver::InputChanged()
+{
+    mSleeping = false;
+    mQuietSteps = 0;
+}
+
+void GpuTetSolver::WakeUp()
+{
+    InputChanged();
 }
 
 void GpuTetSolver::BindAll() const
@@ -428,11 +446,11 @@ void GpuTetSolver::Reconnect()
     }
 }
 
-bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks)
+bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks, double& outKineticEnergy)
 {
     const double dt = inDeltaTime / inSubSteps;
     BindAll();
-    const std::uint32_t zero[2] = {0, 0};
+    const std::uint32_t zero[3] = {0, 0, 0};
     mStatus.Upload(0, sizeof(zero), zero);
     const float damping_scale = static_cast<float>(1.0 / (1.0 + mMaterial.mMassDamping * dt));
     mElementPass.Use();
@@ -457,10 +475,16 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLi
     }
     mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
 
-    // The divergence flag.
-    std::uint32_t status = 0;
-    mStatus.Download(0, sizeof(status), &status);
-    return status == 0;
+    // The kinetic energy, then the step's one status read: divergence flag and energy.
+    mEnergyPass.Use();
+    mEnergyPass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+    mEnergyPass.Dispatch(mEnergyPass.GetLocalSize()); // exactly one work group
+    std::uint32_t words[3] = {0, 0, 0};
+    mStatus.Download(0, sizeof(words), words);
+    float energy = 0.0f;
+    std::memcpy(&energy, &words[2], sizeof(energy));
+    outKineticEnergy = energy;
+    return words[0] == 0 && std::isfinite(energy);
 }
 
 Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
@@ -478,6 +502,12 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
         message << "GpuTetSolver::Step: " << inDeltaTime << " s needs " << count << " sub-steps of at most "
                 << mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps;
         return MakeError(EError::InvalidArgument, message.str());
+    }
+    fem::TetStepResult result;
+    if (mSleeping)
+    {
+        result.mEvents = fem::ETetStepEvent::Sleeping;
+        return result;
     }
     if (Status status = mDevice->MakeCurrent(); status.HasError())
         return status.GetError();
@@ -518,8 +548,8 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
         mRotations.CopyFrom(mSavedRotations);
     };
 
-    fem::TetStepResult result;
     bool finite = false;
+    double kinetic = 0.0;
     for (int split = 0; split <= mSettings.mMaxStepSplits && !finite; ++split)
     {
         const long long pieces = static_cast<long long>(sub_steps) << split;
@@ -532,7 +562,7 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
         }
         result.mSubSteps = static_cast<int>(pieces);
         result.mBrokenLinks = 0;
-        finite = Integrate(inDeltaTime, result.mSubSteps, result.mBrokenLinks);
+        finite = Integrate(inDeltaTime, result.mSubSteps, result.mBrokenLinks, kinetic);
     }
     if (!finite)
     {
@@ -542,6 +572,24 @@ Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
     }
     if (result.mBrokenLinks > 0)
         result.mEvents = result.mEvents | fem::ETetStepEvent::Fractured;
+    if (!finite)
+        return result;
+
+    // Sleep after mSleepStepCount quiet steps, as the CPU solver: velocities to zero, nothing dispatched until
+    // an input changes.
+    result.mKineticEnergy = kinetic;
+    double free_mass = 0.0;
+    for (std::size_t node = 0; node < mMasses.size(); ++node)
+        free_mass += mInverseMasses[node] > 0.0 ? mMasses[node] : 0.0;
+    const double sleep_energy = 0.5 * free_mass * mSettings.mSleepSpeed * mSettings.mSleepSpeed;
+    mQuietSteps = kinetic < sleep_energy && result.mBrokenLinks == 0 ? mQuietSteps + 1 : 0;
+    if (mQuietSteps >= mSettings.mSleepStepCount)
+    {
+        const std::vector<Float4> zeros(mMasses.size(), Float4{});
+        mVelocities.Upload(0, zeros.size() * sizeof(Float4), zeros.data());
+        mSleeping = true;
+        result.mEvents = result.mEvents | fem::ETetStepEvent::FellAsleep;
+    }
     return result;
 }
 

@@ -44,8 +44,12 @@ namespace crumple::gpu
 /// this costs little, but the per-sub-step status read is a GPU sync: on a discrete GPU it dominates small
 /// props). ComputeFragments() reports the pieces as the CPU does.
 ///
-/// Not on the GPU, refused by Create with a clear message: implicit Euler and plasticity. Sleep is not
-/// implemented either (a GPU prop steps until the game stops stepping it). A refused input changes nothing.
+/// Sleep as on the CPU (TetSolverSettings::mSleepSpeed, mSleepStepCount): the kinetic energy comes from a
+/// one-work-group reduction with the step's status; a sleeping prop dispatches nothing until an input changes.
+///
+/// Not on the GPU, refused by Create with a clear message: implicit Euler and plasticity. Divergence is
+/// detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A refused input changes
+/// nothing.
 class GpuTetSolver
 {
 public:
@@ -83,6 +87,11 @@ public:
     /// Current element -> node connectivity (host copy), #T
     const std::vector<fem::TetIndices>& GetElementNodes() const { return mElementNodes; }
 
+    /// True while asleep
+    bool IsSleeping() const { return mSleeping; }
+    /// Ends sleep without changing the state.
+    void WakeUp();
+
     /// Reads the node positions back (m), #N (waits for the GPU).
     void ReadPositions(std::vector<Vec3>& outPositions) const;
     /// Reads the node velocities back (m/s), #N.
@@ -100,9 +109,11 @@ public:
 private:
     explicit GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
 
-    // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps; returns true when the state stayed finite.
-    // Counts the links opened in ioBrokenLinks.
-    bool Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks);
+    // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps, then the kinetic energy reduction; returns true
+    // when the state stayed finite and sets outKineticEnergy (J). Counts the links opened in ioBrokenLinks.
+    bool Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks, double& outKineticEnergy);
+    // An input changed: wake up.
+    void InputChanged();
     // The fracture passes after a sub-step; returns the number of links opened.
     int Fracture();
     // Uploads a new connectivity: element nodes, adjacency, and node buffers of inPositions etc.
@@ -132,7 +143,9 @@ private:
     double mStableTimeStep = 0.0;
     std::uint64_t mElementWork = 0;
 
-    ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass;
+    bool mSleeping = false;
+    int mQuietSteps = 0;
+    ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass;
     StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
         mIncident, mStatus;
     StorageBuffer mStress, mGroupOffsets, mGroupElements, mPrincipal, mLinkBuffer, mLinkFaces, mLinkNormals,
