@@ -376,23 +376,32 @@ void GpuTetSolver::BindAll() const
     mBrokenBuffer.Bind(17);
 }
 
-int GpuTetSolver::Fracture()
+void GpuTetSolver::SetFractureUniforms() const
 {
-    // Stress, group principal stress, links: the CPU's Fracture() in three passes.
+    // Uniforms belong to their program and stay set: once per Integrate, not per sub-step.
     mStressPass.Use();
     mStressPass.SetUInt("uElementCount", mElementCount);
     mStressPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
     mStressPass.SetFloat("uLambda", mLambda);
     mStressPass.SetFloat("uMu", mMu);
-    mStressPass.Dispatch(mElementCount);
     mGroupPass.Use();
     mGroupPass.SetUInt("uGroupCount", static_cast<std::uint32_t>(mLinks.GetGroupCount()));
-    mGroupPass.Dispatch(static_cast<std::uint32_t>(mLinks.GetGroupCount()));
     mCrackPass.Use();
     mCrackPass.SetUInt("uLinkCount", static_cast<std::uint32_t>(mLinks.GetLinkCount()));
     mCrackPass.SetFloat("uStrength", static_cast<float>(mMaterial.mTensileStrength));
     mCrackPass.SetInt("uDetachGroup", mMaterial.mFractureMode == fem::EFractureMode::DetachGroup ? 1 : 0);
     mCrackPass.SetFloat("uCrackCosine", static_cast<float>(fem::cCrackFaceCosine));
+}
+
+int GpuTetSolver::Fracture()
+{
+    // Stress, group principal stress, links: the CPU's Fracture() in three passes (uniforms set by
+    // SetFractureUniforms).
+    mStressPass.Use();
+    mStressPass.Dispatch(mElementCount);
+    mGroupPass.Use();
+    mGroupPass.Dispatch(static_cast<std::uint32_t>(mLinks.GetGroupCount()));
+    mCrackPass.Use();
     mCrackPass.Dispatch(static_cast<std::uint32_t>(mLinks.GetLinkCount()));
 
     // The opened-link count (a sync point: see the class comment).
@@ -463,15 +472,26 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLi
     mNodePass.SetFloat("uDeltaTime", static_cast<float>(dt));
     mNodePass.SetFloat("uDampingScale", damping_scale);
     mNodePass.SetVec3("uGravity", mSettings.mGravity);
+    mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+    if (mBreakable)
+        SetFractureUniforms();
     for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
     {
         mElementPass.Use();
         mElementPass.Dispatch(mElementCount);
         mNodePass.Use();
-        mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size())); // fracture may add nodes
         mNodePass.Dispatch(static_cast<std::uint32_t>(mMasses.size()));
         if (mBreakable)
-            ioBrokenLinks += Fracture();
+        {
+            const int opened = Fracture();
+            ioBrokenLinks += opened;
+            if (opened > 0)
+            {
+                // Fracture added nodes (and used other programs): the node pass needs the new count.
+                mNodePass.Use();
+                mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+            }
+        }
     }
     mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
 

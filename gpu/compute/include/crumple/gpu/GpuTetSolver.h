@@ -116,6 +116,8 @@ private:
     void InputChanged();
     // The fracture passes after a sub-step; returns the number of links opened.
     int Fracture();
+    // The fracture passes' uniforms.
+    void SetFractureUniforms() const;
     // Uploads a new connectivity: element nodes, adjacency, and node buffers of inPositions etc.
     Status UploadTopology(const std::vector<fem::TetIndices>& inElementNodes, const std::vector<std::array<float, 4>>& inPositions,
                           const std::vector<std::array<float, 4>>& inVelocities,
