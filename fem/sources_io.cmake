@@ -9,5 +9,4 @@ set(CRUMPLE_FEM_IO_SOURCES
     src/SurfaceFile.cpp
     src/SurfaceMesh.cpp
     src/SurfaceVolume.cpp
-    src/TetBoundary.cpp
-    src/WriteFileAtomically.cpp)
+    src/TetBoundary.cpp)

@@ -1,8 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "WriteFileAtomically.h"
-
 #include <crumple/base/ByteWriter.h>
+#include <crumple/base/FileBytes.h>
 #include <crumple/fem/ExactNumber.h>
 #include <crumple/fem/SurfaceFile.h>
 
