@@ -4,9 +4,9 @@
 # the separate target crumple::fem_import (fem/import/), because it needs assimp.
 set(CRUMPLE_FEM_IO_SOURCES
     src/ESurfaceFormat.cpp
+    src/ExactNumber.cpp
     src/FrameSequenceWriter.cpp
     src/SurfaceFile.cpp
     src/SurfaceMesh.cpp
     src/SurfaceVolume.cpp
-    src/TetBoundary.cpp
-    src/WriteFileAtomically.cpp)
+    src/TetBoundary.cpp)

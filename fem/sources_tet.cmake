@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: MIT
 # The tetrahedral half of crumple::fem (paths relative to fem/).
 set(CRUMPLE_FEM_TET_SOURCES
+    src/BarycentricSearch.cpp
     src/ConjugateGradient.cpp
     src/DeformationGradient.cpp
     src/EdgeMatrix.cpp

@@ -1,33 +1,15 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "BarycentricSearch.h"
+
 #include <crumple/fem/CollisionImpulses.h>
 #include <crumple/fem/TetSolver.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace crumple::fem
 {
-
-namespace
-{
-
-// What barycentric coordinates in one element need: its first corner and the inverse of its edge matrix
-// (non-finite for a degenerate element, whose weights then never win).
-struct ElementMap
-{
-    Vec3 mOrigin;
-    Mat3 mInverseEdges;
-
-    std::array<double, 4> Barycentric(const Vec3& inPoint) const
-    {
-        const Vec3 local = mInverseEdges * (inPoint - mOrigin);
-        return {1.0 - local.sum(), local.x(), local.y(), local.z()};
-    }
-};
-
-} // namespace
 
 Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
@@ -43,15 +25,7 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the prop has no element");
 
     // Invert every element's edge matrix once for all contacts.
-    std::vector<ElementMap> maps(inElementNodes.size());
-    for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
-    {
-        const TetIndices& n = inElementNodes[tet];
-        Mat3 edges;
-        edges << inPositions[n[1]] - inPositions[n[0]], inPositions[n[2]] - inPositions[n[0]],
-            inPositions[n[3]] - inPositions[n[0]];
-        maps[tet] = {inPositions[n[0]], edges.inverse()};
-    }
+    const BarycentricSearch search(inElementNodes, inPositions);
 
     std::vector<NodalImpulse> impulses;
     impulses.reserve(4 * inCollision.mContacts.size());
@@ -67,22 +41,11 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                              "CollisionNodalImpulses: contact " + std::to_string(index) + " is not finite");
 
         // The element whose smallest barycentric weight is largest: the containing one if any.
-        int best = -1;
-        std::array<double, 4> best_weights{};
-        double best_min = -std::numeric_limits<double>::infinity();
-        for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
-        {
-            const std::array<double, 4> weights = maps[tet].Barycentric(point);
-            const double smallest = *std::min_element(weights.begin(), weights.end());
-            if (smallest > best_min) // NaN (degenerate) never wins
-            {
-                best_min = smallest;
-                best = static_cast<int>(tet);
-                best_weights = weights;
-            }
-        }
-        if (best < 0)
+        const BarycentricHit hit = search.FindBest(point);
+        if (hit.mElement < 0)
             return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: every element is degenerate");
+        const int best = hit.mElement;
+        std::array<double, 4> best_weights = hit.mWeights;
 
         // Outside the element: clamp and renormalise so the impulse stays on its nodes, in full.
         double total = 0.0;

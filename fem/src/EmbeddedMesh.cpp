@@ -1,5 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "BarycentricSearch.h"
+
 #include <crumple/fem/EmbeddedMesh.h>
 
 #include <algorithm>
@@ -9,19 +11,6 @@
 
 namespace crumple::fem
 {
-
-namespace
-{
-
-// Barycentric weights of inPoint in the tetrahedron (inP0..inP3): solve [p1-p0, p2-p0, p3-p0] l = x - p0,
-// then w = (1 - l1 - l2 - l3, l1, l2, l3). The element is non-degenerate (TetMesh::Create checked it).
-std::array<double, 4> Barycentric(const Mat3& inInverseEdges, const Vec3& inP0, const Vec3& inPoint)
-{
-    const Vec3 local = inInverseEdges * (inPoint - inP0);
-    return {{1.0 - local[0] - local[1] - local[2], local[0], local[1], local[2]}};
-}
-
-} // namespace
 
 Result<EmbeddedMesh> EmbeddedMesh::Create(const TetMesh& inMesh, std::span<const Vec3> inRestPositions,
                                           std::span<const int> inVertexGroups,
@@ -63,12 +52,12 @@ Result<EmbeddedMesh> EmbeddedMesh::Create(const TetMesh& inMesh, std::span<const
     for (int element = 0; element < inMesh.GetTetCount(); ++element)
         by_group.emplace_back(groups[element], element);
     std::sort(by_group.begin(), by_group.end());
+    std::vector<int> sorted_elements(by_group.size());
+    for (std::size_t entry = 0; entry < by_group.size(); ++entry)
+        sorted_elements[entry] = by_group[entry].second;
 
-    // Inverse edge matrices, computed on first use.
-    const std::vector<Vec3>& nodes = inMesh.GetRestPositions();
-    const std::vector<TetIndices>& tets = inMesh.GetTets();
-    std::vector<Mat3> inverse_edges(tets.size());
-    std::vector<char> has_inverse(tets.size(), 0);
+    // Inverse edge matrices of the rest mesh; its elements are non-degenerate (TetMesh::Create checked it).
+    const BarycentricSearch search(inMesh.GetTets(), inMesh.GetRestPositions());
 
     EmbeddedMesh mesh;
     mesh.mVertices.resize(inRestPositions.size());
@@ -87,32 +76,20 @@ Result<EmbeddedMesh> EmbeddedMesh::Create(const TetMesh& inMesh, std::span<const
                                                      " follows group " + std::to_string(group) +
                                                      ", which no element belongs to");
 
-        // Largest minimum weight wins; strict comparison keeps the lowest element index on ties.
+        // Largest minimum weight wins; the group's elements are in index order, so ties keep the lowest.
+        const auto last = std::partition_point(first, by_group.end(),
+                                               [group](const std::pair<int, int>& inEntry)
+                                               { return inEntry.first == group; });
+        const std::span<const int> candidates(sorted_elements.data() + (first - by_group.begin()),
+                                              static_cast<std::size_t>(last - first));
+        const BarycentricHit hit = search.FindBest(candidates, position);
         EmbeddedVertex best;
-        double best_min = -std::numeric_limits<double>::infinity();
-        for (auto entry = first; entry != by_group.end() && entry->first == group; ++entry)
+        if (hit.mElement >= 0)
         {
-            const int element = entry->second;
-            const TetIndices& corners = tets[element];
-            if (has_inverse[element] == 0)
-            {
-                Mat3 edges;
-                edges.col(0) = nodes[corners[1]] - nodes[corners[0]];
-                edges.col(1) = nodes[corners[2]] - nodes[corners[0]];
-                edges.col(2) = nodes[corners[3]] - nodes[corners[0]];
-                inverse_edges[element] = edges.inverse();
-                has_inverse[element] = 1;
-            }
-            const std::array<double, 4> weights =
-                Barycentric(inverse_edges[element], nodes[corners[0]], position);
-            const double smallest = *std::min_element(weights.begin(), weights.end());
-            if (smallest > best_min)
-            {
-                best_min = smallest;
-                best.mElement = element;
-                best.mWeights = weights;
-            }
+            best.mElement = hit.mElement;
+            best.mWeights = hit.mWeights;
         }
+        const double best_min = hit.mMinWeight;
         if (!(best_min >= -cMaxExtrapolation))
         {
             std::ostringstream message;

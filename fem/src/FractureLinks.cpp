@@ -1,5 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "TetFaceCorners.h"
+
 #include <crumple/fem/FractureLinks.h>
 
 #include <algorithm>
@@ -11,10 +13,6 @@ namespace crumple::fem
 
 namespace
 {
-
-// Corner slots of the four faces of a positively oriented tetrahedron (x1-x0, x2-x0, x3-x0 right-handed),
-// each counter-clockwise seen from outside (its normal points away from the opposite corner).
-constexpr std::array<std::array<std::uint8_t, 3>, 4> cFaceCorners{{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
 
 // An element face keyed by its sorted rest nodes.
 struct FaceKey
@@ -73,7 +71,7 @@ FractureLinks BuildFractureLinks(const TetMesh& inMesh)
         {
             FaceKey key;
             for (int corner = 0; corner < 3; ++corner)
-                key.mNodes[corner] = tets[tet][cFaceCorners[face][corner]];
+                key.mNodes[corner] = tets[tet][cTetFaceCorners[face][corner]];
             std::sort(key.mNodes.begin(), key.mNodes.end());
             faces[key].push_back({tet, face});
         }
@@ -88,7 +86,7 @@ FractureLinks BuildFractureLinks(const TetMesh& inMesh)
             continue;
         const FaceUse& use_a = group_a < group_b ? uses[0] : uses[1];
         pair_faces[{std::min(group_a, group_b), std::max(group_a, group_b)}].push_back(
-            {use_a.mElement, cFaceCorners[use_a.mFace]});
+            {use_a.mElement, cTetFaceCorners[use_a.mFace]});
     }
 
     // One link per group pair: its faces, rest normal (area-weighted, A to B) and shared nodes.

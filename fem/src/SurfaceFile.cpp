@@ -1,11 +1,10 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "WriteFileAtomically.h"
-
 #include <crumple/base/ByteWriter.h>
+#include <crumple/base/FileBytes.h>
+#include <crumple/fem/ExactNumber.h>
 #include <crumple/fem/SurfaceFile.h>
 
-#include <charconv>
 #include <limits>
 #include <string>
 
@@ -50,15 +49,6 @@ void Append(std::vector<std::byte>& ioBytes, std::string_view inText)
     ioBytes.insert(ioBytes.end(), first, first + inText.size());
 }
 
-// Appends a double as printf's "%.17g" would, but independent of the C locale (always a '.').
-void AppendDouble(std::vector<std::byte>& ioBytes, double inValue)
-{
-    char buffer[32];
-    const std::to_chars_result result =
-        std::to_chars(buffer, buffer + sizeof(buffer), inValue, std::chars_format::general, 17);
-    Append(ioBytes, std::string_view(buffer, static_cast<std::size_t>(result.ptr - buffer)));
-}
-
 } // namespace
 
 Status SaveSurfaceObj(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
@@ -74,11 +64,11 @@ Status SaveSurfaceObj(const std::filesystem::path& inPath, std::span<const Vec3>
     for (const Vec3& position : inPositions)
     {
         Append(bytes, "v ");
-        AppendDouble(bytes, position.x());
+        Append(bytes, ExactNumber(position.x()));
         Append(bytes, " ");
-        AppendDouble(bytes, position.y());
+        Append(bytes, ExactNumber(position.y()));
         Append(bytes, " ");
-        AppendDouble(bytes, position.z());
+        Append(bytes, ExactNumber(position.z()));
         Append(bytes, "\n");
     }
     for (const TriangleIndices& triangle : inTriangles)

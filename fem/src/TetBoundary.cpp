@@ -1,5 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "TetFaceCorners.h"
+
 #include <crumple/fem/TetBoundary.h>
 
 #include <algorithm>
@@ -9,9 +11,6 @@ namespace crumple::fem
 
 namespace
 {
-
-// The faces of a positively oriented element, outward, indexed by the corner they are opposite to.
-constexpr int cFaceCorners[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 // One element face: its sorted node triple (the key) and where it came from (element * 4 + face).
 struct FaceKey
@@ -35,8 +34,9 @@ std::vector<TriangleIndices> TetBoundary(std::span<const TetIndices> inTets)
     for (std::size_t tet = 0; tet < inTets.size(); ++tet)
         for (int face = 0; face < 4; ++face)
         {
-            std::array<int, 3> sorted{inTets[tet][cFaceCorners[face][0]], inTets[tet][cFaceCorners[face][1]],
-                                      inTets[tet][cFaceCorners[face][2]]};
+            std::array<int, 3> sorted{inTets[tet][cTetFaceCorners[face][0]],
+                                      inTets[tet][cTetFaceCorners[face][1]],
+                                      inTets[tet][cTetFaceCorners[face][2]]};
             std::sort(sorted.begin(), sorted.end());
             faces.push_back({sorted, static_cast<long long>(4 * tet + face)});
         }
@@ -60,7 +60,7 @@ std::vector<TriangleIndices> TetBoundary(std::span<const TetIndices> inTets)
         if (is_boundary[origin])
         {
             const TetIndices& tet = inTets[origin / 4];
-            const int* corners = cFaceCorners[origin % 4];
+            const auto& corners = cTetFaceCorners[origin % 4];
             boundary.push_back({tet[corners[0]], tet[corners[1]], tet[corners[2]]});
         }
     return boundary;

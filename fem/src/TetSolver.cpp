@@ -401,13 +401,26 @@ double TetSolver::ElasticEnergy() const
 
 double TetSolver::ExternalPotentialEnergy() const
 {
-    double energy = 0.0;
+    double potential = 0.0;
+    double magnitude = 0.0;
+    ExternalPotential(potential, magnitude);
+    return potential;
+}
+
+void TetSolver::ExternalPotential(double& outPotential, double& outMagnitude) const
+{
+    // -sum f . (x - X) over free nodes in node order, and sum |f . (x - X)| beside it.
+    outPotential = 0.0;
+    outMagnitude = 0.0;
     const std::vector<Vec3>& rest = mNodeRestPositions;
     for (std::size_t node = 0; node < mPositions.size(); ++node)
         if (mInverseMasses[node] > 0.0)
-            energy -= (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
-                          .dot(mPositions[node] - rest[node]);
-    return energy;
+        {
+            const double work = (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
+                                    .dot(mPositions[node] - rest[node]);
+            outPotential -= work;
+            outMagnitude += std::abs(work);
+        }
 }
 
 TetSolver::EnergyParts TetSolver::MeasureEnergy()
@@ -417,15 +430,7 @@ TetSolver::EnergyParts TetSolver::MeasureEnergy()
     const TetElementPassInput input = PassInput();
     parts.mElastic = TetElasticEnergy(input, mPositions, mRotations);
     mElementWork += mRest.size();
-    const std::vector<Vec3>& rest = mNodeRestPositions;
-    for (std::size_t node = 0; node < mPositions.size(); ++node)
-        if (mInverseMasses[node] > 0.0)
-        {
-            const double work = (mExternalForces[node] + mMasses[node] * mSettings.mGravity)
-                                    .dot(mPositions[node] - rest[node]);
-            parts.mPotential -= work;
-            parts.mPotentialMagnitude += std::abs(work);
-        }
+    ExternalPotential(parts.mPotential, parts.mPotentialMagnitude);
     return parts;
 }
 

@@ -5,25 +5,16 @@
 #include <crumple/plugin/ReplayFormat.h>
 
 #include <crumple/base/ByteWriter.h>
+#include <crumple/base/FileBytes.h>
 
 namespace crumple::plugin
 {
 
-namespace
-{
-
-std::filesystem::path PartialPath(const std::filesystem::path& inPath)
-{
-    return inPath.string() + ".partial";
-}
-
-} // namespace
-
 Result<std::unique_ptr<DamageRecorder>> DamageRecorder::Create(const std::filesystem::path& inPath, DamageWorld& inWorld)
 {
-    std::FILE* file = std::fopen(PartialPath(inPath).string().c_str(), "wb");
+    std::FILE* file = std::fopen(PartialFilePath(inPath).string().c_str(), "wb");
     if (file == nullptr)
-        return MakeError(EError::IoError, "cannot write " + PartialPath(inPath).string());
+        return MakeError(EError::IoError, "cannot write " + PartialFilePath(inPath).string());
     std::unique_ptr<DamageRecorder> recorder(new DamageRecorder(file, inPath, inWorld));
     recorder->Write(EncodeReplayHeader());
     recorder->RecordNewObjects();
@@ -43,7 +34,7 @@ void DamageRecorder::Write(std::span<const std::byte> inBytes)
     if (!mStatus || mFile == nullptr)
         return;
     if (std::fwrite(inBytes.data(), 1, inBytes.size(), mFile) != inBytes.size() || std::fflush(mFile) != 0)
-        mStatus = MakeError(EError::IoError, "write failed: " + PartialPath(mPath).string());
+        mStatus = MakeError(EError::IoError, "write failed: " + PartialFilePath(mPath).string());
 }
 
 void DamageRecorder::RecordNewObjects()
@@ -97,15 +88,11 @@ Status DamageRecorder::Close()
     end.WriteU64(mCollisions);
     Write(EncodeReplayRecord(EReplayRecord::End, end.GetBytes()));
     if (std::fclose(mFile) != 0 && mStatus)
-        mStatus = MakeError(EError::IoError, "close failed: " + PartialPath(mPath).string());
+        mStatus = MakeError(EError::IoError, "close failed: " + PartialFilePath(mPath).string());
     mFile = nullptr;
+    // Complete: rename over mPath. A failed rename keeps the partial file, which holds the whole recording.
     if (mStatus)
-    {
-        std::error_code error;
-        std::filesystem::rename(PartialPath(mPath), mPath, error);
-        if (error)
-            mStatus = MakeError(EError::IoError, "cannot rename to " + mPath.string() + ": " + error.message());
-    }
+        mStatus = CommitPartialFile(mPath, "DamageRecorder");
     return mStatus;
 }
 

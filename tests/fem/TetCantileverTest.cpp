@@ -25,24 +25,6 @@ constexpr double cPi = 3.14159265358979323846;
 /// The issue's cantilever (tests/common/CantileverScene.h) with its defaults: steel, 1 kN at the tip.
 const common::CantileverSettings cBeam;
 
-/// Timoshenko tip deflection PL^3 / (3EI) + PL / (kappa G A), kappa = 5/6 (m).
-double TimoshenkoDeflection()
-{
-    return common::TimoshenkoDeflection(cBeam);
-}
-
-/// Euler-Bernoulli first bending frequency (1.8751^2 / 2 pi) sqrt(EI / (rho A L^4)) (Hz).
-double EulerBernoulliFrequency()
-{
-    return common::EulerBernoulliFrequency(cBeam);
-}
-
-/// Dunkerley estimate of the Timoshenko frequency (Hz), see common::ShearCorrectedFrequency.
-double ShearCorrectedFrequency()
-{
-    return common::ShearCorrectedFrequency(cBeam);
-}
-
 /// A cantilever of inLengthCells x inSectionCells x inSectionCells five-tet cells, undamped, no gravity, tip
 /// load set.
 CantileverScene MakeCantilever(int inLengthCells, int inSectionCells, EIntegrator inIntegrator)
@@ -124,7 +106,7 @@ TEST_CASE("Cantilever: static tip deflection converges towards Timoshenko beam t
 {
     // Linear tetrahedra lock in bending, so the coarse meshes are too stiff; the error falls by about 3x per
     // halving.
-    const double reference = TimoshenkoDeflection(); // 2.0156e-4 m
+    const double reference = common::TimoshenkoDeflection(cBeam); // 2.0156e-4 m
     const int sections[] = {1, 2, 4, 8};
     double previous_error = 1.0;
     for (int section : sections)
@@ -157,8 +139,8 @@ TEST_CASE("Cantilever: first bending frequency against Euler-Bernoulli", "[fem]"
     CantileverScene fine = MakeCantilever(80, 8, EIntegrator::ImplicitEuler);
     REQUIRE(fine.GetSolver().SolveStatic().IsValid());
     const double f_fine = InverseIterationFrequency(fine, 2);
-    const double f_bernoulli = EulerBernoulliFrequency(); // 81.5 Hz
-    const double f_shear = ShearCorrectedFrequency();     // 81.0 Hz
+    const double f_bernoulli = common::EulerBernoulliFrequency(cBeam); // 81.5 Hz
+    const double f_shear = common::ShearCorrectedFrequency(cBeam);     // 81.0 Hz
     const double error = (f_fine - f_bernoulli) / f_bernoulli;
     WARN("cantilever 80x8x8 first frequency "
          << f_fine << " Hz; Euler-Bernoulli " << f_bernoulli << " Hz (error " << 100.0 * error
@@ -189,7 +171,7 @@ TEST_CASE("Cantilever: free vibration of the 40 x 4 x 4 mesh", "[fem][slow][.]")
     CantileverScene beam = MakeCantilever(40, 4, EIntegrator::SymplecticEuler);
     REQUIRE(beam.GetSolver().SolveStatic().IsValid());
     const double f_dynamic = FreeVibrationFrequency(beam, 1.0e-4, 400);
-    const double f_bernoulli = EulerBernoulliFrequency();
+    const double f_bernoulli = common::EulerBernoulliFrequency(cBeam);
     WARN("cantilever 40x4x4: free-vibration frequency "
          << f_dynamic << " Hz, Euler-Bernoulli " << f_bernoulli << " Hz (error "
          << 100.0 * (f_dynamic - f_bernoulli) / f_bernoulli << " %)");

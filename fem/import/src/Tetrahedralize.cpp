@@ -4,6 +4,7 @@
 #include "TemporaryDirectory.h"
 
 #include <crumple/base/FileBytes.h>
+#include <crumple/fem/ExactNumber.h>
 #include <crumple/fem/TetVolume.h>
 #include <crumple/fem_import/Tetrahedralize.h>
 
@@ -27,15 +28,6 @@ std::string FixedNumber(double inValue)
     char buffer[512];
     const std::to_chars_result result =
         std::to_chars(buffer, buffer + sizeof(buffer), inValue, std::chars_format::fixed);
-    return std::string(buffer, result.ptr);
-}
-
-// A double as "%.17g" would print it, independent of the C locale.
-std::string ExactNumber(double inValue)
-{
-    char buffer[32];
-    const std::to_chars_result result =
-        std::to_chars(buffer, buffer + sizeof(buffer), inValue, std::chars_format::general, 17);
     return std::string(buffer, result.ptr);
 }
 

@@ -192,6 +192,9 @@ private:
         double mPotentialMagnitude = 0.0;
     };
     EnergyParts MeasureEnergy();
+    // The external potential -sum f . (x - X) (J) of gravity and the external forces on free nodes, and its
+    // scale sum |f . (x - X)| (J); touches no element.
+    void ExternalPotential(double& outPotential, double& outMagnitude) const;
 
     TetMesh mMesh;
     std::vector<TetIndices> mElementNodes;  // current connectivity (fracture duplicates nodes)

@@ -11,10 +11,10 @@
 namespace crumple::render
 {
 
-/// Writes an 8-bit RGBA image as a PNG file. The file is written beside inPath under a temporary name and
-/// renamed over inPath only when complete, so inPath never holds a partial picture; on failure the temporary
-/// file is removed and inPath is untouched. Fails with EError::InvalidArgument for a size mismatch and
-/// EError::IoError when the directory is missing or not writable.
+/// Writes an 8-bit RGBA image as a PNG file. The file is written beside inPath as "<inPath>.partial" and
+/// renamed over inPath only when complete (WriteFileAtomically), so inPath never holds a partial picture; on
+/// failure the partial file is removed and inPath is untouched. Fails with EError::InvalidArgument for a size
+/// mismatch and EError::IoError when the directory is missing or not writable.
 /// @param[in] inPath   destination file, its directory must exist
 /// @param[in] inWidth  image width (pixels), > 0
 /// @param[in] inHeight image height (pixels), > 0
