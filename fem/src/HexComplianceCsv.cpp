@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/FileBytes.h>
+#include <crumple/fem/ExactNumber.h>
 #include <crumple/fem/HexComplianceCsv.h>
 
-#include <cstdio>
-#include <fstream>
+#include <span>
+#include <string>
 
 namespace crumple::fem
 {
@@ -19,44 +21,15 @@ Status WriteHexComplianceCsv(const std::filesystem::path& inPath, const HexCompl
     if (inPath.empty())
         return MakeError(EError::InvalidArgument, "WriteHexComplianceCsv: empty path");
 
-    // Write the temporary file line by line.
+    // The table in memory (locale-free numbers that round-trip), then one atomic write.
     static constexpr char cAxes[3] = {'x', 'y', 'z'};
-    std::filesystem::path temporary = inPath;
-    temporary += ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::trunc);
-        if (out)
-            out << "output_node,output_axis,load_node,load_axis,compliance_m_per_n\n";
-        char line[96];
-        for (Eigen::Index col = 0; col < cols && out; ++col)
-            for (Eigen::Index row = 0; row < rows; ++row)
-            {
-                std::snprintf(line, sizeof(line), "%d,%c,%d,%c,%.17g\n", inCompliance.mOutputNodes[row / 3],
-                              cAxes[row % 3], inCompliance.mLoadNodes[col / 3], cAxes[col % 3],
-                              inCompliance.mMatrix(row, col));
-                out << line;
-            }
-        if (out)
-            out.close();
-        if (!out)
-        {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            return MakeError(EError::IoError, "WriteHexComplianceCsv: cannot write " + temporary.string());
-        }
-    }
-
-    // Replace the destination in one step.
-    std::error_code error;
-    std::filesystem::rename(temporary, inPath, error);
-    if (error)
-    {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        return MakeError(EError::IoError, "WriteHexComplianceCsv: cannot rename " + temporary.string() + " to " +
-                                              inPath.string() + ": " + error.message());
-    }
-    return Status::Ok();
+    std::string text = "output_node,output_axis,load_node,load_axis,compliance_m_per_n\n";
+    for (Eigen::Index col = 0; col < cols; ++col)
+        for (Eigen::Index row = 0; row < rows; ++row)
+            text += std::to_string(inCompliance.mOutputNodes[row / 3]) + ',' + cAxes[row % 3] + ',' +
+                    std::to_string(inCompliance.mLoadNodes[col / 3]) + ',' + cAxes[col % 3] + ',' +
+                    ExactNumber(inCompliance.mMatrix(row, col)) + '\n';
+    return WriteFileAtomically(inPath, std::as_bytes(std::span(text.data(), text.size())), "WriteHexComplianceCsv");
 }
 
 } // namespace crumple::fem

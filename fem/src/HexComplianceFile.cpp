@@ -7,7 +7,6 @@
 #include <crumple/fem/HexComplianceFile.h>
 #include <crumple/fem/HexMesh.h>
 
-#include <fstream>
 #include <string>
 
 namespace crumple::fem
@@ -123,33 +122,7 @@ Status SaveHexCompliance(const std::filesystem::path& inPath, const HexComplianc
     if (inPath.empty())
         return MakeError(EError::InvalidArgument, "SaveHexCompliance: empty path");
 
-    // Temporary file beside the destination, then a rename over it.
-    std::filesystem::path temporary = inPath;
-    temporary += ".tmp";
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (file)
-            file.write(reinterpret_cast<const char*>(bytes.Get().data()),
-                       static_cast<std::streamsize>(bytes.Get().size()));
-        if (file)
-            file.close();
-        if (!file)
-        {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            return MakeError(EError::IoError, "SaveHexCompliance: cannot write " + temporary.string());
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, inPath, error);
-    if (error)
-    {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        return MakeError(EError::IoError, "SaveHexCompliance: cannot rename " + temporary.string() + " to " +
-                                              inPath.string() + ": " + error.message());
-    }
-    return Status::Ok();
+    return WriteFileAtomically(inPath, bytes.Get(), "SaveHexCompliance");
 }
 
 Result<HexCompliance> LoadHexCompliance(const std::filesystem::path& inPath)

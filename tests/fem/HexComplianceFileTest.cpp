@@ -75,7 +75,7 @@ TEST_CASE("Hex compliance save and load round-trip bit for bit", "[fem][hex]")
     const Result<HexCompliance> loaded = LoadHexCompliance(path);
     REQUIRE(loaded.IsValid());
     CHECK(SameBits(loaded.Get(), compliance));
-    CHECK_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+    CHECK_FALSE(std::filesystem::exists(path.string() + ".partial"));
 }
 
 TEST_CASE("A corrupt, truncated or other-version compliance file is refused", "[fem][hex]")
