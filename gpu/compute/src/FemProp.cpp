@@ -81,6 +81,28 @@ Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
     return mGpu ? mGpu->Step(inDeltaTime) : mCpu->Step(inDeltaTime);
 }
 
+Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody)
+{
+    if (mCpu)
+        return fem::ApplyCollision(*mCpu, inCollision, inPropBody);
+    std::vector<Vec3> positions;
+    mGpu->ReadPositions(positions);
+    Result<std::vector<fem::NodalImpulse>> impulses =
+        fem::CollisionNodalImpulses(inCollision, inPropBody, mGpu->GetElementNodes(), positions);
+    if (impulses.HasError())
+        return impulses.GetError();
+    // Node indices come from the solver's own connectivity and impulses are finite: none can be refused.
+    for (const fem::NodalImpulse& impulse : impulses.Get())
+        if (Status status = mGpu->ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
+            return status;
+    return Status::Ok();
+}
+
+std::vector<fem::TetFragment> FemProp::ComputeFragments() const
+{
+    return mGpu ? mGpu->ComputeFragments() : mCpu->ComputeFragments();
+}
+
 void FemProp::ReadPositions(std::vector<Vec3>& outPositions) const
 {
     if (mGpu)

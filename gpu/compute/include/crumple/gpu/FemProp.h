@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/fem/CollisionImpulses.h>
 #include <crumple/fem/TetSolver.h>
 #include <crumple/gpu/GpuTetSolver.h>
 
@@ -57,6 +58,11 @@ public:
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);
     Result<fem::TetStepResult> Step(double inDeltaTime);
+    /// Applies a dispatched collision's contact impulses (fem::CollisionNodalImpulses) to the prop whose body is
+    /// inPropBody; all or nothing.
+    Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody);
+    /// The pieces now (fem::TetFragment), as the CPU solver reports them
+    std::vector<fem::TetFragment> ComputeFragments() const;
     /// Current node positions (m), #N (a readback on the GPU)
     void ReadPositions(std::vector<Vec3>& outPositions) const;
     /// Number of nodes #N
