@@ -1,0 +1,114 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/plugin/DamageMaterial.h>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crumple::crash
+{
+
+/// The rigid-body engine a scenario runs on.
+enum class EEngine : std::uint8_t
+{
+    Bullet,
+    Ode,
+};
+
+/// What the vehicle hits.
+enum class ETarget : std::uint8_t
+{
+    /// A fixed rigid wall; its face turned by TargetSpec::mAngleDegrees about the vertical from facing the car
+    RigidWall,
+};
+
+/// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
+/// the body frame is x forward, y left, z up, centred on the body's bounding box.
+struct VehicleSpec
+{
+    std::filesystem::path mMesh;       ///< OBJ, glTF/GLB, PLY, FBX (assimp); empty: a procedural box. A relative
+                                       ///< path is relative to the scenario file's folder
+    double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0
+    Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box, or of the collision box of a mesh (m)
+    double mMass = 1200.0;             ///< kg, > 0
+    /// Principal moments of inertia about the centre of mass (kg m^2); empty: those of a uniform box of
+    /// mBoxSize and mMass
+    std::optional<Vec3> mInertia;
+    plugin::DamageMaterial mMaterial;  ///< Dent per impulse and its limits
+    std::array<int, 3> mControlCount{{10, 6, 6}}; ///< FFD controls of the fitted zone, each >= 4
+};
+
+/// The target.
+struct TargetSpec
+{
+    ETarget mType = ETarget::RigidWall;
+    double mAngleDegrees = 0.0; ///< Rigid wall: angle between its normal and the car's path (deg), in (-90, 90)
+};
+
+/// How the vehicle arrives.
+struct ImpactSpec
+{
+    double mSpeed = 15.0;         ///< Speed at the start (m/s), > 0 (scenario files may give km/h)
+    double mHeadingDegrees = 0.0; ///< Extra yaw of the car relative to its path (deg)
+    double mOffset = 0.0;         ///< Sideways offset of the car's centre line from the target's centre (m)
+};
+
+/// A number the run measures, to check against an expectation.
+enum class EQuantity : std::uint8_t
+{
+    ResidualCrush,  ///< Largest residual vertex displacement in a zone (m)
+    DeltaV,         ///< Change of the car's velocity over the run, |v_end - v_start| (m/s)
+    TotalImpulse,   ///< Sum of the car's collision impulses (N s)
+    EnergyAbsorbed, ///< Kinetic energy lost, 1/2 m (|v_start|^2 - |v_end|^2) (J)
+    Collisions,     ///< Number of collisions involving the car
+};
+
+/// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
+/// top fifth for the roof), or anywhere.
+enum class EZone : std::uint8_t
+{
+    Any,
+    Front,
+    Rear,
+    Left,
+    Right,
+    Roof,
+};
+
+/// "This quantity must lie in [mMin, mMax]" (either bound may be infinite).
+struct Expectation
+{
+    EQuantity mQuantity = EQuantity::ResidualCrush;
+    EZone mZone = EZone::Any; ///< ResidualCrush only
+    double mMin = -std::numeric_limits<double>::infinity(); ///< In the quantity's SI unit
+    double mMax = std::numeric_limits<double>::infinity();  ///< In the quantity's SI unit
+    std::string mText; ///< The expectation as written in the file, for messages
+};
+
+/// A crash test: vehicle, target, impact, engine, duration, expectations, outputs. Built by LoadCrashScenario.
+struct CrashScenario
+{
+    std::string mName;                ///< Shown in reports
+    EEngine mEngine = EEngine::Bullet;
+    double mDuration = 0.6;           ///< Simulated time (s), > 0
+    double mTimeStep = 1.0 / 120.0;   ///< Engine step (s), in (0, 0.05]
+    VehicleSpec mVehicle;
+    TargetSpec mTarget;
+    ImpactSpec mImpact;
+    std::vector<Expectation> mExpectations;
+    bool mPictures = true;            ///< Write PNG renders (needs EGL; skipped with a note without it)
+};
+
+const char* ToString(EEngine inEngine);
+const char* ToString(EQuantity inQuantity);
+const char* ToString(EZone inZone);
+
+} // namespace crumple::crash
