@@ -37,7 +37,14 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     if (!inSettings.mFloating)
         add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
     if (!inSettings.mDriveOnly && !inSettings.mFloating)
-        add_static(std::make_unique<btBoxShape>(btVector3(1, 10, 3)), btVector3(1, 0, 3));
+    {
+        // A 2 m thick wall whose face is the plane through the origin turned by mWallAngleDegrees.
+        const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;
+        add_static(std::make_unique<btBoxShape>(btVector3(1, 10, 3)),
+                   btVector3(btScalar(std::cos(angle)), btScalar(std::sin(angle)), 3));
+        mObjects.back()->setWorldTransform(btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(angle)),
+                                                       mObjects.back()->getWorldTransform().getOrigin()));
+    }
 
     // Scenery: crates in a grid beside the road (not registered with Crumple).
     if (inSettings.mSceneryBoxes > 0)
@@ -58,12 +65,15 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     // The car: a box resting on the ground, yawed, its nearest point mGap before the wall.
     const Vec3& h = inSettings.mHalfExtents;
     const double yaw = inSettings.mYawDegrees * std::numbers::pi / 180.0;
-    const double reach = std::abs(h.x() * std::cos(yaw)) + std::abs(h.y() * std::sin(yaw));
     auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(h.x()), btScalar(h.y()), btScalar(h.z())));
     btVector3 inertia;
     shape->calculateLocalInertia(btScalar(inSettings.mMass), inertia);
+    if (inSettings.mInertia)
+        inertia = btVector3(btScalar(inSettings.mInertia->x()), btScalar(inSettings.mInertia->y()),
+                            btScalar(inSettings.mInertia->z()));
+    const Vec3 origin = CrashCarStart(inSettings).mTranslation;
     const btTransform start(btQuaternion(btVector3(0, 0, 1), btScalar(yaw)),
-                            btVector3(btScalar(-reach - inSettings.mGap), 0, btScalar(h.z())));
+                            btVector3(btScalar(origin.x()), btScalar(origin.y()), btScalar(origin.z())));
     btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), nullptr, shape.get(), inertia);
     info.m_startWorldTransform = start;
     info.m_friction = btScalar(0.5);

@@ -3,6 +3,10 @@
 #include "EngineCrash.h"
 #include "BoxMesh.h"
 
+#include <cmath>
+#include <limits>
+#include <numbers>
+
 namespace crumple::common
 {
 
@@ -40,10 +44,30 @@ void CrashCounter::OnCollision(const Collision& inCollision, std::span<const Obj
 DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
 {
     DeformableObjectSettings object;
-    object.mMesh = MakeBoxMesh(inSettings.mHalfExtents, BoxSegmentsForTriangles(inSettings.mHalfExtents, inSettings.mTriangles));
+    object.mMesh = inSettings.mCarMesh ? *inSettings.mCarMesh
+                                       : MakeBoxMesh(inSettings.mHalfExtents,
+                                                     BoxSegmentsForTriangles(inSettings.mHalfExtents, inSettings.mTriangles));
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
     return object;
+}
+
+Transform CrashCarStart(const EngineCrashSettings& inSettings)
+{
+    // Wall face: the plane n . x = 0 with n = (cos a, sin a, 0) pointing into the wall.
+    const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;
+    const Vec3 normal(std::cos(angle), std::sin(angle), 0.0);
+    Transform start;
+    start.mRotation = Eigen::AngleAxisd(inSettings.mYawDegrees * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+    const Vec3& h = inSettings.mHalfExtents;
+    double reach = -std::numeric_limits<double>::infinity();
+    for (double sx : {-1.0, 1.0})
+        for (double sy : {-1.0, 1.0})
+            reach = std::max(reach, normal.dot(start.mRotation * Vec3(sx * h.x(), sy * h.y(), 0.0)));
+    // n . (c + corner) = -gap for the nearest corner, with c = (x, offset, h.z).
+    const double x = (-inSettings.mGap - reach - normal.y() * inSettings.mOffset) / normal.x();
+    start.mTranslation = Vec3(x, inSettings.mOffset, h.z());
+    return start;
 }
 
 } // namespace crumple::common

@@ -2,9 +2,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/ffd/TriangleMesh.h>
 #include <crumple/plugin/DamageWorld.h>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace crumple::common
@@ -31,7 +33,17 @@ struct EngineCrashSettings
     int mSceneryBoxes = 0;             ///< Loose 1 m crates resting beside the road, unknown to Crumple: a realistic
                                        ///< engine load for overhead measurements
     bool mAttach = true;               ///< Attach Crumple; false gives the bare engine scene, for overhead ratios
+    /// The car's render mesh in its body frame (x forward, z up, centred on the box); empty: a box mesh of
+    /// mHalfExtents with about mTriangles triangles. The collision shape is always the box.
+    std::optional<ffd::TriangleMesh> mCarMesh;
+    std::optional<Vec3> mInertia;      ///< Principal moments of inertia (kg m^2); empty: those of the box
+    double mWallAngleDegrees = 0.0;    ///< The wall turned about the vertical through the origin (degrees)
+    double mOffset = 0.0;              ///< The car's start y, sideways from the wall's centre line (m)
 };
+
+/// The car's start: centre x so that its nearest bottom corner is mGap from the (possibly turned) wall face,
+/// at y = mOffset, resting on the ground, yawed by mYawDegrees.
+Transform CrashCarStart(const EngineCrashSettings& inSettings);
 
 /// What a crash produced, in the car's body frame.
 struct EngineCrashResult

@@ -26,8 +26,13 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
         dCreatePlane(mSpace, 0, 0, 1, 0);
     if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
+        // A 2 m thick wall whose face is the plane through the origin turned by mWallAngleDegrees.
+        const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;
         dGeomID wall = dCreateBox(mSpace, 2, 20, 6);
-        dGeomSetPosition(wall, 1, 0, 3);
+        dGeomSetPosition(wall, std::cos(angle), std::sin(angle), 3);
+        dMatrix3 wall_rotation;
+        dRFromAxisAndAngle(wall_rotation, 0, 0, 1, angle);
+        dGeomSetRotation(wall, wall_rotation);
     }
 
     // Scenery: crates in a grid beside the road (not registered with Crumple).
@@ -44,12 +49,18 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     const Vec3& h = inSettings.mHalfExtents;
     const double yaw = inSettings.mYawDegrees * std::numbers::pi / 180.0;
-    const double reach = std::abs(h.x() * std::cos(yaw)) + std::abs(h.y() * std::sin(yaw));
     mCar = dBodyCreate(mWorld);
     dMass mass;
     dMassSetBoxTotal(&mass, inSettings.mMass, 2 * h.x(), 2 * h.y(), 2 * h.z());
+    if (inSettings.mInertia)
+    {
+        mass.I[0] = inSettings.mInertia->x();
+        mass.I[5] = inSettings.mInertia->y();
+        mass.I[10] = inSettings.mInertia->z();
+    }
     dBodySetMass(mCar, &mass);
-    dBodySetPosition(mCar, -reach - inSettings.mGap, 0, h.z());
+    const Vec3 origin = CrashCarStart(inSettings).mTranslation;
+    dBodySetPosition(mCar, origin.x(), origin.y(), origin.z());
     dMatrix3 rotation;
     dRFromAxisAndAngle(rotation, 0, 0, 1, yaw);
     dBodySetRotation(mCar, rotation);
