@@ -36,8 +36,11 @@ struct VehicleSpec
 {
     std::filesystem::path mMesh;       ///< OBJ, glTF/GLB, PLY, FBX (assimp); empty: a procedural box. A relative
                                        ///< path is relative to the scenario file's folder
-    double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0
-    Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box, or of the collision box of a mesh (m)
+    std::string mMeshName;             ///< Only the file's meshes whose name contains this (empty: all)
+    double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0; glTF files are
+                                       ///< +y up, +z forward (their specification), others x forward, z up
+    Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box (m); a mesh's collision box is its
+                                       ///< bounding box
     double mMass = 1200.0;             ///< kg, > 0
     /// Principal moments of inertia about the centre of mass (kg m^2); empty: those of a uniform box of
     /// mBoxSize and mMass

@@ -1,0 +1,38 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# crumple-crash from the command line: every example scenario meets its own expectations (exit 0), a
+# deliberately wrong expectation exits 1, and each malformed scenario exits 2 with its message and writes
+# nothing.
+set(crash_script ${CMAKE_CURRENT_LIST_DIR}/RunScenario.cmake)
+set(crash_out ${CMAKE_CURRENT_BINARY_DIR}/crash-cli)
+file(GLOB crash_examples ${PROJECT_SOURCE_DIR}/samples/scenarios/*.json)
+foreach(example IN LISTS crash_examples)
+    get_filename_component(name ${example} NAME_WE)
+    add_test(NAME "crash: example ${name} meets its expectations"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${example} -DOUT=${crash_out}/${name}
+                -DEXPECT_EXIT=0 -P ${crash_script})
+    set_tests_properties("crash: example ${name} meets its expectations" PROPERTIES LABELS crash)
+endforeach()
+add_test(NAME "crash: a failing expectation exits 1 and names it"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/failing_expectation.json
+            -DOUT=${crash_out}/failing -DEXPECT_EXIT=1 "-DEXPECT_TEXT=FAIL residual_crush_m\\(roof\\)" -P ${crash_script})
+set(crash_malformed
+    "unknown_key|/vehicle/mass_lb: unknown key"
+    "negative_mass|/vehicle/mass_kg: must be > 0"
+    "wrong_unit|/impact/speed_mph"
+    "wrong_type|/duration_s: must be a number"
+    "missing_mesh|/vehicle/mesh: file not found"
+    "truncated|line"
+    "unknown_engine|/engine"
+    "nan_speed|/impact/speed_km_h: must be a number")
+foreach(entry IN LISTS crash_malformed)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 0 name)
+    list(GET parts 1 text)
+    add_test(NAME "crash: malformed ${name} exits 2 with its message"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
+                -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/malformed/${name}.json -DOUT=${crash_out}/malformed-${name}
+                -DEXPECT_EXIT=2 "-DEXPECT_TEXT=${text}" -P ${crash_script})
+    set_tests_properties("crash: malformed ${name} exits 2 with its message" PROPERTIES LABELS crash)
+endforeach()
+set_tests_properties("crash: a failing expectation exits 1 and names it" PROPERTIES LABELS crash)

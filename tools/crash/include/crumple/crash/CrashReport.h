@@ -1,0 +1,40 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/crash/CrashRun.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+namespace crumple::crash
+{
+
+/// An expectation with the value measured and its verdict.
+struct ExpectationResult
+{
+    Expectation mExpectation;
+    double mValue = 0.0; ///< Measured, in the quantity's SI unit
+    bool mPassed = false;
+};
+
+/// Checks every expectation of inScenario against inOutcome.
+std::vector<ExpectationResult> CheckExpectations(const CrashScenario& inScenario, const CrashOutcome& inOutcome);
+
+/// Writes report.json: the scenario's name and engine, per-zone residual crush (m), peak and total impulse
+/// (N s), delta-v (m/s and km/h), energy absorbed (J), start and end velocity, every collision, every
+/// expectation with its value and verdict, and the overall verdict.
+Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario& inScenario,
+                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults);
+
+/// The human summary (stdout): the numbers and each expectation as PASS/FAIL with its measured value.
+void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const CrashOutcome& inOutcome,
+                  const std::vector<ExpectationResult>& inResults);
+
+/// PNG renders of the car before and after from the front, side and top, and a heat map of the residual
+/// displacement (iso view), into inFolder. Needs an EGL context: without one the error says why.
+Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome);
+
+} // namespace crumple::crash

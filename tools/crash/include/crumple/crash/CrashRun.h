@@ -1,0 +1,66 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/crash/CrashScenario.h>
+#include <crumple/ffd/TriangleMesh.h>
+
+#include <array>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+namespace crumple::crash
+{
+
+/// One collision of the car, as dispatched.
+struct CrashCollisionRecord
+{
+    double mStartTime = 0.0; ///< s
+    double mEndTime = 0.0;   ///< s
+    double mImpulse = 0.0;   ///< Sum of its contact impulses (N s)
+    int mContacts = 0;       ///< Contacts grouped into it
+};
+
+/// What a crash run measured. Velocities in the world frame; crush in the car's body frame.
+struct CrashOutcome
+{
+    std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
+    Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
+    Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
+    double mMass = 0.0;                     ///< kg
+    double mTotalImpulse = 0.0;             ///< Sum over the car's collisions (N s)
+    double mPeakImpulse = 0.0;              ///< Largest single collision impulse (N s)
+    std::vector<CrashCollisionRecord> mCollisions; ///< In dispatch order
+    ffd::TriangleMesh mRestMesh;            ///< The car body before (body frame, m)
+    std::vector<Vec3> mPositions;           ///< The car body after (body frame, m), #V
+    std::vector<Vec3> mNormals;             ///< Its vertex normals after, #V
+    std::vector<Vec3> mRestNormals;         ///< Its vertex normals before, #V
+    Transform mStartTransform;              ///< Car body to world at the start
+    Transform mEndTransform;                ///< Car body to world at the end
+
+    /// |v_end - v_start| (m/s)
+    double DeltaV() const { return (mEndVelocity - mStartVelocity).norm(); }
+    /// 1/2 m (|v_start|^2 - |v_end|^2) (J)
+    double EnergyAbsorbed() const;
+    /// The value an expectation checks, in its SI unit
+    double Measure(const Expectation& inExpectation) const;
+};
+
+/// Where a run writes its replay file; empty: no recording.
+struct CrashRunOptions
+{
+    std::filesystem::path mReplayFile;
+};
+
+/// Loads the vehicle mesh (if any), builds the scene in the scenario's engine (a ground plane, the target,
+/// the car as a box rigid body carrying the deformable mesh), runs it for mDuration and measures. Errors:
+/// an unreadable mesh, an engine that was not built, a recorder that cannot write.
+Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOptions& inOptions);
+
+/// Largest displacement of the vertices in a zone of the body box (m): the outer quarter of its length
+/// (front/rear) or width (left/right), the top fifth of its height (roof), or all vertices (any).
+double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone);
+
+} // namespace crumple::crash

@@ -1,0 +1,141 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/crash/CrashReport.h>
+
+#include "ScenePainter.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/ffd/BoundingBox.h>
+
+#include <nlohmann/json.hpp>
+
+#include <span>
+#include <string>
+
+namespace crumple::crash
+{
+
+namespace
+{
+
+constexpr double cKmhPerMs = 3.6;
+
+nlohmann::json ToJson(const Vec3& inValue)
+{
+    return nlohmann::json::array({inValue.x(), inValue.y(), inValue.z()});
+}
+
+} // namespace
+
+std::vector<ExpectationResult> CheckExpectations(const CrashScenario& inScenario, const CrashOutcome& inOutcome)
+{
+    std::vector<ExpectationResult> results;
+    for (const Expectation& expectation : inScenario.mExpectations)
+    {
+        const double value = inOutcome.Measure(expectation);
+        results.push_back({expectation, value, value >= expectation.mMin && value <= expectation.mMax});
+    }
+    return results;
+}
+
+Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario& inScenario,
+                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults)
+{
+    nlohmann::json report;
+    report["scenario"] = inScenario.mName;
+    report["engine"] = ToString(inScenario.mEngine);
+    report["impact_speed_m_s"] = inScenario.mImpact.mSpeed;
+    report["mass_kg"] = inOutcome.mMass;
+    nlohmann::json crush;
+    for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
+        crush[ToString(zone)] = inOutcome.mResidualCrush[static_cast<int>(zone)];
+    report["residual_crush_m"] = crush;
+    report["total_impulse_N_s"] = inOutcome.mTotalImpulse;
+    report["peak_impulse_N_s"] = inOutcome.mPeakImpulse;
+    report["delta_v_m_s"] = inOutcome.DeltaV();
+    report["delta_v_km_h"] = inOutcome.DeltaV() * cKmhPerMs;
+    report["energy_absorbed_J"] = inOutcome.EnergyAbsorbed();
+    report["start_velocity_m_s"] = ToJson(inOutcome.mStartVelocity);
+    report["end_velocity_m_s"] = ToJson(inOutcome.mEndVelocity);
+    nlohmann::json collisions = nlohmann::json::array();
+    for (const CrashCollisionRecord& collision : inOutcome.mCollisions)
+        collisions.push_back({{"start_s", collision.mStartTime},
+                              {"end_s", collision.mEndTime},
+                              {"impulse_N_s", collision.mImpulse},
+                              {"contacts", collision.mContacts}});
+    report["collisions"] = collisions;
+    nlohmann::json expectations = nlohmann::json::array();
+    bool passed = true;
+    for (const ExpectationResult& result : inResults)
+    {
+        expectations.push_back({{"expectation", result.mExpectation.mText},
+                                {"quantity", ToString(result.mExpectation.mQuantity)},
+                                {"value", result.mValue},
+                                {"passed", result.mPassed}});
+        passed = passed && result.mPassed;
+    }
+    report["expectations"] = expectations;
+    report["passed"] = passed;
+    const std::string text = report.dump(2) + "\n";
+    return WriteFileAtomically(inPath, std::as_bytes(std::span(text.data(), text.size())), "crumple-crash report");
+}
+
+void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const CrashOutcome& inOutcome,
+                  const std::vector<ExpectationResult>& inResults)
+{
+    std::fprintf(inStream, "%s (%s, %.1f km/h)\n", inScenario.mName.c_str(), ToString(inScenario.mEngine),
+                 inScenario.mImpact.mSpeed * cKmhPerMs);
+    std::fprintf(inStream, "  residual crush: front %.3f m, rear %.3f m, left %.3f m, right %.3f m, roof %.3f m\n",
+                 inOutcome.mResidualCrush[static_cast<int>(EZone::Front)],
+                 inOutcome.mResidualCrush[static_cast<int>(EZone::Rear)],
+                 inOutcome.mResidualCrush[static_cast<int>(EZone::Left)],
+                 inOutcome.mResidualCrush[static_cast<int>(EZone::Right)],
+                 inOutcome.mResidualCrush[static_cast<int>(EZone::Roof)]);
+    std::fprintf(inStream, "  delta-v %.2f km/h, energy absorbed %.1f kJ, %zu collisions, impulse %.0f N s (peak %.0f)\n",
+                 inOutcome.DeltaV() * cKmhPerMs, inOutcome.EnergyAbsorbed() / 1000.0, inOutcome.mCollisions.size(),
+                 inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
+    for (const ExpectationResult& result : inResults)
+        std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
+                     result.mExpectation.mText.c_str(), result.mValue);
+}
+
+Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome)
+{
+    const double deepest = std::max(inOutcome.mResidualCrush[static_cast<int>(EZone::Any)], 0.01);
+    Result<std::unique_ptr<samples::ScenePainter>> created = samples::ScenePainter::Create(960, 540, deepest);
+    if (created.HasError())
+        return created.GetError();
+    samples::ScenePainter& painter = *created.Get();
+    const ffd::AlignedBox bounds = ffd::BoundingBox(inOutcome.mRestMesh.mPositions);
+    const Vec3 margin = Vec3::Constant(0.05);
+    const double aspect = painter.GetWidth() / static_cast<double>(painter.GetHeight());
+    const std::vector<double> dents = samples::DentDepths(inOutcome.mPositions, inOutcome.mRestMesh.mPositions);
+    const struct
+    {
+        render::EView mView;
+        const char* mName;
+    } views[] = {{render::EView::Front, "front"}, {render::EView::Side, "side"}, {render::EView::Top, "top"}};
+    for (const bool after : {false, true})
+        for (const auto& view : views)
+        {
+            // Body frame, the car centred: before uncoloured, after coloured by residual displacement.
+            painter.Clear();
+            painter.Add(after ? inOutcome.mPositions : inOutcome.mRestMesh.mPositions,
+                        after ? inOutcome.mNormals : inOutcome.mRestNormals, inOutcome.mRestMesh.mTriangles,
+                        after ? std::span<const double>(dents) : std::span<const double>(), Transform{});
+            const render::Camera camera = render::Camera::LookAtBounds(bounds.mMin - margin, bounds.mMax + margin,
+                                                                       view.mView, Vec3::UnitZ(), Vec3::UnitX(),
+                                                                       30.0, aspect);
+            const std::string name = std::string(after ? "after_" : "before_") + view.mName + ".png";
+            if (Status status = painter.Paint(camera, inFolder / name); status.HasError())
+                return status;
+        }
+    painter.Clear();
+    painter.Add(inOutcome.mPositions, inOutcome.mNormals, inOutcome.mRestMesh.mTriangles, dents, Transform{});
+    const render::Camera iso = render::Camera::LookAtBounds(bounds.mMin - margin, bounds.mMax + margin,
+                                                            render::EView::Iso, Vec3::UnitZ(), Vec3::UnitX(), 30.0,
+                                                            aspect);
+    return painter.Paint(iso, inFolder / "heat_map.png");
+}
+
+} // namespace crumple::crash

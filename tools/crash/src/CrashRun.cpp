@@ -1,0 +1,228 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/crash/CrashRun.h>
+
+#include "CarMesh.h"
+#include "EngineCrash.h"
+
+#include <crumple/ffd/BoundingBox.h>
+#include <crumple/plugin/DamageRecorder.h>
+
+#if defined(CRUMPLE_CRASH_BULLET)
+#include "BulletWallCrash.h"
+#endif
+#if defined(CRUMPLE_CRASH_ODE)
+#include "OdeWallCrash.h"
+#endif
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace crumple::crash
+{
+
+namespace
+{
+
+// The scenario in the shared engine scene's terms.
+Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenario)
+{
+    const VehicleSpec& vehicle = inScenario.mVehicle;
+    common::EngineCrashSettings settings;
+    settings.mMass = vehicle.mMass;
+    settings.mInertia = vehicle.mInertia;
+    settings.mMaterial = vehicle.mMaterial;
+    settings.mControlCount = vehicle.mControlCount;
+    settings.mSpeed = inScenario.mImpact.mSpeed;
+    settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;
+    settings.mOffset = inScenario.mImpact.mOffset;
+    settings.mWallAngleDegrees = inScenario.mTarget.mAngleDegrees;
+    settings.mTimeStep = inScenario.mTimeStep;
+    settings.mDuration = inScenario.mDuration;
+    settings.mHalfExtents = 0.5 * vehicle.mBoxSize;
+    if (!vehicle.mMesh.empty())
+    {
+        // glTF is +y up, +z forward by its specification; other formats are taken as x forward, z up.
+        samples::CarMeshSettings mesh;
+        mesh.mPath = vehicle.mMesh;
+        mesh.mMeshName = vehicle.mMeshName;
+        mesh.mLength = vehicle.mMeshLength;
+        const std::string extension = vehicle.mMesh.extension().string();
+        if (extension == ".gltf" || extension == ".glb")
+            mesh.mFileToBody << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+        Result<ffd::TriangleMesh> loaded = samples::LoadCarMesh(mesh);
+        if (loaded.HasError())
+            return loaded.GetError();
+        // The collision box is the mesh's bounding box.
+        const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);
+        settings.mHalfExtents = 0.5 * (bounds.mMax - bounds.mMin);
+        settings.mCarMesh = std::move(loaded.Get());
+    }
+    return settings;
+}
+
+// Runs one engine's scene to the end and fills the outcome.
+template <class Scene, class VelocityOf, class TransformOf>
+Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, const CrashRunOptions& inOptions,
+                              VelocityOf inVelocityOf, TransformOf inTransformOf)
+{
+    Scene scene(inSettings);
+    std::unique_ptr<plugin::DamageRecorder> recorder;
+    if (!inOptions.mReplayFile.empty())
+    {
+        Result<std::unique_ptr<plugin::DamageRecorder>> created =
+            plugin::DamageRecorder::Create(inOptions.mReplayFile, scene.GetDamage());
+        if (created.HasError())
+            return created.GetError();
+        recorder = std::move(created.Get());
+    }
+    CrashOutcome outcome;
+    outcome.mMass = inSettings.mMass;
+    outcome.mStartVelocity = inVelocityOf(scene);
+    outcome.mStartTransform = inTransformOf(scene);
+    outcome.mRestNormals = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetNormals();
+    const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
+    for (int step = 0; step < steps; ++step)
+        scene.Step();
+    scene.GetDamage().Flush();
+    outcome.mEndVelocity = inVelocityOf(scene);
+    outcome.mEndTransform = inTransformOf(scene);
+    if (recorder)
+        if (Status status = recorder->Close(); status.HasError())
+            return status.GetError();
+
+    for (const plugin::Collision& collision : scene.GetCounter().mLog)
+    {
+        const double impulse = collision.TotalImpulse();
+        outcome.mCollisions.push_back({collision.mStartTime, collision.mEndTime, impulse,
+                                       static_cast<int>(collision.mContacts.size())});
+        outcome.mTotalImpulse += impulse;
+        outcome.mPeakImpulse = std::max(outcome.mPeakImpulse, impulse);
+    }
+    const ffd::FfdDeformer& car = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer();
+    outcome.mRestMesh = car.GetRestMesh();
+    outcome.mPositions = car.GetPositions();
+    outcome.mNormals = car.GetNormals();
+    for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
+        outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
+    return outcome;
+}
+
+} // namespace
+
+double CrashOutcome::EnergyAbsorbed() const
+{
+    return 0.5 * mMass * (mStartVelocity.squaredNorm() - mEndVelocity.squaredNorm());
+}
+
+double CrashOutcome::Measure(const Expectation& inExpectation) const
+{
+    switch (inExpectation.mQuantity)
+    {
+    case EQuantity::ResidualCrush:
+        return mResidualCrush[static_cast<int>(inExpectation.mZone)];
+    case EQuantity::DeltaV:
+        return DeltaV();
+    case EQuantity::TotalImpulse:
+        return mTotalImpulse;
+    case EQuantity::EnergyAbsorbed:
+        return EnergyAbsorbed();
+    case EQuantity::Collisions:
+        return static_cast<double>(mCollisions.size());
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone)
+{
+    const ffd::AlignedBox bounds = ffd::BoundingBox(inRest.mPositions);
+    const Vec3 size = bounds.mMax - bounds.mMin;
+    double largest = 0.0;
+    for (std::size_t vertex = 0; vertex < inPositions.size(); ++vertex)
+    {
+        const Vec3& p = inRest.mPositions[vertex];
+        bool inside = true;
+        switch (inZone)
+        {
+        case EZone::Any:
+            break;
+        case EZone::Front:
+            inside = p.x() >= bounds.mMax.x() - 0.25 * size.x();
+            break;
+        case EZone::Rear:
+            inside = p.x() <= bounds.mMin.x() + 0.25 * size.x();
+            break;
+        case EZone::Left:
+            inside = p.y() >= bounds.mMax.y() - 0.25 * size.y();
+            break;
+        case EZone::Right:
+            inside = p.y() <= bounds.mMin.y() + 0.25 * size.y();
+            break;
+        case EZone::Roof:
+            inside = p.z() >= bounds.mMax.z() - 0.2 * size.z();
+            break;
+        }
+        if (inside)
+            largest = std::max(largest, (inPositions[vertex] - p).norm());
+    }
+    return largest;
+}
+
+Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOptions& inOptions)
+{
+    Result<common::EngineCrashSettings> settings = SceneSettings(inScenario);
+    if (settings.HasError())
+        return settings.GetError();
+    switch (inScenario.mEngine)
+    {
+    case EEngine::Bullet:
+#if defined(CRUMPLE_CRASH_BULLET)
+        return RunScene<common::BulletWallCrash>(
+            settings.Get(), inOptions,
+            [](common::BulletWallCrash& inScene)
+            {
+                const btVector3 v = inScene.GetCar().getLinearVelocity();
+                return Vec3(v.x(), v.y(), v.z());
+            },
+            [](common::BulletWallCrash& inScene)
+            {
+                const btTransform& t = inScene.GetCar().getWorldTransform();
+                Transform transform;
+                for (int row = 0; row < 3; ++row)
+                    for (int col = 0; col < 3; ++col)
+                        transform.mRotation(row, col) = t.getBasis()[row][col];
+                transform.mTranslation = Vec3(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
+                return transform;
+            });
+#else
+        return MakeError(EError::InvalidArgument, "crumple-crash was built without Bullet (libbullet-dev)");
+#endif
+    case EEngine::Ode:
+#if defined(CRUMPLE_CRASH_ODE)
+        return RunScene<common::OdeWallCrash>(
+            settings.Get(), inOptions,
+            [](common::OdeWallCrash& inScene)
+            {
+                const dReal* v = dBodyGetLinearVel(inScene.GetCar());
+                return Vec3(v[0], v[1], v[2]);
+            },
+            [](common::OdeWallCrash& inScene)
+            {
+                const dReal* r = dBodyGetRotation(inScene.GetCar()); // 3 x 4, row major
+                const dReal* p = dBodyGetPosition(inScene.GetCar());
+                Transform transform;
+                for (int row = 0; row < 3; ++row)
+                    for (int col = 0; col < 3; ++col)
+                        transform.mRotation(row, col) = r[4 * row + col];
+                transform.mTranslation = Vec3(p[0], p[1], p[2]);
+                return transform;
+            });
+#else
+        return MakeError(EError::InvalidArgument, "crumple-crash was built without ODE (libode-dev)");
+#endif
+    }
+    return MakeError(EError::InvalidArgument, "unknown engine");
+}
+
+} // namespace crumple::crash
