@@ -113,11 +113,14 @@ int main(int argc, char** argv)
     if (pictures && scenario.Get().mPictures)
         if (Status status = WritePictures(out, outcome.Get()); status.HasError())
             std::printf("crumple-crash: pictures skipped: %s\n", status.GetError().mMessage.c_str());
+    if (Status status = WriteReportHtml(out / "report.html", scenario.Get(), outcome.Get(), results, out);
+        status.HasError())
+        std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
     PrintSummary(stdout, scenario.Get(), outcome.Get(), results);
     bool passed = true;
     for (const ExpectationResult& result : results)
         passed = passed && result.mPassed;
     std::printf("crumple-crash: %s; report in %s\n", passed ? "all expectations hold" : "an expectation FAILED",
-                (out / "report.json").string().c_str());
+                (out / "report.html").string().c_str());
     return passed ? cExitPass : cExitFail;
 }

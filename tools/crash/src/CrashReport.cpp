@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -23,6 +25,40 @@ constexpr double cKmhPerMs = 3.6;
 nlohmann::json ToJson(const Vec3& inValue)
 {
     return nlohmann::json::array({inValue.x(), inValue.y(), inValue.z()});
+}
+
+// RFC 4648 base64 of a byte string (for data: URLs).
+std::string Base64(std::span<const std::byte> inBytes)
+{
+    static constexpr char cAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string text;
+    text.reserve((inBytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < inBytes.size(); i += 3)
+    {
+        const std::size_t count = std::min<std::size_t>(3, inBytes.size() - i);
+        std::uint32_t chunk = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            chunk = (chunk << 8) | (k < count ? std::to_integer<std::uint32_t>(inBytes[i + k]) : 0u);
+        for (std::size_t k = 0; k < 4; ++k)
+            text += k <= count ? cAlphabet[(chunk >> (18 - 6 * k)) & 63u] : '=';
+    }
+    return text;
+}
+
+// Text safe inside HTML.
+std::string Escape(const std::string& inText)
+{
+    std::string escaped;
+    for (char c : inText)
+        escaped += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
+    return escaped;
+}
+
+std::string Number(double inValue, int inDigits)
+{
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", inDigits, inValue);
+    return text;
 }
 
 } // namespace
@@ -97,6 +133,49 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue);
+}
+
+Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario& inScenario,
+                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults,
+                       const std::filesystem::path& inPictureFolder)
+{
+    bool passed = true;
+    for (const ExpectationResult& result : inResults)
+        passed = passed && result.mPassed;
+    std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
+                       Escape(inScenario.mName) +
+                       "</title><style>body{font-family:sans-serif;margin:2em;background:#fff;color:#222}"
+                       "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:4px 10px;text-align:left}"
+                       ".pass{color:#070}.fail{color:#b00;font-weight:bold}img{max-width:480px;margin:4px;"
+                       "border:1px solid #ccc}</style></head><body>\n";
+    html += "<h1>" + Escape(inScenario.mName) + "</h1>\n<p>Engine " + ToString(inScenario.mEngine) + ", " +
+            Number(inScenario.mImpact.mSpeed * cKmhPerMs, 1) + " km/h, mass " + Number(inOutcome.mMass, 0) +
+            " kg. Verdict: <span class=\"" + (passed ? "pass\">all expectations hold" : "fail\">an expectation failed") +
+            "</span></p>\n<table><tr><th>quantity</th><th>value</th></tr>\n";
+    const auto row = [&html](const std::string& inName, const std::string& inValue)
+    { html += "<tr><td>" + inName + "</td><td>" + inValue + "</td></tr>\n"; };
+    for (EZone zone : {EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
+        row(std::string("residual crush, ") + ToString(zone), Number(inOutcome.mResidualCrush[static_cast<int>(zone)], 3) + " m");
+    row("delta-v", Number(inOutcome.DeltaV() * cKmhPerMs, 2) + " km/h");
+    row("energy absorbed", Number(inOutcome.EnergyAbsorbed() / 1000.0, 2) + " kJ");
+    row("total impulse", Number(inOutcome.mTotalImpulse, 0) + " N s (peak " + Number(inOutcome.mPeakImpulse, 0) + ")");
+    row("collisions", std::to_string(inOutcome.mCollisions.size()));
+    html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";
+    for (const ExpectationResult& result : inResults)
+        html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue, 4) +
+                "</td><td class=\"" + (result.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
+    html += "</table>\n<h2>Pictures</h2>\n<div>";
+    for (const char* name : {"before_front", "after_front", "before_side", "after_side", "before_top", "after_top",
+                             "heat_map"})
+    {
+        Result<std::vector<std::byte>> png = ReadFileBytes(inPictureFolder / (std::string(name) + ".png"));
+        if (png.IsValid())
+            html += "<figure style=\"display:inline-block\"><img alt=\"" + std::string(name) +
+                    "\" src=\"data:image/png;base64," + Base64(png.Get()) + "\"><figcaption>" + name +
+                    "</figcaption></figure>";
+    }
+    html += "</div>\n</body></html>\n";
+    return WriteFileAtomically(inPath, std::as_bytes(std::span(html.data(), html.size())), "crumple-crash report");
 }
 
 Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome)

@@ -33,6 +33,12 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
 void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const CrashOutcome& inOutcome,
                   const std::vector<ExpectationResult>& inResults);
 
+/// Writes report.html: a self-contained page (pictures embedded as base64 data, no external file or
+/// network) with the summary table, the expectations and the PNGs found in inPictureFolder.
+Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario& inScenario,
+                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults,
+                       const std::filesystem::path& inPictureFolder);
+
 /// PNG renders of the car before and after from the front, side and top, and a heat map of the residual
 /// displacement (iso view), into inFolder. Needs an EGL context: without one the error says why.
 Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome);
