@@ -35,7 +35,8 @@ enum class ETarget : std::uint8_t
 struct VehicleSpec
 {
     std::filesystem::path mMesh;       ///< OBJ, glTF/GLB, PLY, FBX (assimp); empty: a procedural box. A relative
-                                       ///< path is relative to the scenario file's folder
+                                       ///< path in a file is relative to the scenario file's folder;
+                                       ///< ParseCrashScenario stores the resolved path
     double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0
     Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box, or of the collision box of a mesh (m)
     double mMass = 1200.0;             ///< kg, > 0
