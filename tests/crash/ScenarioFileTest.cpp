@@ -188,15 +188,16 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
         ParseCrashScenario(Minimal(R"("mass_kg": 900, "material": {"max_deformation_m": 0.5})"), {});
     REQUIRE(partial.IsValid());
     CHECK(partial.Get().mVehicle.mMaterial.mMaxInstantDeformation == 0.5);
-    CHECK(partial.Get().mVehicle.mMaterial.mDeformationFactor == defaults.mVehicle.mMaterial.mDeformationFactor);
+    CHECK(partial.Get().mVehicle.mMaterial.mDeformationFactor ==
+          defaults.mVehicle.mMaterial.mDeformationFactor);
 }
 
 TEST_CASE("ScenarioFile: km/h is converted to m/s exactly", "[crash]")
 {
-    const Result<CrashScenario> result = ParseCrashScenario(
-        Minimal(R"("mass_kg": 1200)", R"("speed_km_h": 56)",
-                R"("expectations": [{"quantity": "delta_v_km_h", "min": 36, "max": 56}])"),
-        {});
+    const Result<CrashScenario> result =
+        ParseCrashScenario(Minimal(R"("mass_kg": 1200)", R"("speed_km_h": 56)",
+                                   R"("expectations": [{"quantity": "delta_v_km_h", "min": 36, "max": 56}])"),
+                           {});
     REQUIRE(result.IsValid());
     // 56 km/h = 140/9 m/s = 15.5555... m/s: the double nearest it, as one division gives it
     CHECK(result.Get().mImpact.mSpeed == 140.0 / 9.0);
@@ -204,7 +205,8 @@ TEST_CASE("ScenarioFile: km/h is converted to m/s exactly", "[crash]")
     CHECK(result.Get().mExpectations[0].mMax == 140.0 / 9.0);
     CHECK(result.Get().mExpectations[0].mText == "delta_v_km_h in [36, 56]");
 
-    const Result<CrashScenario> metres = ParseCrashScenario(Minimal(R"("mass_kg": 1200)", R"("speed_m_s": 7.25)"), {});
+    const Result<CrashScenario> metres =
+        ParseCrashScenario(Minimal(R"("mass_kg": 1200)", R"("speed_m_s": 7.25)"), {});
     REQUIRE(metres.IsValid());
     CHECK(metres.Get().mImpact.mSpeed == 7.25);
 }
@@ -222,7 +224,8 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
     const std::vector<Case> cases = {
         // Unknown keys, with the known ones and unit hints
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
-         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_length_m, box_size_m, mass_kg, "
+         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_length_m, box_size_m, "
+         "mass_kg, "
          "inertia_kg_m2, control_count, material)"},
         {Minimal(mass, R"("speed_mph": 35)"), EError::InvalidArgument,
          "/impact/speed_mph: unknown key; speeds are speed_km_h or speed_m_s"},
@@ -255,9 +258,11 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/name: must be a string, got number"},
         // Missing required keys
         {Minimal(R"("mesh_length_m": 4)"), EError::InvalidArgument, "/vehicle/mass_kg: required"},
-        {R"({"vehicle": {"mass_kg": 1}, "impact": {"speed_m_s": 1}})", EError::InvalidArgument, "/name: required"},
+        {R"({"vehicle": {"mass_kg": 1}, "impact": {"speed_m_s": 1}})", EError::InvalidArgument,
+         "/name: required"},
         {R"({"name": "t", "impact": {"speed_m_s": 1}})", EError::InvalidArgument, "/vehicle: required"},
-        {Minimal(mass, R"("heading_deg": 0)"), EError::InvalidArgument, "/impact/speed_km_h: required (or speed_m_s)"},
+        {Minimal(mass, R"("heading_deg": 0)"), EError::InvalidArgument,
+         "/impact/speed_km_h: required (or speed_m_s)"},
         {Minimal(mass, R"("speed_km_h": 56, "speed_m_s": 15)"), EError::InvalidArgument,
          "/impact/speed_m_s: give speed_km_h or speed_m_s, not both"},
         {Minimal(mass, speed, R"("expectations": [{"min": 1}])"), EError::InvalidArgument,
@@ -274,7 +279,8 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/time_step_s: must be in (0, 0.05], got 0.1"},
         {Minimal(mass, speed, R"("duration_s": 0.01, "time_step_s": 0.02)"), EError::InvalidArgument,
          "/time_step_s: must be <= duration_s (0.01), got 0.02"},
-        {Minimal(mass, R"("speed_km_h": 0)"), EError::InvalidArgument, "/impact/speed_km_h: must be > 0, got 0"},
+        {Minimal(mass, R"("speed_km_h": 0)"), EError::InvalidArgument,
+         "/impact/speed_km_h: must be > 0, got 0"},
         {Minimal(R"("mass_kg": 1200, "box_size_m": [4, 0, 1])"), EError::InvalidArgument,
          "/vehicle/box_size_m/1: must be > 0, got 0"},
         {Minimal(R"("mass_kg": 1200, "inertia_kg_m2": [1, 1, -1])"), EError::InvalidArgument,
@@ -284,9 +290,10 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         {Minimal(R"("mass_kg": 1200, "control_count": [10, 3, 6])"), EError::InvalidArgument,
          "/vehicle/control_count/1: must be in [4, 256], got 3"},
         {Minimal(R"("mass_kg": 1, "material": {"min_deformation_m": 0.1, "max_deformation_m": 0.05})"),
-         EError::InvalidArgument, "/vehicle/material/max_deformation_m: must be >= min_deformation_m (0.1), got 0.05"},
-        {Minimal(R"("mass_kg": 1, "material": {"deformation_factor_m_per_N_s": -1e-5})"), EError::InvalidArgument,
-         "/vehicle/material/deformation_factor_m_per_N_s: must be >= 0, got -1e-05"},
+         EError::InvalidArgument,
+         "/vehicle/material/max_deformation_m: must be >= min_deformation_m (0.1), got 0.05"},
+        {Minimal(R"("mass_kg": 1, "material": {"deformation_factor_m_per_N_s": -1e-5})"),
+         EError::InvalidArgument, "/vehicle/material/deformation_factor_m_per_N_s: must be >= 0, got -1e-05"},
         {Minimal(mass, speed, R"("target": {"angle_deg": 90})"), EError::InvalidArgument,
          "/target/angle_deg: must be in (-90, 90), got 90"},
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "min": 3, "max": 1}])"),
@@ -296,7 +303,8 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          R"(/engine: must be "bullet" or "ode", got "havok")"},
         {Minimal(mass, speed, R"("target": {"type": "pole"})"), EError::InvalidArgument,
          R"(/target/type: must be "rigid_wall", got "pole")"},
-        {Minimal(mass, speed, R"("expectations": [{"quantity": "residual_crush_m", "zone": "top", "max": 0}])"),
+        {Minimal(mass, speed,
+                 R"("expectations": [{"quantity": "residual_crush_m", "zone": "top", "max": 0}])"),
          EError::InvalidArgument,
          R"(/expectations/0/zone: must be one of "any", "front", "rear", "left", "right" or "roof", got "top")"},
         {Minimal(mass, speed, R"("expectations": [{"quantity": "delta_v_mph", "max": 30}])"),
@@ -304,13 +312,16 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "zone": "front", "max": 3}])"),
          EError::InvalidArgument, "/expectations/0/zone: only residual_crush_m has a zone"},
         // A key given twice
-        {Minimal(R"("mass_kg": 1200, "mass_kg": 900)"), EError::InvalidArgument, "/vehicle/mass_kg: duplicate key"},
-        {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "min": 1}, {"min": 1, "min": 2}])"),
+        {Minimal(R"("mass_kg": 1200, "mass_kg": 900)"), EError::InvalidArgument,
+         "/vehicle/mass_kg: duplicate key"},
+        {Minimal(mass, speed,
+                 R"("expectations": [{"quantity": "collisions", "min": 1}, {"min": 1, "min": 2}])"),
          EError::InvalidArgument, "/expectations/1/min: duplicate key"},
         // The mesh must exist
         {Minimal(R"("mass_kg": 1200, "mesh": "no/such/car.glb")"), EError::IoError,
          "/vehicle/mesh: file not found: "},
-        {Minimal(R"("mass_kg": 1200, "mesh": "")"), EError::InvalidArgument, "/vehicle/mesh: must not be empty"},
+        {Minimal(R"("mass_kg": 1200, "mesh": "")"), EError::InvalidArgument,
+         "/vehicle/mesh: must not be empty"},
         // Not JSON
         {"", EError::CorruptData, "line 1, column 1: "},
         {R"({"name": "t", "duration_s": nan})", EError::CorruptData, "line 1, column 30: "},
@@ -333,9 +344,10 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
 
 TEST_CASE("ScenarioFile: hints name the accepted units", "[crash]")
 {
-    const Result<CrashScenario> quantity = ParseCrashScenario(
-        Minimal(R"("mass_kg": 1)", R"("speed_m_s": 1)", R"("expectations": [{"quantity": "delta_v_mph", "max": 30}])"),
-        {});
+    const Result<CrashScenario> quantity =
+        ParseCrashScenario(Minimal(R"("mass_kg": 1)", R"("speed_m_s": 1)",
+                                   R"("expectations": [{"quantity": "delta_v_mph", "max": 30}])"),
+                           {});
     REQUIRE(quantity.HasError());
     CHECK_THAT(quantity.GetError().mMessage, Catch::Contains("delta-v is delta_v_m_s or delta_v_km_h"));
     CHECK_THAT(quantity.GetError().mMessage, Catch::Contains(R"(got "delta_v_mph")"));
@@ -357,8 +369,8 @@ TEST_CASE("ScenarioFile: a relative mesh path is resolved against the base folde
     CHECK(std::filesystem::equivalent(relative.Get().mVehicle.mMesh, mesh));
 
     // An absolute path is kept
-    const Result<CrashScenario> absolute = ParseCrashScenario(
-        Minimal(R"("mass_kg": 1200, "mesh": )" + JsonString(mesh.string())), scenarios);
+    const Result<CrashScenario> absolute =
+        ParseCrashScenario(Minimal(R"("mass_kg": 1200, "mesh": )" + JsonString(mesh.string())), scenarios);
     REQUIRE(absolute.IsValid());
     CHECK(absolute.Get().mVehicle.mMesh == mesh);
 
@@ -367,7 +379,8 @@ TEST_CASE("ScenarioFile: a relative mesh path is resolved against the base folde
         ParseCrashScenario(Minimal(R"("mass_kg": 1200, "mesh": "hatch.obj")"), scenarios);
     REQUIRE(missing.HasError());
     CHECK(missing.GetError().mCode == EError::IoError);
-    CHECK(missing.GetError().mMessage == "/vehicle/mesh: file not found: " + (scenarios / "hatch.obj").string());
+    CHECK(missing.GetError().mMessage ==
+          "/vehicle/mesh: file not found: " + (scenarios / "hatch.obj").string());
 
     // A folder is not a mesh
     const Result<CrashScenario> folder_mesh =
@@ -421,8 +434,15 @@ TEST_CASE("ScenarioFile: a scenario file on disk loads", "[crash]")
 TEST_CASE("ScenarioFile: garbage never throws", "[crash]")
 {
     const std::vector<std::string> inputs = {
-        std::string("\0\xff\xfe", 3), "{\"name\": \"\xc3\x28\"}", "[[[[[[[[[[", "{\"a\":", "123", "\"text\"", "null",
-        "{\"name\": \"t\", \"vehicle\": [], \"impact\": 3}", std::string(10000, '['),
+        std::string("\0\xff\xfe", 3),
+        "{\"name\": \"\xc3\x28\"}",
+        "[[[[[[[[[[",
+        "{\"a\":",
+        "123",
+        "\"text\"",
+        "null",
+        "{\"name\": \"t\", \"vehicle\": [], \"impact\": 3}",
+        std::string(10000, '['),
     };
     for (const std::string& input : inputs)
     {

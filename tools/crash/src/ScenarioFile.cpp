@@ -115,8 +115,8 @@ struct NumberRange
         const bool has_low = std::isfinite(mLow);
         const bool has_high = std::isfinite(mHigh);
         if (has_low && has_high)
-            return std::string("in ") + (mLowOpen ? "(" : "[") + FormatNumber(mLow) + ", " + FormatNumber(mHigh) +
-                   (mHighOpen ? ")" : "]");
+            return std::string("in ") + (mLowOpen ? "(" : "[") + FormatNumber(mLow) + ", " +
+                   FormatNumber(mHigh) + (mHighOpen ? ")" : "]");
         if (has_low)
             return std::string(mLowOpen ? "> " : ">= ") + FormatNumber(mLow);
         if (has_high)
@@ -125,8 +125,8 @@ struct NumberRange
     }
 };
 
-/// A hint for an unknown key that carries a unit we do not accept: a key starting with mStem + "_" (or equal to
-/// mStem) gets mHint, e.g. "speed_mph" -> "speeds are speed_km_h or speed_m_s".
+/// A hint for an unknown key that carries a unit we do not accept: a key starting with mStem + "_" (or equal
+/// to mStem) gets mHint, e.g. "speed_mph" -> "speeds are speed_km_h or speed_m_s".
 struct UnitHint
 {
     std::string_view mStem;
@@ -143,7 +143,7 @@ struct ObjectKeys
 /// Records the first duplicate key met while parsing (nlohmann keeps the last silently), with its pointer.
 class DuplicateKeyFinder
 {
-public:
+  public:
     /// The parser callback: tracks the pointer of the value being read from the parse events.
     bool OnEvent(Json::parse_event_t inEvent, const Json& inParsed)
     {
@@ -193,14 +193,14 @@ public:
         return pointer;
     }
 
-private:
+  private:
     struct Frame
     {
         explicit Frame(bool inArray) : mArray(inArray) {}
 
         bool mArray = false;
-        std::size_t mIndex = 0;     ///< Array: index of the element being read
-        std::string mKey;           ///< Object: key of the value being read
+        std::size_t mIndex = 0;      ///< Array: index of the element being read
+        std::string mKey;            ///< Object: key of the value being read
         std::set<std::string> mKeys; ///< Object: keys seen so far
     };
 
@@ -218,7 +218,7 @@ private:
 /// returns false once it has refused; absent optional keys leave the struct's defaults.
 class ScenarioReader
 {
-public:
+  public:
     explicit ScenarioReader(const std::filesystem::path& inBaseFolder) : mBaseFolder(inBaseFolder) {}
 
     Result<CrashScenario> Read(const Json& inRoot)
@@ -229,7 +229,7 @@ public:
         return scenario;
     }
 
-private:
+  private:
     /// Records a refusal of the value at inPointer; returns false for `return Fail(...)`.
     bool Fail(EError inCode, const std::string& inPointer, const std::string& inWhat)
     {
@@ -269,9 +269,10 @@ private:
             std::string what = "unknown key";
             for (const UnitHint& hint : inKeys.mHints)
             {
-                const bool same_stem = key == hint.mStem || (key.size() > hint.mStem.size() &&
-                                                             key.compare(0, hint.mStem.size(), hint.mStem) == 0 &&
-                                                             key[hint.mStem.size()] == '_');
+                const bool same_stem =
+                    key == hint.mStem ||
+                    (key.size() > hint.mStem.size() && key.compare(0, hint.mStem.size(), hint.mStem) == 0 &&
+                     key[hint.mStem.size()] == '_');
                 if (same_stem)
                 {
                     what += "; " + std::string(hint.mHint);
@@ -328,8 +329,8 @@ private:
                                             : std::string(it->type_name())));
         Vec3 value;
         for (int i = 0; i < 3; ++i)
-            if (!ReadNumberValue((*it)[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i), inRange,
-                                 value[i]))
+            if (!ReadNumberValue((*it)[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i),
+                                 inRange, value[i]))
                 return false;
         ioValue = value;
         return true;
@@ -347,8 +348,8 @@ private:
         return true;
     }
 
-    /// inObject[inKey] as one of inNames (its index in outIndex); absent: refused when inRequired, else outIndex
-    /// is kept. inHints as for keys: a value starting with a hint's stem gets its hint.
+    /// inObject[inKey] as one of inNames (its index in outIndex); absent: refused when inRequired, else
+    /// outIndex is kept. inHints as for keys: a value starting with a hint's stem gets its hint.
     bool ReadEnum(const Json& inObject, const std::string& inPointer, std::string_view inKey,
                   std::initializer_list<std::string_view> inNames, std::initializer_list<UnitHint> inHints,
                   bool inRequired, std::size_t& outIndex)
@@ -386,10 +387,11 @@ private:
     {
         const std::string pointer;
         if (!ExpectObject(inRoot, pointer) ||
-            !CheckKeys(inRoot, pointer,
-                       {{"name", "engine", "duration_s", "time_step_s", "vehicle", "target", "impact",
-                         "expectations", "outputs"},
-                        {{"duration", "durations are duration_s"}, {"time_step", "time steps are time_step_s"}}}))
+            !CheckKeys(
+                inRoot, pointer,
+                {{"name", "engine", "duration_s", "time_step_s", "vehicle", "target", "impact",
+                  "expectations", "outputs"},
+                 {{"duration", "durations are duration_s"}, {"time_step", "time steps are time_step_s"}}}))
             return false;
 
         // Name: required, not empty
@@ -408,7 +410,8 @@ private:
         ioScenario.mEngine = static_cast<EEngine>(engine);
 
         // Duration, then a step that fits in it
-        if (!ReadNumber(inRoot, pointer, "duration_s", NumberRange::Positive(), false, ioScenario.mDuration) ||
+        if (!ReadNumber(inRoot, pointer, "duration_s", NumberRange::Positive(), false,
+                        ioScenario.mDuration) ||
             !ReadNumber(inRoot, pointer, "time_step_s", NumberRange{0.0, true, 0.05, false}, false,
                         ioScenario.mTimeStep))
             return false;
@@ -490,7 +493,8 @@ private:
                 return false;
             for (int i = 0; i < 3; ++i)
                 if (inertia[i] > inertia[(i + 1) % 3] + inertia[(i + 2) % 3])
-                    return Fail(EError::InvalidArgument, Child(inPointer, "inertia_kg_m2") + "/" + std::to_string(i),
+                    return Fail(EError::InvalidArgument,
+                                Child(inPointer, "inertia_kg_m2") + "/" + std::to_string(i),
                                 "must be <= the sum of the other two moments (" +
                                     FormatNumber(inertia[(i + 1) % 3] + inertia[(i + 2) % 3]) + "), got " +
                                     FormatNumber(inertia[i]));
@@ -524,7 +528,8 @@ private:
             if (!ReadNumberValue((*it)[i], element, NumberRange::Any(), value))
                 return false;
             if (value != std::floor(value))
-                return Fail(EError::InvalidArgument, element, "must be an integer, got " + FormatNumber(value));
+                return Fail(EError::InvalidArgument, element,
+                            "must be an integer, got " + FormatNumber(value));
             if (!NumberRange{4.0, false, static_cast<double>(max_count), false}.Contains(value))
                 return Fail(EError::InvalidArgument, element,
                             "must be in [4, " + std::to_string(max_count) + "], got " + FormatNumber(value));
@@ -534,7 +539,8 @@ private:
         return true;
     }
 
-    bool ReadMaterial(const Json& inMaterial, const std::string& inPointer, plugin::DamageMaterial& ioMaterial)
+    bool ReadMaterial(const Json& inMaterial, const std::string& inPointer,
+                      plugin::DamageMaterial& ioMaterial)
     {
         if (!ExpectObject(inMaterial, inPointer) ||
             !CheckKeys(inMaterial, inPointer,
@@ -542,8 +548,8 @@ private:
                         {{"deformation_factor", "deformation factors are deformation_factor_m_per_N_s"},
                          {"min_deformation", "depths are min_deformation_m"},
                          {"max_deformation", "depths are max_deformation_m"}}}) ||
-            !ReadNumber(inMaterial, inPointer, "deformation_factor_m_per_N_s", NumberRange::NonNegative(), false,
-                        ioMaterial.mDeformationFactor) ||
+            !ReadNumber(inMaterial, inPointer, "deformation_factor_m_per_N_s", NumberRange::NonNegative(),
+                        false, ioMaterial.mDeformationFactor) ||
             !ReadNumber(inMaterial, inPointer, "min_deformation_m", NumberRange::NonNegative(), false,
                         ioMaterial.mMinDeformation) ||
             !ReadNumber(inMaterial, inPointer, "max_deformation_m", NumberRange::NonNegative(), false,
@@ -551,8 +557,8 @@ private:
             return false;
         if (ioMaterial.mMaxInstantDeformation < ioMaterial.mMinDeformation)
             return Fail(EError::InvalidArgument, Child(inPointer, "max_deformation_m"),
-                        "must be >= min_deformation_m (" + FormatNumber(ioMaterial.mMinDeformation) + "), got " +
-                            FormatNumber(ioMaterial.mMaxInstantDeformation));
+                        "must be >= min_deformation_m (" + FormatNumber(ioMaterial.mMinDeformation) +
+                            "), got " + FormatNumber(ioMaterial.mMaxInstantDeformation));
         return true;
     }
 
@@ -588,12 +594,13 @@ private:
         if (!has_km_h && !has_m_s)
             return Fail(EError::InvalidArgument, Child(inPointer, "speed_km_h"), "required (or speed_m_s)");
         double speed = 0.0;
-        if (!ReadNumber(inImpact, inPointer, has_km_h ? "speed_km_h" : "speed_m_s", NumberRange::Positive(), true,
-                        speed))
+        if (!ReadNumber(inImpact, inPointer, has_km_h ? "speed_km_h" : "speed_m_s", NumberRange::Positive(),
+                        true, speed))
             return false;
         ioImpact.mSpeed = has_km_h ? KilometresPerHourToMetresPerSecond(speed) : speed;
 
-        return ReadNumber(inImpact, inPointer, "heading_deg", NumberRange::Any(), false, ioImpact.mHeadingDegrees) &&
+        return ReadNumber(inImpact, inPointer, "heading_deg", NumberRange::Any(), false,
+                          ioImpact.mHeadingDegrees) &&
                ReadNumber(inImpact, inPointer, "offset_m", NumberRange::Any(), false, ioImpact.mOffset);
     }
 
@@ -616,14 +623,15 @@ private:
     {
         // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
         constexpr std::size_t delta_v_km_h = 2;
-        static constexpr std::array<EQuantity, 6> quantities{EQuantity::ResidualCrush, EQuantity::DeltaV,
-                                                             EQuantity::DeltaV,        EQuantity::TotalImpulse,
-                                                             EQuantity::EnergyAbsorbed, EQuantity::Collisions};
+        static constexpr std::array<EQuantity, 6> quantities{
+            EQuantity::ResidualCrush, EQuantity::DeltaV,         EQuantity::DeltaV,
+            EQuantity::TotalImpulse,  EQuantity::EnergyAbsorbed, EQuantity::Collisions};
         std::size_t quantity = 0;
-        if (!ExpectObject(inItem, inPointer) || !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
+        if (!ExpectObject(inItem, inPointer) ||
+            !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
             !ReadEnum(inItem, inPointer, "quantity",
-                      {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s", "energy_absorbed_J",
-                       "collisions"},
+                      {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
+                       "energy_absorbed_J", "collisions"},
                       {{"residual_crush", "residual crush is residual_crush_m"},
                        {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
                        {"total_impulse", "impulses are total_impulse_N_s"},
@@ -636,8 +644,10 @@ private:
         // Zone: residual crush only
         std::size_t zone = static_cast<std::size_t>(EZone::Any);
         if (inItem.contains("zone") && outExpectation.mQuantity != EQuantity::ResidualCrush)
-            return Fail(EError::InvalidArgument, Child(inPointer, "zone"), "only residual_crush_m has a zone");
-        if (!ReadEnum(inItem, inPointer, "zone", {"any", "front", "rear", "left", "right", "roof"}, {}, false, zone))
+            return Fail(EError::InvalidArgument, Child(inPointer, "zone"),
+                        "only residual_crush_m has a zone");
+        if (!ReadEnum(inItem, inPointer, "zone", {"any", "front", "rear", "left", "right", "roof"}, {}, false,
+                      zone))
             return false;
         outExpectation.mZone = static_cast<EZone>(zone);
 
@@ -737,7 +747,8 @@ Result<CrashScenario> LoadCrashScenario(const std::filesystem::path& inPath)
         const std::string_view text(reinterpret_cast<const char*>(bytes.Get().data()), bytes.Get().size());
         Result<CrashScenario> scenario = ParseCrashScenario(text, inPath.parent_path());
         if (scenario.HasError())
-            return MakeError(scenario.GetError().mCode, inPath.string() + ": " + scenario.GetError().mMessage);
+            return MakeError(scenario.GetError().mCode,
+                             inPath.string() + ": " + scenario.GetError().mMessage);
         return scenario;
     }
     catch (const std::exception& error)
