@@ -35,7 +35,8 @@ enum class ETarget : std::uint8_t
 struct VehicleSpec
 {
     std::filesystem::path mMesh;       ///< OBJ, glTF/GLB, PLY, FBX (assimp); empty: a procedural box. A relative
-                                       ///< path is relative to the scenario file's folder
+                                       ///< path in a file is relative to the scenario file's folder;
+                                       ///< ParseCrashScenario stores the resolved path
     std::string mMeshName;             ///< Only the file's meshes whose name contains this (empty: all)
     double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0; glTF files are
                                        ///< +y up, +z forward (their specification), others x forward, z up

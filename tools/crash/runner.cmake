@@ -1,0 +1,27 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# The crash runner and the crumple-crash program (included from samples/CMakeLists.txt, which has the car-mesh
+# loader and painter; paths relative to this file).
+if(NOT TARGET crumple_crash_scenario)
+    return()
+endif()
+if(NOT TARGET crumple_samples_common OR NOT (TARGET crumple_common_bullet OR TARGET crumple_common_ode))
+    message(STATUS "crumple: crumple-crash not built: it needs assimp, crumple::render and Bullet or ODE")
+    return()
+endif()
+add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/CrashRun.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp)
+target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_samples_common
+    PRIVATE nlohmann_json::nlohmann_json crumple::compile_options)
+if(TARGET crumple_common_bullet)
+    target_link_libraries(crumple_crash_run PUBLIC crumple_common_bullet)
+    target_compile_definitions(crumple_crash_run PRIVATE CRUMPLE_CRASH_BULLET)
+endif()
+if(TARGET crumple_common_ode)
+    target_link_libraries(crumple_crash_run PUBLIC crumple_common_ode)
+    target_compile_definitions(crumple_crash_run PRIVATE CRUMPLE_CRASH_ODE)
+endif()
+add_executable(crumple-crash ${CMAKE_CURRENT_LIST_DIR}/src/CrashMain.cpp)
+target_link_libraries(crumple-crash PRIVATE crumple_crash_run crumple::compile_options)
+if(CRUMPLE_BUILD_TESTS)
+    include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
+endif()

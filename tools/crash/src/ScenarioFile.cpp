@@ -1,0 +1,767 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/crash/ScenarioFile.h>
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/ffd/FfdLatticeSettings.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace crumple::crash
+{
+
+namespace
+{
+
+using Json = nlohmann::json;
+
+/// km/h to m/s as (v 1000) / 3600: for whole km/h both steps are exact but the last, so 56 km/h gives the
+/// double nearest 140/9 m/s.
+double KilometresPerHourToMetresPerSecond(double inKilometresPerHour)
+{
+    return inKilometresPerHour * 1000.0 / 3600.0;
+}
+
+/// Shortest text that reads back as the same double ("0.2", "-5", "1e+300", "inf").
+std::string FormatNumber(double inValue)
+{
+    std::array<char, 32> buffer{};
+    const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), inValue);
+    if (error != std::errc())
+        return "?";
+    return std::string(buffer.data(), end);
+}
+
+/// One reference token of a JSON pointer (RFC 6901: "~" as "~0", "/" as "~1").
+std::string EscapePointerToken(std::string_view inToken)
+{
+    std::string escaped;
+    for (const char c : inToken)
+    {
+        if (c == '~')
+            escaped += "~0";
+        else if (c == '/')
+            escaped += "~1";
+        else
+            escaped += c;
+    }
+    return escaped;
+}
+
+/// The pointer as shown in messages: the root ("") as "/".
+std::string ShowPointer(const std::string& inPointer)
+{
+    return inPointer.empty() ? std::string("/") : inPointer;
+}
+
+/// A JSON string quoted and escaped as JSON writes it.
+std::string Quote(std::string_view inText)
+{
+    return Json(std::string(inText)).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+/// "a", "b" or "c" (each quoted as a JSON string).
+std::string JoinAlternatives(std::initializer_list<std::string_view> inNames)
+{
+    std::string joined;
+    std::size_t index = 0;
+    for (const std::string_view name : inNames)
+    {
+        if (index > 0)
+            joined += index + 1 == inNames.size() ? " or " : ", ";
+        joined += Quote(name);
+        ++index;
+    }
+    return joined;
+}
+
+/// An accepted range of a number: each end open, closed, or absent (infinite).
+struct NumberRange
+{
+    double mLow = -std::numeric_limits<double>::infinity();
+    bool mLowOpen = false; ///< True: the value must be > mLow; false: >= mLow
+    double mHigh = std::numeric_limits<double>::infinity();
+    bool mHighOpen = false; ///< True: the value must be < mHigh; false: <= mHigh
+
+    static NumberRange Any() { return {}; }
+    static NumberRange Positive() { return {0.0, true}; }
+    static NumberRange NonNegative() { return {0.0, false}; }
+
+    bool Contains(double inValue) const
+    {
+        const bool above = mLowOpen ? inValue > mLow : inValue >= mLow;
+        const bool below = mHighOpen ? inValue < mHigh : inValue <= mHigh;
+        return above && below;
+    }
+
+    /// "> 0", ">= 4", "in (0, 0.05]"
+    std::string Describe() const
+    {
+        const bool has_low = std::isfinite(mLow);
+        const bool has_high = std::isfinite(mHigh);
+        if (has_low && has_high)
+            return std::string("in ") + (mLowOpen ? "(" : "[") + FormatNumber(mLow) + ", " +
+                   FormatNumber(mHigh) + (mHighOpen ? ")" : "]");
+        if (has_low)
+            return std::string(mLowOpen ? "> " : ">= ") + FormatNumber(mLow);
+        if (has_high)
+            return std::string(mHighOpen ? "< " : "<= ") + FormatNumber(mHigh);
+        return "finite";
+    }
+};
+
+/// A hint for an unknown key that carries a unit we do not accept: a key starting with mStem + "_" (or equal
+/// to mStem) gets mHint, e.g. "speed_mph" -> "speeds are speed_km_h or speed_m_s".
+struct UnitHint
+{
+    std::string_view mStem;
+    std::string_view mHint;
+};
+
+/// The keys one object accepts, with the hints for its unit-carrying ones.
+struct ObjectKeys
+{
+    std::initializer_list<std::string_view> mKnown;
+    std::initializer_list<UnitHint> mHints;
+};
+
+/// Records the first duplicate key met while parsing (nlohmann keeps the last silently), with its pointer.
+class DuplicateKeyFinder
+{
+  public:
+    /// The parser callback: tracks the pointer of the value being read from the parse events.
+    bool OnEvent(Json::parse_event_t inEvent, const Json& inParsed)
+    {
+        switch (inEvent)
+        {
+        case Json::parse_event_t::object_start:
+            mFrames.emplace_back(false);
+            break;
+        case Json::parse_event_t::array_start:
+            mFrames.emplace_back(true);
+            break;
+        case Json::parse_event_t::key:
+            if (!mFrames.empty() && inParsed.is_string())
+            {
+                Frame& frame = mFrames.back();
+                frame.mKey = inParsed.get<std::string>();
+                if (!frame.mKeys.insert(frame.mKey).second && !mDuplicate)
+                    mDuplicate = Pointer();
+            }
+            break;
+        case Json::parse_event_t::object_end:
+        case Json::parse_event_t::array_end:
+            // A finished container is one finished element of its parent
+            if (!mFrames.empty())
+                mFrames.pop_back();
+            NextElement();
+            break;
+        case Json::parse_event_t::value:
+            NextElement();
+            break;
+        }
+        return true;
+    }
+
+    /// The pointer of the first duplicate key, if any
+    const std::optional<std::string>& GetDuplicate() const { return mDuplicate; }
+
+    /// The pointer of the value being read (where a parse stopped)
+    std::string Pointer() const
+    {
+        std::string pointer;
+        for (const Frame& frame : mFrames)
+        {
+            pointer += '/';
+            pointer += frame.mArray ? std::to_string(frame.mIndex) : EscapePointerToken(frame.mKey);
+        }
+        return pointer;
+    }
+
+  private:
+    struct Frame
+    {
+        explicit Frame(bool inArray) : mArray(inArray) {}
+
+        bool mArray = false;
+        std::size_t mIndex = 0;      ///< Array: index of the element being read
+        std::string mKey;            ///< Object: key of the value being read
+        std::set<std::string> mKeys; ///< Object: keys seen so far
+    };
+
+    void NextElement()
+    {
+        if (!mFrames.empty() && mFrames.back().mArray)
+            ++mFrames.back().mIndex;
+    }
+
+    std::vector<Frame> mFrames;
+    std::optional<std::string> mDuplicate;
+};
+
+/// Reads a parsed document into a CrashScenario, stopping at the first refusal (kept in mError). Each Read*
+/// returns false once it has refused; absent optional keys leave the struct's defaults.
+class ScenarioReader
+{
+  public:
+    explicit ScenarioReader(const std::filesystem::path& inBaseFolder) : mBaseFolder(inBaseFolder) {}
+
+    Result<CrashScenario> Read(const Json& inRoot)
+    {
+        CrashScenario scenario;
+        if (!ReadRoot(inRoot, scenario))
+            return *mError;
+        return scenario;
+    }
+
+  private:
+    /// Records a refusal of the value at inPointer; returns false for `return Fail(...)`.
+    bool Fail(EError inCode, const std::string& inPointer, const std::string& inWhat)
+    {
+        mError = MakeError(inCode, ShowPointer(inPointer) + ": " + inWhat);
+        return false;
+    }
+
+    static std::string Child(const std::string& inPointer, std::string_view inKey)
+    {
+        return inPointer + "/" + EscapePointerToken(inKey);
+    }
+
+    /// "must be a number, got string"
+    bool FailType(const std::string& inPointer, std::string_view inExpected, const Json& inValue)
+    {
+        return Fail(EError::InvalidArgument, inPointer,
+                    "must be " + std::string(inExpected) + ", got " + std::string(inValue.type_name()));
+    }
+
+    bool ExpectObject(const Json& inValue, const std::string& inPointer)
+    {
+        return inValue.is_object() || FailType(inPointer, "an object", inValue);
+    }
+
+    /// Refuses the first key of inObject that inKeys does not know, naming the known ones.
+    bool CheckKeys(const Json& inObject, const std::string& inPointer, const ObjectKeys& inKeys)
+    {
+        for (const auto& [key, value] : inObject.items())
+        {
+            bool is_known = false;
+            for (const std::string_view name : inKeys.mKnown)
+                is_known = is_known || key == name;
+            if (is_known)
+                continue;
+
+            // A known quantity with a unit we do not accept gets a hint
+            std::string what = "unknown key";
+            for (const UnitHint& hint : inKeys.mHints)
+            {
+                const bool same_stem =
+                    key == hint.mStem ||
+                    (key.size() > hint.mStem.size() && key.compare(0, hint.mStem.size(), hint.mStem) == 0 &&
+                     key[hint.mStem.size()] == '_');
+                if (same_stem)
+                {
+                    what += "; " + std::string(hint.mHint);
+                    break;
+                }
+            }
+            std::string known;
+            for (const std::string_view name : inKeys.mKnown)
+                known += (known.empty() ? "" : ", ") + std::string(name);
+            return Fail(EError::InvalidArgument, Child(inPointer, key), what + " (known: " + known + ")");
+        }
+        return true;
+    }
+
+    /// A finite number in inRange at inPointer.
+    bool ReadNumberValue(const Json& inValue, const std::string& inPointer, const NumberRange& inRange,
+                         double& outValue)
+    {
+        if (!inValue.is_number())
+            return FailType(inPointer, "a number", inValue);
+        const double value = inValue.get<double>();
+        if (!std::isfinite(value))
+            return Fail(EError::InvalidArgument, inPointer, "must be finite, got " + FormatNumber(value));
+        if (!inRange.Contains(value))
+            return Fail(EError::InvalidArgument, inPointer,
+                        "must be " + inRange.Describe() + ", got " + FormatNumber(value));
+        outValue = value;
+        return true;
+    }
+
+    /// inObject[inKey] as a number in inRange; absent: refused when inRequired, else ioValue is kept.
+    bool ReadNumber(const Json& inObject, const std::string& inPointer, std::string_view inKey,
+                    const NumberRange& inRange, bool inRequired, double& ioValue)
+    {
+        const std::string pointer = Child(inPointer, inKey);
+        const auto it = inObject.find(inKey);
+        if (it == inObject.end())
+            return !inRequired || Fail(EError::InvalidArgument, pointer, "required");
+        return ReadNumberValue(*it, pointer, inRange, ioValue);
+    }
+
+    /// inObject[inKey] as an array of 3 numbers, each in inRange; absent: ioValue is kept.
+    bool ReadVec3(const Json& inObject, const std::string& inPointer, std::string_view inKey,
+                  const NumberRange& inRange, Vec3& ioValue)
+    {
+        const std::string pointer = Child(inPointer, inKey);
+        const auto it = inObject.find(inKey);
+        if (it == inObject.end())
+            return true;
+        if (!it->is_array() || it->size() != 3)
+            return Fail(EError::InvalidArgument, pointer,
+                        "must be an array of 3 numbers, got " +
+                            (it->is_array() ? "an array of " + std::to_string(it->size())
+                                            : std::string(it->type_name())));
+        Vec3 value;
+        for (int i = 0; i < 3; ++i)
+            if (!ReadNumberValue((*it)[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i),
+                                 inRange, value[i]))
+                return false;
+        ioValue = value;
+        return true;
+    }
+
+    /// inObject[inKey] as a boolean; absent: ioValue is kept.
+    bool ReadBool(const Json& inObject, const std::string& inPointer, std::string_view inKey, bool& ioValue)
+    {
+        const auto it = inObject.find(inKey);
+        if (it == inObject.end())
+            return true;
+        if (!it->is_boolean())
+            return FailType(Child(inPointer, inKey), "true or false", *it);
+        ioValue = it->get<bool>();
+        return true;
+    }
+
+    /// inObject[inKey] as one of inNames (its index in outIndex); absent: refused when inRequired, else
+    /// outIndex is kept. inHints as for keys: a value starting with a hint's stem gets its hint.
+    bool ReadEnum(const Json& inObject, const std::string& inPointer, std::string_view inKey,
+                  std::initializer_list<std::string_view> inNames, std::initializer_list<UnitHint> inHints,
+                  bool inRequired, std::size_t& outIndex)
+    {
+        const std::string pointer = Child(inPointer, inKey);
+        const auto it = inObject.find(inKey);
+        if (it == inObject.end())
+            return !inRequired || Fail(EError::InvalidArgument, pointer, "required");
+        const std::string expected =
+            inNames.size() > 2 ? "one of " + JoinAlternatives(inNames) : JoinAlternatives(inNames);
+        if (!it->is_string())
+            return FailType(pointer, expected, *it);
+        const std::string& value = it->get_ref<const std::string&>();
+        std::size_t index = 0;
+        for (const std::string_view name : inNames)
+        {
+            if (value == name)
+            {
+                outIndex = index;
+                return true;
+            }
+            ++index;
+        }
+        std::string what = "must be " + expected + ", got " + Quote(value);
+        for (const UnitHint& hint : inHints)
+            if (value.compare(0, hint.mStem.size(), hint.mStem) == 0)
+            {
+                what += "; " + std::string(hint.mHint);
+                break;
+            }
+        return Fail(EError::InvalidArgument, pointer, what);
+    }
+
+    bool ReadRoot(const Json& inRoot, CrashScenario& ioScenario)
+    {
+        const std::string pointer;
+        if (!ExpectObject(inRoot, pointer) ||
+            !CheckKeys(
+                inRoot, pointer,
+                {{"name", "engine", "duration_s", "time_step_s", "vehicle", "target", "impact",
+                  "expectations", "outputs"},
+                 {{"duration", "durations are duration_s"}, {"time_step", "time steps are time_step_s"}}}))
+            return false;
+
+        // Name: required, not empty
+        const auto name = inRoot.find("name");
+        if (name == inRoot.end())
+            return Fail(EError::InvalidArgument, "/name", "required");
+        if (!name->is_string())
+            return FailType("/name", "a string", *name);
+        if (name->get_ref<const std::string&>().empty())
+            return Fail(EError::InvalidArgument, "/name", "must not be empty");
+        ioScenario.mName = name->get<std::string>();
+
+        std::size_t engine = static_cast<std::size_t>(ioScenario.mEngine);
+        if (!ReadEnum(inRoot, pointer, "engine", {"bullet", "ode"}, {}, false, engine))
+            return false;
+        ioScenario.mEngine = static_cast<EEngine>(engine);
+
+        // Duration, then a step that fits in it
+        if (!ReadNumber(inRoot, pointer, "duration_s", NumberRange::Positive(), false,
+                        ioScenario.mDuration) ||
+            !ReadNumber(inRoot, pointer, "time_step_s", NumberRange{0.0, true, 0.05, false}, false,
+                        ioScenario.mTimeStep))
+            return false;
+        if (ioScenario.mTimeStep > ioScenario.mDuration)
+            return Fail(EError::InvalidArgument, "/time_step_s",
+                        "must be <= duration_s (" + FormatNumber(ioScenario.mDuration) + "), got " +
+                            FormatNumber(ioScenario.mTimeStep));
+
+        // Required sections, then optional ones
+        const auto vehicle = inRoot.find("vehicle");
+        if (vehicle == inRoot.end())
+            return Fail(EError::InvalidArgument, "/vehicle", "required");
+        if (!ReadVehicle(*vehicle, "/vehicle", ioScenario.mVehicle))
+            return false;
+        if (const auto target = inRoot.find("target");
+            target != inRoot.end() && !ReadTarget(*target, "/target", ioScenario.mTarget))
+            return false;
+        const auto impact = inRoot.find("impact");
+        if (impact == inRoot.end())
+            return Fail(EError::InvalidArgument, "/impact", "required");
+        if (!ReadImpact(*impact, "/impact", ioScenario.mImpact))
+            return false;
+        if (const auto expectations = inRoot.find("expectations");
+            expectations != inRoot.end() &&
+            !ReadExpectations(*expectations, "/expectations", ioScenario.mExpectations))
+            return false;
+        if (const auto outputs = inRoot.find("outputs"); outputs != inRoot.end())
+        {
+            if (!ExpectObject(*outputs, "/outputs") || !CheckKeys(*outputs, "/outputs", {{"pictures"}, {}}) ||
+                !ReadBool(*outputs, "/outputs", "pictures", ioScenario.mPictures))
+                return false;
+        }
+        return true;
+    }
+
+    bool ReadVehicle(const Json& inVehicle, const std::string& inPointer, VehicleSpec& ioVehicle)
+    {
+        if (!ExpectObject(inVehicle, inPointer) ||
+            !CheckKeys(inVehicle, inPointer,
+                       {{"mesh", "mesh_name", "mesh_length_m", "box_size_m", "mass_kg", "inertia_kg_m2",
+                         "control_count", "material"},
+                        {{"mesh_length", "mesh lengths are mesh_length_m"},
+                         {"box_size", "box sizes are box_size_m"},
+                         {"mass", "masses are mass_kg"},
+                         {"inertia", "moments of inertia are inertia_kg_m2"}}}))
+            return false;
+
+        // Mesh: resolved against the scenario's folder, and it must be there
+        if (const auto mesh = inVehicle.find("mesh"); mesh != inVehicle.end())
+        {
+            const std::string pointer = Child(inPointer, "mesh");
+            if (!mesh->is_string())
+                return FailType(pointer, "a string (a file path)", *mesh);
+            const std::filesystem::path file = mesh->get<std::string>();
+            if (file.empty())
+                return Fail(EError::InvalidArgument, pointer,
+                            "must not be empty (leave the key out for a procedural box)");
+            const std::filesystem::path resolved =
+                (file.is_absolute() ? file : mBaseFolder / file).lexically_normal();
+            std::error_code error;
+            if (!std::filesystem::is_regular_file(resolved, error))
+                return Fail(EError::IoError, pointer, "file not found: " + resolved.string());
+            if (!std::ifstream(resolved, std::ios::binary))
+                return Fail(EError::IoError, pointer, "cannot read: " + resolved.string());
+            ioVehicle.mMesh = resolved;
+        }
+        // Mesh name: only the file's meshes whose name contains it
+        if (const auto name = inVehicle.find("mesh_name"); name != inVehicle.end())
+        {
+            if (!name->is_string())
+                return FailType(Child(inPointer, "mesh_name"), "a string", *name);
+            ioVehicle.mMeshName = name->get<std::string>();
+        }
+
+        if (!ReadNumber(inVehicle, inPointer, "mesh_length_m", NumberRange::Positive(), false,
+                        ioVehicle.mMeshLength) ||
+            !ReadVec3(inVehicle, inPointer, "box_size_m", NumberRange::Positive(), ioVehicle.mBoxSize) ||
+            !ReadNumber(inVehicle, inPointer, "mass_kg", NumberRange::Positive(), true, ioVehicle.mMass))
+            return false;
+
+        // Inertia: principal moments, each > 0, and each at most the sum of the other two (a real body)
+        if (inVehicle.contains("inertia_kg_m2"))
+        {
+            Vec3 inertia = Vec3::Zero();
+            if (!ReadVec3(inVehicle, inPointer, "inertia_kg_m2", NumberRange::Positive(), inertia))
+                return false;
+            for (int i = 0; i < 3; ++i)
+                if (inertia[i] > inertia[(i + 1) % 3] + inertia[(i + 2) % 3])
+                    return Fail(EError::InvalidArgument,
+                                Child(inPointer, "inertia_kg_m2") + "/" + std::to_string(i),
+                                "must be <= the sum of the other two moments (" +
+                                    FormatNumber(inertia[(i + 1) % 3] + inertia[(i + 2) % 3]) + "), got " +
+                                    FormatNumber(inertia[i]));
+            ioVehicle.mInertia = inertia;
+        }
+
+        if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount))
+            return false;
+        if (const auto material = inVehicle.find("material"); material != inVehicle.end())
+            return ReadMaterial(*material, Child(inPointer, "material"), ioVehicle.mMaterial);
+        return true;
+    }
+
+    bool ReadControlCount(const Json& inVehicle, const std::string& inPointer, std::array<int, 3>& ioCount)
+    {
+        const std::string pointer = Child(inPointer, "control_count");
+        const auto it = inVehicle.find("control_count");
+        if (it == inVehicle.end())
+            return true;
+        if (!it->is_array() || it->size() != 3)
+            return Fail(EError::InvalidArgument, pointer,
+                        "must be an array of 3 integers, got " +
+                            (it->is_array() ? "an array of " + std::to_string(it->size())
+                                            : std::string(it->type_name())));
+        std::array<int, 3> count{};
+        constexpr int max_count = ffd::FfdLatticeSettings::cMaxControlsPerAxis;
+        for (std::size_t i = 0; i < 3; ++i)
+        {
+            const std::string element = pointer + "/" + std::to_string(i);
+            double value = 0.0;
+            if (!ReadNumberValue((*it)[i], element, NumberRange::Any(), value))
+                return false;
+            if (value != std::floor(value))
+                return Fail(EError::InvalidArgument, element,
+                            "must be an integer, got " + FormatNumber(value));
+            if (!NumberRange{4.0, false, static_cast<double>(max_count), false}.Contains(value))
+                return Fail(EError::InvalidArgument, element,
+                            "must be in [4, " + std::to_string(max_count) + "], got " + FormatNumber(value));
+            count[i] = static_cast<int>(value);
+        }
+        ioCount = count;
+        return true;
+    }
+
+    bool ReadMaterial(const Json& inMaterial, const std::string& inPointer,
+                      plugin::DamageMaterial& ioMaterial)
+    {
+        if (!ExpectObject(inMaterial, inPointer) ||
+            !CheckKeys(inMaterial, inPointer,
+                       {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m"},
+                        {{"deformation_factor", "deformation factors are deformation_factor_m_per_N_s"},
+                         {"min_deformation", "depths are min_deformation_m"},
+                         {"max_deformation", "depths are max_deformation_m"}}}) ||
+            !ReadNumber(inMaterial, inPointer, "deformation_factor_m_per_N_s", NumberRange::NonNegative(),
+                        false, ioMaterial.mDeformationFactor) ||
+            !ReadNumber(inMaterial, inPointer, "min_deformation_m", NumberRange::NonNegative(), false,
+                        ioMaterial.mMinDeformation) ||
+            !ReadNumber(inMaterial, inPointer, "max_deformation_m", NumberRange::NonNegative(), false,
+                        ioMaterial.mMaxInstantDeformation))
+            return false;
+        if (ioMaterial.mMaxInstantDeformation < ioMaterial.mMinDeformation)
+            return Fail(EError::InvalidArgument, Child(inPointer, "max_deformation_m"),
+                        "must be >= min_deformation_m (" + FormatNumber(ioMaterial.mMinDeformation) +
+                            "), got " + FormatNumber(ioMaterial.mMaxInstantDeformation));
+        return true;
+    }
+
+    bool ReadTarget(const Json& inTarget, const std::string& inPointer, TargetSpec& ioTarget)
+    {
+        std::size_t type = static_cast<std::size_t>(ioTarget.mType);
+        if (!ExpectObject(inTarget, inPointer) ||
+            !CheckKeys(inTarget, inPointer, {{"type", "angle_deg"}, {{"angle", "angles are angle_deg"}}}) ||
+            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall"}, {}, false, type) ||
+            !ReadNumber(inTarget, inPointer, "angle_deg", NumberRange{-90.0, true, 90.0, true}, false,
+                        ioTarget.mAngleDegrees))
+            return false;
+        ioTarget.mType = static_cast<ETarget>(type);
+        return true;
+    }
+
+    bool ReadImpact(const Json& inImpact, const std::string& inPointer, ImpactSpec& ioImpact)
+    {
+        if (!ExpectObject(inImpact, inPointer) ||
+            !CheckKeys(inImpact, inPointer,
+                       {{"speed_km_h", "speed_m_s", "heading_deg", "offset_m"},
+                        {{"speed", "speeds are speed_km_h or speed_m_s"},
+                         {"heading", "headings are heading_deg"},
+                         {"offset", "offsets are offset_m"}}}))
+            return false;
+
+        // Speed: exactly one of km/h and m/s
+        const bool has_km_h = inImpact.contains("speed_km_h");
+        const bool has_m_s = inImpact.contains("speed_m_s");
+        if (has_km_h && has_m_s)
+            return Fail(EError::InvalidArgument, Child(inPointer, "speed_m_s"),
+                        "give speed_km_h or speed_m_s, not both");
+        if (!has_km_h && !has_m_s)
+            return Fail(EError::InvalidArgument, Child(inPointer, "speed_km_h"), "required (or speed_m_s)");
+        double speed = 0.0;
+        if (!ReadNumber(inImpact, inPointer, has_km_h ? "speed_km_h" : "speed_m_s", NumberRange::Positive(),
+                        true, speed))
+            return false;
+        ioImpact.mSpeed = has_km_h ? KilometresPerHourToMetresPerSecond(speed) : speed;
+
+        return ReadNumber(inImpact, inPointer, "heading_deg", NumberRange::Any(), false,
+                          ioImpact.mHeadingDegrees) &&
+               ReadNumber(inImpact, inPointer, "offset_m", NumberRange::Any(), false, ioImpact.mOffset);
+    }
+
+    bool ReadExpectations(const Json& inList, const std::string& inPointer, std::vector<Expectation>& outList)
+    {
+        if (!inList.is_array())
+            return FailType(inPointer, "an array", inList);
+        outList.clear();
+        for (std::size_t i = 0; i < inList.size(); ++i)
+        {
+            Expectation expectation;
+            if (!ReadExpectation(inList[i], inPointer + "/" + std::to_string(i), expectation))
+                return false;
+            outList.push_back(std::move(expectation));
+        }
+        return true;
+    }
+
+    bool ReadExpectation(const Json& inItem, const std::string& inPointer, Expectation& outExpectation)
+    {
+        // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
+        constexpr std::size_t delta_v_km_h = 2;
+        static constexpr std::array<EQuantity, 6> quantities{
+            EQuantity::ResidualCrush, EQuantity::DeltaV,         EQuantity::DeltaV,
+            EQuantity::TotalImpulse,  EQuantity::EnergyAbsorbed, EQuantity::Collisions};
+        std::size_t quantity = 0;
+        if (!ExpectObject(inItem, inPointer) ||
+            !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
+            !ReadEnum(inItem, inPointer, "quantity",
+                      {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
+                       "energy_absorbed_J", "collisions"},
+                      {{"residual_crush", "residual crush is residual_crush_m"},
+                       {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
+                       {"total_impulse", "impulses are total_impulse_N_s"},
+                       {"energy", "energies are energy_absorbed_J"}},
+                      true, quantity))
+            return false;
+        const std::string quantity_name = inItem.at("quantity").get<std::string>();
+        outExpectation.mQuantity = quantities[quantity];
+
+        // Zone: residual crush only
+        std::size_t zone = static_cast<std::size_t>(EZone::Any);
+        if (inItem.contains("zone") && outExpectation.mQuantity != EQuantity::ResidualCrush)
+            return Fail(EError::InvalidArgument, Child(inPointer, "zone"),
+                        "only residual_crush_m has a zone");
+        if (!ReadEnum(inItem, inPointer, "zone", {"any", "front", "rear", "left", "right", "roof"}, {}, false,
+                      zone))
+            return false;
+        outExpectation.mZone = static_cast<EZone>(zone);
+
+        // Bounds: at least one, in order
+        const bool has_min = inItem.contains("min");
+        const bool has_max = inItem.contains("max");
+        if (!has_min && !has_max)
+            return Fail(EError::InvalidArgument, inPointer, "needs min, max or both");
+        double low = -std::numeric_limits<double>::infinity();
+        double high = std::numeric_limits<double>::infinity();
+        if (!ReadNumber(inItem, inPointer, "min", NumberRange::Any(), false, low) ||
+            !ReadNumber(inItem, inPointer, "max", NumberRange::Any(), false, high))
+            return false;
+        if (low > high)
+            return Fail(EError::InvalidArgument, Child(inPointer, "max"),
+                        "must be >= min (" + FormatNumber(low) + "), got " + FormatNumber(high));
+
+        // The text as written (file units), the bounds in SI
+        std::string text = quantity_name;
+        if (outExpectation.mQuantity == EQuantity::ResidualCrush)
+            text += "(" + std::string(ToString(outExpectation.mZone)) + ")";
+        if (has_min && has_max)
+            text += " in [" + FormatNumber(low) + ", " + FormatNumber(high) + "]";
+        else if (has_min)
+            text += " >= " + FormatNumber(low);
+        else
+            text += " <= " + FormatNumber(high);
+        outExpectation.mText = std::move(text);
+        const bool km_h = quantity == delta_v_km_h;
+        outExpectation.mMin = km_h && has_min ? KilometresPerHourToMetresPerSecond(low) : low;
+        outExpectation.mMax = km_h && has_max ? KilometresPerHourToMetresPerSecond(high) : high;
+        return true;
+    }
+
+    std::filesystem::path mBaseFolder;
+    std::optional<Error> mError;
+};
+
+/// "line L, column C: <what>" from a nlohmann parse error ("[json.exception.parse_error.101] parse error at
+/// line 1, column 1: ...").
+std::string DescribeParseError(const Json::parse_error& inError)
+{
+    const std::string what = inError.what();
+    const std::size_t at = what.find("line ");
+    if (at != std::string::npos)
+        return what.substr(at);
+    return "byte " + std::to_string(inError.byte) + ": " + what;
+}
+
+} // namespace
+
+Result<CrashScenario> ParseCrashScenario(std::string_view inJson, const std::filesystem::path& inBaseFolder)
+{
+    DuplicateKeyFinder duplicates;
+    try
+    {
+        // Parse strictly (no comments), noting the first duplicate key
+        const Json root = Json::parse(
+            inJson.begin(), inJson.end(),
+            [&duplicates](int, Json::parse_event_t inEvent, Json& inParsed)
+            { return duplicates.OnEvent(inEvent, inParsed); },
+            true, false);
+        if (duplicates.GetDuplicate())
+            return MakeError(EError::InvalidArgument, *duplicates.GetDuplicate() + ": duplicate key");
+        return ScenarioReader(inBaseFolder).Read(root);
+    }
+    catch (const Json::parse_error& error)
+    {
+        return MakeError(EError::CorruptData, DescribeParseError(error));
+    }
+    catch (const Json::out_of_range& error)
+    {
+        // A number beyond the double range (1e999): the parser's message, at the place it stopped
+        const std::string what = error.what();
+        const std::size_t detail = what.find("] ");
+        return MakeError(EError::InvalidArgument,
+                         ShowPointer(duplicates.Pointer()) + ": must be finite; " +
+                             (detail == std::string::npos ? what : what.substr(detail + 2)));
+    }
+    catch (const std::exception& error)
+    {
+        // Not expected (types are checked before every get); never let one escape
+        return MakeError(EError::CorruptData, std::string("scenario not readable: ") + error.what());
+    }
+}
+
+Result<CrashScenario> LoadCrashScenario(const std::filesystem::path& inPath)
+{
+    try
+    {
+        std::error_code error;
+        if (std::filesystem::is_directory(inPath, error))
+            return MakeError(EError::IoError, "cannot read " + inPath.string() + ": is a folder");
+        Result<std::vector<std::byte>> bytes = ReadFileBytes(inPath);
+        if (bytes.HasError())
+            return bytes.GetError();
+        const std::string_view text(reinterpret_cast<const char*>(bytes.Get().data()), bytes.Get().size());
+        Result<CrashScenario> scenario = ParseCrashScenario(text, inPath.parent_path());
+        if (scenario.HasError())
+            return MakeError(scenario.GetError().mCode,
+                             inPath.string() + ": " + scenario.GetError().mMessage);
+        return scenario;
+    }
+    catch (const std::exception& error)
+    {
+        return MakeError(EError::IoError, "cannot read " + inPath.string() + ": " + error.what());
+    }
+}
+
+} // namespace crumple::crash
