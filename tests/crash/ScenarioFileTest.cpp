@@ -224,7 +224,7 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
     const std::vector<Case> cases = {
         // Unknown keys, with the known ones and unit hints
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
-         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_length_m, box_size_m, "
+         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, box_size_m, "
          "mass_kg, "
          "inertia_kg_m2, control_count, material)"},
         {Minimal(mass, R"("speed_mph": 35)"), EError::InvalidArgument,

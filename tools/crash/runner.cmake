@@ -5,6 +5,7 @@
 if(NOT TARGET crumple_crash_scenario)
     return()
 endif()
+find_package(nlohmann_json 3 QUIET) # imported targets are per directory
 if(NOT TARGET crumple_samples_common OR NOT (TARGET crumple_common_bullet OR TARGET crumple_common_ode))
     message(STATUS "crumple: crumple-crash not built: it needs assimp, crumple::render and Bullet or ODE")
     return()

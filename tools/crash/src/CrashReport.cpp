@@ -107,6 +107,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
         expectations.push_back({{"expectation", result.mExpectation.mText},
                                 {"quantity", ToString(result.mExpectation.mQuantity)},
                                 {"value", result.mValue},
+                                {"value_in_expectation_unit", result.mValue * result.mExpectation.mDisplayScale},
                                 {"passed", result.mPassed}});
         passed = passed && result.mPassed;
     }
@@ -132,7 +133,7 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
-                     result.mExpectation.mText.c_str(), result.mValue);
+                     result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);
 }
 
 Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario& inScenario,
@@ -162,7 +163,7 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";
     for (const ExpectationResult& result : inResults)
-        html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue, 4) +
+        html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue * result.mExpectation.mDisplayScale, 4) +
                 "</td><td class=\"" + (result.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
     html += "</table>\n<h2>Pictures</h2>\n<div>";
     for (const char* name : {"before_front", "after_front", "before_side", "after_side", "before_top", "after_top",

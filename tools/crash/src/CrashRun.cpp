@@ -160,7 +160,9 @@ double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPo
             inside = p.y() <= bounds.mMin.y() + 0.25 * size.y();
             break;
         case EZone::Roof:
-            inside = p.z() >= bounds.mMax.z() - 0.2 * size.z();
+            // The passenger compartment's roof: the top fifth, between the front and rear quarters.
+            inside = p.z() >= bounds.mMax.z() - 0.2 * size.z() && p.x() > bounds.mMin.x() + 0.25 * size.x() &&
+                     p.x() < bounds.mMax.x() - 0.25 * size.x();
             break;
         }
         if (inside)

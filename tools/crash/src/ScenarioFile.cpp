@@ -686,6 +686,7 @@ class ScenarioReader
         const bool km_h = quantity == delta_v_km_h;
         outExpectation.mMin = km_h && has_min ? KilometresPerHourToMetresPerSecond(low) : low;
         outExpectation.mMax = km_h && has_max ? KilometresPerHourToMetresPerSecond(high) : high;
+        outExpectation.mDisplayScale = km_h ? 3.6 : 1.0;
         return true;
     }
 

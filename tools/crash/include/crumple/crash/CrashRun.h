@@ -60,7 +60,9 @@ struct CrashRunOptions
 Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOptions& inOptions);
 
 /// Largest displacement of the vertices in a zone of the body box (m): the outer quarter of its length
-/// (front/rear) or width (left/right), the top fifth of its height (roof), or all vertices (any).
+/// (front/rear) or width (left/right), the top fifth of its height between the front and rear quarters
+/// (roof: the passenger compartment's), or all vertices (any). Zones overlap at corners: a frontal hit
+/// also shows in left and right.
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone);
 
 } // namespace crumple::crash

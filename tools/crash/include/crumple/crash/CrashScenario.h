@@ -76,7 +76,7 @@ enum class EQuantity : std::uint8_t
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
-/// top fifth for the roof), or anywhere.
+/// top fifth between the front and rear quarters for the roof), or anywhere. Zones overlap at corners.
 enum class EZone : std::uint8_t
 {
     Any,
@@ -95,6 +95,7 @@ struct Expectation
     double mMin = -std::numeric_limits<double>::infinity(); ///< In the quantity's SI unit
     double mMax = std::numeric_limits<double>::infinity();  ///< In the quantity's SI unit
     std::string mText; ///< The expectation as written in the file, for messages
+    double mDisplayScale = 1.0; ///< Measured SI value x this = the value in mText's unit (3.6 for km/h)
 };
 
 /// A crash test: vehicle, target, impact, engine, duration, expectations, outputs. Built by LoadCrashScenario.
