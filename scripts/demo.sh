@@ -13,12 +13,22 @@ crumple_build -DCRUMPLE_BUILD_TESTS=OFF -DCRUMPLE_BUILD_SAMPLES=ON
 out="${1:-$CRUMPLE_ROOT/demo-output}"
 bin="$CRUMPLE_BUILD_DIR/samples"
 mkdir -p "$out"
-if [ ! -x "$bin/crumple-racing-bullet" ]; then
+if [ ! -x "$bin/crumple-racing-bullet" ] || [ ! -x "$bin/crumple-crash" ]; then
     echo "crumple demo: the racing samples were not built (see the configure messages above)" >&2
     exit 1
 fi
 
-echo "== Bullet racing session"
+echo "== Crash test: the shipped Toy Car, full frontal into a rigid barrier at 56 km/h"
+"$bin/crumple-crash" "$CRUMPLE_ROOT/samples/scenarios/frontal_rigid_barrier_56kmh.json" --out "$out/crash-frontal-56"
+"$bin/crumple-replay" "$out/crash-frontal-56/replay.crumple" --out "$out/crash-frontal-56/replay" > /dev/null
+if cmp -s "$out/crash-frontal-56/deformed.obj" "$out/crash-frontal-56/replay/object0.obj"; then
+    echo "replayed crash mesh is byte-identical to the live one"
+else
+    echo "replayed crash mesh differs from the live one" >&2
+    exit 1
+fi
+
+echo; echo "== Bullet racing session"
 "$bin/crumple-racing-bullet" --out "$out/racing-bullet"
 if [ -x "$bin/crumple-racing-ode" ]; then
     echo; echo "== ODE racing session"
@@ -34,5 +44,6 @@ else
 fi
 
 echo
+echo "crumple demo: crash report: $out/crash-frontal-56/report.html (report.json, pictures, deformed.obj, replay.crumple beside it)"
 echo "crumple demo: pictures are in $out/racing-bullet (before.png, after.png, frames/) and $out/racing-ode;"
 echo "              deformed meshes (OBJ) and replay files (race.crumple) beside them."

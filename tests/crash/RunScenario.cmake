@@ -1,8 +1,9 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # cmake -DCRASH=<crumple-crash> -DSCENARIO=<file> -DOUT=<dir> -DEXPECT_EXIT=<0|1|2> [-DEXPECT_TEXT=<regex>]
-#       -P RunScenario.cmake
-# Runs one scenario and checks the exit status, the message, and what was (or was not) written.
+#       [-DREPLAY=<crumple-replay>] -P RunScenario.cmake
+# Runs one scenario and checks the exit status, the message, and what was (or was not) written; with REPLAY,
+# also that replaying the run's recording headless gives a byte-identical deformed mesh.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${CRASH} ${SCENARIO} --out ${OUT} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}${err}")
@@ -22,4 +23,15 @@ else()
             message(FATAL_ERROR "${OUT}/${file} was not written")
         endif()
     endforeach()
+endif()
+if(DEFINED REPLAY AND EXPECT_EXIT EQUAL 0)
+    execute_process(COMMAND ${REPLAY} ${OUT}/replay.crumple --out ${OUT}/replay RESULT_VARIABLE code OUTPUT_QUIET)
+    if(NOT code EQUAL 0)
+        message(FATAL_ERROR "crumple-replay exited ${code}")
+    endif()
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/deformed.obj ${OUT}/replay/object0.obj
+        RESULT_VARIABLE different)
+    if(different)
+        message(FATAL_ERROR "the replayed mesh differs from the live one")
+    endif()
 endif()

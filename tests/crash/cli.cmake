@@ -1,6 +1,7 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
-# crumple-crash from the command line: every example scenario meets its own expectations (exit 0), a
+# crumple-crash from the command line: every example scenario meets its own expectations (exit 0) and its
+# recording replays to a byte-identical mesh, a
 # deliberately wrong expectation exits 1, and each malformed scenario exits 2 with its message and writes
 # nothing.
 set(crash_script ${CMAKE_CURRENT_LIST_DIR}/RunScenario.cmake)
@@ -10,7 +11,7 @@ foreach(example IN LISTS crash_examples)
     get_filename_component(name ${example} NAME_WE)
     add_test(NAME "crash: example ${name} meets its expectations"
         COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${example} -DOUT=${crash_out}/${name}
-                -DEXPECT_EXIT=0 -P ${crash_script})
+                -DEXPECT_EXIT=0 -DREPLAY=$<TARGET_FILE:crumple-replay> -P ${crash_script})
     set_tests_properties("crash: example ${name} meets its expectations" PROPERTIES LABELS crash)
 endforeach()
 add_test(NAME "crash: a failing expectation exits 1 and names it"
