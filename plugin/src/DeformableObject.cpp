@@ -37,6 +37,8 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     if (!(std::isfinite(material.mMaxInstantDeformation) && material.mMaxInstantDeformation >= material.mMinDeformation))
         return MakeError(EError::InvalidArgument,
                          "DamageMaterial.mMaxInstantDeformation must be finite and >= mMinDeformation (m)");
+    if (!(std::isfinite(material.mImpulseThreshold) && material.mImpulseThreshold >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mImpulseThreshold must be finite and >= 0 N s");
 
     ffd::FfdDeformerSettings deformer_settings = inSettings.mDeformer;
     if (deformer_settings.mZones.empty())
@@ -71,10 +73,11 @@ std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& i
         return dent;
     direction /= length;
 
-    // Depth from the collision's impulse, shape from each contact's share of it.
+    // Depth from the collision's impulse beyond the no-damage threshold, shape from each contact's share.
+    const double effective = std::max(0.0, total - mMaterial.mImpulseThreshold);
     for (const CollisionContact& c : inCollision.mContacts)
     {
-        double depth = mMaterial.mDeformationFactor * total * (c.mImpulse / peak);
+        double depth = mMaterial.mDeformationFactor * effective * (c.mImpulse / peak);
         if (!(depth >= mMaterial.mMinDeformation) || depth <= 0.0)
             continue;
         depth = std::min(depth, mMaterial.mMaxInstantDeformation);

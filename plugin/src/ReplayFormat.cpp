@@ -50,6 +50,7 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     settings.mMaterial.mDeformationFactor = reader.ReadDouble();
     settings.mMaterial.mMinDeformation = reader.ReadDouble();
     settings.mMaterial.mMaxInstantDeformation = reader.ReadDouble();
+    settings.mMaterial.mImpulseThreshold = reader.ReadDouble();
     settings.mInterpolateWideImpacts = reader.ReadU8() != 0;
     ffd::FfdDeformerSettings& deformer = settings.mDeformer;
     deformer.mRankTolerance = reader.ReadDouble();
@@ -178,6 +179,7 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mMaterial.mDeformationFactor);
     writer.WriteDouble(settings.mMaterial.mMinDeformation);
     writer.WriteDouble(settings.mMaterial.mMaxInstantDeformation);
+    writer.WriteDouble(settings.mMaterial.mImpulseThreshold);
     writer.WriteU8(settings.mInterpolateWideImpacts ? 1 : 0);
     writer.WriteDouble(settings.mDeformer.mRankTolerance);
     writer.WriteDouble(settings.mDeformer.mMergeDistance);

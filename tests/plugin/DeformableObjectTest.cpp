@@ -71,6 +71,30 @@ TEST_CASE("Dents below the minimum are dropped and above the maximum clamped", "
     CHECK(dent[1].mDisplacement.norm() == Approx(1.0e-5 * 19980.0 * 0.1));
 }
 
+TEST_CASE("An impulse threshold leaves small impacts undented and shifts the rest (Campbell's b0)", "[plugin]")
+{
+    DamageMaterial material;
+    material.mDeformationFactor = 1.0e-5;
+    material.mMinDeformation = 0.0;
+    material.mMaxInstantDeformation = 1.0;
+    material.mImpulseThreshold = 4000.0; // N s
+    const DeformableObject car = MakeCar(material);
+    // At or below the threshold: nothing.
+    CHECK(car.DentFor(FrontCollision({{Vec3(2.1, 0.0, 0.0), 4000.0}}), ECollisionSide::B).empty());
+    // Above: depth = factor (J - J0), shaped by each share: (9000 - 4000) 1e-5 = 0.05 m at the peak.
+    const std::vector<ffd::PointDisplacement> dent =
+        car.DentFor(FrontCollision({{Vec3(2.1, 0.0, 0.0), 6000.0}, {Vec3(2.1, 0.5, 0.0), 3000.0}}), ECollisionSide::B);
+    REQUIRE(dent.size() == 2);
+    CHECK(dent[0].mDisplacement.isApprox(Vec3(-0.05, 0.0, 0.0), 1.0e-12));
+    CHECK(dent[1].mDisplacement.isApprox(Vec3(-0.025, 0.0, 0.0), 1.0e-12));
+
+    // Refused when negative or not finite.
+    DeformableObjectSettings settings;
+    settings.mMesh = common::MakeBoxMesh(Vec3(2.1, 0.9, 0.7), {4, 4, 4});
+    settings.mMaterial.mImpulseThreshold = -1.0;
+    CHECK(DeformableObject::Create(settings).HasError());
+}
+
 TEST_CASE("Dent depth does not depend on how many points report the same impact", "[plugin]")
 {
     const DamageMaterial material;

@@ -49,6 +49,7 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
                                                      BoxSegmentsForTriangles(inSettings.mHalfExtents, inSettings.mTriangles));
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
+    object.mFittedMaxTotalDeformation = inSettings.mMaxTotalDeformation;
     return object;
 }
 

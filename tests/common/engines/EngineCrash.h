@@ -39,6 +39,7 @@ struct EngineCrashSettings
     std::optional<Vec3> mInertia;      ///< Principal moments of inertia (kg m^2); empty: those of the box
     double mWallAngleDegrees = 0.0;    ///< The wall turned about the vertical through the origin (degrees)
     double mOffset = 0.0;              ///< The car's start y, sideways from the wall's centre line (m)
+    double mMaxTotalDeformation = 0.5; ///< Most any vertex of the car may ever move (m)
 };
 
 /// The car's start: centre x so that its nearest bottom corner is mGap from the (possibly turned) wall face,

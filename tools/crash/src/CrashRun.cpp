@@ -33,6 +33,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     settings.mMass = vehicle.mMass;
     settings.mInertia = vehicle.mInertia;
     settings.mMaterial = vehicle.mMaterial;
+    settings.mMaxTotalDeformation = vehicle.mMaxTotalDeformation;
     settings.mControlCount = vehicle.mControlCount;
     settings.mSpeed = inScenario.mImpact.mSpeed;
     settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;

@@ -511,8 +511,39 @@ class ScenarioReader
         if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount))
             return false;
         if (const auto material = inVehicle.find("material"); material != inVehicle.end())
-            return ReadMaterial(*material, Child(inPointer, "material"), ioVehicle.mMaterial);
+            return ReadMaterial(*material, Child(inPointer, "material"), ioVehicle, true);
         return true;
+    }
+
+    // A material preset file (crumple-crash --calibrate writes them): {"preset", "source", "campbell_b0_m_s",
+    // "campbell_b1_per_s", "mass_kg", "material": {...}}; its material is read like a scenario's.
+    bool ReadPresetFile(const Json& inValue, const std::string& inPointer, VehicleSpec& ioVehicle)
+    {
+        if (!inValue.is_string())
+            return FailType(inPointer, "a string (a file path)", inValue);
+        const std::filesystem::path file = inValue.get<std::string>();
+        const std::filesystem::path resolved = (file.is_absolute() ? file : mBaseFolder / file).lexically_normal();
+        std::ifstream stream(resolved, std::ios::binary);
+        if (!stream)
+            return Fail(EError::IoError, inPointer, "file not found: " + resolved.string());
+        Json preset;
+        try
+        {
+            preset = Json::parse(stream, nullptr, true, false);
+        }
+        catch (const Json::exception& inError)
+        {
+            return Fail(EError::CorruptData, inPointer, resolved.string() + ": " + inError.what());
+        }
+        const std::string pointer = inPointer + "(" + resolved.filename().string() + ")";
+        if (!ExpectObject(preset, pointer) ||
+            !CheckKeys(preset, pointer,
+                       {{"preset", "source", "campbell_b0_m_s", "campbell_b1_per_s", "mass_kg", "material"}, {}}))
+            return false;
+        const auto material = preset.find("material");
+        if (material == preset.end())
+            return Fail(EError::InvalidArgument, pointer + "/material", "required");
+        return ReadMaterial(*material, pointer + "/material", ioVehicle, false);
     }
 
     bool ReadControlCount(const Json& inVehicle, const std::string& inPointer, std::array<int, 3>& ioCount)
@@ -546,26 +577,49 @@ class ScenarioReader
         return true;
     }
 
-    bool ReadMaterial(const Json& inMaterial, const std::string& inPointer,
-                      plugin::DamageMaterial& ioMaterial)
+    bool ReadMaterial(const Json& inMaterial, const std::string& inPointer, VehicleSpec& ioVehicle,
+                      bool inAllowPreset)
     {
-        if (!ExpectObject(inMaterial, inPointer) ||
-            !CheckKeys(inMaterial, inPointer,
-                       {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m"},
-                        {{"deformation_factor", "deformation factors are deformation_factor_m_per_N_s"},
-                         {"min_deformation", "depths are min_deformation_m"},
-                         {"max_deformation", "depths are max_deformation_m"}}}) ||
-            !ReadNumber(inMaterial, inPointer, "deformation_factor_m_per_N_s", NumberRange::NonNegative(),
-                        false, ioMaterial.mDeformationFactor) ||
-            !ReadNumber(inMaterial, inPointer, "min_deformation_m", NumberRange::NonNegative(), false,
-                        ioMaterial.mMinDeformation) ||
-            !ReadNumber(inMaterial, inPointer, "max_deformation_m", NumberRange::NonNegative(), false,
-                        ioMaterial.mMaxInstantDeformation))
+        plugin::DamageMaterial& material = ioVehicle.mMaterial;
+        if (!ExpectObject(inMaterial, inPointer))
             return false;
-        if (ioMaterial.mMaxInstantDeformation < ioMaterial.mMinDeformation)
+        // Scenario files may name a preset file; preset files may not (no chains).
+        const auto hints = {UnitHint{"deformation_factor", "deformation factors are deformation_factor_m_per_N_s"},
+                            UnitHint{"min_deformation", "depths are min_deformation_m"},
+                            UnitHint{"max_deformation", "depths are max_deformation_m"},
+                            UnitHint{"impulse_threshold", "impulses are impulse_threshold_N_s"},
+                            UnitHint{"max_total_deformation", "depths are max_total_deformation_m"}};
+        const bool keys_ok =
+            inAllowPreset
+                ? CheckKeys(inMaterial, inPointer,
+                            {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
+                              "impulse_threshold_N_s", "max_total_deformation_m", "preset_file"},
+                             hints})
+                : CheckKeys(inMaterial, inPointer,
+                            {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
+                              "impulse_threshold_N_s", "max_total_deformation_m"},
+                             hints});
+        if (!keys_ok)
+            return false;
+        // A preset first; the keys given beside it override its values.
+        if (const auto preset = inMaterial.find("preset_file"); inAllowPreset && preset != inMaterial.end())
+            if (!ReadPresetFile(*preset, Child(inPointer, "preset_file"), ioVehicle))
+                return false;
+        if (!ReadNumber(inMaterial, inPointer, "deformation_factor_m_per_N_s", NumberRange::NonNegative(), false,
+                        material.mDeformationFactor) ||
+            !ReadNumber(inMaterial, inPointer, "min_deformation_m", NumberRange::NonNegative(), false,
+                        material.mMinDeformation) ||
+            !ReadNumber(inMaterial, inPointer, "max_deformation_m", NumberRange::NonNegative(), false,
+                        material.mMaxInstantDeformation) ||
+            !ReadNumber(inMaterial, inPointer, "impulse_threshold_N_s", NumberRange::NonNegative(), false,
+                        material.mImpulseThreshold) ||
+            !ReadNumber(inMaterial, inPointer, "max_total_deformation_m", NumberRange::NonNegative(), false,
+                        ioVehicle.mMaxTotalDeformation))
+            return false;
+        if (material.mMaxInstantDeformation < material.mMinDeformation)
             return Fail(EError::InvalidArgument, Child(inPointer, "max_deformation_m"),
-                        "must be >= min_deformation_m (" + FormatNumber(ioMaterial.mMinDeformation) +
-                            "), got " + FormatNumber(ioMaterial.mMaxInstantDeformation));
+                        "must be >= min_deformation_m (" + FormatNumber(material.mMinDeformation) + "), got " +
+                            FormatNumber(material.mMaxInstantDeformation));
         return true;
     }
 

@@ -14,6 +14,11 @@ struct DamageMaterial
                                           ///< like a spring turning force into displacement
     double mMinDeformation = 1.0e-3;      ///< Dents shallower than this are dropped (m), >= 0
     double mMaxInstantDeformation = 0.3;  ///< Deepest dent one collision can make at a contact (m), >= min
+    /// The part of a collision's impulse that leaves no permanent dent (N s), >= 0: the depth is
+    /// factor (|J| - threshold) when |J| exceeds it. Campbell's linear crush model (SAE 740565) has a
+    /// no-damage speed b0 (2.2-4.5 m/s for modern cars, SAE 2010-01-0069): against a rigid barrier that is
+    /// an impulse of about (1 + e) m b0. 0 (the default): every impulse dents.
+    double mImpulseThreshold = 0.0;
 };
 
 } // namespace crumple::plugin

@@ -32,8 +32,8 @@ struct Replay
     std::vector<Collision> mCollisions;   ///< In dispatch order
 };
 
-/// Replay file format version. Readers refuse other versions.
-constexpr std::uint32_t cReplayVersion = 1;
+/// Replay file format version. Readers refuse other versions. 2: the material's impulse threshold.
+constexpr std::uint32_t cReplayVersion = 2;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the

@@ -47,6 +47,7 @@ struct VehicleSpec
     /// mBoxSize and mMass
     std::optional<Vec3> mInertia;
     plugin::DamageMaterial mMaterial;  ///< Dent per impulse and its limits
+    double mMaxTotalDeformation = 0.5; ///< Most any vertex may ever move, all collisions together (m), >= 0
     std::array<int, 3> mControlCount{{10, 6, 6}}; ///< FFD controls of the fitted zone, each >= 4
 };
 
