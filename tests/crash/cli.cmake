@@ -37,3 +37,17 @@ foreach(entry IN LISTS crash_malformed)
     set_tests_properties("crash: malformed ${name} exits 2 with its message" PROPERTIES LABELS crash)
 endforeach()
 set_tests_properties("crash: a failing expectation exits 1 and names it" PROPERTIES LABELS crash)
+
+# Calibration: fitting reaches Campbell's line within 10 % over 20-64 km/h, and the shipped mid-size preset,
+# read back from its file, reproduces it (exit 0 within 10 %, 1 otherwise).
+add_test(NAME "crash: calibration fits the mid-size body to Campbell's line within 10 %"
+    COMMAND crumple-crash ${PROJECT_SOURCE_DIR}/samples/calibration/mid_size_frontal.json --calibrate --b0 2.173
+            --b1 24.07 --preset-name mid-size --out ${crash_out}/calibrate-mid)
+add_test(NAME "crash: the shipped mid-size preset reproduces its Campbell line within 10 % over 20-64 km/h"
+    COMMAND crumple-crash ${PROJECT_SOURCE_DIR}/samples/calibration/mid_size_preset_check.json --campbell-check
+            --b0 2.173 --b1 24.07 --out ${crash_out}/check-mid)
+add_test(NAME "crash: a preset checked against the wrong line fails"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -P ${CMAKE_CURRENT_LIST_DIR}/ExpectExit.cmake)
+set_tests_properties("crash: calibration fits the mid-size body to Campbell's line within 10 %"
+    "crash: the shipped mid-size preset reproduces its Campbell line within 10 % over 20-64 km/h"
+    "crash: a preset checked against the wrong line fails" PROPERTIES LABELS crash)

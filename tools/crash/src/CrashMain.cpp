@@ -4,12 +4,15 @@
 // 1 when one fails (printing which, with the measured value), 2 for a bad scenario or command line (nothing
 // written).
 #include <crumple/base/Version.h>
+#include <crumple/crash/Calibration.h>
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/ScenarioFile.h>
 
 #include "ObjWriter.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <system_error>
 
@@ -32,7 +35,66 @@ void PrintUsage(std::FILE* inStream)
                  "  crumple-replay) and PNG pictures. Exit status: 0 all expectations hold, 1 one failed,\n"
                  "  2 bad scenario or command line (nothing written).\n"
                  "  --no-pictures  skip the renders (no EGL context is made)\n"
+                 "  --calibrate --b0 B0 --b1 B1 [--preset-name NAME] [--source TEXT]\n"
+                 "      fit the vehicle material so that the scenario (a full-frontal rigid-wall crash) reproduces\n"
+                 "      Campbell's line C = (v - B0) / B1 (B0 in m/s, B1 in 1/s) at 20, 30, 40, 48, 56 and 64 km/h;\n"
+                 "      writes preset.json, calibration.csv and calibration.png (crush against speed: the line and\n"
+                 "      the simulated points); exit 0 when every point is within 10 %% of the line, else 1\n"
+                 "  --campbell-check --b0 B0 --b1 B1\n"
+                 "      the same speeds with the scenario's material as it is: csv, plot, exit 0 within 10 %%\n"
                  "  --help, --version\n");
+}
+
+// Calibration to, or a check against, Campbell's line (see PrintUsage).
+int RunCampbell(const CrashScenario& inScenario, const CampbellLine& inLine, bool inCalibrate,
+                const std::string& inPresetName, const std::string& inSource, const std::filesystem::path& inOut)
+{
+    const std::vector<double> speeds = {20.0 / 3.6, 30.0 / 3.6, 40.0 / 3.6, 48.0 / 3.6, 56.0 / 3.6, 64.0 / 3.6};
+    std::vector<CampbellPoint> points;
+    if (inCalibrate)
+    {
+        std::printf("crumple-crash: calibrating %s to C = (v - %.3f m/s) / %.3f s^-1\n", inScenario.mName.c_str(),
+                    inLine.mNoDamageSpeed, inLine.mSlope);
+        Result<VehicleSpec> vehicle = CalibrateToCampbell(inScenario, inLine, speeds, 3, points);
+        if (vehicle.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", vehicle.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        if (Status status = WritePresetFile(inOut / "preset.json", inPresetName, inSource, inLine, vehicle.Get());
+            status.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        std::printf("  deformation factor %.6g m/(N s), impulse threshold %.6g N s -> %s\n",
+                    vehicle.Get().mMaterial.mDeformationFactor, vehicle.Get().mMaterial.mImpulseThreshold,
+                    (inOut / "preset.json").string().c_str());
+    }
+    else
+    {
+        Result<std::vector<CampbellPoint>> run = RunCampbellSpeeds(inScenario, inLine, speeds);
+        if (run.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", run.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        points = run.Get();
+    }
+    double worst = 0.0;
+    std::printf("  speed_km_h  model_m  simulated_m  error\n");
+    for (const CampbellPoint& point : points)
+    {
+        std::printf("  %10.1f  %7.3f  %11.3f  %+5.1f %%\n", point.mSpeed * 3.6, point.mModel, point.mCrush,
+                    100.0 * (point.mCrush - point.mModel) / point.mModel);
+        worst = std::max(worst, point.RelativeError());
+    }
+    (void)WriteCampbellCsv(inOut / "calibration.csv", points);
+    if (Status status = WriteCampbellPlot(inOut / "calibration.png", inLine, points); status.HasError())
+        std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
+    std::printf("crumple-crash: largest deviation from the line %.1f %% (limit 10 %%); plot %s\n", 100.0 * worst,
+                (inOut / "calibration.png").string().c_str());
+    return worst <= 0.10 ? cExitPass : cExitFail;
 }
 
 } // namespace
@@ -40,7 +102,15 @@ void PrintUsage(std::FILE* inStream)
 int main(int argc, char** argv)
 {
     std::filesystem::path scenario_path, out;
-    bool pictures = true;
+    bool pictures = true, calibrate = false, campbell_check = false;
+    CampbellLine line{std::nan(""), std::nan("")};
+    std::string preset_name = "calibrated", source = "crumple-crash --calibrate";
+    auto number = [](const char* inText, double& outValue)
+    {
+        char* end = nullptr;
+        outValue = std::strtod(inText, &end);
+        return end != inText && *end == '\0' && std::isfinite(outValue);
+    };
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -56,6 +126,23 @@ int main(int argc, char** argv)
         }
         if (arg == "--no-pictures")
             pictures = false;
+        else if (arg == "--calibrate")
+            calibrate = true;
+        else if (arg == "--campbell-check")
+            campbell_check = true;
+        else if ((arg == "--b0" || arg == "--b1") && i + 1 < argc)
+        {
+            double& value = arg == "--b0" ? line.mNoDamageSpeed : line.mSlope;
+            if (!number(argv[++i], value))
+            {
+                std::fprintf(stderr, "crumple-crash: %s needs a finite number, got '%s'\n", arg.c_str(), argv[i]);
+                return cExitBadInput;
+            }
+        }
+        else if (arg == "--preset-name" && i + 1 < argc)
+            preset_name = argv[++i];
+        else if (arg == "--source" && i + 1 < argc)
+            source = argv[++i];
         else if (arg == "--out" && i + 1 < argc)
             out = argv[++i];
         else if (!arg.empty() && arg[0] != '-' && scenario_path.empty())
@@ -81,6 +168,11 @@ int main(int argc, char** argv)
                      scenario.GetError().mMessage.c_str());
         return cExitBadInput;
     }
+    if ((calibrate || campbell_check) && !(line.mNoDamageSpeed >= 0.0 && line.mSlope > 0.0))
+    {
+        std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 >= 0 (m/s) and --b1 > 0 (1/s)\n");
+        return cExitBadInput;
+    }
     if (out.empty())
         out = std::filesystem::path("crash-output") / scenario_path.stem();
     std::error_code error;
@@ -90,6 +182,9 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "crumple-crash: cannot create %s: %s\n", out.string().c_str(), error.message().c_str());
         return cExitBadInput;
     }
+
+    if (calibrate || campbell_check)
+        return RunCampbell(scenario.Get(), line, calibrate, preset_name, source, out);
 
     // Run, then the outputs: replay (written during the run), report, deformed mesh, pictures.
     std::printf("crumple-crash: running %s on %s for %.2f s\n", scenario.Get().mName.c_str(),
