@@ -51,3 +51,10 @@ add_test(NAME "crash: a preset checked against the wrong line fails"
 set_tests_properties("crash: calibration fits the mid-size body to Campbell's line within 10 %"
     "crash: the shipped mid-size preset reproduces its Campbell line within 10 % over 20-64 km/h"
     "crash: a preset checked against the wrong line fails" PROPERTIES LABELS crash)
+
+# Sweeps: the same CSV whatever the number of worker processes.
+add_test(NAME "crash: a sweep writes the same rows in 1 or 3 worker processes"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
+            -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/angled_wall_30deg_ode.json -DOUT=${crash_out}/sweep
+            -P ${CMAKE_CURRENT_LIST_DIR}/SweepWorkers.cmake)
+set_tests_properties("crash: a sweep writes the same rows in 1 or 3 worker processes" PROPERTIES LABELS crash)

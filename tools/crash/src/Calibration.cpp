@@ -3,8 +3,9 @@
 #include <crumple/crash/Calibration.h>
 #include <crumple/crash/CrashRun.h>
 
+#include "PlotCanvas.h"
+
 #include <crumple/base/FileBytes.h>
-#include <crumple/render/WritePng.h>
 
 #include <nlohmann/json.hpp>
 
@@ -25,44 +26,6 @@ Status WriteText(const std::filesystem::path& inPath, const std::string& inText)
 {
     return WriteFileAtomically(inPath, std::as_bytes(std::span(inText.data(), inText.size())), "crumple-crash");
 }
-
-// A white RGBA canvas with the few drawing operations a plot needs.
-class Canvas
-{
-public:
-    Canvas(int inWidth, int inHeight) : mWidth(inWidth), mHeight(inHeight), mPixels(4 * inWidth * inHeight, 255) {}
-
-    void Dot(int inX, int inY, std::array<std::uint8_t, 3> inColour)
-    {
-        if (inX < 0 || inY < 0 || inX >= mWidth || inY >= mHeight)
-            return;
-        std::uint8_t* pixel = &mPixels[4 * (inY * mWidth + inX)];
-        pixel[0] = inColour[0];
-        pixel[1] = inColour[1];
-        pixel[2] = inColour[2];
-    }
-    void Line(double inX0, double inY0, double inX1, double inY1, int inThickness, std::array<std::uint8_t, 3> inColour)
-    {
-        const int steps = static_cast<int>(std::max(std::abs(inX1 - inX0), std::abs(inY1 - inY0))) + 1;
-        for (int step = 0; step <= steps; ++step)
-        {
-            const double t = step / static_cast<double>(steps);
-            Disc(inX0 + t * (inX1 - inX0), inY0 + t * (inY1 - inY0), 0.5 * inThickness, inColour);
-        }
-    }
-    void Disc(double inX, double inY, double inRadius, std::array<std::uint8_t, 3> inColour)
-    {
-        for (int y = static_cast<int>(inY - inRadius); y <= static_cast<int>(inY + inRadius); ++y)
-            for (int x = static_cast<int>(inX - inRadius); x <= static_cast<int>(inX + inRadius); ++x)
-                if ((x - inX) * (x - inX) + (y - inY) * (y - inY) <= inRadius * inRadius + 0.25)
-                    Dot(x, y, inColour);
-    }
-    Status Save(const std::filesystem::path& inPath) const { return render::WritePng(inPath, mWidth, mHeight, mPixels); }
-
-private:
-    int mWidth, mHeight;
-    std::vector<std::uint8_t> mPixels;
-};
 
 } // namespace
 
@@ -173,7 +136,7 @@ Status WriteCampbellPlot(const std::filesystem::path& inPath, const CampbellLine
         top = std::max({top, point.mCrush, point.mModel});
     top = std::ceil(top * 10.0 + 0.5) / 10.0;
     const double right_kmh = 70.0;
-    Canvas canvas(cWidth, cHeight);
+    PlotCanvas canvas(cWidth, cHeight);
     auto x_of = [&](double inKmh) { return cLeft + (cRight - cLeft) * inKmh / right_kmh; };
     auto y_of = [&](double inCrush) { return cBottom - (cBottom - cTop) * inCrush / top; };
     const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{200, 200, 200}, blue{30, 80, 200}, red{210, 30, 30};

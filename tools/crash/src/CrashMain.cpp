@@ -6,6 +6,7 @@
 #include <crumple/base/Version.h>
 #include <crumple/crash/Calibration.h>
 #include <crumple/crash/CrashReport.h>
+#include <crumple/crash/CrashSweep.h>
 #include <crumple/crash/ScenarioFile.h>
 
 #include "ObjWriter.h"
@@ -40,6 +41,9 @@ void PrintUsage(std::FILE* inStream)
                  "      Campbell's line C = (v - B0) / B1 (B0 in m/s, B1 in 1/s) at 20, 30, 40, 48, 56 and 64 km/h;\n"
                  "      writes preset.json, calibration.csv and calibration.png (crush against speed: the line and\n"
                  "      the simulated points); exit 0 when every point is within 10 %% of the line, else 1\n"
+                 "  --sweep \"speeds_km_h=20,40,60;angles_deg=0,30;offsets_m=0\" [--workers N]\n"
+                 "      every combination as a case, in N worker processes (default 2): sweep.csv (one row per\n"
+                 "      case, in case order whatever N) and sweep.png (front crush against speed)\n"
                  "  --campbell-check --b0 B0 --b1 B1\n"
                  "      the same speeds with the scenario's material as it is: csv, plot, exit 0 within 10 %%\n"
                  "  --help, --version\n");
@@ -104,7 +108,8 @@ int main(int argc, char** argv)
     std::filesystem::path scenario_path, out;
     bool pictures = true, calibrate = false, campbell_check = false;
     CampbellLine line{std::nan(""), std::nan("")};
-    std::string preset_name = "calibrated", source = "crumple-crash --calibrate";
+    std::string preset_name = "calibrated", source = "crumple-crash --calibrate", sweep;
+    int workers = 2;
     auto number = [](const char* inText, double& outValue)
     {
         char* end = nullptr;
@@ -138,6 +143,18 @@ int main(int argc, char** argv)
                 std::fprintf(stderr, "crumple-crash: %s needs a finite number, got '%s'\n", arg.c_str(), argv[i]);
                 return cExitBadInput;
             }
+        }
+        else if (arg == "--sweep" && i + 1 < argc)
+            sweep = argv[++i];
+        else if (arg == "--workers" && i + 1 < argc)
+        {
+            double value = 0.0;
+            if (!number(argv[++i], value) || value < 1.0 || value > 256.0 || value != std::floor(value))
+            {
+                std::fprintf(stderr, "crumple-crash: --workers needs an integer in [1, 256], got '%s'\n", argv[i]);
+                return cExitBadInput;
+            }
+            workers = static_cast<int>(value);
         }
         else if (arg == "--preset-name" && i + 1 < argc)
             preset_name = argv[++i];
@@ -173,6 +190,16 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 >= 0 (m/s) and --b1 > 0 (1/s)\n");
         return cExitBadInput;
     }
+    Result<CrashSweepSpec> sweep_spec = CrashSweepSpec{};
+    if (!sweep.empty())
+    {
+        sweep_spec = ParseCrashSweep(sweep);
+        if (sweep_spec.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", sweep_spec.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+    }
     if (out.empty())
         out = std::filesystem::path("crash-output") / scenario_path.stem();
     std::error_code error;
@@ -183,6 +210,20 @@ int main(int argc, char** argv)
         return cExitBadInput;
     }
 
+    if (!sweep.empty())
+    {
+        std::printf("crumple-crash: sweeping %s over %zu cases in %d workers\n", scenario.Get().mName.c_str(),
+                    sweep_spec.Get().GetCaseCount(), workers);
+        Result<int> failed = RunCrashSweep(scenario.Get(), sweep_spec.Get(), workers, out, stdout);
+        if (failed.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", failed.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        std::printf("crumple-crash: %d of %zu cases failed; %s, %s\n", failed.Get(), sweep_spec.Get().GetCaseCount(),
+                    (out / "sweep.csv").string().c_str(), (out / "sweep.png").string().c_str());
+        return failed.Get() == 0 ? cExitPass : cExitFail;
+    }
     if (calibrate || campbell_check)
         return RunCampbell(scenario.Get(), line, calibrate, preset_name, source, out);
 

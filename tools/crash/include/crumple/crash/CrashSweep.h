@@ -1,0 +1,40 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/crash/CrashScenario.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace crumple::crash
+{
+
+/// The values a sweep crosses: every combination of speed, wall angle and sideways offset is one case.
+struct CrashSweepSpec
+{
+    std::vector<double> mSpeeds;        ///< m/s
+    std::vector<double> mAngles{0.0};   ///< Wall angle (deg)
+    std::vector<double> mOffsets{0.0};  ///< Sideways offset (m)
+
+    /// Number of cases
+    std::size_t GetCaseCount() const { return mSpeeds.size() * mAngles.size() * mOffsets.size(); }
+};
+
+/// Parses "speeds_km_h=20,30,40;angles_deg=0,30;offsets_m=0,0.5" (speeds required; the others default to a
+/// single 0). Refuses unknown names, non-numbers and values out of range (speed > 0, angle in (-90, 90)),
+/// naming the item.
+Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText);
+
+/// Runs every case of inSpec on inScenario in inWorkers worker processes (fork; case i runs in worker
+/// i mod inWorkers), each writing its row to inFolder/cases/; shows a progress bar on inProgress; then
+/// writes inFolder/sweep.csv (rows in case order: the file does not depend on the number of workers) and
+/// inFolder/sweep.png (front residual crush against impact speed). Expectations are not checked per case.
+/// @return the number of cases whose run failed (their rows say why)
+Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, int inWorkers,
+                          const std::filesystem::path& inFolder, std::FILE* inProgress);
+
+} // namespace crumple::crash

@@ -1,0 +1,268 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/crash/CrashRun.h>
+#include <crumple/crash/CrashSweep.h>
+
+#include "PlotCanvas.h"
+
+#include <crumple/base/FileBytes.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace crumple::crash
+{
+
+namespace
+{
+
+constexpr double cKmhPerMs = 3.6;
+
+// One value list "a,b,c" into numbers; false on anything else.
+bool ParseList(std::string_view inText, std::vector<double>& outValues)
+{
+    outValues.clear();
+    std::string item;
+    std::stringstream stream{std::string(inText)};
+    while (std::getline(stream, item, ','))
+    {
+        char* end = nullptr;
+        const double value = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(value))
+            return false;
+        outValues.push_back(value);
+    }
+    return !outValues.empty();
+}
+
+std::string CasePath(std::size_t inCase)
+{
+    char name[32];
+    std::snprintf(name, sizeof(name), "case_%06zu.csv", inCase);
+    return name;
+}
+
+// The case's scenario: speed fastest, then offset, then angle.
+CrashScenario CaseScenario(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std::size_t inCase,
+                           double& outSpeed, double& outAngle, double& outOffset)
+{
+    const std::size_t speeds = inSpec.mSpeeds.size(), offsets = inSpec.mOffsets.size();
+    outSpeed = inSpec.mSpeeds[inCase % speeds];
+    outOffset = inSpec.mOffsets[(inCase / speeds) % offsets];
+    outAngle = inSpec.mAngles[inCase / (speeds * offsets)];
+    CrashScenario scenario = inScenario;
+    scenario.mImpact.mSpeed = outSpeed;
+    scenario.mImpact.mOffset = outOffset;
+    scenario.mTarget.mAngleDegrees = outAngle;
+    scenario.mPictures = false;
+    return scenario;
+}
+
+// Runs one case and writes its CSV row (no header) to the cases folder.
+void RunCase(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std::size_t inCase,
+             const std::filesystem::path& inCases)
+{
+    double speed = 0.0, angle = 0.0, offset = 0.0;
+    const CrashScenario scenario = CaseScenario(inScenario, inSpec, inCase, speed, angle, offset);
+    const Result<CrashOutcome> outcome = RunCrash(scenario, CrashRunOptions{});
+    char row[512];
+    if (outcome.HasError())
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,,,,,,,failed: %s\n", inCase, speed * cKmhPerMs, angle, offset,
+                      outcome.GetError().mMessage.c_str());
+    else
+    {
+        const CrashOutcome& o = outcome.Get();
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,ok\n", inCase,
+                      speed * cKmhPerMs, angle, offset, o.mResidualCrush[static_cast<int>(EZone::Front)],
+                      o.mResidualCrush[static_cast<int>(EZone::Any)], o.DeltaV() * cKmhPerMs, o.EnergyAbsorbed(),
+                      o.mTotalImpulse, o.mCollisions.size());
+    }
+    const std::string text = row;
+    (void)WriteFileAtomically(inCases / CasePath(inCase), std::as_bytes(std::span(text.data(), text.size())),
+                              "crumple-crash sweep");
+}
+
+// Field inIndex (0-based) of a CSV row, as a number.
+double CsvField(const std::string& inRow, int inIndex)
+{
+    std::size_t at = 0;
+    for (int comma = 0; comma < inIndex && at != std::string::npos; ++comma)
+        at = inRow.find(',', at) == std::string::npos ? std::string::npos : inRow.find(',', at) + 1;
+    return at == std::string::npos ? std::nan("") : std::strtod(inRow.c_str() + at, nullptr);
+}
+
+void DrawProgress(std::FILE* inStream, std::size_t inDone, std::size_t inTotal)
+{
+    if (inStream == nullptr)
+        return;
+    constexpr int cBar = 40;
+    const int filled = static_cast<int>(cBar * inDone / std::max<std::size_t>(inTotal, 1));
+    std::fprintf(inStream, "\r  [%s%s] %zu/%zu cases", std::string(filled, '#').c_str(),
+                 std::string(cBar - filled, ' ').c_str(), inDone, inTotal);
+    std::fflush(inStream);
+}
+
+} // namespace
+
+Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
+{
+    CrashSweepSpec spec;
+    std::string part;
+    std::stringstream stream{std::string(inText)};
+    while (std::getline(stream, part, ';'))
+    {
+        const std::size_t equals = part.find('=');
+        const std::string name = part.substr(0, equals);
+        std::vector<double> values;
+        if (equals == std::string::npos || !ParseList(std::string_view(part).substr(equals + 1), values))
+            return MakeError(EError::InvalidArgument, "--sweep: '" + part + "' is not name=v1,v2,...");
+        if (name == "speeds_km_h")
+        {
+            for (double& value : values)
+            {
+                if (!(value > 0.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: speeds_km_h must be > 0");
+                value /= cKmhPerMs;
+            }
+            spec.mSpeeds = values;
+        }
+        else if (name == "speeds_m_s")
+        {
+            for (double value : values)
+                if (!(value > 0.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: speeds_m_s must be > 0");
+            spec.mSpeeds = values;
+        }
+        else if (name == "angles_deg")
+        {
+            for (double value : values)
+                if (!(value > -90.0 && value < 90.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: angles_deg must lie in (-90, 90)");
+            spec.mAngles = values;
+        }
+        else if (name == "offsets_m")
+            spec.mOffsets = values;
+        else
+            return MakeError(EError::InvalidArgument, "--sweep: unknown list '" + name +
+                                                          "' (known: speeds_km_h, speeds_m_s, angles_deg, offsets_m)");
+    }
+    if (spec.mSpeeds.empty())
+        return MakeError(EError::InvalidArgument, "--sweep: speeds_km_h (or speeds_m_s) is required");
+    return spec;
+}
+
+Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, int inWorkers,
+                          const std::filesystem::path& inFolder, std::FILE* inProgress)
+{
+    if (inWorkers < 1)
+        return MakeError(EError::InvalidArgument, "--workers must be >= 1");
+    const std::filesystem::path cases = inFolder / "cases";
+    std::error_code error;
+    std::filesystem::remove_all(cases, error);
+    std::filesystem::create_directories(cases, error);
+    if (error)
+        return MakeError(EError::IoError, "cannot create " + cases.string() + ": " + error.message());
+    const std::size_t total = inSpec.GetCaseCount();
+
+    // Worker processes: case i in worker i mod N. Each case is a separate, deterministic run, so which
+    // process runs it does not change its row.
+    std::fflush(nullptr);
+    std::vector<pid_t> workers;
+    for (int worker = 0; worker < inWorkers; ++worker)
+    {
+        const pid_t pid = fork();
+        if (pid < 0)
+            return MakeError(EError::IoError, "cannot start a worker process");
+        if (pid == 0)
+        {
+            for (std::size_t index = static_cast<std::size_t>(worker); index < total; index += inWorkers)
+                RunCase(inScenario, inSpec, index, cases);
+            std::_Exit(0);
+        }
+        workers.push_back(pid);
+    }
+
+    // Progress: count the rows written, until every worker has finished.
+    std::size_t running = workers.size();
+    while (running > 0)
+    {
+        for (pid_t& pid : workers)
+            if (pid > 0 && waitpid(pid, nullptr, WNOHANG) == pid)
+            {
+                pid = 0;
+                --running;
+            }
+        std::size_t done = 0;
+        for (std::size_t index = 0; index < total; ++index)
+            done += std::filesystem::exists(cases / CasePath(index)) ? 1 : 0;
+        DrawProgress(inProgress, done, total);
+        if (running > 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (inProgress != nullptr)
+        std::fprintf(inProgress, "\n");
+
+    // Rows in case order, then the plot.
+    std::string csv = "case,speed_km_h,wall_angle_deg,offset_m,front_crush_m,max_crush_m,delta_v_km_h,"
+                      "energy_absorbed_J,total_impulse_N_s,collisions,status\n";
+    int failed = 0;
+    std::vector<std::array<double, 2>> points;
+    for (std::size_t index = 0; index < total; ++index)
+    {
+        Result<std::vector<std::byte>> row = ReadFileBytes(cases / CasePath(index));
+        if (row.HasError())
+        {
+            ++failed;
+            csv += std::to_string(index) + ",,,,,,,,,,failed: the worker wrote no row\n";
+            continue;
+        }
+        const std::string text(reinterpret_cast<const char*>(row.Get().data()), row.Get().size());
+        csv += text;
+        if (text.find(",ok\n") == std::string::npos)
+        {
+            ++failed;
+            continue;
+        }
+        double speed = 0.0, angle = 0.0, offset = 0.0;
+        (void)CaseScenario(inScenario, inSpec, index, speed, angle, offset);
+        points.push_back({speed * cKmhPerMs, CsvField(text, 4)});
+    }
+    if (Status status = WriteFileAtomically(inFolder / "sweep.csv", std::as_bytes(std::span(csv.data(), csv.size())),
+                                            "crumple-crash sweep");
+        status.HasError())
+        return status.GetError();
+
+    // Plot: front residual crush against impact speed (x 0 to 10 km/h above the fastest, y from 0).
+    constexpr int cWidth = 800, cHeight = 500, cLeft = 60, cBottom = 440, cRight = 770, cTop = 30;
+    double right = 10.0, top = 0.1;
+    for (const auto& point : points)
+    {
+        right = std::max(right, point[0]);
+        top = std::max(top, point[1]);
+    }
+    right = std::ceil(right / 10.0 + 1.0) * 10.0;
+    top = std::ceil(top * 10.0 + 0.5) / 10.0;
+    PlotCanvas canvas(cWidth, cHeight);
+    auto x_of = [&](double inKmh) { return cLeft + (cRight - cLeft) * inKmh / right; };
+    auto y_of = [&](double inCrush) { return cBottom - (cBottom - cTop) * inCrush / top; };
+    for (double kmh = 10.0; kmh <= right; kmh += 10.0)
+        canvas.Line(x_of(kmh), cBottom, x_of(kmh), cTop, 1, {200, 200, 200});
+    for (double crush = 0.1; crush <= top + 1e-9; crush += 0.1)
+        canvas.Line(cLeft, y_of(crush), cRight, y_of(crush), 1, {200, 200, 200});
+    canvas.Line(cLeft, cBottom, cRight, cBottom, 2, {0, 0, 0});
+    canvas.Line(cLeft, cBottom, cLeft, cTop, 2, {0, 0, 0});
+    for (const auto& point : points)
+        canvas.Disc(x_of(point[0]), y_of(point[1]), 6.0, {210, 30, 30});
+    if (Status status = canvas.Save(inFolder / "sweep.png"); status.HasError())
+        return status.GetError();
+    return failed;
+}
+
+} // namespace crumple::crash
