@@ -5,7 +5,7 @@
 set(sweep "speeds_km_h=20,35,50;angles_deg=0,20;offsets_m=0,0.4")
 foreach(workers 1 3)
     file(REMOVE_RECURSE ${OUT}/w${workers})
-    execute_process(COMMAND ${CRASH} ${SCENARIO} --sweep ${sweep} --workers ${workers} --out ${OUT}/w${workers}
+    execute_process(COMMAND ${CRASH} ${SCENARIO} --sweep "${sweep}" --workers ${workers} --out ${OUT}/w${workers}
                     RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
     if(NOT code EQUAL 0)
         message(FATAL_ERROR "the sweep in ${workers} workers exited ${code}:\n${out}${err}")
