@@ -36,7 +36,17 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     };
     if (!inSettings.mFloating)
         add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
-    if (!inSettings.mDriveOnly && !inSettings.mFloating)
+    if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
+        add_static(std::make_unique<btCylinderShapeZ>(btVector3(btScalar(inSettings.mPoleRadius),
+                                                                btScalar(inSettings.mPoleRadius), 3)),
+                   btVector3(0, 0, 3));
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mOverlapFraction < 1.0)
+    {
+        // A 2 m thick, 10 m wide wall from y = edge to edge + 10.
+        const double edge = CrashWallLeftEdge(inSettings);
+        add_static(std::make_unique<btBoxShape>(btVector3(1, 5, 3)), btVector3(1, btScalar(edge + 5.0), 3));
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
         // A 2 m thick wall whose face is the plane through the origin turned by mWallAngleDegrees.
         const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;

@@ -55,6 +55,18 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
 
 Transform CrashCarStart(const EngineCrashSettings& inSettings)
 {
+    if (inSettings.mPoleRadius > 0.0)
+    {
+        // A pole at the origin: the car's nearest point mGap before its surface, at y = mOffset.
+        Transform start;
+        start.mRotation = Eigen::AngleAxisd(inSettings.mYawDegrees * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+        double reach = 0.0;
+        for (double sx : {-1.0, 1.0})
+            for (double sy : {-1.0, 1.0})
+                reach = std::max(reach, (start.mRotation * Vec3(sx * inSettings.mHalfExtents.x(), sy * inSettings.mHalfExtents.y(), 0.0)).x());
+        start.mTranslation = Vec3(-inSettings.mPoleRadius - inSettings.mGap - reach, inSettings.mOffset, inSettings.mHalfExtents.z());
+        return start;
+    }
     // Wall face: the plane n . x = 0 with n = (cos a, sin a, 0) pointing into the wall.
     const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;
     const Vec3 normal(std::cos(angle), std::sin(angle), 0.0);
@@ -69,6 +81,12 @@ Transform CrashCarStart(const EngineCrashSettings& inSettings)
     const double x = (-inSettings.mGap - reach - normal.y() * inSettings.mOffset) / normal.x();
     start.mTranslation = Vec3(x, inSettings.mOffset, h.z());
     return start;
+}
+
+double CrashWallLeftEdge(const EngineCrashSettings& inSettings)
+{
+    // The wall spans y >= edge: it overlaps mOverlapFraction of the car's width on the car's +y side.
+    return inSettings.mOffset + inSettings.mHalfExtents.y() - 2.0 * inSettings.mHalfExtents.y() * inSettings.mOverlapFraction;
 }
 
 } // namespace crumple::common

@@ -40,11 +40,16 @@ struct EngineCrashSettings
     double mWallAngleDegrees = 0.0;    ///< The wall turned about the vertical through the origin (degrees)
     double mOffset = 0.0;              ///< The car's start y, sideways from the wall's centre line (m)
     double mMaxTotalDeformation = 0.5; ///< Most any vertex of the car may ever move (m)
+    double mPoleRadius = 0.0;          ///< > 0: the target is a vertical pole of this radius at the origin, not a wall
+    double mOverlapFraction = 1.0;     ///< < 1: the wall covers only this share of the car's width, on its +y side
 };
 
 /// The car's start: centre x so that its nearest bottom corner is mGap from the (possibly turned) wall face,
 /// at y = mOffset, resting on the ground, yawed by mYawDegrees.
 Transform CrashCarStart(const EngineCrashSettings& inSettings);
+
+/// An offset wall (mOverlapFraction < 1) covers y >= this (m); a full wall spans y in [-10, 10].
+double CrashWallLeftEdge(const EngineCrashSettings& inSettings);
 
 /// What a crash produced, in the car's body frame.
 struct EngineCrashResult

@@ -24,7 +24,18 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (!inSettings.mFloating)
         dCreatePlane(mSpace, 0, 0, 1, 0);
-    if (!inSettings.mDriveOnly && !inSettings.mFloating)
+    if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
+    {
+        dGeomID pole = dCreateCylinder(mSpace, inSettings.mPoleRadius, 6.0); // axis along z
+        dGeomSetPosition(pole, 0, 0, 3);
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mOverlapFraction < 1.0)
+    {
+        // A 2 m thick, 10 m wide wall from y = edge to edge + 10.
+        dGeomID wall = dCreateBox(mSpace, 2, 10, 6);
+        dGeomSetPosition(wall, 1, CrashWallLeftEdge(inSettings) + 5.0, 3);
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
         // A 2 m thick wall whose face is the plane through the origin turned by mWallAngleDegrees.
         const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;

@@ -39,6 +39,10 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;
     settings.mOffset = inScenario.mImpact.mOffset;
     settings.mWallAngleDegrees = inScenario.mTarget.mAngleDegrees;
+    if (inScenario.mTarget.mType == ETarget::Pole)
+        settings.mPoleRadius = inScenario.mTarget.mPoleRadius;
+    if (inScenario.mTarget.mType == ETarget::OffsetWall)
+        settings.mOverlapFraction = inScenario.mTarget.mOverlapPercent / 100.0;
     settings.mTimeStep = inScenario.mTimeStep;
     settings.mDuration = inScenario.mDuration;
     settings.mHalfExtents = 0.5 * vehicle.mBoxSize;

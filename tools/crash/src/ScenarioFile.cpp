@@ -627,12 +627,29 @@ class ScenarioReader
     {
         std::size_t type = static_cast<std::size_t>(ioTarget.mType);
         if (!ExpectObject(inTarget, inPointer) ||
-            !CheckKeys(inTarget, inPointer, {{"type", "angle_deg"}, {{"angle", "angles are angle_deg"}}}) ||
-            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall"}, {}, false, type) ||
+            !CheckKeys(inTarget, inPointer,
+                       {{"type", "angle_deg", "radius_m", "overlap_percent"},
+                        {{"angle", "angles are angle_deg"},
+                         {"radius", "radii are radius_m"},
+                         {"overlap", "overlaps are overlap_percent"}}}) ||
+            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall", "pole", "offset_wall"}, {}, false, type) ||
             !ReadNumber(inTarget, inPointer, "angle_deg", NumberRange{-90.0, true, 90.0, true}, false,
-                        ioTarget.mAngleDegrees))
+                        ioTarget.mAngleDegrees) ||
+            !ReadNumber(inTarget, inPointer, "radius_m", NumberRange::Positive(), false, ioTarget.mPoleRadius) ||
+            !ReadNumber(inTarget, inPointer, "overlap_percent", NumberRange{0.0, true, 100.0, false}, false,
+                        ioTarget.mOverlapPercent))
             return false;
         ioTarget.mType = static_cast<ETarget>(type);
+        // Each key belongs to its target type.
+        const struct
+        {
+            const char* mKey;
+            ETarget mType;
+        } owners[] = {{"angle_deg", ETarget::RigidWall}, {"radius_m", ETarget::Pole}, {"overlap_percent", ETarget::OffsetWall}};
+        for (const auto& owner : owners)
+            if (inTarget.contains(owner.mKey) && ioTarget.mType != owner.mType)
+                return Fail(EError::InvalidArgument, Child(inPointer, owner.mKey),
+                            "does not apply to this target type");
         return true;
     }
 

@@ -28,6 +28,11 @@ enum class ETarget : std::uint8_t
 {
     /// A fixed rigid wall; its face turned by TargetSpec::mAngleDegrees about the vertical from facing the car
     RigidWall,
+    /// A fixed rigid vertical pole of TargetSpec::mPoleRadius on the car's path (side-impact and tree tests)
+    Pole,
+    /// A fixed rigid wall that covers only TargetSpec::mOverlapPercent of the car's width, on its left
+    /// (+y) side (the offset frontal tests; rigid here, where IIHS/Euro NCAP use a deformable face)
+    OffsetWall,
 };
 
 /// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
@@ -56,6 +61,8 @@ struct TargetSpec
 {
     ETarget mType = ETarget::RigidWall;
     double mAngleDegrees = 0.0; ///< Rigid wall: angle between its normal and the car's path (deg), in (-90, 90)
+    double mPoleRadius = 0.127; ///< Pole: radius (m), > 0 (254 mm, the FMVSS 214 pole)
+    double mOverlapPercent = 40.0; ///< Offset wall: share of the car's width it covers (%), in (0, 100]
 };
 
 /// How the vehicle arrives.
