@@ -9,9 +9,10 @@ CRUMPLE_BUILD_DIR="${CRUMPLE_BUILD_DIR:-$CRUMPLE_ROOT/build-release}"
 CRUMPLE_JOBS="${CRUMPLE_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 # Debian packages every build needs (the optional adapters switch themselves off without theirs; tetgen is
-# the optional command-line tetrahedralizer that fem surface import runs).
+# the optional command-line tetrahedralizer that fem surface import runs; chromium opens crash reports in a
+# test).
 CRUMPLE_PACKAGES=(cmake make g++ pkg-config libeigen3-dev catch2 libbullet-dev libode-dev libassimp-dev
-    libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev tetgen nlohmann-json3-dev)
+    libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev tetgen nlohmann-json3-dev chromium)
 
 crumple_ensure_packages() {
     local missing=()

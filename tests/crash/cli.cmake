@@ -58,3 +58,18 @@ add_test(NAME "crash: a sweep writes the same rows in 1 or 3 worker processes"
             -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/angled_wall_30deg_ode.json -DOUT=${crash_out}/sweep
             -P ${CMAKE_CURRENT_LIST_DIR}/SweepWorkers.cmake)
 set_tests_properties("crash: a sweep writes the same rows in 1 or 3 worker processes" PROPERTIES LABELS crash)
+
+# The HTML report in headless Chromium (Debian's chromium): the screenshot shows the pictures.
+find_program(CRUMPLE_CHROMIUM NAMES chromium chromium-browser)
+if(CRUMPLE_CHROMIUM AND CRUMPLE_STB_INCLUDE_DIR)
+    add_executable(crumple-png-check ${CMAKE_CURRENT_LIST_DIR}/PngCheck.cpp)
+    target_include_directories(crumple-png-check SYSTEM PRIVATE ${CRUMPLE_STB_INCLUDE_DIR})
+    add_test(NAME "crash: report.html opens in headless Chromium and shows its pictures"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DCHROMIUM=${CRUMPLE_CHROMIUM}
+                -DCHECK=$<TARGET_FILE:crumple-png-check>
+                -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/frontal_rigid_barrier_56kmh.json
+                -DOUT=${crash_out}/html -P ${CMAKE_CURRENT_LIST_DIR}/ReportScreenshot.cmake)
+    set_tests_properties("crash: report.html opens in headless Chromium and shows its pictures" PROPERTIES LABELS crash)
+else()
+    message(STATUS "crumple: the report.html screenshot test needs chromium (apt-get install chromium) and stb")
+endif()
