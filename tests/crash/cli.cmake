@@ -25,7 +25,8 @@ set(crash_malformed
     "missing_mesh|/vehicle/mesh: file not found"
     "truncated|line"
     "unknown_engine|/engine"
-    "nan_speed|/impact/speed_km_h: must be a number")
+    "nan_speed|/impact/speed_km_h: must be a number"
+    "corrupt_mesh|cannot read")
 foreach(entry IN LISTS crash_malformed)
     string(REPLACE "|" ";" parts "${entry}")
     list(GET parts 0 name)

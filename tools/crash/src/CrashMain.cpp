@@ -103,6 +103,10 @@ int RunCampbell(const CrashScenario& inScenario, const CampbellLine& inLine, boo
 
 } // namespace
 
+int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
+        bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
+        const std::string& inSource, bool inPictures, const std::filesystem::path& inOut);
+
 int main(int argc, char** argv)
 {
     std::filesystem::path scenario_path, out;
@@ -203,41 +207,56 @@ int main(int argc, char** argv)
     if (out.empty())
         out = std::filesystem::path("crash-output") / scenario_path.stem();
     std::error_code error;
+    const bool made_folder = !std::filesystem::exists(out, error);
     std::filesystem::create_directories(out, error);
     if (error)
     {
         std::fprintf(stderr, "crumple-crash: cannot create %s: %s\n", out.string().c_str(), error.message().c_str());
         return cExitBadInput;
     }
+    // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing.
+    const int status = Run(scenario.Get(), sweep, sweep_spec.Get(), workers, calibrate || campbell_check, calibrate,
+                           line, preset_name, source, pictures, out);
+    if (status == cExitBadInput && made_folder)
+        std::filesystem::remove_all(out, error);
+    return status;
+}
 
-    if (!sweep.empty())
+int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
+        bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
+        const std::string& inSource, bool inPictures, const std::filesystem::path& inOut)
+{
+    const CrashScenario& scenario = inScenario;
+    const std::filesystem::path& out = inOut;
+
+    if (!inSweep.empty())
     {
-        std::printf("crumple-crash: sweeping %s over %zu cases in %d workers\n", scenario.Get().mName.c_str(),
-                    sweep_spec.Get().GetCaseCount(), workers);
-        Result<int> failed = RunCrashSweep(scenario.Get(), sweep_spec.Get(), workers, out, stdout);
+        std::printf("crumple-crash: sweeping %s over %zu cases in %d workers\n", scenario.mName.c_str(),
+                    inSweepSpec.GetCaseCount(), inWorkers);
+        Result<int> failed = RunCrashSweep(scenario, inSweepSpec, inWorkers, out, stdout);
         if (failed.HasError())
         {
             std::fprintf(stderr, "crumple-crash: %s\n", failed.GetError().mMessage.c_str());
             return cExitBadInput;
         }
-        std::printf("crumple-crash: %d of %zu cases failed; %s, %s\n", failed.Get(), sweep_spec.Get().GetCaseCount(),
+        std::printf("crumple-crash: %d of %zu cases failed; %s, %s\n", failed.Get(), inSweepSpec.GetCaseCount(),
                     (out / "sweep.csv").string().c_str(), (out / "sweep.png").string().c_str());
         return failed.Get() == 0 ? cExitPass : cExitFail;
     }
-    if (calibrate || campbell_check)
-        return RunCampbell(scenario.Get(), line, calibrate, preset_name, source, out);
+    if (inCampbell)
+        return RunCampbell(scenario, inLine, inCalibrate, inPresetName, inSource, out);
 
     // Run, then the outputs: replay (written during the run), report, deformed mesh, pictures.
-    std::printf("crumple-crash: running %s on %s for %.2f s\n", scenario.Get().mName.c_str(),
-                ToString(scenario.Get().mEngine), scenario.Get().mDuration);
-    Result<CrashOutcome> outcome = RunCrash(scenario.Get(), CrashRunOptions{out / "replay.crumple"});
+    std::printf("crumple-crash: running %s on %s for %.2f s\n", scenario.mName.c_str(),
+                ToString(scenario.mEngine), scenario.mDuration);
+    Result<CrashOutcome> outcome = RunCrash(scenario, CrashRunOptions{out / "replay.crumple"});
     if (outcome.HasError())
     {
         std::fprintf(stderr, "crumple-crash: %s\n", outcome.GetError().mMessage.c_str());
         return cExitBadInput;
     }
-    const std::vector<ExpectationResult> results = CheckExpectations(scenario.Get(), outcome.Get());
-    if (Status status = WriteReportJson(out / "report.json", scenario.Get(), outcome.Get(), results); status.HasError())
+    const std::vector<ExpectationResult> results = CheckExpectations(scenario, outcome.Get());
+    if (Status status = WriteReportJson(out / "report.json", scenario, outcome.Get(), results); status.HasError())
     {
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
         return cExitBadInput;
@@ -246,13 +265,13 @@ int main(int argc, char** argv)
                                          outcome.Get().mRestMesh.mTriangles);
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
-    if (pictures && scenario.Get().mPictures)
+    if (inPictures && scenario.mPictures)
         if (Status status = WritePictures(out, outcome.Get()); status.HasError())
             std::printf("crumple-crash: pictures skipped: %s\n", status.GetError().mMessage.c_str());
-    if (Status status = WriteReportHtml(out / "report.html", scenario.Get(), outcome.Get(), results, out);
+    if (Status status = WriteReportHtml(out / "report.html", scenario, outcome.Get(), results, out);
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
-    PrintSummary(stdout, scenario.Get(), outcome.Get(), results);
+    PrintSummary(stdout, scenario, outcome.Get(), results);
     bool passed = true;
     for (const ExpectationResult& result : results)
         passed = passed && result.mPassed;
