@@ -36,7 +36,31 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     };
     if (!inSettings.mFloating)
         add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
-    if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
+    if (inSettings.mTargetVehicle)
+    {
+        // A second car, a dynamic box on the ground.
+        const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
+        const Vec3& th = target.mHalfExtents;
+        auto target_shape = std::make_unique<btBoxShape>(btVector3(btScalar(th.x()), btScalar(th.y()), btScalar(th.z())));
+        btVector3 target_inertia;
+        target_shape->calculateLocalInertia(btScalar(target.mMass), target_inertia);
+        const Transform place = TargetVehicleStart(target);
+        const double target_yaw = target.mYawDegrees * std::numbers::pi / 180.0;
+        btRigidBody::btRigidBodyConstructionInfo target_info(btScalar(target.mMass), nullptr, target_shape.get(), target_inertia);
+        target_info.m_startWorldTransform = btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(target_yaw)),
+                                                        btVector3(btScalar(place.mTranslation.x()), btScalar(place.mTranslation.y()),
+                                                                  btScalar(place.mTranslation.z())));
+        target_info.m_friction = btScalar(0.5);
+        auto target_body = std::make_unique<btRigidBody>(target_info);
+        target_body->setLinearVelocity(btVector3(btScalar(target.mSpeed * std::cos(target_yaw)),
+                                                 btScalar(target.mSpeed * std::sin(target_yaw)), 0));
+        target_body->setActivationState(DISABLE_DEACTIVATION);
+        mWorld->addRigidBody(target_body.get());
+        mTarget = target_body.get();
+        mShapes.push_back(std::move(target_shape));
+        mObjects.push_back(std::move(target_body));
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
         add_static(std::make_unique<btCylinderShapeZ>(btVector3(btScalar(inSettings.mPoleRadius),
                                                                 btScalar(inSettings.mPoleRadius), 3)),
                    btVector3(0, 0, 3));
@@ -98,6 +122,9 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         return;
     const BodyId car_body = mAdapter->AddBody(*mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
+    if (mTarget != nullptr)
+        mTargetObject = mDamage.CreateDeformableObject(mAdapter->AddBody(*mTarget).Get(),
+                                                       TargetVehicleObject(*inSettings.mTargetVehicle)).Get();
     mDamage.AddListener(&mCounter);
 }
 

@@ -30,6 +30,8 @@ public:
     bullet::BulletAdapter& GetAdapter() { return *mAdapter; }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// The target vehicle's deformable object (invalid without one)
+    plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
 
 private:
@@ -45,6 +47,8 @@ private:
     plugin::DamageWorld mDamage;
     std::unique_ptr<bullet::BulletAdapter> mAdapter;
     plugin::ObjectId mCarObject;
+    btRigidBody* mTarget = nullptr;
+    plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
 };
 

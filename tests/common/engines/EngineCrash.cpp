@@ -83,6 +83,27 @@ Transform CrashCarStart(const EngineCrashSettings& inSettings)
     return start;
 }
 
+Transform TargetVehicleStart(const TargetVehicleSettings& inTarget)
+{
+    Transform start;
+    start.mRotation = Eigen::AngleAxisd(inTarget.mYawDegrees * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+    double reach = 0.0;
+    for (double sx : {-1.0, 1.0})
+        for (double sy : {-1.0, 1.0})
+            reach = std::max(reach, -(start.mRotation * Vec3(sx * inTarget.mHalfExtents.x(), sy * inTarget.mHalfExtents.y(), 0.0)).x());
+    start.mTranslation = Vec3(reach, inTarget.mOffset, inTarget.mHalfExtents.z());
+    return start;
+}
+
+DeformableObjectSettings TargetVehicleObject(const TargetVehicleSettings& inTarget)
+{
+    DeformableObjectSettings object;
+    object.mMesh = MakeBoxMesh(inTarget.mHalfExtents, BoxSegmentsForTriangles(inTarget.mHalfExtents, 4000));
+    object.mMaterial = inTarget.mMaterial;
+    object.mFittedControlCount = {10, 6, 6};
+    return object;
+}
+
 double CrashWallLeftEdge(const EngineCrashSettings& inSettings)
 {
     // The wall spans y >= edge: it overlaps mOverlapFraction of the car's width on the car's +y side.

@@ -15,6 +15,17 @@ namespace crumple::common
 /// The same scripted crash for every engine: a box car on a ground plane driven into a static wall at
 /// x = 0 whose face is the plane x = 0, head-on or at a heading angle. Gravity and ground friction are on,
 /// so the car also has resting contacts with the ground that must make no damage.
+/// A second car as the target: a box rigid body, deformable too, standing or moving.
+struct TargetVehicleSettings
+{
+    Vec3 mHalfExtents{2.2, 0.85, 0.7}; ///< Half size (m), its body frame x forward
+    double mMass = 1500.0;             ///< kg
+    double mYawDegrees = 90.0;         ///< Heading from +x (degrees); 90: broadside to the subject car (side impact)
+    double mSpeed = 0.0;               ///< Along its heading (m/s)
+    double mOffset = 0.0;              ///< Its centre's y (m)
+    plugin::DamageMaterial mMaterial;  ///< Its body material
+};
+
 struct EngineCrashSettings
 {
     Vec3 mHalfExtents{2.1, 0.9, 0.7};  ///< Car half size (m), body frame x forward, z up
@@ -42,11 +53,19 @@ struct EngineCrashSettings
     double mMaxTotalDeformation = 0.5; ///< Most any vertex of the car may ever move (m)
     double mPoleRadius = 0.0;          ///< > 0: the target is a vertical pole of this radius at the origin, not a wall
     double mOverlapFraction = 1.0;     ///< < 1: the wall covers only this share of the car's width, on its +y side
+    /// Set: the target is this vehicle (its nearest point at x = 0) instead of a wall or pole
+    std::optional<TargetVehicleSettings> mTargetVehicle;
 };
 
 /// The car's start: centre x so that its nearest bottom corner is mGap from the (possibly turned) wall face,
 /// at y = mOffset, resting on the ground, yawed by mYawDegrees.
 Transform CrashCarStart(const EngineCrashSettings& inSettings);
+
+/// The target vehicle's start: yawed, resting on the ground, its nearest point at x = 0, centre at y = mOffset.
+Transform TargetVehicleStart(const TargetVehicleSettings& inTarget);
+
+/// The target vehicle's deformable-object settings (a box mesh of about 4,000 triangles).
+plugin::DeformableObjectSettings TargetVehicleObject(const TargetVehicleSettings& inTarget);
 
 /// An offset wall (mOverlapFraction < 1) covers y >= this (m); a full wall spans y in [-10, 10].
 double CrashWallLeftEdge(const EngineCrashSettings& inSettings);

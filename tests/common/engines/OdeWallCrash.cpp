@@ -24,7 +24,26 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (!inSettings.mFloating)
         dCreatePlane(mSpace, 0, 0, 1, 0);
-    if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
+    if (inSettings.mTargetVehicle)
+    {
+        // A second car, a dynamic box on the ground.
+        const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
+        const Vec3& th = target.mHalfExtents;
+        mTarget = dBodyCreate(mWorld);
+        dMass target_mass;
+        dMassSetBoxTotal(&target_mass, target.mMass, 2 * th.x(), 2 * th.y(), 2 * th.z());
+        dBodySetMass(mTarget, &target_mass);
+        const Transform place = TargetVehicleStart(target);
+        dBodySetPosition(mTarget, place.mTranslation.x(), place.mTranslation.y(), place.mTranslation.z());
+        const double target_yaw = target.mYawDegrees * std::numbers::pi / 180.0;
+        dMatrix3 target_rotation;
+        dRFromAxisAndAngle(target_rotation, 0, 0, 1, target_yaw);
+        dBodySetRotation(mTarget, target_rotation);
+        dBodySetLinearVel(mTarget, target.mSpeed * std::cos(target_yaw), target.mSpeed * std::sin(target_yaw), 0);
+        dBodySetAutoDisableFlag(mTarget, 0);
+        dGeomSetBody(dCreateBox(mSpace, 2 * th.x(), 2 * th.y(), 2 * th.z()), mTarget);
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
     {
         dGeomID pole = dCreateCylinder(mSpace, inSettings.mPoleRadius, 6.0); // axis along z
         dGeomSetPosition(pole, 0, 0, 3);
@@ -84,6 +103,9 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
         return;
     const BodyId car_body = mAdapter->AddBody(mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
+    if (mTarget != nullptr)
+        mTargetObject = mDamage.CreateDeformableObject(mAdapter->AddBody(mTarget).Get(),
+                                                       TargetVehicleObject(*inSettings.mTargetVehicle)).Get();
     mDamage.AddListener(&mCounter);
 }
 

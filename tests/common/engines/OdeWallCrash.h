@@ -30,6 +30,8 @@ public:
     ode::OdeAdapter& GetAdapter() { return *mAdapter; }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// The target vehicle's deformable object (invalid without one)
+    plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
 
 private:
@@ -43,6 +45,8 @@ private:
     plugin::DamageWorld mDamage;
     std::unique_ptr<ode::OdeAdapter> mAdapter;
     plugin::ObjectId mCarObject;
+    dBodyID mTarget = nullptr;
+    plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
 };
 

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -86,6 +87,8 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         crush[ToString(zone)] = inOutcome.mResidualCrush[static_cast<int>(zone)];
     report["residual_crush_m"] = crush;
+    if (!std::isnan(inOutcome.mTargetResidualCrush))
+        report["target_vehicle_residual_crush_m"] = inOutcome.mTargetResidualCrush;
     report["total_impulse_N_s"] = inOutcome.mTotalImpulse;
     report["peak_impulse_N_s"] = inOutcome.mPeakImpulse;
     report["delta_v_m_s"] = inOutcome.DeltaV();
@@ -131,6 +134,8 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     std::fprintf(inStream, "  delta-v %.2f km/h, energy absorbed %.1f kJ, %zu collisions, impulse %.0f N s (peak %.0f)\n",
                  inOutcome.DeltaV() * cKmhPerMs, inOutcome.EnergyAbsorbed() / 1000.0, inOutcome.mCollisions.size(),
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
+    if (!std::isnan(inOutcome.mTargetResidualCrush))
+        std::fprintf(inStream, "  target vehicle residual crush %.3f m\n", inOutcome.mTargetResidualCrush);
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);
@@ -161,6 +166,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("energy absorbed", Number(inOutcome.EnergyAbsorbed() / 1000.0, 2) + " kJ");
     row("total impulse", Number(inOutcome.mTotalImpulse, 0) + " N s (peak " + Number(inOutcome.mPeakImpulse, 0) + ")");
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
+    if (!std::isnan(inOutcome.mTargetResidualCrush))
+        row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";
     for (const ExpectationResult& result : inResults)
         html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue * result.mExpectation.mDisplayScale, 4) +

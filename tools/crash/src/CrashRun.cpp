@@ -43,6 +43,19 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         settings.mPoleRadius = inScenario.mTarget.mPoleRadius;
     if (inScenario.mTarget.mType == ETarget::OffsetWall)
         settings.mOverlapFraction = inScenario.mTarget.mOverlapPercent / 100.0;
+    if (inScenario.mTarget.mType == ETarget::Vehicle)
+    {
+        const TargetSpec& target = inScenario.mTarget;
+        common::TargetVehicleSettings vehicle;
+        vehicle.mHalfExtents = 0.5 * target.mVehicleSize;
+        vehicle.mMass = target.mVehicleMass;
+        vehicle.mYawDegrees = target.mVehicleHeadingDegrees;
+        vehicle.mSpeed = target.mVehicleSpeed;
+        vehicle.mOffset = target.mVehicleOffset;
+        vehicle.mMaterial = inScenario.mVehicle.mMaterial; // the same body material as the subject car
+        settings.mTargetVehicle = vehicle;
+        settings.mWallAngleDegrees = 0.0;
+    }
     settings.mTimeStep = inScenario.mTimeStep;
     settings.mDuration = inScenario.mDuration;
     settings.mHalfExtents = 0.5 * vehicle.mBoxSize;
@@ -111,6 +124,11 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     outcome.mNormals = car.GetNormals();
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
+    if (scene.GetTargetObject().IsValid())
+    {
+        const ffd::FfdDeformer& target = scene.GetDamage().GetObject(scene.GetTargetObject())->GetDeformer();
+        outcome.mTargetResidualCrush = ResidualCrush(target.GetRestMesh(), target.GetPositions(), EZone::Any);
+    }
     return outcome;
 }
 

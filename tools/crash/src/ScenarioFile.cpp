@@ -626,26 +626,42 @@ class ScenarioReader
     bool ReadTarget(const Json& inTarget, const std::string& inPointer, TargetSpec& ioTarget)
     {
         std::size_t type = static_cast<std::size_t>(ioTarget.mType);
+        double speed_km_h = ioTarget.mVehicleSpeed * 3.6;
         if (!ExpectObject(inTarget, inPointer) ||
             !CheckKeys(inTarget, inPointer,
-                       {{"type", "angle_deg", "radius_m", "overlap_percent"},
+                       {{"type", "angle_deg", "radius_m", "overlap_percent", "mass_kg", "box_size_m", "heading_deg",
+                         "speed_km_h", "offset_m"},
                         {{"angle", "angles are angle_deg"},
                          {"radius", "radii are radius_m"},
-                         {"overlap", "overlaps are overlap_percent"}}}) ||
-            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall", "pole", "offset_wall"}, {}, false, type) ||
+                         {"overlap", "overlaps are overlap_percent"},
+                         {"mass", "masses are mass_kg"},
+                         {"box_size", "box sizes are box_size_m"},
+                         {"heading", "headings are heading_deg"},
+                         {"speed", "target speeds are speed_km_h"},
+                         {"offset", "offsets are offset_m"}}}) ||
+            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall", "pole", "offset_wall", "vehicle"}, {}, false, type) ||
             !ReadNumber(inTarget, inPointer, "angle_deg", NumberRange{-90.0, true, 90.0, true}, false,
                         ioTarget.mAngleDegrees) ||
             !ReadNumber(inTarget, inPointer, "radius_m", NumberRange::Positive(), false, ioTarget.mPoleRadius) ||
             !ReadNumber(inTarget, inPointer, "overlap_percent", NumberRange{0.0, true, 100.0, false}, false,
-                        ioTarget.mOverlapPercent))
+                        ioTarget.mOverlapPercent) ||
+            !ReadNumber(inTarget, inPointer, "mass_kg", NumberRange::Positive(), false, ioTarget.mVehicleMass) ||
+            !ReadVec3(inTarget, inPointer, "box_size_m", NumberRange::Positive(), ioTarget.mVehicleSize) ||
+            !ReadNumber(inTarget, inPointer, "heading_deg", NumberRange::Any(), false, ioTarget.mVehicleHeadingDegrees) ||
+            !ReadNumber(inTarget, inPointer, "speed_km_h", NumberRange::NonNegative(), false, speed_km_h) ||
+            !ReadNumber(inTarget, inPointer, "offset_m", NumberRange::Any(), false, ioTarget.mVehicleOffset))
             return false;
+        ioTarget.mVehicleSpeed = speed_km_h / 3.6;
         ioTarget.mType = static_cast<ETarget>(type);
         // Each key belongs to its target type.
         const struct
         {
             const char* mKey;
             ETarget mType;
-        } owners[] = {{"angle_deg", ETarget::RigidWall}, {"radius_m", ETarget::Pole}, {"overlap_percent", ETarget::OffsetWall}};
+        } owners[] = {{"angle_deg", ETarget::RigidWall},   {"radius_m", ETarget::Pole},
+                      {"overlap_percent", ETarget::OffsetWall}, {"mass_kg", ETarget::Vehicle},
+                      {"box_size_m", ETarget::Vehicle},     {"heading_deg", ETarget::Vehicle},
+                      {"speed_km_h", ETarget::Vehicle},     {"offset_m", ETarget::Vehicle}};
         for (const auto& owner : owners)
             if (inTarget.contains(owner.mKey) && ioTarget.mType != owner.mType)
                 return Fail(EError::InvalidArgument, Child(inPointer, owner.mKey),

@@ -7,6 +7,7 @@
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <array>
+#include <limits>
 #include <filesystem>
 #include <span>
 #include <vector>
@@ -39,6 +40,8 @@ struct CrashOutcome
     std::vector<Vec3> mRestNormals;         ///< Its vertex normals before, #V
     Transform mStartTransform;              ///< Car body to world at the start
     Transform mEndTransform;                ///< Car body to world at the end
+    double mTargetResidualCrush = std::numeric_limits<double>::quiet_NaN(); ///< Target vehicle's largest residual
+                                                                            ///< displacement (m); NaN without one
 
     /// |v_end - v_start| (m/s)
     double DeltaV() const { return (mEndVelocity - mStartVelocity).norm(); }

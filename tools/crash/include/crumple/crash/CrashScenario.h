@@ -33,6 +33,9 @@ enum class ETarget : std::uint8_t
     /// A fixed rigid wall that covers only TargetSpec::mOverlapPercent of the car's width, on its left
     /// (+y) side (the offset frontal tests; rigid here, where IIHS/Euro NCAP use a deformable face)
     OffsetWall,
+    /// Another car: a deformable box body of TargetSpec::mVehicle*, standing or moving, its nearest point on
+    /// the subject car's path
+    Vehicle,
 };
 
 /// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
@@ -63,6 +66,11 @@ struct TargetSpec
     double mAngleDegrees = 0.0; ///< Rigid wall: angle between its normal and the car's path (deg), in (-90, 90)
     double mPoleRadius = 0.127; ///< Pole: radius (m), > 0 (254 mm, the FMVSS 214 pole)
     double mOverlapPercent = 40.0; ///< Offset wall: share of the car's width it covers (%), in (0, 100]
+    double mVehicleMass = 1500.0;              ///< Vehicle: kg, > 0
+    Vec3 mVehicleSize{4.4, 1.7, 1.4};          ///< Vehicle: box size (m), each > 0
+    double mVehicleHeadingDegrees = 90.0;      ///< Vehicle: heading from the subject's path (deg); 90 = side impact
+    double mVehicleSpeed = 0.0;                ///< Vehicle: speed along its heading (m/s), >= 0
+    double mVehicleOffset = 0.0;               ///< Vehicle: its centre's sideways position (m)
 };
 
 /// How the vehicle arrives.
