@@ -226,7 +226,9 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
          "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, box_size_m, "
          "mass_kg, "
-         "inertia_kg_m2, control_count, material)"},
+         "inertia_kg_m2, inertia_from, control_count, material)"},
+        {Minimal(R"("mass_kg": 1200, "inertia_from": "mesh_shell")"), EError::InvalidArgument,
+         "/vehicle/inertia_from: \"mesh_shell\" needs a mesh"},
         {Minimal(mass, R"("speed_mph": 35)"), EError::InvalidArgument,
          "/impact/speed_mph: unknown key; speeds are speed_km_h or speed_m_s"},
         {Minimal(mass, speed, R"("duration_ms": 600)"), EError::InvalidArgument,

@@ -25,6 +25,27 @@ namespace crumple::crash
 namespace
 {
 
+// Principal moments (the diagonal) of a uniform thin shell of mass inMass over the mesh's triangles, about
+// inCentre: a triangle of area A and corners x_i has integral x x^T dA = A / 12 (sum x_i x_i^T + s s^T),
+// s = sum x_i.
+Vec3 ShellInertia(const ffd::TriangleMesh& inMesh, const Vec3& inCentre, double inMass)
+{
+    Mat3 second = Mat3::Zero();
+    double area = 0.0;
+    for (const auto& triangle : inMesh.mTriangles)
+    {
+        const Vec3 a = inMesh.mPositions[triangle[0]] - inCentre, b = inMesh.mPositions[triangle[1]] - inCentre,
+                   c = inMesh.mPositions[triangle[2]] - inCentre;
+        const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
+        const Vec3 s = a + b + c;
+        second += triangle_area / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+        area += triangle_area;
+    }
+    second *= inMass / area;
+    const Mat3 inertia = second.trace() * Mat3::Identity() - second;
+    return inertia.diagonal();
+}
+
 // The scenario in the shared engine scene's terms.
 Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenario)
 {
@@ -75,6 +96,8 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);
         settings.mHalfExtents = 0.5 * (bounds.mMax - bounds.mMin);
+        if (vehicle.mInertiaFromMesh)
+            settings.mInertia = ShellInertia(loaded.Get(), 0.5 * (bounds.mMin + bounds.mMax), vehicle.mMass);
         settings.mCarMesh = std::move(loaded.Get());
     }
     return settings;

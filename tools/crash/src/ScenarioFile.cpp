@@ -452,7 +452,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "box_size_m", "mass_kg", "inertia_kg_m2",
-                         "control_count", "material"},
+                         "inertia_from", "control_count", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
                          {"mass", "masses are mass_kg"},
@@ -508,6 +508,19 @@ class ScenarioReader
             ioVehicle.mInertia = inertia;
         }
 
+        // Inertia source when no moments are given: the collision box or the mesh's surface.
+        if (const auto from = inVehicle.find("inertia_from"); from != inVehicle.end())
+        {
+            std::size_t choice = ioVehicle.mInertiaFromMesh ? 1 : 0;
+            if (!ReadEnum(inVehicle, inPointer, "inertia_from", {"box", "mesh_shell"}, {}, false, choice))
+                return false;
+            if (choice == 1 && ioVehicle.mMesh.empty())
+                return Fail(EError::InvalidArgument, Child(inPointer, "inertia_from"), "\"mesh_shell\" needs a mesh");
+            if (inVehicle.contains("inertia_kg_m2"))
+                return Fail(EError::InvalidArgument, Child(inPointer, "inertia_from"),
+                            "give inertia_kg_m2 or inertia_from, not both");
+            ioVehicle.mInertiaFromMesh = choice == 1;
+        }
         if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount))
             return false;
         if (const auto material = inVehicle.find("material"); material != inVehicle.end())

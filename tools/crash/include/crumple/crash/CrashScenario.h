@@ -54,6 +54,9 @@ struct VehicleSpec
     /// Principal moments of inertia about the centre of mass (kg m^2); empty: those of a uniform box of
     /// mBoxSize and mMass
     std::optional<Vec3> mInertia;
+    /// Without mInertia: false, a uniform solid box of the collision box; true, a uniform thin shell over the
+    /// mesh's triangles (area-weighted), about the box centre, its diagonal taken as the principal moments
+    bool mInertiaFromMesh = false;
     plugin::DamageMaterial mMaterial;  ///< Dent per impulse and its limits
     double mMaxTotalDeformation = 0.5; ///< Most any vertex may ever move, all collisions together (m), >= 0
     std::array<int, 3> mControlCount{{10, 6, 6}}; ///< FFD controls of the fitted zone, each >= 4
