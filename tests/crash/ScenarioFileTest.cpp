@@ -226,7 +226,11 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
          "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, box_size_m, "
          "mass_kg, "
-         "inertia_kg_m2, inertia_from, control_count, material)"},
+         "inertia_kg_m2, inertia_from, control_count, zones, material)"},
+        {Minimal(R"("mass_kg": 1200, "zones": [{"min_m": [0, 0, 0], "max_m": [1, 0, 1]}])"), EError::InvalidArgument,
+         "/vehicle/zones/0/max_m: must exceed min_m on every axis"},
+        {Minimal(R"("mass_kg": 1200, "zones": [{"max_m": [1, 1, 1]}])"), EError::InvalidArgument,
+         "/vehicle/zones/0/min_m: required"},
         {Minimal(R"("mass_kg": 1200, "inertia_from": "mesh_shell")"), EError::InvalidArgument,
          "/vehicle/inertia_from: \"mesh_shell\" needs a mesh"},
         {Minimal(mass, R"("speed_mph": 35)"), EError::InvalidArgument,

@@ -50,6 +50,7 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
     object.mFittedMaxTotalDeformation = inSettings.mMaxTotalDeformation;
+    object.mDeformer.mZones = inSettings.mZones;
     return object;
 }
 

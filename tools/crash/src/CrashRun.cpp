@@ -55,6 +55,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     settings.mInertia = vehicle.mInertia;
     settings.mMaterial = vehicle.mMaterial;
     settings.mMaxTotalDeformation = vehicle.mMaxTotalDeformation;
+    settings.mZones = vehicle.mZones;
     settings.mControlCount = vehicle.mControlCount;
     settings.mSpeed = inScenario.mImpact.mSpeed;
     settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;

@@ -452,7 +452,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "box_size_m", "mass_kg", "inertia_kg_m2",
-                         "inertia_from", "control_count", "material"},
+                         "inertia_from", "control_count", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
                          {"mass", "masses are mass_kg"},
@@ -523,8 +523,46 @@ class ScenarioReader
         }
         if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount))
             return false;
+        // Zones: [{"min_m": [x, y, z], "max_m": [x, y, z], "control_count": [...], "max_total_deformation_m": d}]
+        if (const auto zones = inVehicle.find("zones"); zones != inVehicle.end())
+        {
+            const std::string pointer = Child(inPointer, "zones");
+            if (!zones->is_array() || zones->empty())
+                return Fail(EError::InvalidArgument, pointer, "must be a non-empty array of zone objects");
+            for (std::size_t index = 0; index < zones->size(); ++index)
+            {
+                const Json& zone = (*zones)[index];
+                const std::string at = pointer + "/" + std::to_string(index);
+                if (!ExpectObject(zone, at) ||
+                    !CheckKeys(zone, at, {{"min_m", "max_m", "control_count", "max_total_deformation_m"}, {}}))
+                    return false;
+                Vec3 low = Vec3::Zero(), high = Vec3::Zero();
+                ffd::FfdZoneSettings settings;
+                settings.mMaxTotalDeformation = -1.0; // the vehicle's, once its material is read
+                settings.mLattice.mControlCount = ioVehicle.mControlCount;
+                if (!zone.contains("min_m"))
+                    return Fail(EError::InvalidArgument, Child(at, "min_m"), "required");
+                if (!zone.contains("max_m"))
+                    return Fail(EError::InvalidArgument, Child(at, "max_m"), "required");
+                if (!ReadVec3(zone, at, "min_m", NumberRange::Any(), low) ||
+                    !ReadVec3(zone, at, "max_m", NumberRange::Any(), high) ||
+                    !ReadControlCount(zone, at, settings.mLattice.mControlCount) ||
+                    !ReadNumber(zone, at, "max_total_deformation_m", NumberRange::NonNegative(), false,
+                                settings.mMaxTotalDeformation))
+                    return false;
+                if (!((high - low).minCoeff() > 0.0))
+                    return Fail(EError::InvalidArgument, Child(at, "max_m"), "must exceed min_m on every axis");
+                settings.mLattice.mOrigin = low;
+                settings.mLattice.mSize = high - low;
+                ioVehicle.mZones.push_back(settings);
+            }
+        }
         if (const auto material = inVehicle.find("material"); material != inVehicle.end())
-            return ReadMaterial(*material, Child(inPointer, "material"), ioVehicle, true);
+            if (!ReadMaterial(*material, Child(inPointer, "material"), ioVehicle, true))
+                return false;
+        for (ffd::FfdZoneSettings& zone : ioVehicle.mZones)
+            if (zone.mMaxTotalDeformation < 0.0)
+                zone.mMaxTotalDeformation = ioVehicle.mMaxTotalDeformation;
         return true;
     }
 

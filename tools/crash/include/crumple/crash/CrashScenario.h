@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Math.h>
+#include <crumple/ffd/FfdDeformerSettings.h>
 #include <crumple/plugin/DamageMaterial.h>
 
 #include <array>
@@ -60,6 +61,9 @@ struct VehicleSpec
     plugin::DamageMaterial mMaterial;  ///< Dent per impulse and its limits
     double mMaxTotalDeformation = 0.5; ///< Most any vertex may ever move, all collisions together (m), >= 0
     std::array<int, 3> mControlCount{{10, 6, 6}}; ///< FFD controls of the fitted zone, each >= 4
+    /// Deformation zones (axis-aligned boxes in the body frame, each with its controls and total bound); empty:
+    /// one zone fitted around the body with mControlCount and mMaxTotalDeformation
+    std::vector<ffd::FfdZoneSettings> mZones;
 };
 
 /// The target.
