@@ -140,6 +140,17 @@ Status WriteCampbellPlot(const std::filesystem::path& inPath, const CampbellLine
     auto x_of = [&](double inKmh) { return cLeft + (cRight - cLeft) * inKmh / right_kmh; };
     auto y_of = [&](double inCrush) { return cBottom - (cBottom - cTop) * inCrush / top; };
     const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{200, 200, 200}, blue{30, 80, 200}, red{210, 30, 30};
+    const std::array<std::uint8_t, 3> label{60, 60, 60};
+    for (double kmh = 0.0; kmh <= right_kmh; kmh += 10.0)
+        canvas.Text(static_cast<int>(x_of(kmh)) - 6, cBottom + 8, std::to_string(static_cast<int>(kmh)), 2, label);
+    canvas.Text(cRight - 40, cBottom + 28, "km/h", 2, label);
+    for (double crush = 0.0; crush <= top + 1e-9; crush += 0.1)
+    {
+        char tick[16];
+        std::snprintf(tick, sizeof(tick), "%.1f", crush);
+        canvas.Text(cLeft - 40, static_cast<int>(y_of(crush)) - 5, tick, 2, label);
+    }
+    canvas.Text(cLeft - 40, cTop - 24, "m", 2, label);
     for (double kmh = 10.0; kmh <= right_kmh; kmh += 10.0)
         canvas.Line(x_of(kmh), cBottom, x_of(kmh), cTop, 1, grey);
     for (double crush = 0.1; crush <= top + 1e-9; crush += 0.1)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace crumple::crash
@@ -46,9 +47,50 @@ public:
                 if ((x - inX) * (x - inX) + (y - inY) * (y - inY) <= inRadius * inRadius + 0.25)
                     Dot(x, y, inColour);
     }
+    /// Writes inText (digits, '.', '-', '/', 'k', 'm', 'h', ' ') at (inX, inY) top-left, 3 x 5 glyphs scaled by
+    /// inScale: enough for tick labels and units without a font library.
+    void Text(int inX, int inY, const std::string& inText, int inScale, std::array<std::uint8_t, 3> inColour)
+    {
+        for (char character : inText)
+        {
+            const std::uint16_t glyph = Glyph(character);
+            for (int row = 0; row < 5; ++row)
+                for (int column = 0; column < 3; ++column)
+                    if ((glyph >> (14 - 3 * row - column)) & 1u)
+                        for (int dy = 0; dy < inScale; ++dy)
+                            for (int dx = 0; dx < inScale; ++dx)
+                                Dot(inX + column * inScale + dx, inY + row * inScale + dy, inColour);
+            inX += 4 * inScale;
+        }
+    }
     Status Save(const std::filesystem::path& inPath) const { return render::WritePng(inPath, mWidth, mHeight, mPixels); }
 
 private:
+    // 15-bit 3 x 5 glyphs, rows top to bottom, most significant bit first.
+    static std::uint16_t Glyph(char inCharacter)
+    {
+        switch (inCharacter)
+        {
+        case '0': return 0b111101101101111;
+        case '1': return 0b010110010010111;
+        case '2': return 0b111001111100111;
+        case '3': return 0b111001111001111;
+        case '4': return 0b101101111001001;
+        case '5': return 0b111100111001111;
+        case '6': return 0b111100111101111;
+        case '7': return 0b111001001001001;
+        case '8': return 0b111101111101111;
+        case '9': return 0b111101111001111;
+        case '.': return 0b000000000000010;
+        case '-': return 0b000000111000000;
+        case '/': return 0b001001010100100;
+        case 'k': return 0b100101110101101;
+        case 'm': return 0b000111111101101;
+        case 'h': return 0b100100111101101;
+        default: return 0;
+        }
+    }
+
     int mWidth, mHeight;
     std::vector<std::uint8_t> mPixels;
 };
