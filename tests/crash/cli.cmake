@@ -6,7 +6,7 @@
 # nothing.
 set(crash_script ${CMAKE_CURRENT_LIST_DIR}/RunScenario.cmake)
 set(crash_out ${CMAKE_CURRENT_BINARY_DIR}/crash-cli)
-file(GLOB crash_examples ${PROJECT_SOURCE_DIR}/samples/scenarios/*.json)
+file(GLOB crash_examples CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/samples/scenarios/*.json)
 foreach(example IN LISTS crash_examples)
     get_filename_component(name ${example} NAME_WE)
     add_test(NAME "crash: example ${name} meets its expectations"

@@ -68,14 +68,14 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     if (inScenario.mTarget.mType == ETarget::Vehicle)
     {
         const TargetSpec& target = inScenario.mTarget;
-        common::TargetVehicleSettings vehicle;
-        vehicle.mHalfExtents = 0.5 * target.mVehicleSize;
-        vehicle.mMass = target.mVehicleMass;
-        vehicle.mYawDegrees = target.mVehicleHeadingDegrees;
-        vehicle.mSpeed = target.mVehicleSpeed;
-        vehicle.mOffset = target.mVehicleOffset;
-        vehicle.mMaterial = inScenario.mVehicle.mMaterial; // the same body material as the subject car
-        settings.mTargetVehicle = vehicle;
+        common::TargetVehicleSettings other;
+        other.mHalfExtents = 0.5 * target.mVehicleSize;
+        other.mMass = target.mVehicleMass;
+        other.mYawDegrees = target.mVehicleHeadingDegrees;
+        other.mSpeed = target.mVehicleSpeed;
+        other.mOffset = target.mVehicleOffset;
+        other.mMaterial = inScenario.mVehicle.mMaterial; // the same body material as the subject car
+        settings.mTargetVehicle = other;
         settings.mWallAngleDegrees = 0.0;
     }
     settings.mTimeStep = inScenario.mTimeStep;
