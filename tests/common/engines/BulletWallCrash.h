@@ -30,6 +30,10 @@ public:
     bullet::BulletAdapter& GetAdapter() { return *mAdapter; }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// The barrier's damage body (invalid without one)
+    plugin::BodyId GetBarrierBody() const { return mBarrierBody; }
+    /// Takes the barrier out of the engine (the car drives on); nothing without one.
+    void RemoveBarrier();
     /// The target vehicle's deformable object (invalid without one)
     plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
@@ -48,6 +52,8 @@ private:
     std::unique_ptr<bullet::BulletAdapter> mAdapter;
     plugin::ObjectId mCarObject;
     btRigidBody* mTarget = nullptr;
+    btCollisionObject* mBarrier = nullptr;
+    plugin::BodyId mBarrierBody;
     plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
 };

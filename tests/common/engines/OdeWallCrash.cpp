@@ -24,7 +24,13 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (!inSettings.mFloating)
         dCreatePlane(mSpace, 0, 0, 1, 0);
-    if (inSettings.mTargetVehicle)
+    if (inSettings.mBarrierHalfExtents)
+    {
+        const Vec3& bh = *inSettings.mBarrierHalfExtents;
+        mBarrier = dCreateBox(mSpace, 2 * bh.x(), 2 * bh.y(), 2 * bh.z());
+        dGeomSetPosition(mBarrier, bh.x(), 0, bh.z());
+    }
+    else if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.
         const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
@@ -101,6 +107,8 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (mAdapter == nullptr)
         return;
+    if (mBarrier != nullptr)
+        mBarrierBody = mAdapter->AddStaticGeom(mBarrier).Get();
     const BodyId car_body = mAdapter->AddBody(mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
     if (mTarget != nullptr)
@@ -143,6 +151,12 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
         dJointID joint = dJointCreateContact(scene->mWorld, scene->mContacts, &contact);
         dJointAttach(joint, b1, b2);
     }
+}
+
+void OdeWallCrash::RemoveBarrier()
+{
+    if (mBarrier != nullptr)
+        dGeomDisable(mBarrier); // no more contacts with it
 }
 
 void OdeWallCrash::Step()

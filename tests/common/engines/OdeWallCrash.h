@@ -30,6 +30,10 @@ public:
     ode::OdeAdapter& GetAdapter() { return *mAdapter; }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// The barrier's damage body (invalid without one)
+    plugin::BodyId GetBarrierBody() const { return mBarrierBody; }
+    /// Takes the barrier out of the collision (the car drives on); nothing without one.
+    void RemoveBarrier();
     /// The target vehicle's deformable object (invalid without one)
     plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
@@ -46,6 +50,8 @@ private:
     std::unique_ptr<ode::OdeAdapter> mAdapter;
     plugin::ObjectId mCarObject;
     dBodyID mTarget = nullptr;
+    dGeomID mBarrier = nullptr;
+    plugin::BodyId mBarrierBody;
     plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
 };

@@ -89,6 +89,13 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     report["residual_crush_m"] = crush;
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         report["target_vehicle_residual_crush_m"] = inOutcome.mTargetResidualCrush;
+    if (inOutcome.mBarrierFragments > 0)
+    {
+        report["barrier_fragments"] = inOutcome.mBarrierFragments;
+        report["barrier_broken_links"] = inOutcome.mBarrierBrokenLinks;
+        report["barrier_breached_at_s"] = std::isnan(inOutcome.mBarrierBreachTime) ? nlohmann::json(nullptr)
+                                                                                  : nlohmann::json(inOutcome.mBarrierBreachTime);
+    }
     report["total_impulse_N_s"] = inOutcome.mTotalImpulse;
     report["peak_impulse_N_s"] = inOutcome.mPeakImpulse;
     report["delta_v_m_s"] = inOutcome.DeltaV();
@@ -136,6 +143,12 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         std::fprintf(inStream, "  target vehicle residual crush %.3f m\n", inOutcome.mTargetResidualCrush);
+    if (inOutcome.mBarrierFragments > 0)
+        std::fprintf(inStream, "  barrier: %d pieces, %d links broken, %s\n", inOutcome.mBarrierFragments,
+                     inOutcome.mBarrierBrokenLinks,
+                     std::isnan(inOutcome.mBarrierBreachTime)
+                         ? "held"
+                         : ("breached at " + std::to_string(inOutcome.mBarrierBreachTime) + " s").c_str());
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);

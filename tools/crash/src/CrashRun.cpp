@@ -6,6 +6,10 @@
 #include "EngineCrash.h"
 
 #include <crumple/ffd/BoundingBox.h>
+#include <crumple/fem/CollisionImpulses.h>
+#include <crumple/fem/PropMaterialPreset.h>
+#include <crumple/fem/TetGrid.h>
+#include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/DamageRecorder.h>
 
 #if defined(CRUMPLE_CRASH_BULLET)
@@ -65,6 +69,11 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         settings.mPoleRadius = inScenario.mTarget.mPoleRadius;
     if (inScenario.mTarget.mType == ETarget::OffsetWall)
         settings.mOverlapFraction = inScenario.mTarget.mOverlapPercent / 100.0;
+    if (inScenario.mTarget.mType == ETarget::FemBarrier)
+    {
+        settings.mBarrierHalfExtents = 0.5 * inScenario.mTarget.mBarrierSize;
+        settings.mWallAngleDegrees = 0.0;
+    }
     if (inScenario.mTarget.mType == ETarget::Vehicle)
     {
         const TargetSpec& target = inScenario.mTarget;
@@ -104,12 +113,68 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     return settings;
 }
 
+// The destructible barrier: a tetrahedral grid of the barrier box in its engine body's frame (centred),
+// anchored at its base, fed with the collisions on that body.
+class FemBarrier : public plugin::DamageListener
+{
+public:
+    static Result<std::unique_ptr<FemBarrier>> Create(const TargetSpec& inTarget, plugin::BodyId inBody)
+    {
+        static constexpr const char* cNames[] = {"glass", "wood", "brick", "rubber", "steel"};
+        int material = 2;
+        for (int index = 0; index < 5; ++index)
+            if (inTarget.mBarrierMaterial == cNames[index])
+                material = index;
+        Result<fem::PropMaterialPreset> preset = fem::MakePropMaterialPreset(static_cast<fem::EPropMaterial>(material));
+        if (preset.HasError())
+            return preset.GetError();
+        fem::TetGridSettings grid;
+        grid.mOrigin = -0.5 * inTarget.mBarrierSize;
+        grid.mSize = inTarget.mBarrierSize;
+        for (int axis = 0; axis < 3; ++axis)
+            grid.mCellCount[axis] = std::max(1, static_cast<int>(std::lround(inTarget.mBarrierSize[axis] / inTarget.mBarrierCell)));
+        Result<fem::TetMesh> mesh = fem::TetGrid(grid);
+        if (mesh.HasError())
+            return mesh.GetError();
+        fem::TetSolverSettings settings;
+        settings.mIntegrator = fem::EIntegrator::SymplecticEuler; // follows the stress wave of a hit
+        settings.mMaxSubSteps = 100000;
+        Result<fem::TetSolver> solver = fem::TetSolver::Create(mesh.Get(), preset.Get().mMaterial, settings);
+        if (solver.HasError())
+            return solver.GetError();
+        std::unique_ptr<FemBarrier> barrier(new FemBarrier(std::move(solver.Get()), inBody));
+        for (int node = 0; node < barrier->mSolver.GetNodeCount(); ++node)
+            if (barrier->mSolver.GetNodeRestPositions()[node].z() <= grid.mOrigin.z() + 1e-9)
+                (void)barrier->mSolver.SetNodeFixed(node, true);
+        return barrier;
+    }
+    void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent>) override
+    {
+        if (inCollision.mBodyA == mBody || inCollision.mBodyB == mBody)
+            (void)fem::ApplyCollision(mSolver, inCollision, mBody);
+    }
+    fem::TetSolver mSolver;
+
+private:
+    FemBarrier(fem::TetSolver inSolver, plugin::BodyId inBody) : mSolver(std::move(inSolver)), mBody(inBody) {}
+    plugin::BodyId mBody;
+};
+
 // Runs one engine's scene to the end and fills the outcome.
 template <class Scene, class VelocityOf, class TransformOf>
 Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, const CrashRunOptions& inOptions,
-                              VelocityOf inVelocityOf, TransformOf inTransformOf)
+                              const TargetSpec& inTarget, VelocityOf inVelocityOf, TransformOf inTransformOf)
 {
     Scene scene(inSettings);
+    std::unique_ptr<FemBarrier> barrier;
+    if (inTarget.mType == ETarget::FemBarrier)
+    {
+        Result<std::unique_ptr<FemBarrier>> created = FemBarrier::Create(inTarget, scene.GetBarrierBody());
+        if (created.HasError())
+            return created.GetError();
+        barrier = std::move(created.Get());
+        scene.GetDamage().AddListener(barrier.get());
+    }
     std::unique_ptr<plugin::DamageRecorder> recorder;
     if (!inOptions.mReplayFile.empty())
     {
@@ -126,8 +191,30 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     outcome.mRestNormals = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetNormals();
     const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
     for (int step = 0; step < steps; ++step)
+    {
         scene.Step();
+        if (barrier)
+        {
+            // The barrier follows the engine step; once a piece is loose the car is let through.
+            const Result<fem::TetStepResult> result = barrier->mSolver.Step(inSettings.mTimeStep);
+            if (result.IsValid() && fem::HasEvent(result.Get().mEvents, fem::ETetStepEvent::Fractured) &&
+                std::isnan(outcome.mBarrierBreachTime))
+                for (const fem::TetFragment& fragment : barrier->mSolver.ComputeFragments())
+                    if (!fragment.mAnchored)
+                    {
+                        outcome.mBarrierBreachTime = (step + 1) * inSettings.mTimeStep;
+                        scene.RemoveBarrier();
+                        break;
+                    }
+        }
+    }
     scene.GetDamage().Flush();
+    if (barrier)
+    {
+        scene.GetDamage().RemoveListener(barrier.get());
+        outcome.mBarrierFragments = static_cast<int>(barrier->mSolver.ComputeFragments().size());
+        outcome.mBarrierBrokenLinks = barrier->mSolver.GetBrokenLinkCount();
+    }
     outcome.mEndVelocity = inVelocityOf(scene);
     outcome.mEndTransform = inTransformOf(scene);
     if (recorder)
@@ -228,7 +315,7 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
     case EEngine::Bullet:
 #if defined(CRUMPLE_CRASH_BULLET)
         return RunScene<common::BulletWallCrash>(
-            settings.Get(), inOptions,
+            settings.Get(), inOptions, inScenario.mTarget,
             [](common::BulletWallCrash& inScene)
             {
                 const btVector3 v = inScene.GetCar().getLinearVelocity();
@@ -250,7 +337,7 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
     case EEngine::Ode:
 #if defined(CRUMPLE_CRASH_ODE)
         return RunScene<common::OdeWallCrash>(
-            settings.Get(), inOptions,
+            settings.Get(), inOptions, inScenario.mTarget,
             [](common::OdeWallCrash& inScene)
             {
                 const dReal* v = dBodyGetLinearVel(inScene.GetCar());

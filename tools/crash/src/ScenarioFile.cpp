@@ -681,7 +681,7 @@ class ScenarioReader
         if (!ExpectObject(inTarget, inPointer) ||
             !CheckKeys(inTarget, inPointer,
                        {{"type", "angle_deg", "radius_m", "overlap_percent", "mass_kg", "box_size_m", "heading_deg",
-                         "speed_km_h", "offset_m"},
+                         "speed_km_h", "offset_m", "size_m", "material", "cell_m"},
                         {{"angle", "angles are angle_deg"},
                          {"radius", "radii are radius_m"},
                          {"overlap", "overlaps are overlap_percent"},
@@ -690,7 +690,10 @@ class ScenarioReader
                          {"heading", "headings are heading_deg"},
                          {"speed", "target speeds are speed_km_h"},
                          {"offset", "offsets are offset_m"}}}) ||
-            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall", "pole", "offset_wall", "vehicle"}, {}, false, type) ||
+            !ReadEnum(inTarget, inPointer, "type", {"rigid_wall", "pole", "offset_wall", "vehicle", "fem_barrier"}, {},
+                      false, type) ||
+            !ReadVec3(inTarget, inPointer, "size_m", NumberRange::Positive(), ioTarget.mBarrierSize) ||
+            !ReadNumber(inTarget, inPointer, "cell_m", NumberRange::Positive(), false, ioTarget.mBarrierCell) ||
             !ReadNumber(inTarget, inPointer, "angle_deg", NumberRange{-90.0, true, 90.0, true}, false,
                         ioTarget.mAngleDegrees) ||
             !ReadNumber(inTarget, inPointer, "radius_m", NumberRange::Positive(), false, ioTarget.mPoleRadius) ||
@@ -704,6 +707,19 @@ class ScenarioReader
             return false;
         ioTarget.mVehicleSpeed = speed_km_h / 3.6;
         ioTarget.mType = static_cast<ETarget>(type);
+        if (ioTarget.mType == ETarget::FemBarrier)
+        {
+            std::size_t material = 2; // brick
+            if (!ReadEnum(inTarget, inPointer, "material", {"glass", "wood", "brick", "rubber", "steel"}, {}, false,
+                          material))
+                return false;
+            static constexpr const char* cNames[] = {"glass", "wood", "brick", "rubber", "steel"};
+            ioTarget.mBarrierMaterial = cNames[material];
+            for (int axis = 0; axis < 3; ++axis)
+                if (ioTarget.mBarrierSize[axis] / ioTarget.mBarrierCell > 200.0)
+                    return Fail(EError::InvalidArgument, Child(inPointer, "cell_m"),
+                                "makes more than 200 cells along an axis of size_m");
+        }
         // Each key belongs to its target type.
         const struct
         {
@@ -712,7 +728,9 @@ class ScenarioReader
         } owners[] = {{"angle_deg", ETarget::RigidWall},   {"radius_m", ETarget::Pole},
                       {"overlap_percent", ETarget::OffsetWall}, {"mass_kg", ETarget::Vehicle},
                       {"box_size_m", ETarget::Vehicle},     {"heading_deg", ETarget::Vehicle},
-                      {"speed_km_h", ETarget::Vehicle},     {"offset_m", ETarget::Vehicle}};
+                      {"speed_km_h", ETarget::Vehicle},     {"offset_m", ETarget::Vehicle},
+                      {"size_m", ETarget::FemBarrier},      {"material", ETarget::FemBarrier},
+                      {"cell_m", ETarget::FemBarrier}};
         for (const auto& owner : owners)
             if (inTarget.contains(owner.mKey) && ioTarget.mType != owner.mType)
                 return Fail(EError::InvalidArgument, Child(inPointer, owner.mKey),

@@ -42,6 +42,10 @@ struct CrashOutcome
     Transform mEndTransform;                ///< Car body to world at the end
     double mTargetResidualCrush = std::numeric_limits<double>::quiet_NaN(); ///< Target vehicle's largest residual
                                                                             ///< displacement (m); NaN without one
+    int mBarrierFragments = 0;   ///< FEM barrier: pieces at the end (1 = whole); 0 without a barrier
+    int mBarrierBrokenLinks = 0; ///< FEM barrier: links broken
+    double mBarrierBreachTime = std::numeric_limits<double>::quiet_NaN(); ///< FEM barrier: when a piece broke loose
+                                                                          ///< and the car was let through (s); NaN: never
 
     /// |v_end - v_start| (m/s)
     double DeltaV() const { return (mEndVelocity - mStartVelocity).norm(); }

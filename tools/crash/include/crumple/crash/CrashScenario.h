@@ -37,6 +37,10 @@ enum class ETarget : std::uint8_t
     /// Another car: a deformable box body of TargetSpec::mVehicle*, standing or moving, its nearest point on
     /// the subject car's path
     Vehicle,
+    /// A destructible barrier (fem::TetSolver of a prop material preset) standing for a static box in the
+    /// engine, face at x = 0, anchored at its base: the car's collisions become nodal impulses on it; when a
+    /// piece breaks loose the engine box is removed and the car drives on
+    FemBarrier,
 };
 
 /// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
@@ -78,6 +82,9 @@ struct TargetSpec
     double mVehicleHeadingDegrees = 90.0;      ///< Vehicle: heading from the subject's path (deg); 90 = side impact
     double mVehicleSpeed = 0.0;                ///< Vehicle: speed along its heading (m/s), >= 0
     double mVehicleOffset = 0.0;               ///< Vehicle: its centre's sideways position (m)
+    Vec3 mBarrierSize{0.2, 3.0, 1.2};          ///< FEM barrier: thickness (x), width (y), height (z) (m), each > 0
+    std::string mBarrierMaterial = "brick";    ///< FEM barrier: a fem::EPropMaterial preset name
+    double mBarrierCell = 0.2;                 ///< FEM barrier: cube size of its tetrahedral grid (m), > 0
 };
 
 /// How the vehicle arrives.
