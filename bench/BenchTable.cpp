@@ -41,6 +41,18 @@ bool BenchTable::WriteCsv(const std::string& inPath) const
     return static_cast<bool>(out.flush());
 }
 
+double ElapsedMs(std::chrono::steady_clock::time_point inStart)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - inStart).count();
+}
+
+std::string FormatExtra(double inValue)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", inValue);
+    return text;
+}
+
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun)
 {
     std::vector<double> times;

@@ -34,6 +34,12 @@ private:
     std::vector<BenchRow> mRows;
 };
 
+/// Milliseconds since inStart (steady clock).
+double ElapsedMs(std::chrono::steady_clock::time_point inStart);
+
+/// A number for the extra column: 4 significant digits, never a comma.
+std::string FormatExtra(double inValue);
+
 /// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);
 

@@ -45,19 +45,6 @@ double Median(std::vector<double> inValues)
     return inValues[inValues.size() / 2];
 }
 
-double ElapsedMs(std::chrono::steady_clock::time_point inStart)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - inStart).count();
-}
-
-// A number for the extra column: 4 significant digits, never a comma.
-std::string Format(double inValue)
-{
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", inValue);
-    return text;
-}
-
 const char* IntegratorLabel(EIntegrator inIntegrator)
 {
     return inIntegrator == EIntegrator::SymplecticEuler ? "explicit" : "implicit";
@@ -127,7 +114,7 @@ double StaticCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inM
                  MeshExtra(beam) + ";solved=" + (solved ? "yes" : "no") +
                      ";newton=" + std::to_string(solve.mIterations) +
                      ";cg_iterations=" + std::to_string(solve.mSolverIterations) + ";residual=" +
-                     Format(solve.mRelativeResidual) + ";deflection_m=" + Format(beam.TipDeflection())});
+                     FormatExtra(solve.mRelativeResidual) + ";deflection_m=" + FormatExtra(beam.TipDeflection())});
     return solved ? beam.TipDeflection() : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -142,8 +129,8 @@ void DynamicCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inMo
     CantileverScene beam = CantileverScene::Create(settings).Get();
     TetSolver& solver = beam.GetSolver();
     const std::string name = MeshName(beam) + "/" + IntegratorLabel(inIntegrator) + "/" + ModelLabel(inModel);
-    std::string extra = MeshExtra(beam) + ";alpha_per_s=" + Format(inAlpha) +
-                        ";settle_s=" + Format(cSettleFrames * cFrameTime);
+    std::string extra = MeshExtra(beam) + ";alpha_per_s=" + FormatExtra(inAlpha) +
+                        ";settle_s=" + FormatExtra(cSettleFrames * cFrameTime);
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
     // Explicit: time a sample of sub-steps on a separate beam and extrapolate to a full step and a full run.
@@ -171,13 +158,13 @@ void DynamicCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inMo
         const double frame_ms = Median(per_sub_step) * sub_steps;
         const double run_s = frame_ms * cSettleFrames / 1000.0;
         extra +=
-            ";sub_steps=" + std::to_string(sub_steps) + ";sub_step_s=" + Format(solver.GetStableTimeStep());
+            ";sub_steps=" + std::to_string(sub_steps) + ";sub_step_s=" + FormatExtra(solver.GetStableTimeStep());
         if (run_s > inBudgetSeconds)
         {
             ioTable.Add({"fem_cantilever", name, frame_ms, nan, "rel_tip_error",
                          extra + ";time=extrapolated_from_" + std::to_string(cSampleSubSteps) +
-                             "_sub_steps;error=not_run_over_budget;estimated_run_s=" + Format(run_s) +
-                             ";budget_s=" + Format(inBudgetSeconds)});
+                             "_sub_steps;error=not_run_over_budget;estimated_run_s=" + FormatExtra(run_s) +
+                             ";budget_s=" + FormatExtra(inBudgetSeconds)});
             return;
         }
     }
@@ -210,7 +197,7 @@ void DynamicCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inMo
                 {"fem_cantilever", name, step_ms[0], nan, "rel_tip_error",
                  extra + ";time=first_step_only;newton=" + std::to_string(newton) +
                      ";cg_iterations=" + std::to_string(cg) + ";error=not_run_over_budget;estimated_run_s=" +
-                     Format(step_ms[0] * cSettleFrames / 1000.0) + ";budget_s=" + Format(inBudgetSeconds)});
+                     FormatExtra(step_ms[0] * cSettleFrames / 1000.0) + ";budget_s=" + FormatExtra(inBudgetSeconds)});
             return;
         }
     }
@@ -219,9 +206,9 @@ void DynamicCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inMo
     if (!symplectic)
         extra += ";newton=" + std::to_string(newton) + ";cg_iterations=" + std::to_string(cg) +
                  ";steps_not_converged=" + std::to_string(not_converged);
-    extra += ";events=" + std::to_string(events) + ";deflection_m=" + Format(deflection) +
-             ";vs_static=" + Format((deflection - inStaticDeflection) / inStaticDeflection) +
-             ";last_step_change=" + Format(std::abs(deflection - previous) / std::abs(deflection));
+    extra += ";events=" + std::to_string(events) + ";deflection_m=" + FormatExtra(deflection) +
+             ";vs_static=" + FormatExtra((deflection - inStaticDeflection) / inStaticDeflection) +
+             ";last_step_change=" + FormatExtra(std::abs(deflection - previous) / std::abs(deflection));
     ioTable.Add({"fem_cantilever", name, Median(step_ms), failed ? nan : TipError(beam), "rel_tip_error",
                  extra + (failed ? ";error=step_failed" : "")});
 }

@@ -33,18 +33,6 @@ struct BeamMesh
     int mSectionCells;
 };
 
-double ElapsedMs(std::chrono::steady_clock::time_point inStart)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - inStart).count();
-}
-
-std::string Format(double inValue)
-{
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", inValue);
-    return text;
-}
-
 // Mean downward displacement of the tip nodes (m).
 double TipDeflection(const common::CantileverScene& inBeam, const std::vector<Vec3>& inPositions)
 {
@@ -135,15 +123,15 @@ void RunGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         const double cpu_error = with_error ? TipDeflection(beam, cpu.GetPositions()) / timoshenko - 1.0 : nan;
         const double gpu_error = with_error ? TipDeflection(beam, gpu_positions) / timoshenko - 1.0 : nan;
 
-        const std::string common_extra = "tets=" + std::to_string(tets) + ";sub_steps_per_step=" + Format(per_frame) +
+        const std::string common_extra = "tets=" + std::to_string(tets) + ";sub_steps_per_step=" + FormatExtra(per_frame) +
                                          ";sub_step_ms=";
         const std::string start = with_error ? ";start=static_equilibrium" : ";start=rest;error=not_measured";
         ioTable.Add({"gpu_fem", std::to_string(tets) + "_tets/cpu_double", cpu_ms * per_frame, cpu_error,
-                     "rel_tip_error", common_extra + Format(cpu_ms) + ";steps_per_s=" + Format(1000.0 / (cpu_ms * per_frame)) + start});
+                     "rel_tip_error", common_extra + FormatExtra(cpu_ms) + ";steps_per_s=" + FormatExtra(1000.0 / (cpu_ms * per_frame)) + start});
         ioTable.Add({"gpu_fem", std::to_string(tets) + "_tets/gpu_float", gpu_ms * per_frame, gpu_error,
                      "rel_tip_error",
-                     common_extra + Format(gpu_ms) + ";steps_per_s=" + Format(1000.0 / (gpu_ms * per_frame)) +
-                         ";gpu_vs_cpu_time=" + Format(gpu_ms / cpu_ms) + ";device=" + device_name + start});
+                     common_extra + FormatExtra(gpu_ms) + ";steps_per_s=" + FormatExtra(1000.0 / (gpu_ms * per_frame)) +
+                         ";gpu_vs_cpu_time=" + FormatExtra(gpu_ms / cpu_ms) + ";device=" + device_name + start});
     }
 }
 

@@ -3,6 +3,8 @@
 // Fracture on the GPU against the CPU: the same links open at the same threshold, the same fragments come
 // out, and a wall hit on the GPU breaks where it is hit, the same way every run.
 #include <crumple/fem/TetGrid.h>
+#include "GpuTestDevice.h"
+
 #include <crumple/gpu/GpuTetSolver.h>
 
 #include <catch2/catch.hpp>
@@ -15,18 +17,6 @@ using namespace crumple::gpu;
 
 namespace
 {
-
-std::shared_ptr<ComputeDevice> DeviceOrSkip()
-{
-    ComputeDeviceProvider provider;
-    Result<std::shared_ptr<ComputeDevice>> device = provider.Acquire();
-    if (device.HasError())
-    {
-        WARN("skipped: no compute device: " << device.GetError().mMessage);
-        return nullptr;
-    }
-    return device.Get();
-}
 
 constexpr double cStrength = 1.0e6; // Pa
 constexpr double cYoung = 1.0e9;    // Pa
@@ -94,7 +84,7 @@ void CheckSameFragments(const std::vector<TetFragment>& inCpu, const std::vector
 
 TEST_CASE("GPU fracture opens the same links as the CPU at the tensile strength, into the same fragments", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     const Pair below = StretchedBar(device, 0.95 * cStrength, EFractureMode::CrackPlane);
@@ -114,7 +104,7 @@ TEST_CASE("GPU fracture opens the same links as the CPU at the tensile strength,
 
 TEST_CASE("GPU fracture: a wall hit at one spot breaks there as on the CPU, the same way every run", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     // The CPU test's wall: 2 m x 0.2 m x 1 m of 0.2 m cubes anchored along its base, hit with 100 N s on

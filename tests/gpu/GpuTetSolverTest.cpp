@@ -5,6 +5,7 @@
 // diverging step restored, determinism, refusals. Runs on llvmpipe where no GPU exists; skips without EGL.
 #include "CantileverScene.h"
 #include "FloatTetReference.h"
+#include "GpuTestDevice.h"
 
 #include <crumple/fem/TetGrid.h>
 #include <crumple/gpu/GpuTetSolver.h>
@@ -21,18 +22,6 @@ using namespace crumple::gpu;
 
 namespace
 {
-
-std::shared_ptr<ComputeDevice> DeviceOrSkip()
-{
-    ComputeDeviceProvider provider;
-    Result<std::shared_ptr<ComputeDevice>> device = provider.Acquire();
-    if (device.HasError())
-    {
-        WARN("skipped: no compute device: " << device.GetError().mMessage);
-        return nullptr;
-    }
-    return device.Get();
-}
 
 // A soft 0.6 m x 0.2 m x 0.2 m bar of 6 x 2 x 2 cubes clamped at x = 0: a few hundred sub-steps per frame.
 FemMaterialSettings Soft(EElasticModel inModel)
@@ -79,7 +68,7 @@ double MaxDistance(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 TEST_CASE("GPU parity: the shaders match the float CPU build of the same equations and the double CPU solver",
           "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     const EElasticModel model = GENERATE(EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff);
@@ -124,7 +113,7 @@ TEST_CASE("GPU parity: the shaders match the float CPU build of the same equatio
 
 TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float limits", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     // A soft version of the issue's cantilever (E = 10 MPa, 1 N at the tip, 20 x 2 x 2 cells) so the
@@ -164,7 +153,7 @@ TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float l
 TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-up is restored and reported",
           "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     TetSolver cpu = ClampedBar(EElasticModel::CorotatedLinear);
@@ -195,7 +184,7 @@ TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-u
 
 TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same positions", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     auto run = [&]()
@@ -213,7 +202,7 @@ TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same pos
 
 TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothing", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     TetGridSettings grid;
@@ -247,7 +236,7 @@ TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothin
 
 TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it", "[gpu]")
 {
-    const std::shared_ptr<ComputeDevice> device = DeviceOrSkip();
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     if (!device)
         return;
     FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);

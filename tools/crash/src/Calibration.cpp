@@ -129,34 +129,16 @@ Status WriteCampbellCsv(const std::filesystem::path& inPath, const std::vector<C
 Status WriteCampbellPlot(const std::filesystem::path& inPath, const CampbellLine& inLine,
                          const std::vector<CampbellPoint>& inPoints)
 {
-    // Axes: speed 0-70 km/h (ticks every 10), crush 0 to the next 0.1 m above the data (ticks every 0.1 m).
-    constexpr int cWidth = 800, cHeight = 500, cLeft = 60, cBottom = 440, cRight = 770, cTop = 30;
-    double top = 0.1;
+    // Speed 0-70 km/h, crush 0 to the next 0.1 m above the data.
+    CrushSpeedChart chart;
     for (const CampbellPoint& point : inPoints)
-        top = std::max({top, point.mCrush, point.mModel});
-    top = std::ceil(top * 10.0 + 0.5) / 10.0;
-    const double right_kmh = 70.0;
-    PlotCanvas canvas(cWidth, cHeight);
-    auto x_of = [&](double inKmh) { return cLeft + (cRight - cLeft) * inKmh / right_kmh; };
-    auto y_of = [&](double inCrush) { return cBottom - (cBottom - cTop) * inCrush / top; };
-    const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{200, 200, 200}, blue{30, 80, 200}, red{210, 30, 30};
-    const std::array<std::uint8_t, 3> label{60, 60, 60};
-    for (double kmh = 0.0; kmh <= right_kmh; kmh += 10.0)
-        canvas.Text(static_cast<int>(x_of(kmh)) - 6, cBottom + 8, std::to_string(static_cast<int>(kmh)), 2, label);
-    canvas.Text(cRight - 40, cBottom + 28, "km/h", 2, label);
-    for (double crush = 0.0; crush <= top + 1e-9; crush += 0.1)
-    {
-        char tick[16];
-        std::snprintf(tick, sizeof(tick), "%.1f", crush);
-        canvas.Text(cLeft - 40, static_cast<int>(y_of(crush)) - 5, tick, 2, label);
-    }
-    canvas.Text(cLeft - 40, cTop - 24, "m", 2, label);
-    for (double kmh = 10.0; kmh <= right_kmh; kmh += 10.0)
-        canvas.Line(x_of(kmh), cBottom, x_of(kmh), cTop, 1, grey);
-    for (double crush = 0.1; crush <= top + 1e-9; crush += 0.1)
-        canvas.Line(cLeft, y_of(crush), cRight, y_of(crush), 1, grey);
-    canvas.Line(cLeft, cBottom, cRight, cBottom, 2, black);
-    canvas.Line(cLeft, cBottom, cLeft, cTop, 2, black);
+        chart.mTop = std::max({chart.mTop, point.mCrush, point.mModel});
+    chart.mTop = std::ceil(chart.mTop * 10.0 + 0.5) / 10.0;
+    const double right_kmh = chart.mRightKmh;
+    PlotCanvas canvas = chart.Draw();
+    auto x_of = [&](double inKmh) { return chart.X(inKmh); };
+    auto y_of = [&](double inCrush) { return chart.Y(inCrush); };
+    const std::array<std::uint8_t, 3> blue{30, 80, 200}, red{210, 30, 30};
     // The model: zero up to b0, then the line.
     const double b0_kmh = inLine.mNoDamageSpeed * cKmhPerMs;
     canvas.Line(x_of(0.0), y_of(0.0), x_of(b0_kmh), y_of(0.0), 3, blue);

@@ -239,36 +239,19 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
         status.HasError())
         return status.GetError();
 
-    // Plot: front residual crush against impact speed (x 0 to 10 km/h above the fastest, y from 0).
-    constexpr int cWidth = 800, cHeight = 500, cLeft = 60, cBottom = 440, cRight = 770, cTop = 30;
-    double right = 10.0, top = 0.1;
+    // Plot: front residual crush against impact speed (x to 10 km/h above the fastest, y from 0).
+    CrushSpeedChart chart;
+    chart.mRightKmh = 10.0;
     for (const auto& point : points)
     {
-        right = std::max(right, point[0]);
-        top = std::max(top, point[1]);
+        chart.mRightKmh = std::max(chart.mRightKmh, point[0]);
+        chart.mTop = std::max(chart.mTop, point[1]);
     }
-    right = std::ceil(right / 10.0 + 1.0) * 10.0;
-    top = std::ceil(top * 10.0 + 0.5) / 10.0;
-    PlotCanvas canvas(cWidth, cHeight);
-    auto x_of = [&](double inKmh) { return cLeft + (cRight - cLeft) * inKmh / right; };
-    auto y_of = [&](double inCrush) { return cBottom - (cBottom - cTop) * inCrush / top; };
-    const std::array<std::uint8_t, 3> label{60, 60, 60};
-    for (double kmh = 0.0; kmh <= right; kmh += 10.0)
-        canvas.Text(static_cast<int>(x_of(kmh)) - 6, cBottom + 8, std::to_string(static_cast<int>(kmh)), 2, label);
-    canvas.Text(cRight - 40, cBottom + 28, "km/h", 2, label);
-    for (double crush = 0.0; crush <= top + 1e-9; crush += 0.1)
-    {
-        char tick[16];
-        std::snprintf(tick, sizeof(tick), "%.1f", crush);
-        canvas.Text(cLeft - 40, static_cast<int>(y_of(crush)) - 5, tick, 2, label);
-    }
-    canvas.Text(cLeft - 40, cTop - 24, "m", 2, label);
-    for (double kmh = 10.0; kmh <= right; kmh += 10.0)
-        canvas.Line(x_of(kmh), cBottom, x_of(kmh), cTop, 1, {200, 200, 200});
-    for (double crush = 0.1; crush <= top + 1e-9; crush += 0.1)
-        canvas.Line(cLeft, y_of(crush), cRight, y_of(crush), 1, {200, 200, 200});
-    canvas.Line(cLeft, cBottom, cRight, cBottom, 2, {0, 0, 0});
-    canvas.Line(cLeft, cBottom, cLeft, cTop, 2, {0, 0, 0});
+    chart.mRightKmh = std::ceil(chart.mRightKmh / 10.0 + 1.0) * 10.0;
+    chart.mTop = std::ceil(chart.mTop * 10.0 + 0.5) / 10.0;
+    PlotCanvas canvas = chart.Draw();
+    auto x_of = [&](double inKmh) { return chart.X(inKmh); };
+    auto y_of = [&](double inCrush) { return chart.Y(inCrush); };
     for (const auto& point : points)
         canvas.Disc(x_of(point[0]), y_of(point[1]), 6.0, {210, 30, 30});
     if (Status status = canvas.Save(inFolder / "sweep.png"); status.HasError())

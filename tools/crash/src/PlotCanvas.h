@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -95,5 +96,41 @@ private:
     std::vector<std::uint8_t> mPixels;
 };
 
+
+/// A residual-crush-against-impact-speed chart on an 800 x 500 canvas: speed 0 to mRightKmh (grid and labels
+/// every 10 km/h), crush 0 to mTop (every 0.1 m).
+struct CrushSpeedChart
+{
+    static constexpr int cWidth = 800, cHeight = 500, cLeft = 60, cBottom = 440, cRight = 770, cTop = 30;
+    double mRightKmh = 70.0; ///< km/h
+    double mTop = 0.1;       ///< m
+
+    double X(double inKmh) const { return cLeft + (cRight - cLeft) * inKmh / mRightKmh; }
+    double Y(double inCrush) const { return cBottom - (cBottom - cTop) * inCrush / mTop; }
+
+    /// A canvas with the grid, tick labels, units and axes drawn.
+    PlotCanvas Draw() const
+    {
+        PlotCanvas canvas(cWidth, cHeight);
+        const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{200, 200, 200}, label{60, 60, 60};
+        for (double kmh = 0.0; kmh <= mRightKmh; kmh += 10.0)
+            canvas.Text(static_cast<int>(X(kmh)) - 6, cBottom + 8, std::to_string(static_cast<int>(kmh)), 2, label);
+        canvas.Text(cRight - 40, cBottom + 28, "km/h", 2, label);
+        for (double crush = 0.0; crush <= mTop + 1e-9; crush += 0.1)
+        {
+            char tick[16];
+            std::snprintf(tick, sizeof(tick), "%.1f", crush);
+            canvas.Text(cLeft - 40, static_cast<int>(Y(crush)) - 5, tick, 2, label);
+        }
+        canvas.Text(cLeft - 40, cTop - 24, "m", 2, label);
+        for (double kmh = 10.0; kmh <= mRightKmh; kmh += 10.0)
+            canvas.Line(X(kmh), cBottom, X(kmh), cTop, 1, grey);
+        for (double crush = 0.1; crush <= mTop + 1e-9; crush += 0.1)
+            canvas.Line(cLeft, Y(crush), cRight, Y(crush), 1, grey);
+        canvas.Line(cLeft, cBottom, cRight, cBottom, 2, black);
+        canvas.Line(cLeft, cBottom, cLeft, cTop, 2, black);
+        return canvas;
+    }
+};
 
 } // namespace crumple::crash
