@@ -1,0 +1,159 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/FoldGuard.h>
+
+#include <algorithm>
+#include <array>
+
+namespace crumple::ffd
+{
+
+namespace
+{
+
+// Sweeps over one line before the strict fallback. A head-on meeting next to a chain of pushers converges
+// geometrically (each pass halves the overlap), so a few passes settle every case seen in practice.
+constexpr int cMaxPasses = 16;
+
+// Gap added above the bound when a control is moved, as a fraction of the spacing.
+constexpr double cSlack = 1.0e-9;
+
+// One lattice line along an axis: positions p (lattice-frame component a of the displacement after the
+// dent, m) and q (the same before it). Resolves every violating pair; returns true if p changed.
+class LineResolver
+{
+public:
+    LineResolver(std::span<double> ioP, std::span<const double> inQ, double inSpacing, double inMinSpacing)
+        : mP(ioP), mQ(inQ), mSpacing(inSpacing), mMinGap(inMinSpacing * inSpacing),
+          mTargetDifference((inMinSpacing - 1.0) * inSpacing + cSlack * inSpacing)
+    {
+    }
+
+    // Deformed gap minus the bound: X_{j+1} - X_j - m h with X_j = j h + p_j.
+    bool Violates(std::size_t inJ) const { return mSpacing + (mP[inJ + 1] - mP[inJ]) < mMinGap; }
+    bool AnyViolation() const
+    {
+        for (std::size_t j = 0; j + 1 < mP.size(); ++j)
+            if (Violates(j))
+                return true;
+        return false;
+    }
+    // Moved toward higher / lower index during this dent (guard moves included).
+    bool MovedUp(std::size_t inJ) const { return mP[inJ] > mQ[inJ]; }
+    bool MovedDown(std::size_t inJ) const { return mP[inJ] < mQ[inJ]; }
+
+    void Resolve()
+    {
+        // intent: sweep in a fixed order until the line is clean or the pass bound is hit
+        for (int pass = 0; pass < cMaxPasses && AnyViolation(); ++pass)
+        {
+            ForwardSweep();
+            BackwardSweep();
+            HeadOnSweep();
+        }
+        // intent: the strict fallback; after it sets j+1, later steps touch only j+2 onward
+        for (std::size_t j = 0; j + 1 < mP.size(); ++j)
+            if (Violates(j))
+                mP[j + 1] = mP[j] + mTargetDifference;
+    }
+
+private:
+    // Pushes toward higher index: j+1 yields unless it pushes back (a pair where neither moved toward the
+    // other can only violate when the state before was not ordered; j+1 yields then too).
+    void ForwardSweep()
+    {
+        for (std::size_t j = 0; j + 1 < mP.size(); ++j)
+            if (Violates(j) && !MovedDown(j + 1))
+                mP[j + 1] = mP[j] + mTargetDifference;
+    }
+    // Pushes toward lower index: j yields, cascading down the line.
+    void BackwardSweep()
+    {
+        for (std::size_t j = mP.size() - 1; j-- > 0;)
+            if (Violates(j) && MovedDown(j + 1) && !MovedUp(j))
+                mP[j] = mP[j + 1] - mTargetDifference;
+    }
+    // Both moved into each other: they meet around the midpoint of their wanted positions.
+    void HeadOnSweep()
+    {
+        for (std::size_t j = 0; j + 1 < mP.size(); ++j)
+            if (Violates(j) && MovedDown(j + 1) && MovedUp(j))
+            {
+                const double mid = 0.5 * (mP[j] + mP[j + 1]);
+                mP[j] = mid - 0.5 * mTargetDifference;
+                mP[j + 1] = mid + 0.5 * mTargetDifference;
+            }
+    }
+
+    std::span<double> mP;
+    std::span<const double> mQ;
+    double mSpacing;
+    double mMinGap;
+    double mTargetDifference; // p_{j+1} - p_j of a pair put on the bound (plus slack)
+};
+
+} // namespace
+
+std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> inBefore, std::span<Vec3> ioAfter,
+                           std::span<const int> inChanged, double inMinSpacing)
+{
+    std::vector<int> moved;
+    if (!(inMinSpacing > 0.0) || inChanged.empty())
+        return moved;
+    const std::array<int, 3>& n = inLattice.GetSettings().mControlCount;
+    const Mat3& axes = inLattice.GetSettings().mAxes;
+    const std::array<int, 3> stride{{1, n[0], n[0] * n[1]}};
+
+    std::vector<int> lines;
+    std::vector<double> p;
+    std::vector<double> p_wanted;
+    std::vector<double> q;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        // intent: the lines along this axis through a changed control, named by their first control
+        lines.clear();
+        for (int control : inChanged)
+        {
+            const int coordinate = (control / stride[static_cast<std::size_t>(axis)]) % n[static_cast<std::size_t>(axis)];
+            lines.push_back(control - coordinate * stride[static_cast<std::size_t>(axis)]);
+        }
+        std::sort(lines.begin(), lines.end());
+        lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+
+        const Vec3 direction = axes.col(axis);
+        const double spacing = inLattice.GetSpacing()[axis];
+        const auto count = static_cast<std::size_t>(n[static_cast<std::size_t>(axis)]);
+        const auto step = static_cast<std::size_t>(stride[static_cast<std::size_t>(axis)]);
+        for (int line : lines)
+        {
+            // intent: project the line on the axis (lattice frame) and skip it cheaply when it is clean
+            p.resize(count);
+            q.resize(count);
+            for (std::size_t j = 0; j < count; ++j)
+            {
+                const std::size_t control = static_cast<std::size_t>(line) + j * step;
+                p[j] = direction.dot(ioAfter[control]);
+                q[j] = direction.dot(inBefore[control]);
+            }
+            LineResolver resolver(p, q, spacing, inMinSpacing);
+            if (!resolver.AnyViolation())
+                continue;
+            p_wanted = p;
+            resolver.Resolve();
+
+            // intent: move each yielding control along the axis only, by what the sweeps changed
+            for (std::size_t j = 0; j < count; ++j)
+                if (p[j] != p_wanted[j])
+                {
+                    const std::size_t control = static_cast<std::size_t>(line) + j * step;
+                    ioAfter[control] += (p[j] - p_wanted[j]) * direction;
+                    moved.push_back(static_cast<int>(control));
+                }
+        }
+    }
+    std::sort(moved.begin(), moved.end());
+    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+    return moved;
+}
+
+} // namespace crumple::ffd
