@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FfdDeformer.h>
+#include <crumple/ffd/FoldGuard.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 
@@ -38,6 +40,9 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mCaptureDistance must be in [0, 4] cells");
     if (inSettings.mInverseIterations < 0 || inSettings.mInverseIterations > 32)
         return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mInverseIterations must be in [0, 32]");
+    if (!(inSettings.mMinControlSpacing >= 0.0 && inSettings.mMinControlSpacing < 1.0))
+        return MakeError(EError::InvalidArgument,
+                         "FfdDeformerSettings.mMinControlSpacing must be finite and in [0, 1) spacings");
 
     FfdDeformer deformer;
     for (std::size_t z = 0; z < inSettings.mZones.size(); ++z)
@@ -221,21 +226,64 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         for (std::size_t i = 0; i < locations.size(); ++i)
             before[i] = zone.Displacement(locations[i]);
 
-        // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
         std::vector<int> changed;
         for (std::size_t k = 0; k < data.mControls.size(); ++k)
             if (!control_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
                 changed.push_back(data.mControls[k]);
+
+        // Fold guard: a control pushed into its neighbour along a lattice line pushes it along. When nothing
+        // is pushed (the common case) the solve's controls and rows are used as they are, bit for bit.
+        std::vector<Vec3>& controls = zone.GetControlDisplacements();
+        std::vector<int> pushed;
+        std::vector<int> guarded_controls;
+        Eigen::MatrixX3d guarded_delta;
+        if (mSettings.mMinControlSpacing > 0.0 && !changed.empty())
+        {
+            std::vector<Vec3> after = controls;
+            for (std::size_t k = 0; k < data.mControls.size(); ++k)
+                after[static_cast<std::size_t>(data.mControls[k])] += control_delta.row(static_cast<Eigen::Index>(k)).transpose();
+            pushed = FoldGuard(zone, controls, after, changed, mSettings.mMinControlSpacing);
+            if (!pushed.empty())
+            {
+                // intent: the changed set is the union of solved and pushed controls (both ascending)
+                std::set_union(data.mControls.begin(), data.mControls.end(), pushed.begin(), pushed.end(),
+                               std::back_inserter(guarded_controls));
+                guarded_delta.resize(static_cast<Eigen::Index>(guarded_controls.size()), 3);
+                std::size_t solved = 0;
+                changed.clear();
+                for (std::size_t k = 0; k < guarded_controls.size(); ++k)
+                {
+                    const auto control = static_cast<std::size_t>(guarded_controls[k]);
+                    const bool is_solved = solved < data.mControls.size() &&
+                                           data.mControls[solved] == guarded_controls[k];
+                    const bool is_pushed = std::binary_search(pushed.begin(), pushed.end(), guarded_controls[k]);
+                    if (is_pushed)
+                        guarded_delta.row(static_cast<Eigen::Index>(k)) = (after[control] - controls[control]).transpose();
+                    else
+                        guarded_delta.row(static_cast<Eigen::Index>(k)) = control_delta.row(static_cast<Eigen::Index>(solved));
+                    solved += is_solved ? 1 : 0;
+                    if (!guarded_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
+                        changed.push_back(guarded_controls[k]);
+                }
+            }
+        }
+        const std::span<const int> dent_controls = pushed.empty() ? std::span<const int>(data.mControls)
+                                                                  : std::span<const int>(guarded_controls);
+        const Eigen::MatrixX3d& dent_delta = pushed.empty() ? control_delta : guarded_delta;
+
+        // Scale the dent down as a whole if it would move a vertex too far in one go or in total. The fold
+        // guard's bound is a set of linear inequalities on the controls, hence convex; the controls before
+        // (s = 0) and after (s = 1) both satisfy it, so every s in [0, 1] keeps it.
         const std::vector<std::uint32_t> reached = ReachedVertices(static_cast<int>(z), changed);
-        const double scale = DentScale(static_cast<int>(z), data.mControls, control_delta, reached, inMaxStep);
+        const double scale = DentScale(static_cast<int>(z), dent_controls, dent_delta, reached, inMaxStep);
         report.mScale = std::min(report.mScale, scale);
 
         // Commit the controls, then recompute the reached vertices from them.
-        std::vector<Vec3>& controls = zone.GetControlDisplacements();
-        for (std::size_t k = 0; k < data.mControls.size(); ++k)
-            controls[static_cast<std::size_t>(data.mControls[k])] +=
-                scale * control_delta.row(static_cast<Eigen::Index>(k)).transpose();
+        for (std::size_t k = 0; k < dent_controls.size(); ++k)
+            controls[static_cast<std::size_t>(dent_controls[k])] +=
+                scale * dent_delta.row(static_cast<Eigen::Index>(k)).transpose();
         report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
+        report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
         if (scale > 0.0)
             UpdateVertices(static_cast<int>(z), reached, report);
 

@@ -14,6 +14,8 @@ struct DentReport
     int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance
     int mPointsIgnored = 0;        ///< Points outside every zone (beyond the capture distance)
     int mControlsChanged = 0;      ///< Controls whose displacement changed
+    int mControlsPushed = 0;       ///< Of those, controls the fold guard moved because a neighbour was pushed
+                                   ///< into them (0 unless a dent is deep for the lattice spacing)
     double mScale = 1.0;           ///< Smallest factor a zone's dent was scaled by to respect the step bound and
                                    ///< the maximum total deformation (1 when nothing was limited)
     int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B): > 0 for coincident/collinear sets

@@ -31,6 +31,12 @@ struct FfdDeformerSettings
                                    ///< is moved onto its box; points further out are ignored (and counted)
     int mInverseIterations = 3;    ///< Fixed-point iterations mapping a deformed point back to its rest lattice
                                    ///< coordinate, so that repeated dents compose exactly where they are aimed
+    double mMinControlSpacing = 0.2; ///< Fold guard (see FoldGuard.h): the smallest distance, as a fraction of
+                                     ///< the lattice spacing along that axis, that two neighbouring controls
+                                     ///< of a lattice line may come to along the line's axis, measured in the
+                                     ///< lattice frame (axes^T times the deformed control positions). A control
+                                     ///< pushed closer pushes its neighbour along, so the spline stays monotone
+                                     ///< and the surface cannot fold. In [0, 1); 0 disables the guard
 };
 
 } // namespace crumple::ffd
