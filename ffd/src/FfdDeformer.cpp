@@ -226,22 +226,32 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         for (std::size_t i = 0; i < locations.size(); ++i)
             before[i] = zone.Displacement(locations[i]);
 
+        // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
         std::vector<int> changed;
         for (std::size_t k = 0; k < data.mControls.size(); ++k)
             if (!control_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
                 changed.push_back(data.mControls[k]);
+        std::vector<std::uint32_t> reached = ReachedVertices(static_cast<int>(z), changed);
+        double scale = DentScale(static_cast<int>(z), data.mControls, control_delta, reached, inMaxStep);
+        std::span<const int> dent_controls = data.mControls;
+        const Eigen::MatrixX3d* dent_delta = &control_delta;
+        double solve_scale = scale; // the factor on the solved dent, for the report
 
-        // Fold guard: a control pushed into its neighbour along a lattice line pushes it along. When nothing
-        // is pushed (the common case) the solve's controls and rows are used as they are, bit for bit.
+        // Fold guard on the dent as it would be committed (scaled): a control pushed into its neighbour along
+        // a lattice line pushes it along. Guarding the unscaled solve instead would cascade its whole,
+        // possibly much deeper, overshoot down the line before the scale shrinks it (the offset-wall example
+        // then moved the car's rear by 8 cm). When nothing is pushed (the common case) the solve's controls,
+        // rows and scale are committed as they are, bit for bit.
         std::vector<Vec3>& controls = zone.GetControlDisplacements();
         std::vector<int> pushed;
         std::vector<int> guarded_controls;
         Eigen::MatrixX3d guarded_delta;
-        if (mSettings.mMinControlSpacing > 0.0 && !changed.empty())
+        if (mSettings.mMinControlSpacing > 0.0 && scale > 0.0 && !changed.empty())
         {
             std::vector<Vec3> after = controls;
             for (std::size_t k = 0; k < data.mControls.size(); ++k)
-                after[static_cast<std::size_t>(data.mControls[k])] += control_delta.row(static_cast<Eigen::Index>(k)).transpose();
+                after[static_cast<std::size_t>(data.mControls[k])] +=
+                    scale * control_delta.row(static_cast<Eigen::Index>(k)).transpose();
             pushed = FoldGuard(zone, controls, after, changed, mSettings.mMinControlSpacing);
             if (!pushed.empty())
             {
@@ -249,39 +259,34 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
                 std::set_union(data.mControls.begin(), data.mControls.end(), pushed.begin(), pushed.end(),
                                std::back_inserter(guarded_controls));
                 guarded_delta.resize(static_cast<Eigen::Index>(guarded_controls.size()), 3);
-                std::size_t solved = 0;
                 changed.clear();
                 for (std::size_t k = 0; k < guarded_controls.size(); ++k)
                 {
                     const auto control = static_cast<std::size_t>(guarded_controls[k]);
-                    const bool is_solved = solved < data.mControls.size() &&
-                                           data.mControls[solved] == guarded_controls[k];
-                    const bool is_pushed = std::binary_search(pushed.begin(), pushed.end(), guarded_controls[k]);
-                    if (is_pushed)
-                        guarded_delta.row(static_cast<Eigen::Index>(k)) = (after[control] - controls[control]).transpose();
-                    else
-                        guarded_delta.row(static_cast<Eigen::Index>(k)) = control_delta.row(static_cast<Eigen::Index>(solved));
-                    solved += is_solved ? 1 : 0;
+                    guarded_delta.row(static_cast<Eigen::Index>(k)) = (after[control] - controls[control]).transpose();
                     if (!guarded_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
                         changed.push_back(guarded_controls[k]);
                 }
+                // intent: the pushes move more vertices, so the bounds are checked again on the guarded dent.
+                // The guard's bound is a set of linear inequalities on the controls, hence convex; the
+                // controls before (factor 0) and after the guard (factor 1) both satisfy it, so every factor
+                // in [0, 1] that DentScale picks keeps it.
+                reached = ReachedVertices(static_cast<int>(z), changed);
+                const double guarded_scale =
+                    DentScale(static_cast<int>(z), guarded_controls, guarded_delta, reached, inMaxStep);
+                // The first factor is already in guarded_delta: commit with the second, report their product.
+                solve_scale = scale * guarded_scale;
+                scale = guarded_scale;
+                dent_controls = guarded_controls;
+                dent_delta = &guarded_delta;
             }
         }
-        const std::span<const int> dent_controls = pushed.empty() ? std::span<const int>(data.mControls)
-                                                                  : std::span<const int>(guarded_controls);
-        const Eigen::MatrixX3d& dent_delta = pushed.empty() ? control_delta : guarded_delta;
-
-        // Scale the dent down as a whole if it would move a vertex too far in one go or in total. The fold
-        // guard's bound is a set of linear inequalities on the controls, hence convex; the controls before
-        // (s = 0) and after (s = 1) both satisfy it, so every s in [0, 1] keeps it.
-        const std::vector<std::uint32_t> reached = ReachedVertices(static_cast<int>(z), changed);
-        const double scale = DentScale(static_cast<int>(z), dent_controls, dent_delta, reached, inMaxStep);
-        report.mScale = std::min(report.mScale, scale);
+        report.mScale = std::min(report.mScale, solve_scale);
 
         // Commit the controls, then recompute the reached vertices from them.
         for (std::size_t k = 0; k < dent_controls.size(); ++k)
             controls[static_cast<std::size_t>(dent_controls[k])] +=
-                scale * dent_delta.row(static_cast<Eigen::Index>(k)).transpose();
+                scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
         report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
         report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
         if (scale > 0.0)

@@ -35,7 +35,10 @@ public:
     /// Points are assigned to zones; each zone solves its own minimum-norm system dC = B^+ dP. If the
     /// resulting field would move a vertex by more than inMaxStep, or beyond the zone's maximum total
     /// deformation, the zone's dC is scaled down uniformly (the dent keeps its shape) to the largest factor
-    /// that respects both on every vertex. A NaN/Inf anywhere refuses the whole dent and changes nothing.
+    /// that respects both on every vertex. Then, unless mMinControlSpacing is 0, the fold guard (FoldGuard.h)
+    /// pushes along any control that the scaled dent would push closer than that to its neighbour on a
+    /// lattice line, and the bounds are checked again on the guarded dent, so the surface cannot fold.
+    /// A NaN/Inf anywhere refuses the whole dent and changes nothing.
     /// A dent whose displacements are all zero changes no byte.
     /// @param[in] inMaxStep  bound on how far this dent may move any vertex (m), >= 0
     Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
