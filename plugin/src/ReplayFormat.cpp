@@ -57,6 +57,7 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     deformer.mMergeDistance = reader.ReadDouble();
     deformer.mCaptureDistance = reader.ReadDouble();
     deformer.mInverseIterations = static_cast<int>(reader.ReadU32());
+    deformer.mMinControlSpacing = reader.ReadDouble();
     std::uint32_t zones = 0;
     if (!ReadCount(reader, 19 * 8, zones))
         return MakeError(EError::CorruptData, "object record: zone count is corrupt");
@@ -185,6 +186,7 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mDeformer.mMergeDistance);
     writer.WriteDouble(settings.mDeformer.mCaptureDistance);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mInverseIterations));
+    writer.WriteDouble(settings.mDeformer.mMinControlSpacing);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mZones.size()));
     for (const ffd::FfdZoneSettings& zone : settings.mDeformer.mZones)
     {

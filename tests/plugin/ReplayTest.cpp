@@ -88,6 +88,12 @@ TEST_CASE("A recorded run replayed without an engine gives bitwise identical mes
         Result<Replay> replay = DecodeReplay(bytes);
         REQUIRE(replay);
         CHECK(replay.Get().mObjects.size() == 3);
+        for (const RecordedObject& object : replay.Get().mObjects)
+        {
+            // Version 3 carries the fold guard's setting, read back in place (the fields after it too).
+            CHECK(object.mSettings.mDeformer.mMinControlSpacing == ffd::FfdDeformerSettings{}.mMinControlSpacing);
+            CHECK(object.mSettings.mDeformer.mInverseIterations == ffd::FfdDeformerSettings{}.mInverseIterations);
+        }
         Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
         REQUIRE(objects);
         REQUIRE(objects.Get().size() == 3);
