@@ -83,7 +83,8 @@ const char* cFullScenario = R"({
         {"quantity": "delta_v_m_s", "min": 15},
         {"quantity": "total_impulse_N_s", "min": 1e4, "max": 3e4},
         {"quantity": "energy_absorbed_J", "min": 1.2e5},
-        {"quantity": "collisions", "min": 1}
+        {"quantity": "collisions", "min": 1},
+        {"quantity": "folded_vertices", "max": 0}
     ],
     "outputs": {"pictures": false}
 })";
@@ -127,7 +128,7 @@ TEST_CASE("ScenarioFile: a full scenario parses to exact SI values", "[crash]")
 
     constexpr double inf = std::numeric_limits<double>::infinity();
     const std::vector<Expectation>& list = scenario.mExpectations;
-    REQUIRE(list.size() == 7);
+    REQUIRE(list.size() == 8);
     CHECK(list[0].mQuantity == EQuantity::ResidualCrush);
     CHECK(list[0].mZone == EZone::Front);
     CHECK(list[0].mMin == 0.2);
@@ -153,6 +154,9 @@ TEST_CASE("ScenarioFile: a full scenario parses to exact SI values", "[crash]")
     CHECK(list[5].mMin == 1.2e5);
     CHECK(list[6].mQuantity == EQuantity::Collisions);
     CHECK(list[6].mText == "collisions >= 1");
+    CHECK(list[7].mQuantity == EQuantity::FoldedVertices);
+    CHECK(list[7].mMax == 0.0);
+    CHECK(list[7].mText == "folded_vertices <= 0");
 }
 
 TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
@@ -418,7 +422,7 @@ TEST_CASE("ScenarioFile: a scenario file on disk loads", "[crash]")
     REQUIRE(loaded.IsValid());
     CHECK(loaded.Get().mName == "frontal 56 km/h rigid barrier");
     CHECK(std::filesystem::equivalent(loaded.Get().mVehicle.mMesh, folder / "meshes" / "car.glb"));
-    CHECK(loaded.Get().mExpectations.size() == 7);
+    CHECK(loaded.Get().mExpectations.size() == 8);
 
     // Missing file, a folder: IoError naming the path
     const Result<CrashScenario> missing = LoadCrashScenario(folder / "absent.json");

@@ -110,6 +110,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                               {"impulse_N_s", collision.mImpulse},
                               {"contacts", collision.mContacts}});
     report["collisions"] = collisions;
+    report["folded_vertices"] = inOutcome.mFoldedVertices;
     nlohmann::json expectations = nlohmann::json::array();
     bool passed = true;
     for (const ExpectationResult& result : inResults)
@@ -141,6 +142,9 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     std::fprintf(inStream, "  delta-v %.2f km/h, energy absorbed %.1f kJ, %zu collisions, impulse %.0f N s (peak %.0f)\n",
                  inOutcome.DeltaV() * cKmhPerMs, inOutcome.EnergyAbsorbed() / 1000.0, inOutcome.mCollisions.size(),
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
+    if (inOutcome.mFoldedVertices > 0)
+        std::fprintf(inStream, "  surface folded: %d of %zu vertices turned over\n", inOutcome.mFoldedVertices,
+                     inOutcome.mRestMesh.mPositions.size());
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         std::fprintf(inStream, "  target vehicle residual crush %.3f m\n", inOutcome.mTargetResidualCrush);
     if (inOutcome.mBarrierFragments > 0)
@@ -179,6 +183,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("energy absorbed", Number(inOutcome.EnergyAbsorbed() / 1000.0, 2) + " kJ");
     row("total impulse", Number(inOutcome.mTotalImpulse, 0) + " N s (peak " + Number(inOutcome.mPeakImpulse, 0) + ")");
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
+    row("folded vertices", std::to_string(inOutcome.mFoldedVertices) + " of " +
+                                 std::to_string(inOutcome.mRestMesh.mPositions.size()));
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";

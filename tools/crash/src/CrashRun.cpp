@@ -235,6 +235,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     outcome.mNormals = car.GetNormals();
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
+    outcome.mFoldedVertices = FoldedVertices(outcome.mRestNormals, outcome.mNormals);
     if (scene.GetTargetObject().IsValid())
     {
         const ffd::FfdDeformer& target = scene.GetDamage().GetObject(scene.GetTargetObject())->GetDeformer();
@@ -264,8 +265,18 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return EnergyAbsorbed();
     case EQuantity::Collisions:
         return static_cast<double>(mCollisions.size());
+    case EQuantity::FoldedVertices:
+        return static_cast<double>(mFoldedVertices);
     }
     return std::numeric_limits<double>::quiet_NaN();
+}
+
+int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals)
+{
+    int folded = 0;
+    for (std::size_t vertex = 0; vertex < inNormals.size() && vertex < inRestNormals.size(); ++vertex)
+        folded += inRestNormals[vertex].dot(inNormals[vertex]) < 0.0 ? 1 : 0;
+    return folded;
 }
 
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone)

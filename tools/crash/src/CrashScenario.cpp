@@ -31,6 +31,8 @@ const char* ToString(EQuantity inQuantity)
         return "energy_absorbed_J";
     case EQuantity::Collisions:
         return "collisions";
+    case EQuantity::FoldedVertices:
+        return "folded_vertices";
     }
     return "unknown";
 }

@@ -28,6 +28,7 @@ struct CrashCollisionRecord
 struct CrashOutcome
 {
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
+    int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
@@ -71,5 +72,13 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
 /// (roof: the passenger compartment's), or all vertices (any). Zones overlap at corners: a frontal hit
 /// also shows in left and right.
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone);
+
+/// Vertices whose normal now points against their rest normal (dot < 0): the surface has folded over
+/// there. Vertex normals are area-weighted over the vertex's triangles, so a sliver triangle that a smooth
+/// dent tips over (a thin triangle of a real mesh can) does not count; a sound dent, however deep, turns no
+/// vertex over.
+/// @param[in] inRestNormals  #V unit vertex normals before
+/// @param[in] inNormals      #V unit vertex normals after
+int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals);
 
 } // namespace crumple::crash

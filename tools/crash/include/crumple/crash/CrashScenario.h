@@ -103,6 +103,7 @@ enum class EQuantity : std::uint8_t
     TotalImpulse,   ///< Sum of the car's collision impulses (N s)
     EnergyAbsorbed, ///< Kinetic energy lost, 1/2 m (|v_start|^2 - |v_end|^2) (J)
     Collisions,     ///< Number of collisions involving the car
+    FoldedVertices, ///< Car body vertices whose surface normal the dents turned over (a fold): count
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
