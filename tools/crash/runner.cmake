@@ -11,7 +11,8 @@ if(NOT TARGET crumple_samples_common OR NOT TARGET crumple_fem OR NOT (TARGET cr
     return()
 endif()
 add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashRun.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashSweep.cpp)
+    ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashSweep.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp)
 target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_samples_common
     PRIVATE nlohmann_json::nlohmann_json crumple::compile_options)
 if(TARGET crumple_common_bullet)
@@ -27,4 +28,11 @@ add_executable(crumple-crash ${CMAKE_CURRENT_LIST_DIR}/src/CrashMain.cpp)
 target_link_libraries(crumple-crash PRIVATE crumple_crash_run crumple::compile_options)
 if(CRUMPLE_BUILD_TESTS)
     include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
+    # The runner's private parts (the FEM barrier coupling), against known answers.
+    find_package(Catch2 REQUIRED) # imported targets are per directory
+    include(Catch)
+    add_executable(test_crash_run ${PROJECT_SOURCE_DIR}/tests/TestMain.cpp ${PROJECT_SOURCE_DIR}/tests/crash/FemBarrierCouplingTest.cpp)
+    target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
+    target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)
+    catch_discover_tests(test_crash_run TEST_PREFIX "crash: " PROPERTIES LABELS crash)
 endif()

@@ -36,22 +36,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     };
     if (!inSettings.mFloating)
         add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
-    if (inSettings.mBarrierHalfExtents)
-    {
-        const Vec3& bh = *inSettings.mBarrierHalfExtents;
-        auto barrier_shape = std::make_unique<btBoxShape>(btVector3(btScalar(bh.x()), btScalar(bh.y()), btScalar(bh.z())));
-        auto barrier = std::make_unique<btCollisionObject>();
-        barrier->setCollisionShape(barrier_shape.get());
-        barrier->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(bh.x()), 0, btScalar(bh.z()))));
-        barrier->setFriction(btScalar(0.5));
-        mWorld->addCollisionObject(barrier.get());
-        if (mAdapter != nullptr)
-            mBarrierBody = mAdapter->AddBody(*barrier).Get();
-        mBarrier = barrier.get();
-        mShapes.push_back(std::move(barrier_shape));
-        mObjects.push_back(std::move(barrier));
-    }
-    else if (inSettings.mTargetVehicle)
+    if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.
         const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
@@ -157,17 +142,15 @@ BulletWallCrash::~BulletWallCrash()
     }
 }
 
-void BulletWallCrash::RemoveBarrier()
+plugin::BodyState BulletWallCrash::GetCarState() const
 {
-    if (mBarrier == nullptr)
-        return;
-    if (mAdapter != nullptr)
-        (void)mAdapter->RemoveBody(*mBarrier);
-    mWorld->removeCollisionObject(mBarrier);
-    for (auto& object : mObjects)
-        if (object.get() == mBarrier)
-            object.reset();
-    mBarrier = nullptr;
+    return bullet::BulletBodyState(*mCar);
+}
+
+void BulletWallCrash::SetCarVelocity(const Vec3& inLinear, const Vec3& inAngular)
+{
+    mCar->setLinearVelocity(btVector3(btScalar(inLinear.x()), btScalar(inLinear.y()), btScalar(inLinear.z())));
+    mCar->setAngularVelocity(btVector3(btScalar(inAngular.x()), btScalar(inAngular.y()), btScalar(inAngular.z())));
 }
 
 void BulletWallCrash::Step()

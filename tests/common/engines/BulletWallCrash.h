@@ -5,6 +5,7 @@
 #include "EngineCrash.h"
 
 #include <crumple/bullet/BulletAdapter.h>
+#include <crumple/bullet/BulletBodyState.h>
 
 #include <btBulletDynamicsCommon.h>
 
@@ -30,10 +31,10 @@ public:
     bullet::BulletAdapter& GetAdapter() { return *mAdapter; }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
-    /// The barrier's damage body (invalid without one)
-    plugin::BodyId GetBarrierBody() const { return mBarrierBody; }
-    /// Takes the barrier out of the engine (the car drives on); nothing without one.
-    void RemoveBarrier();
+    /// The car's state as Crumple reads it (mass, world inertia, frame, velocities)
+    plugin::BodyState GetCarState() const;
+    /// Sets the car's velocities (m/s, rad/s, world): for contacts solved outside the engine
+    void SetCarVelocity(const Vec3& inLinear, const Vec3& inAngular);
     /// The target vehicle's deformable object (invalid without one)
     plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
@@ -52,8 +53,6 @@ private:
     std::unique_ptr<bullet::BulletAdapter> mAdapter;
     plugin::ObjectId mCarObject;
     btRigidBody* mTarget = nullptr;
-    btCollisionObject* mBarrier = nullptr;
-    plugin::BodyId mBarrierBody;
     plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
 };

@@ -56,10 +56,6 @@ struct EngineCrashSettings
     double mOverlapFraction = 1.0;     ///< < 1: the wall covers only this share of the car's width, on its +y side
     /// Set: the target is this vehicle (its nearest point at x = 0) instead of a wall or pole
     std::optional<TargetVehicleSettings> mTargetVehicle;
-    /// Set: the target is a static box barrier of these half extents (m) with its face at x = 0, centred on
-    /// y = 0, on the ground, registered with Crumple as its own body (GetBarrierBody), removable mid-run
-    /// (RemoveBarrier) when a destructible prop standing for it breaks
-    std::optional<Vec3> mBarrierHalfExtents;
 };
 
 /// The car's start: centre x so that its nearest bottom corner is mGap from the (possibly turned) wall face,

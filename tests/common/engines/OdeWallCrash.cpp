@@ -24,13 +24,7 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (!inSettings.mFloating)
         dCreatePlane(mSpace, 0, 0, 1, 0);
-    if (inSettings.mBarrierHalfExtents)
-    {
-        const Vec3& bh = *inSettings.mBarrierHalfExtents;
-        mBarrier = dCreateBox(mSpace, 2 * bh.x(), 2 * bh.y(), 2 * bh.z());
-        dGeomSetPosition(mBarrier, bh.x(), 0, bh.z());
-    }
-    else if (inSettings.mTargetVehicle)
+    if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.
         const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
@@ -107,8 +101,6 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 
     if (mAdapter == nullptr)
         return;
-    if (mBarrier != nullptr)
-        mBarrierBody = mAdapter->AddStaticGeom(mBarrier).Get();
     const BodyId car_body = mAdapter->AddBody(mCar).Get();
     mCarObject = mDamage.CreateDeformableObject(car_body, CrashCarObject(inSettings)).Get();
     if (mTarget != nullptr)
@@ -153,10 +145,15 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     }
 }
 
-void OdeWallCrash::RemoveBarrier()
+plugin::BodyState OdeWallCrash::GetCarState() const
 {
-    if (mBarrier != nullptr)
-        dGeomDisable(mBarrier); // no more contacts with it
+    return ode::OdeBodyState(mCar);
+}
+
+void OdeWallCrash::SetCarVelocity(const Vec3& inLinear, const Vec3& inAngular)
+{
+    dBodySetLinearVel(mCar, inLinear.x(), inLinear.y(), inLinear.z());
+    dBodySetAngularVel(mCar, inAngular.x(), inAngular.y(), inAngular.z());
 }
 
 void OdeWallCrash::Step()

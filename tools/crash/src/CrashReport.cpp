@@ -93,6 +93,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     {
         report["barrier_fragments"] = inOutcome.mBarrierFragments;
         report["barrier_broken_links"] = inOutcome.mBarrierBrokenLinks;
+        report["barrier_momentum_N_s"] = ToJson(inOutcome.mBarrierMomentum);
         report["barrier_breached_at_s"] = std::isnan(inOutcome.mBarrierBreachTime) ? nlohmann::json(nullptr)
                                                                                   : nlohmann::json(inOutcome.mBarrierBreachTime);
     }
@@ -148,8 +149,8 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         std::fprintf(inStream, "  target vehicle residual crush %.3f m\n", inOutcome.mTargetResidualCrush);
     if (inOutcome.mBarrierFragments > 0)
-        std::fprintf(inStream, "  barrier: %d pieces, %d links broken, %s\n", inOutcome.mBarrierFragments,
-                     inOutcome.mBarrierBrokenLinks,
+        std::fprintf(inStream, "  barrier: %d pieces, %d links broken, took %.0f N s, %s\n", inOutcome.mBarrierFragments,
+                     inOutcome.mBarrierBrokenLinks, inOutcome.mBarrierMomentum.norm(),
                      std::isnan(inOutcome.mBarrierBreachTime)
                          ? "held"
                          : ("breached at " + std::to_string(inOutcome.mBarrierBreachTime) + " s").c_str());

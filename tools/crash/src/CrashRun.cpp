@@ -4,12 +4,9 @@
 
 #include "CarMesh.h"
 #include "EngineCrash.h"
+#include "FemBarrierCoupling.h"
 
 #include <crumple/ffd/BoundingBox.h>
-#include <crumple/fem/CollisionImpulses.h>
-#include <crumple/fem/PropMaterialPreset.h>
-#include <crumple/fem/TetGrid.h>
-#include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/DamageRecorder.h>
 
 #if defined(CRUMPLE_CRASH_BULLET)
@@ -22,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace crumple::crash
 {
@@ -71,7 +69,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         settings.mOverlapFraction = inScenario.mTarget.mOverlapPercent / 100.0;
     if (inScenario.mTarget.mType == ETarget::FemBarrier)
     {
-        settings.mBarrierHalfExtents = 0.5 * inScenario.mTarget.mBarrierSize;
+        settings.mDriveOnly = true; // the engine never sees the barrier: FemBarrierCoupling meets the car
         settings.mWallAngleDegrees = 0.0;
     }
     if (inScenario.mTarget.mType == ETarget::Vehicle)
@@ -113,67 +111,56 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     return settings;
 }
 
-// The destructible barrier: a tetrahedral grid of the barrier box in its engine body's frame (centred),
-// anchored at its base, fed with the collisions on that body.
-class FemBarrier : public plugin::DamageListener
+// The car front's crush pressure from its dent material: the material's no-damage impulse is Campbell's
+// b0 times the mass, and a full-frontal rigid-wall hit at v dents C = factor (m v - m b0), so b1 = 1 / (factor m).
+CarCrushPressure CrushPressure(const common::EngineCrashSettings& inSettings)
 {
-public:
-    static Result<std::unique_ptr<FemBarrier>> Create(const TargetSpec& inTarget, plugin::BodyId inBody)
+    const double mass = inSettings.mMass;
+    const double width = 2.0 * inSettings.mHalfExtents.y(), height = 2.0 * inSettings.mHalfExtents.z();
+    const double b0 = inSettings.mMaterial.mImpulseThreshold / mass;
+    CarCrushPressure crush;
+    if (!(inSettings.mMaterial.mDeformationFactor > 0.0))
     {
-        static constexpr const char* cNames[] = {"glass", "wood", "brick", "rubber", "steel"};
-        int material = 2;
-        for (int index = 0; index < 5; ++index)
-            if (inTarget.mBarrierMaterial == cNames[index])
-                material = index;
-        Result<fem::PropMaterialPreset> preset = fem::MakePropMaterialPreset(static_cast<fem::EPropMaterial>(material));
-        if (preset.HasError())
-            return preset.GetError();
-        fem::TetGridSettings grid;
-        grid.mOrigin = -0.5 * inTarget.mBarrierSize;
-        grid.mSize = inTarget.mBarrierSize;
-        for (int axis = 0; axis < 3; ++axis)
-            grid.mCellCount[axis] = std::max(1, static_cast<int>(std::lround(inTarget.mBarrierSize[axis] / inTarget.mBarrierCell)));
-        Result<fem::TetMesh> mesh = fem::TetGrid(grid);
-        if (mesh.HasError())
-            return mesh.GetError();
-        fem::TetSolverSettings settings;
-        settings.mIntegrator = fem::EIntegrator::SymplecticEuler; // follows the stress wave of a hit
-        settings.mMaxSubSteps = 100000;
-        Result<fem::TetSolver> solver = fem::TetSolver::Create(mesh.Get(), preset.Get().mMaterial, settings);
-        if (solver.HasError())
-            return solver.GetError();
-        std::unique_ptr<FemBarrier> barrier(new FemBarrier(std::move(solver.Get()), inBody));
-        for (int node = 0; node < barrier->mSolver.GetNodeCount(); ++node)
-            if (barrier->mSolver.GetNodeRestPositions()[node].z() <= grid.mOrigin.z() + 1e-9)
-                (void)barrier->mSolver.SetNodeFixed(node, true);
-        return barrier;
+        crush.mPerMetre = std::numeric_limits<double>::infinity(); // a front that never dents is rigid
+        return crush;
     }
-    void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent>) override
-    {
-        if (inCollision.mBodyA == mBody || inCollision.mBodyB == mBody)
-            (void)fem::ApplyCollision(mSolver, inCollision, mBody);
-    }
-    fem::TetSolver mSolver;
+    const double b1 = 1.0 / (inSettings.mMaterial.mDeformationFactor * mass);
+    crush.mAtZero = mass * b0 * b1 / width / height;
+    crush.mPerMetre = mass * b1 * b1 / width / height;
+    return crush;
+}
 
-private:
-    FemBarrier(fem::TetSolver inSolver, plugin::BodyId inBody) : mSolver(std::move(inSolver)), mBody(inBody) {}
-    plugin::BodyId mBody;
-};
+// The world bounding box of the car's collision box.
+ffd::AlignedBox CarWorldBounds(const Transform& inCar, const Vec3& inHalfExtents)
+{
+    ffd::AlignedBox bounds{Vec3::Constant(std::numeric_limits<double>::infinity()),
+                           Vec3::Constant(-std::numeric_limits<double>::infinity())};
+    for (int corner = 0; corner < 8; ++corner)
+    {
+        const Vec3 local((corner & 1) ? inHalfExtents.x() : -inHalfExtents.x(),
+                         (corner & 2) ? inHalfExtents.y() : -inHalfExtents.y(),
+                         (corner & 4) ? inHalfExtents.z() : -inHalfExtents.z());
+        bounds.mMin = bounds.mMin.cwiseMin(inCar.ToWorld(local));
+        bounds.mMax = bounds.mMax.cwiseMax(inCar.ToWorld(local));
+    }
+    return bounds;
+}
 
 // Runs one engine's scene to the end and fills the outcome.
-template <class Scene, class VelocityOf, class TransformOf>
+template <class Scene>
 Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, const CrashRunOptions& inOptions,
-                              const TargetSpec& inTarget, VelocityOf inVelocityOf, TransformOf inTransformOf)
+                              const TargetSpec& inTarget)
 {
     Scene scene(inSettings);
-    std::unique_ptr<FemBarrier> barrier;
+    // A destructible barrier stands with its face at x = 0, centred on y = 0, on the ground.
+    std::optional<FemBarrierCoupling> barrier;
+    const Vec3 barrier_centre = 0.5 * Vec3(inTarget.mBarrierSize.x(), 0.0, inTarget.mBarrierSize.z());
     if (inTarget.mType == ETarget::FemBarrier)
     {
-        Result<std::unique_ptr<FemBarrier>> created = FemBarrier::Create(inTarget, scene.GetBarrierBody());
+        Result<FemBarrierCoupling> created = FemBarrierCoupling::Create(inTarget, barrier_centre, scene.GetDamage());
         if (created.HasError())
             return created.GetError();
-        barrier = std::move(created.Get());
-        scene.GetDamage().AddListener(barrier.get());
+        barrier.emplace(std::move(created.Get()));
     }
     std::unique_ptr<plugin::DamageRecorder> recorder;
     if (!inOptions.mReplayFile.empty())
@@ -186,37 +173,48 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     }
     CrashOutcome outcome;
     outcome.mMass = inSettings.mMass;
-    outcome.mStartVelocity = inVelocityOf(scene);
-    outcome.mStartTransform = inTransformOf(scene);
+    outcome.mStartVelocity = scene.GetCarState().mLinearVelocity;
+    outcome.mStartTransform = scene.GetCarState().mTransform;
     outcome.mRestNormals = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetNormals();
     const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
+    const plugin::BodyId car_body = scene.GetDamage().GetObjectBody(scene.GetCarObject());
+    const CarCrushPressure crush = CrushPressure(inSettings);
     for (int step = 0; step < steps; ++step)
     {
+        // Two-way: the barrier's contacts change the car's velocity before the engine moves it, and the
+        // barrier's nodes take the opposite impulses.
+        if (barrier)
+        {
+            const plugin::BodyState car = scene.GetCarState();
+            Result<CarVelocity> after =
+                barrier->Collide(car, car_body, inSettings.mHalfExtents, crush, inSettings.mMaxTotalDeformation,
+                                 step * inSettings.mTimeStep, inSettings.mTimeStep, scene.GetDamage());
+            if (after.HasError())
+                return after.GetError();
+            if (after.Get().mLinear != car.mLinearVelocity || after.Get().mAngular != car.mAngularVelocity)
+                scene.SetCarVelocity(after.Get().mLinear, after.Get().mAngular);
+        }
         scene.Step();
         if (barrier)
         {
-            // The barrier follows the engine step; once a piece is loose the car is let through.
-            const Result<fem::TetStepResult> result = barrier->mSolver.Step(inSettings.mTimeStep);
-            if (result.IsValid() && fem::HasEvent(result.Get().mEvents, fem::ETetStepEvent::Fractured) &&
-                std::isnan(outcome.mBarrierBreachTime))
-                for (const fem::TetFragment& fragment : barrier->mSolver.ComputeFragments())
-                    if (!fragment.mAnchored)
-                    {
-                        outcome.mBarrierBreachTime = (step + 1) * inSettings.mTimeStep;
-                        scene.RemoveBarrier();
-                        break;
-                    }
+            if (Result<fem::TetStepResult> result = barrier->Step(inSettings.mTimeStep); result.HasError())
+                return result.GetError();
+            // Breached: the car's box has passed the barrier's back face by more than its front can crush.
+            if (std::isnan(outcome.mBarrierBreachTime) &&
+                CarWorldBounds(scene.GetCarState().mTransform, inSettings.mHalfExtents).mMax.x() >
+                    inTarget.mBarrierSize.x() + inSettings.mMaxTotalDeformation)
+                outcome.mBarrierBreachTime = (step + 1) * inSettings.mTimeStep;
         }
     }
     scene.GetDamage().Flush();
     if (barrier)
     {
-        scene.GetDamage().RemoveListener(barrier.get());
-        outcome.mBarrierFragments = static_cast<int>(barrier->mSolver.ComputeFragments().size());
-        outcome.mBarrierBrokenLinks = barrier->mSolver.GetBrokenLinkCount();
+        outcome.mBarrierFragments = static_cast<int>(barrier->GetSolver().ComputeFragments().size());
+        outcome.mBarrierBrokenLinks = barrier->GetSolver().GetBrokenLinkCount();
+        outcome.mBarrierMomentum = barrier->GetMomentumReceived();
     }
-    outcome.mEndVelocity = inVelocityOf(scene);
-    outcome.mEndTransform = inTransformOf(scene);
+    outcome.mEndVelocity = scene.GetCarState().mLinearVelocity;
+    outcome.mEndTransform = scene.GetCarState().mTransform;
     if (recorder)
         if (Status status = recorder->Close(); status.HasError())
             return status.GetError();
@@ -325,46 +323,13 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
     {
     case EEngine::Bullet:
 #if defined(CRUMPLE_CRASH_BULLET)
-        return RunScene<common::BulletWallCrash>(
-            settings.Get(), inOptions, inScenario.mTarget,
-            [](common::BulletWallCrash& inScene)
-            {
-                const btVector3 v = inScene.GetCar().getLinearVelocity();
-                return Vec3(v.x(), v.y(), v.z());
-            },
-            [](common::BulletWallCrash& inScene)
-            {
-                const btTransform& t = inScene.GetCar().getWorldTransform();
-                Transform transform;
-                for (int row = 0; row < 3; ++row)
-                    for (int col = 0; col < 3; ++col)
-                        transform.mRotation(row, col) = t.getBasis()[row][col];
-                transform.mTranslation = Vec3(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-                return transform;
-            });
+        return RunScene<common::BulletWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
 #else
         return MakeError(EError::InvalidArgument, "crumple-crash was built without Bullet (libbullet-dev)");
 #endif
     case EEngine::Ode:
 #if defined(CRUMPLE_CRASH_ODE)
-        return RunScene<common::OdeWallCrash>(
-            settings.Get(), inOptions, inScenario.mTarget,
-            [](common::OdeWallCrash& inScene)
-            {
-                const dReal* v = dBodyGetLinearVel(inScene.GetCar());
-                return Vec3(v[0], v[1], v[2]);
-            },
-            [](common::OdeWallCrash& inScene)
-            {
-                const dReal* r = dBodyGetRotation(inScene.GetCar()); // 3 x 4, row major
-                const dReal* p = dBodyGetPosition(inScene.GetCar());
-                Transform transform;
-                for (int row = 0; row < 3; ++row)
-                    for (int col = 0; col < 3; ++col)
-                        transform.mRotation(row, col) = r[4 * row + col];
-                transform.mTranslation = Vec3(p[0], p[1], p[2]);
-                return transform;
-            });
+        return RunScene<common::OdeWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
 #else
         return MakeError(EError::InvalidArgument, "crumple-crash was built without ODE (libode-dev)");
 #endif

@@ -45,8 +45,9 @@ struct CrashOutcome
                                                                             ///< displacement (m); NaN without one
     int mBarrierFragments = 0;   ///< FEM barrier: pieces at the end (1 = whole); 0 without a barrier
     int mBarrierBrokenLinks = 0; ///< FEM barrier: links broken
-    double mBarrierBreachTime = std::numeric_limits<double>::quiet_NaN(); ///< FEM barrier: when a piece broke loose
-                                                                          ///< and the car was let through (s); NaN: never
+    double mBarrierBreachTime = std::numeric_limits<double>::quiet_NaN(); ///< FEM barrier: when the car's front
+                                                                          ///< passed its back face (s); NaN: never
+    Vec3 mBarrierMomentum = Vec3::Zero(); ///< FEM barrier: momentum the car handed to it (world, N s)
 
     /// |v_end - v_start| (m/s)
     double DeltaV() const { return (mEndVelocity - mStartVelocity).norm(); }
