@@ -7,6 +7,8 @@
 #include <crumple/plugin/ContactEvent.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 
 namespace crumple::crash
@@ -22,6 +24,8 @@ constexpr int cSolverPasses = 16;
 constexpr double cContactMargin = 0.02;
 // The barrier's body in the damage world when the car's whole approach was stopped (kg): as good as immovable.
 constexpr double cImmovableMass = 1.0e12;
+// No entry face yet.
+constexpr std::int8_t cNoFace = -1;
 
 } // namespace
 
@@ -101,6 +105,7 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
     const std::vector<Vec3>& velocities = mSolver.GetVelocities();
     const std::vector<double>& inverse_masses = mSolver.GetInverseMasses();
     const Mat3 inverse_inertia = inCar.InverseInertia();
+    mEntryFace.resize(positions.size(), cNoFace); // copies a crack makes start without one
     for (int node = 0; node < mSolver.GetNodeCount(); ++node)
     {
         const auto n = static_cast<std::size_t>(node);
@@ -109,9 +114,13 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
             continue;
         const Vec3 local = inCar.mTransform.ToBody(positions[n] + mWorldCentre);
         if (((local.cwiseAbs() - inHalfExtents).array() > inReach).any())
+        {
+            mEntryFace[n] = cNoFace;
             continue;
+        }
 
-        // Nearest point of the box's surface, the normal there (body frame) and the signed distance.
+        // Outside: the nearest point of the box's surface, the normal there (body frame), the distance; the
+        // face it would come in through is the one it is furthest out of.
         NodeContact contact;
         contact.mNode = node;
         Vec3 face_point = local.cwiseMax(-inHalfExtents).cwiseMin(inHalfExtents);
@@ -120,36 +129,46 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
         {
             contact.mGap = normal.norm();
             normal /= contact.mGap;
+            Eigen::Index axis = 0;
+            (local.cwiseAbs() - inHalfExtents).maxCoeff(&axis);
+            mEntryFace[n] = static_cast<std::int8_t>(2 * axis + (local[axis] < 0.0 ? 0 : 1));
         }
         else
         {
-            // Inside: out through the face advancing fastest on the node (the face it is coming in through:
-            // the front, in a frontal crush, even once the crush is deeper than the node's distance to the
-            // top or a side); a node no face advances on is left where it is.
-            const Vec3 relative = inCar.mTransform.DirectionToBody(
-                inCar.mLinearVelocity + inCar.mAngularVelocity.cross(inCar.mTransform.ToWorld(local) - inCar.mCenterOfMass) -
-                velocities[n]);
-            int axis = -1;
-            double fastest = 0.0;
-            for (int a = 0; a < 3; ++a)
+            // Inside: out through the face it came in through (the front, in a frontal crush, however deep the
+            // crush and wherever the top or a side is nearer); a node first met inside takes the face advancing
+            // fastest on it, and one no face advances on is left where it is.
+            if (mEntryFace[n] == cNoFace)
             {
-                const double side = local[a] < 0.0 ? -1.0 : 1.0;
-                if (side * relative[a] > fastest)
+                const Vec3 relative = inCar.mTransform.DirectionToBody(
+                    inCar.mLinearVelocity +
+                    inCar.mAngularVelocity.cross(inCar.mTransform.ToWorld(local) - inCar.mCenterOfMass) - velocities[n]);
+                double fastest = 0.0;
+                for (int a = 0; a < 3; ++a)
                 {
-                    axis = a;
-                    fastest = side * relative[a];
+                    const int side = local[a] < 0.0 ? 0 : 1;
+                    const double speed = side == 1 ? relative[a] : -relative[a];
+                    if (speed > fastest)
+                    {
+                        fastest = speed;
+                        mEntryFace[n] = static_cast<std::int8_t>(2 * a + side);
+                    }
                 }
+                if (mEntryFace[n] == cNoFace)
+                    continue;
             }
-            const double depth = axis < 0 ? 0.0 : inHalfExtents[axis] - std::abs(local[axis]);
+            const int axis = mEntryFace[n] / 2;
+            const double side = mEntryFace[n] % 2 == 1 ? 1.0 : -1.0;
+            const double depth = inHalfExtents[axis] - side * local[axis];
             // Deeper than the car's front can crush: a node the car has passed, not one it is meeting.
-            if (axis < 0 || depth > inMaxCrush + inReach)
+            if (depth > inMaxCrush + inReach)
                 continue;
-            const double side = local[axis] < 0.0 ? -1.0 : 1.0;
             contact.mGap = -depth;
             normal = Vec3::Zero();
             normal[axis] = side;
             face_point[axis] = side * inHalfExtents[axis];
         }
+        contact.mFace = mEntryFace[n];
         contact.mNormal = inCar.mTransform.mRotation * normal;
         contact.mArm = inCar.mTransform.ToWorld(face_point) - inCar.mCenterOfMass;
         const Vec3 arm_cross_normal = contact.mArm.cross(contact.mNormal);
@@ -198,21 +217,44 @@ Status FemBarrierCoupling::ReportContacts(const plugin::BodyState& inCar, plugin
     if (Status status = ioDamage.SetBodyState(inCarBody, inCar); status.HasError())
         return status;
 
+    // Per car face, the pushing contacts at the corners of their patch (extremes of +-u +-v in the face).
     std::vector<plugin::ContactEvent> events;
-    events.reserve(mContacts.size());
-    for (const NodeContact& contact : mContacts)
+    for (int face = 0; face < 6; ++face)
     {
-        if (contact.mImpulse == 0.0)
-            continue;
-        plugin::ContactEvent event;
-        event.mBodyA = inCarBody;
-        event.mBodyB = mBody;
-        event.mPointOnA = inCar.mCenterOfMass + contact.mArm;
-        event.mPointOnB = positions[static_cast<std::size_t>(contact.mNode)] + mWorldCentre;
-        event.mNormal = -contact.mNormal; // from the barrier towards the car
-        event.mPenetrationDepth = -contact.mGap;
-        event.mTime = inTime;
-        events.push_back(event);
+        const int u = (face / 2 + 1) % 3, v = (face / 2 + 2) % 3;
+        std::array<const NodeContact*, 4> corners{};
+        std::array<double, 4> best{};
+        best.fill(-std::numeric_limits<double>::infinity());
+        for (const NodeContact& contact : mContacts)
+        {
+            if (contact.mImpulse == 0.0 || contact.mFace != face)
+                continue;
+            const Vec3 local = inCar.mTransform.DirectionToBody(contact.mArm);
+            const std::array<double, 4> score{local[u] + local[v], local[u] - local[v], -local[u] + local[v],
+                                              -local[u] - local[v]};
+            for (std::size_t k = 0; k < 4; ++k)
+                if (score[k] > best[k])
+                {
+                    best[k] = score[k];
+                    corners[k] = &contact;
+                }
+        }
+        for (std::size_t k = 0; k < 4; ++k)
+        {
+            const NodeContact* contact = corners[k];
+            if (contact == nullptr || std::find(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(k), contact) !=
+                                          corners.begin() + static_cast<std::ptrdiff_t>(k))
+                continue; // no patch on this face, or a corner already taken
+            plugin::ContactEvent event;
+            event.mBodyA = inCarBody;
+            event.mBodyB = mBody;
+            event.mPointOnA = inCar.mCenterOfMass + contact->mArm;
+            event.mPointOnB = positions[static_cast<std::size_t>(contact->mNode)] + mWorldCentre;
+            event.mNormal = -contact->mNormal; // from the barrier towards the car
+            event.mPenetrationDepth = -contact->mGap;
+            event.mTime = inTime;
+            events.push_back(event);
+        }
     }
     return ioDamage.SubmitContacts(events, inTimeStep);
 }

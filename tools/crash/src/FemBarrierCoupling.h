@@ -8,6 +8,7 @@
 #include <crumple/plugin/BodyState.h>
 #include <crumple/plugin/DamageWorld.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace crumple::crash
@@ -34,9 +35,12 @@ struct CarVelocity
 ///  1. Contact: every free node of the barrier near the car's collision box is a contact, its normal the
 ///     normal of the box face it is nearest to (out of the car), its gap the distance to that face (< 0
 ///     inside).
-///  2. Damage: the contacts go to the damage world between the car and the barrier's own body, which for the
-///     step is a rigid body of the touching nodes' mass and mean velocity, so that Crumple dents the car from
-///     the same pre-contact state as it would for an engine's contact.
+///  2. Damage: the contacts that pushed go to the damage world between the car and the barrier's own body
+///     (for the step a rigid body moving as the pushed nodes did, of the mass that makes Crumple's inelastic
+///     impulse the one delivered), as an engine's contact manifold: per car face at most four points, the
+///     corners of the contact patch. Crumple's dent model is calibrated on such manifolds; dozens of node
+///     contacts a few centimetres apart would instead ask the FFD solve for controls that swing well past the
+///     dent between them.
 ///  3. Solve: sequential impulses between each node (its lumped mass) and the car (mass, world inertia),
 ///     inelastic and without friction; a node with a gap may approach until the gap closes within the step
 ///     (speculative contact, so nothing tunnels). The car is not rigid: a node's impulse is capped at what
@@ -90,6 +94,7 @@ private:
         double mInverseEffectiveMass = 0.0;
         double mImpulse = 0.0;        // accumulated along mNormal on the node (N s), >= 0
         double mMaxImpulse = 0.0;     // what the crushing car can push in the step (N s)
+        int mFace = 0;                // the car box face it meets: 2 axis + (side > 0)
     };
 
     FemBarrierCoupling(fem::TetSolver inSolver, const Vec3& inWorldCentre, plugin::BodyId inBody,
@@ -107,6 +112,7 @@ private:
     Vec3 mHalfSize;           // the barrier's half size (m); its front face is x = -mHalfSize.x()
     Vec3 mCell;               // its grid cell (m)
     std::vector<NodeContact> mContacts;
+    std::vector<std::int8_t> mEntryFace; // per node: the car box face (2 axis + (side > 0)) it came in through, -1: none
     Vec3 mMomentumReceived = Vec3::Zero();
 };
 
