@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cmath>
+#include <limits>
 
 namespace crumple::crash
 {
@@ -268,7 +268,7 @@ Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, 
         !inCar.mAngularVelocity.allFinite() || !inCar.mTransform.mTranslation.allFinite() || !inHalfExtents.allFinite() ||
         !(inCrush.mAtZero >= 0.0) || !(inCrush.mPerMetre >= 0.0) || !(inMaxCrush >= 0.0))
         return MakeError(EError::InvalidArgument, "fem barrier: the car's state and the time step must be finite, "
-                                                  "the step > 0 s");
+                                                  "the step > 0 s, the crush pressures and the max crush >= 0");
     CarVelocity car{inCar.mLinearVelocity, inCar.mAngularVelocity};
     // Reach: what the step's relative motion can close, twice over, plus a margin.
     const double reach =
@@ -277,8 +277,10 @@ Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, 
     if (mContacts.empty())
         return car;
     for (NodeContact& contact : mContacts)
-        contact.mMaxImpulse = (inCrush.mAtZero + inCrush.mPerMetre * std::max(0.0, -contact.mGap)) *
-                              FaceArea(contact.mNode) * inTimeStep;
+        contact.mMaxImpulse = std::isinf(inCrush.mPerMetre) // a rigid front: no cap
+                                  ? std::numeric_limits<double>::infinity()
+                                  : (inCrush.mAtZero + inCrush.mPerMetre * std::max(0.0, -contact.mGap)) *
+                                        FaceArea(contact.mNode) * inTimeStep;
 
     // Sequential impulses, in node order (deterministic).
     const std::vector<double>& inverse_masses = mSolver.GetInverseMasses();
