@@ -7,21 +7,23 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
 int main(int argc, char** argv)
 {
     using namespace crumple::bench;
     BenchOptions options;
-    std::string csv;
+    std::string csv, only;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
         {
-            std::printf("usage: crumple-bench [--quick] [--csv FILE]\n"
+            std::printf("usage: crumple-bench [--quick] [--only GROUP] [--csv FILE]\n"
                         "  Times every benchmark (median of repetitions) and reports its error.\n"
-                        "  --quick     few repetitions on small meshes (a smoke run)\n"
-                        "  --csv FILE  also write rows benchmark,case,median_ms,error,error_unit,extra\n");
+                        "  --quick       few repetitions on small meshes (a smoke run)\n"
+                        "  --only GROUP  one group: dent, impulse, adapter, fem, barrier or gpu\n"
+                        "  --csv FILE    also write rows benchmark,case,median_ms,error,error_unit,extra\n");
             return 0;
         }
         if (arg == "--version")
@@ -33,6 +35,8 @@ int main(int argc, char** argv)
             options.mQuick = true;
         else if (arg == "--csv" && i + 1 < argc)
             csv = argv[++i];
+        else if (arg == "--only" && i + 1 < argc)
+            only = argv[++i];
         else
         {
             std::fprintf(stderr, "crumple-bench: unknown argument '%s' (see --help)\n", arg.c_str());
@@ -40,13 +44,24 @@ int main(int argc, char** argv)
         }
     }
 
+    using Group = void (*)(BenchTable&, const BenchOptions&);
+    const std::pair<const char*, Group> groups[] = {
+        {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
+        {"fem", RunFemBenchmarks},   {"barrier", RunBarrierBenchmarks}, {"gpu", RunGpuBenchmarks}};
+    bool known = only.empty();
+    for (const auto& [name, run] : groups)
+        known = known || only == name;
+    if (!known)
+    {
+        std::fprintf(stderr, "crumple-bench: unknown group '%s' (see --help)\n", only.c_str());
+        return 2;
+    }
+
     BenchTable table;
     std::printf("crumple-bench %s%s: running\n", crumple::VersionString(), options.mQuick ? " (quick)" : "");
-    RunDentBenchmarks(table, options);
-    RunImpulseBenchmarks(table, options);
-    RunAdapterBenchmarks(table, options);
-    RunFemBenchmarks(table, options);
-    RunGpuBenchmarks(table, options);
+    for (const auto& [name, run] : groups)
+        if (only.empty() || only == name)
+            run(table, options);
     table.Print();
     if (!csv.empty() && !table.WriteCsv(csv))
     {

@@ -30,6 +30,10 @@ void RunAdapterBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// crumple::fem.
 void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// The two-way FEM barrier coupling of crumple-crash: a car stopped by a steel barrier at three engine steps,
+/// time per step against the crush's error relative to Campbell's line. Empty without crumple-crash.
+void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 /// The FEM on the CPU (double) and as compute shaders (float) in one run: time per 1/60 s step of the steel
 /// cantilever against tet count (1k to 1M) and the tip error of each; without an EGL device it says so.
 void RunGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);

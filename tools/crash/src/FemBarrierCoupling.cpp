@@ -26,6 +26,8 @@ constexpr double cContactMargin = 0.02;
 constexpr double cImmovableMass = 1.0e12;
 // No entry face yet.
 constexpr std::int8_t cNoFace = -1;
+// A node less than this outside the box (m) lies on its surface, for choosing the face it meets.
+constexpr double cOnFace = 1.0e-6;
 
 } // namespace
 
@@ -119,25 +121,28 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
             continue;
         }
 
-        // Outside: the nearest point of the box's surface, the normal there (body frame), the distance; the
-        // face it would come in through is the one it is furthest out of.
+        // The box face the node meets. Clearly outside, it is the face it is furthest out of, and the contact
+        // is from the nearest point of the box. Touching or inside, it is the face it came in through (the
+        // front, in a frontal crush, however deep the crush and wherever the top or a side is nearer, and also
+        // for a node that lies in the plane of the top); one first met there takes the face it is out of, or
+        // else the face advancing fastest on it, and one no face advances on is left where it is.
         NodeContact contact;
         contact.mNode = node;
+        Eigen::Index out_axis = 0;
+        const double out_distance = (local.cwiseAbs() - inHalfExtents).maxCoeff(&out_axis);
+        const auto out_face = static_cast<std::int8_t>(2 * out_axis + (local[out_axis] < 0.0 ? 0 : 1));
         Vec3 face_point = local.cwiseMax(-inHalfExtents).cwiseMin(inHalfExtents);
         Vec3 normal = local - face_point;
-        if (normal.squaredNorm() > 0.0)
+        if (out_distance > cContactMargin)
         {
             contact.mGap = normal.norm();
             normal /= contact.mGap;
-            Eigen::Index axis = 0;
-            (local.cwiseAbs() - inHalfExtents).maxCoeff(&axis);
-            mEntryFace[n] = static_cast<std::int8_t>(2 * axis + (local[axis] < 0.0 ? 0 : 1));
+            mEntryFace[n] = out_face;
         }
         else
         {
-            // Inside: out through the face it came in through (the front, in a frontal crush, however deep the
-            // crush and wherever the top or a side is nearer); a node first met inside takes the face advancing
-            // fastest on it, and one no face advances on is left where it is.
+            if (mEntryFace[n] == cNoFace && out_distance > cOnFace)
+                mEntryFace[n] = out_face;
             if (mEntryFace[n] == cNoFace)
             {
                 const Vec3 relative = inCar.mTransform.DirectionToBody(
@@ -159,13 +164,14 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
             }
             const int axis = mEntryFace[n] / 2;
             const double side = mEntryFace[n] % 2 == 1 ? 1.0 : -1.0;
-            const double depth = inHalfExtents[axis] - side * local[axis];
+            const double depth = inHalfExtents[axis] - side * local[axis]; // < 0: in front of the face
             // Deeper than the car's front can crush: a node the car has passed, not one it is meeting.
             if (depth > inMaxCrush + inReach)
                 continue;
             contact.mGap = -depth;
             normal = Vec3::Zero();
             normal[axis] = side;
+            face_point = local;
             face_point[axis] = side * inHalfExtents[axis];
         }
         contact.mFace = mEntryFace[n];
