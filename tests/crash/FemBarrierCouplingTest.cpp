@@ -68,10 +68,11 @@ TEST_CASE("FemBarrierCoupling: bad input is refused and changes nothing", "[cras
     const CarCrushPressure crush{1.0e5, 1.0e6};
 
     car.mLinearVelocity.x() = std::nan("");
-    CHECK(barrier.Collide(car, car_body, half, crush, 1.0, 0.0, 1.0 / 120.0, damage).HasError());
+    CHECK(barrier.Collide(car, car_body, half, crush, 1.0, 0.4, 0.0, 1.0 / 120.0, damage).HasError());
     car.mLinearVelocity.x() = 8.0;
-    CHECK(barrier.Collide(car, car_body, half, crush, 1.0, 0.0, 0.0, damage).HasError());
-    CHECK(barrier.Collide(car, car_body, half, {-1.0, 1.0e6}, 1.0, 0.0, 1.0 / 120.0, damage).HasError());
+    CHECK(barrier.Collide(car, car_body, half, crush, 1.0, 0.4, 0.0, 0.0, damage).HasError());
+    CHECK(barrier.Collide(car, car_body, half, {-1.0, 1.0e6}, 1.0, 0.4, 0.0, 1.0 / 120.0, damage).HasError());
+    CHECK(barrier.Collide(car, car_body, half, crush, 1.0, -0.1, 0.0, 1.0 / 120.0, damage).HasError());
     CHECK(barrier.GetSolver().GetVelocities() == before);
     CHECK(barrier.GetMomentumReceived() == Vec3::Zero());
 

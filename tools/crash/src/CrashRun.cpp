@@ -27,6 +27,9 @@ namespace crumple::crash
 namespace
 {
 
+// The collision window of a crash run (s).
+constexpr double cCrashPulseWindow = 0.15;
+
 // Principal moments (the diagonal) of a uniform thin shell of mass inMass over the mesh's triangles, about
 // inCentre: a triangle of area A and corners x_i has integral x x^T dA = A / 12 (sum x_i x_i^T + s s^T),
 // s = sum x_i.
@@ -85,6 +88,9 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         settings.mTargetVehicle = other;
         settings.mWallAngleDegrees = 0.0;
     }
+    // One collision per crash pulse: a car's crush against a barrier lasts about 0.1 s, longer than the
+    // core's default window for game impacts (a yielding or crushing contact reaches Crumple over that time).
+    settings.mWorld.mGrouping.mTimeWindow = cCrashPulseWindow;
     settings.mTimeStep = inScenario.mTimeStep;
     settings.mDuration = inScenario.mDuration;
     settings.mHalfExtents = 0.5 * vehicle.mBoxSize;
@@ -179,6 +185,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
     const plugin::BodyId car_body = scene.GetDamage().GetObjectBody(scene.GetCarObject());
     const CarCrushPressure crush = CrushPressure(inSettings);
+    const double edge_snap = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetMinSpacing();
     for (int step = 0; step < steps; ++step)
     {
         // Two-way: the barrier's contacts change the car's velocity before the engine moves it, and the
@@ -187,7 +194,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         {
             const plugin::BodyState car = scene.GetCarState();
             Result<CarVelocity> after =
-                barrier->Collide(car, car_body, inSettings.mHalfExtents, crush, inSettings.mMaxTotalDeformation,
+                barrier->Collide(car, car_body, inSettings.mHalfExtents, crush, inSettings.mMaxTotalDeformation, edge_snap,
                                  step * inSettings.mTimeStep, inSettings.mTimeStep, scene.GetDamage());
             if (after.HasError())
                 return after.GetError();

@@ -184,7 +184,8 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
     }
 }
 
-Status FemBarrierCoupling::ReportContacts(const plugin::BodyState& inCar, plugin::BodyId inCarBody, double inTime,
+Status FemBarrierCoupling::ReportContacts(const plugin::BodyState& inCar, plugin::BodyId inCarBody,
+                                          const Vec3& inHalfExtents, double inEdgeSnap, double inTime,
                                           double inTimeStep, plugin::DamageWorld& ioDamage) const
 {
     // The barrier's body for this step: the pushed nodes as one rigid body that does not turn, moving as
@@ -254,7 +255,11 @@ Status FemBarrierCoupling::ReportContacts(const plugin::BodyState& inCar, plugin
             plugin::ContactEvent event;
             event.mBodyA = inCarBody;
             event.mBodyB = mBody;
-            event.mPointOnA = inCar.mCenterOfMass + contact->mArm;
+            Vec3 corner = inCar.mTransform.ToBody(inCar.mCenterOfMass + contact->mArm);
+            for (int axis : {u, v})
+                if (std::abs(corner[axis]) > inHalfExtents[axis] - inEdgeSnap)
+                    corner[axis] = corner[axis] < 0.0 ? -inHalfExtents[axis] : inHalfExtents[axis];
+            event.mPointOnA = inCar.mTransform.ToWorld(corner);
             event.mPointOnB = positions[static_cast<std::size_t>(contact->mNode)] + mWorldCentre;
             event.mNormal = -contact->mNormal; // from the barrier towards the car
             event.mPenetrationDepth = -contact->mGap;
@@ -267,14 +272,14 @@ Status FemBarrierCoupling::ReportContacts(const plugin::BodyState& inCar, plugin
 
 Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, plugin::BodyId inCarBody,
                                                 const Vec3& inHalfExtents, const CarCrushPressure& inCrush,
-                                                double inMaxCrush, double inTime, double inTimeStep,
+                                                double inMaxCrush, double inEdgeSnap, double inTime, double inTimeStep,
                                                 plugin::DamageWorld& ioDamage)
 {
     if (!(inTimeStep > 0.0) || !std::isfinite(inTimeStep) || !inCar.mLinearVelocity.allFinite() ||
         !inCar.mAngularVelocity.allFinite() || !inCar.mTransform.mTranslation.allFinite() || !inHalfExtents.allFinite() ||
-        !(inCrush.mAtZero >= 0.0) || !(inCrush.mPerMetre >= 0.0) || !(inMaxCrush >= 0.0))
+        !(inCrush.mAtZero >= 0.0) || !(inCrush.mPerMetre >= 0.0) || !(inMaxCrush >= 0.0) || !(inEdgeSnap >= 0.0))
         return MakeError(EError::InvalidArgument, "fem barrier: the car's state and the time step must be finite, "
-                                                  "the step > 0 s, the crush pressures and the max crush >= 0");
+                                                  "the step > 0 s, the crush pressures, the max crush and the edge snap >= 0");
     CarVelocity car{inCar.mLinearVelocity, inCar.mAngularVelocity};
     // Reach: what the step's relative motion can close, twice over, plus a margin.
     const double reach =
@@ -312,7 +317,8 @@ Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, 
         }
 
     // Crumple dents the car from the contacts that pushed, with the states before they did.
-    if (Status status = ReportContacts(inCar, inCarBody, inTime, inTimeStep, ioDamage); status.HasError())
+    if (Status status = ReportContacts(inCar, inCarBody, inHalfExtents, inEdgeSnap, inTime, inTimeStep, ioDamage);
+        status.HasError())
         return status.GetError();
 
     // The nodes take their impulses.

@@ -38,9 +38,10 @@ struct CarVelocity
 ///  2. Damage: the contacts that pushed go to the damage world between the car and the barrier's own body
 ///     (for the step a rigid body moving as the pushed nodes did, of the mass that makes Crumple's inelastic
 ///     impulse the one delivered), as an engine's contact manifold: per car face at most four points, the
-///     corners of the contact patch. Crumple's dent model is calibrated on such manifolds; dozens of node
-///     contacts a few centimetres apart would instead ask the FFD solve for controls that swing well past the
-///     dent between them.
+///     corners of the contact patch, put on the face's edges when within a lattice cell of them (a barrier
+///     a little lower than the car). Crumple's dent model is calibrated on such manifolds; dozens of node
+///     contacts a few centimetres apart, or a patch stopping short of the edge, would instead ask the FFD
+///     solve for controls that swing well past the dent.
 ///  3. Solve: sequential impulses between each node (its lumped mass) and the car (mass, world inertia),
 ///     inelastic and without friction; a node with a gap may approach until the gap closes within the step
 ///     (speculative contact, so nothing tunnels). The car is not rigid: a node's impulse is capped at what
@@ -72,9 +73,13 @@ public:
     /// @return the car's velocities after the contacts; refused (nothing changed) on non-finite input
     /// @param[in] inCrush        the car front's crush pressure law
     /// @param[in] inMaxCrush     nodes deeper inside the car's box than this (m) are behind its crushable front
+    /// @param[in] inEdgeSnap     a patch corner reported to Crumple this close (m) to an edge of the car's face
+    ///                           is put on the edge: the car's FFD lattice spacing (a narrower band cannot bend
+    ///                           by itself, and a dent that stops short of the edge leaves the edge's controls
+    ///                           free to swing past it)
     Result<CarVelocity> Collide(const plugin::BodyState& inCar, plugin::BodyId inCarBody, const Vec3& inHalfExtents,
-                                const CarCrushPressure& inCrush, double inMaxCrush, double inTime, double inTimeStep,
-                                plugin::DamageWorld& ioDamage);
+                                const CarCrushPressure& inCrush, double inMaxCrush, double inEdgeSnap, double inTime,
+                                double inTimeStep, plugin::DamageWorld& ioDamage);
     /// Step 4: the FEM over one engine step (s).
     Result<fem::TetStepResult> Step(double inTimeStep) { return mSolver.Step(inTimeStep); }
 
@@ -103,8 +108,8 @@ private:
     /// A node's share of the front face (m^2); 0 off it
     double FaceArea(int inNode) const;
     void FindContacts(const plugin::BodyState& inCar, const Vec3& inHalfExtents, double inReach, double inMaxCrush);
-    Status ReportContacts(const plugin::BodyState& inCar, plugin::BodyId inCarBody, double inTime, double inTimeStep,
-                          plugin::DamageWorld& ioDamage) const;
+    Status ReportContacts(const plugin::BodyState& inCar, plugin::BodyId inCarBody, const Vec3& inHalfExtents,
+                          double inEdgeSnap, double inTime, double inTimeStep, plugin::DamageWorld& ioDamage) const;
 
     fem::TetSolver mSolver;
     Vec3 mWorldCentre;        // barrier frame origin in the world (m)

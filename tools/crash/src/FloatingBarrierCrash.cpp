@@ -50,7 +50,7 @@ Result<FloatingBarrierCrashResult> RunFloatingBarrierCrash(const FloatingBarrier
     for (int step = 0; step < steps; ++step)
     {
         const double time = step * inSettings.mTimeStep;
-        Result<CarVelocity> after = barrier.Collide(car, car_body.Get(), half, crush, 1.0, time, inSettings.mTimeStep, damage);
+        Result<CarVelocity> after = barrier.Collide(car, car_body.Get(), half, crush, 1.0, 0.4, time, inSettings.mTimeStep, damage);
         if (after.HasError())
             return after.GetError();
         car.mLinearVelocity = after.Get().mLinear;
