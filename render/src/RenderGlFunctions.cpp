@@ -2,24 +2,20 @@
 // SPDX-License-Identifier: MIT
 #include "RenderGlFunctions.h"
 
+#include <crumple/gpu/LoadGlFunction.h>
+
 namespace crumple::render
 {
 
 namespace
 {
 
-/// Loads one entry point into ioFunction and records its name in ioMissing when absent.
+// One entry point through the context (see LoadGlFunction).
 template <class Function>
-void LoadOne(const gpu::EglContext& inContext, const char* inName, Function& ioFunction,
-             std::string& ioMissing)
+void LoadOne(const gpu::EglContext& inContext, const char* inName, Function& ioFunction, std::string& ioMissing)
 {
-    ioFunction = reinterpret_cast<Function>(inContext.GetProcAddress(inName));
-    if (ioFunction == nullptr)
-    {
-        if (!ioMissing.empty())
-            ioMissing += ' ';
-        ioMissing += inName;
-    }
+    gpu::LoadGlFunction([&inContext](const char* inProc) { return inContext.GetProcAddress(inProc); }, inName, ioFunction,
+                        ioMissing);
 }
 
 } // namespace

@@ -2,35 +2,18 @@
 // SPDX-License-Identifier: MIT
 #include "GlFunctions.h"
 
+#include <crumple/gpu/LoadGlFunction.h>
+
 namespace crumple::gpu
 {
-
-namespace
-{
-
-/// Loads one entry point into ioFunction and records its name in ioMissing when absent.
-template <class Function>
-void LoadOne(EglContext::GlProc (*inLoad)(const char*), const char* inName, Function& ioFunction,
-             std::string& ioMissing)
-{
-    ioFunction = reinterpret_cast<Function>(inLoad(inName));
-    if (ioFunction == nullptr)
-    {
-        if (!ioMissing.empty())
-            ioMissing += ' ';
-        ioMissing += inName;
-    }
-}
-
-} // namespace
 
 std::string GlFunctions::Load(EglContext::GlProc (*inLoad)(const char*))
 {
     std::string missing;
-    LoadOne(inLoad, "glGetString", mGetString, missing);
-    LoadOne(inLoad, "glGetIntegerv", mGetIntegerv, missing);
-    LoadOne(inLoad, "glGetError", mGetError, missing);
-    LoadOne(inLoad, "glFinish", mFinish, missing);
+    LoadGlFunction(inLoad, "glGetString", mGetString, missing);
+    LoadGlFunction(inLoad, "glGetIntegerv", mGetIntegerv, missing);
+    LoadGlFunction(inLoad, "glGetError", mGetError, missing);
+    LoadGlFunction(inLoad, "glFinish", mFinish, missing);
     return missing;
 }
 

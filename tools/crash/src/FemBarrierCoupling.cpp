@@ -34,12 +34,9 @@ constexpr double cOnFace = 1.0e-6;
 Result<FemBarrierCoupling> FemBarrierCoupling::Create(const TargetSpec& inTarget, const Vec3& inWorldCentre,
                                                       plugin::DamageWorld& ioDamage)
 {
-    static constexpr const char* cNames[] = {"glass", "wood", "brick", "rubber", "steel"};
-    int material = -1;
-    for (int index = 0; index < 5; ++index)
-        if (inTarget.mBarrierMaterial == cNames[index])
-            material = index;
-    if (material < 0)
+    const auto* found = std::find(cBarrierMaterialNames.begin(), cBarrierMaterialNames.end(), inTarget.mBarrierMaterial);
+    const auto material = found - cBarrierMaterialNames.begin();
+    if (found == cBarrierMaterialNames.end())
         return MakeError(EError::InvalidArgument, "fem barrier: unknown material \"" + inTarget.mBarrierMaterial + "\"");
     Result<fem::PropMaterialPreset> preset = fem::MakePropMaterialPreset(static_cast<fem::EPropMaterial>(material));
     if (preset.HasError())

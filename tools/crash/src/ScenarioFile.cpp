@@ -713,8 +713,7 @@ class ScenarioReader
             if (!ReadEnum(inTarget, inPointer, "material", {"glass", "wood", "brick", "rubber", "steel"}, {}, false,
                           material))
                 return false;
-            static constexpr const char* cNames[] = {"glass", "wood", "brick", "rubber", "steel"};
-            ioTarget.mBarrierMaterial = cNames[material];
+            ioTarget.mBarrierMaterial = cBarrierMaterialNames[material];
             for (int axis = 0; axis < 3; ++axis)
                 if (ioTarget.mBarrierSize[axis] / ioTarget.mBarrierCell > 200.0)
                     return Fail(EError::InvalidArgument, Child(inPointer, "cell_m"),

@@ -143,6 +143,9 @@ struct CrashScenario
     bool mPictures = true;            ///< Write PNG renders (needs EGL; skipped with a note without it)
 };
 
+/// The FEM barrier's material names, in fem::EPropMaterial order.
+constexpr std::array<const char*, 5> cBarrierMaterialNames{"glass", "wood", "brick", "rubber", "steel"};
+
 const char* ToString(EEngine inEngine);
 const char* ToString(EQuantity inQuantity);
 const char* ToString(EZone inZone);
