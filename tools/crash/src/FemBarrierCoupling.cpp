@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace crumple::crash
 {
@@ -78,22 +80,30 @@ Result<FemBarrierCoupling> FemBarrierCoupling::Create(const TargetSpec& inTarget
     return FemBarrierCoupling(std::move(solver.Get()), inWorldCentre, body.Get(), 0.5 * inTarget.mBarrierSize, cell);
 }
 
-double FemBarrierCoupling::FaceArea(int inNode) const
+void FemBarrierCoupling::UpdateFaceAreas()
 {
-    // A cell's face area, halved per face edge the node lies on; the copies a crack makes of a node share it
-    // (they keep its rest position).
+    // Only cracks change the nodes (they append copies), so the shares are found again only then.
     const std::vector<Vec3>& rest = mSolver.GetNodeRestPositions();
-    const Vec3& position = rest[static_cast<std::size_t>(inNode)];
-    if (position.x() > -mHalfSize.x() + 1e-9)
-        return 0.0;
-    double area = mCell.y() * mCell.z();
-    for (int axis : {1, 2})
-        if (std::abs(std::abs(position[axis]) - mHalfSize[axis]) < 1e-9)
-            area *= 0.5;
-    int copies = 0;
-    for (const Vec3& other : rest)
-        copies += (other - position).cwiseAbs().maxCoeff() < 1e-9 ? 1 : 0;
-    return area / copies;
+    if (mFaceArea.size() == rest.size())
+        return;
+    // A cell's face area, halved per face edge the node lies on; the copies a crack makes of a node share it
+    // (they keep its rest position exactly).
+    std::map<std::pair<double, double>, int> copies;
+    for (const Vec3& position : rest)
+        if (position.x() <= -mHalfSize.x() + 1e-9)
+            ++copies[{position.y(), position.z()}];
+    mFaceArea.assign(rest.size(), 0.0);
+    for (std::size_t node = 0; node < rest.size(); ++node)
+    {
+        const Vec3& position = rest[node];
+        if (position.x() > -mHalfSize.x() + 1e-9)
+            continue;
+        double area = mCell.y() * mCell.z();
+        for (int axis : {1, 2})
+            if (std::abs(std::abs(position[axis]) - mHalfSize[axis]) < 1e-9)
+                area *= 0.5;
+        mFaceArea[node] = area / copies[{position.y(), position.z()}];
+    }
 }
 
 void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3& inHalfExtents, double inReach,
@@ -109,7 +119,7 @@ void FemBarrierCoupling::FindContacts(const plugin::BodyState& inCar, const Vec3
     {
         const auto n = static_cast<std::size_t>(node);
         // Front-face nodes (copies made by cracks inherit their rest position, hence their share too).
-        if (inverse_masses[n] == 0.0 || mSolver.GetNodeRestPositions()[n].x() > -mHalfSize.x() + 1e-9)
+        if (inverse_masses[n] == 0.0 || mFaceArea[n] == 0.0)
             continue;
         const Vec3 local = inCar.mTransform.ToBody(positions[n] + mWorldCentre);
         if (((local.cwiseAbs() - inHalfExtents).array() > inReach).any())
@@ -281,6 +291,7 @@ Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, 
     // Reach: what the step's relative motion can close, twice over, plus a margin.
     const double reach =
         2.0 * (car.mLinear.norm() + car.mAngular.norm() * inHalfExtents.norm()) * inTimeStep + cContactMargin;
+    UpdateFaceAreas();
     FindContacts(inCar, inHalfExtents, reach, inMaxCrush);
     if (mContacts.empty())
         return car;
@@ -288,7 +299,7 @@ Result<CarVelocity> FemBarrierCoupling::Collide(const plugin::BodyState& inCar, 
         contact.mMaxImpulse = std::isinf(inCrush.mPerMetre) // a rigid front: no cap
                                   ? std::numeric_limits<double>::infinity()
                                   : (inCrush.mAtZero + inCrush.mPerMetre * std::max(0.0, -contact.mGap)) *
-                                        FaceArea(contact.mNode) * inTimeStep;
+                                        mFaceArea[static_cast<std::size_t>(contact.mNode)] * inTimeStep;
 
     // Sequential impulses, in node order (deterministic).
     const std::vector<double>& inverse_masses = mSolver.GetInverseMasses();

@@ -105,8 +105,8 @@ private:
     FemBarrierCoupling(fem::TetSolver inSolver, const Vec3& inWorldCentre, plugin::BodyId inBody,
                        const Vec3& inHalfSize, const Vec3& inCell)
         : mSolver(std::move(inSolver)), mWorldCentre(inWorldCentre), mBody(inBody), mHalfSize(inHalfSize), mCell(inCell) {}
-    /// A node's share of the front face (m^2); 0 off it
-    double FaceArea(int inNode) const;
+    /// Each node's share of the front face (m^2; 0 off it), when cracks have added nodes since
+    void UpdateFaceAreas();
     void FindContacts(const plugin::BodyState& inCar, const Vec3& inHalfExtents, double inReach, double inMaxCrush);
     Status ReportContacts(const plugin::BodyState& inCar, plugin::BodyId inCarBody, const Vec3& inHalfExtents,
                           double inEdgeSnap, double inTime, double inTimeStep, plugin::DamageWorld& ioDamage) const;
@@ -116,6 +116,7 @@ private:
     plugin::BodyId mBody;     // the barrier's body in the damage world
     Vec3 mHalfSize;           // the barrier's half size (m); its front face is x = -mHalfSize.x()
     Vec3 mCell;               // its grid cell (m)
+    std::vector<double> mFaceArea; // per node: its share of the front face (m^2), 0 off it
     std::vector<NodeContact> mContacts;
     std::vector<std::int8_t> mEntryFace; // per node: the car box face (2 axis + (side > 0)) it came in through, -1: none
     Vec3 mMomentumReceived = Vec3::Zero();
