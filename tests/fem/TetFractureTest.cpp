@@ -7,6 +7,7 @@
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
+#include <BrittleMaterial.h>
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -20,20 +21,10 @@ using namespace crumple::fem;
 namespace
 {
 
-constexpr double cStrength = 1.0e6; // Pa
-constexpr double cYoung = 1.0e9;    // Pa
-constexpr double cPoisson = 0.25;
-
-FemMaterialSettings Brittle(EFractureMode inMode)
-{
-    FemMaterialSettings material;
-    material.mYoungsModulus = cYoung;
-    material.mPoissonRatio = cPoisson;
-    material.mDensity = 2000.0;
-    material.mTensileStrength = cStrength;
-    material.mFractureMode = inMode;
-    return material;
-}
+constexpr double cStrength = common::cBrittleStrength; // Pa
+constexpr double cYoung = common::cBrittleYoung;       // Pa
+constexpr double cPoisson = common::cBrittlePoisson;
+using common::BrittleMaterial;
 
 // A free 1 m x 0.5 m x 0.5 m bar of 4 x 2 x 2 cubes stretched to the uniaxial stress inStress along x (exact
 // for the corotated model: strain diag(e, -nu e, -nu e) with e = stress / E), then stepped by 1 us.
@@ -44,7 +35,7 @@ TetSolver StretchedBar(double inStress, EFractureMode inMode)
     grid.mCellCount = {4, 2, 2};
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
-    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), Brittle(inMode), settings).Get();
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), BrittleMaterial(inMode), settings).Get();
     const double strain = inStress / cYoung;
     std::vector<Vec3> positions = solver.GetPositions();
     for (Vec3& x : positions)
@@ -66,7 +57,7 @@ Wall MakeWall(EIntegrator inIntegrator)
     TetGridSettings grid;
     grid.mSize = Vec3(2.0, 0.2, 1.0);
     grid.mCellCount = {10, 1, 5};
-    FemMaterialSettings material = Brittle(EFractureMode::CrackPlane);
+    FemMaterialSettings material = BrittleMaterial(EFractureMode::CrackPlane);
     material.mYoungsModulus = 1.0e10;
     material.mPoissonRatio = 0.2;
     material.mMassDamping = 2.0;
@@ -226,7 +217,7 @@ TEST_CASE("Fracture: cubes that touch only along an edge are separate pieces for
     TetSolver whole = TetSolver::Create(mesh, FemMaterialSettings{}, TetSolverSettings{}).Get();
     CHECK(whole.GetNodeCount() == 14);
     CHECK(whole.ComputeFragments().size() == 1u);
-    TetSolver breakable = TetSolver::Create(mesh, Brittle(EFractureMode::CrackPlane), TetSolverSettings{}).Get();
+    TetSolver breakable = TetSolver::Create(mesh, BrittleMaterial(EFractureMode::CrackPlane), TetSolverSettings{}).Get();
     CHECK(breakable.GetNodeCount() == 16);
     const std::vector<TetFragment> pieces = breakable.ComputeFragments();
     REQUIRE(pieces.size() == 2u);

@@ -7,6 +7,7 @@
 
 #include <crumple/gpu/GpuTetSolver.h>
 
+#include <BrittleMaterial.h>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -18,20 +19,10 @@ using namespace crumple::gpu;
 namespace
 {
 
-constexpr double cStrength = 1.0e6; // Pa
-constexpr double cYoung = 1.0e9;    // Pa
-constexpr double cPoisson = 0.25;
-
-FemMaterialSettings Brittle(EFractureMode inMode)
-{
-    FemMaterialSettings material;
-    material.mYoungsModulus = cYoung;
-    material.mPoissonRatio = cPoisson;
-    material.mDensity = 2000.0;
-    material.mTensileStrength = cStrength;
-    material.mFractureMode = inMode;
-    return material;
-}
+constexpr double cStrength = common::cBrittleStrength; // Pa
+constexpr double cYoung = common::cBrittleYoung;       // Pa
+constexpr double cPoisson = common::cBrittlePoisson;
+using common::BrittleMaterial;
 
 TetSolverSettings Explicit()
 {
@@ -55,7 +46,7 @@ Pair StretchedBar(const std::shared_ptr<ComputeDevice>& inDevice, double inStres
     grid.mSize = Vec3(1.0, 0.5, 0.5);
     grid.mCellCount = {4, 2, 2};
     const TetMesh mesh = TetGrid(grid).Get();
-    TetSolver cpu = TetSolver::Create(mesh, Brittle(inMode), Explicit()).Get();
+    TetSolver cpu = TetSolver::Create(mesh, BrittleMaterial(inMode), Explicit()).Get();
     const double strain = inStress / cYoung;
     std::vector<Vec3> positions = cpu.GetPositions();
     for (Vec3& x : positions)
@@ -114,7 +105,7 @@ TEST_CASE("GPU fracture: a wall hit at one spot breaks there as on the CPU, the 
         TetGridSettings grid;
         grid.mSize = Vec3(2.0, 0.2, 1.0);
         grid.mCellCount = {10, 1, 5};
-        FemMaterialSettings material = Brittle(EFractureMode::CrackPlane);
+        FemMaterialSettings material = BrittleMaterial(EFractureMode::CrackPlane);
         material.mYoungsModulus = 1.0e10;
         material.mPoissonRatio = 0.2;
         material.mMassDamping = 2.0;
