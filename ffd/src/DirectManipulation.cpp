@@ -1,65 +1,302 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "PivotedCholesky.h"
+
 #include <crumple/ffd/CubicBSplineWeights.h>
 #include <crumple/ffd/DirectManipulation.h>
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
+#include <array>
 
 namespace crumple::ffd
 {
+
+namespace
+{
+
+constexpr int cWeightsPerRow = 64;
+
+using AxisWeights = std::array<std::array<double, 4>, 3>;
+
+AxisWeights WeightsOf(const LatticeLocation& inLocation)
+{
+    return {CubicBSplineWeights(inLocation.mT.x()), CubicBSplineWeights(inLocation.mT.y()),
+            CubicBSplineWeights(inLocation.mT.z())};
+}
+
+// Overlap of two points' 1D weights along one axis: sum over the controls both reach of w_i w_j. Point j's
+// cell is inOffset cells after point i's, so control a of i is control a - inOffset of j.
+double AxisOverlap(const std::array<double, 4>& inWi, const std::array<double, 4>& inWj, int inOffset)
+{
+    double sum = 0.0;
+    for (int a = std::max(0, inOffset); a < std::min(4, 4 + inOffset); ++a)
+        sum += inWi[static_cast<std::size_t>(a)] * inWj[static_cast<std::size_t>(a - inOffset)];
+    return sum;
+}
+
+// B B^T from the tensor-product structure: each entry is a product of three 1D overlaps.
+Eigen::MatrixXd PointGram(std::span<const LatticeLocation> inLocations)
+{
+    const auto n = static_cast<Eigen::Index>(inLocations.size());
+    std::vector<AxisWeights> weights;
+    weights.reserve(inLocations.size());
+    for (const LatticeLocation& location : inLocations)
+        weights.push_back(WeightsOf(location));
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n, n);
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index j = 0; j <= i; ++j)
+        {
+            const LatticeLocation& li = inLocations[static_cast<std::size_t>(i)];
+            const LatticeLocation& lj = inLocations[static_cast<std::size_t>(j)];
+            double product = 1.0;
+            for (int axis = 0; axis < 3 && product != 0.0; ++axis)
+            {
+                const int offset = lj.mCell[static_cast<std::size_t>(axis)] - li.mCell[static_cast<std::size_t>(axis)];
+                product = offset < -3 || offset > 3
+                              ? 0.0
+                              : product * AxisOverlap(weights[static_cast<std::size_t>(i)][static_cast<std::size_t>(axis)],
+                                                      weights[static_cast<std::size_t>(j)][static_cast<std::size_t>(axis)],
+                                                      offset);
+            }
+            gram(i, j) = product;
+        }
+    return gram;
+}
+
+// B^T Y: scatter each row's weights times its row of Y into the controls.
+Eigen::MatrixX3d ApplyTranspose(const DirectManipulationData& inData, const Eigen::MatrixX3d& inY)
+{
+    Eigen::MatrixX3d result = Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(inData.mControls.size()), 3);
+    for (int row = 0; row < inData.mPointCount; ++row)
+    {
+        const int* columns = &inData.mRowColumns[static_cast<std::size_t>(row) * cWeightsPerRow];
+        const double* weights = &inData.mRowWeights[static_cast<std::size_t>(row) * cWeightsPerRow];
+        for (int k = 0; k < cWeightsPerRow; ++k)
+            result.row(columns[k]) += weights[k] * inY.row(row);
+    }
+    return result;
+}
+
+// B X: gather each row's weights over the rows of X.
+Eigen::MatrixX3d Apply(const DirectManipulationData& inData, const Eigen::MatrixX3d& inX)
+{
+    Eigen::MatrixX3d result = Eigen::MatrixX3d::Zero(inData.mPointCount, 3);
+    for (int row = 0; row < inData.mPointCount; ++row)
+    {
+        const int* columns = &inData.mRowColumns[static_cast<std::size_t>(row) * cWeightsPerRow];
+        const double* weights = &inData.mRowWeights[static_cast<std::size_t>(row) * cWeightsPerRow];
+        for (int k = 0; k < cWeightsPerRow; ++k)
+            result.row(row) += weights[k] * inX.row(columns[k]);
+    }
+    return result;
+}
+
+// B^+ inRhs through the pivoted Cholesky factor of B B^T, truncated to its first inRank pivots.
+Eigen::MatrixX3d GramSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inRhs, int inRank)
+{
+    const auto n = static_cast<Eigen::Index>(inData.mPivots.size());
+    Eigen::MatrixX3d permuted(n, 3);
+    for (Eigen::Index k = 0; k < n; ++k)
+        permuted.row(k) = inRhs.row(inData.mPivots[static_cast<std::size_t>(k)]);
+
+    // Pseudo-inverse of the rank-revealed Gram matrix G ~ L L^T: (L L^T)^-1 at full rank, else
+    // L (L^T L)^-2 L^T, the Moore-Penrose inverse of L L^T for L of full column rank.
+    Eigen::MatrixX3d solved;
+    if (inRank == n)
+    {
+        const auto lower = inData.mL.triangularView<Eigen::Lower>();
+        solved = lower.transpose().solve(lower.solve(permuted));
+    }
+    else if (inRank == inData.mRank)
+        solved = inData.mL * inData.mLtLFactor.solve(inData.mLtLFactor.solve(inData.mL.transpose() * permuted));
+    else
+    {
+        // A lower cut: the leading columns of L, and the leading block of L^T L where it was computed (a
+        // rank-deficient factor); at full rank no L^T L was needed until now.
+        const auto l = inData.mL.leftCols(inRank);
+        const Eigen::MatrixXd ltl_block = inData.mLtL.rows() >= inRank
+                                              ? Eigen::MatrixXd(inData.mLtL.topLeftCorner(inRank, inRank))
+                                              : Eigen::MatrixXd(l.transpose() * l);
+        const Eigen::LLT<Eigen::MatrixXd> ltl(ltl_block);
+        solved = l * ltl.solve(ltl.solve(l.transpose() * permuted));
+    }
+
+    Eigen::MatrixX3d y(n, 3);
+    for (Eigen::Index k = 0; k < n; ++k)
+        y.row(inData.mPivots[static_cast<std::size_t>(k)]) = solved.row(k);
+    // B^+ = B^T (B B^T)^+.
+    return ApplyTranspose(inData, y);
+}
+
+// Rank of the Gram factor at a relative tolerance: its pivots L_kk^2 do not increase, so the rank is the
+// count of those above tau^2 times the first.
+int GramRank(const DirectManipulationData& inData, double inTolerance)
+{
+    const double first = inData.mL(0, 0) * inData.mL(0, 0);
+    int rank = 0;
+    while (rank < inData.mRank && inData.mL(rank, rank) * inData.mL(rank, rank) > inTolerance * inTolerance * first)
+        ++rank;
+    return rank;
+}
+
+// The tall path at a tolerance: the stored decomposition, or a new one at a raised tolerance.
+Eigen::MatrixX3d TallSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inRhs, double inTolerance,
+                           int& outRank)
+{
+    if (inTolerance == inData.mTolerance)
+    {
+        outRank = inData.mRank;
+        return inData.mTall.solve(inRhs);
+    }
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> raised;
+    raised.setThreshold(inTolerance);
+    raised.compute(Eigen::MatrixXd(DirectManipulationMatrix(inData)));
+    outRank = static_cast<int>(raised.rank());
+    return raised.solve(inRhs);
+}
+
+} // namespace
 
 DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
                                                     std::span<const LatticeLocation> inLocations,
                                                     double inRelativeTolerance)
 {
     DirectManipulationData data;
+    data.mPointCount = static_cast<int>(inLocations.size());
 
     // Columns: the union of the 64 controls of every point, sorted so that B does not depend on point order.
-    std::vector<int> controls;
-    controls.reserve(inLocations.size() * 64);
+    // A column map over the whole lattice marks each control once (linear in the points, no sort of 64 per point).
+    std::vector<int> row_controls; // each row's controls in (c, b, a) order
+    row_controls.reserve(inLocations.size() * cWeightsPerRow);
+    std::vector<int> column_of(static_cast<std::size_t>(inLattice.GetControlCount()), -1);
     for (const LatticeLocation& location : inLocations)
-        for (int c = 0; c < 4; ++c)
-            for (int b = 0; b < 4; ++b)
-                for (int a = 0; a < 4; ++a)
-                    controls.push_back(inLattice.ControlIndex(location.mCell[0] + a, location.mCell[1] + b,
-                                                              location.mCell[2] + c));
-    std::sort(controls.begin(), controls.end());
-    controls.erase(std::unique(controls.begin(), controls.end()), controls.end());
-    data.mControls = std::move(controls);
-
-    // Rows: tensor-product weights of each point.
-    data.mB = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(inLocations.size()),
-                                    static_cast<Eigen::Index>(data.mControls.size()));
-    for (std::size_t row = 0; row < inLocations.size(); ++row)
-    {
-        const LatticeLocation& location = inLocations[row];
-        const std::array<double, 4> wx = CubicBSplineWeights(location.mT.x());
-        const std::array<double, 4> wy = CubicBSplineWeights(location.mT.y());
-        const std::array<double, 4> wz = CubicBSplineWeights(location.mT.z());
         for (int c = 0; c < 4; ++c)
             for (int b = 0; b < 4; ++b)
                 for (int a = 0; a < 4; ++a)
                 {
                     const int control = inLattice.ControlIndex(location.mCell[0] + a, location.mCell[1] + b,
                                                                location.mCell[2] + c);
-                    const auto column = std::lower_bound(data.mControls.begin(), data.mControls.end(), control) -
-                                        data.mControls.begin();
-                    data.mB(static_cast<Eigen::Index>(row), column) = wx[a] * wy[b] * wz[c];
+                    row_controls.push_back(control);
+                    if (column_of[static_cast<std::size_t>(control)] < 0)
+                    {
+                        column_of[static_cast<std::size_t>(control)] = 0;
+                        data.mControls.push_back(control);
+                    }
+                }
+    std::sort(data.mControls.begin(), data.mControls.end());
+    for (std::size_t column = 0; column < data.mControls.size(); ++column)
+        column_of[static_cast<std::size_t>(data.mControls[column])] = static_cast<int>(column);
+
+    // Rows of B in a fixed 64-per-row layout: tensor-product weights and their columns.
+    data.mRowColumns.resize(row_controls.size());
+    data.mRowWeights.resize(row_controls.size());
+    for (std::size_t row = 0; row < inLocations.size(); ++row)
+    {
+        const AxisWeights w = WeightsOf(inLocations[row]);
+        for (int c = 0; c < 4; ++c)
+            for (int b = 0; b < 4; ++b)
+                for (int a = 0; a < 4; ++a)
+                {
+                    const std::size_t entry = row * cWeightsPerRow + static_cast<std::size_t>(a + 4 * (b + 4 * c));
+                    data.mRowColumns[entry] = column_of[static_cast<std::size_t>(row_controls[entry])];
+                    data.mRowWeights[entry] = w[0][static_cast<std::size_t>(a)] * w[1][static_cast<std::size_t>(b)] *
+                                              w[2][static_cast<std::size_t>(c)];
                 }
     }
+    if (inLocations.empty())
+        return data;
 
-    // Rank-revealing factorization for the minimum-norm least-squares solve.
-    data.mDecomposition.setThreshold(inRelativeTolerance);
-    data.mDecomposition.compute(data.mB);
-    data.mRank = static_cast<int>(data.mDecomposition.rank());
+    // Tall B (more points than controls): dense rank-revealing decomposition of B itself.
+    data.mGramOfPoints = inLocations.size() <= data.mControls.size();
+    if (!data.mGramOfPoints)
+    {
+        data.mTolerance = inRelativeTolerance;
+        data.mTall.setThreshold(inRelativeTolerance);
+        data.mTall.compute(Eigen::MatrixXd(DirectManipulationMatrix(data)));
+        data.mRank = static_cast<int>(data.mTall.rank());
+        return data;
+    }
+
+    // Wide B: factor B B^T, whose pivots are squared singular values of B.
+    const double tolerance = std::max(inRelativeTolerance, cMinRankTolerance);
+    data.mTolerance = tolerance;
+    PivotedCholeskyFactor factor = PivotedCholesky(PointGram(inLocations), tolerance * tolerance);
+    data.mL = std::move(factor.mL);
+    data.mPivots = std::move(factor.mPivots);
+    data.mRank = factor.mRank;
+    if (data.mRank < static_cast<int>(data.mPivots.size()))
+    {
+        data.mLtL.noalias() = data.mL.transpose() * data.mL;
+        data.mLtLFactor.compute(data.mLtL);
+    }
     return data;
 }
 
-Eigen::MatrixX3d DirectManipulationSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements)
+Eigen::MatrixX3d QuasiInterpolant(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements)
 {
-    if (inData.mControls.empty())
-        return Eigen::MatrixX3d(0, 3);
-    return inData.mDecomposition.solve(inDisplacements);
+    Eigen::MatrixX3d sum = ApplyTranspose(inData, inDisplacements);
+    Eigen::VectorXd weight = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(inData.mControls.size()));
+    for (std::size_t entry = 0; entry < inData.mRowWeights.size(); ++entry)
+        weight[inData.mRowColumns[entry]] += inData.mRowWeights[entry];
+    for (Eigen::Index k = 0; k < sum.rows(); ++k)
+        if (weight[k] > 0.0)
+            sum.row(k) /= weight[k];
+    return sum;
+}
+
+Eigen::MatrixX3d DirectManipulationSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements,
+                                         EDirectManipulationPrior inPrior, double inMaxControlGain,
+                                         DirectManipulationSolveInfo* outInfo)
+{
+    const auto controls = static_cast<Eigen::Index>(inData.mControls.size());
+    DirectManipulationSolveInfo info{0, inData.mTolerance};
+    Eigen::MatrixX3d result = Eigen::MatrixX3d::Zero(controls, 3);
+    if (controls > 0 && inData.mRank > 0)
+    {
+        // Nearest to the prior: dC = C0 + B^+ (dP - B C0); C0 = 0 for the minimum-norm solve.
+        const Eigen::MatrixX3d prior = inPrior == EDirectManipulationPrior::None
+                                           ? Eigen::MatrixX3d::Zero(controls, 3)
+                                           : QuasiInterpolant(inData, inDisplacements);
+        const Eigen::MatrixX3d residual = inDisplacements - Apply(inData, prior);
+        const double bound = inMaxControlGain * inDisplacements.rowwise().norm().maxCoeff();
+        int previous_rank = -1;
+        for (double tolerance = inData.mTolerance;; tolerance *= 3.1622776601683795)
+        {
+            // intent: one solve per distinct rank, the tolerance raised until the controls respect the bound
+            int rank = 0;
+            Eigen::MatrixX3d correction;
+            if (inData.mGramOfPoints)
+            {
+                rank = GramRank(inData, std::min(tolerance, 1.0));
+                if (rank == previous_rank && tolerance < 1.0)
+                    continue;
+                correction = GramSolve(inData, residual, std::max(rank, 1));
+            }
+            else
+                correction = TallSolve(inData, residual, std::min(tolerance, 1.0), rank);
+            previous_rank = rank;
+            result = prior + correction;
+            info = {std::max(rank, 1), std::min(tolerance, 1.0)};
+            if (!(result.rowwise().norm().maxCoeff() > bound) || rank <= 1 || tolerance >= 1.0)
+                break;
+        }
+    }
+    if (outInfo != nullptr)
+        *outInfo = info;
+    return result;
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> DirectManipulationMatrix(const DirectManipulationData& inData)
+{
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(inData.mRowWeights.size());
+    for (std::size_t entry = 0; entry < inData.mRowWeights.size(); ++entry)
+        entries.emplace_back(static_cast<int>(entry / cWeightsPerRow), inData.mRowColumns[entry], inData.mRowWeights[entry]);
+    Eigen::SparseMatrix<double, Eigen::RowMajor> b(inData.mPointCount, static_cast<Eigen::Index>(inData.mControls.size()));
+    b.setFromTriplets(entries.begin(), entries.end());
+    return b;
 }
 
 } // namespace crumple::ffd

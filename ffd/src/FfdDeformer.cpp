@@ -43,6 +43,10 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     if (!(inSettings.mMinControlSpacing >= 0.0 && inSettings.mMinControlSpacing < 1.0))
         return MakeError(EError::InvalidArgument,
                          "FfdDeformerSettings.mMinControlSpacing must be finite and in [0, 1) spacings");
+    if (inSettings.mPrior != EDirectManipulationPrior::None && inSettings.mPrior != EDirectManipulationPrior::QuasiInterpolant)
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mPrior is not an EDirectManipulationPrior value");
+    if (!(inSettings.mMaxControlGain >= 1.0))
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mMaxControlGain must be >= 1 (or infinity)");
 
     FfdDeformer deformer;
     for (std::size_t z = 0; z < inSettings.mZones.size(); ++z)
@@ -218,8 +222,11 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
 
         // Solve dC = B^+ dP over the controls these points reach.
         const DirectManipulationData data = DirectManipulationPrecompute(zone, locations, mSettings.mRankTolerance);
-        report.mRankDeficiency += static_cast<int>(points.size()) - data.mRank;
-        const Eigen::MatrixX3d control_delta = DirectManipulationSolve(data, wanted);
+        DirectManipulationSolveInfo solve_info;
+        const Eigen::MatrixX3d control_delta =
+            DirectManipulationSolve(data, wanted, mSettings.mPrior, mSettings.mMaxControlGain, &solve_info);
+        report.mRankDeficiency += static_cast<int>(points.size()) - solve_info.mRank;
+        report.mSolveTolerance = std::max(report.mSolveTolerance, solve_info.mTolerance);
 
         // Where the points are now, to measure what the dent achieved.
         std::vector<Vec3> before(locations.size());

@@ -58,6 +58,9 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     deformer.mCaptureDistance = reader.ReadDouble();
     deformer.mInverseIterations = static_cast<int>(reader.ReadU32());
     deformer.mMinControlSpacing = reader.ReadDouble();
+    // An out-of-range prior is left as read, for FfdDeformer::Create to refuse with its message.
+    deformer.mPrior = static_cast<ffd::EDirectManipulationPrior>(reader.ReadU32());
+    deformer.mMaxControlGain = reader.ReadDouble();
     std::uint32_t zones = 0;
     if (!ReadCount(reader, 19 * 8, zones))
         return MakeError(EError::CorruptData, "object record: zone count is corrupt");
@@ -187,6 +190,8 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mDeformer.mCaptureDistance);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mInverseIterations));
     writer.WriteDouble(settings.mDeformer.mMinControlSpacing);
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mPrior));
+    writer.WriteDouble(settings.mDeformer.mMaxControlGain);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mZones.size()));
     for (const ffd::FfdZoneSettings& zone : settings.mDeformer.mZones)
     {

@@ -264,6 +264,27 @@ TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
         settings.mMinControlSpacing = 0.0;
         CHECK(FfdDeformer::Create(mesh, settings));
     }
+    SECTION("a direct-manipulation prior outside the enum")
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        FfdDeformerSettings settings;
+        settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {4, 4, 4}, 0.1));
+        settings.mPrior = static_cast<EDirectManipulationPrior>(7);
+        Result<FfdDeformer> deformer = FfdDeformer::Create(mesh, settings);
+        REQUIRE(deformer.HasError());
+        CHECK(deformer.GetError().mMessage.find("mPrior") != std::string::npos);
+        settings.mPrior = EDirectManipulationPrior::None;
+        CHECK(FfdDeformer::Create(mesh, settings));
+        for (double gain : {0.5, -1.0, nan})
+        {
+            settings.mMaxControlGain = gain;
+            Result<FfdDeformer> refused = FfdDeformer::Create(mesh, settings);
+            REQUIRE(refused.HasError());
+            CHECK(refused.GetError().mMessage.find("mMaxControlGain") != std::string::npos);
+        }
+        settings.mMaxControlGain = std::numeric_limits<double>::infinity();
+        CHECK(FfdDeformer::Create(mesh, settings));
+    }
     SECTION("a control state of the wrong shape")
     {
         FfdDeformer deformer = MakeDeformer();

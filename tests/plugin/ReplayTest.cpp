@@ -90,8 +90,10 @@ TEST_CASE("A recorded run replayed without an engine gives bitwise identical mes
         CHECK(replay.Get().mObjects.size() == 3);
         for (const RecordedObject& object : replay.Get().mObjects)
         {
-            // Version 3 carries the fold guard's setting, read back in place (the fields after it too).
+            // Version 3 carries the fold guard's setting, version 4 the prior, read back in place (the fields
+            // after them too).
             CHECK(object.mSettings.mDeformer.mMinControlSpacing == ffd::FfdDeformerSettings{}.mMinControlSpacing);
+            CHECK(object.mSettings.mDeformer.mPrior == ffd::FfdDeformerSettings{}.mPrior);
             CHECK(object.mSettings.mDeformer.mInverseIterations == ffd::FfdDeformerSettings{}.mInverseIterations);
         }
         Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());

@@ -18,7 +18,10 @@ struct DentReport
                                    ///< into them (0 unless a dent is deep for the lattice spacing)
     double mScale = 1.0;           ///< Smallest factor a zone's dent was scaled by to respect the step bound and
                                    ///< the maximum total deformation (1 when nothing was limited)
-    int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B): > 0 for coincident/collinear sets
+    int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B used): > 0 for coincident/collinear
+                                   ///< sets and for targets the gain bound made the solve drop directions of
+    double mSolveTolerance = 0.0;  ///< Largest relative pivot tolerance a zone's solve ended at (the settings'
+                                   ///< mRankTolerance unless the gain bound raised it)
     std::uint32_t mVerticesMoved = 0;    ///< Vertices whose position was recomputed
     std::uint32_t mTrianglesUpdated = 0; ///< Triangles whose face normal was recomputed
     std::uint32_t mNormalsUpdated = 0;   ///< Vertices whose normal was recomputed

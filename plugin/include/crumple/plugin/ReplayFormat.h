@@ -33,8 +33,8 @@ struct Replay
 };
 
 /// Replay file format version. Readers refuse other versions. 2: the material's impulse threshold.
-/// 3: the deformer's minimum control spacing.
-constexpr std::uint32_t cReplayVersion = 3;
+/// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain bound.
+constexpr std::uint32_t cReplayVersion = 4;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
