@@ -12,8 +12,30 @@
 namespace crumple::plugin
 {
 
+std::array<int, 3> ControlCountForSpacing(const Vec3& inSize, double inSpacing)
+{
+    // A mesh far larger than a car (or in the wrong unit) must not allocate gigabytes of controls: past
+    // cMaxControls the spacing widens by 25 % steps until the lattice fits (2^18 controls are 6 MB).
+    constexpr double cMaxControls = 262144.0;
+    constexpr double cMaxCells = ffd::FfdLatticeSettings::cMaxControlsPerAxis - 3;
+    std::array<int, 3> count{};
+    for (double spacing = inSpacing;; spacing *= 1.25)
+    {
+        double total = 1.0;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            // Clamp in double first, so that a huge ratio cannot overflow the cast.
+            const double cells = std::clamp(std::ceil(inSize[axis] / spacing), 1.0, cMaxCells);
+            count[static_cast<std::size_t>(axis)] = static_cast<int>(cells) + 3;
+            total *= cells + 3.0;
+        }
+        if (total <= cMaxControls)
+            return count;
+    }
+}
+
 ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
-                                   double inMaxTotalDeformation)
+                                   double inMaxTotalDeformation, double inSpacing)
 {
     const ffd::AlignedBox bounds = ffd::BoundingBox(inMesh.mPositions);
     const Vec3 lo = bounds.mMin, hi = bounds.mMax;
@@ -22,7 +44,8 @@ ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::a
     ffd::FfdZoneSettings zone;
     zone.mLattice.mOrigin = lo - margin;
     zone.mLattice.mSize = (hi - lo) + 2.0 * margin;
-    zone.mLattice.mControlCount = inControlCount;
+    const bool from_spacing = inControlCount == std::array<int, 3>{0, 0, 0};
+    zone.mLattice.mControlCount = from_spacing ? ControlCountForSpacing(zone.mLattice.mSize, inSpacing) : inControlCount;
     zone.mMaxTotalDeformation = inMaxTotalDeformation;
     return zone;
 }
@@ -40,13 +63,17 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     if (!(std::isfinite(material.mImpulseThreshold) && material.mImpulseThreshold >= 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mImpulseThreshold must be finite and >= 0 N s");
 
+    if (!(std::isfinite(inSettings.mFittedControlSpacing) && inSettings.mFittedControlSpacing > 0.0))
+        return MakeError(EError::InvalidArgument, "DeformableObjectSettings.mFittedControlSpacing must be finite and > 0 m");
+
     ffd::FfdDeformerSettings deformer_settings = inSettings.mDeformer;
     if (deformer_settings.mZones.empty())
     {
         if (Status mesh = ffd::ValidateTriangleMesh(inSettings.mMesh); !mesh)
             return mesh.GetError();
         deformer_settings.mZones.push_back(
-            FitZoneToMesh(inSettings.mMesh, inSettings.mFittedControlCount, inSettings.mFittedMaxTotalDeformation));
+            FitZoneToMesh(inSettings.mMesh, inSettings.mFittedControlCount, inSettings.mFittedMaxTotalDeformation,
+                          inSettings.mFittedControlSpacing));
     }
     Result<ffd::FfdDeformer> deformer = ffd::FfdDeformer::Create(inSettings.mMesh, deformer_settings);
     if (!deformer)

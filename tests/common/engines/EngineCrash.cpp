@@ -49,6 +49,7 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
                                                      BoxSegmentsForTriangles(inSettings.mHalfExtents, inSettings.mTriangles));
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
+    object.mFittedControlSpacing = inSettings.mControlSpacing;
     object.mFittedMaxTotalDeformation = inSettings.mMaxTotalDeformation;
     object.mDeformer.mZones = inSettings.mZones;
     return object;

@@ -36,7 +36,8 @@ struct EngineCrashSettings
     double mDuration = 0.6;            ///< Simulated time (s)
     double mGap = 0.3;                 ///< Distance from the car's nearest point to the wall at start (m)
     int mTriangles = 8000;             ///< Car render mesh size
-    std::array<int, 3> mControlCount{{10, 6, 6}}; ///< Controls of the fitted FFD zone
+    std::array<int, 3> mControlCount{{0, 0, 0}}; ///< Controls of the fitted FFD zone; 0: from mControlSpacing
+    double mControlSpacing = 0.15;               ///< Control spacing of the fitted zone when mControlCount is 0 (m)
     plugin::DamageMaterial mMaterial;  ///< Car body material
     plugin::DamageWorldSettings mWorld; ///< Damage world settings
     bool mDriveOnly = false;           ///< No wall: the car just drives (and rests) on the ground

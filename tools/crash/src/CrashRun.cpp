@@ -62,6 +62,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     settings.mMaxTotalDeformation = vehicle.mMaxTotalDeformation;
     settings.mZones = vehicle.mZones;
     settings.mControlCount = vehicle.mControlCount;
+    settings.mControlSpacing = vehicle.mControlSpacing;
     settings.mSpeed = inScenario.mImpact.mSpeed;
     settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;
     settings.mOffset = inScenario.mImpact.mOffset;

@@ -4,6 +4,7 @@
 
 #include <crumple/base/FileBytes.h>
 #include <crumple/ffd/FfdLatticeSettings.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
 
 #include <nlohmann/json.hpp>
 
@@ -452,7 +453,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "box_size_m", "mass_kg", "inertia_kg_m2",
-                         "inertia_from", "control_count", "zones", "material"},
+                         "inertia_from", "control_count", "control_spacing_m", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
                          {"mass", "masses are mass_kg"},
@@ -521,7 +522,9 @@ class ScenarioReader
                             "give inertia_kg_m2 or inertia_from, not both");
             ioVehicle.mInertiaFromMesh = choice == 1;
         }
-        if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount))
+        if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount) ||
+            !ReadNumber(inVehicle, inPointer, "control_spacing_m", NumberRange::Positive(), false,
+                        ioVehicle.mControlSpacing))
             return false;
         // Zones: [{"min_m": [x, y, z], "max_m": [x, y, z], "control_count": [...], "max_total_deformation_m": d}]
         if (const auto zones = inVehicle.find("zones"); zones != inVehicle.end())
@@ -554,6 +557,9 @@ class ScenarioReader
                     return Fail(EError::InvalidArgument, Child(at, "max_m"), "must exceed min_m on every axis");
                 settings.mLattice.mOrigin = low;
                 settings.mLattice.mSize = high - low;
+                if (settings.mLattice.mControlCount == std::array<int, 3>{0, 0, 0})
+                    settings.mLattice.mControlCount = plugin::ControlCountForSpacing(settings.mLattice.mSize,
+                                                                                     ioVehicle.mControlSpacing);
                 ioVehicle.mZones.push_back(settings);
             }
         }

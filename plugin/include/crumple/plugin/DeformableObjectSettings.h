@@ -19,13 +19,25 @@ struct DeformableObjectSettings
     DamageMaterial mMaterial;           ///< Impulse-to-dent parameters
     ffd::FfdDeformerSettings mDeformer; ///< Zones and solver tolerances; with no zones, one zone is fitted
                                         ///< around the mesh (see FitZoneToMesh) using the two fields below
-    std::array<int, 3> mFittedControlCount{{8, 8, 8}}; ///< Controls per axis of the fitted zone
+    /// Controls per axis of the fitted zone, each >= 4; all 0 (the default): from mFittedControlSpacing
+    std::array<int, 3> mFittedControlCount{{0, 0, 0}};
+    /// Control spacing of the fitted zone when mFittedControlCount is 0 (m), > 0. A control reaches two cells
+    /// on either side, so a dent moves the surface at most about 3 spacings behind the contact: 0.15 m keeps
+    /// a frontal crush off the roof and the rear of a car (an 8 x 8 x 8 lattice on a 4.4 m car has 0.63 m
+    /// and moved the roof by half the crush). Finer costs controls, not dent time: the direct-manipulation
+    /// solve scales with the points of a dent and the vertices it reaches, not with the lattice.
+    double mFittedControlSpacing = 0.15;
     double mFittedMaxTotalDeformation = 0.5;          ///< Max total deformation of the fitted zone (m)
     bool mInterpolateWideImpacts = true; ///< Fill gaps between contacts wider than the lattice spacing
 };
 
+/// Controls per axis for a lattice of inSize (m) with at most inSpacing (m) between controls: ceil(size /
+/// spacing) cells plus 3, clamped to [4, FfdLatticeSettings::cMaxControlsPerAxis].
+std::array<int, 3> ControlCountForSpacing(const Vec3& inSize, double inSpacing);
+
 /// An axis-aligned zone (body frame) enclosing inMesh with a margin of 1 % of its size plus 1 mm.
+/// @param[in] inControlCount controls per axis, each >= 4; all 0: from inSpacing
 ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
-                                   double inMaxTotalDeformation);
+                                   double inMaxTotalDeformation, double inSpacing = 0.15);
 
 } // namespace crumple::plugin
