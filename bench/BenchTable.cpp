@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "BenchTable.h"
 
+#include <ctime>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -51,6 +53,45 @@ std::string FormatExtra(double inValue)
     char text[32];
     std::snprintf(text, sizeof(text), "%.4g", inValue);
     return text;
+}
+
+namespace
+{
+
+double ThreadCpuMs()
+{
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return 1.0e3 * static_cast<double>(now.tv_sec) + 1.0e-6 * static_cast<double>(now.tv_nsec);
+}
+
+double Median(std::vector<double> inValues)
+{
+    std::nth_element(inValues.begin(), inValues.begin() + static_cast<std::ptrdiff_t>(inValues.size() / 2), inValues.end());
+    return inValues[inValues.size() / 2];
+}
+
+} // namespace
+
+std::vector<Timing> InterleavedMedians(int inRepetitions,
+                                       const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides)
+{
+    std::vector<std::vector<double>> wall(inSides.size()), cpu(inSides.size());
+    for (int i = 0; i < inRepetitions; ++i)
+        for (std::size_t side = 0; side < inSides.size(); ++side)
+        {
+            inSides[side].first();
+            const double cpu_start = ThreadCpuMs();
+            const auto start = std::chrono::steady_clock::now();
+            inSides[side].second();
+            const auto stop = std::chrono::steady_clock::now();
+            cpu[side].push_back(ThreadCpuMs() - cpu_start);
+            wall[side].push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+        }
+    std::vector<Timing> medians;
+    for (std::size_t side = 0; side < inSides.size(); ++side)
+        medians.push_back({Median(wall[side]), Median(cpu[side])});
+    return medians;
 }
 
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun)

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace crumple::bench
@@ -39,6 +40,18 @@ double ElapsedMs(std::chrono::steady_clock::time_point inStart);
 
 /// A number for the extra column: 4 significant digits, never a comma.
 std::string FormatExtra(double inValue);
+
+/// Wall and thread CPU time of one repetition (ms).
+struct Timing
+{
+    double mWallMs = 0.0;
+    double mCpuMs = 0.0;
+};
+
+/// Medians of wall and thread CPU time for each side, the sides interleaved (A, B, A, B, ...) so that
+/// noise from other jobs on the machine falls on both alike. Each side's prepare is untimed.
+std::vector<Timing> InterleavedMedians(int inRepetitions,
+                                       const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides);
 
 /// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);

@@ -6,6 +6,8 @@
 #include <crumple/plugin/BaraffImpulse.h>
 #include <crumple/plugin/DeformableObject.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <string>
 
@@ -20,12 +22,14 @@ namespace
 const Vec3 cHalfExtents(2.1, 0.9, 0.7); // a 4.2 m x 1.8 m x 1.4 m car body
 
 // The car body split along its length into inZones zones of inControls each.
+// inControls 0: the default lattice, controls from DeformableObjectSettings::mFittedControlSpacing.
 DeformableObject MakeCar(int inTriangles, int inZones, int inControls)
 {
     DeformableObjectSettings settings;
     settings.mMesh = common::MakeBoxMesh(cHalfExtents, common::BoxSegmentsForTriangles(cHalfExtents, inTriangles));
     settings.mMaterial.mDeformationFactor = 5.0e-6; // about 0.1 m for a 15 m/s wall hit: below the clamps
-    const ffd::FfdZoneSettings whole = FitZoneToMesh(settings.mMesh, {inControls, inControls, inControls}, 0.5);
+    const ffd::FfdZoneSettings whole = FitZoneToMesh(settings.mMesh, {inControls, inControls, inControls}, 0.5,
+                                                     settings.mFittedControlSpacing);
     for (int z = 0; z < inZones; ++z)
     {
         ffd::FfdZoneSettings zone = whole;
@@ -70,29 +74,44 @@ Collision MakeFrontCollision(int inContacts)
     return collision;
 }
 
+double MaxControl(const DeformableObject& inCar)
+{
+    double largest = 0.0;
+    for (const ffd::FfdLattice& zone : inCar.GetDeformer().GetZones())
+        for (const Vec3& control : zone.GetControlDisplacements())
+            largest = std::max(largest, control.norm());
+    return largest;
+}
+
 void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriangles, int inZones, int inControls,
                int inContacts, int inRepetitions)
 {
     const DeformableObject pristine = MakeCar(inTriangles, inZones, inControls);
     const Collision collision = MakeFrontCollision(inContacts);
     DeformableObject car = pristine;
+    DeformableObject full = pristine;
+    full.ApplyCollision(collision, ECollisionSide::B);
     ffd::DentReport report;
-    const double ms = MedianMs(inRepetitions, [&] { car = pristine; },
-                               [&] { report = car.ApplyCollision(collision, ECollisionSide::B); });
+    // The incremental dent and a full recompute of the mesh after the same dent, interleaved.
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions, {{[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }},
+                        {[] {}, [&] { full.GetDeformer().RecomputeAll(); }}});
+    const double ms = timing[0].mWallMs, full_ms = timing[1].mWallMs;
     const std::size_t points = car.DentFor(collision, ECollisionSide::B).size();
 
-    // Incremental update against recomputing the whole mesh after the same dent.
-    const double full_ms = MedianMs(inRepetitions, [] {}, [&] { car.GetDeformer().RecomputeAll(); });
-
     const std::size_t triangles = pristine.GetDeformer().GetRestMesh().mTriangles.size();
-    const std::string name = std::to_string(triangles / 1000) + "k_tris/" + std::to_string(inZones) + "_zone/" +
-                             std::to_string(inControls) + "^3/" + std::to_string(inContacts) + "_contacts";
+    const std::array<int, 3>& n = pristine.GetDeformer().GetZones()[0].GetSettings().mControlCount;
+    const std::string lattice = inControls > 0 ? std::to_string(inControls) + "^3"
+                                               : std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]);
+    const std::string name = std::to_string(triangles / 1000) + "k_tris/" + std::to_string(inZones) + "_zone/" + lattice +
+                             "/" + std::to_string(inContacts) + "_contacts";
     const std::string extra = "vertices_updated=" + std::to_string(report.mVerticesMoved) + ";vertices=" +
                               std::to_string(pristine.GetDeformer().GetPositions().size()) + ";triangles_updated=" +
                               std::to_string(report.mTrianglesUpdated) + ";triangles=" + std::to_string(triangles) +
                               ";constrained_points=" + std::to_string(points) + ";scale=" + std::to_string(report.mScale) +
-                              ";full_recompute_ms=" + std::to_string(full_ms) + ";incremental_over_full=" +
-                              std::to_string(ms / full_ms);
+                              ";cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";full_recompute_ms=" + FormatExtra(full_ms) +
+                              ";full_recompute_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";incremental_over_full=" +
+                              FormatExtra(ms / full_ms) + ";max_control_m=" + FormatExtra(MaxControl(car));
     ioTable.Add({inBenchmark, name, ms, report.mMaxWanted > 0.0 ? report.mMaxPointError / report.mMaxWanted : 0.0,
                  "rel_contact_error", extra});
 }
@@ -112,9 +131,10 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         for (int contacts : {38, 64})
             ApplyCase(ioTable, "apply_collision", triangles, zones, 8, contacts, repetitions);
 
-    // Lattice resolution against time and error.
-    for (int controls : {4, 6, 8, 12, 16})
+    // Lattice resolution against time and error; 0: the default lattice (0.15 m control spacing).
+    for (int controls : {4, 6, 8, 12, 16, 0})
         ApplyCase(ioTable, "lattice_resolution", triangles, 1, controls, 38, repetitions);
+    ApplyCase(ioTable, "apply_collision", triangles, 1, 0, 64, repetitions);
 }
 
 } // namespace crumple::bench
