@@ -112,6 +112,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                               {"contacts", collision.mContacts}});
     report["collisions"] = collisions;
     report["folded_vertices"] = inOutcome.mFoldedVertices;
+    report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     nlohmann::json expectations = nlohmann::json::array();
     bool passed = true;
     for (const ExpectationResult& result : inResults)
@@ -143,6 +144,8 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     std::fprintf(inStream, "  delta-v %.2f km/h, energy absorbed %.1f kJ, %zu collisions, impulse %.0f N s (peak %.0f)\n",
                  inOutcome.DeltaV() * cKmhPerMs, inOutcome.EnergyAbsorbed() / 1000.0, inOutcome.mCollisions.size(),
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
+    std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
+                 inOutcome.mOutwardDisplacement);
     if (inOutcome.mFoldedVertices > 0)
         std::fprintf(inStream, "  surface folded: %d of %zu vertices turned over\n", inOutcome.mFoldedVertices,
                      inOutcome.mRestMesh.mPositions.size());
@@ -186,6 +189,7 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
     row("folded vertices", std::to_string(inOutcome.mFoldedVertices) + " of " +
                                  std::to_string(inOutcome.mRestMesh.mPositions.size()));
+    row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";

@@ -242,6 +242,12 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
     outcome.mFoldedVertices = FoldedVertices(outcome.mRestNormals, outcome.mNormals);
+    // intent: the car's initial travel in its own frame; a standing car (a target hitting it) has none
+    const double start_speed = outcome.mStartVelocity.norm();
+    if (start_speed > 0.0)
+        outcome.mOutwardDisplacement = OutwardDisplacement(
+            outcome.mRestMesh, outcome.mPositions,
+            outcome.mStartTransform.DirectionToBody(outcome.mStartVelocity / start_speed));
     if (scene.GetTargetObject().IsValid())
     {
         const ffd::FfdDeformer& target = scene.GetDamage().GetObject(scene.GetTargetObject())->GetDeformer();
@@ -273,6 +279,8 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return static_cast<double>(mCollisions.size());
     case EQuantity::FoldedVertices:
         return static_cast<double>(mFoldedVertices);
+    case EQuantity::OutwardDisplacement:
+        return mOutwardDisplacement;
     }
     return std::numeric_limits<double>::quiet_NaN();
 }
@@ -283,6 +291,14 @@ int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> in
     for (std::size_t vertex = 0; vertex < inNormals.size() && vertex < inRestNormals.size(); ++vertex)
         folded += inRestNormals[vertex].dot(inNormals[vertex]) < 0.0 ? 1 : 0;
     return folded;
+}
+
+double OutwardDisplacement(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, const Vec3& inForward)
+{
+    double largest = 0.0;
+    for (std::size_t vertex = 0; vertex < inPositions.size(); ++vertex)
+        largest = std::max(largest, (inPositions[vertex] - inRest.mPositions[vertex]).dot(inForward));
+    return largest;
 }
 
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone)

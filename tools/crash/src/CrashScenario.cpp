@@ -33,6 +33,8 @@ const char* ToString(EQuantity inQuantity)
         return "collisions";
     case EQuantity::FoldedVertices:
         return "folded_vertices";
+    case EQuantity::OutwardDisplacement:
+        return "outward_displacement_m";
     }
     return "unknown";
 }

@@ -791,16 +791,16 @@ class ScenarioReader
     {
         // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
         constexpr std::size_t delta_v_km_h = 2;
-        static constexpr std::array<EQuantity, 7> quantities{
+        static constexpr std::array<EQuantity, 8> quantities{
             EQuantity::ResidualCrush, EQuantity::DeltaV,         EQuantity::DeltaV,
             EQuantity::TotalImpulse,  EQuantity::EnergyAbsorbed, EQuantity::Collisions,
-            EQuantity::FoldedVertices};
+            EQuantity::FoldedVertices, EQuantity::OutwardDisplacement};
         std::size_t quantity = 0;
         if (!ExpectObject(inItem, inPointer) ||
             !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
             !ReadEnum(inItem, inPointer, "quantity",
                       {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
-                       "energy_absorbed_J", "collisions", "folded_vertices"},
+                       "energy_absorbed_J", "collisions", "folded_vertices", "outward_displacement_m"},
                       {{"residual_crush", "residual crush is residual_crush_m"},
                        {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
                        {"total_impulse", "impulses are total_impulse_N_s"},

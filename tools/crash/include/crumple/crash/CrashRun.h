@@ -29,6 +29,7 @@ struct CrashOutcome
 {
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
     int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
+    double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
@@ -81,5 +82,12 @@ double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPo
 /// @param[in] inRestNormals  #V unit vertex normals before
 /// @param[in] inNormals      #V unit vertex normals after
 int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals);
+
+/// Largest residual displacement of a vertex along inForward (a unit direction in the body frame: the car's
+/// initial direction of travel relative to the target), 0 when no vertex moved forward (m). The target
+/// pushes the struck surface back against the travel; a vertex moved forward is damage that leaked from
+/// the dent (a ripple of the direct-manipulation solve, a bulge on the unstruck side). Not the component
+/// along the surface normal: in a crush the rear-facing faces inside the crushed volume move back too.
+double OutwardDisplacement(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, const Vec3& inForward);
 
 } // namespace crumple::crash

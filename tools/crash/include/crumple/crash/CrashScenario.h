@@ -105,6 +105,9 @@ enum class EQuantity : std::uint8_t
     EnergyAbsorbed, ///< Kinetic energy lost, 1/2 m (|v_start|^2 - |v_end|^2) (J)
     Collisions,     ///< Number of collisions involving the car
     FoldedVertices, ///< Car body vertices whose surface normal the dents turned over (a fold): count
+    OutwardDisplacement, ///< Largest residual displacement of a car vertex forward, along the car's initial
+                         ///< direction of travel (m): a crush pushes the struck surface back, so a vertex
+                         ///< moved forward is damage that leaked out of the dent (a ripple, a bulge)
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
