@@ -8,9 +8,11 @@
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/base/Version.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 
 namespace crumple::samples
 {
@@ -151,6 +153,28 @@ void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inC
         std::printf("note: %s\n", painted.GetError().mMessage.c_str());
 }
 
+namespace
+{
+
+double ThreadCpuMs()
+{
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return 1.0e3 * static_cast<double>(now.tv_sec) + 1.0e-6 * static_cast<double>(now.tv_nsec);
+}
+
+} // namespace
+
+void RaceSession::BeginFrame()
+{
+    mFrameStartCpuMs = ThreadCpuMs();
+}
+
+void RaceSession::EndFrame()
+{
+    mFrameCpuMs.push_back(ThreadCpuMs() - mFrameStartCpuMs);
+}
+
 Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked)
 {
     ioDamage.Flush();
@@ -166,6 +190,20 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
     }
     std::printf("%d collisions; racing car deepest dent %.3f m, parked car %.3f m; %d frames\n", mLog.GetCount(),
                 RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    if (!mFrameCpuMs.empty())
+    {
+        // intent: the worst frame and where it was, then the distribution (thread CPU, engine + Crumple)
+        const auto worst = std::max_element(mFrameCpuMs.begin(), mFrameCpuMs.end());
+        std::vector<double> sorted = mFrameCpuMs;
+        std::sort(sorted.begin(), sorted.end());
+        const auto at = [&](double inQuantile) {
+            return sorted[static_cast<std::size_t>(inQuantile * static_cast<double>(sorted.size() - 1))];
+        };
+        std::printf("physics frames (engine step with Crumple, thread CPU): worst %.3f ms at frame %td (t = %.2f s), "
+                    "99th percentile %.3f ms, median %.3f ms over %zu frames\n",
+                    *worst, worst - mFrameCpuMs.begin(), static_cast<double>(worst - mFrameCpuMs.begin()) / 60.0,
+                    at(0.99), at(0.5), mFrameCpuMs.size());
+    }
     std::printf("wrote %s: race.crumple (replay: crumple-replay %s --out DIR), car.obj, parked.obj%s\n",
                 mOptions.mOut.string().c_str(), (mOptions.mOut / "race.crumple").string().c_str(),
                 mPainter != nullptr ? ", before.png, after.png, frames/" : "");

@@ -62,6 +62,12 @@ public:
     /// Flushes, closes the recording, writes after.png, car.obj and parked.obj, prints the summary.
     Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar, const plugin::DeformableObject& inParked);
 
+    /// Brackets one 60 Hz frame of physics (the engine's step with Crumple attached, no painting): Finish
+    /// prints the worst frame, the 99th percentile and the median, in thread CPU time, so that a damage
+    /// hitch shows.
+    void BeginFrame();
+    void EndFrame();
+
 private:
     RaceSession(const RaceOptions& inOptions, std::map<plugin::BodyId, std::string> inNames)
         : mOptions(inOptions), mLog(std::move(inNames)) {}
@@ -71,6 +77,8 @@ private:
     std::unique_ptr<plugin::DamageRecorder> mRecorder;
     std::unique_ptr<ScenePainter> mPainter;
     int mFrames = 0;
+    double mFrameStartCpuMs = 0.0;
+    std::vector<double> mFrameCpuMs; ///< Thread CPU time of each physics frame (ms)
 };
 
 } // namespace crumple::samples

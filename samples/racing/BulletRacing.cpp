@@ -126,7 +126,6 @@ int main(int argc, char** argv)
     names[car_body] = "racing car";
     DeformableObjectSettings car_object;
     car_object.mMesh = car_mesh;
-    car_object.mFittedControlCount = {12, 8, 6};
     const DeformableObject& car_deformable = *damage.GetObject(damage.CreateDeformableObject(car_body, car_object).Get());
 
     // The parked car.
@@ -160,7 +159,9 @@ int main(int argc, char** argv)
         const double speed = static_cast<double>(vehicle.getCurrentSpeedKmHour()) / 3.6;
         for (int wheel = 2; wheel < 4; ++wheel)
             vehicle.applyEngineForce(speed < options.mSpeed ? btScalar(6000) : btScalar(0), wheel);
+        session.Get()->BeginFrame();
         world.stepSimulation(btScalar(dt), 4, btScalar(1.0 / 240.0));
+        session.Get()->EndFrame();
         if (step % 6 == 0)
             session.Get()->PaintFrame(car_deformable, ToTransform(car.getWorldTransform()), parked_deformable,
                                       ToTransform(parked.getWorldTransform()));

@@ -150,7 +150,6 @@ int main(int argc, char** argv)
     names[car_body] = "racing car";
     DeformableObjectSettings car_object;
     car_object.mMesh = car_mesh;
-    car_object.mFittedControlCount = {12, 8, 6};
     const DeformableObject& car_deformable = *damage.GetObject(damage.CreateDeformableObject(car_body, car_object).Get());
 
     // The parked car.
@@ -186,6 +185,7 @@ int main(int argc, char** argv)
             dJointSetHinge2Param(hinges[static_cast<std::size_t>(i)], dParamVel2, -options.mSpeed / wheel_radius);
             dJointSetHinge2Param(hinges[static_cast<std::size_t>(i)], dParamFMax2, 1500.0);
         }
+        session.Get()->BeginFrame();
         for (int sub = 0; sub < 4; ++sub)
         {
             dSpaceCollide(scene.mSpace, &scene, &OdeScene::Near);
@@ -193,6 +193,7 @@ int main(int argc, char** argv)
             adapter->AfterStep(dt); // Crumple
             dJointGroupEmpty(scene.mContacts);
         }
+        session.Get()->EndFrame();
         if (frame % 6 == 0)
             session.Get()->PaintFrame(car_deformable, PoseOf(chassis), parked_deformable, PoseOf(parked));
     }
