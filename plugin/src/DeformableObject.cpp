@@ -81,9 +81,11 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     return DeformableObject(material, inSettings.mInterpolateWideImpacts, std::move(deformer).Get());
 }
 
-std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide) const
+std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide,
+                                                              int* outClamped) const
 {
     std::vector<ffd::PointDisplacement> dent;
+    int clamped = 0;
     const bool side_a = inSide == ECollisionSide::A;
 
     // One direction for the whole collision: impulse-weighted mean inward normal.
@@ -107,23 +109,30 @@ std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& i
         double depth = mMaterial.mDeformationFactor * effective * (c.mImpulse / peak);
         if (!(depth >= mMaterial.mMinDeformation) || depth <= 0.0)
             continue;
+        clamped += depth > mMaterial.mMaxInstantDeformation ? 1 : 0;
         depth = std::min(depth, mMaterial.mMaxInstantDeformation);
         dent.push_back({side_a ? c.mLocalPointOnA : c.mLocalPointOnB, depth * direction});
     }
     if (mInterpolate && dent.size() > 1)
         dent = ffd::InterpolateWideImpact(dent, mDeformer.GetMinSpacing());
+    if (outClamped != nullptr)
+        *outClamped = clamped;
     return dent;
 }
 
 ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, ECollisionSide inSide)
 {
-    const std::vector<ffd::PointDisplacement> dent = DentFor(inCollision, inSide);
+    int clamped = 0;
+    const std::vector<ffd::PointDisplacement> dent = DentFor(inCollision, inSide, &clamped);
     if (dent.empty())
         return {};
     // Collisions are validated when their contacts are submitted, so the dent is finite.
     Result<ffd::DentReport> report = mDeformer.ApplyDent(dent, mMaterial.mMaxInstantDeformation);
     CRUMPLE_ASSERT(report.IsValid(), "a validated collision produced a non-finite dent");
-    return report ? report.Get() : ffd::DentReport{};
+    if (!report)
+        return {};
+    report.Get().mContactsClamped = clamped;
+    return report.Get();
 }
 
 } // namespace crumple::plugin

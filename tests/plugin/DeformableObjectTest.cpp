@@ -144,3 +144,23 @@ TEST_CASE("A wide impact makes one coherent dent", "[plugin]")
     CHECK(centre_depth(coherent) == Approx(0.04).epsilon(0.05));
     CHECK(centre_depth(spiky) < 0.8 * centre_depth(coherent));
 }
+
+TEST_CASE("A dent the material's maximum clamps is reported as limited", "[plugin]")
+{
+    DamageMaterial material;
+    material.mDeformationFactor = 1.0e-5;
+    material.mMaxInstantDeformation = 0.05;
+    // 2,000 N s asks for 0.02 m: within the bound. 20,000 N s asks for 0.2 m: clamped to 0.05 m.
+    DeformableObject soft = MakeCar(material);
+    DeformableObject hard = MakeCar(material);
+    const ffd::DentReport within = soft.ApplyCollision(FrontCollision({{Vec3(2.1, 0.0, 0.0), 2000.0}}), ECollisionSide::B);
+    const ffd::DentReport clamped =
+        hard.ApplyCollision(FrontCollision({{Vec3(2.1, 0.0, 0.0), 15000.0}, {Vec3(2.1, 0.3, 0.0), 5000.0}}),
+                            ECollisionSide::B);
+    REQUIRE(within.mPointsApplied > 0); // both dents happened
+    REQUIRE(clamped.mPointsApplied > 0);
+    CHECK(within.mContactsClamped == 0);
+    CHECK_FALSE(within.IsLimited());
+    CHECK(clamped.mContactsClamped == 2);
+    CHECK(clamped.IsLimited());
+}

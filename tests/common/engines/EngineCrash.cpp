@@ -34,9 +34,11 @@ EngineCrashResult SummarizeCrash(const DamageWorld& inWorld, ObjectId inCar, int
     return result;
 }
 
-void CrashCounter::OnCollision(const Collision& inCollision, std::span<const ObjectDent>)
+void CrashCounter::OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents)
 {
     ++mCollisions;
+    for (const ObjectDent& dent : inDents)
+        mLimitedDents += dent.mReport.IsLimited() ? 1 : 0;
     mTotalImpulse += inCollision.TotalImpulse();
     mLog.push_back(inCollision);
 }

@@ -94,6 +94,7 @@ public:
     void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
     int mCollisions = 0;
     double mTotalImpulse = 0.0;
+    int mLimitedDents = 0; ///< Dents a bound limited (ffd::DentReport::IsLimited), any object
     std::vector<plugin::Collision> mLog; ///< Every collision, in dispatch order
 };
 

@@ -113,6 +113,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     report["collisions"] = collisions;
     report["folded_vertices"] = inOutcome.mFoldedVertices;
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
+    report["limited_dents"] = inOutcome.mLimitedDents;
     nlohmann::json expectations = nlohmann::json::array();
     bool passed = true;
     for (const ExpectationResult& result : inResults)
@@ -146,6 +147,9 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
                  inOutcome.mOutwardDisplacement);
+    if (inOutcome.mLimitedDents > 0)
+        std::fprintf(inStream, "  %d dent(s) clamped by the material's maximum deformation: the crush is a lower bound\n",
+                     inOutcome.mLimitedDents);
     if (inOutcome.mFoldedVertices > 0)
         std::fprintf(inStream, "  surface folded: %d of %zu vertices turned over\n", inOutcome.mFoldedVertices,
                      inOutcome.mRestMesh.mPositions.size());
@@ -189,6 +193,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
     row("folded vertices", std::to_string(inOutcome.mFoldedVertices) + " of " +
                                  std::to_string(inOutcome.mRestMesh.mPositions.size()));
+    row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
+                                                 (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");

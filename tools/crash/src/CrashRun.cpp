@@ -227,6 +227,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         if (Status status = recorder->Close(); status.HasError())
             return status.GetError();
 
+    outcome.mLimitedDents = scene.GetCounter().mLimitedDents;
     for (const plugin::Collision& collision : scene.GetCounter().mLog)
     {
         const double impulse = collision.TotalImpulse();

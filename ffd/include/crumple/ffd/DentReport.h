@@ -27,6 +27,11 @@ struct DentReport
     std::uint32_t mNormalsUpdated = 0;   ///< Vertices whose normal was recomputed
     double mMaxPointError = 0.0;   ///< Max over applied points of |achieved - wanted displacement| (m)
     double mMaxWanted = 0.0;       ///< Max wanted displacement magnitude (m), to make mMaxPointError relative
+    int mContactsClamped = 0;      ///< Contacts whose depth the material's maximum instantaneous deformation cut
+                                   ///< (set by plugin::DeformableObject::ApplyCollision; 0 from ApplyDent)
+
+    /// True when a bound limited this dent: a contact's depth clamped or the dent scaled down.
+    bool IsLimited() const { return mContactsClamped > 0 || mScale < 1.0; }
 };
 
 } // namespace crumple::ffd

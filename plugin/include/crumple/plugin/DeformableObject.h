@@ -31,7 +31,9 @@ public:
     /// total impulse: the dent's depth follows the impulse of the impact, its shape the way the impulse was
     /// distributed, and neither depends on how many points the engine reported. Depths below the minimum
     /// are dropped, above the instantaneous maximum clamped. Wide contact sets are then interpolated.
-    std::vector<ffd::PointDisplacement> DentFor(const Collision& inCollision, ECollisionSide inSide) const;
+    /// @param[out] outClamped  when not null, the number of contacts whose depth was clamped to the maximum
+    std::vector<ffd::PointDisplacement> DentFor(const Collision& inCollision, ECollisionSide inSide,
+                                                int* outClamped = nullptr) const;
 
     /// DentFor, then ApplyDent with the instantaneous maximum as the step bound, so that no vertex (not
     /// only no contact point) moves further than mMaxInstantDeformation in one collision.

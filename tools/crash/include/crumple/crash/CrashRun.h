@@ -30,6 +30,7 @@ struct CrashOutcome
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
     int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
+    int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
