@@ -129,7 +129,9 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     deformer.mPositions = deformer.mRestMesh.mPositions;
     deformer.mNormals.assign(vertex_count, Vec3::Zero());
     deformer.mFaceNormals.assign(triangle_count, Vec3::Zero());
-    deformer.RecomputeAll();
+    // Zero controls move no vertex by even an ulp (FfdLattice), so the positions are the rest mesh as
+    // copied above: only the normals need computing.
+    deformer.RecomputeNormals();
     deformer.mRestNormals = deformer.mNormals;
     std::fill(deformer.mDirty.begin(), deformer.mDirty.end(), std::uint8_t{0});
     deformer.mVertexEvaluations = 0;
@@ -483,6 +485,12 @@ void FfdDeformer::RecomputeAll()
                 std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], (position - mRestMesh.mPositions[v]).norm());
     }
     mVertexEvaluations += vertex_count;
+    RecomputeNormals();
+}
+
+void FfdDeformer::RecomputeNormals()
+{
+    const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     for (std::uint32_t f = 0; f < mFaceNormals.size(); ++f)
         mFaceNormals[f] = FaceNormal(f);
     for (std::uint32_t v = 0; v < vertex_count; ++v)

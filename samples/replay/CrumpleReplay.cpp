@@ -10,6 +10,7 @@
 #include <crumple/base/Version.h>
 #include <crumple/plugin/ReplayDamage.h>
 
+#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -25,14 +26,17 @@ int main(int argc, char** argv)
 {
     std::filesystem::path input, out;
     bool pictures = false;
+    bool meshes = true;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
         {
-            std::printf("usage: crumple-replay FILE --out DIR [--pictures]\n"
+            std::printf("usage: crumple-replay FILE --out DIR [--pictures] [--no-meshes]\n"
                         "  Replays a Crumple recording (written by DamageRecorder) without a physics engine and\n"
-                        "  writes each object's deformed mesh as DIR/object<ID>.obj, with one line per object.\n"
+                        "  writes each object's deformed mesh as DIR/object<ID>.obj, with one line per object\n"
+                        "  (its deepest dent and a hash of its positions) and the replay's time.\n"
+                        "  --no-meshes  writes no OBJ (the hash line still checks the result)\n"
                         "  --pictures  also DIR/object<ID>_before.png, _after.png (coloured by dent depth) and\n"
                         "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n");
             return 0;
@@ -46,6 +50,8 @@ int main(int argc, char** argv)
             out = argv[++i];
         else if (arg == "--pictures")
             pictures = true;
+        else if (arg == "--no-meshes")
+            meshes = false;
         else if (!arg.starts_with("-") && input.empty())
             input = arg;
         else
@@ -75,9 +81,12 @@ int main(int argc, char** argv)
     }
     std::printf("crumple-replay: %zu objects, %zu collisions\n", replay.Get().mObjects.size(), replay.Get().mCollisions.size());
     // A dry run first: a recording whose objects cannot be rebuilt is refused before anything is written.
-    if (Result<std::vector<ReplayedObject>> check = ReplayDamage(Replay{replay.Get().mObjects, {}}); !check)
+    // Build every object once, before anything is written: a refused recording leaves no output.
+    const auto replay_start = std::chrono::steady_clock::now();
+    Result<std::vector<ReplayedObject>> objects = CreateReplayedObjects(replay.Get());
+    if (!objects)
     {
-        std::fprintf(stderr, "crumple-replay: %s\n", check.GetError().mMessage.c_str());
+        std::fprintf(stderr, "crumple-replay: %s\n", objects.GetError().mMessage.c_str());
         return 2;
     }
     std::error_code error;
@@ -120,12 +129,11 @@ int main(int argc, char** argv)
         return "object" + std::to_string(inObject.mObject.mValue) + inSuffix;
     };
     if (paint)
-        if (Result<std::vector<ReplayedObject>> rest = ReplayDamage(Replay{replay.Get().mObjects, {}}); rest)
-            for (const ReplayedObject& object : rest.Get())
-                paint(object, out / name(object, "_before.png"));
+        for (const ReplayedObject& object : objects.Get())
+            paint(object, out / name(object, "_before.png"));
 
     std::size_t frame = 0;
-    Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get(), [&](std::size_t inIndex, const std::vector<ReplayedObject>& inObjects) {
+    ApplyReplayedCollisions(replay.Get(), objects.Get(), [&](std::size_t inIndex, const std::vector<ReplayedObject>& inObjects) {
         if (!paint)
             return;
         const Collision& collision = replay.Get().mCollisions[inIndex];
@@ -137,16 +145,15 @@ int main(int argc, char** argv)
                 paint(object, out / "frames" / name(object, suffix));
             }
     });
-    if (!objects)
-    {
-        std::fprintf(stderr, "crumple-replay: %s\n", objects.GetError().mMessage.c_str());
-        return 2;
-    }
+    const double replay_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start).count();
     for (const ReplayedObject& object : objects.Get())
     {
         const ffd::FfdDeformer& deformer = object.mDeformable.GetDeformer();
         const std::filesystem::path path = out / ("object" + std::to_string(object.mObject.mValue) + ".obj");
-        if (Status written = common::WriteObj(path, deformer.GetPositions(), deformer.GetNormals(), deformer.GetRestMesh().mTriangles); !written)
+        if (Status written = meshes ? common::WriteObj(path, deformer.GetPositions(), deformer.GetNormals(),
+                                                       deformer.GetRestMesh().mTriangles)
+                                    : Status::Ok();
+            !written)
         {
             std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
             return 2;
@@ -158,7 +165,14 @@ int main(int argc, char** argv)
             paint(object, out / name(object, "_after.png"));
         std::printf("object %u (body %u): %zu vertices, deepest dent %.4f m, mesh hash %016llx -> %s\n",
                     object.mObject.mValue, object.mBody.mValue, deformer.GetPositions().size(), deepest,
-                    static_cast<unsigned long long>(common::HashPositions(deformer.GetPositions())), path.string().c_str());
+                    static_cast<unsigned long long>(common::HashPositions(deformer.GetPositions())),
+                    meshes ? path.string().c_str() : "(no mesh written)");
     }
+    // Against the recording's own clock: it runs at least until its last collision closed.
+    const auto& collisions = replay.Get().mCollisions;
+    const double recorded_s = collisions.empty() ? 0.0 : collisions.back().mEndTime;
+    std::printf("replayed %zu collisions in %.2f ms (building the objects included, writing excluded); the last "
+                "recorded collision closed at t = %.3f s (%.0fx real time)\n",
+                collisions.size(), replay_ms, recorded_s, replay_ms > 0.0 ? 1.0e3 * recorded_s / replay_ms : 0.0);
     return 0;
 }

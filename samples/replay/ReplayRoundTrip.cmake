@@ -18,6 +18,18 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIR}/live/deformed.o
 if(different)
     message(FATAL_ERROR "the replayed mesh differs from the live one")
 endif()
+# --no-meshes writes no OBJ but prints the same positions hash as the full replay.
+execute_process(COMMAND ${REPLAY} ${DIR}/crash.crumple --out ${DIR}/replayed RESULT_VARIABLE full_code OUTPUT_VARIABLE full_out)
+execute_process(COMMAND ${REPLAY} ${DIR}/crash.crumple --out ${DIR}/hash_only --no-meshes RESULT_VARIABLE hash_code
+    OUTPUT_VARIABLE hash_out)
+string(REGEX MATCH "mesh hash [0-9a-f]+" full_hash "${full_out}")
+string(REGEX MATCH "mesh hash [0-9a-f]+" only_hash "${hash_out}")
+if(NOT full_code EQUAL 0 OR NOT hash_code EQUAL 0 OR full_hash STREQUAL "" OR NOT full_hash STREQUAL only_hash)
+    message(FATAL_ERROR "--no-meshes: exit ${hash_code}, '${only_hash}' against '${full_hash}'\n${hash_out}")
+endif()
+if(EXISTS ${DIR}/hash_only/object0.obj)
+    message(FATAL_ERROR "--no-meshes wrote a mesh")
+endif()
 # A truncated recording (cut in the middle), an empty one and a missing one are refused; nothing is written.
 file(SIZE ${DIR}/crash.crumple size)
 math(EXPR half "${size} / 2")

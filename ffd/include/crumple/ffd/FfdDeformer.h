@@ -95,6 +95,8 @@ private:
                      std::span<const std::uint32_t> inVertices, double inMaxStep);
     // Recompute positions of inVertices from the zone's controls, then the normals around them.
     void UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport);
+    // Recompute every face and vertex normal from the current positions, marking changed normals dirty.
+    void RecomputeNormals();
     // Recompute face normals of triangles touching inMoved, then vertex normals of their corners.
     void UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport);
     Vec3 VertexNormal(std::uint32_t inVertex) const;

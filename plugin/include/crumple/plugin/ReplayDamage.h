@@ -21,6 +21,18 @@ struct ReplayedObject
     DeformableObject mDeformable; ///< Mesh and deformer after the replay
 };
 
+/// Rebuilds every object of a recording with the damage it had when recording began, in object id order
+/// (the dispatch order of the live world). Fails, building nothing further, on the first object whose
+/// settings or initial damage the library refuses.
+Result<std::vector<ReplayedObject>> CreateReplayedObjects(const Replay& inReplay);
+
+/// Applies each recorded collision to ioObjects (from CreateReplayedObjects of the same recording): the
+/// objects of body A, then of body B, in object id order, exactly as DamageWorld dispatched them; an
+/// object created mid-run only takes the collisions recorded after it.
+/// @param[in] inAfterCollision called after each collision with its index and the objects; may be empty
+void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
+                             const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
+
 /// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
 /// then applies each collision to the objects of body A, then of body B, in object id order, exactly as
 /// DamageWorld dispatched them; an object created mid-run only takes the collisions recorded after it. The deformed meshes are bitwise identical to the live run's.
