@@ -88,7 +88,73 @@ void EngineCases(BenchTable& ioTable, const std::string& inEngine, int inRepetit
     OverheadCase<Scene>(ioTable, inEngine, "wall_crash_15m_s", crash, inRepetitions);
 }
 
+// The value below which inQuantile of the values lie (nearest rank).
+double Quantile(std::vector<double> inValues, double inQuantile)
+{
+    std::sort(inValues.begin(), inValues.end());
+    return inValues[static_cast<std::size_t>(inQuantile * static_cast<double>(inValues.size() - 1))];
+}
+
+// A crash at game frames: a bare scene and the same scene with Crumple attached stepped in lockstep (bare
+// frame, attached frame, ...), each frame timed in wall and thread CPU time. The attached scene's worst
+// frame is the hitch a game sees when the car hits; the bare scene's is the engine's own.
+template <class Scene>
+void FrameBudgetCase(BenchTable& ioTable, const std::string& inEngine, const std::string& inCase,
+                     common::EngineCrashSettings inSettings)
+{
+    inSettings.mAttach = false;
+    Scene bare(inSettings);
+    inSettings.mAttach = true;
+    Scene attached(inSettings);
+    std::vector<double> wall[2], cpu[2];
+    const int frames = static_cast<int>(inSettings.mDuration / inSettings.mTimeStep);
+    for (int frame = 0; frame < frames; ++frame)
+        for (int side = 0; side < 2; ++side)
+        {
+            Scene& scene = side == 0 ? bare : attached;
+            const double cpu_start = ThreadCpuMs();
+            const auto start = std::chrono::steady_clock::now();
+            scene.Step();
+            wall[side].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            cpu[side].push_back(ThreadCpuMs() - cpu_start);
+        }
+    attached.GetDamage().Flush();
+    const auto worst = [](const std::vector<double>& inValues) { return *std::max_element(inValues.begin(), inValues.end()); };
+    ioTable.Add({"frame_budget", inEngine + "/" + inCase, Quantile(wall[1], 0.5), 0.0, "none",
+                 "worst_cpu_ms=" + FormatExtra(worst(cpu[1])) + ";worst_wall_ms=" + FormatExtra(worst(wall[1])) +
+                     ";p99_cpu_ms=" + FormatExtra(Quantile(cpu[1], 0.99)) + ";median_cpu_ms=" + FormatExtra(Quantile(cpu[1], 0.5)) +
+                     ";bare_worst_cpu_ms=" + FormatExtra(worst(cpu[0])) + ";bare_p99_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.99)) +
+                     ";frames=" + std::to_string(frames) + ";collisions=" + std::to_string(attached.GetCounter().mCollisions)});
+}
+
+template <class Scene>
+void FrameBudgetCases(BenchTable& ioTable, const std::string& inEngine, bool inQuick)
+{
+    // A 1,200 kg box car into a wall at 15 m/s, stepped at 60 Hz, on the default lattice.
+    for (int triangles : inQuick ? std::vector<int>{4000} : std::vector<int>{8000, 50000})
+    {
+        common::EngineCrashSettings crash;
+        crash.mSceneryBoxes = 100;
+        crash.mDuration = 0.6;
+        crash.mTimeStep = 1.0 / 60.0;
+        crash.mTriangles = triangles;
+        FrameBudgetCase<Scene>(ioTable, inEngine, "wall_crash_15m_s/" + std::to_string(triangles / 1000) + "k_tris", crash);
+    }
+}
+
 } // namespace
+
+void RunFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+#if defined(CRUMPLE_BENCH_BULLET)
+    FrameBudgetCases<common::BulletWallCrash>(ioTable, "bullet", inOptions.mQuick);
+#endif
+#if defined(CRUMPLE_BENCH_ODE)
+    FrameBudgetCases<common::OdeWallCrash>(ioTable, "ode", inOptions.mQuick);
+#endif
+    (void)ioTable;
+    (void)inOptions;
+}
 
 void RunAdapterBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 {

@@ -55,15 +55,15 @@ std::string FormatExtra(double inValue)
     return text;
 }
 
-namespace
-{
-
 double ThreadCpuMs()
 {
     timespec now{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
     return 1.0e3 * static_cast<double>(now.tv_sec) + 1.0e-6 * static_cast<double>(now.tv_nsec);
 }
+
+namespace
+{
 
 double Median(std::vector<double> inValues)
 {

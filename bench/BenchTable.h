@@ -53,6 +53,9 @@ struct Timing
 std::vector<Timing> InterleavedMedians(int inRepetitions,
                                        const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides);
 
+/// Thread CPU time of the calling thread (ms, from an arbitrary origin).
+double ThreadCpuMs();
+
 /// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);
 
