@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
 #include "BoxMesh.h"
+#include "ThreadJobSystem.h"
 
 #include <crumple/plugin/BaraffImpulse.h>
 #include <crumple/plugin/DeformableObject.h>
@@ -116,6 +117,32 @@ void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriang
                  "rel_contact_error", extra});
 }
 
+// The same dent on the calling thread alone and split over a 2-thread job system, interleaved.
+void ThreadsCase(BenchTable& ioTable, int inTriangles, int inControls, int inContacts, int inRepetitions)
+{
+    const DeformableObject pristine = MakeCar(inTriangles, 1, inControls);
+    const Collision collision = MakeFrontCollision(inContacts);
+    const common::ThreadJobSystem two(2);
+    DeformableObject alone = pristine, split = pristine;
+    ffd::DentReport report;
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions, {{[&] { alone = pristine; }, [&] { report = alone.ApplyCollision(collision, ECollisionSide::B); }},
+                        {[&] {
+                             split = pristine;
+                             split.GetDeformer().SetJobSystem(&two.Get());
+                         },
+                         [&] { split.ApplyCollision(collision, ECollisionSide::B); }}});
+    // The split dent must be the same bytes, or the timing compares different work.
+    const bool same = alone.GetDeformer().GetPositions() == split.GetDeformer().GetPositions() &&
+                      alone.GetDeformer().GetNormals() == split.GetDeformer().GetNormals();
+    const std::string lattice = inControls > 0 ? std::to_string(inControls) + "^3" : "default";
+    ioTable.Add({"dent_threads", std::to_string(inTriangles / 1000) + "k_tris/" + lattice + "/" + std::to_string(inContacts) +
+                                     "_contacts/2_threads",
+                 timing[1].mWallMs, same ? 0.0 : 1.0, "bytes_differ",
+                 "one_thread_ms=" + FormatExtra(timing[0].mWallMs) + ";speedup=" + FormatExtra(timing[0].mWallMs / timing[1].mWallMs) +
+                     ";game_thread_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";vertices_updated=" + std::to_string(report.mVerticesMoved)});
+}
+
 } // namespace
 
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -135,6 +162,10 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     for (int controls : {4, 6, 8, 12, 16, 0})
         ApplyCase(ioTable, "lattice_resolution", triangles, 1, controls, 38, repetitions);
     ApplyCase(ioTable, "apply_collision", triangles, 1, 0, 64, repetitions);
+
+    // Split over the host's job system (bitwise the same dent).
+    ThreadsCase(ioTable, triangles, 8, 64, repetitions);
+    ThreadsCase(ioTable, triangles, 0, 64, repetitions);
 }
 
 } // namespace crumple::bench

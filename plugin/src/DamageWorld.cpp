@@ -18,6 +18,9 @@ Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
         return MakeError(EError::InvalidArgument, "DamageWorldSettings.mRestitution must be in [0, 1]");
     if (!(std::isfinite(inSettings.mRestingSpeed) && inSettings.mRestingSpeed >= 0.0))
         return MakeError(EError::InvalidArgument, "DamageWorldSettings.mRestingSpeed must be finite and >= 0 m/s");
+    if (inSettings.mJobs != nullptr && (inSettings.mJobs->mParallelFor == nullptr || inSettings.mJobs->mWorkerCount < 1))
+        return MakeError(EError::InvalidArgument,
+                         "DamageWorldSettings.mJobs needs an mParallelFor and an mWorkerCount >= 1 (or pass null)");
     Result<CollisionGrouper> grouper = CollisionGrouper::Create(inSettings.mGrouping);
     if (!grouper)
         return grouper.GetError();
@@ -70,6 +73,7 @@ Result<ObjectId> DamageWorld::CreateDeformableObject(BodyId inBody, const Deform
     Result<DeformableObject> object = DeformableObject::Create(inSettings);
     if (!object)
         return object.GetError();
+    object.Get().GetDeformer().SetJobSystem(mSettings.mJobs);
     const ObjectId id{static_cast<std::uint32_t>(mObjects.size())};
     ObjectSlot slot;
     slot.mBody = inBody;

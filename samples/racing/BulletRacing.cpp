@@ -6,6 +6,7 @@
 // Prints one line per collision; writes a replay file, the deformed meshes (OBJ) and PNG pictures.
 #include "BoxMesh.h"
 #include "RaceSession.h"
+#include "ThreadJobSystem.h"
 
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/bullet/BulletAdapter.h>
@@ -70,7 +71,11 @@ int main(int argc, char** argv)
     btSequentialImpulseConstraintSolver solver;
     btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
     world.setGravity(btVector3(0, 0, btScalar(-9.81)));
-    DamageWorld damage = DamageWorld::Create().Get();
+    // The game's job system (here: threads started per parallel for), handed to Crumple for dents.
+    const common::ThreadJobSystem jobs(options.mThreads);
+    DamageWorldSettings damage_settings;
+    damage_settings.mJobs = options.mThreads > 1 ? &jobs.Get() : nullptr;
+    DamageWorld damage = DamageWorld::Create(damage_settings).Get();
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world, damage).Get());
     std::map<BodyId, std::string> names;
 

@@ -5,6 +5,7 @@
 // (OdeAdapter::OnCollide) and one after dWorldQuickStep (OdeAdapter::AfterStep).
 #include "BoxMesh.h"
 #include "RaceSession.h"
+#include "ThreadJobSystem.h"
 
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/ode/OdeAdapter.h>
@@ -95,7 +96,11 @@ int main(int argc, char** argv)
     dWorldSetQuickStepNumIterations(scene.mWorld, 50);
     scene.mSpace = dHashSpaceCreate(nullptr);
     scene.mContacts = dJointGroupCreate(0);
-    DamageWorld damage = DamageWorld::Create().Get();
+    // The game's job system (here: threads started per parallel for), handed to Crumple for dents.
+    const common::ThreadJobSystem jobs(options.mThreads);
+    DamageWorldSettings damage_settings;
+    damage_settings.mJobs = options.mThreads > 1 ? &jobs.Get() : nullptr;
+    DamageWorld damage = DamageWorld::Create(damage_settings).Get();
     std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
     scene.mAdapter = adapter.get();
     std::map<BodyId, std::string> names{{adapter->GetEnvironment(), "ground"}};

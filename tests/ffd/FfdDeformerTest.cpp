@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "ThreadJobSystem.h"
 
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <tuple>
 
 using namespace crumple;
 using namespace crumple::ffd;
@@ -371,5 +373,40 @@ TEST_CASE("Small dents never fire the fold guard", "[ffd]")
         Result<DentReport> report = deformer.ApplyDent(FrontDent(0.02));
         REQUIRE(report);
         CHECK(report.Get().mControlsPushed == 0);
+    }
+}
+
+TEST_CASE("Dents are bitwise identical on 1, 2 and 4 worker threads", "[ffd]")
+{
+    // A mesh large enough that every dent splits into pieces (2,048 vertices each), dented repeatedly with
+    // clamping (so the bound checks run too), on no job system and on 1, 2 and 4 threads.
+    const TriangleMesh mesh = common::MakeBoxMesh(Vec3(2.1, 0.9, 0.7), {120, 50, 40});
+    FfdDeformerSettings settings;
+    settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {0, 0, 0}, 0.12, 0.15));
+    auto run = [&](const JobSystem* inJobs) {
+        FfdDeformer deformer = FfdDeformer::Create(mesh, settings).Get();
+        deformer.SetJobSystem(inJobs);
+        std::mt19937_64 random(5);
+        std::uniform_real_distribution<double> y(-0.8, 0.8), z(-0.6, 0.6);
+        std::uint64_t moved = 0;
+        for (int dent = 0; dent < 6; ++dent)
+        {
+            std::vector<PointDisplacement> points;
+            for (int i = 0; i < 12; ++i)
+                points.push_back({Vec3(2.1, y(random), z(random)), Vec3(-0.05 - 0.01 * i, 0.0, 0.0)});
+            moved += deformer.ApplyDent(points, 0.06).Get().mVerticesMoved;
+        }
+        return std::tuple{deformer.GetPositions(), deformer.GetNormals(), moved};
+    };
+    const auto [positions, normals, moved] = run(nullptr);
+    REQUIRE(moved > 3 * 2048); // the dents happened, and big enough to split
+    for (int threads : {1, 2, 4})
+    {
+        const common::ThreadJobSystem jobs(threads);
+        const auto [other_positions, other_normals, other_moved] = run(&jobs.Get());
+        INFO(threads << " threads");
+        CHECK(other_moved == moved);
+        CHECK(std::memcmp(other_positions.data(), positions.data(), positions.size() * sizeof(Vec3)) == 0);
+        CHECK(std::memcmp(other_normals.data(), normals.data(), normals.size() * sizeof(Vec3)) == 0);
     }
 }

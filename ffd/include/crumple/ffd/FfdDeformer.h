@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
 #include <crumple/ffd/DentReport.h>
 #include <crumple/ffd/FfdDeformerSettings.h>
@@ -82,6 +83,11 @@ public:
     /// per-vertex work without timing anything.
     std::uint64_t GetVertexEvaluationCount() const { return mVertexEvaluations; }
 
+    /// Splits a dent's per-vertex work (positions, normals, bound checks) over the host's workers; null (the
+    /// default) runs it on the calling thread. Not owned: it must outlive the deformer's dents. Results are
+    /// bitwise identical with any job system (see JobSystem).
+    void SetJobSystem(const JobSystem* inJobs) { mJobs = inJobs; }
+
 private:
     FfdDeformer() = default;
 
@@ -126,6 +132,7 @@ private:
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
 
     std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges
+    const JobSystem* mJobs = nullptr; ///< The host's workers for per-vertex work; null: inline
     std::uint64_t mVertexEvaluations = 0;
 };
 

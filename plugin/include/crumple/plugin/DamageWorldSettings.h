@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/JobSystem.h>
 #include <crumple/plugin/CollisionGrouper.h>
 
 namespace crumple::plugin
@@ -16,6 +17,9 @@ struct DamageWorldSettings
     double mRestingSpeed = 0.5;         ///< Contacts closing slower than this (m/s) are resting and make no
                                         ///< impulse and no dent (like Box2D's hit-event threshold); it must
                                         ///< exceed gravity x step (0.16 m/s at 60 Hz) so a parked car is never dented
+    /// The host's job system for the per-vertex work of dents (not owned; it must outlive the world);
+    /// null: every dent runs on the thread that calls Update/Flush. Results are bitwise identical either way.
+    const JobSystem* mJobs = nullptr;
 };
 
 } // namespace crumple::plugin
