@@ -1,8 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BenchTable.h"
-
-#include <ctime>
+#include "ThreadCpuTime.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -53,13 +52,6 @@ std::string FormatExtra(double inValue)
     char text[32];
     std::snprintf(text, sizeof(text), "%.4g", inValue);
     return text;
-}
-
-double ThreadCpuMs()
-{
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return 1.0e3 * static_cast<double>(now.tv_sec) + 1.0e-6 * static_cast<double>(now.tv_nsec);
 }
 
 namespace

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "ThreadCpuTime.h"
+
 #include <chrono>
 #include <functional>
 #include <string>
@@ -10,6 +12,8 @@
 
 namespace crumple::bench
 {
+
+using common::ThreadCpuMs;
 
 /// One benchmark result: a row of the printed table and of the CSV
 /// (benchmark,case,median_ms,error,error_unit,extra).
@@ -52,9 +56,6 @@ struct Timing
 /// noise from other jobs on the machine falls on both alike. Each side's prepare is untimed.
 std::vector<Timing> InterleavedMedians(int inRepetitions,
                                        const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides);
-
-/// Thread CPU time of the calling thread (ms, from an arbitrary origin).
-double ThreadCpuMs();
 
 /// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
 double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);

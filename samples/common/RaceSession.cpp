@@ -4,6 +4,7 @@
 #include "BoxMesh.h"
 #include "CarMesh.h"
 #include "ObjWriter.h"
+#include "ThreadCpuTime.h"
 
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/base/Version.h>
@@ -12,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 
 namespace crumple::samples
 {
@@ -165,28 +165,16 @@ void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inC
         std::printf("note: %s\n", painted.GetError().mMessage.c_str());
 }
 
-namespace
-{
-
-double ThreadCpuMs()
-{
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return 1.0e3 * static_cast<double>(now.tv_sec) + 1.0e-6 * static_cast<double>(now.tv_nsec);
-}
-
-} // namespace
-
 void RaceSession::BeginFrame()
 {
-    mFrameStartCpuMs = ThreadCpuMs();
+    mFrameStartCpuMs = common::ThreadCpuMs();
     mFrameStart = std::chrono::steady_clock::now();
 }
 
 void RaceSession::EndFrame()
 {
     mFrameWallMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mFrameStart).count());
-    mFrameCpuMs.push_back(ThreadCpuMs() - mFrameStartCpuMs);
+    mFrameCpuMs.push_back(common::ThreadCpuMs() - mFrameStartCpuMs);
 }
 
 Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked)
