@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace crumple::plugin
 {
@@ -62,6 +63,7 @@ Status DamageWorld::RemoveBody(BodyId inBody)
     slot.mObjects.clear();
     slot.mAlive = false;
     mGrouper.Forget(inBody);
+    std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
     return Status::Ok();
 }
 
@@ -126,6 +128,19 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
     return Status::Ok();
 }
 
+const DamageWorld::ImpactMemory* DamageWorld::FindImpactMemory(BodyId inA, BodyId inB) const
+{
+    for (const ImpactMemory& memory : mImpactMemories)
+        if (memory.mA == inA && memory.mB == inB)
+            return &memory;
+    return nullptr;
+}
+
+DamageWorld::ImpactMemory* DamageWorld::FindImpactMemory(BodyId inA, BodyId inB)
+{
+    return const_cast<ImpactMemory*>(std::as_const(*this).FindImpactMemory(inA, inB));
+}
+
 Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep)
 {
     if (!(std::isfinite(inTimeStep) && inTimeStep >= 0.0))
@@ -162,13 +177,27 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         batch->mContacts.push_back(contact);
     }
 
-    // Impulses per batch from the pre-solve states; keep only closing contacts.
+    // Impulses per batch; keep only closing contacts. A pair that already took an impulse at the previous
+    // step is solved from the velocities that impulse left it with (ImpactMemory), not from the engine's:
+    // a soft engine needs several steps to stop a car, and each of them would otherwise count the closing
+    // speed it has not removed yet once more.
     std::vector<std::vector<CollisionContact>> accepted(batches.size());
+    std::vector<ImpactMemory> memories;
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
         Batch& batch = batches[b];
-        const BodyState& state_a = mBodies[batch.mA.mValue].mState;
-        const BodyState& state_b = mBodies[batch.mB.mValue].mState;
+        BodyState state_a = mBodies[batch.mA.mValue].mState;
+        BodyState state_b = mBodies[batch.mB.mValue].mState;
+        const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);
+        const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 && batch.mTime > previous->mTime &&
+                               batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
+        if (continues)
+        {
+            state_a.mLinearVelocity = previous->mLinearA;
+            state_a.mAngularVelocity = previous->mAngularA;
+            state_b.mLinearVelocity = previous->mLinearB;
+            state_b.mAngularVelocity = previous->mAngularB;
+        }
         std::vector<ImpulseContact> impulse_contacts;
         for (const CollisionContact& c : batch.mContacts)
         {
@@ -178,12 +207,16 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         }
         const std::vector<double> impulses =
             SimultaneousImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
+        ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,
+                            state_b.mLinearVelocity, state_b.mAngularVelocity};
+        bool pushed = false;
         for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
         {
             if (!std::isfinite(impulses[i]))
                 return MakeError(EError::NonFinite, "contact impulse is not finite: check the bodies' masses");
             if (!(impulses[i] > 0.0))
                 continue;
+            pushed = true;
             CollisionContact contact = batch.mContacts[i];
             contact.mImpulse = impulses[i];
             contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
@@ -192,7 +225,29 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
             contact.mLocalNormalOnB = state_b.mTransform.DirectionToBody(contact.mNormal);
             accepted[b].push_back(contact);
+            // The impulse +J n on A and -J n on B changes the velocities it leaves.
+            const Vec3 impulse = impulses[i] * contact.mNormal;
+            const Vec3& point = impulse_contacts[i].mPoint;
+            memory.mLinearA += state_a.InverseMass() * impulse;
+            memory.mAngularA += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
+            memory.mLinearB -= state_b.InverseMass() * impulse;
+            memory.mAngularB -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
         }
+        if (pushed || continues)
+            memories.push_back(memory);
+    }
+    // Everything validated: commit. Memories of pairs that did not touch within the last steps expire.
+    const double latest = batches.empty() ? 0.0 : std::max_element(batches.begin(), batches.end(), [](const Batch& x, const Batch& y) { return x.mTime < y.mTime; })->mTime;
+    if (!batches.empty())
+        std::erase_if(mImpactMemories, [&](const ImpactMemory& m) {
+            return !(latest - m.mTime <= cImpactMemorySteps * inTimeStep);
+        });
+    for (const ImpactMemory& memory : memories)
+    {
+        if (ImpactMemory* existing = FindImpactMemory(memory.mA, memory.mB))
+            *existing = memory;
+        else
+            mImpactMemories.push_back(memory);
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
         mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b]);

@@ -52,7 +52,9 @@ TEST_CASE("FemBarrierCoupling: a brick barrier breaks and lets the car through a
 
 TEST_CASE("FemBarrierCoupling: bad input is refused and changes nothing", "[crash]")
 {
-    plugin::DamageWorld damage = plugin::DamageWorld::Create().Get();
+    plugin::DamageWorldSettings world;
+    world.mCountImpactOnce = false;
+    plugin::DamageWorld damage = plugin::DamageWorld::Create(world).Get();
     plugin::BodyState car;
     car.mMass = 1575.0;
     car.mLinearVelocity = Vec3(8.0, 0.0, 0.0);
@@ -78,6 +80,10 @@ TEST_CASE("FemBarrierCoupling: bad input is refused and changes nothing", "[cras
 
     target.mBarrierMaterial = "cheese";
     CHECK(FemBarrierCoupling::Create(target, Vec3::Zero(), damage).HasError());
+    // A world that counts an impact once would count only the first step of the barrier's push.
+    target.mBarrierMaterial = "wood";
+    plugin::DamageWorld counting_once = plugin::DamageWorld::Create().Get();
+    CHECK(FemBarrierCoupling::Create(target, Vec3::Zero(), counting_once).HasError());
     FloatingBarrierCrashSettings settings;
     settings.mTimeStep = 0.0;
     CHECK(RunFloatingBarrierCrash(settings).HasError());

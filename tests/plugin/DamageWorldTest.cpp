@@ -247,3 +247,54 @@ TEST_CASE("A listener may remove itself during dispatch without disturbing the o
     CHECK(first.mCollisions.size() == 2);
     CHECK(second.mCollisions.size() == 2);
 }
+
+TEST_CASE("An impact is counted once however many steps the engine takes to stop the car", "[plugin]")
+{
+    // A soft engine (ODE's contacts) removes only 60 % of the closing speed per step, so the car still
+    // approaches the wall at the next three steps. The collision's impulse must stay (1 + e) m v, as with a
+    // hard engine that stops the car in one step; counting every step's closing speed would give 1.6 times it.
+    const double speed = 15.0, dt = 1.0 / 120.0;
+    auto run = [&](bool inSoft, bool inCountOnce) {
+        DamageWorldSettings settings;
+        settings.mCountImpactOnce = inCountOnce;
+        WorldFixture fixture(4000, {8, 6, 6}, settings);
+        RecordingListener listener;
+        fixture.mWorld.AddListener(&listener);
+        double v = speed;
+        for (int step = 0; step < 4; ++step)
+        {
+            REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(v)));
+            REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, step * dt), dt));
+            v = inSoft ? 0.4 * v : -fixture.mWorld.GetSettings().mRestitution * v;
+        }
+        fixture.mWorld.Flush();
+        REQUIRE(listener.mCollisions.size() == 1);
+        return listener.mCollisions[0].TotalImpulse();
+    };
+    const double e = DamageWorldSettings{}.mRestitution;
+    const double mass = WorldFixture().mMass;
+    CHECK(run(true, true) == Approx((1.0 + e) * mass * speed).epsilon(1.0e-9));
+    CHECK(run(false, true) == Approx((1.0 + e) * mass * speed).epsilon(1.0e-9));
+    // Off, every step counts again (the behaviour a gradual coupling such as the FEM barrier relies on).
+    CHECK(run(true, false) == Approx((1.0 + e) * mass * speed * (1.0 + 0.4 + 0.16 + 0.064)).epsilon(1.0e-9));
+}
+
+TEST_CASE("A pair that parts and hits again is solved from the engine's velocities", "[plugin]")
+{
+    // Two hits three steps apart (no contact between): the second is a new impact at its own speed.
+    const double dt = 1.0 / 120.0;
+    WorldFixture fixture;
+    RecordingListener listener;
+    fixture.mWorld.AddListener(&listener);
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0), dt));
+    REQUIRE(fixture.mWorld.SubmitContacts({}, dt));
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(8.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 3.0 * dt), dt));
+    fixture.mWorld.Flush();
+    const double e = fixture.mWorld.GetSettings().mRestitution;
+    double total = 0.0;
+    for (const Collision& collision : listener.mCollisions)
+        total += collision.TotalImpulse();
+    CHECK(total == Approx((1.0 + e) * fixture.mMass * 18.0).epsilon(1.0e-9));
+}

@@ -74,6 +74,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     if (inScenario.mTarget.mType == ETarget::FemBarrier)
     {
         settings.mDriveOnly = true; // the engine never sees the barrier: FemBarrierCoupling meets the car
+        settings.mWorld.mCountImpactOnce = false; // it reports each step's share of its push as an impulse
         settings.mWallAngleDegrees = 0.0;
     }
     if (inScenario.mTarget.mType == ETarget::Vehicle)

@@ -36,6 +36,12 @@ constexpr double cOnFace = 1.0e-6;
 Result<FemBarrierCoupling> FemBarrierCoupling::Create(const TargetSpec& inTarget, const Vec3& inWorldCentre,
                                                       plugin::DamageWorld& ioDamage)
 {
+    // The coupling hands Crumple each step's share of the barrier's push as a full impulse (its effective
+    // mass makes Baraff's impulse equal what it delivered): solved from the remembered post-impulse state
+    // instead, every step after the first would count nothing.
+    if (ioDamage.GetSettings().mCountImpactOnce)
+        return MakeError(EError::InvalidArgument,
+                         "fem barrier: the damage world must have DamageWorldSettings.mCountImpactOnce = false");
     const auto* found = std::find(cBarrierMaterialNames.begin(), cBarrierMaterialNames.end(), inTarget.mBarrierMaterial);
     const auto material = found - cBarrierMaterialNames.begin();
     if (found == cBarrierMaterialNames.end())

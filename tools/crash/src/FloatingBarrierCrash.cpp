@@ -30,7 +30,9 @@ Result<FloatingBarrierCrashResult> RunFloatingBarrierCrash(const FloatingBarrier
     car.mLinearVelocity = Vec3(inSettings.mSpeed, 0.0, 0.0);
     const CarCrushPressure crush{car.mMass * b0 * b1 / size.y() / size.z(), car.mMass * b1 * b1 / size.y() / size.z()};
 
-    plugin::DamageWorld damage = plugin::DamageWorld::Create().Get();
+    plugin::DamageWorldSettings world;
+    world.mCountImpactOnce = false; // the coupling reports each step's share of its push (FemBarrierCoupling::Create)
+    plugin::DamageWorld damage = plugin::DamageWorld::Create(world).Get();
     Result<plugin::BodyId> car_body = damage.CreateBody(car);
     if (car_body.HasError())
         return car_body.GetError();

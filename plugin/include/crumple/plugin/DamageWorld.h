@@ -67,6 +67,8 @@ public:
     /// @param[in] inTimeStep the engine step that produced them (s), or 0. With a step, a contact reported
     ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as the
     ///            engine's speculative contacts do; without one, gap contacts resolve their whole approach.
+    ///            With a step, a pair that took an impulse at the previous step is solved from the velocities
+    ///            that impulse left (an impact is counted once, however many steps the engine takes to stop it).
     Status SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep = 0.0);
 
     /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners.
@@ -108,6 +110,21 @@ private:
         std::vector<DeformableObject> mObject; ///< Empty once removed (DeformableObject has no default state)
     };
 
+    /// What the last impulse of a touching pair left its bodies moving at (world, m/s and rad/s): the
+    /// next step's contacts of the pair are solved from these velocities rather than the engine's, so a
+    /// collision's impulse depends on the bodies' state before it and not on how many steps the engine takes
+    /// to resolve it (a soft ODE contact takes several, Bullet's one). External forces over one step (gravity,
+    /// a car's drive) are neglected. Expires when the pair has no contact for cImpactMemorySteps steps.
+    struct ImpactMemory
+    {
+        BodyId mA, mB;
+        double mTime = 0.0;
+        Vec3 mLinearA, mAngularA, mLinearB, mAngularB;
+    };
+    static constexpr double cImpactMemorySteps = 1.5; ///< In steps: only the immediately following step continues
+    const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
+    ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB);
+
     bool IsLive(BodyId inBody) const { return inBody.mValue < mBodies.size() && mBodies[inBody.mValue].mAlive; }
     Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
@@ -117,6 +134,7 @@ private:
     std::vector<BodySlot> mBodies;
     std::vector<ObjectSlot> mObjects;
     std::vector<DamageListener*> mListeners;
+    std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
 };
 
 } // namespace crumple::plugin

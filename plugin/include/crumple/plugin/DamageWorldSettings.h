@@ -17,6 +17,12 @@ struct DamageWorldSettings
     double mRestingSpeed = 0.5;         ///< Contacts closing slower than this (m/s) are resting and make no
                                         ///< impulse and no dent (like Box2D's hit-event threshold); it must
                                         ///< exceed gravity x step (0.16 m/s at 60 Hz) so a parked car is never dented
+    /// A body pair that took an impulse at the previous engine step solves the next step's contacts from the
+    /// velocities that impulse left it with instead of the engine's (see DamageWorld::SubmitContacts). An
+    /// impact is then counted once however many steps the engine takes to stop it (ODE's soft contacts take
+    /// several, Bullet's one), and its impulse no longer depends on the engine. Turn it off only for a
+    /// coupling that resolves contacts gradually itself and reports each step's share as a full impulse.
+    bool mCountImpactOnce = true;
     /// The host's job system for the per-vertex work of dents (not owned; it must outlive the world);
     /// null: every dent runs on the thread that calls Update/Flush. Results are bitwise identical either way.
     const JobSystem* mJobs = nullptr;
