@@ -34,6 +34,20 @@ EngineCrashResult SummarizeCrash(const DamageWorld& inWorld, ObjectId inCar, int
     return result;
 }
 
+Vec3 ImpulseOnBody(std::span<const Collision> inLog, BodyId inBody)
+{
+    Vec3 impulse = Vec3::Zero();
+    for (const Collision& collision : inLog)
+        for (const CollisionContact& contact : collision.mContacts)
+        {
+            if (collision.mBodyA == inBody)
+                impulse += contact.mImpulse * contact.mNormal;
+            else if (collision.mBodyB == inBody)
+                impulse -= contact.mImpulse * contact.mNormal;
+        }
+    return impulse;
+}
+
 void CrashCounter::OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents)
 {
     ++mCollisions;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace crumple::common
@@ -44,6 +45,9 @@ struct EngineCrashSettings
     bool mFloating = false;            ///< No gravity, no ground: the car flies and touches nothing
     int mSceneryBoxes = 0;             ///< Loose 1 m crates resting beside the road, unknown to Crumple: a realistic
                                        ///< engine load for overhead measurements
+    /// Friction coefficient of every body (Bullet multiplies a pair's, ODE takes it as the pair's); 0 leaves
+    /// the wall's normal impulses the only horizontal force on the car, to compare with Crumple's impulses
+    double mFriction = 0.5;
     bool mAttach = true;               ///< Attach Crumple; false gives the bare engine scene, for overhead ratios
     /// The car's render mesh in its body frame (x forward, z up, centred on the box); empty: a box mesh of
     /// mHalfExtents with about mTriangles triangles. The collision shape is always the box.
@@ -79,6 +83,8 @@ struct EngineCrashResult
     Vec3 mDentCentroid = Vec3::Zero();   ///< Displacement-weighted mean rest position of dented vertices (m)
     int mCollisions = 0;                 ///< Collisions dispatched that involve the car
     double mTotalImpulse = 0.0;          ///< Sum of their impulses (N s)
+    Vec3 mCarImpulse = Vec3::Zero();     ///< Crumple's impulses on the car, summed as vectors (world, N s)
+    Vec3 mCarMomentumChange = Vec3::Zero(); ///< The engine's: mass x (end - start velocity) (world, N s)
     std::vector<Vec3> mPositions;        ///< Final deformed positions
     std::vector<std::byte> mDamage;      ///< SaveDamage() at the end
 };
@@ -86,6 +92,10 @@ struct EngineCrashResult
 /// Settles the result of a finished run from its damage world.
 EngineCrashResult SummarizeCrash(const plugin::DamageWorld& inWorld, plugin::ObjectId inCar, int inCollisions,
                                  double inTotalImpulse);
+
+/// Crumple's impulses on inBody over the logged collisions, as one vector (world, N s): +J n on body A of
+/// each contact, -J n on body B.
+Vec3 ImpulseOnBody(std::span<const plugin::Collision> inLog, plugin::BodyId inBody);
 
 /// Counts the car's collisions and impulses as they are dispatched.
 class CrashCounter : public plugin::DamageListener

@@ -18,6 +18,8 @@ namespace crumple::common
 class OdeWallCrash
 {
 public:
+    /// Fastest ODE may push a penetrating body out of another (m/s); a resting car needs far less
+    static constexpr double cMaxCorrectingSpeed = 0.5;
     explicit OdeWallCrash(const EngineCrashSettings& inSettings);
     ~OdeWallCrash();
     OdeWallCrash(const OdeWallCrash&) = delete;
