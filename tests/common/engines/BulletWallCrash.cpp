@@ -31,12 +31,16 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     // crash makes each pair rebound as Crumple's impulses assume (DamageWorldSettings::mRestitution), so the
     // engine's change of the car's momentum is the impulse Crumple dents with.
     const auto restitution = btScalar(std::sqrt(inSettings.mWorld.mRestitution));
+    // Friction combines the same way: sqrt(mFriction) per body gives every pair the coefficient ODE's
+    // contacts take directly.
+    const auto friction = btScalar(std::sqrt(inSettings.mFriction));
     // Ground z = 0 and, unless only driving, a wall whose face is the plane x = 0.
-    auto add_static = [&](std::unique_ptr<btCollisionShape> inShape, const btVector3& inOrigin) {
+    auto add_static = [&](std::unique_ptr<btCollisionShape> inShape, const btVector3& inOrigin,
+                          btScalar inFriction) {
         auto object = std::make_unique<btCollisionObject>();
         object->setCollisionShape(inShape.get());
         object->setWorldTransform(btTransform(btQuaternion::getIdentity(), inOrigin));
-        object->setFriction(btScalar(inSettings.mFriction));
+        object->setFriction(inFriction);
         object->setRestitution(restitution);
         mWorld->addCollisionObject(object.get());
         if (mAdapter != nullptr)
@@ -45,7 +49,8 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         mObjects.push_back(std::move(object));
     };
     if (!inSettings.mFloating)
-        add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0));
+        add_static(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), btScalar(0)), btVector3(0, 0, 0),
+                   friction > 0 ? btScalar(inSettings.mGroundFriction) / friction : btScalar(0));
     if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.
@@ -60,7 +65,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         target_info.m_startWorldTransform = btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(target_yaw)),
                                                         btVector3(btScalar(place.mTranslation.x()), btScalar(place.mTranslation.y()),
                                                                   btScalar(place.mTranslation.z())));
-        target_info.m_friction = btScalar(inSettings.mFriction);
+        target_info.m_friction = friction;
         target_info.m_restitution = restitution;
         auto target_body = std::make_unique<btRigidBody>(target_info);
         target_body->setLinearVelocity(btVector3(btScalar(target.mSpeed * std::cos(target_yaw)),
@@ -72,21 +77,38 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         mObjects.push_back(std::move(target_body));
     }
     else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mPoleRadius > 0.0)
-        add_static(std::make_unique<btCylinderShapeZ>(btVector3(btScalar(inSettings.mPoleRadius),
-                                                                btScalar(inSettings.mPoleRadius), 3)),
-                   btVector3(0, 0, 3));
+    {
+        // A 24-sided prism with polyhedral features rather than btCylinderShapeZ: Bullet meets a box and a
+        // cylinder at one point per step (GJK/EPA), alternately on the box's top and bottom edge, which pitches
+        // the car and crushes its roof edge; polyhedral contact clipping reports the line contact (ODE's
+        // box-cylinder collider reports it too).
+        auto pole = std::make_unique<btConvexHullShape>();
+        constexpr int cSides = 24;
+        for (int i = 0; i < cSides; ++i)
+        {
+            const double angle = 2.0 * std::numbers::pi * i / cSides;
+            const btScalar x = btScalar(inSettings.mPoleRadius * std::cos(angle));
+            const btScalar y = btScalar(inSettings.mPoleRadius * std::sin(angle));
+            pole->addPoint(btVector3(x, y, -3), false);
+            pole->addPoint(btVector3(x, y, 3), i + 1 == cSides);
+        }
+        pole->setMargin(0);
+        pole->initializePolyhedralFeatures();
+        mWorld->getDispatchInfo().m_enableSatConvex = true; // separating axis, then clip the two hulls' faces
+        add_static(std::move(pole), btVector3(0, 0, 3), friction);
+    }
     else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mOverlapFraction < 1.0)
     {
         // A 2 m thick, 10 m wide wall from y = edge to edge + 10.
         const double edge = CrashWallLeftEdge(inSettings);
-        add_static(std::make_unique<btBoxShape>(btVector3(1, 5, 3)), btVector3(1, btScalar(edge + 5.0), 3));
+        add_static(std::make_unique<btBoxShape>(btVector3(1, 5, 3)), btVector3(1, btScalar(edge + 5.0), 3), friction);
     }
     else if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
         // A 2 m thick wall whose face is the plane through the origin turned by mWallAngleDegrees.
         const double angle = inSettings.mWallAngleDegrees * std::numbers::pi / 180.0;
         add_static(std::make_unique<btBoxShape>(btVector3(1, 10, 3)),
-                   btVector3(btScalar(std::cos(angle)), btScalar(std::sin(angle)), 3));
+                   btVector3(btScalar(std::cos(angle)), btScalar(std::sin(angle)), 3), friction);
         mObjects.back()->setWorldTransform(btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(angle)),
                                                        mObjects.back()->getWorldTransform().getOrigin()));
     }
@@ -111,6 +133,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     const Vec3& h = inSettings.mHalfExtents;
     const double yaw = inSettings.mYawDegrees * std::numbers::pi / 180.0;
     auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(h.x()), btScalar(h.y()), btScalar(h.z())));
+    shape->initializePolyhedralFeatures(); // multi-point manifolds against convex hulls (the pole)
     btVector3 inertia;
     shape->calculateLocalInertia(btScalar(inSettings.mMass), inertia);
     if (inSettings.mInertia)
@@ -121,7 +144,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
                             btVector3(btScalar(origin.x()), btScalar(origin.y()), btScalar(origin.z())));
     btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), nullptr, shape.get(), inertia);
     info.m_startWorldTransform = start;
-    info.m_friction = btScalar(inSettings.mFriction);
+    info.m_friction = friction;
     info.m_restitution = restitution;
     auto car = std::make_unique<btRigidBody>(info);
     car->setLinearVelocity(btVector3(btScalar(inSettings.mSpeed), 0, 0));

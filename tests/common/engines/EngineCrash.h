@@ -45,9 +45,13 @@ struct EngineCrashSettings
     bool mFloating = false;            ///< No gravity, no ground: the car flies and touches nothing
     int mSceneryBoxes = 0;             ///< Loose 1 m crates resting beside the road, unknown to Crumple: a realistic
                                        ///< engine load for overhead measurements
-    /// Friction coefficient of every body (Bullet multiplies a pair's, ODE takes it as the pair's); 0 leaves
+    /// Friction coefficient of every contact but the ground's (both engines' scenes give each pair this coefficient); 0 leaves
     /// the wall's normal impulses the only horizontal force on the car, to compare with Crumple's impulses
     double mFriction = 0.5;
+    /// Friction coefficient between the car and the ground: a tyre's rolling resistance (0.01-0.015). The car
+    /// is a sliding box, and a sliding box's friction (0.5) would slow it by 5 m/s^2 before the wall and pitch
+    /// its front edge into the ground
+    double mGroundFriction = 0.015;
     bool mAttach = true;               ///< Attach Crumple; false gives the bare engine scene, for overhead ratios
     /// The car's render mesh in its body frame (x forward, z up, centred on the box); empty: a box mesh of
     /// mHalfExtents with about mTriangles triangles. The collision shape is always the box.

@@ -143,8 +143,11 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
         dContact& contact = contacts[static_cast<std::size_t>(i)];
         // A stiff contact: a soft CFM of 1e-5 m/N lets a 1,200 kg car at 40 km/h sink through three steps
         // (the contact force times CFM is the slack) and leaves the bounce unreached.
-        contact.surface.mode = dContactSoftCFM | dContactSoftERP | dContactBounce;
-        contact.surface.mu = scene->mSettings.mFriction;
+        // dContactApprox1: mu is a friction coefficient, as in Bullet; without it ODE reads mu as a force limit
+        // in newtons (0.5 N: a frictionless ground, where the Bullet scene's car slows before the wall).
+        contact.surface.mode = dContactSoftCFM | dContactSoftERP | dContactBounce | dContactApprox1;
+        const bool ground = dGeomGetClass(inGeom1) == dPlaneClass || dGeomGetClass(inGeom2) == dPlaneClass;
+        contact.surface.mu = ground ? scene->mSettings.mGroundFriction : scene->mSettings.mFriction;
         contact.surface.bounce = scene->mSettings.mWorld.mRestitution;
         contact.surface.bounce_vel = scene->mSettings.mWorld.mRestingSpeed;
         contact.surface.soft_cfm = 1.0e-9;
