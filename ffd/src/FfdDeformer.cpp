@@ -247,71 +247,7 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         for (std::size_t i = 0; i < locations.size(); ++i)
             before[i] = zone.Displacement(locations[i]);
 
-        // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
-        std::vector<int> changed;
-        for (std::size_t k = 0; k < data.mControls.size(); ++k)
-            if (!control_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
-                changed.push_back(data.mControls[k]);
-        std::vector<std::uint32_t> reached = ReachedVertices(static_cast<int>(z), changed);
-        double scale = DentScale(static_cast<int>(z), data.mControls, control_delta, reached, inMaxStep);
-        std::span<const int> dent_controls = data.mControls;
-        const Eigen::MatrixX3d* dent_delta = &control_delta;
-        double solve_scale = scale; // the factor on the solved dent, for the report
-
-        // Fold guard on the dent as it would be committed (scaled): a control pushed into its neighbour along
-        // a lattice line pushes it along. Guarding the unscaled solve instead would cascade its whole,
-        // possibly much deeper, overshoot down the line before the scale shrinks it (the offset-wall example
-        // then moved the car's rear by 8 cm). When nothing is pushed (the common case) the solve's controls,
-        // rows and scale are committed as they are, bit for bit.
-        std::vector<Vec3>& controls = zone.GetControlDisplacements();
-        std::vector<int> pushed;
-        std::vector<int> guarded_controls;
-        Eigen::MatrixX3d guarded_delta;
-        if (mSettings.mMinControlSpacing > 0.0 && scale > 0.0 && !changed.empty())
-        {
-            std::vector<Vec3> after = controls;
-            for (std::size_t k = 0; k < data.mControls.size(); ++k)
-                after[static_cast<std::size_t>(data.mControls[k])] +=
-                    scale * control_delta.row(static_cast<Eigen::Index>(k)).transpose();
-            pushed = FoldGuard(zone, controls, after, changed, mSettings.mMinControlSpacing);
-            if (!pushed.empty())
-            {
-                // intent: the changed set is the union of solved and pushed controls (both ascending)
-                std::set_union(data.mControls.begin(), data.mControls.end(), pushed.begin(), pushed.end(),
-                               std::back_inserter(guarded_controls));
-                guarded_delta.resize(static_cast<Eigen::Index>(guarded_controls.size()), 3);
-                changed.clear();
-                for (std::size_t k = 0; k < guarded_controls.size(); ++k)
-                {
-                    const auto control = static_cast<std::size_t>(guarded_controls[k]);
-                    guarded_delta.row(static_cast<Eigen::Index>(k)) = (after[control] - controls[control]).transpose();
-                    if (!guarded_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
-                        changed.push_back(guarded_controls[k]);
-                }
-                // intent: the pushes move more vertices, so the bounds are checked again on the guarded dent.
-                // The guard's bound is a set of linear inequalities on the controls, hence convex; the
-                // controls before (factor 0) and after the guard (factor 1) both satisfy it, so every factor
-                // in [0, 1] that DentScale picks keeps it.
-                reached = ReachedVertices(static_cast<int>(z), changed);
-                const double guarded_scale =
-                    DentScale(static_cast<int>(z), guarded_controls, guarded_delta, reached, inMaxStep);
-                // The first factor is already in guarded_delta: commit with the second, report their product.
-                solve_scale = scale * guarded_scale;
-                scale = guarded_scale;
-                dent_controls = guarded_controls;
-                dent_delta = &guarded_delta;
-            }
-        }
-        report.mScale = std::min(report.mScale, solve_scale);
-
-        // Commit the controls, then recompute the reached vertices from them.
-        for (std::size_t k = 0; k < dent_controls.size(); ++k)
-            controls[static_cast<std::size_t>(dent_controls[k])] +=
-                scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
-        report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
-        report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
-        if (scale > 0.0)
-            UpdateVertices(static_cast<int>(z), reached, report);
+        CommitZoneDelta(static_cast<int>(z), data.mControls, control_delta, inMaxStep, report);
 
         for (std::size_t i = 0; i < locations.size(); ++i)
         {
@@ -320,6 +256,103 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
             report.mMaxPointError = std::max(report.mMaxPointError, (achieved - target).norm());
         }
     }
+    return report;
+}
+
+void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                                  double inMaxStep, DentReport& ioReport)
+{
+    DentReport& report = ioReport;
+    // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
+    std::vector<int> changed;
+    for (std::size_t k = 0; k < inControls.size(); ++k)
+        if (!inDelta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
+            changed.push_back(inControls[k]);
+    std::vector<std::uint32_t> reached = ReachedVertices(inZone, changed);
+    double scale = DentScale(inZone, inControls, inDelta, reached, inMaxStep);
+    std::span<const int> dent_controls = inControls;
+    const Eigen::MatrixX3d* dent_delta = &inDelta;
+    double solve_scale = scale; // the factor on the solved dent, for the report
+
+    // Fold guard on the dent as it would be committed (scaled): a control pushed into its neighbour along
+    // a lattice line pushes it along. Guarding the unscaled solve instead would cascade its whole,
+    // possibly much deeper, overshoot down the line before the scale shrinks it (the offset-wall example
+    // then moved the car's rear by 8 cm). When nothing is pushed (the common case) the solve's controls,
+    // rows and scale are committed as they are, bit for bit.
+    std::vector<Vec3>& controls = mZones[static_cast<std::size_t>(inZone)].GetControlDisplacements();
+    std::vector<int> pushed;
+    std::vector<int> guarded_controls;
+    Eigen::MatrixX3d guarded_delta;
+    if (mSettings.mMinControlSpacing > 0.0 && scale > 0.0 && !changed.empty())
+    {
+        std::vector<Vec3> after = controls;
+        for (std::size_t k = 0; k < inControls.size(); ++k)
+            after[static_cast<std::size_t>(inControls[k])] +=
+                scale * inDelta.row(static_cast<Eigen::Index>(k)).transpose();
+        pushed = FoldGuard(mZones[static_cast<std::size_t>(inZone)], controls, after, changed, mSettings.mMinControlSpacing);
+        if (!pushed.empty())
+        {
+            // intent: the changed set is the union of solved and pushed controls (both ascending)
+            std::set_union(inControls.begin(), inControls.end(), pushed.begin(), pushed.end(),
+                           std::back_inserter(guarded_controls));
+            guarded_delta.resize(static_cast<Eigen::Index>(guarded_controls.size()), 3);
+            changed.clear();
+            for (std::size_t k = 0; k < guarded_controls.size(); ++k)
+            {
+                const auto control = static_cast<std::size_t>(guarded_controls[k]);
+                guarded_delta.row(static_cast<Eigen::Index>(k)) = (after[control] - controls[control]).transpose();
+                if (!guarded_delta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
+                    changed.push_back(guarded_controls[k]);
+            }
+            // intent: the pushes move more vertices, so the bounds are checked again on the guarded dent.
+            // The guard's bound is a set of linear inequalities on the controls, hence convex; the
+            // controls before (factor 0) and after the guard (factor 1) both satisfy it, so every factor
+            // in [0, 1] that DentScale picks keeps it.
+            reached = ReachedVertices(inZone, changed);
+            const double guarded_scale =
+                DentScale(inZone, guarded_controls, guarded_delta, reached, inMaxStep);
+            // The first factor is already in guarded_delta: commit with the second, report their product.
+            solve_scale = scale * guarded_scale;
+            scale = guarded_scale;
+            dent_controls = guarded_controls;
+            dent_delta = &guarded_delta;
+        }
+    }
+    report.mScale = std::min(report.mScale, solve_scale);
+
+    // Commit the controls, then recompute the reached vertices from them.
+    for (std::size_t k = 0; k < dent_controls.size(); ++k)
+        controls[static_cast<std::size_t>(dent_controls[k])] +=
+            scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
+    report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
+    report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
+    if (scale > 0.0)
+        UpdateVertices(inZone, reached, report);
+}
+
+Result<DentReport> FfdDeformer::ApplyControlDelta(int inZone, std::span<const int> inControls,
+                                                  const Eigen::MatrixX3d& inDelta, double inMaxStep)
+{
+    // Refuse the whole change before touching anything.
+    if (inZone < 0 || static_cast<std::size_t>(inZone) >= mZones.size())
+        return MakeError(EError::OutOfRange, "ApplyControlDelta: zone " + std::to_string(inZone) + " does not exist");
+    if (inDelta.rows() != static_cast<Eigen::Index>(inControls.size()) || inDelta.cols() != 3)
+        return MakeError(EError::InvalidArgument, "ApplyControlDelta: one row of 3 displacements per control");
+    const int count = mZones[static_cast<std::size_t>(inZone)].GetControlCount();
+    for (std::size_t k = 0; k < inControls.size(); ++k)
+    {
+        if (inControls[k] < 0 || inControls[k] >= count || (k > 0 && inControls[k] <= inControls[k - 1]))
+            return MakeError(EError::InvalidArgument,
+                             "ApplyControlDelta: control indices must be ascending, unique and within the zone");
+    }
+    if (!inDelta.allFinite())
+        return MakeError(EError::NonFinite, "ApplyControlDelta: a displacement is not finite");
+    if (!(inMaxStep >= 0.0))
+        return MakeError(EError::InvalidArgument, "ApplyControlDelta: the maximum step must be >= 0 m");
+    DentReport report;
+    if (inControls.empty() || inDelta.isZero(0.0))
+        return report;
+    CommitZoneDelta(inZone, inControls, inDelta, inMaxStep, report);
     return report;
 }
 

@@ -45,6 +45,14 @@ public:
     Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
                                  double inMaxStep = std::numeric_limits<double>::infinity());
 
+    /// Adds inDelta (one row per control, body frame, m) to the displacements of inControls (indices of
+    /// inZone, ascending and unique), for a caller that builds the control field itself (a crush field,
+    /// plugin::CampbellCrush) instead of asking for point displacements. The same bounds as ApplyDent
+    /// follow: the change is scaled down as a whole to respect inMaxStep and the zone's maximum total
+    /// deformation, and the fold guard runs. Bad input refuses the whole change and changes nothing.
+    Result<DentReport> ApplyControlDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                                         double inMaxStep = std::numeric_limits<double>::infinity());
+
     /// Restores the undeformed mesh (all control displacements zero). Marks changed vertices dirty.
     void Reset();
 
@@ -99,6 +107,10 @@ private:
     // (control changes over inControls) respects inMaxStep and the zone's maximum total deformation.
     double DentScale(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
                      std::span<const std::uint32_t> inVertices, double inMaxStep);
+    // Scales (DentScale), fold-guards (FoldGuard) and commits a change of the zone's controls, then updates
+    // the vertices it reaches; the report gathers scale, counts and vertex work.
+    void CommitZoneDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                         double inMaxStep, DentReport& ioReport);
     // Recompute positions of inVertices from the zone's controls, then the normals around them.
     void UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport);
     // Recompute every face and vertex normal from the current positions, marking changed normals dirty.
