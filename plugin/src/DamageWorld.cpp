@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/base/Assert.h>
 #include <crumple/plugin/BaraffImpulse.h>
+#include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/SurfaceContactPoints.h>
 
@@ -220,6 +221,7 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             CollisionContact contact = batch.mContacts[i];
             contact.mImpulse = impulses[i];
             contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
+            contact.mAbsorbedEnergy = 0.5 * impulses[i] * std::max(contact.mApproachSpeed, 0.0) * (1.0 - mSettings.mRestitution);
             contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
             contact.mLocalPointOnB = state_b.mTransform.ToBody(contact.mPointOnB);
             contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
@@ -269,6 +271,18 @@ UpdateReport DamageWorld::Flush()
     return Dispatch(mGrouper.TakeAll());
 }
 
+CrushSide DamageWorld::CrushSideOf(BodyId inBody) const
+{
+    // The body's first object with Campbell's crush model stands for its structure.
+    for (ObjectId id : mBodies[inBody.mValue].mObjects)
+    {
+        const DeformableObject& object = mObjects[id.mValue].mObject.front();
+        if (object.GetMaterial().mModel == ECrushModel::Campbell)
+            return {&object.GetMaterial(), object.GetUpAxis()};
+    }
+    return {};
+}
+
 UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
 {
     UpdateReport report;
@@ -279,9 +293,10 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
     auto still_listening = [&](DamageListener* inListener) {
         return std::find(mListeners.begin(), mListeners.end(), inListener) != mListeners.end();
     };
-    for (const Collision& collision : inCollisions)
+    for (Collision& collision : inCollisions)
     {
         ++report.mCollisionsDispatched;
+        ShareCrushEnergy(collision, CrushSideOf(collision.mBodyA), CrushSideOf(collision.mBodyB));
         dents.clear();
         for (DamageListener* listener : listeners)
             if (still_listening(listener))

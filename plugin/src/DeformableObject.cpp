@@ -3,6 +3,7 @@
 #include <crumple/base/Assert.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/InterpolateWideImpact.h>
+#include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DeformableObject.h>
 
 #include <algorithm>
@@ -62,6 +63,20 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
                          "DamageMaterial.mMaxInstantDeformation must be finite and >= mMinDeformation (m)");
     if (!(std::isfinite(material.mImpulseThreshold) && material.mImpulseThreshold >= 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mImpulseThreshold must be finite and >= 0 N s");
+    if (material.mModel != ECrushModel::ImpulseFactor && material.mModel != ECrushModel::Campbell)
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mModel must be ImpulseFactor or Campbell");
+    if (!(std::isfinite(material.mCrushA) && material.mCrushA >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushA must be finite and >= 0 N/m");
+    if (!(std::isfinite(material.mCrushB) && material.mCrushB > 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushB must be finite and > 0 N/m^2");
+    if (!(std::isfinite(material.mCrushG) && material.mCrushG >= 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushG must be finite and >= 0 J/m");
+    if (!(std::isfinite(material.mMinCrushWidth) && material.mMinCrushWidth > 0.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
+    if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushedLengthFraction must be in [0, 1)");
+    if (!(IsFinite(inSettings.mUpAxis) && std::abs(inSettings.mUpAxis.norm() - 1.0) <= 1.0e-3))
+        return MakeError(EError::InvalidArgument, "DeformableObjectSettings.mUpAxis must be a unit vector");
 
     if (!(std::isfinite(inSettings.mFittedControlSpacing) && inSettings.mFittedControlSpacing > 0.0))
         return MakeError(EError::InvalidArgument, "DeformableObjectSettings.mFittedControlSpacing must be finite and > 0 m");
@@ -78,7 +93,8 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     Result<ffd::FfdDeformer> deformer = ffd::FfdDeformer::Create(inSettings.mMesh, deformer_settings);
     if (!deformer)
         return deformer.GetError();
-    return DeformableObject(material, inSettings.mInterpolateWideImpacts, std::move(deformer).Get());
+    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis.normalized(),
+                            std::move(deformer).Get());
 }
 
 std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide,
@@ -122,6 +138,16 @@ std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& i
 
 ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, ECollisionSide inSide)
 {
+    if (mMaterial.mModel == ECrushModel::Campbell)
+    {
+        const double energy = inSide == ECollisionSide::A ? inCollision.mCrushEnergyA : inCollision.mCrushEnergyB;
+        const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer);
+        if (!plan)
+            return {};
+        ffd::DentReport report = ApplyCrushPlan(*plan, mMaterial.mMaxInstantDeformation, mDeformer);
+        report.mContactsClamped = plan->mClamped ? 1 : 0;
+        return report;
+    }
     int clamped = 0;
     const std::vector<ffd::PointDisplacement> dent = DentFor(inCollision, inSide, &clamped);
     if (dent.empty())

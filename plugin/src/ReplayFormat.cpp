@@ -51,6 +51,14 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     settings.mMaterial.mMinDeformation = reader.ReadDouble();
     settings.mMaterial.mMaxInstantDeformation = reader.ReadDouble();
     settings.mMaterial.mImpulseThreshold = reader.ReadDouble();
+    // An out-of-range model is left as read, for DeformableObject::Create to refuse with its message.
+    settings.mMaterial.mModel = static_cast<ECrushModel>(reader.ReadU8());
+    settings.mMaterial.mCrushA = reader.ReadDouble();
+    settings.mMaterial.mCrushB = reader.ReadDouble();
+    settings.mMaterial.mCrushG = reader.ReadDouble();
+    settings.mMaterial.mMinCrushWidth = reader.ReadDouble();
+    settings.mMaterial.mCrushedLengthFraction = reader.ReadDouble();
+    settings.mUpAxis = reader.ReadVec3();
     settings.mInterpolateWideImpacts = reader.ReadU8() != 0;
     ffd::FfdDeformerSettings& deformer = settings.mDeformer;
     deformer.mRankTolerance = reader.ReadDouble();
@@ -126,8 +134,13 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     collision.mStartTime = reader.ReadDouble();
     collision.mEndTime = reader.ReadDouble();
     collision.mSequence = reader.ReadU64();
+    collision.mCrushEnergyA = reader.ReadDouble();
+    collision.mCrushEnergyB = reader.ReadDouble();
+    if (!std::isfinite(collision.mCrushEnergyA) || !std::isfinite(collision.mCrushEnergyB) ||
+        collision.mCrushEnergyA < 0.0 || collision.mCrushEnergyB < 0.0)
+        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite or negative");
     std::uint32_t contacts = 0;
-    if (!ReadCount(reader, 25 * 8, contacts))
+    if (!ReadCount(reader, 26 * 8, contacts))
         return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
     collision.mContacts.resize(contacts);
     for (CollisionContact& c : collision.mContacts)
@@ -142,6 +155,7 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mPenetrationDepth = reader.ReadDouble();
         c.mImpulse = reader.ReadDouble();
         c.mApproachSpeed = reader.ReadDouble();
+        c.mAbsorbedEnergy = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
             !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e12 ||
@@ -184,6 +198,13 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mMaterial.mMinDeformation);
     writer.WriteDouble(settings.mMaterial.mMaxInstantDeformation);
     writer.WriteDouble(settings.mMaterial.mImpulseThreshold);
+    writer.WriteU8(static_cast<std::uint8_t>(settings.mMaterial.mModel));
+    writer.WriteDouble(settings.mMaterial.mCrushA);
+    writer.WriteDouble(settings.mMaterial.mCrushB);
+    writer.WriteDouble(settings.mMaterial.mCrushG);
+    writer.WriteDouble(settings.mMaterial.mMinCrushWidth);
+    writer.WriteDouble(settings.mMaterial.mCrushedLengthFraction);
+    writer.WriteVec3(settings.mUpAxis);
     writer.WriteU8(settings.mInterpolateWideImpacts ? 1 : 0);
     writer.WriteDouble(settings.mDeformer.mRankTolerance);
     writer.WriteDouble(settings.mDeformer.mMergeDistance);
@@ -227,6 +248,8 @@ std::vector<std::byte> EncodeCollision(const Collision& inCollision)
     writer.WriteDouble(inCollision.mStartTime);
     writer.WriteDouble(inCollision.mEndTime);
     writer.WriteU64(inCollision.mSequence);
+    writer.WriteDouble(inCollision.mCrushEnergyA);
+    writer.WriteDouble(inCollision.mCrushEnergyB);
     writer.WriteU32(static_cast<std::uint32_t>(inCollision.mContacts.size()));
     for (const CollisionContact& c : inCollision.mContacts)
     {
@@ -240,6 +263,7 @@ std::vector<std::byte> EncodeCollision(const Collision& inCollision)
         writer.WriteDouble(c.mPenetrationDepth);
         writer.WriteDouble(c.mImpulse);
         writer.WriteDouble(c.mApproachSpeed);
+        writer.WriteDouble(c.mAbsorbedEnergy);
         writer.WriteDouble(c.mTime);
     }
     return writer.TakeBytes();

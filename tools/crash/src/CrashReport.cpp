@@ -112,6 +112,10 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                               {"contacts", collision.mContacts}});
     report["collisions"] = collisions;
     report["folded_vertices"] = inOutcome.mFoldedVertices;
+    report["folded_triangles"] = inOutcome.mFoldedTriangles;
+    report["crush_profile"] = {{"damage_width_m", inOutcome.mFrontProfile.mDamageWidth},
+                               {"C_m", inOutcome.mFrontProfile.mC},
+                               {"average_m", inOutcome.mFrontProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     report["limited_dents"] = inOutcome.mLimitedDents;
     nlohmann::json expectations = nlohmann::json::array();
@@ -147,11 +151,18 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
                  inOutcome.mOutwardDisplacement);
+    const CrushProfile& profile = inOutcome.mFrontProfile;
+    std::fprintf(inStream, "  front crush profile over %.2f m: C1..C6 %.3f %.3f %.3f %.3f %.3f %.3f m, average %.3f m\n",
+                 profile.mDamageWidth, profile.mC[0], profile.mC[1], profile.mC[2], profile.mC[3], profile.mC[4],
+                 profile.mC[5], profile.Average());
     if (inOutcome.mLimitedDents > 0)
         std::fprintf(inStream, "  %d dent(s) clamped by the material's maximum deformation: the crush is a lower bound\n",
                      inOutcome.mLimitedDents);
+    if (inOutcome.mFoldedTriangles > 0)
+        std::fprintf(inStream, "  surface folded: %d of %zu triangles turned over\n", inOutcome.mFoldedTriangles,
+                     inOutcome.mRestMesh.mTriangles.size());
     if (inOutcome.mFoldedVertices > 0)
-        std::fprintf(inStream, "  surface folded: %d of %zu vertices turned over\n", inOutcome.mFoldedVertices,
+        std::fprintf(inStream, "  %d of %zu vertex normals turned over\n", inOutcome.mFoldedVertices,
                      inOutcome.mRestMesh.mPositions.size());
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         std::fprintf(inStream, "  target vehicle residual crush %.3f m\n", inOutcome.mTargetResidualCrush);
@@ -191,8 +202,18 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("energy absorbed", Number(inOutcome.EnergyAbsorbed() / 1000.0, 2) + " kJ");
     row("total impulse", Number(inOutcome.mTotalImpulse, 0) + " N s (peak " + Number(inOutcome.mPeakImpulse, 0) + ")");
     row("collisions", std::to_string(inOutcome.mCollisions.size()));
-    row("folded vertices", std::to_string(inOutcome.mFoldedVertices) + " of " +
-                                 std::to_string(inOutcome.mRestMesh.mPositions.size()));
+    row("folded triangles", std::to_string(inOutcome.mFoldedTriangles) + " of " +
+                                  std::to_string(inOutcome.mRestMesh.mTriangles.size()));
+    row("folded vertices (normal turned over)", std::to_string(inOutcome.mFoldedVertices) + " of " +
+                                                     std::to_string(inOutcome.mRestMesh.mPositions.size()));
+    {
+        const CrushProfile& profile = inOutcome.mFrontProfile;
+        std::string stations;
+        for (double c : profile.mC)
+            stations += Number(c, 3) + " ";
+        row("front crush profile C1..C6 (CRASH3)", stations + "m over " + Number(profile.mDamageWidth, 2) +
+                                                       " m, average " + Number(profile.Average(), 3) + " m");
+    }
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");

@@ -244,6 +244,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
     outcome.mFoldedVertices = FoldedVertices(outcome.mRestNormals, outcome.mNormals);
+    outcome.mFoldedTriangles = FoldedTriangles(outcome.mRestMesh, outcome.mPositions);
+    outcome.mFrontProfile = FrontCrushProfile(outcome.mRestMesh, outcome.mPositions);
     // intent: the car's initial travel in its own frame; a standing car (a target hitting it) has none
     const double start_speed = outcome.mStartVelocity.norm();
     if (start_speed > 0.0)
@@ -281,6 +283,10 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return static_cast<double>(mCollisions.size());
     case EQuantity::FoldedVertices:
         return static_cast<double>(mFoldedVertices);
+    case EQuantity::FoldedTriangles:
+        return static_cast<double>(mFoldedTriangles);
+    case EQuantity::CrushAverage:
+        return mFrontProfile.Average();
     case EQuantity::OutwardDisplacement:
         return mOutwardDisplacement;
     }
@@ -293,6 +299,52 @@ int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> in
     for (std::size_t vertex = 0; vertex < inNormals.size() && vertex < inRestNormals.size(); ++vertex)
         folded += inRestNormals[vertex].dot(inNormals[vertex]) < 0.0 ? 1 : 0;
     return folded;
+}
+
+int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)
+{
+    int folded = 0;
+    for (const auto& t : inRest.mTriangles)
+    {
+        const Vec3& a = inRest.mPositions[t[0]];
+        const Vec3 rest = (inRest.mPositions[t[1]] - a).cross(inRest.mPositions[t[2]] - a);
+        if (rest.isZero(0.0))
+            continue;
+        const Vec3& b = inPositions[t[0]];
+        const Vec3 now = (inPositions[t[1]] - b).cross(inPositions[t[2]] - b);
+        folded += rest.dot(now) < 0.0 ? 1 : 0;
+    }
+    return folded;
+}
+
+CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)
+{
+    constexpr double cDamaged = 0.01; // m: a move shallower than this is not damage
+    const ffd::AlignedBox bounds = ffd::BoundingBox(inRest.mPositions);
+    const double front_start = bounds.mMax.x() - 0.25 * (bounds.mMax.x() - bounds.mMin.x());
+    CrushProfile profile;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t v = 0; v < inPositions.size(); ++v)
+        if (inRest.mPositions[v].x() >= front_start && inRest.mPositions[v].x() - inPositions[v].x() > cDamaged)
+        {
+            lo = std::min(lo, inRest.mPositions[v].y());
+            hi = std::max(hi, inRest.mPositions[v].y());
+        }
+    if (!(hi > lo))
+        return profile;
+    profile.mDamageWidth = hi - lo;
+    const double spacing = profile.mDamageWidth / 5.0;
+    for (std::size_t v = 0; v < inPositions.size(); ++v)
+    {
+        const Vec3& rest = inRest.mPositions[v];
+        if (rest.x() < front_start)
+            continue;
+        const double crush = rest.x() - inPositions[v].x();
+        for (std::size_t station = 0; station < 6; ++station)
+            if (std::abs(rest.y() - (lo + static_cast<double>(station) * spacing)) <= 0.5 * spacing)
+                profile.mC[station] = std::max(profile.mC[station], crush);
+    }
+    return profile;
 }
 
 double OutwardDisplacement(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, const Vec3& inForward)

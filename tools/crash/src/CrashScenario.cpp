@@ -35,6 +35,10 @@ const char* ToString(EQuantity inQuantity)
         return "folded_vertices";
     case EQuantity::OutwardDisplacement:
         return "outward_displacement_m";
+    case EQuantity::FoldedTriangles:
+        return "folded_triangles";
+    case EQuantity::CrushAverage:
+        return "crush_average_m";
     }
     return "unknown";
 }

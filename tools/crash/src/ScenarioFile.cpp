@@ -645,16 +645,22 @@ class ScenarioReader
                             UnitHint{"min_deformation", "depths are min_deformation_m"},
                             UnitHint{"max_deformation", "depths are max_deformation_m"},
                             UnitHint{"impulse_threshold", "impulses are impulse_threshold_N_s"},
-                            UnitHint{"max_total_deformation", "depths are max_total_deformation_m"}};
+                            UnitHint{"max_total_deformation", "depths are max_total_deformation_m"},
+                            UnitHint{"crush_A", "Campbell's A is crush_A_N_per_m"},
+                            UnitHint{"crush_B", "Campbell's B is crush_B_N_per_m2"},
+                            UnitHint{"crush_G", "Campbell's G is crush_G_J_per_m"},
+                            UnitHint{"min_crush_width", "widths are min_crush_width_m"}};
         const bool keys_ok =
             inAllowPreset
                 ? CheckKeys(inMaterial, inPointer,
                             {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
-                              "impulse_threshold_N_s", "max_total_deformation_m", "preset_file"},
+                              "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
+                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "preset_file"},
                              hints})
                 : CheckKeys(inMaterial, inPointer,
                             {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
-                              "impulse_threshold_N_s", "max_total_deformation_m"},
+                              "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
+                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction"},
                              hints});
         if (!keys_ok)
             return false;
@@ -671,8 +677,19 @@ class ScenarioReader
             !ReadNumber(inMaterial, inPointer, "impulse_threshold_N_s", NumberRange::NonNegative(), false,
                         material.mImpulseThreshold) ||
             !ReadNumber(inMaterial, inPointer, "max_total_deformation_m", NumberRange::NonNegative(), false,
-                        ioVehicle.mMaxTotalDeformation))
+                        ioVehicle.mMaxTotalDeformation) ||
+            !ReadNumber(inMaterial, inPointer, "crush_A_N_per_m", NumberRange::NonNegative(), false, material.mCrushA) ||
+            !ReadNumber(inMaterial, inPointer, "crush_B_N_per_m2", NumberRange::Positive(), false, material.mCrushB) ||
+            !ReadNumber(inMaterial, inPointer, "crush_G_J_per_m", NumberRange::NonNegative(), false, material.mCrushG) ||
+            !ReadNumber(inMaterial, inPointer, "min_crush_width_m", NumberRange::Positive(), false,
+                        material.mMinCrushWidth) ||
+            !ReadNumber(inMaterial, inPointer, "crushed_length_fraction", NumberRange{0.0, false, 1.0, true}, false,
+                        material.mCrushedLengthFraction))
             return false;
+        std::size_t model = static_cast<std::size_t>(material.mModel);
+        if (!ReadEnum(inMaterial, inPointer, "crush_model", {"impulse_factor", "campbell"}, {}, false, model))
+            return false;
+        material.mModel = static_cast<plugin::ECrushModel>(model);
         if (material.mMaxInstantDeformation < material.mMinDeformation)
             return Fail(EError::InvalidArgument, Child(inPointer, "max_deformation_m"),
                         "must be >= min_deformation_m (" + FormatNumber(material.mMinDeformation) + "), got " +
@@ -791,16 +808,18 @@ class ScenarioReader
     {
         // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
         constexpr std::size_t delta_v_km_h = 2;
-        static constexpr std::array<EQuantity, 8> quantities{
-            EQuantity::ResidualCrush, EQuantity::DeltaV,         EQuantity::DeltaV,
-            EQuantity::TotalImpulse,  EQuantity::EnergyAbsorbed, EQuantity::Collisions,
-            EQuantity::FoldedVertices, EQuantity::OutwardDisplacement};
+        static constexpr std::array<EQuantity, 10> quantities{
+            EQuantity::ResidualCrush,  EQuantity::DeltaV,         EQuantity::DeltaV,
+            EQuantity::TotalImpulse,   EQuantity::EnergyAbsorbed, EQuantity::Collisions,
+            EQuantity::FoldedVertices, EQuantity::OutwardDisplacement, EQuantity::FoldedTriangles,
+            EQuantity::CrushAverage};
         std::size_t quantity = 0;
         if (!ExpectObject(inItem, inPointer) ||
             !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
             !ReadEnum(inItem, inPointer, "quantity",
                       {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
-                       "energy_absorbed_J", "collisions", "folded_vertices", "outward_displacement_m"},
+                       "energy_absorbed_J", "collisions", "folded_vertices", "outward_displacement_m",
+                       "folded_triangles", "crush_average_m"},
                       {{"residual_crush", "residual crush is residual_crush_m"},
                        {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
                        {"total_impulse", "impulses are total_impulse_N_s"},

@@ -11,6 +11,13 @@
 namespace crumple::plugin
 {
 
+/// Which body of a collision an object belongs to.
+enum class ECollisionSide
+{
+    A, ///< The collision's mBodyA: dents go along +normal
+    B, ///< The collision's mBodyB: dents go along -normal
+};
+
 /// One contact of a collision, on the surfaces, with its impulse. Stored with mBodyA < mBodyB of its
 /// Collision (the contact is flipped on arrival when the engine named the bodies the other way round).
 struct CollisionContact
@@ -25,6 +32,9 @@ struct CollisionContact
     double mPenetrationDepth = 0.0;     ///< As reported (m)
     double mImpulse = 0.0;              ///< Baraff impulse magnitude (N s), > 0: +n on A, -n on B
     double mApproachSpeed = 0.0;        ///< Closing speed before the solver, -v_rel (m/s), > 0
+    /// Kinetic energy the impulse took out of the pair, J v (1 - e) / 2 with the world's restitution e (J):
+    /// what the two bodies' structures absorb between them (exact for the contacts of one step, solved together)
+    double mAbsorbedEnergy = 0.0;
     double mTime = 0.0;                 ///< Step time (s)
 };
 
@@ -37,6 +47,10 @@ struct Collision
     double mEndTime = 0.0;          ///< Time of the last contact (s)
     std::uint64_t mSequence = 0;    ///< Creation order in its world, the last tie-breaker of dispatch order
     std::vector<CollisionContact> mContacts; ///< In arrival order
+    /// The absorbed energy each side's crush takes (J), set when the collision is dispatched
+    /// (CrushEnergyShares): used by objects with the Campbell crush model, recorded for replays
+    double mCrushEnergyA = 0.0;
+    double mCrushEnergyB = 0.0;
 
     /// Sum of the contact impulses (N s)
     double TotalImpulse() const
@@ -44,6 +58,14 @@ struct Collision
         double total = 0.0;
         for (const CollisionContact& c : mContacts)
             total += c.mImpulse;
+        return total;
+    }
+    /// Sum of the contacts' absorbed energies (J)
+    double AbsorbedEnergy() const
+    {
+        double total = 0.0;
+        for (const CollisionContact& c : mContacts)
+            total += c.mAbsorbedEnergy;
         return total;
     }
 };

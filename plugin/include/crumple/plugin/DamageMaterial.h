@@ -2,8 +2,24 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
+
 namespace crumple::plugin
 {
+
+/// How a collision's severity becomes crush depth.
+enum class ECrushModel : std::uint8_t
+{
+    /// D4MD's: the depth is the deformation factor times the collision's impulse beyond a threshold, and the
+    /// dent moves the contact points (direct manipulation). Cheap, engine-independent, blind to contact
+    /// width: for games that tune dents by eye.
+    ImpulseFactor = 0,
+    /// Accident reconstruction's (Campbell, SAE 740565; CRASH3/WinSMASH): the energy the collision absorbed
+    /// crushes the struck width w against a stiffness per unit width, E / w = A C + B C^2 / 2 + G, and the
+    /// crushed region takes the impactor's shape (plugin::CampbellCrush). Narrow impacts (poles) crush
+    /// deeper than wide ones of the same energy: for crash tests and believable racing damage.
+    Campbell = 1,
+};
 
 /// How a deformable object turns impulse into dents (D4MD section 6.1: the "deformable object" properties).
 /// Defaults suit a steel car body: a 1,200 kg car hitting a rigid wall at 15 m/s (about 18 kN s) is crushed
@@ -19,6 +35,22 @@ struct DamageMaterial
     /// no-damage speed b0 (2.2-4.5 m/s for modern cars, SAE 2010-01-0069): against a rigid barrier that is
     /// an impulse of about (1 + e) m b0. 0 (the default): every impulse dents.
     double mImpulseThreshold = 0.0;
+
+    ECrushModel mModel = ECrushModel::ImpulseFactor; ///< Which of the fields below turn a collision into crush
+
+    // Campbell crush stiffness per unit width (ECrushModel::Campbell). Defaults: the nominal mid-size car
+    // (1,450-1,700 kg, 1.65 m wide) of shared/data/crash/campbell_oracle.csv, whose line passes through
+    // 0.556 m of residual crush at 56 km/h into a rigid barrier; samples/presets hold the other classes.
+    double mCrushA = 50400.0;  ///< Force per unit width at the onset of crush (N/m), >= 0
+    double mCrushB = 549818.0; ///< Its growth per metre of crush (N/m^2), > 0
+    double mCrushG = 2310.0;   ///< Energy per unit width absorbed with no residual crush (J/m), >= 0; CRASH3
+                               ///< takes A^2 / (2 B)
+    /// Narrowest width a crush is spread over (m), > 0: a car's bumper beam and longitudinal rails carry
+    /// a pole's load over more than the pole's diameter. An assumption to set per vehicle, not a measured value.
+    double mMinCrushWidth = 0.5;
+    /// What remains of a crushed length, in [0, 1): the crushed region is compacted to this fraction of its
+    /// depth behind the impactor's final face (sheet-metal crush tubes fold to about a quarter of their length).
+    double mCrushedLengthFraction = 0.25;
 };
 
 } // namespace crumple::plugin

@@ -4,6 +4,7 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/plugin/BodyState.h>
+#include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/CollisionGrouper.h>
 #include <crumple/plugin/ContactEvent.h>
 #include <crumple/plugin/DamageListener.h>
@@ -128,6 +129,7 @@ private:
     bool IsLive(BodyId inBody) const { return inBody.mValue < mBodies.size() && mBodies[inBody.mValue].mAlive; }
     Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
+    CrushSide CrushSideOf(BodyId inBody) const;
 
     DamageWorldSettings mSettings;
     CollisionGrouper mGrouper;

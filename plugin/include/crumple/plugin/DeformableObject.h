@@ -11,13 +11,6 @@
 namespace crumple::plugin
 {
 
-/// Which body of a collision an object belongs to.
-enum class ECollisionSide
-{
-    A, ///< The collision's mBodyA: dents go along +normal
-    B, ///< The collision's mBodyB: dents go along -normal
-};
-
 /// A deformable object: material plus an FFD deformer over its render mesh.
 class DeformableObject
 {
@@ -35,21 +28,27 @@ public:
     std::vector<ffd::PointDisplacement> DentFor(const Collision& inCollision, ECollisionSide inSide,
                                                 int* outClamped = nullptr) const;
 
-    /// DentFor, then ApplyDent with the instantaneous maximum as the step bound, so that no vertex (not
-    /// only no contact point) moves further than mMaxInstantDeformation in one collision.
+    /// The dent of a collision. ECrushModel::ImpulseFactor: DentFor, then ApplyDent with the instantaneous
+    /// maximum as the step bound, so that no vertex (not only no contact point) moves further than
+    /// mMaxInstantDeformation in one collision. ECrushModel::Campbell: the collision's crush energy for this
+    /// side (Collision::mCrushEnergyA/B) crushes the footprint (PlanCampbellCrush, ApplyCrushPlan); a depth
+    /// cut to the instantaneous maximum counts as one clamped contact.
     ffd::DentReport ApplyCollision(const Collision& inCollision, ECollisionSide inSide);
 
     const DamageMaterial& GetMaterial() const { return mMaterial; }
     bool GetInterpolateWideImpacts() const { return mInterpolate; }
+    /// The body's up direction (body frame, unit)
+    const Vec3& GetUpAxis() const { return mUp; }
     const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
     ffd::FfdDeformer& GetDeformer() { return mDeformer; }
 
 private:
-    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, ffd::FfdDeformer inDeformer)
-        : mMaterial(inMaterial), mInterpolate(inInterpolate), mDeformer(std::move(inDeformer)) {}
+    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, const Vec3& inUp, ffd::FfdDeformer inDeformer)
+        : mMaterial(inMaterial), mInterpolate(inInterpolate), mUp(inUp), mDeformer(std::move(inDeformer)) {}
 
     DamageMaterial mMaterial;
     bool mInterpolate = true;
+    Vec3 mUp = Vec3::UnitZ();
     ffd::FfdDeformer mDeformer;
 };
 

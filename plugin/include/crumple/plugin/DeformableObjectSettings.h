@@ -29,6 +29,8 @@ struct DeformableObjectSettings
     double mFittedControlSpacing = 0.15;
     double mFittedMaxTotalDeformation = 0.5;          ///< Max total deformation of the fitted zone (m)
     bool mInterpolateWideImpacts = true; ///< Fill gaps between contacts wider than the lattice spacing
+    /// The body's up direction (body frame, unit): the Campbell crush measures its width across it
+    Vec3 mUpAxis = Vec3::UnitZ();
 };
 
 /// Controls per axis for a lattice of inSize (m) with at most inSpacing (m) between controls: ceil(size /

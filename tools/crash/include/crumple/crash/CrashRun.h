@@ -24,11 +24,24 @@ struct CrashCollisionRecord
     int mContacts = 0;       ///< Contacts grouped into it
 };
 
+/// The crush profile as accident reconstruction measures it (CRASH3/WinSMASH): six equally spaced crush
+/// depths across the damaged width of the front, C1 at the car's right (-y), C6 at its left (+y).
+struct CrushProfile
+{
+    double mDamageWidth = 0.0;      ///< Width of the front whose crush exceeds 1 cm (m); 0: no damage
+    std::array<double, 6> mC{};     ///< Crush depth at the six stations (m), backward along -x
+    /// CRASH3's average, (C1/2 + C2 + C3 + C4 + C5 + C6/2) / 5 (m): the crush of the same energy spread
+    /// uniformly over the damage width
+    double Average() const { return (0.5 * mC[0] + mC[1] + mC[2] + mC[3] + mC[4] + 0.5 * mC[5]) / 5.0; }
+};
+
 /// What a crash run measured. Velocities in the world frame; crush in the car's body frame.
 struct CrashOutcome
 {
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
     int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
+    int mFoldedTriangles = 0;               ///< Car body triangles turned over (FoldedTriangles)
+    CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
@@ -83,6 +96,16 @@ double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPo
 /// @param[in] inRestNormals  #V unit vertex normals before
 /// @param[in] inNormals      #V unit vertex normals after
 int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals);
+
+/// Triangles whose face normal the dents turned over (its dot product with the rest face normal < 0): a
+/// fold of the surface itself. Triangles of zero rest area are skipped. Unlike FoldedVertices it does not
+/// count a vertex on a sharp ridge whose averaged normal tips over when the crush compacts the ridge.
+int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
+
+/// The front's crush profile: the vertices of the front quarter (rest x within a quarter of the length of the
+/// front) whose backward move exceeds 1 cm span the damage width; each of six equally spaced stations across
+/// it takes the deepest backward move of the front-quarter vertices within half a station spacing of it.
+CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
 
 /// Largest residual displacement of a vertex along inForward (a unit direction in the body frame: the car's
 /// initial direction of travel relative to the target), 0 when no vertex moved forward (m). The target

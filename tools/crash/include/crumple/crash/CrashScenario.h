@@ -108,6 +108,8 @@ enum class EQuantity : std::uint8_t
     OutwardDisplacement, ///< Largest residual displacement of a car vertex forward, along the car's initial
                          ///< direction of travel (m): a crush pushes the struck surface back, so a vertex
                          ///< moved forward is damage that leaked out of the dent (a ripple, a bulge)
+    FoldedTriangles, ///< Car body triangles whose face normal the dents turned over: count
+    CrushAverage,    ///< CRASH3 average of the front's crush profile C1..C6 (m)
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the

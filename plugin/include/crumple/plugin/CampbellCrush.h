@@ -1,0 +1,82 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/ffd/DentReport.h>
+#include <crumple/ffd/FfdDeformer.h>
+#include <crumple/plugin/Collision.h>
+#include <crumple/plugin/DamageMaterial.h>
+
+#include <optional>
+
+namespace crumple::plugin
+{
+
+/// Where and how deep a Campbell crush goes, in the struck body's frame.
+///
+/// The impactor's face is taken flat, normal to the crush direction d (the impulse-weighted inward normal of
+/// the contacts), over the footprint: the rectangle the contacts span across d, widened on each side axis to
+/// at least the material's minimum crush width. At first touch the face stands at the body's foremost
+/// vertex in the footprint (s0 along d); it ends C further in. The crush field moves a point at depth
+/// delta = d.x - s0 - f by C g(delta) h along d, f a flat layer of one lattice spacing pressed against the
+/// impactor (the spline blends over two spacings, so the struck face would otherwise fall short): g is 1 in
+/// front and falls linearly to 0 at the crush zone length L = C / (1 - kappa) (the crushed length is compacted to kappa of itself, kappa the material's
+/// mCrushedLengthFraction), and h is 1 on the footprint and one flat layer around it, then fades to 0 over
+/// max(2 lattice spacings, C / 2) (pocket walls no steeper than 2:1). So a flat
+/// barrier leaves a flat front at its final position (to within kappa L), a pole a pocket as wide as the
+/// footprint, and nothing moves outside the footprint's margin or behind the crush zone.
+struct CrushPlan
+{
+    Vec3 mDirection = Vec3::UnitX(); ///< d: unit crush direction, into the body
+    Vec3 mSide = Vec3::UnitY();      ///< Unit axis across d measuring the width (perpendicular to up and d)
+    Vec3 mThird = Vec3::UnitZ();     ///< d x side
+    double mSideMin = 0.0, mSideMax = 0.0;   ///< Footprint along mSide (m)
+    double mThirdMin = 0.0, mThirdMax = 0.0; ///< Footprint along mThird (m)
+    double mFront = 0.0;          ///< s0: foremost vertex of the footprint along d (m)
+    double mDepth = 0.0;          ///< C: crush depth this collision adds (m)
+    double mFlatLayer = 0.0;      ///< Depth behind s0 pressed flat against the impactor (min(spacing, C), m)
+    double mZoneLength = 0.0;     ///< L: depth behind the flat layer the crush compacts (m)
+    double mRamp = 0.0;           ///< Width of the footprint's fade (m)
+    double mWidth = 0.0;          ///< w: the crushed width the energy is spread over (m)
+    double mPreviousCrush = 0.0;  ///< Crush already in the footprint before this collision (m)
+    bool mClamped = false;        ///< The depth was cut to the material's maximum instantaneous deformation
+
+    /// The field's displacement magnitude along mDirection at body point inPoint (m), >= 0.
+    double DisplacementAt(const Vec3& inPoint) const;
+};
+
+/// The width across inUp over which the collision's contacts of side inSide crush, at least inMinWidth (m).
+double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
+
+/// Depth C (m) at which a structure of width inWidth has absorbed inEnergy by Campbell's law
+/// E / w = A C + B C^2 / 2 + G: 0 while E / w <= G.
+double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, double inEnergy);
+/// Energy (J) a structure of width inWidth absorbs to reach crush inDepth (0 at 0 crush): the inverse.
+double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth);
+
+/// One side of a collision, for the split of its energy: the material of its Campbell object (null: the side
+/// does not crush by Campbell's law: a wall, a pole, or a body dented by the impulse factor) and its up axis.
+struct CrushSide
+{
+    const DamageMaterial* mMaterial = nullptr;
+    Vec3 mUp = Vec3::UnitZ();
+};
+
+/// Sets the collision's mCrushEnergyA and mCrushEnergyB: its absorbed energy split between the sides in
+/// inverse proportion to their crush stiffness B w (two structures in series carry the same force, and each
+/// stores about F^2 / (2 k)). A side that does not crush takes none and the other all of it.
+void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushSide& inB);
+
+/// The crush a collision with inEnergy (J) for this side makes on a body whose deformer is inDeformer; empty
+/// when there is nothing to crush (no closing contact, the energy below G, no vertex in the footprint,
+/// or a depth under the material's minimum).
+std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
+                                           const DamageMaterial& inMaterial, const Vec3& inUp,
+                                           const ffd::FfdDeformer& inDeformer);
+
+/// Applies a plan: each zone's controls take the field at their current positions (the B-spline
+/// quasi-interpolant of the field, exact for its linear parts), through FfdDeformer::ApplyControlDelta with
+/// the material's maximum instantaneous deformation as the step bound. The reports of the zones are merged.
+ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::FfdDeformer& ioDeformer);
+
+} // namespace crumple::plugin

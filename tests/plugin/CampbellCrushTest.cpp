@@ -1,0 +1,284 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BoxMesh.h"
+#include "ScratchDirectory.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/CampbellCrush.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/ReplayDamage.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+
+using namespace crumple;
+using namespace crumple::plugin;
+
+namespace
+{
+
+constexpr double cMass = 1575.0; // the oracle's mid-size car, whose A, B, G are DamageMaterial's defaults
+
+DamageMaterial CampbellMaterial()
+{
+    DamageMaterial material;
+    material.mModel = ECrushModel::Campbell;
+    material.mMaxInstantDeformation = 1.5;
+    return material;
+}
+
+// A 4.4 m x 1.65 m x 1.4 m box car (the mid-size class's width) with a Campbell body at rest against a
+// static wall at x = 0, hit at inSpeed along +x; the contacts span inContactWidth across y on the car's front
+// face (0: one point at its centre, as a pole's).
+struct CampbellCar
+{
+    explicit CampbellCar(const DamageWorldSettings& inSettings = {}, const DamageMaterial& inMaterial = CampbellMaterial())
+        : mWorld(DamageWorld::Create(inSettings).Get())
+    {
+        BodyState wall;
+        wall.mMotionType = EMotionType::Static;
+        mWall = mWorld.CreateBody(wall).Get();
+        mCar = mWorld.CreateBody(State(0.0)).Get();
+        DeformableObjectSettings car;
+        car.mMesh = common::MakeBoxMesh(mHalf, common::BoxSegmentsForTriangles(mHalf, 20000));
+        car.mMaterial = inMaterial;
+        car.mFittedMaxTotalDeformation = 1.5;
+        mObject = mWorld.CreateDeformableObject(mCar, car).Get();
+    }
+
+    BodyState State(double inSpeed) const
+    {
+        BodyState car;
+        car.mMass = cMass;
+        const Vec3 size = 2.0 * mHalf;
+        car.mInverseInertiaWorld = Vec3(12.0 / (cMass * (size.y() * size.y() + size.z() * size.z())),
+                                        12.0 / (cMass * (size.x() * size.x() + size.z() * size.z())),
+                                        12.0 / (cMass * (size.x() * size.x() + size.y() * size.y())))
+                                       .asDiagonal();
+        car.mTransform.mTranslation = Vec3(-mHalf.x(), 0.0, 0.0);
+        car.mCenterOfMass = car.mTransform.mTranslation;
+        car.mLinearVelocity = Vec3(inSpeed, 0.0, 0.0);
+        return car;
+    }
+
+    // Hits the wall at inSpeed with contacts spread over inContactWidth (m) across the front face.
+    void Hit(double inSpeed, double inContactWidth)
+    {
+        REQUIRE(mWorld.SetBodyState(mCar, State(inSpeed)));
+        std::vector<ContactEvent> contacts;
+        const std::vector<double> ys = inContactWidth > 0.0 ? std::vector<double>{-0.5 * inContactWidth, 0.5 * inContactWidth}
+                                                            : std::vector<double>{0.0};
+        for (double y : ys)
+            for (double z : {-0.6, 0.6})
+            {
+                ContactEvent contact;
+                contact.mBodyA = mCar;
+                contact.mBodyB = mWall;
+                contact.mPointOnA = Vec3(0.0, y, z);
+                contact.mPointOnB = Vec3(0.0, y, z);
+                contact.mNormal = -Vec3::UnitX(); // from the wall (B) to the car (A)
+                contact.mTime = mTime;
+                contacts.push_back(contact);
+            }
+        REQUIRE(mWorld.SubmitContacts(contacts, 1.0 / 120.0));
+        mWorld.Flush();
+        mTime += 1.0;
+    }
+
+    const DeformableObject& Object() const { return *mWorld.GetObject(mObject); }
+    // Deepest backward move of a front-face vertex (rest x = 2.2) within |y| <= inHalfWidth (m).
+    double FrontCrush(double inHalfWidth = 10.0) const
+    {
+        const ffd::FfdDeformer& deformer = Object().GetDeformer();
+        double deepest = 0.0;
+        for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+        {
+            const Vec3& rest = deformer.GetRestMesh().mPositions[v];
+            if (rest.x() > mHalf.x() - 1.0e-9 && std::abs(rest.y()) <= inHalfWidth)
+                deepest = std::max(deepest, rest.x() - deformer.GetPositions()[v].x());
+        }
+        return deepest;
+    }
+
+    Vec3 mHalf{2.2, 0.825, 0.7};
+    DamageWorld mWorld;
+    BodyId mWall, mCar;
+    ObjectId mObject;
+    double mTime = 0.0;
+};
+
+} // namespace
+
+TEST_CASE("Campbell's crush law and its inverse against the oracle's mid-size line", "[plugin]")
+{
+    // shared/data/crash/campbell_oracle.csv: a 1,575 kg, 1.65 m wide car crushes 0.556 m at 56 km/h
+    // (nominal), from E / w = A C + B C^2 / 2 + G with the whole kinetic energy absorbed.
+    const DamageMaterial material = CampbellMaterial();
+    const double v = 56.0 / 3.6;
+    const double energy = 0.5 * cMass * v * v;
+    CHECK(CampbellCrushDepth(material, 1.65, energy) == Approx(0.556).margin(0.001));
+    for (double depth : {0.001, 0.1, 0.556, 1.4})
+        CHECK(CampbellCrushDepth(material, 1.65, CampbellCrushEnergy(material, 1.65, depth)) ==
+              Approx(depth).epsilon(1.0e-12));
+    // Below G per unit width nothing is crushed; the same energy over a narrower width crushes deeper.
+    CHECK(CampbellCrushDepth(material, 1.65, 0.99 * material.mCrushG * 1.65) == 0.0);
+    CHECK(CampbellCrushDepth(material, 0.5, energy) > 1.5 * CampbellCrushDepth(material, 1.65, energy));
+}
+
+TEST_CASE("A full-width wall crush is Campbell's depth, flat across the front, and stays out of the rear", "[plugin]")
+{
+    const double v = 56.0 / 3.6;
+    CampbellCar car;
+    car.Hit(v, 2.0 * car.mHalf.y());
+    const double e = car.mWorld.GetSettings().mRestitution;
+    // The absorbed energy is (1 - e^2) of the kinetic energy (Baraff's impulse with restitution e).
+    const double expected = CampbellCrushDepth(car.Object().GetMaterial(), 1.65, (1.0 - e * e) * 0.5 * cMass * v * v);
+    const double crush = car.FrontCrush();
+    INFO("crush " << crush << " m, Campbell " << expected << " m");
+    CHECK(crush == Approx(expected).epsilon(0.05));
+
+    // Flat front: every front-face vertex ends within the crushed length fraction's slack of the deepest,
+    // and no vertex moved forward or anywhere in the rear half.
+    const ffd::FfdDeformer& deformer = car.Object().GetDeformer();
+    double shallowest = 1.0e9, forward = 0.0, rear = 0.0;
+    for (std::size_t i = 0; i < deformer.GetPositions().size(); ++i)
+    {
+        const Vec3& rest = deformer.GetRestMesh().mPositions[i];
+        const Vec3 moved = deformer.GetPositions()[i] - rest;
+        forward = std::max(forward, moved.x());
+        if (rest.x() > car.mHalf.x() - 1.0e-9 && std::abs(rest.z()) <= 0.6) // the contacts' span
+            shallowest = std::min(shallowest, -moved.x());
+        if (rest.x() < 0.0)
+            rear = std::max(rear, moved.norm());
+    }
+    CHECK(shallowest >= 0.9 * crush);
+    CHECK(forward <= 1.0e-9);
+    CHECK(rear == 0.0);
+}
+
+TEST_CASE("A narrow impact crushes deeper than a wide one of the same energy, in a pocket", "[plugin]")
+{
+    const double v = 40.0 / 3.6;
+    CampbellCar wall, pole;
+    wall.Hit(v, 2.0 * wall.mHalf.y());
+    pole.Hit(v, 0.0);
+    const DamageMaterial& material = pole.Object().GetMaterial();
+    INFO("wall " << wall.FrontCrush() << " m, pole " << pole.FrontCrush() << " m");
+    // Same speed, same mass: same energy, spread over 1.65 m or the minimum width.
+    const double ratio = CampbellCrushDepth(material, material.mMinCrushWidth, 1.0e5) / CampbellCrushDepth(material, 1.65, 1.0e5);
+    CHECK(pole.FrontCrush() > 1.3 * wall.FrontCrush());
+    CHECK(pole.FrontCrush() / wall.FrontCrush() == Approx(ratio).epsilon(0.15));
+    // The pocket: the front's far corners (beyond the footprint and its fade) do not move.
+    const double fade = std::max(2.0 * pole.Object().GetDeformer().GetMinSpacing(), 0.5 * pole.FrontCrush());
+    const ffd::FfdDeformer& deformer = pole.Object().GetDeformer();
+    for (std::size_t i = 0; i < deformer.GetPositions().size(); ++i)
+    {
+        const Vec3& rest = deformer.GetRestMesh().mPositions[i];
+        if (std::abs(rest.y()) > 0.5 * material.mMinCrushWidth + fade + 3.0 * deformer.GetMinSpacing())
+            CHECK((deformer.GetPositions()[i] - rest).norm() == 0.0);
+    }
+}
+
+TEST_CASE("Two Campbell cars share a collision's energy by their stiffness", "[plugin]")
+{
+    // Equal materials and footprints: each takes half of the absorbed energy, and together all of it.
+    DamageMaterial material = CampbellMaterial();
+    Collision collision;
+    collision.mBodyA = BodyId{0};
+    collision.mBodyB = BodyId{1};
+    for (double y : {-0.8, 0.8})
+    {
+        CollisionContact contact;
+        contact.mImpulse = 1000.0;
+        contact.mApproachSpeed = 10.0;
+        contact.mAbsorbedEnergy = 4500.0;
+        contact.mLocalPointOnA = Vec3(2.2, y, 0.0);
+        contact.mLocalPointOnB = Vec3(-2.2, y, 0.0);
+        contact.mLocalNormalOnA = -Vec3::UnitX();
+        contact.mLocalNormalOnB = -Vec3::UnitX();
+        collision.mContacts.push_back(contact);
+    }
+    ShareCrushEnergy(collision, {&material, Vec3::UnitZ()}, {&material, Vec3::UnitZ()});
+    CHECK(collision.mCrushEnergyA == Approx(4500.0));
+    CHECK(collision.mCrushEnergyA + collision.mCrushEnergyB == 9000.0);
+    // A twice as stiff side takes a third; a rigid side (a wall) none.
+    DamageMaterial stiff = material;
+    stiff.mCrushB *= 2.0;
+    ShareCrushEnergy(collision, {&stiff, Vec3::UnitZ()}, {&material, Vec3::UnitZ()});
+    CHECK(collision.mCrushEnergyA == Approx(3000.0));
+    ShareCrushEnergy(collision, {&material, Vec3::UnitZ()}, {});
+    CHECK(collision.mCrushEnergyA == 9000.0);
+    CHECK(collision.mCrushEnergyB == 0.0);
+}
+
+TEST_CASE("A second hit crushes on from the first: two half-energy hits about equal one whole", "[plugin]")
+{
+    CampbellCar once, twice;
+    const double v = 40.0 / 3.6;
+    once.Hit(v, 2.0 * once.mHalf.y());
+    twice.Hit(v / std::sqrt(2.0), 2.0 * twice.mHalf.y());
+    twice.Hit(v / std::sqrt(2.0), 2.0 * twice.mHalf.y());
+    INFO("once " << once.FrontCrush() << " m, twice " << twice.FrontCrush() << " m");
+    CHECK(twice.FrontCrush() == Approx(once.FrontCrush()).epsilon(0.1));
+}
+
+TEST_CASE("A Campbell crush replays bit for bit", "[plugin]")
+{
+    CampbellCar car;
+    const std::filesystem::path path = common::ScratchDirectory() / "campbell.crumple";
+    Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(path, car.mWorld);
+    REQUIRE(recorder);
+    car.Hit(15.0, 0.8);
+    car.Hit(8.0, 0.0);
+    REQUIRE(recorder.Get()->Close());
+    Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
+    REQUIRE(replay);
+    Result<std::vector<ReplayedObject>> replayed = ReplayDamage(replay.Get());
+    REQUIRE(replayed);
+    const std::vector<Vec3>& live = car.Object().GetDeformer().GetPositions();
+    const std::vector<Vec3>& again = replayed.Get()[0].mDeformable.GetDeformer().GetPositions();
+    REQUIRE(live.size() == again.size());
+    CHECK(std::memcmp(live.data(), again.data(), live.size() * sizeof(Vec3)) == 0);
+    CHECK(car.FrontCrush() > 0.1);
+}
+
+TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]")
+{
+    DamageWorld world = DamageWorld::Create().Get();
+    const BodyId body = world.CreateBody(BodyState{}).Get();
+    const Vec3 half(1.0, 0.5, 0.5);
+    auto refused = [&](const DeformableObjectSettings& inSettings, const std::string& inField) {
+        Result<ObjectId> created = world.CreateDeformableObject(body, inSettings);
+        INFO(inField);
+        REQUIRE(created.HasError());
+        CHECK(created.GetError().mMessage.find(inField) != std::string::npos);
+    };
+    DeformableObjectSettings base;
+    base.mMesh = common::MakeBoxMesh(half, common::BoxSegmentsForTriangles(half, 500));
+    base.mMaterial = CampbellMaterial();
+    DeformableObjectSettings bad = base;
+    bad.mMaterial.mCrushB = 0.0;
+    refused(bad, "mCrushB");
+    bad = base;
+    bad.mMaterial.mCrushA = std::nan("");
+    refused(bad, "mCrushA");
+    bad = base;
+    bad.mMaterial.mCrushG = -1.0;
+    refused(bad, "mCrushG");
+    bad = base;
+    bad.mMaterial.mMinCrushWidth = 0.0;
+    refused(bad, "mMinCrushWidth");
+    bad = base;
+    bad.mMaterial.mCrushedLengthFraction = 1.0;
+    refused(bad, "mCrushedLengthFraction");
+    bad = base;
+    bad.mMaterial.mModel = static_cast<ECrushModel>(7);
+    refused(bad, "mModel");
+    bad = base;
+    bad.mUpAxis = Vec3(0.0, 0.0, 2.0);
+    refused(bad, "mUpAxis");
+    CHECK(world.GetObjectIds().empty());
+}
