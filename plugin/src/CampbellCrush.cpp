@@ -3,6 +3,8 @@
 #include <crumple/plugin/CampbellCrush.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -103,23 +105,29 @@ struct CrushPoint
     double mSide, mThird, mDepth;
 };
 
-// Sutherland-Hodgman: keeps the part of inPolygon where inCoordinate(p) * inSign <= inLimit * inSign.
-std::vector<CrushPoint> ClipPolygon(const std::vector<CrushPoint>& inPolygon, double CrushPoint::*inCoordinate,
-                                    double inLimit, double inSign)
+// A polygon of at most 3 + 4 corners (a triangle clipped by a rectangle's four edges).
+struct SmallPolygon
 {
-    std::vector<CrushPoint> out;
-    for (std::size_t i = 0; i < inPolygon.size(); ++i)
+    std::array<CrushPoint, 8> mCorners{};
+    std::size_t mCount = 0;
+};
+
+// Sutherland-Hodgman: keeps the part of inPolygon where inCoordinate(p) * inSign <= inLimit * inSign.
+SmallPolygon ClipPolygon(const SmallPolygon& inPolygon, double CrushPoint::*inCoordinate, double inLimit, double inSign)
+{
+    SmallPolygon out;
+    for (std::size_t i = 0; i < inPolygon.mCount; ++i)
     {
-        const CrushPoint& a = inPolygon[i];
-        const CrushPoint& b = inPolygon[(i + 1) % inPolygon.size()];
+        const CrushPoint& a = inPolygon.mCorners[i];
+        const CrushPoint& b = inPolygon.mCorners[(i + 1) % inPolygon.mCount];
         const double da = inSign * (a.*inCoordinate - inLimit), db = inSign * (b.*inCoordinate - inLimit);
         if (da <= 0.0)
-            out.push_back(a);
+            out.mCorners[out.mCount++] = a;
         if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
         {
             const double t = da / (da - db);
-            out.push_back({a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird),
-                           a.mDepth + t * (b.mDepth - a.mDepth)});
+            out.mCorners[out.mCount++] = {a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird),
+                                          a.mDepth + t * (b.mDepth - a.mDepth)};
         }
     }
     return out;
@@ -130,38 +138,45 @@ SurfaceUnderFootprint ScanFootprint(const CrushPlan& inPlan, const ffd::FfdDefor
     SurfaceUnderFootprint surface;
     const std::vector<Vec3>& positions = inDeformer.GetPositions();
     const std::vector<Vec3>& rest = inDeformer.GetRestMesh().mPositions;
-    auto inside = [&](const CrushPoint& p) {
-        return p.mSide >= inPlan.mSideMin && p.mSide <= inPlan.mSideMax && p.mThird >= inPlan.mThirdMin &&
-               p.mThird <= inPlan.mThirdMax;
-    };
-    auto project = [&](std::uint32_t inVertex) {
-        const Vec3& p = positions[inVertex];
-        return CrushPoint{inPlan.mSide.dot(p), inPlan.mThird.dot(p), inPlan.mDirection.dot(p)};
-    };
-    auto crush = [&](std::uint32_t inVertex) { return inPlan.mDirection.dot(positions[inVertex] - rest[inVertex]); };
-    for (std::uint32_t v = 0; v < positions.size(); ++v)
-        if (const CrushPoint p = project(v); inside(p))
+    // Every vertex in crush coordinates once; bit 0-3: outside the rectangle's low side, high side, low
+    // third, high third.
+    std::vector<CrushPoint> projected(positions.size());
+    std::vector<std::uint8_t> outside(positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v)
+    {
+        const Vec3& p = positions[v];
+        const CrushPoint c{inPlan.mSide.dot(p), inPlan.mThird.dot(p), inPlan.mDirection.dot(p)};
+        projected[v] = c;
+        outside[v] = static_cast<std::uint8_t>((c.mSide < inPlan.mSideMin ? 1 : 0) | (c.mSide > inPlan.mSideMax ? 2 : 0) |
+                                               (c.mThird < inPlan.mThirdMin ? 4 : 0) | (c.mThird > inPlan.mThirdMax ? 8 : 0));
+        if (outside[v] == 0)
         {
-            surface.mFront = std::min(surface.mFront, p.mDepth);
-            surface.mCrushInside = std::max(surface.mCrushInside, crush(v));
+            surface.mFront = std::min(surface.mFront, c.mDepth);
+            surface.mCrushInside = std::max(surface.mCrushInside, inPlan.mDirection.dot(p - rest[v]));
             ++surface.mVerticesInside;
         }
+    }
     for (const auto& triangle : inDeformer.GetRestMesh().mTriangles)
     {
-        std::vector<CrushPoint> polygon{project(triangle[0]), project(triangle[1]), project(triangle[2])};
-        if (inside(polygon[0]) && inside(polygon[1]) && inside(polygon[2]))
-            continue; // its vertices were counted above
+        const std::uint8_t a = outside[triangle[0]], b = outside[triangle[1]], c = outside[triangle[2]];
+        if ((a & b & c) != 0 || (a | b | c) == 0)
+            continue; // wholly beyond one edge, or wholly inside (its vertices were counted above)
+        SmallPolygon polygon;
+        polygon.mCorners[0] = projected[triangle[0]];
+        polygon.mCorners[1] = projected[triangle[1]];
+        polygon.mCorners[2] = projected[triangle[2]];
+        polygon.mCount = 3;
         polygon = ClipPolygon(polygon, &CrushPoint::mSide, inPlan.mSideMin, -1.0);
         polygon = ClipPolygon(polygon, &CrushPoint::mSide, inPlan.mSideMax, 1.0);
         polygon = ClipPolygon(polygon, &CrushPoint::mThird, inPlan.mThirdMin, -1.0);
         polygon = ClipPolygon(polygon, &CrushPoint::mThird, inPlan.mThirdMax, 1.0);
-        if (polygon.empty())
+        if (polygon.mCount == 0)
             continue;
         // Depth is linear over the triangle: its least over the clipped part is at a corner of it.
-        for (const CrushPoint& p : polygon)
-            surface.mFront = std::min(surface.mFront, p.mDepth);
+        for (std::size_t i = 0; i < polygon.mCount; ++i)
+            surface.mFront = std::min(surface.mFront, polygon.mCorners[i].mDepth);
         for (std::uint32_t v : triangle)
-            surface.mCrushAcross = std::max(surface.mCrushAcross, crush(v));
+            surface.mCrushAcross = std::max(surface.mCrushAcross, inPlan.mDirection.dot(positions[v] - rest[v]));
     }
     return surface;
 }
@@ -249,7 +264,13 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     plan.mThirdMin = footprint->mThirdMin;
     plan.mThirdMax = footprint->mThirdMax;
     plan.mWidth = plan.mSideMax - plan.mSideMin;
-    const double spacing = inDeformer.GetMinSpacing();
+    // The lattice's coarsest control spacing along the crush: the layer the spline blends over there.
+    double spacing = 0.0;
+    for (const ffd::FfdLattice& zone : inDeformer.GetZones())
+        spacing = std::max(spacing, (zone.GetSettings().mAxes.transpose() * plan.mDirection)
+                                        .cwiseAbs()
+                                        .cwiseProduct(zone.GetSpacing())
+                                        .sum());
 
     // The impactor meets the body's foremost surface point in the footprint (a low-poly roof may have no
     // vertex there, only a triangle across it); the crush already there is the deepest earlier inward move
@@ -274,14 +295,13 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     if (!(depth >= inMaterial.mMinDeformation) || !(depth > 0.0))
         return std::nullopt;
     plan.mDepth = depth;
-    // The lattice cannot compact a layer thinner than about two control spacings: a shallow crush fades
-    // over that depth instead.
-    plan.mZoneLength = std::max(depth / (1.0 - inMaterial.mCrushedLengthFraction), 2.0 * spacing);
+    // The lattice cannot compact a layer thinner than a control spacing: a shallow crush fades over one.
+    plan.mZoneLength = std::max(depth / (1.0 - inMaterial.mCrushedLengthFraction), spacing);
     // The cubic B-spline blends the field over two spacings on either side of a point: with the compaction
     // starting right at the surface, the struck face would fall short of the impactor by about a fifth of
     // a spacing times the compaction slope (2.8 cm at 56 km/h on a 0.15 m lattice). The outermost spacing is
     // therefore pressed flat against the impactor and the compaction starts behind it.
-    plan.mFlatLayer = std::min(spacing, depth);
+    plan.mFlatLayer = spacing;
     // The pocket's walls slope no steeper than 2:1 (a wall moving the surface by C fades over C / 2), and the
     // fade spans at least two control spacings: a steeper shear tears the lattice's coarse triangles over.
     plan.mRamp = std::max(2.0 * spacing, 0.5 * depth);

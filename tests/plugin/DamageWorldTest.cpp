@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "WorldFixture.h"
 
+#include <crumple/plugin/CampbellCrush.h>
+
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -74,8 +76,11 @@ TEST_CASE("A frontal wall hit dents the front of the car once its window closes"
             REQUIRE(d == Vec3::Zero());
         deepest = std::min(deepest, d.x());
     }
+    // The default material's Campbell crush: the absorbed energy (1 - e^2) m v^2 / 2 over the 1.6 m the
+    // contacts span.
     const DamageMaterial& material = fixture.mWorld.GetObject(fixture.mCarObject)->GetMaterial();
-    CHECK(deepest < -0.5 * material.mMaxInstantDeformation);
+    const double absorbed = (1.0 - e * e) * 0.5 * fixture.mMass * speed * speed;
+    CHECK(-deepest == Approx(CampbellCrushDepth(material, 1.6, absorbed)).epsilon(0.05));
     CHECK(deepest >= -material.mMaxInstantDeformation * (1.0 + 1.0e-12)); // no vertex beyond the instant bound
 }
 

@@ -44,6 +44,7 @@ Collision FrontCollision(const std::vector<std::pair<Vec3, double>>& inPointsAnd
 TEST_CASE("Dent depth is factor x total impulse, shaped by each contact's share", "[plugin]")
 {
     DamageMaterial material;
+    material.mModel = ECrushModel::ImpulseFactor;
     material.mDeformationFactor = 1.0e-5;
     material.mMinDeformation = 0.001;
     material.mMaxInstantDeformation = 0.2;
@@ -100,7 +101,8 @@ TEST_CASE("An impulse threshold leaves small impacts undented and shifts the res
 
 TEST_CASE("Dent depth does not depend on how many points report the same impact", "[plugin]")
 {
-    const DamageMaterial material;
+    DamageMaterial material;
+    material.mModel = ECrushModel::ImpulseFactor;
     DeformableObject four = MakeCar(material, true);
     DeformableObject sixteen = MakeCar(material, true);
     // The same face impact of 9,000 N s, as 4 corner contacts or a 4 x 4 grid, each sharing it evenly.
@@ -130,6 +132,7 @@ TEST_CASE("A wide impact makes one coherent dent", "[plugin]")
     // the corners; without it the centre lags behind. On a lattice whose spacing (0.14-0.33 m here) leaves
     // the centre out of the corners' reach: at 8^3 the quasi-interpolant prior alone already fills it.
     DamageMaterial material;
+    material.mModel = ECrushModel::ImpulseFactor;
     material.mDeformationFactor = 1.0e-5;
     const auto corners = FrontCollision({{Vec3(2.1, -0.6, -0.4), 1000.0}, {Vec3(2.1, 0.6, -0.4), 1000.0},
                                          {Vec3(2.1, -0.6, 0.4), 1000.0}, {Vec3(2.1, 0.6, 0.4), 1000.0}});
@@ -148,6 +151,7 @@ TEST_CASE("A wide impact makes one coherent dent", "[plugin]")
 TEST_CASE("A dent the material's maximum clamps is reported as limited", "[plugin]")
 {
     DamageMaterial material;
+    material.mModel = ECrushModel::ImpulseFactor;
     material.mDeformationFactor = 1.0e-5;
     material.mMaxInstantDeformation = 0.05;
     // 2,000 N s asks for 0.02 m: within the bound. 20,000 N s asks for 0.2 m: clamped to 0.05 m.

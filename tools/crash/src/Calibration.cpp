@@ -55,6 +55,7 @@ Result<VehicleSpec> CalibrateToCampbell(const CrashScenario& inScenario, const C
     const double deepest = inLine.Crush(*std::max_element(inSpeeds.begin(), inSpeeds.end()));
     CrashScenario scenario = inScenario;
     VehicleSpec& vehicle = scenario.mVehicle;
+    vehicle.mMaterial.mModel = plugin::ECrushModel::ImpulseFactor; // the fit is of the factor and the threshold
     vehicle.mMaterial.mMaxInstantDeformation = std::max(1.5 * deepest, vehicle.mMaterial.mMinDeformation);
     vehicle.mMaxTotalDeformation = 1.5 * deepest;
     double correction = 1.0; // simulated crush over requested dent depth
@@ -105,7 +106,8 @@ Status WritePresetFile(const std::filesystem::path& inPath, const std::string& i
     preset["campbell_b0_m_s"] = inLine.mNoDamageSpeed;
     preset["campbell_b1_per_s"] = inLine.mSlope;
     preset["mass_kg"] = inVehicle.mMass;
-    preset["material"] = {{"deformation_factor_m_per_N_s", inVehicle.mMaterial.mDeformationFactor},
+    preset["material"] = {{"crush_model", "impulse_factor"},
+                          {"deformation_factor_m_per_N_s", inVehicle.mMaterial.mDeformationFactor},
                           {"impulse_threshold_N_s", inVehicle.mMaterial.mImpulseThreshold},
                           {"min_deformation_m", inVehicle.mMaterial.mMinDeformation},
                           {"max_deformation_m", inVehicle.mMaterial.mMaxInstantDeformation},

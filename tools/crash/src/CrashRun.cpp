@@ -125,6 +125,14 @@ CarCrushPressure CrushPressure(const common::EngineCrashSettings& inSettings)
 {
     const double mass = inSettings.mMass;
     const double width = 2.0 * inSettings.mHalfExtents.y(), height = 2.0 * inSettings.mHalfExtents.z();
+    if (inSettings.mMaterial.mModel == plugin::ECrushModel::Campbell)
+    {
+        // Campbell's force per unit width A + B C, spread over the front's height.
+        CarCrushPressure crush;
+        crush.mAtZero = inSettings.mMaterial.mCrushA / height;
+        crush.mPerMetre = inSettings.mMaterial.mCrushB / height;
+        return crush;
+    }
     const double b0 = inSettings.mMaterial.mImpulseThreshold / mass;
     CarCrushPressure crush;
     if (!(inSettings.mMaterial.mDeformationFactor > 0.0))

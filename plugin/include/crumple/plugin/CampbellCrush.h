@@ -34,7 +34,7 @@ struct CrushPlan
     double mThirdMin = 0.0, mThirdMax = 0.0; ///< Footprint along mThird (m)
     double mFront = 0.0;          ///< s0: foremost vertex of the footprint along d (m)
     double mDepth = 0.0;          ///< C: crush depth this collision adds (m)
-    double mFlatLayer = 0.0;      ///< Depth behind s0 pressed flat against the impactor (min(spacing, C), m)
+    double mFlatLayer = 0.0;      ///< Depth behind s0 pressed flat against the impactor (a control spacing, m)
     double mZoneLength = 0.0;     ///< L: depth behind the flat layer the crush compacts (m)
     double mRamp = 0.0;           ///< Width of the footprint's fade (m)
     double mWidth = 0.0;          ///< w: the crushed width the energy is spread over (m)

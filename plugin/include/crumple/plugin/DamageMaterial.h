@@ -22,21 +22,24 @@ enum class ECrushModel : std::uint8_t
 };
 
 /// How a deformable object turns impulse into dents (D4MD section 6.1: the "deformable object" properties).
-/// Defaults suit a steel car body: a 1,200 kg car hitting a rigid wall at 15 m/s (about 18 kN s) is crushed
-/// to the instantaneous maximum in one collision.
+/// Defaults: Campbell's crush law with the nominal mid-size car's stiffness, so a 1,575 kg car 1.65 m wide
+/// hitting a rigid wall at 56 km/h crushes 0.55 m, on the line of shared/data/crash/campbell_oracle.csv and
+/// inside its band (0.37-0.74 m). With ECrushModel::ImpulseFactor the factor 2e-5 m/(N s) crushes a 1,200 kg
+/// car hitting a wall at 15 m/s (about 18 kN s) by 0.36 m.
 struct DamageMaterial
 {
     double mDeformationFactor = 2.0e-5;   ///< Dent depth per unit impulse (m/(N s)), >= 0: depth = factor |J|,
                                           ///< like a spring turning force into displacement
     double mMinDeformation = 1.0e-3;      ///< Dents shallower than this are dropped (m), >= 0
-    double mMaxInstantDeformation = 0.3;  ///< Deepest dent one collision can make at a contact (m), >= min
+    double mMaxInstantDeformation = 1.0;  ///< Deepest dent one collision can make at a contact (m), >= min: a
+                                          ///< bound against runaway input, above the crush of a 64 km/h pole hit
     /// The part of a collision's impulse that leaves no permanent dent (N s), >= 0: the depth is
     /// factor (|J| - threshold) when |J| exceeds it. Campbell's linear crush model (SAE 740565) has a
     /// no-damage speed b0 (2.2-4.5 m/s for modern cars, SAE 2010-01-0069): against a rigid barrier that is
     /// an impulse of about (1 + e) m b0. 0 (the default): every impulse dents.
     double mImpulseThreshold = 0.0;
 
-    ECrushModel mModel = ECrushModel::ImpulseFactor; ///< Which of the fields below turn a collision into crush
+    ECrushModel mModel = ECrushModel::Campbell; ///< Which of the fields below turn a collision into crush
 
     // Campbell crush stiffness per unit width (ECrushModel::Campbell). Defaults: the nominal mid-size car
     // (1,450-1,700 kg, 1.65 m wide) of shared/data/crash/campbell_oracle.csv, whose line passes through
