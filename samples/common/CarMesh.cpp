@@ -7,6 +7,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 
@@ -31,8 +33,45 @@ std::filesystem::path SharedDataFolder()
     return std::filesystem::path(CRUMPLE_SOURCE_DIR) / ".." / "shared" / "data";
 }
 
+Result<Mat3> FileToBodyRotation(EMeshAxis inForward, EMeshAxis inUp)
+{
+    auto direction = [](EMeshAxis inAxis) {
+        const auto index = static_cast<int>(inAxis);
+        return Vec3((index % 2 == 0 ? 1.0 : -1.0) * Vec3::Unit(index / 2));
+    };
+    const Vec3 forward = direction(inForward), up = direction(inUp);
+    if (std::abs(forward.dot(up)) > 0.5)
+        return MakeError(EError::InvalidArgument, "the mesh's forward and up axes must be different axes");
+    // Rows: the body's x (forward), y (left = up x forward) and z (up), each in file coordinates.
+    Mat3 rotation;
+    rotation.row(0) = forward.transpose();
+    rotation.row(1) = up.cross(forward).transpose();
+    rotation.row(2) = up.transpose();
+    return rotation;
+}
+
+std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody)
+{
+    if (inBody.mPositions.empty())
+        return {};
+    const ffd::AlignedBox bounds = ffd::BoundingBox(inBody.mPositions);
+    const Vec3 size = bounds.mMax - bounds.mMin;
+    if (size.x() >= size.y())
+        return {};
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "the mesh is %.3g wide across the stated forward axis and %.3g long along it: a car is longer "
+                  "than wide, so it is probably sideways (state its forward axis)",
+                  size.y(), size.x());
+    return text;
+}
+
 Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
 {
+    if (!(std::isfinite(inSettings.mUnit) && inSettings.mUnit >= 0.0))
+        return MakeError(EError::InvalidArgument, "CarMeshSettings.mUnit must be finite and >= 0 m per file unit");
+    if (!(std::isfinite(inSettings.mLength) && inSettings.mLength > 0.0))
+        return MakeError(EError::InvalidArgument, "CarMeshSettings.mLength must be finite and > 0 m");
     if (!std::filesystem::exists(inSettings.mPath))
         return MakeError(EError::IoError, "mesh file not found: " + inSettings.mPath.string());
     Assimp::Importer importer;
@@ -71,10 +110,10 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles in a mesh named '" +
                                                          inSettings.mMeshName + "'");
 
-    // Centre on the bounding box and scale to the wanted length.
+    // Centre on the bounding box and scale by the unit or to the wanted length.
     const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);
     const Vec3 lo = bounds.mMin, hi = bounds.mMax;
-    const double scale = inSettings.mLength / (hi.x() - lo.x());
+    const double scale = inSettings.mUnit > 0.0 ? inSettings.mUnit : inSettings.mLength / (hi.x() - lo.x());
     const Vec3 centre = 0.5 * (lo + hi);
     for (Vec3& p : mesh.mPositions)
         p = scale * (p - centre);

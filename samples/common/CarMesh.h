@@ -5,11 +5,32 @@
 #include <crumple/base/Result.h>
 #include <crumple/ffd/TriangleMesh.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace crumple::samples
 {
+
+/// A signed axis of a mesh file's frame.
+enum class EMeshAxis : std::uint8_t
+{
+    PlusX,
+    MinusX,
+    PlusY,
+    MinusY,
+    PlusZ,
+    MinusZ,
+};
+
+/// "+x", "-x", "+y", "-y", "+z", "-z" in EMeshAxis order (scenario files spell axes so).
+inline constexpr std::string_view cMeshAxisNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+
+/// The rotation from a file's frame to the body frame that takes the file's inForward to +x and inUp to +z
+/// (and so up x forward, the left, to +y). An error when the two are the same axis or opposite.
+Result<Mat3> FileToBodyRotation(EMeshAxis inForward, EMeshAxis inUp);
 
 /// How to turn a mesh file into a car body in Crumple's body frame (x forward, y left, z up, metres,
 /// centred on its bounding box).
@@ -18,14 +39,20 @@ struct CarMeshSettings
     std::filesystem::path mPath;  ///< OBJ, glTF/GLB, PLY, FBX... anything assimp reads
     std::string mMeshName;        ///< Only meshes whose node or mesh name contains this (empty: all)
     Mat3 mFileToBody = Mat3::Identity(); ///< Rotation from the file's axes to x forward, z up
-    double mLength = 4.2;         ///< Scaled so the body is this long along x (m)
+    double mLength = 4.2;         ///< Scaled so the body is this long along x (m), unless mUnit is set
+    double mUnit = 0.0;           ///< Metres per file unit (0.0254 for inches), > 0; 0: scale to mLength instead
 };
+
+/// Empty when the body's x extent (the stated forward axis) is its longest horizontal one; otherwise why a
+/// car loaded so is probably sideways (a y-forward file read as x-forward), with both extents.
+std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody);
 
 /// The shipped Khronos Toy Car (CC0) as a 4.2 m car: its "ToyCar" body mesh, Y up and Z forward in the file.
 CarMeshSettings ToyCarMesh(const std::filesystem::path& inSharedData);
 
-/// Loads, transforms and welds a car body mesh with assimp. A missing or unreadable file, or one without
-/// the named mesh, is an error with the reason.
+/// Loads, transforms and welds a car body mesh with assimp, centred on its bounding box, scaled by mUnit or
+/// to mLength. A missing or unreadable file, one without the named mesh, or a bad mUnit or mLength is an
+/// error with the reason.
 Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings);
 
 /// Where the project's shared data folder is: CRUMPLE_SHARED_DATA if set, else ../shared/data beside the

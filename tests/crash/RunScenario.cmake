@@ -1,17 +1,20 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # cmake -DCRASH=<crumple-crash> -DSCENARIO=<file> -DOUT=<dir> -DEXPECT_EXIT=<0|1|2> [-DEXPECT_TEXT=<regex>]
-#       [-DREPLAY=<crumple-replay>] -P RunScenario.cmake
+#       [-DREJECT_TEXT=<regex>] [-DARGS=<extra arguments, ;-separated>] [-DREPLAY=<crumple-replay>] -P RunScenario.cmake
 # Runs one scenario and checks the exit status, the message, and what was (or was not) written; with REPLAY,
 # also that replaying the run's recording headless gives a byte-identical deformed mesh.
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${CRASH} ${SCENARIO} --out ${OUT} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+execute_process(COMMAND ${CRASH} ${SCENARIO} --out ${OUT} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}${err}")
 if(NOT code EQUAL EXPECT_EXIT)
     message(FATAL_ERROR "crumple-crash exited ${code}, expected ${EXPECT_EXIT}")
 endif()
 if(DEFINED EXPECT_TEXT AND NOT "${out}${err}" MATCHES "${EXPECT_TEXT}")
     message(FATAL_ERROR "the output does not say '${EXPECT_TEXT}'")
+endif()
+if(DEFINED REJECT_TEXT AND "${out}${err}" MATCHES "${REJECT_TEXT}")
+    message(FATAL_ERROR "the output says '${REJECT_TEXT}'")
 endif()
 if(EXPECT_EXIT EQUAL 2)
     if(EXISTS ${OUT})

@@ -26,7 +26,9 @@ set(crash_malformed
     "truncated|line"
     "unknown_engine|/engine"
     "nan_speed|/impact/speed_km_h: must be a number"
-    "corrupt_mesh|cannot read")
+    "corrupt_mesh|cannot read"
+    "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
+    "mesh_unit_and_length|/vehicle/mesh_unit_m: give either")
 foreach(entry IN LISTS crash_malformed)
     string(REPLACE "|" ";" parts "${entry}")
     list(GET parts 0 name)
@@ -38,6 +40,22 @@ foreach(entry IN LISTS crash_malformed)
     set_tests_properties("crash: malformed ${name} exits 2 with its message" PROPERTIES LABELS crash)
 endforeach()
 set_tests_properties("crash: a failing expectation exits 1 and names it" PROPERTIES LABELS crash)
+
+# Mesh axes: a y-forward file read with the default axes runs with a warning, --strict refuses it, and the
+# same file with its forward axis, up axis and unit stated runs clean under --strict.
+add_test(NAME "crash: a sideways mesh runs with a warning"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
+            -DOUT=${crash_out}/sideways -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING hatchback.obj: .*probably sideways"
+            -P ${crash_script})
+add_test(NAME "crash: --strict refuses a sideways mesh"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
+            -DOUT=${crash_out}/sideways-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=refused by --strict"
+            -P ${crash_script})
+add_test(NAME "crash: a mesh with its axes and unit stated runs clean under --strict"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stated_mesh_axes.json
+            -DOUT=${crash_out}/stated-axes -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING -P ${crash_script})
+set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
+    "crash: a mesh with its axes and unit stated runs clean under --strict" PROPERTIES LABELS crash)
 
 # Calibration: fitting reaches Campbell's line within 10 % over 20-64 km/h, and the shipped mid-size preset,
 # read back from its file, reproduces it (exit 0 within 10 %, 1 otherwise).

@@ -36,6 +36,8 @@ void PrintUsage(std::FILE* inStream)
                  "  crumple-replay) and PNG pictures. Exit status: 0 all expectations hold, 1 one failed,\n"
                  "  2 bad scenario or command line (nothing written).\n"
                  "  --no-pictures  skip the renders (no EGL context is made)\n"
+                 "  --strict       refuse a mesh whose stated forward axis is not its longest horizontal extent\n"
+                 "                 (without it the run goes on and the report carries a warning)\n"
                  "  --calibrate --b0 B0 --b1 B1 [--preset-name NAME] [--source TEXT]\n"
                  "      fit the vehicle material so that the scenario (a full-frontal rigid-wall crash) reproduces\n"
                  "      Campbell's line C = (v - B0) / B1 (B0 in m/s, B1 in 1/s) at 20, 30, 40, 48, 56 and 64 km/h;\n"
@@ -105,12 +107,12 @@ int RunCampbell(const CrashScenario& inScenario, const CampbellLine& inLine, boo
 
 int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
         bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
-        const std::string& inSource, bool inPictures, const std::filesystem::path& inOut);
+        const std::string& inSource, bool inPictures, bool inStrict, const std::filesystem::path& inOut);
 
 int main(int argc, char** argv)
 {
     std::filesystem::path scenario_path, out;
-    bool pictures = true, calibrate = false, campbell_check = false;
+    bool pictures = true, calibrate = false, campbell_check = false, strict = false;
     CampbellLine line{std::nan(""), std::nan("")};
     std::string preset_name = "calibrated", source = "crumple-crash --calibrate", sweep;
     int workers = 2;
@@ -133,7 +135,9 @@ int main(int argc, char** argv)
             std::printf("crumple-crash %s\n", VersionString());
             return cExitPass;
         }
-        if (arg == "--no-pictures")
+        if (arg == "--strict")
+            strict = true;
+        else if (arg == "--no-pictures")
             pictures = false;
         else if (arg == "--calibrate")
             calibrate = true;
@@ -216,7 +220,7 @@ int main(int argc, char** argv)
     }
     // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing.
     const int status = Run(scenario.Get(), sweep, sweep_spec.Get(), workers, calibrate || campbell_check, calibrate,
-                           line, preset_name, source, pictures, out);
+                           line, preset_name, source, pictures, strict, out);
     if (status == cExitBadInput && made_folder)
         std::filesystem::remove_all(out, error);
     return status;
@@ -224,7 +228,7 @@ int main(int argc, char** argv)
 
 int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
         bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
-        const std::string& inSource, bool inPictures, const std::filesystem::path& inOut)
+        const std::string& inSource, bool inPictures, bool inStrict, const std::filesystem::path& inOut)
 {
     const CrashScenario& scenario = inScenario;
     const std::filesystem::path& out = inOut;
@@ -249,7 +253,7 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
     // Run, then the outputs: replay (written during the run), report, deformed mesh, pictures.
     std::printf("crumple-crash: running %s on %s for %.2f s\n", scenario.mName.c_str(),
                 ToString(scenario.mEngine), scenario.mDuration);
-    Result<CrashOutcome> outcome = RunCrash(scenario, CrashRunOptions{out / "replay.crumple"});
+    Result<CrashOutcome> outcome = RunCrash(scenario, CrashRunOptions{out / "replay.crumple", inStrict});
     if (outcome.HasError())
     {
         std::fprintf(stderr, "crumple-crash: %s\n", outcome.GetError().mMessage.c_str());

@@ -113,6 +113,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     report["collisions"] = collisions;
     report["folded_vertices"] = inOutcome.mFoldedVertices;
     report["folded_triangles"] = inOutcome.mFoldedTriangles;
+    report["warnings"] = inOutcome.mWarnings;
     report["crush_profile"] = {{"damage_width_m", inOutcome.mFrontProfile.mDamageWidth},
                                {"C_m", inOutcome.mFrontProfile.mC},
                                {"average_m", inOutcome.mFrontProfile.Average()}};
@@ -151,6 +152,8 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
                  inOutcome.mOutwardDisplacement);
+    for (const std::string& warning : inOutcome.mWarnings)
+        std::fprintf(inStream, "  WARNING %s\n", warning.c_str());
     const CrushProfile& profile = inOutcome.mFrontProfile;
     std::fprintf(inStream, "  front crush profile over %.2f m: C1..C6 %.3f %.3f %.3f %.3f %.3f %.3f m, average %.3f m\n",
                  profile.mDamageWidth, profile.mC[0], profile.mC[1], profile.mC[2], profile.mC[3], profile.mC[4],
@@ -217,6 +220,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
+    for (const std::string& warning : inOutcome.mWarnings)
+        row("<span class=\"fail\">warning</span>", Escape(warning));
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";

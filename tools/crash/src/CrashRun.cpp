@@ -52,7 +52,8 @@ Vec3 ShellInertia(const ffd::TriangleMesh& inMesh, const Vec3& inCentre, double 
 }
 
 // The scenario in the shared engine scene's terms.
-Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenario)
+Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenario, const CrashRunOptions& inOptions,
+                                                  std::vector<std::string>& outWarnings)
 {
     const VehicleSpec& vehicle = inScenario.mVehicle;
     common::EngineCrashSettings settings;
@@ -103,12 +104,30 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         mesh.mPath = vehicle.mMesh;
         mesh.mMeshName = vehicle.mMeshName;
         mesh.mLength = vehicle.mMeshLength;
+        mesh.mUnit = vehicle.mMeshUnit;
         const std::string extension = vehicle.mMesh.extension().string();
-        if (extension == ".gltf" || extension == ".glb")
-            mesh.mFileToBody << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+        const bool gltf = extension == ".gltf" || extension == ".glb";
+        const auto forward = vehicle.mMeshForwardAxis >= 0 ? static_cast<samples::EMeshAxis>(vehicle.mMeshForwardAxis)
+                                                           : (gltf ? samples::EMeshAxis::PlusZ : samples::EMeshAxis::PlusX);
+        const auto up = vehicle.mMeshUpAxis >= 0 ? static_cast<samples::EMeshAxis>(vehicle.mMeshUpAxis)
+                                                 : (gltf ? samples::EMeshAxis::PlusY : samples::EMeshAxis::PlusZ);
+        Result<Mat3> rotation = samples::FileToBodyRotation(forward, up);
+        if (rotation.HasError())
+            return rotation.GetError();
+        mesh.mFileToBody = rotation.Get();
         Result<ffd::TriangleMesh> loaded = samples::LoadCarMesh(mesh);
         if (loaded.HasError())
             return loaded.GetError();
+        if (const std::string warning = samples::ForwardAxisWarning(loaded.Get()); !warning.empty())
+        {
+            const std::string text = vehicle.mMesh.filename().string() + ": " + warning + " (forward " +
+                                     std::string(samples::cMeshAxisNames[static_cast<int>(forward)]) + ", up " +
+                                     std::string(samples::cMeshAxisNames[static_cast<int>(up)]) +
+                                     "; scenario keys mesh_forward_axis and mesh_up_axis)";
+            if (inOptions.mStrictMesh)
+                return MakeError(EError::InvalidArgument, text + "; refused by --strict");
+            outWarnings.push_back(text);
+        }
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);
         settings.mHalfExtents = 0.5 * (bounds.mMax - bounds.mMin);
@@ -342,6 +361,7 @@ CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const 
         return profile;
     profile.mDamageWidth = hi - lo;
     const double spacing = profile.mDamageWidth / 5.0;
+    std::array<bool, 6> measured{};
     for (std::size_t v = 0; v < inPositions.size(); ++v)
     {
         const Vec3& rest = inRest.mPositions[v];
@@ -350,7 +370,22 @@ CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const 
         const double crush = rest.x() - inPositions[v].x();
         for (std::size_t station = 0; station < 6; ++station)
             if (std::abs(rest.y() - (lo + static_cast<double>(station) * spacing)) <= 0.5 * spacing)
-                profile.mC[station] = std::max(profile.mC[station], crush);
+            {
+                profile.mC[station] = measured[station] ? std::max(profile.mC[station], crush) : crush;
+                measured[station] = true;
+            }
+    }
+    // A coarse mesh may have no vertex near a station (a low-poly body's wide front face): it takes the
+    // line between the nearest measured stations on either side (the two ends are always measured).
+    for (std::size_t station = 1; station + 1 < 6; ++station)
+    {
+        if (measured[station])
+            continue;
+        std::size_t left = station - 1, right = station + 1;
+        while (!measured[right])
+            ++right;
+        const double t = static_cast<double>(station - left) / static_cast<double>(right - left);
+        profile.mC[station] = (1.0 - t) * profile.mC[left] + t * profile.mC[right];
     }
     return profile;
 }
@@ -402,25 +437,32 @@ double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPo
 
 Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOptions& inOptions)
 {
-    Result<common::EngineCrashSettings> settings = SceneSettings(inScenario);
+    std::vector<std::string> warnings;
+    Result<common::EngineCrashSettings> settings = SceneSettings(inScenario, inOptions, warnings);
     if (settings.HasError())
         return settings.GetError();
+    Result<CrashOutcome> outcome = MakeError(EError::InvalidArgument, "unknown engine");
     switch (inScenario.mEngine)
     {
     case EEngine::Bullet:
 #if defined(CRUMPLE_CRASH_BULLET)
-        return RunScene<common::BulletWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
+        outcome = RunScene<common::BulletWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
 #else
-        return MakeError(EError::InvalidArgument, "crumple-crash was built without Bullet (libbullet-dev)");
+        outcome = MakeError(EError::InvalidArgument, "crumple-crash was built without Bullet (libbullet-dev)");
 #endif
+        break;
     case EEngine::Ode:
 #if defined(CRUMPLE_CRASH_ODE)
-        return RunScene<common::OdeWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
+        outcome = RunScene<common::OdeWallCrash>(settings.Get(), inOptions, inScenario.mTarget);
 #else
-        return MakeError(EError::InvalidArgument, "crumple-crash was built without ODE (libode-dev)");
+        outcome = MakeError(EError::InvalidArgument, "crumple-crash was built without ODE (libode-dev)");
 #endif
+        break;
     }
-    return MakeError(EError::InvalidArgument, "unknown engine");
+    if (outcome.HasError())
+        return outcome;
+    outcome.Get().mWarnings = std::move(warnings);
+    return outcome;
 }
 
 } // namespace crumple::crash

@@ -452,7 +452,8 @@ class ScenarioReader
     {
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
-                       {{"mesh", "mesh_name", "mesh_length_m", "box_size_m", "mass_kg", "inertia_kg_m2",
+                       {{"mesh", "mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
+                         "box_size_m", "mass_kg", "inertia_kg_m2",
                          "inertia_from", "control_count", "control_spacing_m", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
@@ -487,7 +488,27 @@ class ScenarioReader
             ioVehicle.mMeshName = name->get<std::string>();
         }
 
-        if (!ReadNumber(inVehicle, inPointer, "mesh_length_m", NumberRange::Positive(), false,
+        if (inVehicle.contains("mesh_unit_m") && inVehicle.contains("mesh_length_m"))
+            return Fail(EError::InvalidArgument, Child(inPointer, "mesh_unit_m"),
+                        "give either mesh_unit_m (the file's unit) or mesh_length_m (a length to scale to), not both");
+        for (const auto& [key, axis] : {std::pair<std::string_view, int*>{"mesh_forward_axis", &ioVehicle.mMeshForwardAxis},
+                                        std::pair<std::string_view, int*>{"mesh_up_axis", &ioVehicle.mMeshUpAxis}})
+        {
+            if (!inVehicle.contains(key))
+                continue;
+            std::size_t index = 0;
+            if (!ReadEnum(inVehicle, inPointer, key, {"+x", "-x", "+y", "-y", "+z", "-z"}, {}, true, index))
+                return false;
+            *axis = static_cast<int>(index);
+        }
+        if ((ioVehicle.mMeshForwardAxis >= 0) != (ioVehicle.mMeshUpAxis >= 0))
+            return Fail(EError::InvalidArgument, Child(inPointer, ioVehicle.mMeshUpAxis >= 0 ? "mesh_up_axis" : "mesh_forward_axis"),
+                        "needs mesh_forward_axis and mesh_up_axis together");
+        if (ioVehicle.mMeshForwardAxis >= 0 && ioVehicle.mMeshForwardAxis / 2 == ioVehicle.mMeshUpAxis / 2)
+            return Fail(EError::InvalidArgument, Child(inPointer, "mesh_up_axis"),
+                        "must be another axis than mesh_forward_axis");
+        if (!ReadNumber(inVehicle, inPointer, "mesh_unit_m", NumberRange::Positive(), false, ioVehicle.mMeshUnit) ||
+            !ReadNumber(inVehicle, inPointer, "mesh_length_m", NumberRange::Positive(), false,
                         ioVehicle.mMeshLength) ||
             !ReadVec3(inVehicle, inPointer, "box_size_m", NumberRange::Positive(), ioVehicle.mBoxSize) ||
             !ReadNumber(inVehicle, inPointer, "mass_kg", NumberRange::Positive(), true, ioVehicle.mMass))

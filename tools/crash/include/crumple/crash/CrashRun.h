@@ -10,6 +10,7 @@
 #include <limits>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace crumple::crash
@@ -41,6 +42,7 @@ struct CrashOutcome
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
     int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
     int mFoldedTriangles = 0;               ///< Car body triangles turned over (FoldedTriangles)
+    std::vector<std::string> mWarnings;     ///< What the run doubts about its input (a sideways mesh)
     CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
@@ -76,6 +78,9 @@ struct CrashOutcome
 struct CrashRunOptions
 {
     std::filesystem::path mReplayFile;
+    /// Refuse a mesh whose stated forward axis is not its longest horizontal extent (samples::ForwardAxisWarning)
+    /// instead of running it with a warning
+    bool mStrictMesh = false;
 };
 
 /// Loads the vehicle mesh (if any), builds the scene in the scenario's engine (a ground plane, the target,

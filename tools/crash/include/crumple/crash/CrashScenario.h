@@ -51,8 +51,12 @@ struct VehicleSpec
                                        ///< path in a file is relative to the scenario file's folder;
                                        ///< ParseCrashScenario stores the resolved path
     std::string mMeshName;             ///< Only the file's meshes whose name contains this (empty: all)
-    double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0; glTF files are
-                                       ///< +y up, +z forward (their specification), others x forward, z up
+    double mMeshLength = 4.2;          ///< A mesh is scaled to this length along x (m), > 0, unless mMeshUnit is set
+    double mMeshUnit = 0.0;            ///< Metres per file unit (0.0254: inches), > 0; 0: scale to mMeshLength
+    /// The file's forward and up axes, as indices of samples::EMeshAxis (+x, -x, +y, -y, +z, -z); -1: by file
+    /// type, glTF +z forward and +y up (its specification), others +x forward and +z up
+    int mMeshForwardAxis = -1;
+    int mMeshUpAxis = -1;
     Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box (m); a mesh's collision box is its
                                        ///< bounding box
     double mMass = 1200.0;             ///< kg, > 0
