@@ -31,7 +31,8 @@ if(CRUMPLE_BUILD_TESTS)
     # The runner's private parts (the FEM barrier coupling), against known answers.
     find_package(Catch2 REQUIRED) # imported targets are per directory
     include(Catch)
-    add_executable(test_crash_run ${PROJECT_SOURCE_DIR}/tests/TestMain.cpp ${PROJECT_SOURCE_DIR}/tests/crash/FemBarrierCouplingTest.cpp)
+    add_executable(test_crash_run ${PROJECT_SOURCE_DIR}/tests/TestMain.cpp ${PROJECT_SOURCE_DIR}/tests/crash/FemBarrierCouplingTest.cpp
+        ${PROJECT_SOURCE_DIR}/tests/crash/CrushModelTest.cpp)
     target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
     target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)
     catch_discover_tests(test_crash_run TEST_PREFIX "crash: " PROPERTIES LABELS crash)

@@ -59,7 +59,7 @@ struct EngineCrashSettings
     std::optional<Vec3> mInertia;      ///< Principal moments of inertia (kg m^2); empty: those of the box
     double mWallAngleDegrees = 0.0;    ///< The wall turned about the vertical through the origin (degrees)
     double mOffset = 0.0;              ///< The car's start y, sideways from the wall's centre line (m)
-    double mMaxTotalDeformation = 1.0; ///< Most any vertex of the car may ever move (m)
+    double mMaxTotalDeformation = 1.5; ///< Most any vertex of the car may ever move (m)
     std::vector<ffd::FfdZoneSettings> mZones; ///< The car's deformation zones; empty: one fitted zone
     double mPoleRadius = 0.0;          ///< > 0: the target is a vertical pole of this radius at the origin, not a wall
     double mOverlapFraction = 1.0;     ///< < 1: the wall covers only this share of the car's width, on its +y side

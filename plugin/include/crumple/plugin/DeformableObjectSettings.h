@@ -27,7 +27,7 @@ struct DeformableObjectSettings
     /// and moved the roof by half the crush). Finer costs controls, not dent time: the direct-manipulation
     /// solve scales with the points of a dent and the vertices it reaches, not with the lattice.
     double mFittedControlSpacing = 0.15;
-    double mFittedMaxTotalDeformation = 1.0;          ///< Max total deformation of the fitted zone (m)
+    double mFittedMaxTotalDeformation = 1.5;          ///< Max total deformation of the fitted zone (m)
     bool mInterpolateWideImpacts = true; ///< Fill gaps between contacts wider than the lattice spacing
     /// The body's up direction (body frame, unit): the Campbell crush measures its width across it
     Vec3 mUpAxis = Vec3::UnitZ();

@@ -67,7 +67,7 @@ struct VehicleSpec
     /// mesh's triangles (area-weighted), about the box centre, its diagonal taken as the principal moments
     bool mInertiaFromMesh = false;
     plugin::DamageMaterial mMaterial;  ///< Dent per impulse and its limits
-    double mMaxTotalDeformation = 1.0; ///< Most any vertex may ever move, all collisions together (m), >= 0
+    double mMaxTotalDeformation = 1.5; ///< Most any vertex may ever move, all collisions together (m), >= 0
     std::array<int, 3> mControlCount{{0, 0, 0}}; ///< FFD controls of the fitted zone, each >= 4; 0: from mControlSpacing
     double mControlSpacing = 0.15; ///< Control spacing (m) of zones without a control count (DeformableObjectSettings)
     /// Deformation zones (axis-aligned boxes in the body frame, each with its controls and total bound); empty:

@@ -1,0 +1,199 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// The crush model over the shipped car meshes and the box car, in both engines: frontal, 40 % offset, pole
+// and 30-degree wall at 20-64 km/h with the default material (Campbell's law, mid-size class).
+#include "CarMesh.h"
+
+#include <crumple/crash/CrashRun.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace crumple;
+using namespace crumple::crash;
+
+namespace
+{
+
+struct Body
+{
+    std::string mName;
+    VehicleSpec mVehicle;
+};
+
+std::vector<Body> Bodies()
+{
+    const std::filesystem::path meshes = samples::SharedDataFolder() / "meshes";
+    std::vector<Body> bodies;
+    Body box{"box car", {}};
+    box.mVehicle.mBoxSize = Vec3(4.4, 1.65, 1.4);
+    box.mVehicle.mMass = 1575.0;
+    bodies.push_back(box);
+    Body toy{"Toy Car", {}};
+    toy.mVehicle.mMesh = meshes / "toycar" / "ToyCar_geometry.gltf";
+    toy.mVehicle.mMeshName = "ToyCar";
+    toy.mVehicle.mMass = 1200.0;
+    bodies.push_back(toy);
+    Body truck{"Kenney truck", {}};
+    truck.mVehicle.mMesh = meshes / "kenney_truck" / "vehicle-truck-red.glb";
+    truck.mVehicle.mMeshLength = 4.8;
+    truck.mVehicle.mMass = 1800.0;
+    bodies.push_back(truck);
+    Body hatchback{"Gazebo hatchback", {}};
+    hatchback.mVehicle.mMesh = meshes / "gazebo_hatchback" / "hatchback.obj";
+    hatchback.mVehicle.mMeshName = "Hatchback";
+    hatchback.mVehicle.mMeshForwardAxis = static_cast<int>(samples::EMeshAxis::MinusY);
+    hatchback.mVehicle.mMeshUpAxis = static_cast<int>(samples::EMeshAxis::PlusZ);
+    hatchback.mVehicle.mMeshUnit = 0.0254;
+    hatchback.mVehicle.mMass = 1200.0;
+    bodies.push_back(hatchback);
+    return bodies;
+}
+
+std::vector<std::pair<std::string, TargetSpec>> Targets()
+{
+    TargetSpec wall, offset, pole, angled;
+    offset.mType = ETarget::OffsetWall;
+    pole.mType = ETarget::Pole;
+    angled.mAngleDegrees = 30.0;
+    return {{"full wall", wall}, {"40 % offset", offset}, {"pole", pole}, {"30-degree wall", angled}};
+}
+
+constexpr std::array<double, 4> cSpeedsKmh{20.0, 40.0, 56.0, 64.0};
+
+struct Run
+{
+    CrashOutcome mOutcome;
+    double mFront = 0.0;
+};
+
+// Every body x target x speed x engine, run once for all the checks below.
+const std::map<std::string, Run>& Runs()
+{
+    static const std::map<std::string, Run> runs = [] {
+        std::map<std::string, Run> all;
+        for (const Body& body : Bodies())
+            for (const auto& [target_name, target] : Targets())
+                for (double km_h : cSpeedsKmh)
+                    for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+                    {
+                        CrashScenario scenario;
+                        scenario.mName = body.mName;
+                        scenario.mEngine = engine;
+                        scenario.mDuration = 0.3;
+                        scenario.mVehicle = body.mVehicle;
+                        scenario.mTarget = target;
+                        scenario.mImpact.mSpeed = km_h / 3.6;
+                        scenario.mPictures = false;
+                        Result<CrashOutcome> outcome = RunCrash(scenario, {});
+                        REQUIRE(outcome);
+                        const std::string key = body.mName + ", " + target_name + ", " + std::to_string(static_cast<int>(km_h)) +
+                                                " km/h, " + ToString(engine);
+                        Run run{outcome.Get(), outcome.Get().mResidualCrush[static_cast<int>(EZone::Front)]};
+                        all.emplace(key, std::move(run));
+                    }
+        return all;
+    }();
+    return runs;
+}
+
+const Run& Find(const std::string& inBody, const std::string& inTarget, double inKmh, EEngine inEngine)
+{
+    return Runs().at(inBody + ", " + inTarget + ", " + std::to_string(static_cast<int>(inKmh)) + " km/h, " +
+                     ToString(inEngine));
+}
+
+} // namespace
+
+TEST_CASE("Crush model: the same crash crushes the same in Bullet and ODE, within 5 %", "[crash][slow]")
+{
+    for (const Body& body : Bodies())
+        for (const auto& [target, spec] : Targets())
+            for (double km_h : cSpeedsKmh)
+            {
+                const double bullet = Find(body.mName, target, km_h, EEngine::Bullet).mFront;
+                const double ode = Find(body.mName, target, km_h, EEngine::Ode).mFront;
+                INFO(body.mName << ", " << target << ", " << km_h << " km/h: Bullet " << bullet << " m, ODE " << ode << " m");
+                CHECK(std::abs(bullet - ode) <= 0.05 * std::max(bullet, ode));
+            }
+}
+
+TEST_CASE("Crush model: front crush grows with speed in both engines", "[crash][slow]")
+{
+    for (const Body& body : Bodies())
+        for (const auto& [target, spec] : Targets())
+            for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+                for (std::size_t i = 1; i < cSpeedsKmh.size(); ++i)
+                {
+                    const double slower = Find(body.mName, target, cSpeedsKmh[i - 1], engine).mFront;
+                    const double faster = Find(body.mName, target, cSpeedsKmh[i], engine).mFront;
+                    INFO(body.mName << ", " << target << ", " << ToString(engine) << ": " << cSpeedsKmh[i - 1] << " km/h "
+                                    << slower << " m, " << cSpeedsKmh[i] << " km/h " << faster << " m");
+                    CHECK(faster > slower);
+                }
+}
+
+TEST_CASE("Crush model: a pole crushes deeper than a full wall at the same speed", "[crash][slow]")
+{
+    for (const Body& body : Bodies())
+        for (double km_h : cSpeedsKmh)
+            for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+            {
+                const double wall = Find(body.mName, "full wall", km_h, engine).mFront;
+                const double pole = Find(body.mName, "pole", km_h, engine).mFront;
+                INFO(body.mName << ", " << km_h << " km/h, " << ToString(engine) << ": wall " << wall << " m, pole " << pole << " m");
+                CHECK(pole > 1.2 * wall);
+            }
+}
+
+TEST_CASE("Crush model: the rear never moves and no vertex moves out against the crush by more than 1 cm", "[crash][slow]")
+{
+    for (const auto& [name, run] : Runs())
+    {
+        INFO(name << ": rear " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] << " m, outward "
+                  << run.mOutcome.mOutwardDisplacement << " m, front " << run.mFront << " m");
+        CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] <= 0.02 * run.mFront);
+        CHECK(run.mOutcome.mOutwardDisplacement <= 0.01);
+    }
+}
+
+TEST_CASE("Crush model: a 56 km/h full-width hit crushes inside Campbell's band", "[crash][slow]")
+{
+    // shared/data/crash/campbell_oracle.csv: 0.369-0.742 m at 56 km/h for every class (the default
+    // material is the mid-size class; the bodies' masses and widths differ from it).
+    for (const Body& body : Bodies())
+        for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+        {
+            const Run& run = Find(body.mName, "full wall", 56.0, engine);
+            INFO(body.mName << ", " << ToString(engine) << ": front " << run.mFront << " m, CRASH3 average "
+                            << run.mOutcome.mFrontProfile.Average() << " m");
+            CHECK(run.mFront >= 0.369);
+            CHECK(run.mFront <= 0.742);
+        }
+}
+
+TEST_CASE("Crush model: the roof moves less than 2 % of the front crush", "[crash][slow][!mayfail]")
+{
+    // Known to fail: a crush deeper than about 0.7 m (narrow hits past 40 km/h) compacts a zone that reaches
+    // the front of the roof zone (the top fifth behind the front quarter) of the box car and the Toy Car.
+    for (const auto& [name, run] : Runs())
+    {
+        INFO(name << ": roof " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] << " m, front " << run.mFront << " m");
+        CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] <= 0.02 * run.mFront);
+    }
+}
+
+TEST_CASE("Crush model: no triangle turns over", "[crash][slow][!mayfail]")
+{
+    // Known to fail on the Toy Car (thin trims and lights) at the walls of pole and offset pockets, and at
+    // the leading corner of the 30-degree wall: 100-420 of its 88,837 triangles.
+    for (const auto& [name, run] : Runs())
+    {
+        INFO(name << ": " << run.mOutcome.mFoldedTriangles << " triangles turned over");
+        CHECK(run.mOutcome.mFoldedTriangles == 0);
+    }
+}
