@@ -22,7 +22,7 @@ int main(int argc, char** argv)
             std::printf("usage: crumple-bench [--quick] [--only GROUP] [--csv FILE]\n"
                         "  Times every benchmark (median of repetitions) and reports its error.\n"
                         "  --quick       few repetitions on small meshes (a smoke run)\n"
-                        "  --only GROUP  one group: dent, impulse, adapter, frame_budget, fem, barrier or gpu\n"
+                        "  --only GROUP  one group: dent, impulse, adapter, frame_budget, fem, barrier, crush or gpu\n"
                         "  --csv FILE    also write rows benchmark,case,median_ms,error,error_unit,extra\n");
             return 0;
         }
@@ -48,7 +48,8 @@ int main(int argc, char** argv)
     const std::pair<const char*, Group> groups[] = {
         {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
         {"frame_budget", RunFrameBudgetBenchmarks},
-        {"fem", RunFemBenchmarks},   {"barrier", RunBarrierBenchmarks}, {"gpu", RunGpuBenchmarks}};
+        {"fem", RunFemBenchmarks},   {"barrier", RunBarrierBenchmarks}, {"crush", RunCrushBenchmarks},
+        {"gpu", RunGpuBenchmarks}};
     bool known = only.empty();
     for (const auto& [name, run] : groups)
         known = known || only == name;

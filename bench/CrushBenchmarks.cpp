@@ -1,0 +1,113 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "Benchmarks.h"
+
+#if defined(CRUMPLE_BENCH_CRASH)
+#include "CarMesh.h"
+
+#include <crumple/crash/CrashRun.h>
+#include <crumple/ffd/BoundingBox.h>
+#include <crumple/plugin/CampbellCrush.h>
+#include <crumple/plugin/DamageWorldSettings.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace crumple::bench
+{
+
+void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+#if defined(CRUMPLE_BENCH_CRASH)
+    // Full-width rigid-wall crashes of every body in each engine, default material (Campbell's law, mid-size
+    // class): the simulated front crush against the law's own answer for the body's mass and width,
+    // C(E / w) with E = (1 - e^2) m v^2 / 2 (the energy Baraff's impulse takes at restitution e), and against
+    // the oracle's nominal mid-size line (shared/data/crash/campbell_oracle.csv, b0 = 2.173 m/s,
+    // b1 = 24.07 1/s), beside the run time of a whole 0.3 s crash.
+    using namespace crash;
+    const std::filesystem::path meshes = samples::SharedDataFolder() / "meshes";
+    struct Body
+    {
+        const char* mName;
+        VehicleSpec mVehicle;
+    };
+    std::vector<Body> bodies;
+    {
+        Body box{"box", {}};
+        box.mVehicle.mBoxSize = Vec3(4.4, 1.65, 1.4);
+        box.mVehicle.mMass = 1575.0;
+        bodies.push_back(box);
+        Body toy{"toycar", {}};
+        toy.mVehicle.mMesh = meshes / "toycar" / "ToyCar_geometry.gltf";
+        toy.mVehicle.mMeshName = "ToyCar";
+        toy.mVehicle.mMass = 1200.0;
+        bodies.push_back(toy);
+        Body truck{"truck", {}};
+        truck.mVehicle.mMesh = meshes / "kenney_truck" / "vehicle-truck-red.glb";
+        truck.mVehicle.mMeshLength = 4.8;
+        truck.mVehicle.mMass = 1800.0;
+        bodies.push_back(truck);
+        Body hatchback{"hatchback", {}};
+        hatchback.mVehicle.mMesh = meshes / "gazebo_hatchback" / "hatchback.obj";
+        hatchback.mVehicle.mMeshName = "Hatchback";
+        hatchback.mVehicle.mMeshForwardAxis = static_cast<int>(samples::EMeshAxis::MinusY);
+        hatchback.mVehicle.mMeshUpAxis = static_cast<int>(samples::EMeshAxis::PlusZ);
+        hatchback.mVehicle.mMeshUnit = 0.0254;
+        hatchback.mVehicle.mMass = 1200.0;
+        bodies.push_back(hatchback);
+    }
+    const std::vector<double> speeds = inOptions.mQuick ? std::vector<double>{56.0}
+                                                        : std::vector<double>{20.0, 30.0, 40.0, 48.0, 56.0, 64.0};
+    for (const Body& body : bodies)
+        for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+        {
+            if (inOptions.mQuick && (engine == EEngine::Ode || std::string(body.mName) != "box"))
+                continue;
+            std::vector<double> times, law_errors, line_errors;
+            for (double km_h : speeds)
+            {
+                CrashScenario scenario;
+                scenario.mEngine = engine;
+                scenario.mDuration = 0.3;
+                scenario.mVehicle = body.mVehicle;
+                scenario.mImpact.mSpeed = km_h / 3.6;
+                scenario.mPictures = false;
+                const auto start = std::chrono::steady_clock::now();
+                const Result<CrashOutcome> outcome = RunCrash(scenario, {});
+                times.push_back(ElapsedMs(start));
+                if (outcome.HasError())
+                    continue;
+                const double crush = outcome.Get().mResidualCrush[static_cast<int>(EZone::Front)];
+                const double width = ffd::BoundingBox(outcome.Get().mRestMesh.mPositions).mMax.y() -
+                                     ffd::BoundingBox(outcome.Get().mRestMesh.mPositions).mMin.y();
+                const double v = scenario.mImpact.mSpeed, e = plugin::DamageWorldSettings{}.mRestitution;
+                const double law = plugin::CampbellCrushDepth(body.mVehicle.mMaterial, width,
+                                                              (1.0 - e * e) * 0.5 * body.mVehicle.mMass * v * v);
+                const double line = (v - 2.173) / 24.07;
+                law_errors.push_back(crush / law - 1.0);
+                line_errors.push_back(crush / line - 1.0);
+            }
+            if (law_errors.empty())
+                continue;
+            auto worst = [](const std::vector<double>& inErrors) {
+                return *std::max_element(inErrors.begin(), inErrors.end(),
+                                         [](double a, double b) { return std::abs(a) < std::abs(b); });
+            };
+            std::sort(times.begin(), times.end());
+            ioTable.Add({"crush_vs_campbell", std::string(body.mName) + "/" + ToString(engine) + "/full_wall",
+                         times[times.size() / 2], worst(law_errors), "worst_rel_crush_vs_law",
+                         "speeds_km_h=" + std::to_string(speeds.size()) + "_from_" + FormatExtra(speeds.front()) +
+                             "_to_" + FormatExtra(speeds.back()) + ";worst_rel_vs_midsize_line=" +
+                             FormatExtra(worst(line_errors))});
+        }
+#else
+    (void)ioTable;
+    (void)inOptions;
+#endif
+}
+
+} // namespace crumple::bench
