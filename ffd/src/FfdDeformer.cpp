@@ -556,6 +556,45 @@ void FfdDeformer::RecomputeAll()
     }
     mVertexEvaluations += vertex_count;
     RecomputeNormals();
+    if (mPublishing)
+        Publish();
+}
+
+void FfdDeformer::SetPublishing(bool inOn)
+{
+    if (inOn == mPublishing)
+        return;
+    mPublishing = inOn;
+    if (inOn)
+    {
+        mPublishedPositions = mPositions;
+        mPublishedNormals = mNormals;
+        mPublishedDirty = mDirty;
+        std::fill(mDirty.begin(), mDirty.end(), std::uint8_t{0});
+    }
+    else
+    {
+        // Back to one state: what was published and not taken stays dirty.
+        for (std::size_t v = 0; v < mDirty.size(); ++v)
+            mDirty[v] = static_cast<std::uint8_t>(mDirty[v] | mPublishedDirty[v]);
+        mPublishedPositions = {};
+        mPublishedNormals = {};
+        mPublishedDirty = {};
+    }
+}
+
+void FfdDeformer::Publish()
+{
+    if (!mPublishing)
+        return;
+    for (std::size_t v = 0; v < mDirty.size(); ++v)
+        if (mDirty[v] != 0)
+        {
+            mPublishedPositions[v] = mPositions[v];
+            mPublishedNormals[v] = mNormals[v];
+            mPublishedDirty[v] = 1;
+            mDirty[v] = 0;
+        }
 }
 
 void FfdDeformer::RecomputeNormals()
@@ -621,8 +660,9 @@ Status FfdDeformer::SetControlDisplacements(std::span<const std::vector<Vec3>> i
 
 std::vector<VertexRange> FfdDeformer::TakeDirtyRanges()
 {
-    std::vector<VertexRange> ranges = VertexRangesFromFlags(mDirty);
-    std::fill(mDirty.begin(), mDirty.end(), std::uint8_t{0});
+    std::vector<std::uint8_t>& dirty = mPublishing ? mPublishedDirty : mDirty;
+    std::vector<VertexRange> ranges = VertexRangesFromFlags(dirty);
+    std::fill(dirty.begin(), dirty.end(), std::uint8_t{0});
     return ranges;
 }
 

@@ -136,7 +136,7 @@ SmallPolygon ClipPolygon(const SmallPolygon& inPolygon, double CrushPoint::*inCo
 SurfaceUnderFootprint ScanFootprint(const CrushPlan& inPlan, const ffd::FfdDeformer& inDeformer)
 {
     SurfaceUnderFootprint surface;
-    const std::vector<Vec3>& positions = inDeformer.GetPositions();
+    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
     const std::vector<Vec3>& rest = inDeformer.GetRestMesh().mPositions;
     // Every vertex in crush coordinates once; bit 0-3: outside the rectangle's low side, high side, low
     // third, high third.

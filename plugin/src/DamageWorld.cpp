@@ -23,10 +23,84 @@ Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
     if (inSettings.mJobs != nullptr && (inSettings.mJobs->mParallelFor == nullptr || inSettings.mJobs->mWorkerCount < 1))
         return MakeError(EError::InvalidArgument,
                          "DamageWorldSettings.mJobs needs an mParallelFor and an mWorkerCount >= 1 (or pass null)");
+    if (inSettings.mDeferDents && (inSettings.mJobs == nullptr || inSettings.mJobs->mStartTask == nullptr ||
+                                   inSettings.mJobs->mWaitTask == nullptr))
+        return MakeError(EError::InvalidArgument,
+                         "DamageWorldSettings.mDeferDents needs mJobs with mStartTask and mWaitTask");
     Result<CollisionGrouper> grouper = CollisionGrouper::Create(inSettings.mGrouping);
     if (!grouper)
         return grouper.GetError();
     return DamageWorld(inSettings, std::move(grouper).Get());
+}
+
+DamageWorld::~DamageWorld()
+{
+    WaitForDents();
+}
+
+DamageWorld& DamageWorld::operator=(DamageWorld&& inOther) noexcept
+{
+    if (this == &inOther)
+        return *this;
+    WaitForDents(); // the task points into this world's objects
+    mSettings = inOther.mSettings;
+    mGrouper = std::move(inOther.mGrouper);
+    mBodies = std::move(inOther.mBodies);
+    mObjects = std::move(inOther.mObjects);
+    mListeners = std::move(inOther.mListeners);
+    mImpactMemories = std::move(inOther.mImpactMemories);
+    mInFlight = std::move(inOther.mInFlight);
+    return *this;
+}
+
+void DamageWorld::WaitForDents() const
+{
+    if (HasDentsInFlight())
+        mSettings.mJobs->mWaitTask(mSettings.mJobs->mHost, mInFlight->mTicket);
+}
+
+void DamageWorld::RunDeferredDents(void* inInFlight)
+{
+    auto* flight = static_cast<InFlight*>(inInFlight);
+    for (std::size_t i = 0; i < flight->mCollisions.size(); ++i)
+        for (const DentTarget& target : flight->mTargets[i])
+            flight->mDents[i].push_back({target.mObject, target.mDeformable->ApplyCollision(flight->mCollisions[i], target.mSide)});
+}
+
+UpdateReport DamageWorld::Land()
+{
+    UpdateReport report;
+    if (!HasDentsInFlight())
+        return report;
+    WaitForDents();
+    InFlight& flight = *mInFlight;
+    flight.mActive = false;
+    // Publish every dented object once, then tell the listeners, collision by collision.
+    std::vector<DeformableObject*> published;
+    for (const std::vector<DentTarget>& targets : flight.mTargets)
+        for (const DentTarget& target : targets)
+            if (std::find(published.begin(), published.end(), target.mDeformable) == published.end())
+            {
+                target.mDeformable->GetDeformer().Publish();
+                published.push_back(target.mDeformable);
+            }
+    const std::vector<DamageListener*> listeners = mListeners;
+    for (std::size_t i = 0; i < flight.mCollisions.size(); ++i)
+    {
+        for (const ObjectDent& dent : flight.mDents[i])
+        {
+            report.mVerticesMoved += dent.mReport.mVerticesMoved;
+            if (dent.mReport.mVerticesMoved > 0)
+                ++report.mObjectsDented;
+        }
+        for (DamageListener* listener : listeners)
+            if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
+                listener->OnCollision(flight.mCollisions[i], flight.mDents[i]);
+    }
+    flight.mCollisions.clear();
+    flight.mTargets.clear();
+    flight.mDents.clear();
+    return report;
 }
 
 Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
@@ -56,6 +130,7 @@ const BodyState* DamageWorld::GetBodyState(BodyId inBody) const
 
 Status DamageWorld::RemoveBody(BodyId inBody)
 {
+    Land(); // its objects may be denting
     if (!IsLive(inBody))
         return MakeError(EError::OutOfRange, "RemoveBody: body " + std::to_string(inBody.mValue) + " does not exist");
     BodySlot& slot = mBodies[inBody.mValue];
@@ -76,7 +151,10 @@ Result<ObjectId> DamageWorld::CreateDeformableObject(BodyId inBody, const Deform
     Result<DeformableObject> object = DeformableObject::Create(inSettings);
     if (!object)
         return object.GetError();
-    object.Get().GetDeformer().SetJobSystem(mSettings.mJobs);
+    Land(); // mObjects may grow: the task points into it
+    // Deferred dents run on the task's thread and never call the parallel for from it.
+    object.Get().GetDeformer().SetJobSystem(mSettings.mDeferDents ? nullptr : mSettings.mJobs);
+    object.Get().GetDeformer().SetPublishing(mSettings.mDeferDents);
     const ObjectId id{static_cast<std::uint32_t>(mObjects.size())};
     ObjectSlot slot;
     slot.mBody = inBody;
@@ -256,19 +334,35 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     return Status::Ok();
 }
 
+namespace
+{
+
+void Add(UpdateReport& ioReport, const UpdateReport& inMore)
+{
+    ioReport.mCollisionsDispatched += inMore.mCollisionsDispatched;
+    ioReport.mObjectsDented += inMore.mObjectsDented;
+    ioReport.mVerticesMoved += inMore.mVerticesMoved;
+}
+
+} // namespace
+
 UpdateReport DamageWorld::Update(double inTime)
 {
-    // The idle path: no open collision, no work. A non-finite time closes nothing.
+    // The idle path: nothing in flight, no open collision, no work. A non-finite time closes nothing.
+    UpdateReport report = Land();
     if (!mGrouper.HasOpen() || !std::isfinite(inTime))
-        return {};
-    return Dispatch(mGrouper.TakeClosed(inTime));
+        return report;
+    Add(report, Dispatch(mGrouper.TakeClosed(inTime)));
+    return report;
 }
 
 UpdateReport DamageWorld::Flush()
 {
-    if (!mGrouper.HasOpen())
-        return {};
-    return Dispatch(mGrouper.TakeAll());
+    UpdateReport report = Land();
+    if (mGrouper.HasOpen())
+        Add(report, Dispatch(mGrouper.TakeAll()));
+    Add(report, Land());
+    return report;
 }
 
 CrushSide DamageWorld::CrushSideOf(BodyId inBody) const
@@ -286,6 +380,33 @@ CrushSide DamageWorld::CrushSideOf(BodyId inBody) const
 UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
 {
     UpdateReport report;
+    if (mSettings.mDeferDents)
+    {
+        if (inCollisions.empty())
+            return report;
+        if (mInFlight == nullptr)
+            mInFlight = std::make_unique<InFlight>();
+        InFlight& flight = *mInFlight;
+        const std::vector<DamageListener*> listeners = mListeners;
+        for (Collision& collision : inCollisions)
+        {
+            ++report.mCollisionsDispatched;
+            ShareCrushEnergy(collision, CrushSideOf(collision.mBodyA), CrushSideOf(collision.mBodyB));
+            for (DamageListener* listener : listeners)
+                if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
+                    listener->OnBeforeCollision(collision);
+            std::vector<DentTarget> targets;
+            for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
+                for (ObjectId id : mBodies[body.mValue].mObjects)
+                    targets.push_back({id, &mObjects[id.mValue].mObject.front(), side});
+            flight.mTargets.push_back(std::move(targets));
+        }
+        flight.mCollisions = std::move(inCollisions);
+        flight.mDents.assign(flight.mCollisions.size(), {});
+        flight.mActive = true;
+        flight.mTicket = mSettings.mJobs->mStartTask(mSettings.mJobs->mHost, &DamageWorld::RunDeferredDents, &flight);
+        return report;
+    }
     std::vector<ObjectDent> dents;
     // Listeners may remove themselves (or others) from their callbacks: call the ones registered when the
     // dispatch began, skipping any removed meanwhile.
@@ -332,6 +453,7 @@ void DamageWorld::RemoveListener(DamageListener* inListener)
 
 void DamageWorld::ResetDamage()
 {
+    Land();
     for (ObjectSlot& slot : mObjects)
         if (!slot.mObject.empty())
             slot.mObject.front().GetDeformer().Reset();
@@ -339,6 +461,7 @@ void DamageWorld::ResetDamage()
 
 DamageState DamageWorld::GetDamageState() const
 {
+    WaitForDents(); // the controls are complete once the task has finished
     DamageState state;
     for (ObjectId id : GetObjectIds())
     {
@@ -358,6 +481,7 @@ std::vector<std::byte> DamageWorld::SaveDamage() const
 
 Status DamageWorld::SetDamageState(const DamageState& inState)
 {
+    Land();
     // All objects must match before any changes.
     const std::vector<ObjectId> ids = GetObjectIds();
     if (inState.mObjects.size() != ids.size())

@@ -74,7 +74,8 @@ int main(int argc, char** argv)
     // The game's job system (here: threads started per parallel for), handed to Crumple for dents.
     const common::ThreadJobSystem jobs(options.mThreads);
     DamageWorldSettings damage_settings;
-    damage_settings.mJobs = options.mThreads > 1 ? &jobs.Get() : nullptr;
+    damage_settings.mJobs = options.mThreads > 1 || options.mDeferDents ? &jobs.Get() : nullptr;
+    damage_settings.mDeferDents = options.mDeferDents;
     DamageWorld damage = DamageWorld::Create(damage_settings).Get();
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world, damage).Get());
     std::map<BodyId, std::string> names;

@@ -11,8 +11,11 @@ ThreadJobSystem::ThreadJobSystem(int inThreads)
 {
     const int threads = std::max(inThreads, 1);
     mJobs.mParallelFor = &ThreadJobSystem::ParallelFor;
+    mJobs.mStartTask = &ThreadJobSystem::StartTask;
+    mJobs.mWaitTask = &ThreadJobSystem::WaitTask;
     mJobs.mHost = this;
     mJobs.mWorkerCount = threads;
+    mThreads = threads;
     for (int worker = 1; worker < threads; ++worker)
         mWorkers.emplace_back([this] { WorkerLoop(); });
 }
@@ -26,6 +29,58 @@ ThreadJobSystem::~ThreadJobSystem()
     mWake.notify_all();
     for (std::thread& worker : mWorkers)
         worker.join();
+    {
+        std::lock_guard<std::mutex> lock(mTaskMutex);
+        mTaskStop = true;
+    }
+    mTaskWake.notify_all();
+    if (mTaskThread.joinable())
+        mTaskThread.join();
+}
+
+std::uint64_t ThreadJobSystem::StartTask(void* inHost, void (*inTask)(void*), void* inTaskContext)
+{
+    auto* self = static_cast<ThreadJobSystem*>(inHost);
+    std::unique_lock<std::mutex> lock(self->mTaskMutex);
+    const std::uint64_t ticket = ++self->mTasksStarted;
+    if (self->mThreads <= 1)
+    {
+        lock.unlock();
+        inTask(inTaskContext);
+        lock.lock();
+        self->mTasksFinished = ticket;
+        return ticket;
+    }
+    if (!self->mTaskThread.joinable())
+        self->mTaskThread = std::thread([self] { self->TaskLoop(); });
+    self->mTaskQueue.emplace_back(inTask, inTaskContext);
+    self->mTaskWake.notify_all();
+    return ticket;
+}
+
+void ThreadJobSystem::WaitTask(void* inHost, std::uint64_t inTicket)
+{
+    auto* self = static_cast<ThreadJobSystem*>(inHost);
+    std::unique_lock<std::mutex> lock(self->mTaskMutex);
+    self->mTaskDone.wait(lock, [&] { return self->mTasksFinished >= inTicket; });
+}
+
+void ThreadJobSystem::TaskLoop()
+{
+    std::unique_lock<std::mutex> lock(mTaskMutex);
+    for (;;)
+    {
+        mTaskWake.wait(lock, [&] { return mTaskStop || !mTaskQueue.empty(); });
+        if (mTaskQueue.empty())
+            return; // stopping, nothing left
+        const auto [task, context] = mTaskQueue.front();
+        mTaskQueue.erase(mTaskQueue.begin());
+        lock.unlock();
+        task(context);
+        lock.lock();
+        ++mTasksFinished;
+        mTaskDone.notify_all();
+    }
 }
 
 void ThreadJobSystem::Drain(std::unique_lock<std::mutex>& ioLock)

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "WallCrashScene.h"
+#include "ThreadJobSystem.h"
 #include "WorldFixture.h"
 
 #include <catch2/catch.hpp>
@@ -81,4 +82,87 @@ TEST_CASE("Replaying dispatched collisions on fresh objects reproduces the live 
         replayed.ApplyCollision(collision, collision.mBodyA == fresh.GetCar() ? ECollisionSide::A : ECollisionSide::B);
     CHECK(SameBytes(replayed.GetDeformer().GetPositions(),
                     live.GetWorld().GetObject(live.GetCarObject())->GetDeformer().GetPositions()));
+}
+
+namespace
+{
+
+struct CountingListener : DamageListener
+{
+    void OnBeforeCollision(const Collision& inCollision) override { mBefore.push_back(inCollision.mSequence); }
+    void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) override
+    {
+        mAfter.push_back(inCollision.mSequence);
+        for (const ObjectDent& dent : inDents)
+            mVertices += dent.mReport.mVerticesMoved;
+    }
+    std::vector<std::uint64_t> mBefore, mAfter;
+    std::uint64_t mVertices = 0;
+};
+
+} // namespace
+
+TEST_CASE("Deferred dents land one Update later, bitwise as inline, on any thread count", "[plugin][determinism]")
+{
+    for (double yaw : {0.0, 30.0})
+    {
+        WallCrashSettings settings;
+        settings.mYawDegrees = yaw;
+        settings.mTriangles = 6000;
+        WallCrashScene inline_scene = WallCrashScene::Create(settings).Get();
+        CountingListener inline_listener;
+        inline_scene.GetWorld().AddListener(&inline_listener);
+        inline_scene.Run();
+        const ffd::FfdDeformer& reference = inline_scene.GetWorld().GetObject(inline_scene.GetCarObject())->GetDeformer();
+
+        for (int threads : {1, 2, 4})
+        {
+            INFO("yaw " << yaw << " degrees, " << threads << " thread(s)");
+            const ThreadJobSystem jobs(threads);
+            WallCrashSettings deferred_settings = settings;
+            deferred_settings.mWorld.mJobs = &jobs.Get();
+            deferred_settings.mWorld.mDeferDents = true;
+            WallCrashScene scene = WallCrashScene::Create(deferred_settings).Get();
+            CountingListener listener;
+            scene.GetWorld().AddListener(&listener);
+            const ffd::FfdDeformer& car = scene.GetWorld().GetObject(scene.GetCarObject())->GetDeformer();
+            const std::vector<Vec3> rest = car.GetPositions();
+            // Step until the first dispatch: its dents are started, not landed, and the game still sees
+            // the mesh as it was.
+            bool saw_in_flight = false;
+            for (int step = 0; step < 200 && !saw_in_flight; ++step)
+            {
+                scene.Step();
+                if (scene.GetWorld().HasDentsInFlight())
+                {
+                    saw_in_flight = true;
+                    CHECK(SameBytes(car.GetPositions(), rest));
+                    CHECK(listener.mAfter.size() < listener.mBefore.size());
+                }
+            }
+            REQUIRE(saw_in_flight);
+            scene.Run();
+            CHECK_FALSE(scene.GetWorld().HasDentsInFlight());
+            CHECK(SameBytes(car.GetPositions(), reference.GetPositions()));
+            CHECK(SameBytes(car.GetNormals(), reference.GetNormals()));
+            CHECK(scene.GetWorld().SaveDamage() == inline_scene.GetWorld().SaveDamage());
+            CHECK(listener.mBefore == inline_listener.mBefore);
+            CHECK(listener.mAfter == inline_listener.mAfter);
+            CHECK(listener.mVertices == inline_listener.mVertices);
+        }
+    }
+}
+
+TEST_CASE("Deferred dents need a job system that can start tasks", "[plugin]")
+{
+    DamageWorldSettings settings;
+    settings.mDeferDents = true;
+    CHECK(DamageWorld::Create(settings).HasError());
+    JobSystem parallel_only;
+    parallel_only.mParallelFor = [](void*, int inCount, void (*inTask)(void*, int), void* inContext) {
+        for (int i = 0; i < inCount; ++i)
+            inTask(inContext, i);
+    };
+    settings.mJobs = &parallel_only;
+    CHECK(DamageWorld::Create(settings).HasError());
 }

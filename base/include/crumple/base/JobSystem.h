@@ -4,6 +4,7 @@
 
 #include <crumple/base/Export.h>
 
+#include <cstdint>
 #include <functional>
 
 namespace crumple
@@ -24,6 +25,16 @@ struct JobSystem
     ParallelForFunction mParallelFor = nullptr; ///< The host's parallel for; null runs everything inline
     void* mHost = nullptr;                      ///< Passed back to mParallelFor as inHost
     int mWorkerCount = 1;                       ///< How many pieces can run at once (>= 1): a hint for splitting
+
+    /// Starts inTask(inTaskContext) on a worker and returns at once with a ticket for mWaitTask (or runs it
+    /// before returning, a valid host too). Crumple starts at most one task at a time per world and waits for
+    /// it before it starts the next; the task never calls back into the job system.
+    using StartTaskFunction = std::uint64_t (*)(void* inHost, void (*inTask)(void* inTaskContext), void* inTaskContext);
+    /// Returns when the task of inTicket has finished (at once when it has).
+    using WaitTaskFunction = void (*)(void* inHost, std::uint64_t inTicket);
+    StartTaskFunction mStartTask = nullptr; ///< Optional: lets DamageWorldSettings::mDeferDents run dents off the
+                                            ///< game's thread
+    WaitTaskFunction mWaitTask = nullptr;   ///< Required with mStartTask
 };
 
 /// Runs inTask(i) for i in [0, inCount) through inJobs (inline when inJobs is null, has no mParallelFor or

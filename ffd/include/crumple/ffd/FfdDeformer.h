@@ -68,10 +68,21 @@ public:
     /// can validate all of them before changing any.
     Status ValidateControlDisplacements(std::span<const std::vector<Vec3>> inPerZone) const;
 
-    /// Current (deformed) positions, body frame (m), #V
-    const std::vector<Vec3>& GetPositions() const { return mPositions; }
-    /// Current unit vertex normals (area-weighted), body frame, #V
-    const std::vector<Vec3>& GetNormals() const { return mNormals; }
+    /// Deformed positions, body frame (m), #V: the published ones while publishing (SetPublishing)
+    const std::vector<Vec3>& GetPositions() const { return mPublishing ? mPublishedPositions : mPositions; }
+    /// Unit vertex normals (area-weighted), body frame, #V: the published ones while publishing
+    const std::vector<Vec3>& GetNormals() const { return mPublishing ? mPublishedNormals : mNormals; }
+    /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published
+    const std::vector<Vec3>& GetCurrentPositions() const { return mPositions; }
+
+    /// Deferred publishing (plugin::DamageWorldSettings::mDeferDents): while on, GetPositions, GetNormals and
+    /// the dirty ranges show the state of the last Publish(), which no dent writes, so the game may read
+    /// them while a worker dents this deformer. Turning it on publishes the current state; off drops the copy.
+    void SetPublishing(bool inOn);
+    /// Copies the vertices dents changed since the last Publish() into the published state and marks them
+    /// for TakeDirtyRanges. RecomputeAll (Reset, SetControlDisplacements) publishes by itself.
+    void Publish();
+    bool IsPublishing() const { return mPublishing; }
     /// The undeformed mesh
     const TriangleMesh& GetRestMesh() const { return mRestMesh; }
     /// Zones, in settings order
@@ -85,7 +96,7 @@ public:
     /// Vertex ranges changed since the last call, then forgets them (for the game's buffer upload).
     std::vector<VertexRange> TakeDirtyRanges();
     /// Vertex ranges changed since the last TakeDirtyRanges, without forgetting them.
-    std::vector<VertexRange> PeekDirtyRanges() const { return VertexRangesFromFlags(mDirty); }
+    std::vector<VertexRange> PeekDirtyRanges() const { return VertexRangesFromFlags(mPublishing ? mPublishedDirty : mDirty); }
 
     /// Running count of vertex evaluations (positions recomputed): proves that idle frames do no
     /// per-vertex work without timing anything.
@@ -143,7 +154,11 @@ private:
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
 
-    std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges
+    std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges (publishing: since Publish)
+    bool mPublishing = false;
+    std::vector<Vec3> mPublishedPositions;      ///< Publishing: what GetPositions shows
+    std::vector<Vec3> mPublishedNormals;        ///< Publishing: what GetNormals shows
+    std::vector<std::uint8_t> mPublishedDirty;  ///< Publishing: published and not yet taken
     const JobSystem* mJobs = nullptr; ///< The host's workers for per-vertex work; null: inline
     std::uint64_t mVertexEvaluations = 0;
 };

@@ -14,6 +14,7 @@
 #include <crumple/plugin/Ids.h>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,12 @@ class DamageWorld
 public:
     /// Validates the settings.
     static Result<DamageWorld> Create(const DamageWorldSettings& inSettings = {});
+    /// Waits for deferred dents still running (they point into this world).
+    ~DamageWorld();
+    DamageWorld(DamageWorld&&) noexcept = default;
+    DamageWorld& operator=(DamageWorld&& inOther) noexcept;
+    DamageWorld(const DamageWorld&) = delete;
+    DamageWorld& operator=(const DamageWorld&) = delete;
 
     /// Registers a rigid body with its current state; ids come in creation order.
     Result<BodyId> CreateBody(const BodyState& inState);
@@ -72,10 +79,14 @@ public:
     ///            that impulse left (an impact is counted once, however many steps the engine takes to stop it).
     Status SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep = 0.0);
 
-    /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners.
+    /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners. With
+    /// deferred dents it first lands the dents the previous Update started (their objects dented, vertices
+    /// moved and OnCollision calls are in this report), then starts the new ones (counted as dispatched).
     UpdateReport Update(double inTime);
-    /// Dispatches every open collision now (end of a run, before saving).
+    /// Dispatches every open collision now and lands every dent (end of a run, before saving).
     UpdateReport Flush();
+    /// Deferred dents: true while a started task has not landed yet.
+    bool HasDentsInFlight() const { return mInFlight != nullptr && mInFlight->mActive; }
 
     /// Adds a listener (not owned; it must outlive the world or be removed). Adding one twice is a no-op.
     void AddListener(DamageListener* inListener);
@@ -131,12 +142,34 @@ private:
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
     CrushSide CrushSideOf(BodyId inBody) const;
 
+    /// Deferred dents: the collisions of one dispatch, the objects each dents, and what the task made.
+    struct DentTarget
+    {
+        ObjectId mObject;
+        DeformableObject* mDeformable = nullptr;
+        ECollisionSide mSide = ECollisionSide::A;
+    };
+    struct InFlight
+    {
+        std::vector<Collision> mCollisions;
+        std::vector<std::vector<DentTarget>> mTargets; ///< Per collision, in dispatch order
+        std::vector<std::vector<ObjectDent>> mDents;   ///< Per collision, written by the task
+        std::uint64_t mTicket = 0;
+        bool mActive = false;
+    };
+    static void RunDeferredDents(void* inInFlight);
+    /// Waits for the task, publishes its objects and calls OnCollision; a no-op with nothing in flight.
+    UpdateReport Land();
+    /// Waits for the task without landing it (const readers of damage).
+    void WaitForDents() const;
+
     DamageWorldSettings mSettings;
     CollisionGrouper mGrouper;
     std::vector<BodySlot> mBodies;
     std::vector<ObjectSlot> mObjects;
     std::vector<DamageListener*> mListeners;
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
+    std::unique_ptr<InFlight> mInFlight;        ///< Deferred dents (stable address for the task)
 };
 
 } // namespace crumple::plugin

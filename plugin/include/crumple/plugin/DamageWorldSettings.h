@@ -26,6 +26,14 @@ struct DamageWorldSettings
     /// The host's job system for the per-vertex work of dents (not owned; it must outlive the world);
     /// null: every dent runs on the thread that calls Update/Flush. Results are bitwise identical either way.
     const JobSystem* mJobs = nullptr;
+    /// Dents run off the game's thread and land one Update later: the Update that closes a collision starts
+    /// its dents as one task on mJobs (which needs mStartTask and mWaitTask), and the next Update (or Flush,
+    /// or any call that reads or changes damage) waits for it, publishes the moved vertices and calls
+    /// OnCollision. Meanwhile the objects' GetPositions, GetNormals and dirty ranges keep showing the state
+    /// before the dents (FfdDeformer::SetPublishing). Dents are applied in the same order as inline, so
+    /// meshes, damage states and recordings are bitwise the same; the task's per-vertex work runs on the
+    /// task's thread (mJobs' parallel for is not called from it).
+    bool mDeferDents = false;
 };
 
 } // namespace crumple::plugin
