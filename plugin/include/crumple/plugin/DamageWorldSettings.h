@@ -30,7 +30,9 @@ struct DamageWorldSettings
     /// its dents as one task on mJobs (which needs mStartTask and mWaitTask), and the next Update (or Flush,
     /// or any call that reads or changes damage) waits for it, publishes the moved vertices and calls
     /// OnCollision. Meanwhile the objects' GetPositions, GetNormals and dirty ranges keep showing the state
-    /// before the dents (FfdDeformer::SetPublishing). Dents are applied in the same order as inline, so
+    /// before the dents (FfdDeformer::SetPublishing); anything else of an object (its zones and controls,
+    /// GetCurrentPositions) is the task's until the landing, so read it after Update or Flush returns with
+    /// HasDentsInFlight() false. Dents are applied in the same order as inline, so
     /// meshes, damage states and recordings are bitwise the same; the task's per-vertex work runs on the
     /// task's thread (mJobs' parallel for is not called from it).
     bool mDeferDents = false;
