@@ -212,7 +212,10 @@ double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, doub
         return 0.0;
     // The positive root of B C^2 / 2 + A C - excess = 0, in the form that does not cancel when B excess << A^2.
     const double a = inMaterial.mCrushA, b = inMaterial.mCrushB;
-    return 2.0 * excess / (a + std::sqrt(a * a + 2.0 * b * excess));
+    const double root = std::sqrt(a * a + 2.0 * b * excess);
+    if (!std::isfinite(root))
+        return std::numeric_limits<double>::infinity(); // beyond any bound: the caller clamps
+    return 2.0 * excess / (a + root);
 }
 
 double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth)
@@ -279,7 +282,11 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     if (!std::isfinite(surface.mFront))
         return std::nullopt;
     const double front = surface.mFront;
-    const double previous = surface.mVerticesInside > 0 ? surface.mCrushInside : surface.mCrushAcross;
+    // A move shallower than the material's smallest dent (the fade of a neighbouring crush) is no crush: it
+    // must not waive the no-damage energy G of an undamaged front.
+    double previous = surface.mVerticesInside > 0 ? surface.mCrushInside : surface.mCrushAcross;
+    if (!(previous >= std::max(inMaterial.mMinDeformation, 1.0e-9)))
+        previous = 0.0;
     plan.mFront = front;
     plan.mPreviousCrush = previous;
 

@@ -15,6 +15,8 @@ Result<std::unique_ptr<DamageRecorder>> DamageRecorder::Create(const std::filesy
     std::FILE* file = std::fopen(PartialFilePath(inPath).string().c_str(), "wb");
     if (file == nullptr)
         return MakeError(EError::IoError, "cannot write " + PartialFilePath(inPath).string());
+    // Deferred dents started before the recording belong to the damage it starts from.
+    inWorld.LandDents();
     std::unique_ptr<DamageRecorder> recorder(new DamageRecorder(file, inPath, inWorld));
     recorder->Write(EncodeReplayHeader());
     recorder->RecordNewObjects();
@@ -56,6 +58,7 @@ void DamageRecorder::RecordNewObjects()
         record.mSettings.mMaterial = object.GetMaterial();
         record.mSettings.mDeformer = object.GetDeformer().GetSettings();
         record.mSettings.mInterpolateWideImpacts = object.GetInterpolateWideImpacts();
+        record.mSettings.mUpAxis = object.GetUpAxis();
         for (const ffd::FfdLattice& zone : object.GetDeformer().GetZones())
             record.mInitialControls.push_back(zone.GetControlDisplacements());
         Write(EncodeReplayRecord(EReplayRecord::Object, EncodeRecordedObject(record)));
@@ -82,7 +85,10 @@ Status DamageRecorder::Close()
     if (mFile == nullptr)
         return mStatus;
     if (mWorld != nullptr)
+    {
+        mWorld->LandDents(); // deferred dents in flight are collisions of this recording
         mWorld->RemoveListener(this);
+    }
     ByteWriter end;
     end.WriteU32(mObjects);
     end.WriteU64(mCollisions);

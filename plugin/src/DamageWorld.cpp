@@ -67,40 +67,54 @@ void DamageWorld::RunDeferredDents(void* inInFlight)
             flight->mDents[i].push_back({target.mObject, target.mDeformable->ApplyCollision(flight->mCollisions[i], target.mSide)});
 }
 
-UpdateReport DamageWorld::Land()
+void DamageWorld::Land()
 {
-    UpdateReport report;
     if (!HasDentsInFlight())
-        return report;
+        return;
     WaitForDents();
     InFlight& flight = *mInFlight;
     flight.mActive = false;
+    // Take the batch out first: a listener may update the world (and start the next batch) from its callback.
+    const std::vector<Collision> collisions = std::move(flight.mCollisions);
+    const std::vector<std::vector<DentTarget>> targets = std::move(flight.mTargets);
+    const std::vector<std::vector<ObjectDent>> dents = std::move(flight.mDents);
+    flight.mCollisions.clear();
+    flight.mTargets.clear();
+    flight.mDents.clear();
     // Publish every dented object once, then tell the listeners, collision by collision.
     std::vector<DeformableObject*> published;
-    for (const std::vector<DentTarget>& targets : flight.mTargets)
-        for (const DentTarget& target : targets)
+    for (const std::vector<DentTarget>& collision_targets : targets)
+        for (const DentTarget& target : collision_targets)
             if (std::find(published.begin(), published.end(), target.mDeformable) == published.end())
             {
                 target.mDeformable->GetDeformer().Publish();
                 published.push_back(target.mDeformable);
             }
-    const std::vector<DamageListener*> listeners = mListeners;
-    for (std::size_t i = 0; i < flight.mCollisions.size(); ++i)
-    {
-        for (const ObjectDent& dent : flight.mDents[i])
+    for (std::size_t i = 0; i < collisions.size(); ++i)
+        for (const ObjectDent& dent : dents[i])
         {
-            report.mVerticesMoved += dent.mReport.mVerticesMoved;
+            mLanded.mVerticesMoved += dent.mReport.mVerticesMoved;
             if (dent.mReport.mVerticesMoved > 0)
-                ++report.mObjectsDented;
+                ++mLanded.mObjectsDented;
         }
+    const std::vector<DamageListener*> listeners = mListeners;
+    for (std::size_t i = 0; i < collisions.size(); ++i)
         for (DamageListener* listener : listeners)
             if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
-                listener->OnCollision(flight.mCollisions[i], flight.mDents[i]);
-    }
-    flight.mCollisions.clear();
-    flight.mTargets.clear();
-    flight.mDents.clear();
+                listener->OnCollision(collisions[i], dents[i]);
+}
+
+UpdateReport DamageWorld::TakeLandedReport()
+{
+    const UpdateReport report = mLanded;
+    mLanded = {};
     return report;
+}
+
+UpdateReport DamageWorld::LandDents()
+{
+    Land();
+    return TakeLandedReport();
 }
 
 Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
@@ -130,9 +144,9 @@ const BodyState* DamageWorld::GetBodyState(BodyId inBody) const
 
 Status DamageWorld::RemoveBody(BodyId inBody)
 {
-    Land(); // its objects may be denting
     if (!IsLive(inBody))
         return MakeError(EError::OutOfRange, "RemoveBody: body " + std::to_string(inBody.mValue) + " does not exist");
+    Land(); // its objects may be denting
     BodySlot& slot = mBodies[inBody.mValue];
     for (ObjectId object : slot.mObjects)
         mObjects[object.mValue].mObject.clear();
@@ -299,7 +313,11 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             CollisionContact contact = batch.mContacts[i];
             contact.mImpulse = impulses[i];
             contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
-            contact.mAbsorbedEnergy = 0.5 * impulses[i] * std::max(contact.mApproachSpeed, 0.0) * (1.0 - mSettings.mRestitution);
+            // The impulse took the closing speed v beyond the speculative s = gap / dt to a rebound of
+            // e (v - s): kinetic energy J (v + s - e (v - s)) / 2 left the pair.
+            const double v = std::max(contact.mApproachSpeed, 0.0), s = impulse_contacts[i].mSpeculativeSpeed;
+            const double e = mSettings.mRestitution;
+            contact.mAbsorbedEnergy = 0.5 * impulses[i] * ((1.0 - e) * v + (1.0 + e) * s);
             contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
             contact.mLocalPointOnB = state_b.mTransform.ToBody(contact.mPointOnB);
             contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
@@ -349,7 +367,8 @@ void Add(UpdateReport& ioReport, const UpdateReport& inMore)
 UpdateReport DamageWorld::Update(double inTime)
 {
     // The idle path: nothing in flight, no open collision, no work. A non-finite time closes nothing.
-    UpdateReport report = Land();
+    Land();
+    UpdateReport report = TakeLandedReport();
     if (!mGrouper.HasOpen() || !std::isfinite(inTime))
         return report;
     Add(report, Dispatch(mGrouper.TakeClosed(inTime)));
@@ -358,10 +377,12 @@ UpdateReport DamageWorld::Update(double inTime)
 
 UpdateReport DamageWorld::Flush()
 {
-    UpdateReport report = Land();
+    Land();
+    UpdateReport report = TakeLandedReport();
     if (mGrouper.HasOpen())
         Add(report, Dispatch(mGrouper.TakeAll()));
-    Add(report, Land());
+    Land();
+    Add(report, TakeLandedReport());
     return report;
 }
 
@@ -386,7 +407,7 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
             return report;
         if (mInFlight == nullptr)
             mInFlight = std::make_unique<InFlight>();
-        InFlight& flight = *mInFlight;
+        std::vector<std::vector<DentTarget>> targets;
         const std::vector<DamageListener*> listeners = mListeners;
         for (Collision& collision : inCollisions)
         {
@@ -395,16 +416,21 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
             for (DamageListener* listener : listeners)
                 if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
                     listener->OnBeforeCollision(collision);
-            std::vector<DentTarget> targets;
+            std::vector<DentTarget> collision_targets;
             for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
                 for (ObjectId id : mBodies[body.mValue].mObjects)
-                    targets.push_back({id, &mObjects[id.mValue].mObject.front(), side});
-            flight.mTargets.push_back(std::move(targets));
+                    collision_targets.push_back({id, &mObjects[id.mValue].mObject.front(), side});
+            targets.push_back(std::move(collision_targets));
         }
+        // A listener may have landed or dispatched meanwhile (it may call the world): land whatever that
+        // started before this batch takes the slot.
+        Land();
+        InFlight& flight = *mInFlight;
+        flight.mTargets = std::move(targets);
         flight.mCollisions = std::move(inCollisions);
         flight.mDents.assign(flight.mCollisions.size(), {});
-        flight.mActive = true;
         flight.mTicket = mSettings.mJobs->mStartTask(mSettings.mJobs->mHost, &DamageWorld::RunDeferredDents, &flight);
+        flight.mActive = true;
         return report;
     }
     std::vector<ObjectDent> dents;

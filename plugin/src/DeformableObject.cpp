@@ -20,6 +20,10 @@ std::array<int, 3> ControlCountForSpacing(const Vec3& inSize, double inSpacing)
     constexpr double cMaxControls = 262144.0;
     constexpr double cMaxCells = ffd::FfdLatticeSettings::cMaxControlsPerAxis - 3;
     std::array<int, 3> count{};
+    // A non-finite size (a mesh whose extent overflows) would never fit: the coarsest lattice, which
+    // FfdDeformer::Create then refuses with its own message about the box.
+    if (!IsFinite(inSize) || !(inSpacing > 0.0))
+        return {4, 4, 4};
     for (double spacing = inSpacing;; spacing *= 1.25)
     {
         double total = 1.0;
@@ -93,8 +97,9 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     Result<ffd::FfdDeformer> deformer = ffd::FfdDeformer::Create(inSettings.mMesh, deformer_settings);
     if (!deformer)
         return deformer.GetError();
-    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis.normalized(),
-                            std::move(deformer).Get());
+    // The up axis as given (within 1e-3 of unit): a recording keeps it bit for bit, and the crush only
+    // takes its direction.
+    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, std::move(deformer).Get());
 }
 
 std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide,

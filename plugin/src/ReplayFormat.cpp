@@ -136,9 +136,11 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     collision.mSequence = reader.ReadU64();
     collision.mCrushEnergyA = reader.ReadDouble();
     collision.mCrushEnergyB = reader.ReadDouble();
-    if (!std::isfinite(collision.mCrushEnergyA) || !std::isfinite(collision.mCrushEnergyB) ||
-        collision.mCrushEnergyA < 0.0 || collision.mCrushEnergyB < 0.0)
-        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite or negative");
+    // Energies as bounded as impulses (1e12 N s): 1e15 J is far beyond any vehicle impact.
+    constexpr double cMaxEnergy = 1.0e15;
+    if (!(collision.mCrushEnergyA >= 0.0 && collision.mCrushEnergyA <= cMaxEnergy) ||
+        !(collision.mCrushEnergyB >= 0.0 && collision.mCrushEnergyB <= cMaxEnergy))
+        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite, negative or out of range");
     std::uint32_t contacts = 0;
     if (!ReadCount(reader, 26 * 8, contacts))
         return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
@@ -159,6 +161,7 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
             !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e12 ||
+            !(c.mAbsorbedEnergy >= 0.0 && c.mAbsorbedEnergy <= cMaxEnergy) ||
             std::abs(c.mLocalNormalOnA.norm() - 1.0) > 1.0e-6 || std::abs(c.mLocalNormalOnB.norm() - 1.0) > 1.0e-6)
             return MakeError(EError::CorruptData, "collision record: a contact is not finite, not unit or out of range");
     }

@@ -35,7 +35,8 @@ DamageMaterial CampbellMaterial()
 // face (0: one point at its centre, as a pole's).
 struct CampbellCar
 {
-    explicit CampbellCar(const DamageWorldSettings& inSettings = {}, const DamageMaterial& inMaterial = CampbellMaterial())
+    explicit CampbellCar(const DamageWorldSettings& inSettings = {}, const DamageMaterial& inMaterial = CampbellMaterial(),
+                         const Vec3& inUp = Vec3::UnitZ())
         : mWorld(DamageWorld::Create(inSettings).Get())
     {
         BodyState wall;
@@ -46,6 +47,7 @@ struct CampbellCar
         car.mMesh = common::MakeBoxMesh(mHalf, common::BoxSegmentsForTriangles(mHalf, 20000));
         car.mMaterial = inMaterial;
         car.mFittedMaxTotalDeformation = 1.5;
+        car.mUpAxis = inUp;
         mObject = mWorld.CreateDeformableObject(mCar, car).Get();
     }
 
@@ -227,22 +229,28 @@ TEST_CASE("A second hit crushes on from the first: two half-energy hits about eq
 
 TEST_CASE("A Campbell crush replays bit for bit", "[plugin]")
 {
-    CampbellCar car;
-    const std::filesystem::path path = common::ScratchDirectory() / "campbell.crumple";
-    Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(path, car.mWorld);
-    REQUIRE(recorder);
-    car.Hit(15.0, 0.8);
-    car.Hit(8.0, 0.0);
-    REQUIRE(recorder.Get()->Close());
-    Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
-    REQUIRE(replay);
-    Result<std::vector<ReplayedObject>> replayed = ReplayDamage(replay.Get());
-    REQUIRE(replayed);
-    const std::vector<Vec3>& live = car.Object().GetDeformer().GetPositions();
-    const std::vector<Vec3>& again = replayed.Get()[0].mDeformable.GetDeformer().GetPositions();
-    REQUIRE(live.size() == again.size());
-    CHECK(std::memcmp(live.data(), again.data(), live.size() * sizeof(Vec3)) == 0);
-    CHECK(car.FrontCrush() > 0.1);
+    // Also with an up axis that is not +z and not exactly unit: the recording keeps it as given.
+    for (const Vec3& up : {Vec3(Vec3::UnitZ()), Vec3(Vec3(0.3, 0.0006, 1.0).normalized() * (1.0 + 4.0e-4))})
+    {
+        INFO("up " << up.transpose());
+        CampbellCar car(DamageWorldSettings{}, CampbellMaterial(), up);
+        const std::filesystem::path path = common::ScratchDirectory() / "campbell.crumple";
+        Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(path, car.mWorld);
+        REQUIRE(recorder);
+        car.Hit(15.0, 0.8);
+        car.Hit(8.0, 0.0);
+        REQUIRE(recorder.Get()->Close());
+        Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
+        REQUIRE(replay);
+        CHECK(replay.Get().mObjects[0].mSettings.mUpAxis == up);
+        Result<std::vector<ReplayedObject>> replayed = ReplayDamage(replay.Get());
+        REQUIRE(replayed);
+        const std::vector<Vec3>& live = car.Object().GetDeformer().GetPositions();
+        const std::vector<Vec3>& again = replayed.Get()[0].mDeformable.GetDeformer().GetPositions();
+        REQUIRE(live.size() == again.size());
+        CHECK(std::memcmp(live.data(), again.data(), live.size() * sizeof(Vec3)) == 0);
+        CHECK(car.FrontCrush() > 0.1);
+    }
 }
 
 TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]")

@@ -168,3 +168,12 @@ TEST_CASE("A dent the material's maximum clamps is reported as limited", "[plugi
     CHECK(clamped.mContactsClamped == 2);
     CHECK(clamped.IsLimited());
 }
+
+TEST_CASE("A mesh whose extent overflows is refused, not fitted forever", "[plugin]")
+{
+    DeformableObjectSettings settings;
+    settings.mMesh = common::MakeBoxMesh(Vec3(2.1, 0.9, 0.7), {4, 4, 4});
+    settings.mMesh.mPositions[0] = Vec3(-1.0e308, 0.0, 0.0);
+    settings.mMesh.mPositions[1] = Vec3(1.0e308, 0.0, 0.0);
+    CHECK(DeformableObject::Create(settings).HasError());
+}

@@ -32,7 +32,8 @@ struct CollisionContact
     double mPenetrationDepth = 0.0;     ///< As reported (m)
     double mImpulse = 0.0;              ///< Baraff impulse magnitude (N s), > 0: +n on A, -n on B
     double mApproachSpeed = 0.0;        ///< Closing speed before the solver, -v_rel (m/s), > 0
-    /// Kinetic energy the impulse took out of the pair, J v (1 - e) / 2 with the world's restitution e (J):
+    /// Kinetic energy the impulse took out of the pair (J): J ((1 - e) v + (1 + e) s) / 2 with the world's
+    /// restitution e, the approach speed v and the speculative speed s (gap / step) the impulse left alone;
     /// what the two bodies' structures absorb between them (exact for the contacts of one step, solved together)
     double mAbsorbedEnergy = 0.0;
     double mTime = 0.0;                 ///< Step time (s)

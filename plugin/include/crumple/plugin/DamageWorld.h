@@ -87,6 +87,11 @@ public:
     UpdateReport Flush();
     /// Deferred dents: true while a started task has not landed yet.
     bool HasDentsInFlight() const { return mInFlight != nullptr && mInFlight->mActive; }
+    /// Deferred dents: lands the dents in flight now (waits for the task, publishes, calls OnCollision)
+    /// without closing any open collision. A recorder does so when it starts and closes, so that it sees
+    /// every collision exactly once. Calls that read or change damage land by themselves; what they land is
+    /// reported by the next Update or Flush.
+    UpdateReport LandDents();
 
     /// Adds a listener (not owned; it must outlive the world or be removed). Adding one twice is a no-op.
     void AddListener(DamageListener* inListener);
@@ -158,8 +163,11 @@ private:
         bool mActive = false;
     };
     static void RunDeferredDents(void* inInFlight);
-    /// Waits for the task, publishes its objects and calls OnCollision; a no-op with nothing in flight.
-    UpdateReport Land();
+    /// Waits for the task, publishes its objects and calls OnCollision; a no-op with nothing in flight. What it
+    /// landed is kept for the next Update or Flush report.
+    void Land();
+    /// The landed work not reported yet, then forgotten.
+    UpdateReport TakeLandedReport();
     /// Waits for the task without landing it (const readers of damage).
     void WaitForDents() const;
 
@@ -170,6 +178,7 @@ private:
     std::vector<DamageListener*> mListeners;
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
     std::unique_ptr<InFlight> mInFlight;        ///< Deferred dents (stable address for the task)
+    UpdateReport mLanded;                       ///< Deferred dents landed and not reported yet
 };
 
 } // namespace crumple::plugin
