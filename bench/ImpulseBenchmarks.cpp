@@ -93,6 +93,45 @@ void IdleCases(BenchTable& ioTable, int inRepetitions)
                      ";open_collisions=" + std::to_string(fixture.mWorld.GetOpenCollisionCount())});
 }
 
+// One pair's manifold of N contacts in one step (a mesh-mesh contact) through DamageWorld::SubmitContacts,
+// reduced to DamageWorldSettings::mMaxContactsPerPair before the solve: time of the submit against the
+// error of the collision's impulse from the analytic (1 + e) m v of the face hit.
+void ManifoldCase(BenchTable& ioTable, int inContacts, int inRepetitions)
+{
+    common::WorldFixture fixture(2000);
+    const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(inContacts))));
+    std::vector<ContactEvent> contacts;
+    for (int i = 0; i < side; ++i)
+        for (int k = 0; k < side; ++k)
+            contacts.push_back(fixture.FrontContact(-0.8 + 1.6 * i / (side - 1), -0.6 + 1.2 * k / (side - 1), 0.0));
+    struct Listener : DamageListener
+    {
+        void OnCollision(const Collision& inCollision, std::span<const ObjectDent>) override { mImpulse += inCollision.TotalImpulse(); }
+        double mImpulse = 0.0;
+    } listener;
+    fixture.mWorld.AddListener(&listener);
+    double time = 0.0;
+    const double ms = MedianMs(inRepetitions, [&] {
+        (void)fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0));
+        time += 1.0;
+        for (ContactEvent& contact : contacts)
+            contact.mTime = time;
+    }, [&] { (void)fixture.mWorld.SubmitContacts(contacts); });
+    listener.mImpulse = 0.0;
+    fixture.mWorld.ResetDamage();
+    (void)fixture.mWorld.Flush();
+    listener.mImpulse = 0.0;
+    (void)fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0));
+    for (ContactEvent& contact : contacts)
+        contact.mTime = time + 1.0;
+    (void)fixture.mWorld.SubmitContacts(contacts);
+    (void)fixture.mWorld.Flush();
+    const double expected = (1.0 + fixture.mWorld.GetSettings().mRestitution) * fixture.mMass * 15.0;
+    ioTable.Add({"manifold_submit", std::to_string(contacts.size()) + "_contacts_one_pair", ms,
+                 std::abs(listener.mImpulse - expected) / expected, "rel_total_impulse",
+                 "solved_contacts<=" + std::to_string(fixture.mWorld.GetSettings().mMaxContactsPerPair)});
+}
+
 } // namespace
 
 void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -100,6 +139,8 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     const int repetitions = inOptions.mQuick ? 3 : 51;
     for (int grid : {1, 2, 6, 8})
         ImpulseCase(ioTable, grid, repetitions);
+    for (int contacts : {10, 100, 1000, 10000})
+        ManifoldCase(ioTable, contacts, inOptions.mQuick ? 3 : 11);
     IdleCases(ioTable, repetitions);
 }
 

@@ -431,13 +431,27 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
             const double n2 = n.squaredNorm();
             if (n2 == 0.0)
                 continue;
-            scale = std::min(scale, inMaxStep / std::sqrt(n2));
+            // A field past the double range (its square overflows, or it is NaN) can be scaled by nothing
+            // trustworthy: the dent is refused (scale 0). Every candidate below is taken in a form that keeps
+            // a NaN (std::min would drop it and let the dent through unbounded).
+            if (!std::isfinite(n2))
+            {
+                scale = 0.0;
+                break;
+            }
+            const double step = inMaxStep / std::sqrt(n2);
+            scale = step < scale ? step : scale;
             const Vec3 o = mPositions[v] - mRestMesh.mPositions[v];
             const double on = o.dot(n);
             const double slack = max_total * max_total - o.squaredNorm();
             const double discriminant = on * on + n2 * slack;
             const double root = discriminant > 0.0 ? (-on + std::sqrt(discriminant)) / n2 : 0.0;
-            scale = std::min(scale, std::max(root, 0.0));
+            if (!(root >= 0.0) || !std::isfinite(on))
+            {
+                scale = 0.0;
+                break;
+            }
+            scale = root < scale ? root : scale;
         }
         piece_scale[static_cast<std::size_t>(inPiece)] = scale;
     });

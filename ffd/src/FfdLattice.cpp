@@ -74,7 +74,9 @@ LatticeLocation FfdLattice::Locate(const Vec3& inU) const
     for (int axis = 0; axis < 3; ++axis)
     {
         // Clamp onto the box; u == n-3 belongs to the last cell with t = 1.
-        const double u = std::clamp(inU[axis], 0.0, static_cast<double>(mCellCount[axis]));
+        // A NaN coordinate (an inverse mapping through an overflowed field) is taken as 0 rather than cast
+        // to int: the location stays inside the lattice.
+        const double u = std::isnan(inU[axis]) ? 0.0 : std::clamp(inU[axis], 0.0, static_cast<double>(mCellCount[axis]));
         const int cell = std::min(static_cast<int>(std::floor(u)), mCellCount[axis] - 1);
         location.mCell[axis] = cell;
         location.mT[axis] = u - cell;

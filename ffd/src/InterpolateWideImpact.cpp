@@ -100,7 +100,8 @@ void SampleSegment(const PointDisplacement& inA, const PointDisplacement& inB, d
 {
     // The caller keeps inLength / inSpacing small (see InterpolateWideImpact); clamp anyway so a count can
     // never overflow.
-    const int pieces = static_cast<int>(std::min(std::ceil(inLength / inSpacing - 1.0e-9), 1.0e6));
+    const double count = std::ceil(inLength / inSpacing - 1.0e-9);
+    const int pieces = count >= 1.0e6 ? 1000000 : (count >= 1.0 ? static_cast<int>(count) : 1); // NaN: none
     for (int k = 1; k < pieces; ++k)
         ioOut.push_back(Lerp(inA, inB, static_cast<double>(k) / pieces));
 }
@@ -215,12 +216,16 @@ std::vector<PointDisplacement> InterpolateWideImpact(std::span<const PointDispla
     if (inPoints.size() < 2 || !(inSpacing > 0.0) || !std::isfinite(inSpacing))
         return {inPoints.begin(), inPoints.end()};
 
-    // Nothing to fill when every pair is within the spacing.
-    double diameter = 0.0;
+    // Nothing to fill when every pair is within the spacing. A set whose extent or displacements are past
+    // the double range (their differences or sums overflow) is not filled: interpolating it would make NaN.
+    double diameter = 0.0, largest = 0.0;
     for (std::size_t i = 0; i < inPoints.size(); ++i)
+    {
+        largest = std::max(largest, inPoints[i].mDisplacement.cwiseAbs().maxCoeff());
         for (std::size_t j = i + 1; j < inPoints.size(); ++j)
             diameter = std::max(diameter, (inPoints[i].mPoint - inPoints[j].mPoint).norm());
-    if (diameter <= inSpacing)
+    }
+    if (!(diameter <= inSpacing * 1.0e9) || !(largest <= 1.0e100) || diameter <= inSpacing)
         return {inPoints.begin(), inPoints.end()};
 
     // Start at a pitch whose grid over the set's extent fits the cap (the extent bounds the hull's area and

@@ -11,6 +11,9 @@ namespace crumple::plugin
 
 Status ValidateBodyState(const BodyState& inState)
 {
+    if (inState.mMotionType != EMotionType::Dynamic && inState.mMotionType != EMotionType::Kinematic &&
+        inState.mMotionType != EMotionType::Static)
+        return MakeError(EError::InvalidArgument, "BodyState.mMotionType is not an EMotionType value");
     if (!IsFinite(inState.mMass) || !IsFinite(inState.mInverseInertiaWorld) || !IsFinite(inState.mCenterOfMass) ||
         !IsFinite(inState.mLinearVelocity) || !IsFinite(inState.mAngularVelocity) ||
         !IsFinite(inState.mTransform.mRotation) || !IsFinite(inState.mTransform.mTranslation))

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/base/Assert.h>
 #include <crumple/plugin/BaraffImpulse.h>
+#include <crumple/plugin/ContactReduction.h>
 #include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/SurfaceContactPoints.h>
@@ -23,6 +24,8 @@ Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
     if (inSettings.mJobs != nullptr && (inSettings.mJobs->mParallelFor == nullptr || inSettings.mJobs->mWorkerCount < 1))
         return MakeError(EError::InvalidArgument,
                          "DamageWorldSettings.mJobs needs an mParallelFor and an mWorkerCount >= 1 (or pass null)");
+    if (inSettings.mMaxContactsPerPair < 9)
+        return MakeError(EError::InvalidArgument, "DamageWorldSettings.mMaxContactsPerPair must be >= 9");
     if (inSettings.mDeferDents && (inSettings.mJobs == nullptr || inSettings.mJobs->mStartTask == nullptr ||
                                    inSettings.mJobs->mWaitTask == nullptr))
         return MakeError(EError::InvalidArgument,
@@ -279,6 +282,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
         Batch& batch = batches[b];
+        if (batch.mContacts.size() > mSettings.mMaxContactsPerPair)
+            batch.mContacts = ReduceContacts(batch.mContacts, mSettings.mMaxContactsPerPair);
         BodyState state_a = mBodies[batch.mA.mValue].mState;
         BodyState state_b = mBodies[batch.mB.mValue].mState;
         const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);

@@ -28,7 +28,10 @@ set(crash_malformed
     "nan_speed|/impact/speed_km_h: must be a number"
     "corrupt_mesh|cannot read"
     "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
-    "mesh_unit_and_length|/vehicle/mesh_unit_m: give either")
+    "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
+    "huge_speed|/impact/speed_km_h: must be in"
+    "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"
+    "preset_not_regular|not a regular file")
 foreach(entry IN LISTS crash_malformed)
     string(REPLACE "|" ";" parts "${entry}")
     list(GET parts 0 name)

@@ -410,3 +410,38 @@ TEST_CASE("Dents are bitwise identical on 1, 2 and 4 worker threads", "[ffd]")
         CHECK(std::memcmp(other_normals.data(), normals.data(), normals.size() * sizeof(Vec3)) == 0);
     }
 }
+
+TEST_CASE("Dents past the double range cannot bypass the bounds", "[ffd]")
+{
+    // A dent of 1e200 m (finite, but its square overflows) with the default, unbounded step: the total
+    // bound must still hold; it is refused (scaled to nothing) rather than let through.
+    const double max_total = 0.5;
+    for (double depth : {1.0e200, 1.0e300, 1.7e308})
+    {
+        INFO("depth " << depth);
+        FfdDeformer deformer = MakeDeformer({8, 6, 6}, max_total);
+        Result<DentReport> report = deformer.ApplyDent(FrontDent(depth));
+        REQUIRE(report);
+        double worst = 0.0;
+        bool finite = true;
+        for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+        {
+            finite = finite && IsFinite(deformer.GetPositions()[v]) && IsFinite(deformer.GetNormals()[v]);
+            worst = std::max(worst, (deformer.GetPositions()[v] - deformer.GetRestMesh().mPositions[v]).norm());
+        }
+        CHECK(finite);
+        CHECK(worst <= max_total * (1.0 + 1.0e-12));
+    }
+}
+
+TEST_CASE("A NaN lattice coordinate locates inside the lattice", "[ffd]")
+{
+    const FfdDeformer deformer = MakeDeformer();
+    const FfdLattice& zone = deformer.GetZones()[0];
+    const LatticeLocation location = zone.Locate(Vec3(std::nan(""), 1.0, std::nan("")));
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        CHECK(location.mCell[static_cast<std::size_t>(axis)] >= 0);
+        CHECK(location.mCell[static_cast<std::size_t>(axis)] < zone.GetCellCount()[static_cast<std::size_t>(axis)]);
+    }
+}

@@ -95,3 +95,22 @@ TEST_CASE("Interpolation cost does not depend on the spacing or the spread", "[f
     CHECK(filled <= 512);
     CHECK(filled > 4);
 }
+
+TEST_CASE("Contacts past the double range are left as they are, never NaN", "[ffd]")
+{
+    // Displacements whose sums overflow, and a set so wide its extent does: no sample is made and nothing
+    // becomes NaN (a NaN was cast to int here).
+    const std::vector<PointDisplacement> huge{{Vec3(0.0, 0.0, 0.0), Vec3(-1.7e308, 0.0, 0.0)},
+                                              {Vec3(0.0, 1.0, 0.0), Vec3(-1.7e308, 0.0, 0.0)},
+                                              {Vec3(0.0, 1.0, 1.0), Vec3(-1.7e308, 0.0, 0.0)}};
+    const std::vector<PointDisplacement> wide{{Vec3(0.0, -1.0e308, 0.0), Vec3(-0.1, 0.0, 0.0)},
+                                              {Vec3(0.0, 1.0e308, 0.0), Vec3(-0.1, 0.0, 0.0)},
+                                              {Vec3(0.0, 0.0, 1.0e308), Vec3(-0.1, 0.0, 0.0)}};
+    for (const auto* set : {&huge, &wide})
+    {
+        const std::vector<PointDisplacement> out = InterpolateWideImpact(*set, 0.2);
+        CHECK(out.size() == set->size());
+        for (const PointDisplacement& p : out)
+            CHECK(!std::isnan(p.mDisplacement.x()));
+    }
+}

@@ -45,3 +45,12 @@ TEST_CASE("ValidateBodyState accepts a normal body and names bad fields", "[plug
     CHECK(wall.InverseMass() == 0.0);
     CHECK(wall.InverseInertia() == Mat3::Zero());
 }
+
+TEST_CASE("A motion type outside the enum is refused", "[plugin]")
+{
+    BodyState state;
+    state.mMotionType = static_cast<EMotionType>(7);
+    const Status status = ValidateBodyState(state);
+    REQUIRE(status.HasError());
+    CHECK(status.GetError().mMessage.find("mMotionType") != std::string::npos);
+}

@@ -568,14 +568,16 @@ class ScenarioReader
                     return Fail(EError::InvalidArgument, Child(at, "min_m"), "required");
                 if (!zone.contains("max_m"))
                     return Fail(EError::InvalidArgument, Child(at, "max_m"), "required");
-                if (!ReadVec3(zone, at, "min_m", NumberRange::Any(), low) ||
-                    !ReadVec3(zone, at, "max_m", NumberRange::Any(), high) ||
+                // A zone is a part of a vehicle: within 1 km of its frame's origin, at least 1 mm thick.
+                const NumberRange within{-1000.0, false, 1000.0, false};
+                if (!ReadVec3(zone, at, "min_m", within, low) || !ReadVec3(zone, at, "max_m", within, high) ||
                     !ReadControlCount(zone, at, settings.mLattice.mControlCount) ||
                     !ReadNumber(zone, at, "max_total_deformation_m", NumberRange::NonNegative(), false,
                                 settings.mMaxTotalDeformation))
                     return false;
-                if (!((high - low).minCoeff() > 0.0))
-                    return Fail(EError::InvalidArgument, Child(at, "max_m"), "must exceed min_m on every axis");
+                if (!((high - low).minCoeff() >= 1.0e-3))
+                    return Fail(EError::InvalidArgument, Child(at, "max_m"),
+                                "must exceed min_m by at least 0.001 m on every axis");
                 settings.mLattice.mOrigin = low;
                 settings.mLattice.mSize = high - low;
                 if (settings.mLattice.mControlCount == std::array<int, 3>{0, 0, 0})
@@ -601,9 +603,13 @@ class ScenarioReader
             return FailType(inPointer, "a string (a file path)", inValue);
         const std::filesystem::path file = inValue.get<std::string>();
         const std::filesystem::path resolved = (file.is_absolute() ? file : mBaseFolder / file).lexically_normal();
+        // A regular file only: a FIFO or a terminal would block the parser forever.
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(resolved, error))
+            return Fail(EError::IoError, inPointer, "file not found (or not a regular file): " + resolved.string());
         std::ifstream stream(resolved, std::ios::binary);
         if (!stream)
-            return Fail(EError::IoError, inPointer, "file not found: " + resolved.string());
+            return Fail(EError::IoError, inPointer, "cannot read: " + resolved.string());
         Json preset;
         try
         {
@@ -746,8 +752,9 @@ class ScenarioReader
             !ReadNumber(inTarget, inPointer, "mass_kg", NumberRange::Positive(), false, ioTarget.mVehicleMass) ||
             !ReadVec3(inTarget, inPointer, "box_size_m", NumberRange::Positive(), ioTarget.mVehicleSize) ||
             !ReadNumber(inTarget, inPointer, "heading_deg", NumberRange::Any(), false, ioTarget.mVehicleHeadingDegrees) ||
-            !ReadNumber(inTarget, inPointer, "speed_km_h", NumberRange::NonNegative(), false, speed_km_h) ||
-            !ReadNumber(inTarget, inPointer, "offset_m", NumberRange::Any(), false, ioTarget.mVehicleOffset))
+            !ReadNumber(inTarget, inPointer, "speed_km_h", NumberRange{0.0, false, 3600.0, false}, false, speed_km_h) ||
+            !ReadNumber(inTarget, inPointer, "offset_m", NumberRange{-1000.0, false, 1000.0, false}, false,
+                        ioTarget.mVehicleOffset))
             return false;
         ioTarget.mVehicleSpeed = speed_km_h / 3.6;
         ioTarget.mType = static_cast<ETarget>(type);
@@ -799,15 +806,17 @@ class ScenarioReader
                         "give speed_km_h or speed_m_s, not both");
         if (!has_km_h && !has_m_s)
             return Fail(EError::InvalidArgument, Child(inPointer, "speed_km_h"), "required (or speed_m_s)");
+        // Up to 1,000 m/s (3,600 km/h): far beyond any vehicle, short of where the scene's energies overflow.
         double speed = 0.0;
-        if (!ReadNumber(inImpact, inPointer, has_km_h ? "speed_km_h" : "speed_m_s", NumberRange::Positive(),
-                        true, speed))
+        if (!ReadNumber(inImpact, inPointer, has_km_h ? "speed_km_h" : "speed_m_s",
+                        NumberRange{0.0, true, has_km_h ? 3600.0 : 1000.0, false}, true, speed))
             return false;
         ioImpact.mSpeed = has_km_h ? KilometresPerHourToMetresPerSecond(speed) : speed;
 
         return ReadNumber(inImpact, inPointer, "heading_deg", NumberRange::Any(), false,
                           ioImpact.mHeadingDegrees) &&
-               ReadNumber(inImpact, inPointer, "offset_m", NumberRange::Any(), false, ioImpact.mOffset);
+               ReadNumber(inImpact, inPointer, "offset_m", NumberRange{-1000.0, false, 1000.0, false}, false,
+                          ioImpact.mOffset);
     }
 
     bool ReadExpectations(const Json& inList, const std::string& inPointer, std::vector<Expectation>& outList)
@@ -867,8 +876,10 @@ class ScenarioReader
             return Fail(EError::InvalidArgument, inPointer, "needs min, max or both");
         double low = -std::numeric_limits<double>::infinity();
         double high = std::numeric_limits<double>::infinity();
-        if (!ReadNumber(inItem, inPointer, "min", NumberRange::Any(), false, low) ||
-            !ReadNumber(inItem, inPointer, "max", NumberRange::Any(), false, high))
+        // Bounds within 1e300 of zero, so that no unit conversion or display overflows to Inf.
+        const NumberRange bound{-1.0e300, false, 1.0e300, false};
+        if (!ReadNumber(inItem, inPointer, "min", bound, false, low) ||
+            !ReadNumber(inItem, inPointer, "max", bound, false, high))
             return false;
         if (low > high)
             return Fail(EError::InvalidArgument, Child(inPointer, "max"),

@@ -5,6 +5,8 @@
 #include <crumple/base/JobSystem.h>
 #include <crumple/plugin/CollisionGrouper.h>
 
+#include <cstddef>
+
 namespace crumple::plugin
 {
 
@@ -17,6 +19,9 @@ struct DamageWorldSettings
     double mRestingSpeed = 0.5;         ///< Contacts closing slower than this (m/s) are resting and make no
                                         ///< impulse and no dent (like Box2D's hit-event threshold); it must
                                         ///< exceed gravity x step (0.16 m/s at 60 Hz) so a parked car is never dented
+    /// Most contacts of one body pair in one step that the impulse solve takes, >= 9: a larger manifold is
+    /// reduced to representatives that span its patch (ReduceContacts), so its cost stays bounded
+    std::size_t mMaxContactsPerPair = 16;
     /// A body pair that took an impulse at the previous engine step solves the next step's contacts from the
     /// velocities that impulse left it with instead of the engine's (see DamageWorld::SubmitContacts). An
     /// impact is then counted once however many steps the engine takes to stop it (ODE's soft contacts take
