@@ -4,6 +4,7 @@
 #include <crumple/ffd/FoldGuard.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -116,6 +117,29 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         for (std::uint32_t v = 0; v < vertex_count; ++v)
             if (deformer.mVertexZone[v] == static_cast<int>(z))
                 deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell))]++] = v;
+    }
+
+    // Which controls reach a vertex: the 4 x 4 x 4 of every cell that holds one. The others move nothing,
+    // so dents never store a value in them and a loaded state must have them zero.
+    deformer.mControlReaches.resize(deformer.mZones.size());
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+    {
+        const FfdLattice& lattice = deformer.mZones[z];
+        const std::array<int, 3>& cells = lattice.GetCellCount();
+        std::vector<std::uint8_t>& reaches = deformer.mControlReaches[z];
+        reaches.assign(static_cast<std::size_t>(lattice.GetControlCount()), 0);
+        for (int k = 0; k < cells[2]; ++k)
+            for (int j = 0; j < cells[1]; ++j)
+                for (int i = 0; i < cells[0]; ++i)
+                {
+                    const auto cell = static_cast<std::size_t>(lattice.CellIndex({i, j, k}));
+                    if (deformer.mCellStart[z][cell + 1] == deformer.mCellStart[z][cell])
+                        continue;
+                    for (int c = 0; c < 4; ++c)
+                        for (int b = 0; b < 4; ++b)
+                            for (int a = 0; a < 4; ++a)
+                                reaches[static_cast<std::size_t>(lattice.ControlIndex(i + a, j + b, k + c))] = 1;
+                }
     }
 
     // Vertex -> triangle adjacency for normal updates.
@@ -320,10 +344,13 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
     }
     report.mScale = std::min(report.mScale, solve_scale);
 
-    // Commit the controls, then recompute the reached vertices from them.
+    // Commit the controls (those that reach no vertex keep zero: they would move nothing), then recompute
+    // the reached vertices from them.
+    const std::vector<std::uint8_t>& reaches = mControlReaches[static_cast<std::size_t>(inZone)];
     for (std::size_t k = 0; k < dent_controls.size(); ++k)
-        controls[static_cast<std::size_t>(dent_controls[k])] +=
-            scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
+        if (reaches[static_cast<std::size_t>(dent_controls[k])] != 0)
+            controls[static_cast<std::size_t>(dent_controls[k])] +=
+                scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
     report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
     report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
     if (scale > 0.0)
@@ -643,9 +670,16 @@ Status FfdDeformer::ValidateControlDisplacements(std::span<const std::vector<Vec
             return MakeError(EError::StateMismatch, "zone " + std::to_string(z) + ": control state has " +
                                                         std::to_string(inPerZone[z].size()) + " controls, the lattice " +
                                                         std::to_string(mZones[z].GetControlCount()));
-        for (const Vec3& d : inPerZone[z])
-            if (!IsFinite(d))
+        for (std::size_t c = 0; c < inPerZone[z].size(); ++c)
+        {
+            if (!IsFinite(inPerZone[z][c]))
                 return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": a control displacement is not finite");
+            // A dent never stores a value in a control that reaches no vertex: a state with one was not
+            // written by this library (and would steer later crushes from a control that moves nothing).
+            if (mControlReaches[z][c] == 0 && !inPerZone[z][c].isZero(0.0))
+                return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": control " + std::to_string(c) +
+                                                              " reaches no vertex and must be zero");
+        }
     }
     // The state must respect each zone's bound on every vertex, as a dent would.
     for (std::uint32_t v = 0; v < mVertexZone.size(); ++v)

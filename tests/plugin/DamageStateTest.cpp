@@ -105,3 +105,35 @@ TEST_CASE("A corrupt, truncated, foreign or mismatched damage file is refused an
     }
     CHECK(SameBytes(CarPositions(target), before));
 }
+
+TEST_CASE("A damage state with a value on a control that reaches no vertex is refused and changes nothing", "[plugin]")
+{
+    // On the default 0.15 m lattice the controls in the middle of the box car reach no surface vertex. A
+    // dent never stores a value there, so a state that does was not written by Crumple: 1e3 m there made a
+    // later 10 m/s crash dent 0.3 m instead of 0.013 m.
+    WorldFixture fixture(4000, {0, 0, 0});
+    DamageState state = fixture.mWorld.GetDamageState();
+    REQUIRE(state.mObjects.size() == 1);
+    const ffd::FfdLattice& zone = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer().GetZones()[0];
+    const std::array<int, 3>& n = zone.GetSettings().mControlCount;
+    const int middle = zone.ControlIndex(n[0] / 2, n[1] / 2, n[2] / 2);
+    const std::vector<Vec3> before = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer().GetPositions();
+    for (double value : {1.0e-6, 1.0e3, 1.0e300})
+    {
+        INFO("value " << value);
+        DamageState bad = state;
+        bad.mObjects[0].mZones[0][static_cast<std::size_t>(middle)] = Vec3(value, 0.0, 0.0);
+        const Status status = fixture.mWorld.SetDamageState(bad);
+        REQUIRE(status.HasError());
+        CHECK(status.GetError().mMessage.find("reaches no vertex") != std::string::npos);
+        CHECK(fixture.mWorld.GetDamageState().mObjects[0].mZones[0] == state.mObjects[0].mZones[0]);
+    }
+    CHECK(fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer().GetPositions() == before);
+    // And a crash leaves every such control at zero, so its saved state loads back.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    const std::vector<ContactEvent> hit{fixture.FrontContact(-0.8, -0.6, 0.0), fixture.FrontContact(0.8, 0.6, 0.0)};
+    REQUIRE(fixture.mWorld.SubmitContacts(hit));
+    fixture.mWorld.Flush();
+    CHECK(fixture.mWorld.GetDamageState().mObjects[0].mZones[0][static_cast<std::size_t>(middle)] == Vec3::Zero());
+    CHECK(fixture.mWorld.LoadDamage(fixture.mWorld.SaveDamage()));
+}

@@ -144,6 +144,7 @@ private:
     std::vector<LatticeLocation> mVertexLocation; ///< #V rest lattice location in its zone
     std::vector<std::vector<std::uint32_t>> mCellStart;    ///< Per zone: CSR offsets, #cells + 1
     std::vector<std::vector<std::uint32_t>> mCellVertices; ///< Per zone: vertices bucketed by cell
+    std::vector<std::vector<std::uint8_t>> mControlReaches; ///< Per zone, per control: 1 when it moves a vertex
     std::vector<std::uint32_t> mVertexTriangleStart;       ///< CSR offsets, #V + 1
     std::vector<std::uint32_t> mVertexTriangles;           ///< Triangles around each vertex
 
