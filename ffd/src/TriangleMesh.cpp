@@ -14,8 +14,14 @@ Status ValidateTriangleMesh(const TriangleMesh& inMesh)
     if (inMesh.mPositions.size() > 0xFFFFFFFEu)
         return MakeError(EError::InvalidArgument, "TriangleMesh has more than 2^32 - 2 vertices");
     for (std::size_t v = 0; v < inMesh.mPositions.size(); ++v)
+    {
         if (!IsFinite(inMesh.mPositions[v]))
             return MakeError(EError::NonFinite, "TriangleMesh.mPositions[" + std::to_string(v) + "] is not finite");
+        // Cross products of edges (normals, areas) must not overflow: coordinates past 1e150 m made NaN normals.
+        if (!(inMesh.mPositions[v].cwiseAbs().maxCoeff() <= cMaxMeshCoordinate))
+            return MakeError(EError::OutOfRange, "TriangleMesh.mPositions[" + std::to_string(v) +
+                                                     "] is farther than 1e6 m from the body's origin");
+    }
     const std::size_t vertex_count = inMesh.mPositions.size();
     for (std::size_t f = 0; f < inMesh.mTriangles.size(); ++f)
         for (std::uint32_t index : inMesh.mTriangles[f])

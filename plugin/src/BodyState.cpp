@@ -18,6 +18,13 @@ Status ValidateBodyState(const BodyState& inState)
         !IsFinite(inState.mLinearVelocity) || !IsFinite(inState.mAngularVelocity) ||
         !IsFinite(inState.mTransform.mRotation) || !IsFinite(inState.mTransform.mTranslation))
         return MakeError(EError::NonFinite, "BodyState has a NaN or Inf field");
+    if (!(inState.mLinearVelocity.norm() <= cMaxBodySpeed))
+        return MakeError(EError::OutOfRange, "BodyState.mLinearVelocity is faster than 1e6 m/s");
+    if (!(inState.mAngularVelocity.norm() <= cMaxBodyAngularSpeed))
+        return MakeError(EError::OutOfRange, "BodyState.mAngularVelocity is faster than 1e6 rad/s");
+    if (!(inState.mCenterOfMass.cwiseAbs().maxCoeff() <= cMaxBodyPosition) ||
+        !(inState.mTransform.mTranslation.cwiseAbs().maxCoeff() <= cMaxBodyPosition))
+        return MakeError(EError::OutOfRange, "BodyState is farther than 1e9 m from the world's origin");
     if (!IsRotation(inState.mTransform.mRotation, 1.0e-6))
         return MakeError(EError::DegenerateGeometry, "BodyState.mTransform.mRotation is not a rotation");
     if (inState.mMotionType == EMotionType::Dynamic)
@@ -25,6 +32,10 @@ Status ValidateBodyState(const BodyState& inState)
         if (!(inState.mMass > 0.0))
             return MakeError(EError::InvalidArgument,
                              "BodyState.mMass = " + std::to_string(inState.mMass) + " kg: a dynamic body needs mass > 0");
+        if (!(inState.mMass <= cMaxBodyMass))
+            return MakeError(EError::OutOfRange, "BodyState.mMass is above 1e12 kg");
+        if (!(inState.mInverseInertiaWorld.cwiseAbs().maxCoeff() <= cMaxInverseInertia))
+            return MakeError(EError::OutOfRange, "BodyState.mInverseInertiaWorld has an entry above 1e12 1/(kg m^2)");
         const Mat3& inverse_inertia = inState.mInverseInertiaWorld;
         const double scale = inverse_inertia.cwiseAbs().maxCoeff();
         if ((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() > 1.0e-9 * scale)

@@ -221,6 +221,11 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
         return MakeError(EError::NonFinite, where + "has a NaN or Inf field");
     if (std::abs(inContact.mNormal.norm() - 1.0) > 1.0e-3)
         return MakeError(EError::InvalidArgument, where + "mNormal must be a unit vector");
+    // Within twice the bodies' range (BodyState.h), so lever arms and impulses stay far from overflow.
+    if (!(inContact.mPointOnA.cwiseAbs().maxCoeff() <= 2.0 * cMaxBodyPosition) ||
+        !(inContact.mPointOnB.cwiseAbs().maxCoeff() <= 2.0 * cMaxBodyPosition) ||
+        !(std::abs(inContact.mPenetrationDepth) <= cMaxBodyPosition))
+        return MakeError(EError::OutOfRange, where + "a point or the depth is farther than 2e9 m from the world's origin");
     return Status::Ok();
 }
 

@@ -136,8 +136,8 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     collision.mSequence = reader.ReadU64();
     collision.mCrushEnergyA = reader.ReadDouble();
     collision.mCrushEnergyB = reader.ReadDouble();
-    // Energies as bounded as impulses (1e12 N s): 1e15 J is far beyond any vehicle impact.
-    constexpr double cMaxEnergy = 1.0e15;
+    // What the bounds of a body state allow (BodyState.h): impulses up to about 1e28 N s, energies 1e44 J.
+    constexpr double cMaxEnergy = 1.0e45;
     if (!(collision.mCrushEnergyA >= 0.0 && collision.mCrushEnergyA <= cMaxEnergy) ||
         !(collision.mCrushEnergyB >= 0.0 && collision.mCrushEnergyB <= cMaxEnergy))
         return MakeError(EError::CorruptData, "collision record: a crush energy is not finite, negative or out of range");
@@ -160,7 +160,7 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mAbsorbedEnergy = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
-            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e12 ||
+            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e30 ||
             !(c.mAbsorbedEnergy >= 0.0 && c.mAbsorbedEnergy <= cMaxEnergy) ||
             std::abs(c.mLocalNormalOnA.norm() - 1.0) > 1.0e-6 || std::abs(c.mLocalNormalOnB.norm() - 1.0) > 1.0e-6)
             return MakeError(EError::CorruptData, "collision record: a contact is not finite, not unit or out of range");

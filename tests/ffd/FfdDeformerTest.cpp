@@ -445,3 +445,13 @@ TEST_CASE("A NaN lattice coordinate locates inside the lattice", "[ffd]")
         CHECK(location.mCell[static_cast<std::size_t>(axis)] < zone.GetCellCount()[static_cast<std::size_t>(axis)]);
     }
 }
+
+TEST_CASE("A mesh vertex past 1e6 m is refused (its normals overflowed to NaN)", "[ffd]")
+{
+    TriangleMesh mesh;
+    mesh.mPositions = {Vec3::Zero(), Vec3(1.0e200, 0.0, 0.0), Vec3(0.0, 1.0e200, 0.0)};
+    mesh.mTriangles = {{0, 1, 2}};
+    const Status status = ValidateTriangleMesh(mesh);
+    REQUIRE(status.HasError());
+    CHECK(status.GetError().mCode == EError::OutOfRange);
+}

@@ -54,3 +54,29 @@ TEST_CASE("A motion type outside the enum is refused", "[plugin]")
     REQUIRE(status.HasError());
     CHECK(status.GetError().mMessage.find("mMotionType") != std::string::npos);
 }
+
+TEST_CASE("Body states past the documented ranges are refused", "[plugin]")
+{
+    auto refused = [](const BodyState& inState, const char* inField) {
+        const Status status = ValidateBodyState(inState);
+        INFO(inField);
+        REQUIRE(status.HasError());
+        CHECK(status.GetError().mMessage.find(inField) != std::string::npos);
+    };
+    BodyState state;
+    state.mLinearVelocity = Vec3(1.0e160, 0.0, 0.0); // its impulses overflowed and dented nothing
+    refused(state, "mLinearVelocity");
+    state = BodyState{};
+    state.mAngularVelocity = Vec3(0.0, 2.0e6, 0.0);
+    refused(state, "mAngularVelocity");
+    state = BodyState{};
+    state.mMass = 1.0e13;
+    refused(state, "mMass");
+    state = BodyState{};
+    state.mCenterOfMass = Vec3(0.0, 0.0, 1.0e10);
+    refused(state, "farther");
+    state = BodyState{};
+    state.mInverseInertiaWorld = 1.0e13 * Mat3::Identity();
+    refused(state, "mInverseInertiaWorld");
+    CHECK(ValidateBodyState(BodyState{}));
+}

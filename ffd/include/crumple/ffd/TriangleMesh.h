@@ -19,7 +19,12 @@ struct TriangleMesh
     std::vector<std::array<std::uint32_t, 3>> mTriangles; ///< #F vertex index triples
 };
 
-/// Checks a mesh at the API boundary: at least one triangle, finite positions, indices in range.
+/// Farthest a mesh vertex may be from its body's origin (m): far beyond any vehicle or prop, and far enough
+/// inside the double range that edge cross products (normals, areas) and dents cannot overflow.
+constexpr double cMaxMeshCoordinate = 1.0e6;
+
+/// Checks a mesh at the API boundary: at least one triangle, finite positions within cMaxMeshCoordinate of
+/// the origin, indices in range.
 Status ValidateTriangleMesh(const TriangleMesh& inMesh);
 
 } // namespace crumple::ffd

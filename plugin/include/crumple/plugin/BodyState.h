@@ -42,8 +42,16 @@ struct BodyState
     }
 };
 
-/// Checks a body state at the API boundary: finite values, positive mass, symmetric PSD inverse inertia and
-/// a proper rotation. The message names the offending field.
+/// Accepted ranges of a body state, far beyond any simulated vehicle or prop, and far enough inside the double
+/// range that impulses (at most about 1e28 N s) and the energies of dents (about 1e44 J) cannot overflow.
+constexpr double cMaxBodyMass = 1.0e12;       ///< kg
+constexpr double cMaxBodySpeed = 1.0e6;       ///< m/s, of the centre of mass
+constexpr double cMaxBodyAngularSpeed = 1.0e6; ///< rad/s
+constexpr double cMaxBodyPosition = 1.0e9;    ///< m, any coordinate of the centre of mass or the frame
+constexpr double cMaxInverseInertia = 1.0e12; ///< 1/(kg m^2), any entry of the world inverse inertia
+
+/// Checks a body state at the API boundary: a motion type of the enum, finite values within the ranges above,
+/// positive mass, symmetric PSD inverse inertia and a proper rotation. The message names the offending field.
 Status ValidateBodyState(const BodyState& inState);
 
 } // namespace crumple::plugin
