@@ -75,12 +75,14 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
     if (!std::filesystem::exists(inSettings.mPath))
         return MakeError(EError::IoError, "mesh file not found: " + inSettings.mPath.string());
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                                                              aiProcess_JoinIdenticalVertices);
     if (scene == nullptr || scene->mRootNode == nullptr)
         return MakeError(EError::IoError, "cannot read " + inSettings.mPath.string() + ": " + importer.GetErrorString());
 
     // Walk the node tree, applying node transforms, keeping meshes whose node or mesh name matches.
     ffd::TriangleMesh mesh;
+    bool bad_index = false;
     std::function<void(const aiNode*, const aiMatrix4x4&)> visit = [&](const aiNode* inNode, const aiMatrix4x4& inParent) {
         const aiMatrix4x4 transform = inParent * inNode->mTransformation;
         for (unsigned i = 0; i < inNode->mNumMeshes; ++i)
@@ -98,14 +100,26 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
                 mesh.mPositions.push_back(inSettings.mFileToBody * Vec3(p.x, p.y, p.z));
             }
             for (unsigned f = 0; f < part->mNumFaces; ++f)
-                if (part->mFaces[f].mNumIndices == 3)
-                    mesh.mTriangles.push_back({base + part->mFaces[f].mIndices[0], base + part->mFaces[f].mIndices[1],
-                                               base + part->mFaces[f].mIndices[2]});
+            {
+                const aiFace& face = part->mFaces[f];
+                if (face.mNumIndices != 3)
+                    continue;
+                // A corrupt file's indices pass through assimp: one beyond the part is refused below.
+                if (face.mIndices[0] >= part->mNumVertices || face.mIndices[1] >= part->mNumVertices ||
+                    face.mIndices[2] >= part->mNumVertices)
+                {
+                    bad_index = true;
+                    continue;
+                }
+                mesh.mTriangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+            }
         }
         for (unsigned c = 0; c < inNode->mNumChildren; ++c)
             visit(inNode->mChildren[c], transform);
     };
     visit(scene->mRootNode, aiMatrix4x4());
+    if (bad_index)
+        return MakeError(EError::CorruptData, inSettings.mPath.string() + ": a face names a vertex its mesh does not have");
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles in a mesh named '" +
                                                          inSettings.mMeshName + "'");

@@ -31,7 +31,9 @@ set(crash_malformed
     "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
     "huge_speed|/impact/speed_km_h: must be in"
     "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"
-    "preset_not_regular|not a regular file")
+    "preset_not_regular|not a regular file"
+    "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
+    "mesh_face_index_beyond|mIndices\\[2\\] is out of range")
 foreach(entry IN LISTS crash_malformed)
     string(REPLACE "|" ";" parts "${entry}")
     list(GET parts 0 name)

@@ -75,6 +75,15 @@ class SceneMerger
             const aiFace& corners = inMesh.mFaces[face];
             if (corners.mNumIndices != 3)
                 continue; // points and lines
+            // assimp passes a file's face indices through: a corrupt file can name vertices it does not have.
+            if (corners.mIndices[0] >= inMesh.mNumVertices || corners.mIndices[1] >= inMesh.mNumVertices ||
+                corners.mIndices[2] >= inMesh.mNumVertices)
+            {
+                std::ostringstream message;
+                message << mPath << ": face " << face << " of mesh '" << inMesh.mName.C_Str()
+                        << "' names a vertex beyond its " << inMesh.mNumVertices;
+                return MakeError(EError::CorruptData, message.str());
+            }
             const TriangleIndices triangle{joined[corners.mIndices[0]], joined[corners.mIndices[1]],
                                            joined[corners.mIndices[2]]};
             if (triangle[0] != triangle[1] && triangle[1] != triangle[2] && triangle[2] != triangle[0])
@@ -101,7 +110,8 @@ Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath)
 
     // Parse, triangulate; assimp's own joining only merges within a mesh and with equal normals and UVs.
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    // ValidateDataStructure first: a corrupt file (a face index of -1) otherwise crashes the later steps.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (scene == nullptr || scene->mRootNode == nullptr)
         return MakeError(EError::CorruptData, path + ": cannot be read: " + importer.GetErrorString());
 
