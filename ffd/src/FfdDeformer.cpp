@@ -234,9 +234,9 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         });
         if (near != points.end())
         {
-            // Running sum; divided by the count below.
-            near->mDisplacement += point.mDisplacement;
+            // Running mean (a sum of two displacements near the double range would overflow).
             ++near->mMergedCount;
+            near->mDisplacement += (point.mDisplacement - near->mDisplacement) / near->mMergedCount;
             ++report.mPointsMerged;
         }
         else
@@ -254,7 +254,7 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         for (std::size_t i = 0; i < points.size(); ++i)
         {
             locations.push_back(zone.Locate(points[i].mLattice));
-            wanted.row(static_cast<Eigen::Index>(i)) = (points[i].mDisplacement / points[i].mMergedCount).transpose();
+            wanted.row(static_cast<Eigen::Index>(i)) = points[i].mDisplacement.transpose();
         }
         report.mPointsApplied += static_cast<int>(points.size());
 
@@ -263,6 +263,12 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         DirectManipulationSolveInfo solve_info;
         const Eigen::MatrixX3d control_delta =
             DirectManipulationSolve(data, wanted, mSettings.mPrior, mSettings.mMaxControlGain, &solve_info);
+        // A solve past the double range moves nothing (and stores no NaN).
+        if (!wanted.allFinite() || !control_delta.allFinite())
+        {
+            report.mScale = 0.0;
+            continue;
+        }
         report.mRankDeficiency += static_cast<int>(points.size()) - solve_info.mRank;
         report.mSolveTolerance = std::max(report.mSolveTolerance, solve_info.mTolerance);
 
@@ -347,7 +353,7 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
     // Commit the controls (those that reach no vertex keep zero: they would move nothing), then recompute
     // the reached vertices from them.
     const std::vector<std::uint8_t>& reaches = mControlReaches[static_cast<std::size_t>(inZone)];
-    for (std::size_t k = 0; k < dent_controls.size(); ++k)
+    for (std::size_t k = 0; k < dent_controls.size() && scale > 0.0; ++k)
         if (reaches[static_cast<std::size_t>(dent_controls[k])] != 0)
             controls[static_cast<std::size_t>(dent_controls[k])] +=
                 scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
@@ -435,7 +441,11 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
     // further than the largest change. Within both bounds, the dent needs no per-vertex check.
     double largest_change = 0.0;
     for (Eigen::Index k = 0; k < inDelta.rows(); ++k)
-        largest_change = std::max(largest_change, inDelta.row(k).norm());
+    {
+        const double change = inDelta.row(k).norm();
+        if (!(change <= largest_change)) // NaN included: the cheap test then fails
+            largest_change = change;
+    }
     if (largest_change <= inMaxStep &&
         mZoneDisplacementBound[static_cast<std::size_t>(inZone)] + largest_change <= max_total)
         return 1.0;
@@ -473,7 +483,7 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
             const double slack = max_total * max_total - o.squaredNorm();
             const double discriminant = on * on + n2 * slack;
             const double root = discriminant > 0.0 ? (-on + std::sqrt(discriminant)) / n2 : 0.0;
-            if (!(root >= 0.0) || !std::isfinite(on))
+            if (!(root >= 0.0) || !std::isfinite(on) || !std::isfinite(discriminant) || !std::isfinite(root))
             {
                 scale = 0.0;
                 break;

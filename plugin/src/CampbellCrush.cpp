@@ -244,8 +244,9 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
         ioCollision.mCrushEnergyB = energy;
     else
     {
-        ioCollision.mCrushEnergyA = energy * k_b / (k_a + k_b);
-        ioCollision.mCrushEnergyB = energy - ioCollision.mCrushEnergyA;
+        // A's share 1 / (1 + k_a / k_b): no sum of stiffnesses to overflow.
+        ioCollision.mCrushEnergyA = energy / (1.0 + k_a / k_b);
+        ioCollision.mCrushEnergyB = std::max(energy - ioCollision.mCrushEnergyA, 0.0);
     }
 }
 

@@ -287,8 +287,6 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
         Batch& batch = batches[b];
-        if (batch.mContacts.size() > mSettings.mMaxContactsPerPair)
-            batch.mContacts = ReduceContacts(batch.mContacts, mSettings.mMaxContactsPerPair);
         BodyState state_a = mBodies[batch.mA.mValue].mState;
         BodyState state_b = mBodies[batch.mB.mValue].mState;
         const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);
@@ -301,13 +299,23 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             state_b.mLinearVelocity = previous->mLinearB;
             state_b.mAngularVelocity = previous->mAngularB;
         }
+        auto speculative_speed = [&](const CollisionContact& inContact) {
+            return inTimeStep > 0.0 ? std::max(-inContact.mPenetrationDepth, 0.0) / inTimeStep : 0.0;
+        };
+        if (batch.mContacts.size() > mSettings.mMaxContactsPerPair)
+        {
+            // A large manifold: only closing contacts can take an impulse (the solve leaves the others at
+            // zero), so the resting ones go first; the closing ones are then reduced to a bounded set.
+            std::vector<CollisionContact> closing;
+            for (const CollisionContact& c : batch.mContacts)
+                if (RelativeNormalVelocity(state_a, state_b, 0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal) +
+                        speculative_speed(c) < -mSettings.mRestingSpeed)
+                    closing.push_back(c);
+            batch.mContacts = ReduceContacts(closing, mSettings.mMaxContactsPerPair);
+        }
         std::vector<ImpulseContact> impulse_contacts;
         for (const CollisionContact& c : batch.mContacts)
-        {
-            const double gap = std::max(-c.mPenetrationDepth, 0.0);
-            const double speculative = inTimeStep > 0.0 ? gap / inTimeStep : 0.0;
-            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative});
-        }
+            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c)});
         const std::vector<double> impulses =
             SimultaneousImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
         ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,

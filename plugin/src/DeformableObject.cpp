@@ -69,12 +69,13 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
         return MakeError(EError::InvalidArgument, "DamageMaterial.mImpulseThreshold must be finite and >= 0 N s");
     if (material.mModel != ECrushModel::ImpulseFactor && material.mModel != ECrushModel::Campbell)
         return MakeError(EError::InvalidArgument, "DamageMaterial.mModel must be ImpulseFactor or Campbell");
-    if (!(std::isfinite(material.mCrushA) && material.mCrushA >= 0.0))
-        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushA must be finite and >= 0 N/m");
-    if (!(std::isfinite(material.mCrushB) && material.mCrushB > 0.0))
-        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushB must be finite and > 0 N/m^2");
-    if (!(std::isfinite(material.mCrushG) && material.mCrushG >= 0.0))
-        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushG must be finite and >= 0 J/m");
+    // Campbell stiffnesses within 1e12 (a car's are about 1e4-1e6): their products cannot overflow.
+    if (!(material.mCrushA >= 0.0 && material.mCrushA <= 1.0e12))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushA must be in [0, 1e12] N/m");
+    if (!(material.mCrushB > 0.0 && material.mCrushB <= 1.0e12))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushB must be in (0, 1e12] N/m^2");
+    if (!(material.mCrushG >= 0.0 && material.mCrushG <= 1.0e12))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushG must be in [0, 1e12] J/m");
     if (!(std::isfinite(material.mMinCrushWidth) && material.mMinCrushWidth > 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
     if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))

@@ -6,6 +6,7 @@
 #include <crumple/plugin/ReplayFormat.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace crumple::plugin
@@ -136,11 +137,12 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     collision.mSequence = reader.ReadU64();
     collision.mCrushEnergyA = reader.ReadDouble();
     collision.mCrushEnergyB = reader.ReadDouble();
-    // What the bounds of a body state allow (BodyState.h): impulses up to about 1e28 N s, energies 1e44 J.
-    constexpr double cMaxEnergy = 1.0e45;
+    // Any finite, non-negative energy and impulse is what a writer can produce; what follows from them is
+    // bounded where it is used (a crush depth clamps to the material's maximum).
+    constexpr double cMaxEnergy = std::numeric_limits<double>::max();
     if (!(collision.mCrushEnergyA >= 0.0 && collision.mCrushEnergyA <= cMaxEnergy) ||
         !(collision.mCrushEnergyB >= 0.0 && collision.mCrushEnergyB <= cMaxEnergy))
-        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite, negative or out of range");
+        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite or negative");
     std::uint32_t contacts = 0;
     if (!ReadCount(reader, 26 * 8, contacts))
         return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
@@ -160,7 +162,7 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mAbsorbedEnergy = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
-            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 || c.mImpulse > 1.0e30 ||
+            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 ||
             !(c.mAbsorbedEnergy >= 0.0 && c.mAbsorbedEnergy <= cMaxEnergy) ||
             std::abs(c.mLocalNormalOnA.norm() - 1.0) > 1.0e-6 || std::abs(c.mLocalNormalOnB.norm() - 1.0) > 1.0e-6)
             return MakeError(EError::CorruptData, "collision record: a contact is not finite, not unit or out of range");

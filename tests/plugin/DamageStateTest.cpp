@@ -81,7 +81,7 @@ TEST_CASE("A corrupt, truncated, foreign or mismatched damage file is refused an
     }
     SECTION("another version")
     {
-        saved[8] = std::byte{2};
+        saved[8] = std::byte{static_cast<unsigned char>(cDamageStateVersion + 1)};
         FixChecksum(saved);
         CHECK(target.mWorld.LoadDamage(saved).GetError().mCode == EError::VersionMismatch);
     }

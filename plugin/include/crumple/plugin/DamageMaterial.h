@@ -44,9 +44,9 @@ struct DamageMaterial
     // Campbell crush stiffness per unit width (ECrushModel::Campbell). Defaults: the nominal mid-size car
     // (1,450-1,700 kg, 1.65 m wide) of shared/data/crash/campbell_oracle.csv, whose line passes through
     // 0.556 m of residual crush at 56 km/h into a rigid barrier; samples/presets hold the other classes.
-    double mCrushA = 50400.0;  ///< Force per unit width at the onset of crush (N/m), >= 0
-    double mCrushB = 549818.0; ///< Its growth per metre of crush (N/m^2), > 0
-    double mCrushG = 2310.0;   ///< Energy per unit width absorbed with no residual crush (J/m), >= 0; CRASH3
+    double mCrushA = 50400.0;  ///< Force per unit width at the onset of crush (N/m), in [0, 1e12]
+    double mCrushB = 549818.0; ///< Its growth per metre of crush (N/m^2), in (0, 1e12]
+    double mCrushG = 2310.0;   ///< Energy per unit width absorbed with no residual crush (J/m), in [0, 1e12]; CRASH3
                                ///< takes A^2 / (2 B)
     /// Narrowest width a crush is spread over (m), > 0: a car's bumper beam and longitudinal rails carry
     /// a pole's load over more than the pole's diameter. An assumption to set per vehicle, not a measured value.

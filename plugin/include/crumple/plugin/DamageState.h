@@ -26,8 +26,9 @@ struct DamageState
     std::vector<ObjectDamage> mObjects; ///< In ObjectId order
 };
 
-/// Current damage file format version. Readers refuse other versions.
-constexpr std::uint32_t cDamageStateVersion = 1;
+/// Current damage file format version. Readers refuse other versions. 2: controls that reach no vertex are
+/// zero (version 1 files could hold values there).
+constexpr std::uint32_t cDamageStateVersion = 2;
 
 /// Encodes a damage state: "CRUMPLED" magic, u32 version, u32 object count, then per object u32 id,
 /// u32 zone count, per zone u32 control count and 3 doubles per control; all little-endian, IEEE-754;
