@@ -319,7 +319,8 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
         for (std::size_t k = 0; k < inControls.size(); ++k)
             after[static_cast<std::size_t>(inControls[k])] +=
                 scale * inDelta.row(static_cast<Eigen::Index>(k)).transpose();
-        pushed = FoldGuard(mZones[static_cast<std::size_t>(inZone)], controls, after, changed, mSettings.mMinControlSpacing);
+        pushed = FoldGuard(mZones[static_cast<std::size_t>(inZone)], controls, after, changed, mSettings.mMinControlSpacing,
+                           mControlReaches[static_cast<std::size_t>(inZone)]);
         if (!pushed.empty())
         {
             // intent: the changed set is the union of solved and pushed controls (both ascending)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 
 namespace crumple::ffd
 {
@@ -19,18 +20,20 @@ constexpr int cMaxPasses = 16;
 constexpr double cSlack = 1.0e-9;
 
 // One lattice line along an axis: positions p (lattice-frame component a of the displacement after the
-// dent, m) and q (the same before it). Resolves every violating pair; returns true if p changed.
+// dent, m) and q (the same before it) of its controls at lattice indices k (consecutive on a full line;
+// with gaps where controls that move no vertex were left out). Resolves every violating pair; returns true
+// if p changed.
 class LineResolver
 {
 public:
-    LineResolver(std::span<double> ioP, std::span<const double> inQ, double inSpacing, double inMinSpacing)
-        : mP(ioP), mQ(inQ), mSpacing(inSpacing), mMinGap(inMinSpacing * inSpacing),
-          mTargetDifference((inMinSpacing - 1.0) * inSpacing + cSlack * inSpacing)
+    LineResolver(std::span<double> ioP, std::span<const double> inQ, std::span<const double> inK, double inSpacing,
+                 double inMinSpacing)
+        : mP(ioP), mQ(inQ), mK(inK), mSpacing(inSpacing), mMinGap(inMinSpacing * inSpacing)
     {
     }
 
-    // Deformed gap minus the bound: X_{j+1} - X_j - m h with X_j = j h + p_j.
-    bool Violates(std::size_t inJ) const { return mSpacing + (mP[inJ + 1] - mP[inJ]) < mMinGap; }
+    // Deformed gap minus the bound: X_{j+1} - X_j - m h with X_j = k_j h + p_j.
+    bool Violates(std::size_t inJ) const { return Rest(inJ) + (mP[inJ + 1] - mP[inJ]) < mMinGap; }
     bool AnyViolation() const
     {
         for (std::size_t j = 0; j + 1 < mP.size(); ++j)
@@ -54,24 +57,27 @@ public:
         // intent: the strict fallback; after it sets j+1, later steps touch only j+2 onward
         for (std::size_t j = 0; j + 1 < mP.size(); ++j)
             if (Violates(j))
-                mP[j + 1] = mP[j] + mTargetDifference;
+                mP[j + 1] = mP[j] + Target(j);
     }
 
 private:
+    // Rest gap of pair j, and the p_{j+1} - p_j that puts it on the bound (plus slack).
+    double Rest(std::size_t inJ) const { return (mK[inJ + 1] - mK[inJ]) * mSpacing; }
+    double Target(std::size_t inJ) const { return mMinGap - Rest(inJ) + cSlack * mSpacing; }
     // Pushes toward higher index: j+1 yields unless it pushes back (a pair where neither moved toward the
     // other can only violate when the state before was not ordered; j+1 yields then too).
     void ForwardSweep()
     {
         for (std::size_t j = 0; j + 1 < mP.size(); ++j)
             if (Violates(j) && !MovedDown(j + 1))
-                mP[j + 1] = mP[j] + mTargetDifference;
+                mP[j + 1] = mP[j] + Target(j);
     }
     // Pushes toward lower index: j yields, cascading down the line.
     void BackwardSweep()
     {
         for (std::size_t j = mP.size() - 1; j-- > 0;)
             if (Violates(j) && MovedDown(j + 1) && !MovedUp(j))
-                mP[j] = mP[j + 1] - mTargetDifference;
+                mP[j] = mP[j + 1] - Target(j);
     }
     // Both moved into each other: they meet around the midpoint of their wanted positions.
     void HeadOnSweep()
@@ -80,22 +86,22 @@ private:
             if (Violates(j) && MovedDown(j + 1) && MovedUp(j))
             {
                 const double mid = 0.5 * (mP[j] + mP[j + 1]);
-                mP[j] = mid - 0.5 * mTargetDifference;
-                mP[j + 1] = mid + 0.5 * mTargetDifference;
+                mP[j] = mid - 0.5 * Target(j);
+                mP[j + 1] = mid + 0.5 * Target(j);
             }
     }
 
     std::span<double> mP;
     std::span<const double> mQ;
+    std::span<const double> mK;
     double mSpacing;
     double mMinGap;
-    double mTargetDifference; // p_{j+1} - p_j of a pair put on the bound (plus slack)
 };
 
 } // namespace
 
 std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> inBefore, std::span<Vec3> ioAfter,
-                           std::span<const int> inChanged, double inMinSpacing)
+                           std::span<const int> inChanged, double inMinSpacing, std::span<const std::uint8_t> inMoves)
 {
     std::vector<int> moved;
     if (!(inMinSpacing > 0.0) || inChanged.empty())
@@ -108,6 +114,8 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
     std::vector<double> p;
     std::vector<double> p_wanted;
     std::vector<double> q;
+    std::vector<double> k;
+    std::vector<std::size_t> members;
     for (int axis = 0; axis < 3; ++axis)
     {
         // intent: the lines along this axis through a changed control, named by their first control
@@ -127,26 +135,36 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
         for (int line : lines)
         {
             // intent: project the line on the axis (lattice frame) and skip it cheaply when it is clean
-            p.resize(count);
-            q.resize(count);
+            // Controls that move no vertex are left out of the line (they hold no surface to fold).
+            members.clear();
             for (std::size_t j = 0; j < count; ++j)
             {
                 const std::size_t control = static_cast<std::size_t>(line) + j * step;
-                p[j] = direction.dot(ioAfter[control]);
-                q[j] = direction.dot(inBefore[control]);
+                if (inMoves.empty() || inMoves[control] != 0)
+                    members.push_back(j);
             }
-            LineResolver resolver(p, q, spacing, inMinSpacing);
+            p.resize(members.size());
+            q.resize(members.size());
+            k.resize(members.size());
+            for (std::size_t m = 0; m < members.size(); ++m)
+            {
+                const std::size_t control = static_cast<std::size_t>(line) + members[m] * step;
+                p[m] = direction.dot(ioAfter[control]);
+                q[m] = direction.dot(inBefore[control]);
+                k[m] = static_cast<double>(members[m]);
+            }
+            LineResolver resolver(p, q, k, spacing, inMinSpacing);
             if (!resolver.AnyViolation())
                 continue;
             p_wanted = p;
             resolver.Resolve();
 
             // intent: move each yielding control along the axis only, by what the sweeps changed
-            for (std::size_t j = 0; j < count; ++j)
-                if (p[j] != p_wanted[j])
+            for (std::size_t m = 0; m < members.size(); ++m)
+                if (p[m] != p_wanted[m])
                 {
-                    const std::size_t control = static_cast<std::size_t>(line) + j * step;
-                    ioAfter[control] += (p[j] - p_wanted[j]) * direction;
+                    const std::size_t control = static_cast<std::size_t>(line) + members[m] * step;
+                    ioAfter[control] += (p[m] - p_wanted[m]) * direction;
                     moved.push_back(static_cast<int>(control));
                 }
         }

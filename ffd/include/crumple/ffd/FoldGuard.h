@@ -4,6 +4,7 @@
 
 #include <crumple/ffd/FfdLattice.h>
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -39,8 +40,12 @@ namespace crumple::ffd
 /// @param[in,out] ioAfter   #controls proposed displacements after this dent (m, body frame); adjusted
 /// @param[in] inChanged     indices of the controls this dent changed (any order, duplicates allowed)
 /// @param[in] inMinSpacing  smallest gap as a fraction of the spacing, in [0, 1); 0 does nothing
+/// @param[in] inMoves       per control, 1 when it moves a vertex (FfdDeformer's reach); empty: all do.
+///                          Controls that move none are left out of their lines (neither pushed nor
+///                          pushing); the gap between the remaining neighbours is then k spacings at rest
 /// @return the indices of the controls this function moved, ascending
 std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> inBefore, std::span<Vec3> ioAfter,
-                           std::span<const int> inChanged, double inMinSpacing);
+                           std::span<const int> inChanged, double inMinSpacing,
+                           std::span<const std::uint8_t> inMoves = {});
 
 } // namespace crumple::ffd
