@@ -3,9 +3,8 @@
 #include "Benchmarks.h"
 
 #if defined(CRUMPLE_BENCH_CRASH)
-#include "CarMesh.h"
-
 #include <crumple/crash/CrashRun.h>
+#include <crumple/crash/ShippedCars.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorldSettings.h>
@@ -29,43 +28,13 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     // the oracle's nominal mid-size line (shared/data/crash/campbell_oracle.csv, b0 = 2.173 m/s,
     // b1 = 24.07 1/s), beside the run time of a whole 0.3 s crash.
     using namespace crash;
-    const std::filesystem::path meshes = samples::SharedDataFolder() / "meshes";
-    struct Body
-    {
-        const char* mName;
-        VehicleSpec mVehicle;
-    };
-    std::vector<Body> bodies;
-    {
-        Body box{"box", {}};
-        box.mVehicle.mBoxSize = Vec3(4.4, 1.65, 1.4);
-        box.mVehicle.mMass = 1575.0;
-        bodies.push_back(box);
-        Body toy{"toycar", {}};
-        toy.mVehicle.mMesh = meshes / "toycar" / "ToyCar_geometry.gltf";
-        toy.mVehicle.mMeshName = "ToyCar";
-        toy.mVehicle.mMass = 1200.0;
-        bodies.push_back(toy);
-        Body truck{"truck", {}};
-        truck.mVehicle.mMesh = meshes / "kenney_truck" / "vehicle-truck-red.glb";
-        truck.mVehicle.mMeshLength = 4.8;
-        truck.mVehicle.mMass = 1800.0;
-        bodies.push_back(truck);
-        Body hatchback{"hatchback", {}};
-        hatchback.mVehicle.mMesh = meshes / "gazebo_hatchback" / "hatchback.obj";
-        hatchback.mVehicle.mMeshName = "Hatchback";
-        hatchback.mVehicle.mMeshForwardAxis = static_cast<int>(samples::EMeshAxis::MinusY);
-        hatchback.mVehicle.mMeshUpAxis = static_cast<int>(samples::EMeshAxis::PlusZ);
-        hatchback.mVehicle.mMeshUnit = 0.0254;
-        hatchback.mVehicle.mMass = 1200.0;
-        bodies.push_back(hatchback);
-    }
+    const std::vector<NamedVehicle> bodies = ShippedCars();
     const std::vector<double> speeds = inOptions.mQuick ? std::vector<double>{56.0}
                                                         : std::vector<double>{20.0, 30.0, 40.0, 48.0, 56.0, 64.0};
-    for (const Body& body : bodies)
+    for (const NamedVehicle& body : bodies)
         for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
         {
-            if (inOptions.mQuick && (engine == EEngine::Ode || std::string(body.mName) != "box"))
+            if (inOptions.mQuick && (engine == EEngine::Ode || body.mName != "box car"))
                 continue;
             std::vector<double> times, law_errors, line_errors;
             for (double km_h : speeds)
@@ -98,7 +67,9 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
             };
             std::sort(times.begin(), times.end());
-            ioTable.Add({"crush_vs_campbell", std::string(body.mName) + "/" + ToString(engine) + "/full_wall",
+            std::string name = body.mName;
+            std::replace(name.begin(), name.end(), ' ', '_');
+            ioTable.Add({"crush_vs_campbell", name + "/" + ToString(engine) + "/full_wall",
                          times[times.size() / 2], worst(law_errors), "worst_rel_crush_vs_law",
                          "speeds_km_h=" + std::to_string(speeds.size()) + "_from_" + FormatExtra(speeds.front()) +
                              "_to_" + FormatExtra(speeds.back()) + ";worst_rel_vs_midsize_line=" +

@@ -103,7 +103,7 @@ void DamageWorld::Land()
     const std::vector<DamageListener*> listeners = mListeners;
     for (std::size_t i = 0; i < collisions.size(); ++i)
         for (DamageListener* listener : listeners)
-            if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
+            if (IsListening(listener))
                 listener->OnCollision(collisions[i], dents[i]);
 }
 
@@ -432,7 +432,7 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
             ++report.mCollisionsDispatched;
             ShareCrushEnergy(collision, CrushSideOf(collision.mBodyA), CrushSideOf(collision.mBodyB));
             for (DamageListener* listener : listeners)
-                if (std::find(mListeners.begin(), mListeners.end(), listener) != mListeners.end())
+                if (IsListening(listener))
                     listener->OnBeforeCollision(collision);
             std::vector<DentTarget> collision_targets;
             for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
@@ -455,16 +455,13 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
     // Listeners may remove themselves (or others) from their callbacks: call the ones registered when the
     // dispatch began, skipping any removed meanwhile.
     const std::vector<DamageListener*> listeners = mListeners;
-    auto still_listening = [&](DamageListener* inListener) {
-        return std::find(mListeners.begin(), mListeners.end(), inListener) != mListeners.end();
-    };
     for (Collision& collision : inCollisions)
     {
         ++report.mCollisionsDispatched;
         ShareCrushEnergy(collision, CrushSideOf(collision.mBodyA), CrushSideOf(collision.mBodyB));
         dents.clear();
         for (DamageListener* listener : listeners)
-            if (still_listening(listener))
+            if (IsListening(listener))
                 listener->OnBeforeCollision(collision);
         // Objects of A, then of B; each body's objects in creation (id) order.
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
@@ -477,10 +474,15 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
                 dents.push_back({id, dent});
             }
         for (DamageListener* listener : listeners)
-            if (still_listening(listener))
+            if (IsListening(listener))
                 listener->OnCollision(collision, dents);
     }
     return report;
+}
+
+bool DamageWorld::IsListening(const DamageListener* inListener) const
+{
+    return std::find(mListeners.begin(), mListeners.end(), inListener) != mListeners.end();
 }
 
 void DamageWorld::AddListener(DamageListener* inListener)

@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: MIT
 // The crush model over the shipped car meshes and the box car, in both engines: frontal, 40 % offset, pole
 // and 30-degree wall at 20-64 km/h with the default material (Campbell's law, mid-size class).
-#include "CarMesh.h"
-
 #include <crumple/crash/CrashRun.h>
+#include <crumple/crash/ShippedCars.h>
 
 #include <catch2/catch.hpp>
 
@@ -18,41 +17,6 @@ using namespace crumple::crash;
 
 namespace
 {
-
-struct Body
-{
-    std::string mName;
-    VehicleSpec mVehicle;
-};
-
-std::vector<Body> Bodies()
-{
-    const std::filesystem::path meshes = samples::SharedDataFolder() / "meshes";
-    std::vector<Body> bodies;
-    Body box{"box car", {}};
-    box.mVehicle.mBoxSize = Vec3(4.4, 1.65, 1.4);
-    box.mVehicle.mMass = 1575.0;
-    bodies.push_back(box);
-    Body toy{"Toy Car", {}};
-    toy.mVehicle.mMesh = meshes / "toycar" / "ToyCar_geometry.gltf";
-    toy.mVehicle.mMeshName = "ToyCar";
-    toy.mVehicle.mMass = 1200.0;
-    bodies.push_back(toy);
-    Body truck{"Kenney truck", {}};
-    truck.mVehicle.mMesh = meshes / "kenney_truck" / "vehicle-truck-red.glb";
-    truck.mVehicle.mMeshLength = 4.8;
-    truck.mVehicle.mMass = 1800.0;
-    bodies.push_back(truck);
-    Body hatchback{"Gazebo hatchback", {}};
-    hatchback.mVehicle.mMesh = meshes / "gazebo_hatchback" / "hatchback.obj";
-    hatchback.mVehicle.mMeshName = "Hatchback";
-    hatchback.mVehicle.mMeshForwardAxis = static_cast<int>(samples::EMeshAxis::MinusY);
-    hatchback.mVehicle.mMeshUpAxis = static_cast<int>(samples::EMeshAxis::PlusZ);
-    hatchback.mVehicle.mMeshUnit = 0.0254;
-    hatchback.mVehicle.mMass = 1200.0;
-    bodies.push_back(hatchback);
-    return bodies;
-}
 
 std::vector<std::pair<std::string, TargetSpec>> Targets()
 {
@@ -76,7 +40,7 @@ const std::map<std::string, Run>& Runs()
 {
     static const std::map<std::string, Run> runs = [] {
         std::map<std::string, Run> all;
-        for (const Body& body : Bodies())
+        for (const NamedVehicle& body : ShippedCars())
             for (const auto& [target_name, target] : Targets())
                 for (double km_h : cSpeedsKmh)
                     for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
@@ -111,7 +75,7 @@ const Run& Find(const std::string& inBody, const std::string& inTarget, double i
 
 TEST_CASE("Crush model: the same crash crushes the same in Bullet and ODE, within 5 %", "[crash][slow]")
 {
-    for (const Body& body : Bodies())
+    for (const NamedVehicle& body : ShippedCars())
         for (const auto& [target, spec] : Targets())
             for (double km_h : cSpeedsKmh)
             {
@@ -124,7 +88,7 @@ TEST_CASE("Crush model: the same crash crushes the same in Bullet and ODE, withi
 
 TEST_CASE("Crush model: front crush grows with speed in both engines", "[crash][slow]")
 {
-    for (const Body& body : Bodies())
+    for (const NamedVehicle& body : ShippedCars())
         for (const auto& [target, spec] : Targets())
             for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
                 for (std::size_t i = 1; i < cSpeedsKmh.size(); ++i)
@@ -139,7 +103,7 @@ TEST_CASE("Crush model: front crush grows with speed in both engines", "[crash][
 
 TEST_CASE("Crush model: a pole crushes deeper than a full wall at the same speed", "[crash][slow]")
 {
-    for (const Body& body : Bodies())
+    for (const NamedVehicle& body : ShippedCars())
         for (double km_h : cSpeedsKmh)
             for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
             {
@@ -165,7 +129,7 @@ TEST_CASE("Crush model: a 56 km/h full-width hit crushes inside Campbell's band"
 {
     // shared/data/crash/campbell_oracle.csv: 0.369-0.742 m at 56 km/h for every class (the default
     // material is the mid-size class; the bodies' masses and widths differ from it).
-    for (const Body& body : Bodies())
+    for (const NamedVehicle& body : ShippedCars())
         for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
         {
             const Run& run = Find(body.mName, "full wall", 56.0, engine);

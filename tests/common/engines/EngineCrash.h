@@ -87,8 +87,6 @@ struct EngineCrashResult
     Vec3 mDentCentroid = Vec3::Zero();   ///< Displacement-weighted mean rest position of dented vertices (m)
     int mCollisions = 0;                 ///< Collisions dispatched that involve the car
     double mTotalImpulse = 0.0;          ///< Sum of their impulses (N s)
-    Vec3 mCarImpulse = Vec3::Zero();     ///< Crumple's impulses on the car, summed as vectors (world, N s)
-    Vec3 mCarMomentumChange = Vec3::Zero(); ///< The engine's: mass x (end - start velocity) (world, N s)
     std::vector<Vec3> mPositions;        ///< Final deformed positions
     std::vector<std::byte> mDamage;      ///< SaveDamage() at the end
 };

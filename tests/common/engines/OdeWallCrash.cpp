@@ -180,16 +180,12 @@ void OdeWallCrash::Step()
 EngineCrashResult OdeWallCrash::Run()
 {
     const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
-    const plugin::BodyState start = GetCarState();
     for (int i = 0; i < steps; ++i)
         Step();
     mDamage.Flush();
     if (mAdapter == nullptr)
         return {};
-    EngineCrashResult result = SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
-    result.mCarImpulse = ImpulseOnBody(mCounter.mLog, mDamage.GetObjectBody(mCarObject));
-    result.mCarMomentumChange = start.mMass * (GetCarState().mLinearVelocity - start.mLinearVelocity);
-    return result;
+    return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
 }
 
 } // namespace crumple::common

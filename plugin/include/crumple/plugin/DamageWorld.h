@@ -146,6 +146,9 @@ private:
     Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
     CrushSide CrushSideOf(BodyId inBody) const;
+    /// Listeners may remove themselves (or others) from their callbacks: a dispatch calls the ones
+    /// registered when it began that are still registered.
+    bool IsListening(const DamageListener* inListener) const;
 
     /// Deferred dents: the collisions of one dispatch, the objects each dents, and what the task made.
     struct DentTarget
