@@ -6,6 +6,7 @@
 #include <crumple/base/Version.h>
 
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <utility>
 
@@ -63,7 +64,18 @@ int main(int argc, char** argv)
     std::printf("crumple-bench %s%s: running\n", crumple::VersionString(), options.mQuick ? " (quick)" : "");
     for (const auto& [name, run] : groups)
         if (only.empty() || only == name)
-            run(table, options);
+        {
+            // A group that cannot measure what it claims stops the run: a table with a silent hole is worse.
+            try
+            {
+                run(table, options);
+            }
+            catch (const std::exception& error)
+            {
+                std::fprintf(stderr, "crumple-bench: group %s failed: %s\n", name, error.what());
+                return 1;
+            }
+        }
     table.Print();
     if (!csv.empty() && !table.WriteCsv(csv))
     {
