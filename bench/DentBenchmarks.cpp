@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -25,13 +26,13 @@ const Vec3 cHalfExtents(2.1, 0.9, 0.7); // a 4.2 m x 1.8 m x 1.4 m car body
 
 // The car body split along its length into inZones zones of inControls each.
 // inControls 0: the default lattice, controls from DeformableObjectSettings::mFittedControlSpacing.
-DeformableObject MakeCar(int inTriangles, int inZones, int inControls)
+DeformableObject MakeCar(int inTriangles, int inZones, int inControls, ECrushModel inModel = ECrushModel::ImpulseFactor)
 {
     DeformableObjectSettings settings;
     settings.mMesh = common::MakeBoxMesh(cHalfExtents, common::BoxSegmentsForTriangles(cHalfExtents, inTriangles));
-    // The FFD dent itself is measured here, so the crush model that only scales impulse into depth: the
-    // Campbell model's footprint and energy share are the crush group's (CrushBenchmarks.cpp).
-    settings.mMaterial.mModel = ECrushModel::ImpulseFactor;
+    // ImpulseFactor: the D4MD dent (direct manipulation of the contact points); Campbell: the default
+    // material's crush (footprint scan, then the control field written directly).
+    settings.mMaterial.mModel = inModel;
     settings.mMaterial.mDeformationFactor = 5.0e-6; // about 0.1 m for a 15 m/s wall hit: below the clamps
     const ffd::FfdZoneSettings whole = FitZoneToMesh(settings.mMesh, {inControls, inControls, inControls}, 0.5,
                                                      settings.mFittedControlSpacing);
@@ -76,6 +77,8 @@ Collision MakeFrontCollision(int inContacts)
         contact.mImpulse = impulses[i];
         collision.mContacts.push_back(contact);
     }
+    // What a Campbell material absorbs of it: the car's kinetic energy less a rebound of e = 0.1.
+    collision.mCrushEnergyB = 0.5 * car.mMass * car.mLinearVelocity.squaredNorm() * (1.0 - 0.1 * 0.1);
     return collision;
 }
 
@@ -88,19 +91,57 @@ double MaxControl(const DeformableObject& inCar)
     return largest;
 }
 
-void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriangles, int inZones, int inControls,
-               int inContacts, int inRepetitions)
+// The vertices a dent changed (position or normal), ascending.
+std::vector<std::uint32_t> ChangedVertices(const DeformableObject& inBefore, const DeformableObject& inAfter)
 {
-    const DeformableObject pristine = MakeCar(inTriangles, inZones, inControls);
+    std::vector<std::uint32_t> changed;
+    const ffd::FfdDeformer& a = inBefore.GetDeformer();
+    const ffd::FfdDeformer& b = inAfter.GetDeformer();
+    for (std::size_t v = 0; v < a.GetPositions().size(); ++v)
+        if (a.GetPositions()[v] != b.GetPositions()[v] || a.GetNormals()[v] != b.GetNormals()[v])
+            changed.push_back(static_cast<std::uint32_t>(v));
+    return changed;
+}
+
+// The memory floor of a dent: read each changed vertex's rest position and a displacement, write its
+// position and normal, through the same index list (the least any dent of these vertices must touch).
+struct VertexFloor
+{
+    std::vector<std::uint32_t> mVertices;
+    std::vector<Vec3> mRest, mDisplacement, mNormalIn, mPositions, mNormals;
+
+    VertexFloor(const DeformableObject& inBefore, const DeformableObject& inAfter)
+        : mVertices(ChangedVertices(inBefore, inAfter)), mRest(inBefore.GetDeformer().GetRestMesh().mPositions),
+          mDisplacement(mRest.size(), Vec3(1.0e-3, 0.0, 0.0)), mNormalIn(inAfter.GetDeformer().GetNormals()),
+          mPositions(mRest.size()), mNormals(mRest.size())
+    {
+    }
+    void Run()
+    {
+        for (std::uint32_t v : mVertices)
+        {
+            mPositions[v] = mRest[v] + mDisplacement[v];
+            mNormals[v] = mNormalIn[v];
+        }
+    }
+};
+
+void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriangles, int inZones, int inControls,
+               int inContacts, int inRepetitions, ECrushModel inModel = ECrushModel::ImpulseFactor)
+{
+    const DeformableObject pristine = MakeCar(inTriangles, inZones, inControls, inModel);
     const Collision collision = MakeFrontCollision(inContacts);
     DeformableObject car = pristine;
     DeformableObject full = pristine;
     full.ApplyCollision(collision, ECollisionSide::B);
+    VertexFloor floor(pristine, full);
     ffd::DentReport report;
-    // The incremental dent and a full recompute of the mesh after the same dent, interleaved.
+    // The incremental dent, a full recompute of the mesh after the same dent and the memory floor of the
+    // vertices it changed, interleaved.
     const std::vector<Timing> timing = InterleavedMedians(
         inRepetitions, {{[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }},
-                        {[] {}, [&] { full.GetDeformer().RecomputeAll(); }}});
+                        {[] {}, [&] { full.GetDeformer().RecomputeAll(); }},
+                        {[] {}, [&] { floor.Run(); }}});
     // A case that dents nothing times an early return, not a dent: refuse to print it.
     if (report.mVerticesMoved == 0)
         throw std::runtime_error("dent benchmark " + inBenchmark + ": the collision moved no vertex");
@@ -112,14 +153,29 @@ void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriang
     const std::string lattice = inControls > 0 ? std::to_string(inControls) + "^3"
                                                : std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]);
     const std::string name = std::to_string(triangles / 1000) + "k_tris/" + std::to_string(inZones) + "_zone/" + lattice +
-                             "/" + std::to_string(inContacts) + "_contacts";
+                             "/" + std::to_string(inContacts) + "_contacts" +
+                             (inModel == ECrushModel::Campbell ? "/campbell" : "");
     const std::string extra = "vertices_updated=" + std::to_string(report.mVerticesMoved) + ";vertices=" +
                               std::to_string(pristine.GetDeformer().GetPositions().size()) + ";triangles_updated=" +
                               std::to_string(report.mTrianglesUpdated) + ";triangles=" + std::to_string(triangles) +
                               ";constrained_points=" + std::to_string(points) + ";scale=" + std::to_string(report.mScale) +
                               ";cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";full_recompute_ms=" + FormatExtra(full_ms) +
                               ";full_recompute_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";incremental_over_full=" +
-                              FormatExtra(ms / full_ms) + ";max_control_m=" + FormatExtra(MaxControl(car));
+                              FormatExtra(ms / full_ms) + ";max_control_m=" + FormatExtra(MaxControl(car)) +
+                              ";vertices_changed=" + std::to_string(floor.mVertices.size()) + ";floor_ms=" +
+                              FormatExtra(timing[2].mWallMs) + ";over_floor=" + FormatExtra(ms / timing[2].mWallMs);
+    if (inModel == ECrushModel::Campbell)
+    {
+        // The crush's accuracy: the struck face's deepest inward move against the planned depth.
+        double deepest = 0.0;
+        const ffd::FfdDeformer& deformer = car.GetDeformer();
+        for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+            if (deformer.GetRestMesh().mPositions[v].x() == cHalfExtents.x())
+                deepest = std::max(deepest, deformer.GetRestMesh().mPositions[v].x() - deformer.GetPositions()[v].x());
+        ioTable.Add({inBenchmark, name, ms, std::abs(deepest - report.mMaxWanted) / report.mMaxWanted, "rel_crush_error",
+                     extra + ";crush_m=" + FormatExtra(report.mMaxWanted)});
+        return;
+    }
     ioTable.Add({inBenchmark, name, ms, report.mMaxWanted > 0.0 ? report.mMaxPointError / report.mMaxWanted : 0.0,
                  "rel_contact_error", extra});
 }
@@ -173,6 +229,11 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     // Split over the host's job system (bitwise the same dent).
     ThreadsCase(ioTable, triangles, 8, 64, repetitions);
     ThreadsCase(ioTable, triangles, 0, 64, repetitions);
+
+    // The default material's crush (Campbell's law) of the same collision: no solve, the control field
+    // written from the footprint.
+    for (int controls : {8, 16, 0})
+        ApplyCase(ioTable, "apply_collision", triangles, 1, controls, 64, repetitions, ECrushModel::Campbell);
 }
 
 } // namespace crumple::bench
