@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # cmake -DCRASH=... -DCHROMIUM=... -DCHECK=... -DSCENARIO=... -DOUT=... -P ReportScreenshot.cmake
 # Runs a scenario with pictures, opens its report.html in headless Chromium and checks the screenshot shows
-# the pictures (crumple-png-check). Without an EGL context the run has no pictures: the test says so and passes
+# the pictures (crumple-png-check; the window is tall enough for the tables above them). Without an EGL context the run has no pictures: the test says so and passes
 # only if the report says why.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${CRASH} ${SCENARIO} --out ${OUT} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -16,7 +16,7 @@ if(NOT EXISTS ${OUT}/after_front.png)
     endif()
     message(FATAL_ERROR "no pictures and no reason given")
 endif()
-execute_process(COMMAND ${CHROMIUM} --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,1600
+execute_process(COMMAND ${CHROMIUM} --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,3200
                         --screenshot=${OUT}/screenshot.png file://${OUT}/report.html
                 RESULT_VARIABLE code OUTPUT_QUIET ERROR_QUIET TIMEOUT 120)
 if(NOT code EQUAL 0 OR NOT EXISTS ${OUT}/screenshot.png)

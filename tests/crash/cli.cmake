@@ -7,13 +7,45 @@
 set(crash_script ${CMAKE_CURRENT_LIST_DIR}/RunScenario.cmake)
 set(crash_out ${CMAKE_CURRENT_BINARY_DIR}/crash-cli)
 file(GLOB crash_examples CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/samples/scenarios/*.json)
+# Examples that fail a sanity check today, each with the check it fails: they must keep failing it (exit 1,
+# the check named) until the defect is fixed, and then this list shrinks. Not a waiver: the run still
+# exits 1 for its users.
+#  - angled_wall_30deg_ode: Crumple's Baraff impulse is frictionless (D4MD), and against a 30-degree wall with
+#    friction 0.5 ODE's normal impulse is 7 % larger (the friction's torque changes the normal closing speed).
+#  - offset_wall_40pct_64kmh: the Toy Car's crush pocket folds 15 vertices over at its walls (issue 11).
+set(crash_known_insane
+    "angled_wall_30deg_ode|FAIL sanity impulse_momentum"
+    "offset_wall_40pct_64kmh|FAIL sanity no_folded_vertices")
 foreach(example IN LISTS crash_examples)
     get_filename_component(name ${example} NAME_WE)
+    set(expect_exit 0)
+    set(expect_text "all expectations hold")
+    foreach(entry IN LISTS crash_known_insane)
+        string(REPLACE "|" ";" parts "${entry}")
+        list(GET parts 0 known)
+        if(known STREQUAL name)
+            set(expect_exit 1)
+            list(GET parts 1 expect_text)
+        endif()
+    endforeach()
     add_test(NAME "crash: example ${name} meets its expectations"
         COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${example} -DOUT=${crash_out}/${name}
-                -DEXPECT_EXIT=0 -DREPLAY=$<TARGET_FILE:crumple-replay> -P ${crash_script})
+                -DEXPECT_EXIT=${expect_exit} "-DEXPECT_TEXT=${expect_text}" -DREPLAY=$<TARGET_FILE:crumple-replay>
+                -P ${crash_script})
     set_tests_properties("crash: example ${name} meets its expectations" PROPERTIES LABELS crash)
 endforeach()
+
+# Sanity checks fail a run whatever its expectations: a car through a wall (Bullet), a car stopped by the
+# engine with no collision reaching Crumple (ODE).
+add_test(NAME "crash: a car that tunnels through the wall exits 1 and names the check"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/tunnelling_1000kmh.json
+            -DOUT=${crash_out}/tunnelling -DEXPECT_EXIT=1 "-DEXPECT_TEXT=FAIL sanity no_tunnelling" -P ${crash_script})
+add_test(NAME "crash: a car stopped without a collision exits 1 and names the check"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
+            -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/tunnelling_1000kmh_ode.json -DOUT=${crash_out}/tunnelling-ode
+            -DEXPECT_EXIT=1 "-DEXPECT_TEXT=FAIL sanity impulse_momentum: no collision reached Crumple" -P ${crash_script})
+set_tests_properties("crash: a car that tunnels through the wall exits 1 and names the check"
+    "crash: a car stopped without a collision exits 1 and names the check" PROPERTIES LABELS crash)
 add_test(NAME "crash: a failing expectation exits 1 and names it"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/failing_expectation.json
             -DOUT=${crash_out}/failing -DEXPECT_EXIT=1 "-DEXPECT_TEXT=FAIL residual_crush_m\\(roof\\)" -P ${crash_script})
@@ -77,6 +109,11 @@ set_tests_properties("crash: calibration fits the mid-size body to Campbell's li
     "crash: a preset checked against the wrong line fails" PROPERTIES LABELS crash)
 
 # Sweeps: the same CSV whatever the number of worker processes.
+add_test(NAME "crash: a sweep with a failing case exits 1 and its row says why"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
+            -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/failing_expectation.json -DOUT=${crash_out}/sweep-failing
+            -P ${CMAKE_CURRENT_LIST_DIR}/SweepFails.cmake)
+set_tests_properties("crash: a sweep with a failing case exits 1 and its row says why" PROPERTIES LABELS crash)
 add_test(NAME "crash: a sweep writes the same rows in 1 or 3 worker processes"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
             -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/angled_wall_30deg_ode.json -DOUT=${crash_out}/sweep

@@ -7,12 +7,14 @@
 #include <crumple/crash/Calibration.h>
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/CrashSweep.h>
+#include <crumple/crash/SanityChecks.h>
 #include <crumple/crash/ScenarioFile.h>
 
 #include "ObjWriter.h"
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <cstdlib>
 #include <string>
 #include <system_error>
@@ -48,6 +50,10 @@ void PrintUsage(std::FILE* inStream)
                  "      case, in case order whatever N) and sweep.png (front crush against speed)\n"
                  "  --campbell-check --b0 B0 --b1 B1\n"
                  "      the same speeds with the scenario's material as it is: csv, plot, exit 0 within 10 %%\n"
+                 "  --impulse-tolerance F\n"
+                 "      sanity check impulse_momentum: largest relative difference between Crumple's impulses on\n"
+                 "      the car and its momentum change over the collisions (default 0.05). Every run is also\n"
+                 "      checked for tunnelling, energy balance and folded vertices; a failed sanity check exits 1\n"
                  "  --help, --version\n");
 }
 
@@ -114,6 +120,7 @@ int main(int argc, char** argv)
     std::filesystem::path scenario_path, out;
     bool pictures = true, calibrate = false, campbell_check = false, strict = false;
     CampbellLine line{std::nan(""), std::nan("")};
+    double impulse_tolerance = std::numeric_limits<double>::quiet_NaN();
     std::string preset_name = "calibrated", source = "crumple-crash --calibrate", sweep;
     int workers = 2;
     auto number = [](const char* inText, double& outValue)
@@ -164,6 +171,14 @@ int main(int argc, char** argv)
             }
             workers = static_cast<int>(value);
         }
+        else if (arg == "--impulse-tolerance" && i + 1 < argc)
+        {
+            if (!number(argv[++i], impulse_tolerance) || !(impulse_tolerance > 0.0 && impulse_tolerance <= 1.0))
+            {
+                std::fprintf(stderr, "crumple-crash: --impulse-tolerance needs a number in (0, 1], got '%s'\n", argv[i]);
+                return cExitBadInput;
+            }
+        }
         else if (arg == "--preset-name" && i + 1 < argc)
             preset_name = argv[++i];
         else if (arg == "--source" && i + 1 < argc)
@@ -193,6 +208,8 @@ int main(int argc, char** argv)
                      scenario.GetError().mMessage.c_str());
         return cExitBadInput;
     }
+    if (!std::isnan(impulse_tolerance))
+        scenario.Get().mImpulseTolerance = impulse_tolerance;
     if ((calibrate || campbell_check) && !(line.mNoDamageSpeed >= 0.0 && line.mSlope > 0.0))
     {
         std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 >= 0 (m/s) and --b1 > 0 (1/s)\n");
@@ -279,7 +296,11 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
     bool passed = true;
     for (const ExpectationResult& result : results)
         passed = passed && result.mPassed;
-    std::printf("crumple-crash: %s; report in %s\n", passed ? "all expectations hold" : "an expectation FAILED",
+    const bool sane = AllSane(CheckSanity(scenario, outcome.Get()));
+    std::printf("crumple-crash: %s; report in %s\n",
+                !sane     ? "a sanity check FAILED: the run is not physically sound"
+                : passed ? "all expectations hold"
+                         : "an expectation FAILED",
                 (out / "report.html").string().c_str());
-    return passed ? cExitPass : cExitFail;
+    return passed && sane ? cExitPass : cExitFail;
 }

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/crash/CrashReport.h>
+#include <crumple/crash/SanityChecks.h>
 
 #include "ScenePainter.h"
 
@@ -131,6 +132,18 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
         passed = passed && result.mPassed;
     }
     report["expectations"] = expectations;
+    nlohmann::json sanity = nlohmann::json::array();
+    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+    {
+        sanity.push_back({{"check", check.mName},
+                          {"applies", check.mApplies},
+                          {"value", check.mValue},
+                          {"limit", check.mLimit},
+                          {"detail", check.mDetail},
+                          {"passed", check.mPassed}});
+        passed = passed && check.mPassed;
+    }
+    report["sanity"] = sanity;
     report["passed"] = passed;
     const std::string text = report.dump(2) + "\n";
     return WriteFileAtomically(inPath, std::as_bytes(std::span(text.data(), text.size())), "crumple-crash report");
@@ -178,6 +191,9 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);
+    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+        std::fprintf(inStream, "  %s sanity %s: %s\n", !check.mApplies ? "n/a " : check.mPassed ? "PASS" : "FAIL",
+                     check.mName.c_str(), check.mDetail.c_str());
 }
 
 Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario& inScenario,
@@ -187,6 +203,7 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     bool passed = true;
     for (const ExpectationResult& result : inResults)
         passed = passed && result.mPassed;
+    const bool sane = AllSane(CheckSanity(inScenario, inOutcome));
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        Escape(inScenario.mName) +
                        "</title><style>body{font-family:sans-serif;margin:2em;background:#fff;color:#222}"
@@ -195,7 +212,10 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
                        "border:1px solid #ccc}</style></head><body>\n";
     html += "<h1>" + Escape(inScenario.mName) + "</h1>\n<p>Engine " + ToString(inScenario.mEngine) + ", " +
             Number(inScenario.mImpact.mSpeed * cKmhPerMs, 1) + " km/h, mass " + Number(inOutcome.mMass, 0) +
-            " kg. Verdict: <span class=\"" + (passed ? "pass\">all expectations hold" : "fail\">an expectation failed") +
+            " kg. Verdict: <span class=\"" +
+            (!sane ? "fail\">a sanity check failed: the run is not physically sound"
+             : passed ? "pass\">all expectations hold"
+                      : "fail\">an expectation failed") +
             "</span></p>\n<table><tr><th>quantity</th><th>value</th></tr>\n";
     const auto row = [&html](const std::string& inName, const std::string& inValue)
     { html += "<tr><td>" + inName + "</td><td>" + inValue + "</td></tr>\n"; };
@@ -228,6 +248,10 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     for (const ExpectationResult& result : inResults)
         html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue * result.mExpectation.mDisplayScale, 4) +
                 "</td><td class=\"" + (result.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
+    html += "</table>\n<h2>Sanity checks</h2>\n<table><tr><th>check</th><th>what was measured</th><th>verdict</th></tr>\n";
+    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+        html += "<tr><td>" + Escape(check.mName) + "</td><td>" + Escape(check.mDetail) + "</td><td class=\"" +
+                (!check.mApplies ? "pass\">n/a" : check.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
     html += "</table>\n<h2>Pictures</h2>\n<div>";
     for (const char* name : {"before_front", "after_front", "before_side", "after_side", "before_top", "after_top",
                              "heat_map"})

@@ -214,6 +214,12 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
     const plugin::BodyId car_body = scene.GetDamage().GetObjectBody(scene.GetCarObject());
     const CarCrushPressure crush = CrushPressure(inSettings);
+    auto sample = [&](double inTime) {
+        const plugin::BodyState car = scene.GetCarState();
+        outcome.mHistory.push_back({inTime, car.mTransform.mTranslation, car.mLinearVelocity});
+    };
+    outcome.mHistory.reserve(static_cast<std::size_t>(steps) + 1);
+    sample(0.0);
     const double edge_snap = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetMinSpacing();
     for (int step = 0; step < steps; ++step)
     {
@@ -241,6 +247,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
                     inTarget.mBarrierSize.x() + inSettings.mMaxTotalDeformation)
                 outcome.mBarrierBreachTime = (step + 1) * inSettings.mTimeStep;
         }
+        sample((step + 1) * inSettings.mTimeStep);
     }
     scene.GetDamage().Flush();
     if (barrier)
@@ -262,6 +269,18 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         outcome.mCollisions.push_back({collision.mStartTime, collision.mEndTime, impulse,
                                        static_cast<int>(collision.mContacts.size())});
         outcome.mTotalImpulse += impulse;
+        // Each contact pushes A along its normal (B to A) and B the other way.
+        const double side = collision.mBodyA == car_body ? 1.0 : collision.mBodyB == car_body ? -1.0 : 0.0;
+        for (const plugin::CollisionContact& contact : collision.mContacts)
+            outcome.mCarImpulse += side * contact.mImpulse * contact.mNormal;
+        if (side != 0.0)
+        {
+            outcome.mImpactStartTime = std::isnan(outcome.mImpactStartTime)
+                                           ? collision.mStartTime
+                                           : std::min(outcome.mImpactStartTime, collision.mStartTime);
+            outcome.mImpactEndTime = std::isnan(outcome.mImpactEndTime) ? collision.mEndTime
+                                                                         : std::max(outcome.mImpactEndTime, collision.mEndTime);
+        }
         outcome.mPeakImpulse = std::max(outcome.mPeakImpulse, impulse);
     }
     const ffd::FfdDeformer& car = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer();

@@ -1,7 +1,9 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/crash/CrashRun.h>
+#include <crumple/crash/CrashReport.h>
 #include <crumple/crash/CrashSweep.h>
+#include <crumple/crash/SanityChecks.h>
 
 #include "PlotCanvas.h"
 
@@ -10,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -79,10 +82,25 @@ void RunCase(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std:
     else
     {
         const CrashOutcome& o = outcome.Get();
-        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,ok\n", inCase,
+        // The verdict: ok, or every expectation and sanity check that failed ("failed: a; b").
+        std::string failures;
+        for (const ExpectationResult& result : CheckExpectations(scenario, o))
+            if (!result.mPassed)
+                failures += (failures.empty() ? "" : "; ") + result.mExpectation.mText;
+        for (const SanityResult& check : CheckSanity(scenario, o))
+            if (!check.mPassed)
+                failures += (failures.empty() ? "sanity " : "; sanity ") + check.mName;
+        // A CSV field: no commas or line breaks inside it.
+        std::replace_if(failures.begin(), failures.end(), [](char c) { return c == ',' || c == '\n'; }, ' ');
+        const std::string verdict = failures.empty() ? "ok" : "failed: " + failures;
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,", inCase,
                       speed * cKmhPerMs, angle, offset, o.mResidualCrush[static_cast<int>(EZone::Front)],
                       o.mResidualCrush[static_cast<int>(EZone::Any)], o.DeltaV() * cKmhPerMs, o.EnergyAbsorbed(),
                       o.mTotalImpulse, o.mCollisions.size());
+        const std::string text = row + verdict + "\n";
+        (void)WriteFileAtomically(inCases / CasePath(inCase), std::as_bytes(std::span(text.data(), text.size())),
+                                  "crumple-crash sweep");
+        return;
     }
     const std::string text = row;
     (void)WriteFileAtomically(inCases / CasePath(inCase), std::as_bytes(std::span(text.data(), text.size())),
@@ -228,6 +246,9 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
         if (text.find(",ok\n") == std::string::npos)
         {
             ++failed;
+            // Say which case and why (the row's last field).
+            if (inProgress != nullptr)
+                std::fprintf(inProgress, "  case %zu %s", index, text.substr(text.rfind(',') + 1).c_str());
             continue;
         }
         double speed = 0.0, angle = 0.0, offset = 0.0;

@@ -25,6 +25,14 @@ struct CrashCollisionRecord
     int mContacts = 0;       ///< Contacts grouped into it
 };
 
+/// The car's state after one engine step (world frame).
+struct CarSample
+{
+    double mTime = 0.0;                 ///< s
+    Vec3 mPosition = Vec3::Zero();      ///< Centre of mass (m)
+    Vec3 mVelocity = Vec3::Zero();      ///< Linear velocity (m/s)
+};
+
 /// The crush profile as accident reconstruction measures it (CRASH3/WinSMASH): six equally spaced crush
 /// depths across the damaged width of the front, C1 at the car's right (-y), C6 at its left (+y).
 struct CrushProfile
@@ -50,6 +58,11 @@ struct CrashOutcome
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
     double mTotalImpulse = 0.0;             ///< Sum over the car's collisions (N s)
+    Vec3 mCarImpulse = Vec3::Zero();        ///< The same impulses as vectors on the car, summed (world, N s)
+    std::vector<CarSample> mHistory;        ///< The car at the start and after every engine step
+    /// First and last contact time of the collisions that involve the car (s); NaN without any
+    double mImpactStartTime = std::numeric_limits<double>::quiet_NaN();
+    double mImpactEndTime = std::numeric_limits<double>::quiet_NaN();
     double mPeakImpulse = 0.0;              ///< Largest single collision impulse (N s)
     std::vector<CrashCollisionRecord> mCollisions; ///< In dispatch order
     ffd::TriangleMesh mRestMesh;            ///< The car body before (body frame, m)

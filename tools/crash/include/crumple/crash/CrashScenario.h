@@ -151,6 +151,10 @@ struct CrashScenario
     ImpactSpec mImpact;
     std::vector<Expectation> mExpectations;
     bool mPictures = true;            ///< Write PNG renders (needs EGL; skipped with a note without it)
+    /// Sanity check impulse_momentum: largest relative disagreement between Crumple's impulses on the car and
+    /// the car's momentum change over the collisions (crumple-crash --impulse-tolerance), in (0, 1]. 0.05: the
+    /// engine scenes agree within 3 % (tests/engines), and rolling resistance over a crash pulse adds < 0.3 %.
+    double mImpulseTolerance = 0.05;
 };
 
 /// The FEM barrier's material names, in fem::EPropMaterial order.
