@@ -50,16 +50,20 @@ Eigen::MatrixXd PointGram(std::span<const LatticeLocation> inLocations)
         {
             const LatticeLocation& li = inLocations[static_cast<std::size_t>(i)];
             const LatticeLocation& lj = inLocations[static_cast<std::size_t>(j)];
-            double product = 1.0;
-            for (int axis = 0; axis < 3 && product != 0.0; ++axis)
+            // Points four or more cells apart on any axis share no control: test the cells before any weight.
+            std::array<int, 3> offset{};
+            bool apart = false;
+            for (std::size_t axis = 0; axis < 3; ++axis)
             {
-                const int offset = lj.mCell[static_cast<std::size_t>(axis)] - li.mCell[static_cast<std::size_t>(axis)];
-                product = offset < -3 || offset > 3
-                              ? 0.0
-                              : product * AxisOverlap(weights[static_cast<std::size_t>(i)][static_cast<std::size_t>(axis)],
-                                                      weights[static_cast<std::size_t>(j)][static_cast<std::size_t>(axis)],
-                                                      offset);
+                offset[axis] = lj.mCell[axis] - li.mCell[axis];
+                apart = apart || offset[axis] < -3 || offset[axis] > 3;
             }
+            if (apart)
+                continue;
+            double product = 1.0;
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                product *= AxisOverlap(weights[static_cast<std::size_t>(i)][axis], weights[static_cast<std::size_t>(j)][axis],
+                                       offset[axis]);
             gram(i, j) = product;
         }
     return gram;
@@ -228,7 +232,10 @@ DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
     data.mRank = factor.mRank;
     if (data.mRank < static_cast<int>(data.mPivots.size()))
     {
-        data.mLtL.noalias() = data.mL.transpose() * data.mL;
+        // Its lower triangle only (a symmetric rank-k update: half the products of a general one); the
+        // Cholesky factorizations below read nothing else.
+        data.mLtL.setZero(data.mRank, data.mRank);
+        data.mLtL.selfadjointView<Eigen::Lower>().rankUpdate(data.mL.transpose());
         data.mLtLFactor.compute(data.mLtL);
     }
     return data;

@@ -106,6 +106,45 @@ void SampleSegment(const PointDisplacement& inA, const PointDisplacement& inB, d
         ioOut.push_back(Lerp(inA, inB, static_cast<double>(k) / pieces));
 }
 
+constexpr double cThinningRadius = 0.5;
+// The samples less than half a pitch from a point kept before them are dropped (the given points are all
+// kept): edge samples of neighbouring triangles and grid samples beside them repeat one constraint the
+// lattice cannot tell apart, and each repeat costs the direct-manipulation solve a row (64 random contacts
+// on a car front gave 325 rows of rank 156). Order-preserving, so deterministic.
+std::vector<PointDisplacement> Thinned(std::vector<PointDisplacement> inPoints, std::size_t inGiven, const Vec3& inCentroid,
+                                       const Vec3& inE1, const Vec3& inE2, double inSpacing)
+{
+    const double radius = cThinningRadius * inSpacing;
+    // Kept points hashed by a grid of the radius: a closer point is in the same or a neighbouring bucket.
+    std::map<std::pair<long, long>, std::vector<Vec2>> buckets;
+    const auto bucket_of = [&](const Vec2& inQ) {
+        return std::pair<long, long>(static_cast<long>(std::floor(inQ.x() / radius)),
+                                     static_cast<long>(std::floor(inQ.y() / radius)));
+    };
+    std::vector<PointDisplacement> kept;
+    kept.reserve(inPoints.size());
+    for (std::size_t i = 0; i < inPoints.size(); ++i)
+    {
+        const Vec3 d = inPoints[i].mPoint - inCentroid;
+        const Vec2 q(d.dot(inE1), d.dot(inE2));
+        const auto [bx, by] = bucket_of(q);
+        bool near = false;
+        for (long dy = -1; dy <= 1 && !near && i >= inGiven; ++dy)
+            for (long dx = -1; dx <= 1 && !near; ++dx)
+            {
+                const auto found = buckets.find({bx + dx, by + dy});
+                if (found != buckets.end())
+                    near = std::any_of(found->second.begin(), found->second.end(),
+                                       [&](const Vec2& inKept) { return (inKept - q).norm() < radius; });
+            }
+        if (near)
+            continue;
+        buckets[{bx, by}].push_back(q);
+        kept.push_back(inPoints[i]);
+    }
+    return kept;
+}
+
 std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> inPoints, double inSpacing)
 {
     std::vector<PointDisplacement> out(inPoints.begin(), inPoints.end());
@@ -166,18 +205,6 @@ std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> in
 
     const std::vector<Triangle> triangles = Delaunay(plane);
 
-    // Edges longer than the spacing, each once.
-    std::set<std::pair<int, int>> edges;
-    for (const Triangle& t : triangles)
-        for (int e = 0; e < 3; ++e)
-            edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
-    for (const auto& [a, b] : edges)
-    {
-        const double length = (plane[a] - plane[b]).norm();
-        if (length > inSpacing)
-            SampleSegment(inPoints[source[a]], inPoints[source[b]], length, inSpacing, out);
-    }
-
     // Grid samples strictly inside triangles, away from the given points.
     Vec2 lo = plane[0];
     for (const Vec2& p : plane)
@@ -205,7 +232,20 @@ std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> in
                                wa * pa.mDisplacement + wb * pb.mDisplacement + wc * pc.mDisplacement});
             }
     }
-    return out;
+
+    // Edges longer than the spacing, each once (after the grid, so that thinning keeps the regular grid
+    // and drops the edge samples beside it).
+    std::set<std::pair<int, int>> edges;
+    for (const Triangle& t : triangles)
+        for (int e = 0; e < 3; ++e)
+            edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
+    for (const auto& [a, b] : edges)
+    {
+        const double length = (plane[a] - plane[b]).norm();
+        if (length > inSpacing)
+            SampleSegment(inPoints[source[a]], inPoints[source[b]], length, inSpacing, out);
+    }
+    return Thinned(std::move(out), inPoints.size(), centroid, e1, e2, inSpacing);
 }
 
 } // namespace

@@ -21,9 +21,10 @@ PivotedCholeskyFactor PivotedCholesky(const Eigen::MatrixXd& inG, double inRelat
     // Remaining diagonal of the Schur complement, in pivot order.
     Eigen::VectorXd diagonal = inG.diagonal();
     const double stop = inRelativeThreshold * diagonal.maxCoeff();
-    // Row-major: the inner products below run along rows of L.
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> l =
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Zero(n, n);
+    // Row-major: the inner products below run along rows of L. Not zeroed (a dent's 300 points made that
+    // a 0.7 MB fill and its page faults): every entry read below the diagonal is written first, and the
+    // strictly upper part is zeroed once at the end.
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> l(n, n);
     std::vector<int>& pivots = factor.mPivots;
     Eigen::VectorXd column(n);
 
@@ -62,6 +63,7 @@ PivotedCholeskyFactor PivotedCholesky(const Eigen::MatrixXd& inG, double inRelat
     }
     factor.mRank = static_cast<int>(k);
     factor.mL = l.leftCols(k);
+    factor.mL.triangularView<Eigen::StrictlyUpper>().setZero();
     return factor;
 }
 

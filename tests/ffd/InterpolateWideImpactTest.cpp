@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <random>
+
 using namespace crumple;
 using namespace crumple::ffd;
 
@@ -113,4 +115,39 @@ TEST_CASE("Contacts past the double range are left as they are, never NaN", "[ff
         for (const PointDisplacement& p : out)
             CHECK(!std::isnan(p.mDisplacement.x()));
     }
+}
+
+TEST_CASE("Samples closer than half the pitch are dropped, and the face stays covered", "[ffd]")
+{
+    // 64 random contacts on a 1.8 m x 1.4 m face in the plane x = 2 (a car's front), an affine push.
+    std::mt19937_64 random(64);
+    std::uniform_real_distribution<double> y(-0.9, 0.9), z(-0.7, 0.7);
+    std::vector<PointDisplacement> contacts;
+    for (int i = 0; i < 64; ++i)
+    {
+        const Vec3 point(2.0, y(random), z(random));
+        contacts.push_back({point, Affine(point)});
+    }
+    const double spacing = 0.15;
+    const std::vector<PointDisplacement> filled = InterpolateWideImpact(contacts, spacing);
+    REQUIRE(filled.size() > contacts.size());
+    for (std::size_t i = 0; i < contacts.size(); ++i)
+        CHECK(filled[i].mPoint == contacts[i].mPoint); // every contact kept, first
+    // No sample within half a pitch of any point before it (contacts included).
+    for (std::size_t i = contacts.size(); i < filled.size(); ++i)
+    {
+        CHECK((filled[i].mDisplacement - Affine(filled[i].mPoint)).norm() <= 1.0e-12);
+        for (std::size_t j = 0; j < i; ++j)
+            REQUIRE((filled[i].mPoint - filled[j].mPoint).norm() >= 0.5 * spacing - 1.0e-12);
+    }
+    // Inside the contacts' hull every point is within one pitch of a constrained point: take the hull's
+    // inner part (the contacts' box shrunk by a pitch), where the hull surely reaches.
+    for (double py = -0.6; py <= 0.6; py += 0.05)
+        for (double pz = -0.45; pz <= 0.45; pz += 0.05)
+        {
+            double nearest = 1.0e9;
+            for (const PointDisplacement& p : filled)
+                nearest = std::min(nearest, (p.mPoint - Vec3(2.0, py, pz)).norm());
+            REQUIRE(nearest <= spacing);
+        }
 }

@@ -58,7 +58,7 @@ struct DirectManipulationData
     bool mGramOfPoints = true;       ///< True: B B^T is factored (#points <= #controls); false: dense B is
     Eigen::MatrixXd mL;              ///< #points by rank pivoted Cholesky factor of B B^T, pivot order
     std::vector<int> mPivots;        ///< #points pivot order of B B^T
-    Eigen::MatrixXd mLtL;            ///< rank by rank L^T L, only when rank < #points; a lower rank's is its
+    Eigen::MatrixXd mLtL;            ///< rank by rank L^T L, lower triangle only, when rank < #points; a lower rank's is its
                                      ///< leading block (the columns of L do not change with the cut)
     Eigen::LLT<Eigen::MatrixXd> mLtLFactor; ///< Cholesky factor of mLtL
     Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> mTall; ///< Of dense B, when #points > #controls

@@ -18,7 +18,9 @@ namespace crumple::ffd
 /// (Delaunay, Bowyer-Watson). Inside each triangle, and along each edge longer than the spacing,
 /// samples are placed on a grid of pitch inSpacing; each sample's position and displacement are the
 /// barycentric (linear) interpolation of the triangle's corners. Collinear sets are interpolated along
-/// their line. Sets no wider than inSpacing are returned unchanged.
+/// their line. Sets no wider than inSpacing are returned unchanged. A sample closer than half the pitch to
+/// a given point or to a sample kept before it is dropped (the grid's samples come before the edges'): the
+/// lattice cannot tell such neighbours apart, and each costs the direct-manipulation solve a row.
 /// @param[in] inPoints   #P constrained points, body frame (m)
 /// @param[in] inSpacing  sample pitch (m), typically the lattice control spacing; > 0
 /// @param[in] inMaxPoints cap on the output size; the pitch grows until the samples fit
