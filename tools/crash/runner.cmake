@@ -13,7 +13,8 @@ endif()
 add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashRun.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashSweep.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp ${CMAKE_CURRENT_LIST_DIR}/src/FloatingBarrierCrash.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp)
+    ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp)
 target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_samples_common
     PRIVATE nlohmann_json::nlohmann_json crumple::compile_options)
 if(TARGET crumple_common_bullet)
@@ -33,7 +34,7 @@ if(CRUMPLE_BUILD_TESTS)
     find_package(Catch2 REQUIRED) # imported targets are per directory
     include(Catch)
     add_executable(test_crash_run ${PROJECT_SOURCE_DIR}/tests/TestMain.cpp ${PROJECT_SOURCE_DIR}/tests/crash/FemBarrierCouplingTest.cpp
-        ${PROJECT_SOURCE_DIR}/tests/crash/CrushModelTest.cpp)
+        ${PROJECT_SOURCE_DIR}/tests/crash/CrushModelTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/TimeHistoryTest.cpp)
     target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
     target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)
     catch_discover_tests(test_crash_run TEST_PREFIX "crash: " PROPERTIES LABELS crash)

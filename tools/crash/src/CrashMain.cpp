@@ -8,6 +8,7 @@
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/CrashSweep.h>
 #include <crumple/crash/SanityChecks.h>
+#include <crumple/crash/TimeHistory.h>
 #include <crumple/crash/ScenarioFile.h>
 
 #include "ObjWriter.h"
@@ -282,6 +283,8 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
         return cExitBadInput;
     }
+    if (Status status = WriteTimeSeriesCsv(out / "timeseries.csv", MakeTimeHistory(outcome.Get())); status.HasError())
+        std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
     if (Status status = common::WriteObj(out / "deformed.obj", outcome.Get().mPositions, outcome.Get().mNormals,
                                          outcome.Get().mRestMesh.mTriangles);
         status.HasError())

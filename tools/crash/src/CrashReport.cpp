@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/SanityChecks.h>
+#include <crumple/crash/TimeHistory.h>
 
 #include "ScenePainter.h"
 
@@ -120,6 +121,18 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                {"average_m", inOutcome.mFrontProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     report["limited_dents"] = inOutcome.mLimitedDents;
+    const TimeHistory history = MakeTimeHistory(inOutcome);
+    report["time_history"] = {{"file", "timeseries.csv"},
+                              {"step_s", history.mStep},
+                              {"acceleration_filter", history.mAccelerationCfc60.empty()
+                                                          ? "none: the engine step samples below 600 Hz (SAE J211 CFC 60)"
+                                                          : "CFC 60 (SAE J211/1)"},
+                              {"peak_deceleration_m_s2", history.mPeakDeceleration},
+                              {"peak_deceleration_g", history.mPeakDeceleration / 9.80665},
+                              {"time_to_zero_velocity_s", history.mTimeToZeroVelocity},
+                              {"pulse_steps", history.mPulseSteps},
+                              {"pulse_note", "the engine stops the car's rigid collision box; the crush is a dent on "
+                                             "the body, not compliance in the engine"}};
     nlohmann::json expectations = nlohmann::json::array();
     bool passed = true;
     for (const ExpectationResult& result : inResults)
@@ -188,6 +201,11 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                      std::isnan(inOutcome.mBarrierBreachTime)
                          ? "held"
                          : ("breached at " + std::to_string(inOutcome.mBarrierBreachTime) + " s").c_str());
+    const TimeHistory history = MakeTimeHistory(inOutcome);
+    std::fprintf(inStream, "  peak deceleration %.1f g over %d engine steps (%s), velocity zero at %s (timeseries.csv)\n",
+                 history.mPeakDeceleration / 9.80665, history.mPulseSteps,
+                 history.mAccelerationCfc60.empty() ? "unfiltered: the engine step is too coarse for CFC 60" : "CFC 60",
+                 history.mTimeToZeroVelocity < 0.0 ? "never" : (std::to_string(history.mTimeToZeroVelocity) + " s").c_str());
     for (const ExpectationResult& result : inResults)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);
@@ -240,6 +258,11 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
+    const TimeHistory history = MakeTimeHistory(inOutcome);
+    row("peak deceleration", Number(history.mPeakDeceleration / 9.80665, 1) + " g over " +
+                                 std::to_string(history.mPulseSteps) + " engine steps (" +
+                                 (history.mAccelerationCfc60.empty() ? "unfiltered: step too coarse for CFC 60" : "CFC 60") +
+                                 "; the engine's rigid-box pulse, timeseries.csv)");
     for (const std::string& warning : inOutcome.mWarnings)
         row("<span class=\"fail\">warning</span>", Escape(warning));
     if (!std::isnan(inOutcome.mTargetResidualCrush))

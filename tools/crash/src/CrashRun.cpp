@@ -6,6 +6,8 @@
 #include "EngineCrash.h"
 #include "FemBarrierCoupling.h"
 
+#include <crumple/crash/TimeHistory.h>
+
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/plugin/DamageRecorder.h>
 
@@ -331,6 +333,13 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return static_cast<double>(mFoldedVertices);
     case EQuantity::FoldedTriangles:
         return static_cast<double>(mFoldedTriangles);
+    case EQuantity::PeakDeceleration:
+        return MakeTimeHistory(*this).mPeakDeceleration;
+    case EQuantity::TimeToZeroVelocity:
+    {
+        const double time = MakeTimeHistory(*this).mTimeToZeroVelocity;
+        return time < 0.0 ? std::numeric_limits<double>::infinity() : time;
+    }
     case EQuantity::CrushAverage:
         return mFrontProfile.Average();
     case EQuantity::OutwardDisplacement:

@@ -39,6 +39,10 @@ const char* ToString(EQuantity inQuantity)
         return "folded_triangles";
     case EQuantity::CrushAverage:
         return "crush_average_m";
+    case EQuantity::PeakDeceleration:
+        return "peak_deceleration_m_s2";
+    case EQuantity::TimeToZeroVelocity:
+        return "time_to_zero_velocity_s";
     }
     return "unknown";
 }

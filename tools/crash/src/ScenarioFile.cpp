@@ -838,18 +838,18 @@ class ScenarioReader
     {
         // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
         constexpr std::size_t delta_v_km_h = 2;
-        static constexpr std::array<EQuantity, 10> quantities{
+        static constexpr std::array<EQuantity, 12> quantities{
             EQuantity::ResidualCrush,  EQuantity::DeltaV,         EQuantity::DeltaV,
             EQuantity::TotalImpulse,   EQuantity::EnergyAbsorbed, EQuantity::Collisions,
             EQuantity::FoldedVertices, EQuantity::OutwardDisplacement, EQuantity::FoldedTriangles,
-            EQuantity::CrushAverage};
+            EQuantity::CrushAverage,   EQuantity::PeakDeceleration, EQuantity::TimeToZeroVelocity};
         std::size_t quantity = 0;
         if (!ExpectObject(inItem, inPointer) ||
             !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
             !ReadEnum(inItem, inPointer, "quantity",
                       {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
                        "energy_absorbed_J", "collisions", "folded_vertices", "outward_displacement_m",
-                       "folded_triangles", "crush_average_m"},
+                       "folded_triangles", "crush_average_m", "peak_deceleration_m_s2", "time_to_zero_velocity_s"},
                       {{"residual_crush", "residual crush is residual_crush_m"},
                        {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
                        {"total_impulse", "impulses are total_impulse_N_s"},

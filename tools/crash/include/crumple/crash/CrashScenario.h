@@ -114,6 +114,9 @@ enum class EQuantity : std::uint8_t
                          ///< moved forward is damage that leaked out of the dent (a ripple, a bulge)
     FoldedTriangles, ///< Car body triangles whose face normal the dents turned over: count
     CrushAverage,    ///< CRASH3 average of the front's crush profile C1..C6 (m)
+    PeakDeceleration, ///< Largest deceleration of the car along its initial travel (m/s^2): CFC 60 (SAE J211)
+                      ///< when the engine step samples at >= 600 Hz, else the unfiltered step differences
+    TimeToZeroVelocity, ///< First time the car's velocity along its initial travel reaches 0 (s); infinite: never
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
