@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/base/ByteReader.h>
+#include <crumple/base/ChecksumPolicy.h>
 #include <crumple/base/Crc32.h>
 
 #include <bit>
@@ -17,7 +18,7 @@ Status ByteReader::VerifyAndStripChecksum()
     const std::span<const std::byte> body = mBytes.first(mBytes.size() - 4);
     ByteReader tail(mBytes.last(4));
     const std::uint32_t stored = tail.ReadU32();
-    if (Crc32(body) != stored)
+    if (cVerifyChecksums && Crc32(body) != stored)
         return MakeError(EError::CorruptData, "checksum mismatch: the data is corrupt or truncated");
     mBytes = body;
     return Status::Ok();

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/base/ByteReader.h>
 #include <crumple/base/ByteWriter.h>
+#include <crumple/base/ChecksumPolicy.h>
 #include <crumple/base/Crc32.h>
 #include <crumple/plugin/ReplayFormat.h>
 
@@ -297,7 +298,7 @@ Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
             return MakeError(EError::CorruptData, where + "truncated");
         const std::span<const std::byte> payload = inBytes.subspan(inBytes.size() - reader.Remaining(), length);
         reader.Skip(length);
-        if (reader.ReadU32() != Crc32(payload))
+        if (reader.ReadU32() != Crc32(payload) && cVerifyChecksums)
             return MakeError(EError::CorruptData, where + "checksum mismatch (corrupt)");
         switch (type)
         {

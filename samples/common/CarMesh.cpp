@@ -2,6 +2,10 @@
 // SPDX-License-Identifier: MIT
 #include "CarMesh.h"
 
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/IsolatedCall.h>
+
 #include <crumple/ffd/BoundingBox.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -66,14 +70,47 @@ std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody)
     return text;
 }
 
-Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
+namespace
 {
-    if (!(std::isfinite(inSettings.mUnit) && inSettings.mUnit >= 0.0))
-        return MakeError(EError::InvalidArgument, "CarMeshSettings.mUnit must be finite and >= 0 m per file unit");
-    if (!(std::isfinite(inSettings.mLength) && inSettings.mLength > 0.0))
-        return MakeError(EError::InvalidArgument, "CarMeshSettings.mLength must be finite and > 0 m");
-    if (!std::filesystem::exists(inSettings.mPath))
-        return MakeError(EError::IoError, "mesh file not found: " + inSettings.mPath.string());
+
+// The triangles as bytes, through the pipe from the isolated parse: u64 #V, #V Vec3, u64 #F, 3 #F u32.
+std::vector<std::byte> EncodeTriangles(const ffd::TriangleMesh& inMesh)
+{
+    ByteWriter writer;
+    writer.WriteU64(inMesh.mPositions.size());
+    for (const Vec3& position : inMesh.mPositions)
+        writer.WriteVec3(position);
+    writer.WriteU64(inMesh.mTriangles.size());
+    for (const auto& triangle : inMesh.mTriangles)
+        for (std::uint32_t index : triangle)
+            writer.WriteU32(index);
+    return writer.GetBytes();
+}
+
+Result<ffd::TriangleMesh> DecodeTriangles(std::span<const std::byte> inBytes, const std::string& inPath)
+{
+    ByteReader reader(inBytes);
+    ffd::TriangleMesh mesh;
+    const std::uint64_t vertices = reader.ReadU64();
+    if (reader.Failed() || vertices > reader.Remaining() / 24)
+        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
+    mesh.mPositions.resize(static_cast<std::size_t>(vertices));
+    for (Vec3& position : mesh.mPositions)
+        position = reader.ReadVec3();
+    const std::uint64_t triangles = reader.ReadU64();
+    if (reader.Failed() || reader.Remaining() % 12 != 0 || triangles != reader.Remaining() / 12)
+        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
+    mesh.mTriangles.resize(static_cast<std::size_t>(triangles));
+    for (auto& triangle : mesh.mTriangles)
+        for (std::uint32_t& index : triangle)
+            index = reader.ReadU32();
+    return mesh;
+}
+
+// The parse itself (assimp), in whatever process runs it: the wanted meshes' triangles, node transforms
+// applied, in the file's frame and unit.
+Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings)
+{
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                                                               aiProcess_JoinIdenticalVertices);
@@ -123,6 +160,37 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles in a mesh named '" +
                                                          inSettings.mMeshName + "'");
+    return mesh;
+}
+
+} // namespace
+
+Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
+{
+    if (!(std::isfinite(inSettings.mUnit) && inSettings.mUnit >= 0.0))
+        return MakeError(EError::InvalidArgument, "CarMeshSettings.mUnit must be finite and >= 0 m per file unit");
+    if (!(std::isfinite(inSettings.mLength) && inSettings.mLength > 0.0))
+        return MakeError(EError::InvalidArgument, "CarMeshSettings.mLength must be finite and > 0 m");
+    if (!std::filesystem::exists(inSettings.mPath))
+        return MakeError(EError::IoError, "mesh file not found: " + inSettings.mPath.string());
+    // assimp parses in a child process: a malformed file that crashes or hangs it is refused (RunIsolated).
+    constexpr double cParseTimeout = 60.0;
+    Result<std::vector<std::byte>> bytes = RunIsolated(
+        [&]() -> Result<std::vector<std::byte>> {
+            Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings);
+            if (read.HasError())
+                return read.GetError();
+            return EncodeTriangles(read.Get());
+        },
+        cParseTimeout, inSettings.mPath.string());
+    if (bytes.HasError())
+        return bytes.GetError();
+    Result<ffd::TriangleMesh> decoded = DecodeTriangles(bytes.Get(), inSettings.mPath.string());
+    if (decoded.HasError())
+        return decoded.GetError();
+    ffd::TriangleMesh mesh = std::move(decoded.Get());
+    if (mesh.mTriangles.empty())
+        return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles");
 
     // Centre on the bounding box and scale by the unit or to the wanted length.
     const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);

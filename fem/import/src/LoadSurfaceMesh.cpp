@@ -2,12 +2,17 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem_import/LoadSurfaceMesh.h>
 
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/IsolatedCall.h>
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -98,16 +103,46 @@ class SceneMerger
     std::map<std::array<double, 3>, int> mIndex; // exact position -> joined vertex (-0.0 joins 0.0)
 };
 
-} // namespace
-
-Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath)
+// The surface as bytes, through the pipe from the isolated parse: u64 #V, #V Vec3, u64 #F, 3 #F u32.
+std::vector<std::byte> EncodeSurface(const SurfaceMesh& inSurface)
 {
-    // A missing file is the caller's path, not a parse error.
-    const std::string path = inPath.string();
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(inPath, error))
-        return MakeError(EError::IoError, path + ": no such file");
+    ByteWriter writer;
+    writer.WriteU64(inSurface.mPositions.size());
+    for (const Vec3& position : inSurface.mPositions)
+        writer.WriteVec3(position);
+    writer.WriteU64(inSurface.mTriangles.size());
+    for (const TriangleIndices& triangle : inSurface.mTriangles)
+        for (int index : triangle)
+            writer.WriteU32(static_cast<std::uint32_t>(index));
+    return writer.GetBytes();
+}
 
+Result<SurfaceMesh> DecodeSurface(std::span<const std::byte> inBytes, const std::string& inPath)
+{
+    ByteReader reader(inBytes);
+    SurfaceMesh surface;
+    const std::uint64_t vertices = reader.ReadU64();
+    if (reader.Failed() || vertices > reader.Remaining() / 24)
+        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
+    surface.mPositions.resize(static_cast<std::size_t>(vertices));
+    for (Vec3& position : surface.mPositions)
+        position = reader.ReadVec3();
+    const std::uint64_t triangles = reader.ReadU64();
+    if (reader.Failed() || triangles != reader.Remaining() / 12 || reader.Remaining() % 12 != 0)
+        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
+    surface.mTriangles.resize(static_cast<std::size_t>(triangles));
+    for (TriangleIndices& triangle : surface.mTriangles)
+        for (int& index : triangle)
+            index = static_cast<int>(reader.ReadU32());
+    // What the child validated is validated again here: the bytes crossed a process boundary.
+    if (Status closed = ValidateClosedSurface(surface); !closed)
+        return MakeError(closed.GetError().mCode, inPath + ": " + closed.GetError().mMessage);
+    return surface;
+}
+
+// The parse itself, in whatever process runs it.
+Result<SurfaceMesh> ParseSurfaceMesh(const std::string& path)
+{
     // Parse, triangulate; assimp's own joining only merges within a mesh and with equal normals and UVs.
     Assimp::Importer importer;
     // ValidateDataStructure first: a corrupt file (a face index of -1) otherwise crashes the later steps.
@@ -127,6 +162,30 @@ Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath)
     if (Status closed = ValidateClosedSurface(surface); !closed)
         return MakeError(closed.GetError().mCode, path + ": " + closed.GetError().mMessage);
     return std::move(surface);
+}
+
+} // namespace
+
+Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double inTimeout)
+{
+    // A missing file is the caller's path, not a parse error.
+    const std::string path = inPath.string();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(inPath, error))
+        return MakeError(EError::IoError, path + ": no such file");
+    if (!(inTimeout > 0.0) || !std::isfinite(inTimeout))
+        return MakeError(EError::InvalidArgument, "LoadSurfaceMesh: the timeout must be finite and > 0 s");
+    Result<std::vector<std::byte>> bytes = RunIsolated(
+        [&]() -> Result<std::vector<std::byte>> {
+            Result<SurfaceMesh> surface = ParseSurfaceMesh(path);
+            if (surface.HasError())
+                return surface.GetError();
+            return EncodeSurface(surface.Get());
+        },
+        inTimeout, path);
+    if (bytes.HasError())
+        return bytes.GetError();
+    return DecodeSurface(bytes.Get(), path);
 }
 
 } // namespace crumple::fem

@@ -24,8 +24,15 @@ namespace crumple::fem
 /// message), no triangle, a non-finite coordinate, or a surface that ValidateClosedSurface refuses, such as
 /// an open one (the message counts the edges not used by exactly two triangles and gives one by its end
 /// positions). Every message starts with the path.
-/// @param[in] inPath  the file
+///
+/// The file is parsed in a child process (RunIsolated): assimp crashes, aborts or loops on some malformed
+/// files (scripts/fuzz.sh finds such files within seconds), and a file from a mod or a user must not take
+/// the game down. Such a file is refused with EError::CorruptData ("the parser crashed on it", "took longer
+/// than"). Measured: the isolation adds the cost of a fork and of sending the mesh back through a pipe
+/// (docs/fuzzing.md).
+/// @param[in] inPath    the file
+/// @param[in] inTimeout seconds the parse may take before it is stopped, > 0
 /// @return #V joined vertex positions (m) and #F triangles (winding as in the file)
-Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath);
+Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double inTimeout = 30.0);
 
 } // namespace crumple::fem

@@ -1,0 +1,35 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Fuzz target: a surface mesh file for a destructible prop (LoadSurfaceMesh, through assimp). The first
+// byte picks the file's extension (assimp chooses its reader by it), the rest is the file.
+#include <crumple/fem_import/LoadSurfaceMesh.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* inData, std::size_t inSize)
+{
+    if (inSize < 1)
+        return 0;
+    static const std::array<const char*, 6> extensions{".obj", ".ply", ".off", ".stl", ".gltf", ".glb"};
+    static const std::filesystem::path folder = [] {
+        std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("crumple-fuzz-surface-" + std::to_string(static_cast<long>(getpid())));
+        std::filesystem::create_directories(path);
+        return path;
+    }();
+    const std::filesystem::path file = folder / (std::string("input") + extensions[inData[0] % extensions.size()]);
+    {
+        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(inData + 1), static_cast<std::streamsize>(inSize - 1));
+    }
+    (void)crumple::fem::LoadSurfaceMesh(file);
+    std::filesystem::remove(file);
+    return 0;
+}

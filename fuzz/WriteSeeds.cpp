@@ -1,0 +1,101 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// crumple-fuzz-seeds DIR: writes the seed corpus of each fuzz target with the project's own writers, into
+// DIR/replay, DIR/damage_state, DIR/hex_compliance and DIR/surface_mesh. (The scenario target's seeds are
+// the shipped scenario files.)
+#include "FuzzWorld.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/fem/HexComplianceFile.h>
+#include <crumple/fem/HexCompliancePrecompute.h>
+#include <crumple/fem/HexNodesInBox.h>
+#include <crumple/fem/HexStaticPrecompute.h>
+#include <crumple/fem/SurfaceFile.h>
+#include <crumple/plugin/DamageRecorder.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+using namespace crumple;
+
+namespace
+{
+
+bool Write(const std::filesystem::path& inPath, std::span<const std::byte> inBytes)
+{
+    std::filesystem::create_directories(inPath.parent_path());
+    return WriteFileAtomically(inPath, inBytes, "crumple-fuzz-seeds").IsValid();
+}
+
+// A surface file with the target's extension byte in front (see FuzzSurfaceMesh.cpp).
+bool WriteSurfaceSeed(const std::filesystem::path& inFolder, const std::string& inName, std::uint8_t inExtension,
+                      bool inPly)
+{
+    const std::filesystem::path plain = inFolder / (inName + (inPly ? ".ply" : ".obj"));
+    const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<fem::TriangleIndices> faces{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    std::filesystem::create_directories(inFolder);
+    if ((inPly ? fem::SaveSurfacePly(plain, corners, faces) : fem::SaveSurfaceObj(plain, corners, faces)).HasError())
+        return false;
+    std::ifstream in(plain, std::ios::binary);
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(plain);
+    bytes.insert(bytes.begin(), static_cast<char>(inExtension));
+    return Write(inFolder / inName, std::as_bytes(std::span(bytes.data(), bytes.size())));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2)
+    {
+        std::fprintf(stderr, "usage: crumple-fuzz-seeds DIR\n");
+        return 2;
+    }
+    const std::filesystem::path out = argv[1];
+    bool ok = true;
+
+    // A recording of the box car's wall hit, and its damage before and after.
+    {
+        fuzz::FuzzWorld world;
+        ok = ok && Write(out / "damage_state" / "undamaged", world.Get().SaveDamage());
+        std::filesystem::create_directories(out / "replay");
+        Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
+            plugin::DamageRecorder::Create(out / "replay" / "wall_hit.crumple", world.Get());
+        ok = ok && recorder.IsValid();
+        world.Dent();
+        ok = ok && recorder.IsValid() && recorder.Get()->Close().IsValid();
+        ok = ok && Write(out / "damage_state" / "dented", world.Get().SaveDamage());
+    }
+
+    // The compliance of a small clamped steel bar's tip.
+    {
+        fem::HexMeshSettings settings;
+        settings.mSize = Vec3(0.5, 0.1, 0.1);
+        settings.mCellCount = {5, 2, 2};
+        const fem::HexMesh mesh = fem::HexMesh::Create(settings).Get();
+        const fem::HexMaterial steel = fem::HexMaterial::Create({}).Get();
+        const std::vector<int> clamp = fem::HexNodesInBox(mesh, Vec3(0.0, -1.0, -1.0), Vec3(0.0, 1.0, 1.0));
+        const fem::HexStaticData data = fem::HexStaticPrecompute(mesh, steel, clamp).Get();
+        const std::vector<int> tip = fem::HexNodesInBox(mesh, Vec3(0.5, -1.0, -1.0), Vec3(0.5, 1.0, 1.0));
+        const Result<std::vector<std::byte>> bytes = fem::EncodeHexCompliance(fem::HexCompliancePrecompute(data, tip, {}).Get());
+        ok = ok && bytes.IsValid() && Write(out / "hex_compliance" / "steel_bar_tip", bytes.Get());
+    }
+
+    // A tetrahedron's surface as OBJ (extension byte 0) and PLY (1).
+    ok = ok && WriteSurfaceSeed(out / "surface_mesh", "tetrahedron_obj", 0, false);
+    ok = ok && WriteSurfaceSeed(out / "surface_mesh", "tetrahedron_ply", 1, true);
+
+    if (!ok)
+    {
+        std::fprintf(stderr, "crumple-fuzz-seeds: could not write the seeds into %s\n", out.string().c_str());
+        return 1;
+    }
+    std::printf("crumple-fuzz-seeds: seeds written into %s\n", out.string().c_str());
+    return 0;
+}
