@@ -76,8 +76,6 @@ void CheckSameFragments(const std::vector<TetFragment>& inCpu, const std::vector
 TEST_CASE("GPU fracture opens the same links as the CPU at the tensile strength, into the same fragments", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     const Pair below = StretchedBar(device, 0.95 * cStrength, EFractureMode::CrackPlane);
     CHECK(below.mGpu.GetBrokenLinks() == below.mCpu.GetBrokenLinks());
     CHECK(below.mGpu.GetNodeCount() == below.mCpu.GetNodeCount());
@@ -96,8 +94,6 @@ TEST_CASE("GPU fracture opens the same links as the CPU at the tensile strength,
 TEST_CASE("GPU fracture: a wall hit at one spot breaks there as on the CPU, the same way every run", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     // The CPU test's wall: 2 m x 0.2 m x 1 m of 0.2 m cubes anchored along its base, hit with 100 N s on
     // the front face of cell (7, 0, 3).
     auto run = [&](std::vector<TetFragment>& outFragments, std::vector<std::uint8_t>& outBroken, bool inGpu)

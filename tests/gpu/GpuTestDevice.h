@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "SkipTest.h"
+
 #include <crumple/gpu/ComputeDevice.h>
 
 #include <catch2/catch.hpp>
@@ -11,16 +13,15 @@
 namespace crumple::test
 {
 
-/// A compute device for a GPU test, or nullptr after a WARN saying why (no usable EGL here): the test then
-/// returns, Catch2 v2's nearest thing to a skip.
+/// A compute device for a GPU test; without one (no usable EGL here) the test process ends as skipped
+/// (SkipTest: CTest shows it skipped, not passed).
 inline std::shared_ptr<gpu::ComputeDevice> DeviceOrSkip()
 {
     gpu::ComputeDeviceProvider provider;
     Result<std::shared_ptr<gpu::ComputeDevice>> device = provider.Acquire();
     if (device.HasError())
     {
-        WARN("skipped: no compute device: " << device.GetError().mMessage);
-        return nullptr;
+        common::SkipTest("no compute device: " + device.GetError().mMessage);
     }
     return device.Get();
 }

@@ -69,8 +69,6 @@ TEST_CASE("GPU parity: the shaders match the float CPU build of the same equatio
           "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     const EElasticModel model = GENERATE(EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff);
     CAPTURE(ToString(model));
 
@@ -114,8 +112,6 @@ TEST_CASE("GPU parity: the shaders match the float CPU build of the same equatio
 TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float limits", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     // A soft version of the issue's cantilever (E = 10 MPa, 1 N at the tip, 20 x 2 x 2 cells) so the
     // explicit sub-steps stay few; mass damping critical for the first bending mode.
     common::CantileverSettings settings;
@@ -154,8 +150,6 @@ TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-u
           "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     TetSolver cpu = ClampedBar(EElasticModel::CorotatedLinear);
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
     std::mt19937_64 random(5);
@@ -185,8 +179,6 @@ TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-u
 TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same positions", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     auto run = [&]()
     {
         GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, ClampedBar(EElasticModel::CorotatedLinear)).Get();
@@ -203,8 +195,6 @@ TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same pos
 TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothing", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     TetGridSettings grid;
     grid.mCellCount = {2, 1, 1};
     const TetMesh mesh = TetGrid(grid).Get();
@@ -237,8 +227,6 @@ TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothin
 TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    if (!device)
-        return;
     FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
     material.mMassDamping = 20.0; // comes to rest within a second
     TetGridSettings grid;
