@@ -5,12 +5,18 @@
 #include <crumple/base/IsolatedCall.h>
 
 #if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
 
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstring>
 #endif
@@ -70,6 +76,7 @@ Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vecto
     int channel[2];
     if (pipe(channel) != 0)
         return MakeError(EError::IoError, inWhat + ": cannot create a pipe: " + std::strerror(errno));
+    const pid_t parent = getpid();
     const pid_t child = fork();
     if (child < 0)
     {
@@ -80,6 +87,27 @@ Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vecto
     if (child == 0)
     {
         close(channel[0]);
+        // A child must not outlive its work: killed when the caller dies (Linux), and by its own CPU limit
+        // (a looping parser whose caller is gone would otherwise spin forever).
+#if defined(__linux__)
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent)
+            _exit(1); // the caller died before the line above
+#endif
+        const rlim_t seconds = static_cast<rlim_t>(std::ceil(inTimeout)) + 1;
+        const rlimit cpu{seconds, seconds + 1};
+        setrlimit(RLIMIT_CPU, &cpu);
+        // The child is expendable: a fatal signal ends it (the caller reads the signal), whatever handlers
+        // the caller installed (a crash reporter, a sanitizer, a fuzzer), and it prints nothing.
+        for (int fatal : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGTRAP})
+            signal(fatal, SIG_DFL);
+        const int null = open("/dev/null", O_WRONLY);
+        if (null >= 0)
+        {
+            dup2(null, STDOUT_FILENO);
+            dup2(null, STDERR_FILENO);
+            close(null);
+        }
         const std::vector<std::byte> answer = EncodeAnswer(inWork());
         std::size_t written = 0;
         while (written < answer.size())

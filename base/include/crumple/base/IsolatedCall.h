@@ -17,7 +17,10 @@ namespace crumple
 /// files: scripts/fuzz.sh found them) then fails the call with a message instead of taking the caller down.
 ///
 /// POSIX fork without exec: the child is a copy of the caller that runs only inWork, sends its result
-/// through a pipe and exits; the caller's memory, file descriptors and other threads are untouched. Only the
+/// through a pipe and exits; the caller's memory, file descriptors and other threads are untouched. In the
+/// child fatal signals take their default action (the caller's crash handlers do not run there) and its
+/// standard output and error go to /dev/null; it is killed when the caller dies (Linux) and by a CPU limit of
+/// the timeout. Only the
 /// calling thread exists in the child, so inWork must not wait on a lock another thread of the caller may
 /// hold (glibc's malloc is safe). Costs a fork (page tables of the caller's memory: about 1 ms per GB).
 /// Elsewhere than POSIX inWork runs in the caller, unprotected.
