@@ -1,17 +1,22 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // crumple-fuzz-seeds DIR: writes the seed corpus of each fuzz target with the project's own writers, into
-// DIR/replay, DIR/damage_state, DIR/hex_compliance and DIR/surface_mesh. (The scenario target's seeds are
+// DIR/replay, DIR/damage_state, DIR/hex_compliance, DIR/tetgen_output and DIR/surface_mesh. (The scenario target's seeds are
 // the shipped scenario files.)
 #include "FuzzWorld.h"
 
 #include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#ifdef CRUMPLE_FUZZ_FEM
 #include <crumple/fem/HexComplianceFile.h>
 #include <crumple/fem/HexCompliancePrecompute.h>
 #include <crumple/fem/HexNodesInBox.h>
 #include <crumple/fem/HexStaticPrecompute.h>
 #include <crumple/fem/SurfaceFile.h>
-#include <crumple/plugin/DamageRecorder.h>
+#endif
+#ifdef CRUMPLE_FUZZ_FEM_IMPORT
+#include <crumple/fem_import/TetgenOutput.h>
+#endif
 
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +36,7 @@ bool Write(const std::filesystem::path& inPath, std::span<const std::byte> inByt
     return WriteFileAtomically(inPath, inBytes, "crumple-fuzz-seeds").IsValid();
 }
 
+#ifdef CRUMPLE_FUZZ_FEM
 // A surface file with the target's extension byte in front (see FuzzSurfaceMesh.cpp).
 bool WriteSurfaceSeed(const std::filesystem::path& inFolder, const std::string& inName, std::uint8_t inExtension,
                       bool inPly)
@@ -47,6 +53,7 @@ bool WriteSurfaceSeed(const std::filesystem::path& inFolder, const std::string& 
     bytes.insert(bytes.begin(), static_cast<char>(inExtension));
     return Write(inFolder / inName, std::as_bytes(std::span(bytes.data(), bytes.size())));
 }
+#endif
 
 } // namespace
 
@@ -73,6 +80,7 @@ int main(int argc, char** argv)
         ok = ok && Write(out / "damage_state" / "dented", world.Get().SaveDamage());
     }
 
+#ifdef CRUMPLE_FUZZ_FEM
     // The compliance of a small clamped steel bar's tip.
     {
         fem::HexMeshSettings settings;
@@ -90,6 +98,31 @@ int main(int argc, char** argv)
     // A tetrahedron's surface as OBJ (extension byte 0) and PLY (1).
     ok = ok && WriteSurfaceSeed(out / "surface_mesh", "tetrahedron_obj", 0, false);
     ok = ok && WriteSurfaceSeed(out / "surface_mesh", "tetrahedron_ply", 1, true);
+#endif
+
+#ifdef CRUMPLE_FUZZ_FEM_IMPORT
+    // tetgen's output for a unit cube split into five tetrahedra, numbered from 1 as tetgen does by default,
+    // and the same from 0 (-z): .node text, a NUL, .ele text (see FuzzTetgenOutput.cpp).
+    for (int base : {0, 1})
+    {
+        std::string text = "8 3 0 0\n";
+        for (int i = 0; i < 8; ++i)
+            text += std::to_string(i + base) + " " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
+                    std::to_string((i >> 2) & 1) + "\n";
+        text.push_back('\0');
+        const int tets[5][4] = {{0, 1, 3, 5}, {0, 3, 2, 6}, {0, 5, 4, 6}, {3, 5, 6, 7}, {0, 3, 5, 6}};
+        text += "# five tetrahedra\n5 4 0\n";
+        for (int t = 0; t < 5; ++t)
+            text += std::to_string(t + base) + " " + std::to_string(tets[t][0] + base) + " " + std::to_string(tets[t][1] + base) +
+                    " " + std::to_string(tets[t][2] + base) + " " + std::to_string(tets[t][3] + base) + "\n";
+        // A seed the reader refuses would only fuzz its first error path.
+        const std::size_t split = text.find('\0');
+        ok = ok && fem::ParseTetgenOutput(std::string_view(text).substr(0, split), std::string_view(text).substr(split + 1)).IsValid();
+        ok = ok && Write(out / "tetgen_output" / ("cube_from_" + std::to_string(base)),
+                         std::as_bytes(std::span(text.data(), text.size())));
+    }
+
+#endif
 
     if (!ok)
     {

@@ -6,6 +6,7 @@
 #include <crumple/base/FileBytes.h>
 #include <crumple/fem/ExactNumber.h>
 #include <crumple/fem/TetVolume.h>
+#include <crumple/fem_import/TetgenOutput.h>
 #include <crumple/fem_import/Tetrahedralize.h>
 
 #include <algorithm>
@@ -73,110 +74,6 @@ Status WriteOff(const std::filesystem::path& inPath, const SurfaceMesh& inSurfac
     file.close();
     if (!file)
         return MakeError(EError::IoError, "cannot write " + inPath.string());
-    return Status::Ok();
-}
-
-// The non-empty, comment-free lines of a tetgen output file, split into fields.
-class TetgenFile
-{
-  public:
-    static Result<TetgenFile> Read(const std::filesystem::path& inPath)
-    {
-        Result<std::vector<std::byte>> bytes = ReadFileBytes(inPath);
-        if (bytes.HasError())
-            return MakeError(EError::CorruptData, "tetgen wrote no " + inPath.filename().string());
-        TetgenFile file;
-        file.mName = inPath.filename().string();
-        std::istringstream lines(
-            std::string(reinterpret_cast<const char*>(bytes.Get().data()), bytes.Get().size()));
-        std::string line;
-        while (std::getline(lines, line))
-        {
-            std::istringstream fields(line.substr(0, line.find('#')));
-            std::vector<std::string> row;
-            for (std::string field; fields >> field;)
-                row.push_back(field);
-            if (!row.empty())
-                file.mRows.push_back(std::move(row));
-        }
-        return file;
-    }
-
-    /// Fields inFirst .. inFirst + inCount - 1 of row inRow as numbers; false when missing or malformed.
-    template <class T>
-    bool Numbers(std::size_t inRow, std::size_t inFirst, std::size_t inCount, T* outValues) const
-    {
-        if (inRow >= mRows.size() || mRows[inRow].size() < inFirst + inCount)
-            return false;
-        for (std::size_t field = 0; field < inCount; ++field)
-        {
-            const std::string& text = mRows[inRow][inFirst + field];
-            const char* end = text.data() + text.size();
-            const std::from_chars_result result = std::from_chars(text.data(), end, outValues[field]);
-            if (result.ec != std::errc() || result.ptr != end)
-                return false;
-        }
-        return true;
-    }
-
-    std::size_t GetRowCount() const { return mRows.size(); }
-
-    Error Corrupt(const std::string& inWhat) const
-    {
-        return MakeError(EError::CorruptData, "tetgen output " + mName + ": " + inWhat);
-    }
-
-  private:
-    std::string mName;
-    std::vector<std::vector<std::string>> mRows;
-};
-
-// Reads <name>.1.node: "count 3 #attributes #markers", then "index x y z ...". outBase is the first index (0
-// with -z, 1 without), which the .ele file uses too.
-Status ReadNodes(const TetgenFile& inFile, std::vector<Vec3>& outNodes, long long& outBase)
-{
-    long long header[2] = {};
-    if (!inFile.Numbers(0, 0, 2, header) || header[1] != 3 || header[0] < 4 ||
-        header[0] > TetMesh::cMaxCount || inFile.GetRowCount() < static_cast<std::size_t>(header[0]) + 1)
-        return inFile.Corrupt("bad header or too few lines");
-    outNodes.resize(static_cast<std::size_t>(header[0]));
-    for (std::size_t node = 0; node < outNodes.size(); ++node)
-    {
-        long long index = 0;
-        double xyz[3] = {};
-        if (!inFile.Numbers(node + 1, 0, 1, &index) || !inFile.Numbers(node + 1, 1, 3, xyz))
-            return inFile.Corrupt("bad line for node " + std::to_string(node));
-        if (node == 0)
-            outBase = index;
-        if (index != outBase + static_cast<long long>(node) || (outBase != 0 && outBase != 1))
-            return inFile.Corrupt("node numbers do not count up from 0 or 1");
-        outNodes[node] = Vec3(xyz[0], xyz[1], xyz[2]);
-    }
-    return Status::Ok();
-}
-
-// Reads <name>.1.ele: "count 4 #attributes", then "index n0 n1 n2 n3 ...", indices from inBase.
-Status ReadElements(const TetgenFile& inFile, long long inBase, int inNodeCount,
-                    std::vector<TetIndices>& outTets)
-{
-    long long header[2] = {};
-    if (!inFile.Numbers(0, 0, 2, header) || header[1] != 4 || header[0] < 1 ||
-        header[0] > TetMesh::cMaxCount || inFile.GetRowCount() < static_cast<std::size_t>(header[0]) + 1)
-        return inFile.Corrupt("bad header or too few lines (expected 4 nodes per element)");
-    outTets.resize(static_cast<std::size_t>(header[0]));
-    for (std::size_t tet = 0; tet < outTets.size(); ++tet)
-    {
-        long long corners[5] = {};
-        if (!inFile.Numbers(tet + 1, 0, 5, corners) || corners[0] != inBase + static_cast<long long>(tet))
-            return inFile.Corrupt("bad line for element " + std::to_string(tet));
-        for (int corner = 0; corner < 4; ++corner)
-        {
-            const long long node = corners[corner + 1] - inBase;
-            if (node < 0 || node >= inNodeCount)
-                return inFile.Corrupt("element " + std::to_string(tet) + " names a node out of range");
-            outTets[tet][corner] = static_cast<int>(node);
-        }
-    }
     return Status::Ok();
 }
 
@@ -293,21 +190,19 @@ Result<TetMesh> Tetrahedralize(const SurfaceMesh& inSurface, const TetgenSetting
     }
 
     // Its nodes and elements.
-    Result<TetgenFile> node_file = TetgenFile::Read(work / "surface.1.node");
-    if (node_file.HasError())
-        return MakeError(EError::CorruptData,
-                         node_file.GetError().mMessage + "; its output: " + OutputTail(outcome.mOutput));
-    Result<TetgenFile> ele_file = TetgenFile::Read(work / "surface.1.ele");
-    if (ele_file.HasError())
-        return MakeError(EError::CorruptData,
-                         ele_file.GetError().mMessage + "; its output: " + OutputTail(outcome.mOutput));
-    std::vector<Vec3> nodes;
-    long long base = 0;
-    if (Status read = ReadNodes(node_file.Get(), nodes, base); !read)
-        return read.GetError();
-    std::vector<TetIndices> tets;
-    if (Status read = ReadElements(ele_file.Get(), base, static_cast<int>(nodes.size()), tets); !read)
-        return read.GetError();
+    Result<std::vector<std::byte>> node_bytes = ReadFileBytes(work / "surface.1.node");
+    if (node_bytes.HasError())
+        return MakeError(EError::CorruptData, "tetgen wrote no surface.1.node; its output: " + OutputTail(outcome.mOutput));
+    Result<std::vector<std::byte>> ele_bytes = ReadFileBytes(work / "surface.1.ele");
+    if (ele_bytes.HasError())
+        return MakeError(EError::CorruptData, "tetgen wrote no surface.1.ele; its output: " + OutputTail(outcome.mOutput));
+    Result<TetgenOutput> output = ParseTetgenOutput(
+        std::string_view(reinterpret_cast<const char*>(node_bytes.Get().data()), node_bytes.Get().size()),
+        std::string_view(reinterpret_cast<const char*>(ele_bytes.Get().data()), ele_bytes.Get().size()));
+    if (output.HasError())
+        return output.GetError();
+    std::vector<Vec3>& nodes = output.Get().mNodes;
+    std::vector<TetIndices>& tets = output.Get().mTets;
 
     // The surface vertices come first, in order: check, then restore them bit for bit.
     const int surface_count = static_cast<int>(inSurface.mPositions.size());
