@@ -76,6 +76,9 @@ TEST_CASE("A car braking at a constant rate has that deceleration and stops when
     CHECK(history.mPeakDeceleration >= a);
     CHECK(history.mPeakDeceleration <= 1.0432 * a);
     CHECK(history.mRows[100].mAcceleration == Approx(-a).epsilon(1.0e-9));
+    // A 200 ms plateau: its 3 ms clip is the plateau (the overshoot at the ends lasts under 3 ms above it).
+    CHECK(history.mClip3ms >= a);
+    CHECK(history.mClip3ms <= 1.0432 * a);
     CHECK(history.mRows.back().mEnergyAbsorbed == Approx(0.5 * 1000.0 * v0 * v0).epsilon(1.0e-12));
     CHECK(history.mRows.back().mDisplacement == Approx(v0 * v0 / (2.0 * a)).epsilon(1.0e-12));
 }

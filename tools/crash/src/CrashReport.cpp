@@ -129,6 +129,8 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                                           : "CFC 60 (SAE J211/1)"},
                               {"peak_deceleration_m_s2", history.mPeakDeceleration},
                               {"peak_deceleration_g", history.mPeakDeceleration / 9.80665},
+                              {"clip_3ms_m_s2", std::isnan(history.mClip3ms) ? nlohmann::json(nullptr)
+                                                                              : nlohmann::json(history.mClip3ms)},
                               {"time_to_zero_velocity_s", history.mTimeToZeroVelocity},
                               {"pulse_steps", history.mPulseSteps},
                               {"pulse_note", "the engine stops the car's rigid collision box; the crush is a dent on "

@@ -4,7 +4,9 @@
 
 #include <crumple/base/FileBytes.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -85,6 +87,18 @@ TimeHistory MakeTimeHistory(const CrashOutcome& inOutcome)
     const std::vector<double>& pulse = history.mAccelerationCfc60.empty() ? acceleration : history.mAccelerationCfc60;
     for (double a : pulse)
         history.mPeakDeceleration = std::max(history.mPeakDeceleration, -a);
+    // 3 ms clip: the deceleration level that the filtered pulse exceeds for 3 ms in total, i.e. the k-th largest
+    // sample with k steps making 3 ms (at least three samples, so a 1 ms step at most).
+    const auto clip_steps = static_cast<std::size_t>(std::ceil(0.003 / history.mStep - 1.0e-9));
+    if (!history.mAccelerationCfc60.empty() && clip_steps >= 3 && clip_steps <= history.mAccelerationCfc60.size())
+    {
+        std::vector<double> deceleration;
+        for (double a : history.mAccelerationCfc60)
+            deceleration.push_back(-a);
+        std::nth_element(deceleration.begin(), deceleration.begin() + static_cast<std::ptrdiff_t>(clip_steps - 1),
+                         deceleration.end(), std::greater<double>());
+        history.mClip3ms = deceleration[clip_steps - 1];
+    }
     double largest = 0.0;
     for (double a : acceleration)
         largest = std::max(largest, -a);

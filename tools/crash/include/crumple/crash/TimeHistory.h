@@ -6,6 +6,7 @@
 #include <crumple/crash/CrashRun.h>
 
 #include <filesystem>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct TimeHistory
     std::vector<double> mAccelerationCfc60;
     double mPeakDeceleration = 0.0;     ///< Largest deceleration along the travel (m/s^2), CFC 60 when filtered
     double mTimeToZeroVelocity = -1.0;  ///< First time the velocity along the travel reaches 0 (s); < 0: never
+    /// The 3 ms clip of the CFC 60 pulse (m/s^2): the highest deceleration exceeded for 3 ms in total (FMVSS 208's
+    /// measure, here of the vehicle pulse); NaN when the pulse is not filtered or the step exceeds 1 ms
+    double mClip3ms = std::numeric_limits<double>::quiet_NaN();
     double mStep = 0.0;                 ///< Sample step (s)
     /// Steps whose unfiltered deceleration exceeds a tenth of the largest: how long the engine took to stop
     /// the car's rigid collision box. The crush is a dent on the body, not compliance in the engine, so a
