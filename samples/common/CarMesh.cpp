@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "CarMesh.h"
 
-#include <crumple/base/ByteReader.h>
-#include <crumple/base/ByteWriter.h>
 #include <crumple/base/IsolatedCall.h>
+#include <crumple/base/MeshBytes.h>
 
 #include <crumple/ffd/BoundingBox.h>
 #include <assimp/Importer.hpp>
@@ -72,40 +71,6 @@ std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody)
 
 namespace
 {
-
-// The triangles as bytes, through the pipe from the isolated parse: u64 #V, #V Vec3, u64 #F, 3 #F u32.
-std::vector<std::byte> EncodeTriangles(const ffd::TriangleMesh& inMesh)
-{
-    ByteWriter writer;
-    writer.WriteU64(inMesh.mPositions.size());
-    for (const Vec3& position : inMesh.mPositions)
-        writer.WriteVec3(position);
-    writer.WriteU64(inMesh.mTriangles.size());
-    for (const auto& triangle : inMesh.mTriangles)
-        for (std::uint32_t index : triangle)
-            writer.WriteU32(index);
-    return writer.GetBytes();
-}
-
-Result<ffd::TriangleMesh> DecodeTriangles(std::span<const std::byte> inBytes, const std::string& inPath)
-{
-    ByteReader reader(inBytes);
-    ffd::TriangleMesh mesh;
-    const std::uint64_t vertices = reader.ReadU64();
-    if (reader.Failed() || vertices > reader.Remaining() / 24)
-        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
-    mesh.mPositions.resize(static_cast<std::size_t>(vertices));
-    for (Vec3& position : mesh.mPositions)
-        position = reader.ReadVec3();
-    const std::uint64_t triangles = reader.ReadU64();
-    if (reader.Failed() || reader.Remaining() % 12 != 0 || triangles != reader.Remaining() / 12)
-        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
-    mesh.mTriangles.resize(static_cast<std::size_t>(triangles));
-    for (auto& triangle : mesh.mTriangles)
-        for (std::uint32_t& index : triangle)
-            index = reader.ReadU32();
-    return mesh;
-}
 
 // The parse itself (assimp), in whatever process runs it: the wanted meshes' triangles, node transforms
 // applied, in the file's frame and unit.
@@ -180,15 +145,14 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
             Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings);
             if (read.HasError())
                 return read.GetError();
-            return EncodeTriangles(read.Get());
+            return EncodeMeshBytes<std::uint32_t>(read.Get().mPositions, read.Get().mTriangles);
         },
         cParseTimeout, inSettings.mPath.string());
     if (bytes.HasError())
         return bytes.GetError();
-    Result<ffd::TriangleMesh> decoded = DecodeTriangles(bytes.Get(), inSettings.mPath.string());
-    if (decoded.HasError())
+    ffd::TriangleMesh mesh;
+    if (Status decoded = DecodeMeshBytes(bytes.Get(), inSettings.mPath.string(), mesh.mPositions, mesh.mTriangles); !decoded)
         return decoded.GetError();
-    ffd::TriangleMesh mesh = std::move(decoded.Get());
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles");
 

@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem_import/LoadSurfaceMesh.h>
 
-#include <crumple/base/ByteReader.h>
-#include <crumple/base/ByteWriter.h>
 #include <crumple/base/IsolatedCall.h>
+#include <crumple/base/MeshBytes.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -103,38 +102,12 @@ class SceneMerger
     std::map<std::array<double, 3>, int> mIndex; // exact position -> joined vertex (-0.0 joins 0.0)
 };
 
-// The surface as bytes, through the pipe from the isolated parse: u64 #V, #V Vec3, u64 #F, 3 #F u32.
-std::vector<std::byte> EncodeSurface(const SurfaceMesh& inSurface)
-{
-    ByteWriter writer;
-    writer.WriteU64(inSurface.mPositions.size());
-    for (const Vec3& position : inSurface.mPositions)
-        writer.WriteVec3(position);
-    writer.WriteU64(inSurface.mTriangles.size());
-    for (const TriangleIndices& triangle : inSurface.mTriangles)
-        for (int index : triangle)
-            writer.WriteU32(static_cast<std::uint32_t>(index));
-    return writer.GetBytes();
-}
-
+// The surface sent back from the isolated parse, checked again here: the bytes crossed a process boundary.
 Result<SurfaceMesh> DecodeSurface(std::span<const std::byte> inBytes, const std::string& inPath)
 {
-    ByteReader reader(inBytes);
     SurfaceMesh surface;
-    const std::uint64_t vertices = reader.ReadU64();
-    if (reader.Failed() || vertices > reader.Remaining() / 24)
-        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
-    surface.mPositions.resize(static_cast<std::size_t>(vertices));
-    for (Vec3& position : surface.mPositions)
-        position = reader.ReadVec3();
-    const std::uint64_t triangles = reader.ReadU64();
-    if (reader.Failed() || triangles != reader.Remaining() / 12 || reader.Remaining() % 12 != 0)
-        return MakeError(EError::CorruptData, inPath + ": the isolated reader's mesh is truncated");
-    surface.mTriangles.resize(static_cast<std::size_t>(triangles));
-    for (TriangleIndices& triangle : surface.mTriangles)
-        for (int& index : triangle)
-            index = static_cast<int>(reader.ReadU32());
-    // What the child validated is validated again here: the bytes crossed a process boundary.
+    if (Status decoded = DecodeMeshBytes(inBytes, inPath, surface.mPositions, surface.mTriangles); !decoded)
+        return decoded.GetError();
     if (Status closed = ValidateClosedSurface(surface); !closed)
         return MakeError(closed.GetError().mCode, inPath + ": " + closed.GetError().mMessage);
     return surface;
@@ -180,7 +153,7 @@ Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double 
             Result<SurfaceMesh> surface = ParseSurfaceMesh(path);
             if (surface.HasError())
                 return surface.GetError();
-            return EncodeSurface(surface.Get());
+            return EncodeMeshBytes<int>(surface.Get().mPositions, surface.Get().mTriangles);
         },
         inTimeout, path);
     if (bytes.HasError())
