@@ -173,7 +173,7 @@ TEST_CASE("The Gram solve equals a dense SVD pseudo-inverse on random sets", "[f
     // direction, B^+ is unique, and the dense SVD of B is an independent computation of it.
     std::mt19937_64 random(21);
     std::uniform_int_distribution<int> controls(4, 14);
-    int compared_under = 0, compared_over = 0;
+    int compared_under = 0, compared_over = 0, compared_solutions = 0;
     for (int trial = 0; trial < 40; ++trial)
     {
         FfdLattice lattice = MakeLattice(controls(random));
@@ -194,11 +194,18 @@ TEST_CASE("The Gram solve equals a dense SVD pseudo-inverse on random sets", "[f
         const int full = std::min<int>(count, static_cast<int>(data.mControls.size()));
         if (data.mRank < full)
             continue; // truncated: the two decompositions may drop different directions
-        (over ? compared_over : compared_under) += 1;
         REQUIRE(data.mGramOfPoints == !over);
 
         const Eigen::MatrixXd b = DirectManipulationMatrix(data);
         const Eigen::BDCSVD<Eigen::MatrixXd> svd(b, Eigen::ComputeThinU | Eigen::ComputeThinV);
+        // Two correct least-squares solvers agree only to about cond(B)^2 times the rounding unit (Golub & Van
+        // Loan 5.3.8): beyond cond 1e3 that bound passes 1e-9, and which one is nearer the exact answer depends
+        // on the compiler (clang's rounding differed from gcc's by 3e-3 at a cond of about 1e7).
+        // The residuals agree to the rounding unit whatever the conditioning: compare them always.
+        const double condition = svd.singularValues()(0) / svd.singularValues()(svd.singularValues().size() - 1);
+        const bool well_conditioned = condition <= 1.0e3;
+        (over ? compared_over : compared_under) += 1;
+        compared_solutions += well_conditioned ? 1 : 0;
         for (EDirectManipulationPrior prior : {EDirectManipulationPrior::None, EDirectManipulationPrior::QuasiInterpolant})
         {
             const Eigen::MatrixX3d start = prior == EDirectManipulationPrior::None
@@ -206,13 +213,17 @@ TEST_CASE("The Gram solve equals a dense SVD pseudo-inverse on random sets", "[f
                                                : Eigen::MatrixX3d(QuasiInterpolant(data, wanted));
             const Eigen::MatrixX3d reference = start + svd.solve(Eigen::MatrixX3d(wanted - b * start));
             const Eigen::MatrixX3d delta = DirectManipulationSolve(data, wanted, prior);
-            INFO("trial " << trial << " points " << count << " controls " << data.mControls.size());
-            CHECK((delta - reference).norm() <= 1.0e-9 * reference.norm());
+            INFO("trial " << trial << " points " << count << " controls " << data.mControls.size() << " cond " << condition);
+            CHECK(std::abs((b * delta - wanted).norm() - (b * reference - wanted).norm()) <= 1.0e-9 * wanted.norm());
+            if (well_conditioned)
+                CHECK((delta - reference).norm() <= 1.0e-9 * reference.norm());
         }
     }
     // The comparison must have happened on both sides.
+    INFO("compared " << compared_under << " underdetermined and " << compared_over << " overdetermined sets");
     CHECK(compared_under >= 10);
     CHECK(compared_over >= 10);
+    CHECK(compared_solutions >= 10);
 }
 
 TEST_CASE("A flat push on part of a face moves no control further than the push", "[ffd]")
