@@ -4,6 +4,8 @@
 #include <crumple/base/ByteWriter.h>
 #include <crumple/base/IsolatedCall.h>
 
+#include <cmath>
+
 #if defined(__unix__) || defined(__APPLE__)
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -16,7 +18,6 @@
 #endif
 
 #include <cerrno>
-#include <cmath>
 #include <chrono>
 #include <cstring>
 #endif
@@ -72,6 +73,8 @@ Result<std::vector<std::byte>> DecodeAnswer(std::span<const std::byte> inBytes, 
 Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
                                            double inTimeout, const std::string& inWhat)
 {
+    if (!(inTimeout > 0.0) || !std::isfinite(inTimeout))
+        return MakeError(EError::InvalidArgument, inWhat + ": the isolated reader's timeout must be finite and > 0 s");
 #if defined(__unix__) || defined(__APPLE__)
     int channel[2];
     if (pipe(channel) != 0)

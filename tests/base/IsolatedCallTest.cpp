@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <csignal>
+#include <limits>
 #include <cstdlib>
 #include <thread>
 
@@ -27,6 +29,21 @@ TEST_CASE("Isolated work returns its bytes and its errors", "[base]")
     REQUIRE(refused.HasError());
     CHECK(refused.GetError().mCode == EError::DegenerateGeometry);
     CHECK(refused.GetError().mMessage == "no triangle");
+
+    // A timeout that is not finite and positive is refused before anything runs.
+    bool ran = false;
+    for (double timeout : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()})
+    {
+        const Result<std::vector<std::byte>> bad = RunIsolated(
+            [&] {
+                ran = true;
+                return Result<std::vector<std::byte>>(payload);
+            },
+            timeout, "test");
+        REQUIRE(bad.HasError());
+        CHECK(bad.GetError().mCode == EError::InvalidArgument);
+    }
+    CHECK_FALSE(ran);
 
     // A large answer (8 MB) comes through the pipe whole.
     const std::vector<std::byte> large(8u << 20, std::byte{7});

@@ -102,17 +102,6 @@ class SceneMerger
     std::map<std::array<double, 3>, int> mIndex; // exact position -> joined vertex (-0.0 joins 0.0)
 };
 
-// The surface sent back from the isolated parse, checked again here: the bytes crossed a process boundary.
-Result<SurfaceMesh> DecodeSurface(std::span<const std::byte> inBytes, const std::string& inPath)
-{
-    SurfaceMesh surface;
-    if (Status decoded = DecodeMeshBytes(inBytes, inPath, surface.mPositions, surface.mTriangles); !decoded)
-        return decoded.GetError();
-    if (Status closed = ValidateClosedSurface(surface); !closed)
-        return MakeError(closed.GetError().mCode, inPath + ": " + closed.GetError().mMessage);
-    return surface;
-}
-
 // The parse itself, in whatever process runs it.
 Result<SurfaceMesh> ParseSurfaceMesh(const std::string& path)
 {
@@ -158,7 +147,11 @@ Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double 
         inTimeout, path);
     if (bytes.HasError())
         return bytes.GetError();
-    return DecodeSurface(bytes.Get(), path);
+    // The child ran ValidateClosedSurface on exactly these values: decoding checks only that they arrived whole.
+    SurfaceMesh surface;
+    if (Status decoded = DecodeMeshBytes(bytes.Get(), path, surface.mPositions, surface.mTriangles); !decoded)
+        return decoded.GetError();
+    return surface;
 }
 
 } // namespace crumple::fem

@@ -277,13 +277,13 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
         std::fprintf(stderr, "crumple-crash: %s\n", outcome.GetError().mMessage.c_str());
         return cExitBadInput;
     }
-    const std::vector<ExpectationResult> results = CheckExpectations(scenario, outcome.Get());
-    if (Status status = WriteReportJson(out / "report.json", scenario, outcome.Get(), results); status.HasError())
+    const CrashFindings findings = AnalyzeCrash(scenario, outcome.Get());
+    if (Status status = WriteReportJson(out / "report.json", scenario, outcome.Get(), findings); status.HasError())
     {
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
         return cExitBadInput;
     }
-    if (Status status = WriteTimeSeriesCsv(out / "timeseries.csv", MakeTimeHistory(outcome.Get())); status.HasError())
+    if (Status status = WriteTimeSeriesCsv(out / "timeseries.csv", findings.mHistory); status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
     if (Status status = common::WriteObj(out / "deformed.obj", outcome.Get().mPositions, outcome.Get().mNormals,
                                          outcome.Get().mRestMesh.mTriangles);
@@ -292,18 +292,14 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
     if (inPictures && scenario.mPictures)
         if (Status status = WritePictures(out, outcome.Get()); status.HasError())
             std::printf("crumple-crash: pictures skipped: %s\n", status.GetError().mMessage.c_str());
-    if (Status status = WriteReportHtml(out / "report.html", scenario, outcome.Get(), results, out);
+    if (Status status = WriteReportHtml(out / "report.html", scenario, outcome.Get(), findings, out);
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
-    PrintSummary(stdout, scenario, outcome.Get(), results);
-    bool passed = true;
-    for (const ExpectationResult& result : results)
-        passed = passed && result.mPassed;
-    const bool sane = AllSane(CheckSanity(scenario, outcome.Get()));
+    PrintSummary(stdout, scenario, outcome.Get(), findings);
     std::printf("crumple-crash: %s; report in %s\n",
-                !sane     ? "a sanity check FAILED: the run is not physically sound"
-                : passed ? "all expectations hold"
-                         : "an expectation FAILED",
+                !findings.Sane()              ? "a sanity check FAILED: the run is not physically sound"
+                : findings.ExpectationsHold() ? "all expectations hold"
+                                              : "an expectation FAILED",
                 (out / "report.html").string().c_str());
-    return passed && sane ? cExitPass : cExitFail;
+    return findings.Passed() ? cExitPass : cExitFail;
 }

@@ -1,8 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/crash/CrashReport.h>
-#include <crumple/crash/SanityChecks.h>
-#include <crumple/crash/TimeHistory.h>
 
 #include "ScenePainter.h"
 
@@ -77,8 +75,19 @@ std::vector<ExpectationResult> CheckExpectations(const CrashScenario& inScenario
     return results;
 }
 
+bool CrashFindings::ExpectationsHold() const
+{
+    return std::all_of(mExpectations.begin(), mExpectations.end(),
+                       [](const ExpectationResult& inResult) { return inResult.mPassed; });
+}
+
+CrashFindings AnalyzeCrash(const CrashScenario& inScenario, const CrashOutcome& inOutcome)
+{
+    return {CheckExpectations(inScenario, inOutcome), CheckSanity(inScenario, inOutcome), MakeTimeHistory(inOutcome)};
+}
+
 Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario& inScenario,
-                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults)
+                       const CrashOutcome& inOutcome, const CrashFindings& inFindings)
 {
     nlohmann::json report;
     report["scenario"] = inScenario.mName;
@@ -121,7 +130,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                {"average_m", inOutcome.mFrontProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     report["limited_dents"] = inOutcome.mLimitedDents;
-    const TimeHistory history = MakeTimeHistory(inOutcome);
+    const TimeHistory& history = inFindings.mHistory;
     report["time_history"] = {{"file", "timeseries.csv"},
                               {"step_s", history.mStep},
                               {"acceleration_filter", history.mAccelerationCfc60.empty()
@@ -136,19 +145,17 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                               {"pulse_note", "the engine stops the car's rigid collision box; the crush is a dent on "
                                              "the body, not compliance in the engine"}};
     nlohmann::json expectations = nlohmann::json::array();
-    bool passed = true;
-    for (const ExpectationResult& result : inResults)
+    for (const ExpectationResult& result : inFindings.mExpectations)
     {
         expectations.push_back({{"expectation", result.mExpectation.mText},
                                 {"quantity", ToString(result.mExpectation.mQuantity)},
                                 {"value", result.mValue},
                                 {"value_in_expectation_unit", result.mValue * result.mExpectation.mDisplayScale},
                                 {"passed", result.mPassed}});
-        passed = passed && result.mPassed;
     }
     report["expectations"] = expectations;
     nlohmann::json sanity = nlohmann::json::array();
-    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+    for (const SanityResult& check : inFindings.mSanity)
     {
         sanity.push_back({{"check", check.mName},
                           {"applies", check.mApplies},
@@ -156,16 +163,15 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                           {"limit", check.mLimit},
                           {"detail", check.mDetail},
                           {"passed", check.mPassed}});
-        passed = passed && check.mPassed;
     }
     report["sanity"] = sanity;
-    report["passed"] = passed;
+    report["passed"] = inFindings.Passed();
     const std::string text = report.dump(2) + "\n";
     return WriteFileAtomically(inPath, std::as_bytes(std::span(text.data(), text.size())), "crumple-crash report");
 }
 
 void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const CrashOutcome& inOutcome,
-                  const std::vector<ExpectationResult>& inResults)
+                  const CrashFindings& inFindings)
 {
     std::fprintf(inStream, "%s (%s, %.1f km/h)\n", inScenario.mName.c_str(), ToString(inScenario.mEngine),
                  inScenario.mImpact.mSpeed * cKmhPerMs);
@@ -203,27 +209,24 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                      std::isnan(inOutcome.mBarrierBreachTime)
                          ? "held"
                          : ("breached at " + std::to_string(inOutcome.mBarrierBreachTime) + " s").c_str());
-    const TimeHistory history = MakeTimeHistory(inOutcome);
+    const TimeHistory& history = inFindings.mHistory;
     std::fprintf(inStream, "  peak deceleration %.1f g over %d engine steps (%s), velocity zero at %s (timeseries.csv)\n",
                  history.mPeakDeceleration / 9.80665, history.mPulseSteps,
                  history.mAccelerationCfc60.empty() ? "unfiltered: the engine step is too coarse for CFC 60" : "CFC 60",
                  history.mTimeToZeroVelocity < 0.0 ? "never" : (std::to_string(history.mTimeToZeroVelocity) + " s").c_str());
-    for (const ExpectationResult& result : inResults)
+    for (const ExpectationResult& result : inFindings.mExpectations)
         std::fprintf(inStream, "  %s %s: measured %.6g\n", result.mPassed ? "PASS" : "FAIL",
                      result.mExpectation.mText.c_str(), result.mValue * result.mExpectation.mDisplayScale);
-    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+    for (const SanityResult& check : inFindings.mSanity)
         std::fprintf(inStream, "  %s sanity %s: %s\n", !check.mApplies ? "n/a " : check.mPassed ? "PASS" : "FAIL",
                      check.mName.c_str(), check.mDetail.c_str());
 }
 
 Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario& inScenario,
-                       const CrashOutcome& inOutcome, const std::vector<ExpectationResult>& inResults,
+                       const CrashOutcome& inOutcome, const CrashFindings& inFindings,
                        const std::filesystem::path& inPictureFolder)
 {
-    bool passed = true;
-    for (const ExpectationResult& result : inResults)
-        passed = passed && result.mPassed;
-    const bool sane = AllSane(CheckSanity(inScenario, inOutcome));
+    const bool passed = inFindings.ExpectationsHold(), sane = inFindings.Sane();
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        Escape(inScenario.mName) +
                        "</title><style>body{font-family:sans-serif;margin:2em;background:#fff;color:#222}"
@@ -260,7 +263,7 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
-    const TimeHistory history = MakeTimeHistory(inOutcome);
+    const TimeHistory& history = inFindings.mHistory;
     row("peak deceleration", Number(history.mPeakDeceleration / 9.80665, 1) + " g over " +
                                  std::to_string(history.mPulseSteps) + " engine steps (" +
                                  (history.mAccelerationCfc60.empty() ? "unfiltered: step too coarse for CFC 60" : "CFC 60") +
@@ -270,11 +273,11 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     if (!std::isnan(inOutcome.mTargetResidualCrush))
         row("target vehicle residual crush", Number(inOutcome.mTargetResidualCrush, 3) + " m");
     html += "</table>\n<h2>Expectations</h2>\n<table><tr><th>expectation</th><th>measured</th><th>verdict</th></tr>\n";
-    for (const ExpectationResult& result : inResults)
+    for (const ExpectationResult& result : inFindings.mExpectations)
         html += "<tr><td>" + Escape(result.mExpectation.mText) + "</td><td>" + Number(result.mValue * result.mExpectation.mDisplayScale, 4) +
                 "</td><td class=\"" + (result.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
     html += "</table>\n<h2>Sanity checks</h2>\n<table><tr><th>check</th><th>what was measured</th><th>verdict</th></tr>\n";
-    for (const SanityResult& check : CheckSanity(inScenario, inOutcome))
+    for (const SanityResult& check : inFindings.mSanity)
         html += "<tr><td>" + Escape(check.mName) + "</td><td>" + Escape(check.mDetail) + "</td><td class=\"" +
                 (!check.mApplies ? "pass\">n/a" : check.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
     html += "</table>\n<h2>Pictures</h2>\n<div>";

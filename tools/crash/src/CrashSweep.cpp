@@ -3,7 +3,6 @@
 #include <crumple/crash/CrashRun.h>
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/CrashSweep.h>
-#include <crumple/crash/SanityChecks.h>
 
 #include "PlotCanvas.h"
 
@@ -76,33 +75,33 @@ void RunCase(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std:
     const CrashScenario scenario = CaseScenario(inScenario, inSpec, inCase, speed, angle, offset);
     const Result<CrashOutcome> outcome = RunCrash(scenario, CrashRunOptions{});
     char row[512];
+    std::string status; // the row's last field
     if (outcome.HasError())
-        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,,,,,,,failed: %s\n", inCase, speed * cKmhPerMs, angle, offset,
-                      outcome.GetError().mMessage.c_str());
+    {
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,,,,,,,", inCase, speed * cKmhPerMs, angle, offset);
+        status = "failed: " + outcome.GetError().mMessage;
+    }
     else
     {
         const CrashOutcome& o = outcome.Get();
         // The verdict: ok, or every expectation and sanity check that failed ("failed: a; b").
+        const CrashFindings findings = AnalyzeCrash(scenario, o);
         std::string failures;
-        for (const ExpectationResult& result : CheckExpectations(scenario, o))
+        for (const ExpectationResult& result : findings.mExpectations)
             if (!result.mPassed)
                 failures += (failures.empty() ? "" : "; ") + result.mExpectation.mText;
-        for (const SanityResult& check : CheckSanity(scenario, o))
+        for (const SanityResult& check : findings.mSanity)
             if (!check.mPassed)
                 failures += (failures.empty() ? "sanity " : "; sanity ") + check.mName;
-        // A CSV field: no commas or line breaks inside it.
-        std::replace_if(failures.begin(), failures.end(), [](char c) { return c == ',' || c == '\n'; }, ' ');
-        const std::string verdict = failures.empty() ? "ok" : "failed: " + failures;
         std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,", inCase,
                       speed * cKmhPerMs, angle, offset, o.mResidualCrush[static_cast<int>(EZone::Front)],
                       o.mResidualCrush[static_cast<int>(EZone::Any)], o.DeltaV() * cKmhPerMs, o.EnergyAbsorbed(),
                       o.mTotalImpulse, o.mCollisions.size());
-        const std::string text = row + verdict + "\n";
-        (void)WriteFileAtomically(inCases / CasePath(inCase), std::as_bytes(std::span(text.data(), text.size())),
-                                  "crumple-crash sweep");
-        return;
+        status = findings.Passed() ? std::string("ok") : "failed: " + failures;
     }
-    const std::string text = row;
+    // The status is one CSV field: no commas or line breaks inside it.
+    std::replace_if(status.begin(), status.end(), [](char c) { return c == ',' || c == '\n'; }, ' ');
+    const std::string text = row + status + "\n";
     (void)WriteFileAtomically(inCases / CasePath(inCase), std::as_bytes(std::span(text.data(), text.size())),
                               "crumple-crash sweep");
 }

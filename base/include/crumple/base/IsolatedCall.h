@@ -28,7 +28,8 @@ namespace crumple
 /// @param[in] inTimeout seconds before the child is killed, > 0
 /// @param[in] inWhat    names the work in messages (e.g. the file's path)
 /// @return inWork's bytes or error; EError::CorruptData when the child died by a signal or took longer than
-///         inTimeout; EError::IoError when no child could be started
+///         inTimeout; EError::IoError when no child could be started; EError::InvalidArgument (nothing run) for a
+///         timeout that is not finite and > 0
 Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
                                            double inTimeout, const std::string& inWhat);
 
