@@ -8,6 +8,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/EdgeMatrix.cpp
     src/EElasticModel.cpp
     src/EFractureMode.cpp
+    src/EImplicitPreconditioner.cpp
     src/EIntegrator.cpp
     src/FemMaterial.cpp
     src/FirstPiolaStress.cpp
@@ -21,10 +22,13 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/StrainEnergyDensity.cpp
     src/TetElementPass.cpp
     src/TetElementRest.cpp
+    src/TetFactoredPreconditioner.cpp
     src/TetFence.cpp
     src/TetGrid.cpp
     src/TetMesh.cpp
     src/TetNodalForces.cpp
     src/TetPreconditioner.cpp
+    src/TetRestSystemMatrix.cpp
     src/TetSolver.cpp
+    src/TetSolverWorkspace.cpp
     src/TetVolume.cpp)

@@ -22,6 +22,13 @@ struct ConjugateGradientResult
     bool mConverged = false;        ///< mRelativeResidual <= the tolerance
 };
 
+/// The vectors ConjugateGradient works in, kept by the caller so that repeated solves allocate nothing once
+/// sized.
+struct ConjugateGradientScratch
+{
+    std::vector<Vec3> mR, mZ, mP, mAp;
+};
+
 /// Preconditioned conjugate gradient (Shewchuk, "An introduction to the conjugate gradient method without the
 /// agonizing pain", B3) for A x = b, matrix-free. It stops when the residual in the preconditioner's norm,
 /// sqrt(r^T P r), falls below inTolerance x sqrt(b^T P b): with P ~ A^-1 that measures the energy of the
@@ -34,9 +41,11 @@ struct ConjugateGradientResult
 /// @param[in]     inTolerance       relative residual to stop at
 /// @param[in]     inMaxIterations   at most this many iterations
 /// @param[in,out] ioSolution        initial guess in, solution out, #N
+/// @param[in,out] ioScratch         work vectors, resized to #N
 ConjugateGradientResult ConjugateGradient(const LinearOperator3& inOperator,
                                           const LinearOperator3& inPreconditioner,
                                           std::span<const Vec3> inRhs, double inTolerance,
-                                          int inMaxIterations, std::span<Vec3> ioSolution);
+                                          int inMaxIterations, std::span<Vec3> ioSolution,
+                                          ConjugateGradientScratch& ioScratch);
 
 } // namespace crumple::fem

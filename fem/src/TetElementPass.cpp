@@ -119,22 +119,54 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
     }
 }
 
+// The isotropic stress C:eps = lambda tr(eps) I + 2 mu eps of a symmetric strain: what MaterialStress computes
+// with the 6 x 6 Voigt product, in 12 instead of 36 multiplications and inlined into the product's loop.
+inline Mat3 IsotropicStress(double inLambda, double inShearModulus, const Mat3& inStrain)
+{
+    Mat3 stress = (2.0 * inShearModulus) * inStrain;
+    stress.diagonal().array() += inLambda * inStrain.trace();
+    return stress;
+}
+
 void TetStiffnessProduct(const TetElementPassInput& inInput,
                          std::span<const TetLinearization> inLinearization, std::span<const Vec3> inDirection,
                          std::span<Vec3> outProduct)
 {
+    // The hot loop of every implicit solve (one pass per conjugate-gradient iteration): the element kernel is
+    // written out here so that it inlines, with the isotropic stress instead of the Voigt product.
     for (Vec3& product : outProduct)
         product.setZero();
-    const Matrix6& c = *inInput.mMaterialMatrix;
+    const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    const double lambda = inInput.mLambda;
+    const double mu = inInput.mShearModulus;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        // K d = -df: the nodal forces of the linearised stress change, negated.
+        // dF = D_s(d) D_m^-1 from the corner directions.
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
-        const Mat3 delta_f = DeformationGradient(inDirection[n[0]], inDirection[n[1]], inDirection[n[2]],
-                                                 inDirection[n[3]], rest.mRestEdgeInverse);
-        const Mat3 delta_p = LinearizedStress(inLinearization[tet], c, delta_f);
-        AddCornerForces(n, TetNodalForces(-delta_p, rest.mRestEdgeInverse, rest.mRestVolume), outProduct);
+        const Vec3 d0 = inDirection[n[0]];
+        Mat3 edges;
+        edges.col(0) = inDirection[n[1]] - d0;
+        edges.col(1) = inDirection[n[2]] - d0;
+        edges.col(2) = inDirection[n[3]] - d0;
+        const Mat3 delta_f = edges * rest.mRestEdgeInverse;
+
+        // dP = frame C:sym(frame^T dF) (+ dF S for St. Venant-Kirchhoff), as LinearizedStress.
+        const TetLinearization& lin = inLinearization[tet];
+        const Mat3 local = lin.mFrame.transpose() * delta_f;
+        Mat3 delta_p = lin.mFrame * IsotropicStress(lambda, mu, 0.5 * (local + local.transpose()));
+        if (!corotated)
+            delta_p += delta_f * lin.mStress;
+
+        // K d = -df: corner forces of -dP, f_i = V0 dP D_m^-T column i (i = 1..3), corner 0 minus their sum.
+        const Mat3 h = rest.mRestVolume * (delta_p * rest.mRestEdgeInverse.transpose());
+        const Vec3 f1 = h.col(0);
+        const Vec3 f2 = h.col(1);
+        const Vec3 f3 = h.col(2);
+        outProduct[n[0]] -= f1 + f2 + f3;
+        outProduct[n[1]] += f1;
+        outProduct[n[2]] += f2;
+        outProduct[n[3]] += f3;
     }
 }
 

@@ -19,6 +19,8 @@ struct TetElementPassInput
     std::span<const TetIndices> mTets;        ///< #T element -> node indices
     std::span<const TetElementRest> mRest;    ///< #T rest data
     const Matrix6* mMaterialMatrix = nullptr; ///< C (Pa)
+    double mLambda = 0.0;                     ///< First Lame parameter of C (Pa)
+    double mShearModulus = 0.0;               ///< Second Lame parameter mu of C (Pa)
     EElasticModel mModel = EElasticModel::CorotatedLinear;
     /// #T plastic strains (in the model's frame), or empty when the material has no plasticity
     std::span<const Mat3> mPlasticStrains;

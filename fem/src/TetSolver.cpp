@@ -8,7 +8,9 @@
 
 #include "ConjugateGradient.h"
 #include "TetElementPass.h"
+#include "TetFactoredPreconditioner.h"
 #include "TetPreconditioner.h"
+#include "TetSolveScratch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -140,8 +142,13 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
 
 TetElementPassInput TetSolver::PassInput() const
 {
-    return TetElementPassInput{mElementNodes, mRest, &mMaterial.GetMaterialMatrix(),
-                               mMaterial.GetSettings().mModel, mPlasticStrains};
+    return TetElementPassInput{mElementNodes,
+                               mRest,
+                               &mMaterial.GetMaterialMatrix(),
+                               mMaterial.GetLambda(),
+                               mMaterial.GetShearModulus(),
+                               mMaterial.GetSettings().mModel,
+                               mPlasticStrains};
 }
 
 void TetSolver::AfterSubStep(double inDeltaTime)
@@ -487,21 +494,36 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     mStartVelocities = mVelocities;
     const std::vector<Vec3>& x0 = mStartPositions;
     const std::vector<Vec3>& v0 = mStartVelocities;
-    std::vector<Vec3> k_v(node_count), residual(node_count), delta_v(node_count), preconditioned(node_count);
-    std::vector<Mat3> blocks(node_count);
+    TetSolveScratch& scratch = mWorkspace.Get();
+    scratch.Resize(node_count);
     std::uint64_t products = 0;
-    TetPreconditioner preconditioner;
 
-    // Matrix-free system operator A, masked to the free nodes.
-    const LinearOperator3 system = [&](std::span<const Vec3> inX, std::span<Vec3> outY)
+    // Matrix-free system operator A, masked to the free nodes (one captured pointer: std::function keeps it
+    // without allocating).
+    struct SystemContext
     {
-        TetStiffnessProduct(input, mLinearization, inX, outY);
-        ++products;
-        for (std::size_t node = 0; node < node_count; ++node)
-            outY[node] = mFree[node] != 0
-                             ? Vec3(mass_scale * mMasses[node] * inX[node] + stiffness_scale * outY[node])
-                             : Vec3::Zero();
+        TetSolver* mSolver;
+        const TetElementPassInput* mInput;
+        double mMassScale;
+        double mStiffnessScale;
+        std::uint64_t* mProducts;
+    } context{this, &input, mass_scale, stiffness_scale, &products};
+    const LinearOperator3 system = [ctx = &context](std::span<const Vec3> inX, std::span<Vec3> outY)
+    {
+        const TetSolver& solver = *ctx->mSolver;
+        TetStiffnessProduct(*ctx->mInput, solver.mLinearization, inX, outY);
+        ++*ctx->mProducts;
+        for (std::size_t node = 0; node < outY.size(); ++node)
+            outY[node] = solver.mFree[node] != 0 ? Vec3(ctx->mMassScale * solver.mMasses[node] * inX[node] +
+                                                        ctx->mStiffnessScale * outY[node])
+                                                 : Vec3::Zero();
     };
+
+    // The factored rest system when it applies (built on the first step, after fracture, anchoring or a new
+    // step length), else block Jacobi rebuilt per Newton iteration.
+    TetFactoredPreconditioner* factored = FactoredRestSystem(input, mass_scale, stiffness_scale);
+    TetPreconditioner& jacobi = scratch.mJacobi;
+    const LinearOperator3 preconditioner = factored != nullptr ? factored->AsOperator() : jacobi.AsOperator();
 
     // Energy scale of the step (J): kinetic energy at the start, relative to the free centre of mass when
     // nothing is anchored (a translation must not loosen the test), plus that of the load's impulse over the
@@ -536,7 +558,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         const bool first = iteration == 0;
         if (first || material.mStiffnessDamping > 0.0)
         {
-            TetStiffnessProduct(input, mLinearization, mVelocities, k_v);
+            TetStiffnessProduct(input, mLinearization, mVelocities, scratch.mKv);
             mElementWork += mRest.size();
         }
 
@@ -545,24 +567,30 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         {
             if (mFree[node] == 0)
             {
-                residual[node].setZero();
+                scratch.mResidual[node].setZero();
                 continue;
             }
             const double m = mMasses[node];
-            residual[node] = h * (mForces[node] + mExternalForces[node] + m * mSettings.mGravity -
-                                  material.mMassDamping * m * mVelocities[node] -
-                                  ((first ? h : 0.0) + material.mStiffnessDamping) * k_v[node]) -
-                             m * (mVelocities[node] - v0[node]);
+            scratch.mResidual[node] =
+                h * (mForces[node] + mExternalForces[node] + m * mSettings.mGravity -
+                     material.mMassDamping * m * mVelocities[node] -
+                     ((first ? h : 0.0) + material.mStiffnessDamping) * scratch.mKv[node]) -
+                m * (mVelocities[node] - v0[node]);
         }
 
+        // The factored preconditioner follows the element frames just updated.
+        if (factored != nullptr)
+            factored->SetNodeRotations(mElementNodes, mRotations,
+                                       material.mModel == EElasticModel::CorotatedLinear);
+
         // Converged when the energy of the remaining Newton correction, 1/2 r^T A^-1 r (A^-1 estimated by the
-        // previous iteration's preconditioner), is a small fraction of the step's energy scale.
+        // preconditioner), is a small fraction of the step's energy scale.
         if (!first)
         {
-            preconditioner.Apply(residual, preconditioned);
+            preconditioner(scratch.mResidual, scratch.mPreconditioned);
             double residual_energy = 0.0;
             for (std::size_t node = 0; node < node_count; ++node)
-                residual_energy += 0.5 * residual[node].dot(preconditioned[node]);
+                residual_energy += 0.5 * scratch.mResidual[node].dot(scratch.mPreconditioned[node]);
             if (residual_energy <= mSettings.mImplicitTolerance * energy_scale)
             {
                 converged = true;
@@ -572,18 +600,22 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         if (iteration == mSettings.mImplicitMaxIterations)
             break;
 
-        // Preconditioner of A at this linearisation: its diagonal blocks plus the rigid coarse space.
-        TetStiffnessDiagonal(input, mLinearization, blocks);
-        mElementWork += mRest.size();
-        for (std::size_t node = 0; node < node_count; ++node)
-            blocks[node] = mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * blocks[node];
-        preconditioner.Build(system, blocks, mPositions, mFree);
+        // Block Jacobi at this linearisation: its diagonal blocks plus the rigid coarse space.
+        if (factored == nullptr)
+        {
+            TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
+            mElementWork += mRest.size();
+            for (std::size_t node = 0; node < node_count; ++node)
+                scratch.mBlocks[node] =
+                    mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
+            jacobi.Build(system, scratch.mBlocks, mPositions, mFree);
+        }
 
         // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes.
-        std::fill(delta_v.begin(), delta_v.end(), Vec3::Zero());
+        std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
         const ConjugateGradientResult cg =
-            ConjugateGradient(system, preconditioner.AsOperator(), residual, mSettings.mCgRelativeTolerance,
-                              mSettings.mCgMaxIterations, delta_v);
+            ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
+                              mSettings.mCgMaxIterations, scratch.mDeltaV, scratch.mCg);
         ioResult.mSolverIterations += cg.mIterations;
         ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, cg.mRelativeResidual);
         if (!cg.mConverged)
@@ -591,7 +623,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         for (std::size_t node = 0; node < node_count; ++node)
             if (mFree[node] != 0)
             {
-                mVelocities[node] += delta_v[node];
+                mVelocities[node] += scratch.mDeltaV[node];
                 mPositions[node] = x0[node] + h * mVelocities[node];
             }
         ++ioResult.mNewtonIterations;
@@ -599,6 +631,20 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     mElementWork += products * mRest.size();
     if (!converged)
         ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
+}
+
+TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
+                                                         double inStiffnessScale)
+{
+    if (mSettings.mPreconditioner != EImplicitPreconditioner::RestFactorization)
+        return nullptr;
+    TetFactoredPreconditioner& factor = mWorkspace.Get().mFactor;
+    if (!factor.Matches(mElementNodes, mFree, inMassScale, inStiffnessScale))
+    {
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale);
+        ++mFactorizationCount;
+    }
+    return factor.IsFactored() ? &factor : nullptr;
 }
 
 Result<TetStepResult> TetSolver::Step(double inDeltaTime)
@@ -773,8 +819,32 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
 
     const TetElementPassInput input = PassInput();
     TetStaticResult result;
-    std::vector<Vec3> residual(node_count), delta_x(node_count);
-    std::vector<Mat3> blocks(node_count);
+    TetSolveScratch& scratch = mWorkspace.Get();
+    scratch.Resize(node_count);
+    std::vector<Vec3>& residual = scratch.mResidual;
+    std::vector<Vec3>& delta_x = scratch.mDeltaV;
+
+    // Stiffness operator K, masked to the free nodes (one captured pointer: no allocation).
+    struct StiffnessContext
+    {
+        TetSolver* mSolver;
+        const TetElementPassInput* mInput;
+        std::uint64_t mProducts;
+    } context{this, &input, 0};
+    const LinearOperator3 stiffness = [ctx = &context](std::span<const Vec3> inX, std::span<Vec3> outY)
+    {
+        TetStiffnessProduct(*ctx->mInput, ctx->mSolver->mLinearization, inX, outY);
+        ++ctx->mProducts;
+        for (std::size_t node = 0; node < outY.size(); ++node)
+            if (ctx->mSolver->mFree[node] == 0)
+                outY[node].setZero();
+    };
+
+    // The factored rest stiffness K0 when the anchors hold every rigid mode, else block Jacobi with the rigid
+    // coarse space rebuilt per linearisation.
+    TetFactoredPreconditioner* factored = FactoredRestSystem(input, 0.0, 1.0);
+    const LinearOperator3 preconditioner =
+        factored != nullptr ? factored->AsOperator() : scratch.mJacobi.AsOperator();
     double scale = load_norm;
     for (int iteration = 0;; ++iteration)
     {
@@ -805,26 +875,22 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
         if (iteration == inMaxIterations)
             break;
 
-        // Solve K dx = residual on the free nodes, preconditioned by K's diagonal blocks and the rigid coarse
-        // space.
-        std::uint64_t products = 0;
-        const LinearOperator3 stiffness = [&](std::span<const Vec3> inX, std::span<Vec3> outY)
+        // Solve K dx = residual on the free nodes.
+        context.mProducts = 0;
+        if (factored != nullptr)
+            factored->SetNodeRotations(mElementNodes, mRotations,
+                                       mMaterial.GetSettings().mModel == EElasticModel::CorotatedLinear);
+        else
         {
-            TetStiffnessProduct(input, mLinearization, inX, outY);
-            ++products;
-            for (std::size_t node = 0; node < node_count; ++node)
-                if (mFree[node] == 0)
-                    outY[node].setZero();
-        };
-        TetStiffnessDiagonal(input, mLinearization, blocks);
-        mElementWork += mRest.size();
-        TetPreconditioner preconditioner;
-        preconditioner.Build(stiffness, blocks, mPositions, mFree);
+            TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
+            mElementWork += mRest.size();
+            scratch.mJacobi.Build(stiffness, scratch.mBlocks, mPositions, mFree);
+        }
         std::fill(delta_x.begin(), delta_x.end(), Vec3::Zero());
-        const ConjugateGradientResult cg =
-            ConjugateGradient(stiffness, preconditioner.AsOperator(), residual, 0.5 * inRelativeTolerance,
-                              inMaxCgIterations, delta_x);
-        mElementWork += products * mRest.size();
+        const ConjugateGradientResult cg = ConjugateGradient(stiffness, preconditioner, residual,
+                                                             0.5 * inRelativeTolerance, inMaxCgIterations,
+                                                             delta_x, scratch.mCg);
+        mElementWork += context.mProducts * mRest.size();
         result.mSolverIterations += cg.mIterations;
         for (std::size_t node = 0; node < node_count; ++node)
             mPositions[node] += delta_x[node];

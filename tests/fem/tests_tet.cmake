@@ -2,10 +2,12 @@
 # SPDX-License-Identifier: MIT
 # Tests of the tetrahedral half of crumple::fem (paths relative to tests/).
 set(CRUMPLE_FEM_TET_TESTS
+    fem/AllocationCounter.cpp
     fem/FemMaterialTest.cpp
     fem/PolarRotationTest.cpp
     fem/StableTimeStepTest.cpp
     fem/TetCantileverTest.cpp
+    fem/TetFactoredSolveTest.cpp
     fem/TetEnergyTest.cpp
     fem/TetFenceTest.cpp
     fem/TetGridTest.cpp

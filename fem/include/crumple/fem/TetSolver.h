@@ -11,6 +11,7 @@
 #include <crumple/fem/TetLinearization.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem/TetSolverSettings.h>
+#include <crumple/fem/TetSolverWorkspace.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/TetStepResult.h>
 
@@ -22,6 +23,7 @@ namespace crumple::fem
 {
 
 struct TetElementPassInput; // private to the solvers (src/TetElementPass.h)
+class TetFactoredPreconditioner; // private to the solver (src/TetFactoredPreconditioner.h)
 
 /// A tetrahedral finite-element body (destructible prop): linear tetrahedra, lumped masses, the elasticity
 /// model of its FemMaterial, symplectic or implicit Euler. Node and element order are the mesh's; every loop
@@ -141,6 +143,10 @@ public:
     /// Element evaluations done by Step() and SolveStatic() so far (force, stiffness-product, diagonal and
     /// energy passes, one per element each): a cost counter that tests can compare instead of timing
     std::uint64_t GetElementWorkCount() const { return mElementWork; }
+    /// Factorisations of the rest system done so far (EImplicitPreconditioner::RestFactorization): one on the
+    /// first implicit step or static solve, one more after each change of connectivity (fracture), anchors
+    /// or step length; a cost counter like GetElementWorkCount()
+    int GetFactorizationCount() const { return mFactorizationCount; }
 
 private:
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
@@ -180,6 +186,11 @@ private:
     void StepSymplectic(double inDeltaTime, int inSubSteps);
     // One implicit Euler step; fills the solver statistics of ioResult.
     void StepImplicit(double inDeltaTime, TetStepResult& ioResult);
+    // The factored rest system inMassScale M + inStiffnessScale K0 for the current connectivity and anchors,
+    // factored again when they or the scales changed; null when the settings ask for block Jacobi or the
+    // system cannot be factored.
+    TetFactoredPreconditioner* FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
+                                                  double inStiffnessScale);
     // Gravity plus external force on each free node, zero on anchored ones (N).
     void LoadForces(std::vector<Vec3>& outForces) const;
     // Kinetic, elastic and external-potential energy and the content C at the current state; updates the
@@ -229,6 +240,7 @@ private:
     int mQuietSteps = 0;
 
     std::uint64_t mElementWork = 0;
+    int mFactorizationCount = 0;
 
     // Scratch reused across steps (no allocation per step once sized).
     std::vector<TetLinearization> mLinearization;
@@ -238,6 +250,7 @@ private:
     std::vector<Quat> mSavedRotations;
     std::vector<Vec3> mStartPositions;
     std::vector<Vec3> mStartVelocities;
+    TetSolverWorkspace mWorkspace; // linear-solve scratch and the factored rest system
 };
 
 } // namespace crumple::fem

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Math.h>
+#include <crumple/fem/EImplicitPreconditioner.h>
 #include <crumple/fem/EIntegrator.h>
 
 namespace crumple::fem
@@ -26,6 +27,10 @@ struct TetSolverSettings
     /// integrator.
     int mMaxSubSteps = 10000;
 
+    /// Implicit Euler and SolveStatic(): the preconditioner of conjugate gradient. The default factors the
+    /// rest system once and reuses it (see EImplicitPreconditioner for its cost and memory); BlockJacobi
+    /// needs no setup and no memory but many more iterations on stiff materials.
+    EImplicitPreconditioner mPreconditioner = EImplicitPreconditioner::RestFactorization;
     /// Implicit Euler and SolveStatic(): conjugate gradient stops when |residual| <= tolerance x |right-hand
     /// side| (Euclidean norms over the free degrees of freedom), in (0, 1).
     double mCgRelativeTolerance = 1.0e-6;

@@ -1,0 +1,120 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "TetFactoredPreconditioner.h"
+
+#include "TetRestSystemMatrix.h"
+
+#include <algorithm>
+
+namespace crumple::fem
+{
+
+bool TetFactoredPreconditioner::Matches(std::span<const TetIndices> inTets, std::span<const std::uint8_t> inFree,
+                                        double inMassScale, double inStiffnessScale) const
+{
+    return mAttempted && inMassScale == mMassScale && inStiffnessScale == mStiffnessScale &&
+           std::equal(inFree.begin(), inFree.end(), mFree.begin(), mFree.end()) &&
+           std::equal(inTets.begin(), inTets.end(), mTets.begin(), mTets.end());
+}
+
+bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                                           std::span<const std::uint8_t> inFree, double inMassScale,
+                                           double inStiffnessScale)
+{
+    // Forget the old factor first: a failure leaves none.
+    mFactored = false;
+    mAttempted = true;
+    mFactorNonZeros = 0;
+    mTets.assign(inInput.mTets.begin(), inInput.mTets.end());
+    mFree.assign(inFree.begin(), inFree.end());
+    mMassScale = inMassScale;
+    mStiffnessScale = inStiffnessScale;
+
+    // Free nodes numbered in node order.
+    mFreeIndex.assign(inFree.size(), -1);
+    int free_count = 0;
+    for (std::size_t node = 0; node < inFree.size(); ++node)
+        if (inFree[node] != 0)
+            mFreeIndex[node] = free_count++;
+    if (free_count == 0)
+        return false;
+
+    // Factor; a non-positive pivot (a free rigid mode of the static stiffness) fails the factorisation.
+    const Eigen::SparseMatrix<double> system =
+        TetRestSystemMatrix(inInput, inMasses, mFreeIndex, free_count, inMassScale, inStiffnessScale);
+    mCholesky.compute(system);
+    if (mCholesky.info() != Eigen::Success)
+        return false;
+    mFactorNonZeros = mCholesky.matrixL().nestedExpression().nonZeros();
+    mRhs.resize(system.rows());
+    mPermuted.resize(system.rows());
+    mNodeRotations.clear();
+    mFactored = true;
+    return true;
+}
+
+void TetFactoredPreconditioner::SetNodeRotations(std::span<const TetIndices> inTets, std::span<const Quat> inRotations,
+                                                 bool inWarp)
+{
+    if (!inWarp)
+    {
+        mNodeRotations.clear();
+        return;
+    }
+
+    // Sum of the element quaternions around each node, each flipped to the sum's hemisphere (q and -q are the
+    // same rotation), in element order: deterministic.
+    const std::size_t node_count = mFreeIndex.size();
+    mQuaternionSums.assign(node_count, Eigen::Vector4d::Zero());
+    for (std::size_t tet = 0; tet < inTets.size(); ++tet)
+    {
+        const Eigen::Vector4d q = inRotations[tet].coeffs();
+        for (int corner = 0; corner < 4; ++corner)
+        {
+            Eigen::Vector4d& sum = mQuaternionSums[inTets[tet][corner]];
+            sum += sum.dot(q) < 0.0 ? Eigen::Vector4d(-q) : q;
+        }
+    }
+    mNodeRotations.resize(node_count);
+    for (std::size_t node = 0; node < node_count; ++node)
+    {
+        const double norm = mQuaternionSums[node].norm();
+        mNodeRotations[node] = norm > 0.0 ? Quat(mQuaternionSums[node] / norm).toRotationMatrix()
+                                          : Mat3(Mat3::Identity());
+    }
+}
+
+void TetFactoredPreconditioner::Apply(std::span<const Vec3> inR, std::span<Vec3> outZ) const
+{
+    // R^T r gathered onto the free degrees of freedom.
+    const bool warp = !mNodeRotations.empty();
+    for (std::size_t node = 0; node < mFreeIndex.size(); ++node)
+    {
+        const int index = mFreeIndex[node];
+        if (index >= 0)
+            mRhs.segment<3>(3 * index) = warp ? Vec3(mNodeRotations[node].transpose() * inR[node]) : inR[node];
+    }
+
+    // A0^-1 by the two triangular solves of P A0 P^T = L L^T, in place (no allocation).
+    mPermuted.noalias() = mCholesky.permutationP() * mRhs;
+    mCholesky.matrixL().solveInPlace(mPermuted);
+    mCholesky.matrixU().solveInPlace(mPermuted);
+    mRhs.noalias() = mCholesky.permutationPinv() * mPermuted;
+
+    // R scattered back; anchored nodes get zero.
+    for (std::size_t node = 0; node < mFreeIndex.size(); ++node)
+    {
+        const int index = mFreeIndex[node];
+        if (index < 0)
+            outZ[node].setZero();
+        else
+            outZ[node] = warp ? Vec3(mNodeRotations[node] * mRhs.segment<3>(3 * index)) : Vec3(mRhs.segment<3>(3 * index));
+    }
+}
+
+LinearOperator3 TetFactoredPreconditioner::AsOperator() const
+{
+    return [this](std::span<const Vec3> inX, std::span<Vec3> outY) { Apply(inX, outY); };
+}
+
+} // namespace crumple::fem

@@ -1,0 +1,33 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "TetElementPass.h"
+
+#include <Eigen/SparseCore>
+
+#include <cstdint>
+#include <span>
+
+namespace crumple::fem
+{
+
+/// The implicit system at the rest shape, A0 = a M + b K0, restricted to the free nodes: M the lumped masses,
+/// K0 = sum_e V0 B_e^T C B_e the linear stiffness of the rest mesh (B_e the 6 x 12 strain-displacement matrix of
+/// the linear tetrahedron, engineering shear as in C). K0 is the tangent of both elastic models at rest and
+/// the corotated model's tangent is R K0 R^T for a rigidly rotated element, so A0 is the implicit Euler
+/// system of a body near rest (a = 1 + h alpha, b = h^2 + h beta) or the static stiffness (a = 0, b = 1).
+/// Degree of freedom 3 inFreeIndex[n] + axis; anchored nodes (inFreeIndex -1) and their couplings are left
+/// out. Symmetric; both triangles are stored.
+/// @param[in] inInput      connectivity, rest data and material
+/// @param[in] inMasses     #N lumped node masses (kg)
+/// @param[in] inFreeIndex  #N index of each free node among the free nodes, -1 for an anchored node
+/// @param[in] inFreeCount  number of free nodes
+/// @param[in] inMassScale       a (1)
+/// @param[in] inStiffnessScale  b (s^2 for the implicit system, 1 for the static one)
+/// @return 3 #free by 3 #free, units of inMassScale x kg
+Eigen::SparseMatrix<double> TetRestSystemMatrix(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                                                std::span<const int> inFreeIndex, int inFreeCount,
+                                                double inMassScale, double inStiffnessScale);
+
+} // namespace crumple::fem

@@ -1,0 +1,38 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "ConjugateGradient.h"
+#include "TetFactoredPreconditioner.h"
+#include "TetPreconditioner.h"
+
+#include <vector>
+
+namespace crumple::fem
+{
+
+/// The scratch of TetSolver's implicit steps and static solves, sized on first use and kept (no allocation
+/// per step once sized), and the factored rest system they reuse.
+struct TetSolveScratch
+{
+    TetFactoredPreconditioner mFactor;
+    TetPreconditioner mJacobi;
+    ConjugateGradientScratch mCg;
+    std::vector<Vec3> mKv;             ///< #N K v (N s/m x m/s)
+    std::vector<Vec3> mResidual;       ///< #N
+    std::vector<Vec3> mDeltaV;         ///< #N
+    std::vector<Vec3> mPreconditioned; ///< #N
+    std::vector<Mat3> mBlocks;         ///< #N diagonal blocks for block Jacobi
+
+    /// Sizes every #N vector to inNodeCount (allocates only when the count grows past the capacity)
+    void Resize(std::size_t inNodeCount)
+    {
+        mKv.resize(inNodeCount);
+        mResidual.resize(inNodeCount);
+        mDeltaV.resize(inNodeCount);
+        mPreconditioned.resize(inNodeCount);
+        mBlocks.resize(inNodeCount);
+    }
+};
+
+} // namespace crumple::fem

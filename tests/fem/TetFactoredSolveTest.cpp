@@ -1,0 +1,297 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// The implicit solve preconditioned by the factored rest system (EImplicitPreconditioner::RestFactorization)
+// against the matrix-free operator, block Jacobi, a fully converged solve and SolveStatic.
+#include "AllocationCounter.h"
+#include "CantileverScene.h"
+#include "TetElementPass.h"
+#include "TetRestSystemMatrix.h"
+
+#include <crumple/fem/FemMaterial.h>
+#include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetGrid.h>
+#include <crumple/fem/TetSolver.h>
+
+#include <BrittleMaterial.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace crumple;
+using namespace crumple::fem;
+using common::CantileverScene;
+
+namespace
+{
+
+constexpr double cStep = 1.0 / 60.0; // s
+
+CantileverScene MakeBeam(EElasticModel inModel, EImplicitPreconditioner inPreconditioner, int inLengthCells = 10,
+                         int inSectionCells = 2)
+{
+    common::CantileverSettings settings;
+    settings.mLengthCells = inLengthCells;
+    settings.mSectionCells = inSectionCells;
+    settings.mMaterial.mModel = inModel;
+    settings.mSolver.mPreconditioner = inPreconditioner;
+    Result<CantileverScene> beam = CantileverScene::Create(settings);
+    REQUIRE(beam.IsValid());
+    return std::move(beam).Get();
+}
+
+// The same beam solved to round-off: CG to 1e-12, Newton until its correction is below 1e-14 of the step's
+// energy (the "fully converged implicit answer").
+CantileverScene MakeConvergedBeam(EElasticModel inModel)
+{
+    common::CantileverSettings settings;
+    settings.mLengthCells = 10;
+    settings.mSectionCells = 2;
+    settings.mMaterial.mModel = inModel;
+    settings.mSolver.mCgRelativeTolerance = 1.0e-12;
+    settings.mSolver.mCgMaxIterations = 100000;
+    settings.mSolver.mImplicitTolerance = 1.0e-14;
+    settings.mSolver.mImplicitMaxIterations = 30;
+    Result<CantileverScene> beam = CantileverScene::Create(settings);
+    REQUIRE(beam.IsValid());
+    return std::move(beam).Get();
+}
+
+double MaxNorm(const std::vector<Vec3>& inValues)
+{
+    double largest = 0.0;
+    for (const Vec3& value : inValues)
+        largest = std::max(largest, value.cwiseAbs().maxCoeff());
+    return largest;
+}
+
+} // namespace
+
+TEST_CASE("Rest system: the assembled a M + b K0 applies exactly the matrix-free implicit operator at rest", "[fem]")
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.4, 0.2);
+    grid.mCellCount = {3, 2, 1};
+    const TetMesh mesh = TetGrid(grid).Get();
+    const std::vector<TetElementRest> rest = TetRestData(mesh);
+    std::mt19937 random(7u);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (EElasticModel model : {EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff})
+    {
+        FemMaterialSettings settings;
+        settings.mModel = model;
+        settings.mYoungsModulus = 2.0e11;
+        settings.mPoissonRatio = 0.3;
+        const FemMaterial material = FemMaterial::Create(settings).Get();
+        const TetElementPassInput input{mesh.GetTets(), rest, &material.GetMaterialMatrix(), material.GetLambda(),
+                                        material.GetShearModulus(), model, {}};
+
+        // The linearisation at rest, the masses, some anchored nodes.
+        const int node_count = mesh.GetNodeCount();
+        std::vector<Quat> rotations(rest.size(), Quat::Identity());
+        std::vector<TetLinearization> linearization(rest.size());
+        std::vector<Vec3> forces(node_count);
+        TetElasticForces(input, mesh.GetRestPositions(), {}, 0.0, rotations, linearization, forces);
+        std::vector<double> masses(node_count);
+        std::vector<int> free_index(node_count);
+        int free_count = 0;
+        for (int node = 0; node < node_count; ++node)
+        {
+            masses[node] = 1.0 + 0.1 * node;
+            free_index[node] = node % 5 == 0 ? -1 : free_count++;
+        }
+        const double a = 1.25, b = 3.0e-4;
+        const Eigen::SparseMatrix<double> system =
+            TetRestSystemMatrix(input, masses, free_index, free_count, a, b);
+        REQUIRE(system.rows() == 3 * free_count);
+        CHECK((Eigen::MatrixXd(system) - Eigen::MatrixXd(system).transpose()).cwiseAbs().maxCoeff() == 0.0);
+
+        // Random directions on the free nodes, zero on anchored ones.
+        for (int trial = 0; trial < 5; ++trial)
+        {
+            std::vector<Vec3> direction(node_count, Vec3::Zero());
+            Eigen::VectorXd gathered(3 * free_count);
+            for (int node = 0; node < node_count; ++node)
+                if (free_index[node] >= 0)
+                {
+                    direction[node] = Vec3(unit(random), unit(random), unit(random));
+                    gathered.segment<3>(3 * free_index[node]) = direction[node];
+                }
+            std::vector<Vec3> product(node_count);
+            TetStiffnessProduct(input, linearization, direction, product);
+            const Eigen::VectorXd assembled = system * gathered;
+            double scale = 0.0, difference = 0.0;
+            for (int node = 0; node < node_count; ++node)
+                if (free_index[node] >= 0)
+                {
+                    const Vec3 matrix_free = a * masses[node] * direction[node] + b * product[node];
+                    scale = std::max(scale, matrix_free.cwiseAbs().maxCoeff());
+                    difference = std::max(
+                        difference,
+                        (matrix_free - Vec3(assembled.segment<3>(3 * free_index[node]))).cwiseAbs().maxCoeff());
+                }
+            CHECK(difference <= 1.0e-12 * scale);
+        }
+    }
+}
+
+TEST_CASE("Factored solve: the trajectory of the fully converged implicit solve, in a fraction of the iterations",
+          "[fem]")
+{
+    for (EElasticModel model : {EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff})
+    {
+        CantileverScene factored = MakeBeam(model, EImplicitPreconditioner::RestFactorization);
+        CantileverScene jacobi = MakeBeam(model, EImplicitPreconditioner::BlockJacobi);
+        CantileverScene converged = MakeConvergedBeam(model);
+        int factored_iterations = 0, jacobi_iterations = 0;
+        for (int step = 0; step < 10; ++step)
+        {
+            const TetStepResult a = factored.GetSolver().Step(cStep).Get();
+            const TetStepResult b = jacobi.GetSolver().Step(cStep).Get();
+            REQUIRE(converged.GetSolver().Step(cStep).IsValid());
+            CHECK_FALSE(HasEvent(a.mEvents, ETetStepEvent::SolverNotConverged));
+            factored_iterations += a.mSolverIterations;
+            jacobi_iterations += b.mSolverIterations;
+
+            // Every step within 1e-5 of the converged tip: the default Newton tolerance (1e-3 of the step's
+            // energy) stops St. Venant-Kirchhoff's second step after one Newton iteration, 4.3e-6 off, with
+            // either preconditioner; the error then decays with the load's transient.
+            const double reference = converged.TipDeflection();
+            CHECK(std::abs(factored.TipDeflection() - reference) <= 1.0e-5 * std::abs(reference));
+            CHECK(std::abs(jacobi.TipDeflection() - reference) <= 1.0e-5 * std::abs(reference));
+            if (step == 9)
+                CHECK(std::abs(factored.TipDeflection() - reference) <= 1.0e-8 * std::abs(reference));
+        }
+        INFO(ToString(model) << ": CG iterations over 10 steps, factored " << factored_iterations
+                             << ", block Jacobi " << jacobi_iterations);
+        CHECK(factored.GetSolver().GetFactorizationCount() == 1);
+        CHECK(jacobi.GetSolver().GetFactorizationCount() == 0);
+        CHECK(factored_iterations > 0);
+        CHECK(10 * factored_iterations < jacobi_iterations);
+    }
+}
+
+TEST_CASE("Factored solve: damped steps settle on SolveStatic's equilibrium to 1e-6", "[fem]")
+{
+    for (EElasticModel model : {EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff})
+    {
+        // SolveStatic's default residual (1e-6 of the load) is the tightest round-off allows on this beam; it
+        // puts the tip within ~4e-9 of equilibrium (the two preconditioners' answers differ by that).
+        CantileverScene statics = MakeBeam(model, EImplicitPreconditioner::BlockJacobi);
+        REQUIRE(statics.GetSolver().SolveStatic().IsValid());
+        const double reference = statics.TipDeflection();
+
+        // Mass damping near critical for the first mode: implicit Euler's fixed point is the equilibrium.
+        common::CantileverSettings settings;
+        settings.mLengthCells = 10;
+        settings.mSectionCells = 2;
+        settings.mMaterial.mModel = model;
+        settings.mMaterial.mMassDamping = 1000.0;
+        settings.mSolver.mCgRelativeTolerance = 1.0e-10;
+        CantileverScene damped = CantileverScene::Create(settings).Get();
+        for (int step = 0; step < 40; ++step)
+            REQUIRE(damped.GetSolver().Step(cStep).IsValid());
+        INFO(ToString(model) << ": static tip " << reference << " m, settled " << damped.TipDeflection() << " m");
+        CHECK(std::abs(damped.TipDeflection() - reference) <= 1.0e-6 * reference);
+
+        // And SolveStatic preconditioned by the factored stiffness finds the same equilibrium.
+        CantileverScene factored_statics = MakeBeam(model, EImplicitPreconditioner::RestFactorization);
+        const TetStaticResult solve = factored_statics.GetSolver().SolveStatic().Get();
+        CHECK(factored_statics.GetSolver().GetFactorizationCount() == 1);
+        CHECK(std::abs(factored_statics.TipDeflection() - reference) <= 1.0e-7 * reference);
+        CHECK(solve.mSolverIterations < 100);
+    }
+}
+
+TEST_CASE("Factored solve: factored once, again only after anchoring, a new step length or fracture", "[fem]")
+{
+    CantileverScene beam = MakeBeam(EElasticModel::CorotatedLinear, EImplicitPreconditioner::RestFactorization);
+    TetSolver& solver = beam.GetSolver();
+    CHECK(solver.GetFactorizationCount() == 0);
+    for (int step = 0; step < 5; ++step)
+        REQUIRE(solver.Step(cStep).IsValid());
+    CHECK(solver.GetFactorizationCount() == 1);
+    REQUIRE(solver.Step(0.5 * cStep).IsValid());
+    CHECK(solver.GetFactorizationCount() == 2);
+    REQUIRE(solver.SetNodeFixed(beam.GetTipNodes()[0], true).IsValid());
+    REQUIRE(solver.Step(0.5 * cStep).IsValid());
+    REQUIRE(solver.Step(0.5 * cStep).IsValid());
+    CHECK(solver.GetFactorizationCount() == 3);
+
+    // A brittle wall hit hard enough to crack: each step after one that opened links factors again, no other.
+    TetGridSettings grid;
+    grid.mSize = Vec3(2.0, 0.2, 1.0);
+    grid.mCellCount = {10, 1, 5};
+    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e10;
+    material.mPoissonRatio = 0.2;
+    material.mMassDamping = 2.0;
+    TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j <= 1; ++j)
+            REQUIRE(wall.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
+    REQUIRE(wall.Step(1.0e-3).IsValid());
+    REQUIRE(wall.GetFactorizationCount() == 1);
+    for (int k = 3; k <= 4; ++k)
+        for (int i = 7; i <= 8; ++i)
+            REQUIRE(wall.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 2000.0, 0.0)).IsValid());
+    int fracture_steps = 0;
+    bool fractured_before = false;
+    for (int step = 0; step < 20; ++step)
+    {
+        const int before = wall.GetFactorizationCount();
+        const TetStepResult result = wall.Step(1.0e-3).Get();
+        CHECK(wall.GetFactorizationCount() == before + (fractured_before ? 1 : 0));
+        fractured_before = HasEvent(result.mEvents, ETetStepEvent::Fractured);
+        fracture_steps += fractured_before ? 1 : 0;
+    }
+    CHECK(fracture_steps > 0);
+    CHECK(wall.GetBrokenLinkCount() > 0);
+}
+
+TEST_CASE("Factored solve: a copy continues bit for bit, and a run repeats bit for bit", "[fem]")
+{
+    CantileverScene first = MakeBeam(EElasticModel::CorotatedLinear, EImplicitPreconditioner::RestFactorization);
+    CantileverScene second = MakeBeam(EElasticModel::CorotatedLinear, EImplicitPreconditioner::RestFactorization);
+    for (int step = 0; step < 5; ++step)
+    {
+        REQUIRE(first.GetSolver().Step(cStep).IsValid());
+        REQUIRE(second.GetSolver().Step(cStep).IsValid());
+    }
+    TetSolver copy = first.GetSolver();
+    CHECK(copy.GetFactorizationCount() == first.GetSolver().GetFactorizationCount());
+    for (int step = 0; step < 5; ++step)
+    {
+        REQUIRE(first.GetSolver().Step(cStep).IsValid());
+        REQUIRE(second.GetSolver().Step(cStep).IsValid());
+        REQUIRE(copy.Step(cStep).IsValid());
+    }
+    CHECK(copy.GetPositions() == first.GetSolver().GetPositions());
+    CHECK(copy.GetVelocities() == first.GetSolver().GetVelocities());
+    CHECK(second.GetSolver().GetPositions() == first.GetSolver().GetPositions());
+    CHECK(MaxNorm(first.GetSolver().GetVelocities()) > 0.0);
+}
+
+TEST_CASE("Factored solve: an implicit step allocates nothing once the solver has stepped", "[fem]")
+{
+    for (EElasticModel model : {EElasticModel::CorotatedLinear, EElasticModel::StVenantKirchhoff})
+    {
+        CantileverScene beam = MakeBeam(model, EImplicitPreconditioner::RestFactorization);
+        REQUIRE(beam.GetSolver().Step(cStep).IsValid());
+        std::uint64_t allocations = 0;
+        int iterations = 0;
+        {
+            const test::AllocationCounter counter;
+            for (int step = 0; step < 5; ++step)
+            {
+                const Result<TetStepResult> result = beam.GetSolver().Step(cStep);
+                iterations += result.IsValid() ? result.Get().mSolverIterations : 0;
+            }
+            allocations = counter.Count();
+        }
+        INFO(ToString(model));
+        CHECK(iterations > 0);
+        CHECK(allocations == 0);
+    }
+}
