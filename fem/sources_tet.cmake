@@ -13,6 +13,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/FemMaterial.cpp
     src/FirstPiolaStress.cpp
     src/ModelStrain.cpp
+    src/NodeBlockCholesky.cpp
     src/GreenStrain.cpp
     src/IsotropicMaterialMatrix.cpp
     src/LumpedNodeMass.cpp
@@ -28,7 +29,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/TetMesh.cpp
     src/TetNodalForces.cpp
     src/TetPreconditioner.cpp
-    src/TetRestSystemMatrix.cpp
+    src/TetRestSystemBlocks.cpp
     src/TetSolver.cpp
     src/TetSolverWorkspace.cpp
     src/TetVolume.cpp)

@@ -19,6 +19,43 @@ namespace crumple::fem
 namespace
 {
 
+// The isotropic stress C:eps = lambda tr(eps) I + 2 mu eps of a symmetric strain: what MaterialStress computes
+// with the 6 x 6 Voigt product, in 12 instead of 36 multiplications and inlined. Equal to it up to round-off
+// only, so it is used where round-off is already at the solver's tolerance: the implicit solve's stiffness
+// product (the forces keep MaterialStress).
+inline Mat3 IsotropicStress(double inLambda, double inShearModulus, const Mat3& inStrain)
+{
+    Mat3 stress = (2.0 * inShearModulus) * inStrain;
+    stress.diagonal().array() += inLambda * inStrain.trace();
+    return stress;
+}
+
+// The deformation gradient F = D_s D_m^-1 of the corner values inX (positions or velocities), inlined.
+inline Mat3 InlineDeformationGradient(const Vec3& inX0, const Vec3& inX1, const Vec3& inX2, const Vec3& inX3,
+                                      const Mat3& inRestEdgeInverse)
+{
+    Mat3 edges;
+    edges.col(0) = inX1 - inX0;
+    edges.col(1) = inX2 - inX0;
+    edges.col(2) = inX3 - inX0;
+    return edges * inRestEdgeInverse;
+}
+
+// Adds the corner forces of the first Piola-Kirchhoff stress inP: f_i = -V0 P D_m^-T column i (i = 1..3),
+// corner 0 minus their sum (TetNodalForces, inlined).
+inline void AddStressForces(const TetIndices& inNodes, const Mat3& inP, const TetElementRest& inRest,
+                            std::span<Vec3> ioForces)
+{
+    const Mat3 h = -inRest.mRestVolume * (inP * inRest.mRestEdgeInverse.transpose());
+    const Vec3 f1 = h.col(0);
+    const Vec3 f2 = h.col(1);
+    const Vec3 f3 = h.col(2);
+    ioForces[inNodes[0]] -= f1 + f2 + f3;
+    ioForces[inNodes[1]] += f1;
+    ioForces[inNodes[2]] += f2;
+    ioForces[inNodes[3]] += f3;
+}
+
 // Scatter the four corner forces of an element (element order, so sums are deterministic).
 void AddCornerForces(const TetIndices& inNodes, const std::array<Vec3, 4>& inForces, std::span<Vec3> ioForces)
 {
@@ -73,24 +110,64 @@ ElementFrame CurrentFrame(const TetElementPassInput& inInput, std::span<const Ve
 void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
                       std::span<const Vec3> inVelocities, double inStiffnessDamping,
                       std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
-                      std::span<Vec3> outForces)
+                      std::span<Vec3> outForces, double* outElasticEnergy)
 {
     for (Vec3& force : outForces)
         force.setZero();
+    double energy = 0.0;
     const Matrix6& c = *inInput.mMaterialMatrix;
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     const bool viscous = !inVelocities.empty() && inStiffnessDamping > 0.0;
 
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        // Deformation gradient and, for the corotated model, its rotation.
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
+        if (corotated)
+        {
+            // Corotated, written out (the force pass runs twice per implicit step and every explicit
+            // sub-step): F, its rotation R, P = R C:(sym(R^T F) - I - eps_p), plus the viscous stress
+            // R beta C:sym(R^T dF/dt). The same operations in the same order as the general kernels
+            // (FirstPiolaStress, TetNodalForces, StrainEnergyDensity), so the results are bitwise theirs:
+            // explicit runs (crash barriers) are chaotic enough that round-off would move their outcome.
+            const Mat3 f = InlineDeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
+                                                     inPositions[n[3]], rest.mRestEdgeInverse);
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
+            const Mat3 r = ioRotations[tet].toRotationMatrix();
+            const Mat3 unrotated = r.transpose() * f;
+            Mat3 strain = 0.5 * (unrotated + unrotated.transpose()) - Mat3::Identity();
+            if (!inInput.mPlasticStrains.empty())
+                strain -= inInput.mPlasticStrains[tet];
+            const Mat3 stress = MaterialStress(c, strain);
+            if (outElasticEnergy != nullptr)
+                energy += rest.mRestVolume * (0.5 * stress.cwiseProduct(strain).sum()); // V0 sigma : e / 2
+            Mat3 p = r * stress;
+            if (viscous)
+            {
+                const Mat3 f_dot = InlineDeformationGradient(inVelocities[n[0]], inVelocities[n[1]],
+                                                             inVelocities[n[2]], inVelocities[n[3]],
+                                                             rest.mRestEdgeInverse);
+                const Mat3 rate = r.transpose() * f_dot;
+                p += r * (inStiffnessDamping * MaterialStress(c, 0.5 * (rate + rate.transpose())));
+            }
+            AddStressForces(n, p, rest, outForces);
+            if (!outLinearization.empty())
+            {
+                outLinearization[tet].mFrame = r;
+                outLinearization[tet].mStress.setZero();
+            }
+            continue;
+        }
+
+        // Any model through the general kernels (St. Venant-Kirchhoff: the frame is F): deformation gradient
+        // and, for the corotated model, its rotation.
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
 
         // Elastic stress, plus the viscous stress beta C:strain_rate in the same frame.
         const Mat3 plastic = inInput.PlasticStrain(tet);
         Mat3 p = FirstPiolaStress(inInput.mModel, f, r, c, plastic);
+        if (outElasticEnergy != nullptr)
+            energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, plastic);
         if (viscous)
         {
             const Mat3 f_dot = DeformationGradient(inVelocities[n[0]], inVelocities[n[1]], inVelocities[n[2]],
@@ -117,15 +194,8 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
             }
         }
     }
-}
-
-// The isotropic stress C:eps = lambda tr(eps) I + 2 mu eps of a symmetric strain: what MaterialStress computes
-// with the 6 x 6 Voigt product, in 12 instead of 36 multiplications and inlined into the product's loop.
-inline Mat3 IsotropicStress(double inLambda, double inShearModulus, const Mat3& inStrain)
-{
-    Mat3 stress = (2.0 * inShearModulus) * inStrain;
-    stress.diagonal().array() += inLambda * inStrain.trace();
-    return stress;
+    if (outElasticEnergy != nullptr)
+        *outElasticEnergy = energy;
 }
 
 void TetStiffnessProduct(const TetElementPassInput& inInput,
@@ -144,12 +214,8 @@ void TetStiffnessProduct(const TetElementPassInput& inInput,
         // dF = D_s(d) D_m^-1 from the corner directions.
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
-        const Vec3 d0 = inDirection[n[0]];
-        Mat3 edges;
-        edges.col(0) = inDirection[n[1]] - d0;
-        edges.col(1) = inDirection[n[2]] - d0;
-        edges.col(2) = inDirection[n[3]] - d0;
-        const Mat3 delta_f = edges * rest.mRestEdgeInverse;
+        const Mat3 delta_f = InlineDeformationGradient(inDirection[n[0]], inDirection[n[1]], inDirection[n[2]],
+                                                       inDirection[n[3]], rest.mRestEdgeInverse);
 
         // dP = frame C:sym(frame^T dF) (+ dF S for St. Venant-Kirchhoff), as LinearizedStress.
         const TetLinearization& lin = inLinearization[tet];
@@ -158,15 +224,8 @@ void TetStiffnessProduct(const TetElementPassInput& inInput,
         if (!corotated)
             delta_p += delta_f * lin.mStress;
 
-        // K d = -df: corner forces of -dP, f_i = V0 dP D_m^-T column i (i = 1..3), corner 0 minus their sum.
-        const Mat3 h = rest.mRestVolume * (delta_p * rest.mRestEdgeInverse.transpose());
-        const Vec3 f1 = h.col(0);
-        const Vec3 f2 = h.col(1);
-        const Vec3 f3 = h.col(2);
-        outProduct[n[0]] -= f1 + f2 + f3;
-        outProduct[n[1]] += f1;
-        outProduct[n[2]] += f2;
-        outProduct[n[3]] += f3;
+        // K d = -df: the corner forces of -dP.
+        AddStressForces(n, -delta_p, rest, outProduct);
     }
 }
 

@@ -42,10 +42,12 @@ struct TetElementPassInput
 /// @param[in,out] ioRotations     #T element rotations (unit quaternions; untouched by St. Venant-Kirchhoff)
 /// @param[out] outLinearization   #T or empty
 /// @param[out] outForces          #N (N), overwritten
+/// @param[out] outElasticEnergy   when not null, the elastic energy sum V0 psi(F) at inPositions (J), as
+///                                TetElasticEnergy computes it, from the same F and rotations (saves a pass)
 void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
                       std::span<const Vec3> inVelocities, double inStiffnessDamping,
                       std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
-                      std::span<Vec3> outForces);
+                      std::span<Vec3> outForces, double* outElasticEnergy = nullptr);
 
 /// Product of the linearised stiffness K (= -df/dx) with a direction: outProduct = K inDirection.
 /// @param[in]  inLinearization  #T from TetElasticForces

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "TetFactoredPreconditioner.h"
 
-#include "TetRestSystemMatrix.h"
+#include "TetRestSystemBlocks.h"
 
 #include <algorithm>
 
@@ -24,7 +24,6 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, s
     // Forget the old factor first: a failure leaves none.
     mFactored = false;
     mAttempted = true;
-    mFactorNonZeros = 0;
     mTets.assign(inInput.mTets.begin(), inInput.mTets.end());
     mFree.assign(inFree.begin(), inFree.end());
     mMassScale = inMassScale;
@@ -40,14 +39,11 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, s
         return false;
 
     // Factor; a non-positive pivot (a free rigid mode of the static stiffness) fails the factorisation.
-    const Eigen::SparseMatrix<double> system =
-        TetRestSystemMatrix(inInput, inMasses, mFreeIndex, free_count, inMassScale, inStiffnessScale);
-    mCholesky.compute(system);
-    if (mCholesky.info() != Eigen::Success)
+    const std::vector<NodeBlock> blocks =
+        TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale);
+    if (!mCholesky.Factor(free_count, blocks))
         return false;
-    mFactorNonZeros = mCholesky.matrixL().nestedExpression().nonZeros();
-    mRhs.resize(system.rows());
-    mPermuted.resize(system.rows());
+    mRhs.assign(free_count, Vec3::Zero());
     mNodeRotations.clear();
     mFactored = true;
     return true;
@@ -92,14 +88,11 @@ void TetFactoredPreconditioner::Apply(std::span<const Vec3> inR, std::span<Vec3>
     {
         const int index = mFreeIndex[node];
         if (index >= 0)
-            mRhs.segment<3>(3 * index) = warp ? Vec3(mNodeRotations[node].transpose() * inR[node]) : inR[node];
+            mRhs[index] = warp ? Vec3(mNodeRotations[node].transpose() * inR[node]) : inR[node];
     }
 
-    // A0^-1 by the two triangular solves of P A0 P^T = L L^T, in place (no allocation).
-    mPermuted.noalias() = mCholesky.permutationP() * mRhs;
-    mCholesky.matrixL().solveInPlace(mPermuted);
-    mCholesky.matrixU().solveInPlace(mPermuted);
-    mRhs.noalias() = mCholesky.permutationPinv() * mPermuted;
+    // A0^-1 by the two triangular solves of the factor, in place (no allocation).
+    mCholesky.Solve(mRhs);
 
     // R scattered back; anchored nodes get zero.
     for (std::size_t node = 0; node < mFreeIndex.size(); ++node)
@@ -108,7 +101,7 @@ void TetFactoredPreconditioner::Apply(std::span<const Vec3> inR, std::span<Vec3>
         if (index < 0)
             outZ[node].setZero();
         else
-            outZ[node] = warp ? Vec3(mNodeRotations[node] * mRhs.segment<3>(3 * index)) : Vec3(mRhs.segment<3>(3 * index));
+            outZ[node] = warp ? Vec3(mNodeRotations[node] * mRhs[index]) : mRhs[index];
     }
 }
 

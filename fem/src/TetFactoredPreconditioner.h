@@ -3,9 +3,9 @@
 #pragma once
 
 #include "ConjugateGradient.h"
+#include "NodeBlockCholesky.h"
 #include "TetElementPass.h"
 
-#include <Eigen/SparseCholesky>
 
 #include <cstdint>
 #include <span>
@@ -26,8 +26,8 @@ namespace crumple::fem
 /// as a preconditioner, with the prefactorised constant matrix of projective dynamics, Bouaziz et al. 2014).
 /// Fracture, SetNodeFixed and a new time step change A0; the owner calls Matches() and Precompute() again.
 ///
-/// Memory: the Cholesky factor (simplicial, AMD ordering): GetFactorNonZeros() doubles. Not thread-safe:
-/// Apply() uses scratch held here.
+/// Memory: the Cholesky factor (NodeBlockCholesky): GetFactorBlockCount() blocks of 9 doubles and an index.
+/// Not thread-safe: Apply() uses scratch held here.
 class TetFactoredPreconditioner
 {
 public:
@@ -48,8 +48,8 @@ public:
 
     /// True after a successful Precompute()
     bool IsFactored() const { return mFactored; }
-    /// Non-zeros of the Cholesky factor L (0 without one)
-    std::int64_t GetFactorNonZeros() const { return mFactorNonZeros; }
+    /// 3 x 3 blocks of the Cholesky factor L (0 without one)
+    std::int64_t GetFactorBlockCount() const { return mCholesky.GetBlockCount(); }
 
     /// Sets the node rotations R from the element frames: the sign-aligned mean quaternion of the elements
     /// around each node. Call after the elements' rotations change (each Newton iteration).
@@ -65,10 +65,9 @@ public:
     LinearOperator3 AsOperator() const;
 
 private:
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> mCholesky;
+    NodeBlockCholesky mCholesky;
     bool mFactored = false;
     bool mAttempted = false;
-    std::int64_t mFactorNonZeros = 0;
 
     // What the factor was built for.
     std::vector<TetIndices> mTets;
@@ -80,9 +79,8 @@ private:
     std::vector<Mat3> mNodeRotations; // #N, empty while all are identity
     std::vector<Eigen::Vector4d> mQuaternionSums; // #N scratch of SetNodeRotations
 
-    // Scratch of Apply(), sized by Precompute().
-    mutable Eigen::VectorXd mRhs;
-    mutable Eigen::VectorXd mPermuted;
+    // Scratch of Apply(), #free, sized by Precompute().
+    mutable std::vector<Vec3> mRhs;
 };
 
 } // namespace crumple::fem

@@ -430,6 +430,17 @@ void TetSolver::ExternalPotential(double& outPotential, double& outMagnitude) co
         }
 }
 
+TetSolver::EnergyParts TetSolver::MeasuredOrPassEnergy()
+{
+    if (!mPassEnergyValid)
+        return MeasureEnergy();
+    EnergyParts parts;
+    parts.mKinetic = KineticEnergy();
+    parts.mElastic = mPassEnergy;
+    ExternalPotential(parts.mPotential, parts.mPotentialMagnitude);
+    return parts;
+}
+
 TetSolver::EnergyParts TetSolver::MeasureEnergy()
 {
     EnergyParts parts;
@@ -552,8 +563,10 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     bool converged = false;
     for (int iteration = 0; iteration <= mSettings.mImplicitMaxIterations; ++iteration)
     {
-        // Forces and linearisation at the current iterate (x0 itself on the first pass).
-        TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces);
+        // Forces, linearisation and elastic energy at the current iterate (x0 itself on the first pass). The
+        // last pass of the step is always at its final positions: Step() reads the energy from it.
+        TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy);
+        mPassEnergyValid = true;
         mElementWork += mRest.size();
         const bool first = iteration == 0;
         if (first || material.mStiffnessDamping > 0.0)
@@ -620,6 +633,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, cg.mRelativeResidual);
         if (!cg.mConverged)
             ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
+        mPassEnergyValid = false; // the positions move
         for (std::size_t node = 0; node < node_count; ++node)
             if (mFree[node] != 0)
             {
@@ -697,6 +711,7 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
         SaveShape(mSavedShape);
 
     // Integrate; on divergence retry from the saved state with the step split into 2, 4, ... parts.
+    mPassEnergyValid = false;
     bool diverged = true;
     EnergyParts parts;
     for (int split = 0; split <= mSettings.mMaxStepSplits && diverged; ++split)
@@ -727,7 +742,10 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
             for (int piece = 0; piece < pieces; ++piece)
             {
                 StepImplicit(inDeltaTime / pieces, result);
+                const int changed = mStepPlasticElements + mStepBrokenLinks;
                 AfterSubStep(inDeltaTime / pieces);
+                if (mStepPlasticElements + mStepBrokenLinks != changed)
+                    mPassEnergyValid = false; // plastic flow or a crack changed the energy of these positions
             }
         }
 
@@ -735,7 +753,7 @@ Result<TetStepResult> TetSolver::Step(double inDeltaTime)
         diverged = !AllFinite(mPositions) || !AllFinite(mVelocities);
         if (!diverged)
         {
-            parts = MeasureEnergy();
+            parts = MeasuredOrPassEnergy();
             const double energy = parts.mKinetic + parts.mElastic + parts.mPotential;
             const double content = parts.mKinetic + parts.mElastic + parts.mPotentialMagnitude;
             diverged = !std::isfinite(energy) ||

@@ -5,7 +5,8 @@
 #include "AllocationCounter.h"
 #include "CantileverScene.h"
 #include "TetElementPass.h"
-#include "TetRestSystemMatrix.h"
+#include "NodeBlockCholesky.h"
+#include "TetRestSystemBlocks.h"
 
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/TetElementRest.h>
@@ -68,7 +69,8 @@ double MaxNorm(const std::vector<Vec3>& inValues)
 
 } // namespace
 
-TEST_CASE("Rest system: the assembled a M + b K0 applies exactly the matrix-free implicit operator at rest", "[fem]")
+TEST_CASE("Rest system: the assembled a M + b K0 blocks apply exactly the matrix-free implicit operator at rest",
+          "[fem]")
 {
     TetGridSettings grid;
     grid.mSize = Vec3(0.6, 0.4, 0.2);
@@ -102,10 +104,15 @@ TEST_CASE("Rest system: the assembled a M + b K0 applies exactly the matrix-free
             free_index[node] = node % 5 == 0 ? -1 : free_count++;
         }
         const double a = 1.25, b = 3.0e-4;
-        const Eigen::SparseMatrix<double> system =
-            TetRestSystemMatrix(input, masses, free_index, free_count, a, b);
-        REQUIRE(system.rows() == 3 * free_count);
-        CHECK((Eigen::MatrixXd(system) - Eigen::MatrixXd(system).transpose()).cwiseAbs().maxCoeff() == 0.0);
+        Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * free_count, 3 * free_count);
+        for (const NodeBlock& block : TetRestSystemBlocks(input, masses, free_index, a, b))
+        {
+            REQUIRE(block.mRow >= block.mColumn);
+            system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
+            if (block.mRow != block.mColumn)
+                system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
+        }
+        CHECK((system - system.transpose()).cwiseAbs().maxCoeff() <= 1.0e-15 * system.cwiseAbs().maxCoeff());
 
         // Random directions on the free nodes, zero on anchored ones.
         for (int trial = 0; trial < 5; ++trial)
@@ -133,6 +140,62 @@ TEST_CASE("Rest system: the assembled a M + b K0 applies exactly the matrix-free
                 }
             CHECK(difference <= 1.0e-12 * scale);
         }
+    }
+}
+
+TEST_CASE("NodeBlockCholesky: solves random sparse SPD block systems as a dense LLT does; refuses indefinite ones",
+          "[fem]")
+{
+    std::mt19937 random(11u);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        // A random sparse graph of n nodes (random edges, duplicates included), SPD by diagonal dominance.
+        const int n = 1 + static_cast<int>(random() % 40u);
+        std::vector<NodeBlock> blocks;
+        Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+        const int edges = static_cast<int>(random() % static_cast<std::uint32_t>(3 * n + 1));
+        for (int edge = 0; edge < edges; ++edge)
+        {
+            const int i = static_cast<int>(random() % static_cast<std::uint32_t>(n));
+            const int j = static_cast<int>(random() % static_cast<std::uint32_t>(n));
+            if (i == j)
+                continue;
+            Mat3 block;
+            for (int entry = 0; entry < 9; ++entry)
+                block(entry / 3, entry % 3) = unit(random);
+            blocks.push_back({std::max(i, j), std::min(i, j), block});
+            const int row = std::max(i, j), column = std::min(i, j);
+            dense.block<3, 3>(3 * row, 3 * column) += block;
+            dense.block<3, 3>(3 * column, 3 * row) += block.transpose();
+        }
+        for (int node = 0; node < n; ++node)
+        {
+            const double dominance = dense.block(3 * node, 0, 3, 3 * n).cwiseAbs().sum() + 1.0 + unit(random) * 0.5;
+            blocks.push_back({node, node, dominance * Mat3::Identity()});
+            dense.block<3, 3>(3 * node, 3 * node) += dominance * Mat3::Identity();
+        }
+        NodeBlockCholesky cholesky;
+        REQUIRE(cholesky.Factor(n, blocks));
+        std::vector<Vec3> x(n);
+        Eigen::VectorXd rhs(3 * n);
+        for (int node = 0; node < n; ++node)
+        {
+            x[node] = Vec3(unit(random), unit(random), unit(random));
+            rhs.segment<3>(3 * node) = x[node];
+        }
+        cholesky.Solve(x);
+        const Eigen::VectorXd expected = dense.llt().solve(rhs);
+        double difference = 0.0;
+        for (int node = 0; node < n; ++node)
+            difference = std::max(difference, (x[node] - Vec3(expected.segment<3>(3 * node))).cwiseAbs().maxCoeff());
+        CHECK(difference <= 1.0e-12 * expected.cwiseAbs().maxCoeff());
+
+        // The same matrix shifted to be indefinite is refused.
+        blocks.push_back({n - 1, n - 1, -1.0e6 * Mat3::Identity()});
+        NodeBlockCholesky indefinite;
+        CHECK_FALSE(indefinite.Factor(n, blocks));
+        CHECK_FALSE(indefinite.IsFactored());
     }
 }
 

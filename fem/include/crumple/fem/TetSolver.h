@@ -203,6 +203,9 @@ private:
         double mPotentialMagnitude = 0.0;
     };
     EnergyParts MeasureEnergy();
+    // MeasureEnergy(), but with the elastic energy of the implicit step's last force pass when it was taken
+    // at the current positions and shape (saves an element pass per step).
+    EnergyParts MeasuredOrPassEnergy();
     // The external potential -sum f . (x - X) (J) of gravity and the external forces on free nodes, and its
     // scale sum |f . (x - X)| (J); touches no element.
     void ExternalPotential(double& outPotential, double& outMagnitude) const;
@@ -230,6 +233,11 @@ private:
     int mStepPlasticElements = 0; // plastic flow events of the current step attempt
     int mStepBrokenLinks = 0;     // links broken by the current step attempt
     ShapeState mSavedShape;
+
+    // Elastic energy of the last force pass of StepImplicit (J), valid while the positions and shape are those
+    // it saw.
+    double mPassEnergy = 0.0;
+    bool mPassEnergyValid = false;
 
     // Energy reference for divergence detection.
     double mReferenceEnergy = 0.0;

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "NodeBlockCholesky.h"
 #include "TetElementPass.h"
 
-#include <Eigen/SparseCore>
+#include <vector>
 
 #include <cstdint>
 #include <span>
@@ -17,17 +18,17 @@ namespace crumple::fem
 /// the linear tetrahedron, engineering shear as in C). K0 is the tangent of both elastic models at rest and
 /// the corotated model's tangent is R K0 R^T for a rigidly rotated element, so A0 is the implicit Euler
 /// system of a body near rest (a = 1 + h alpha, b = h^2 + h beta) or the static stiffness (a = 0, b = 1).
-/// Degree of freedom 3 inFreeIndex[n] + axis; anchored nodes (inFreeIndex -1) and their couplings are left
-/// out. Symmetric; both triangles are stored.
+/// Block rows and columns are the free nodes' indices inFreeIndex[n]; anchored nodes (inFreeIndex -1) and
+/// their couplings are left out. The blocks of the lower triangle, one per element and node pair plus one per
+/// free node's mass, in element order (NodeBlockCholesky sums them).
 /// @param[in] inInput      connectivity, rest data and material
 /// @param[in] inMasses     #N lumped node masses (kg)
 /// @param[in] inFreeIndex  #N index of each free node among the free nodes, -1 for an anchored node
-/// @param[in] inFreeCount  number of free nodes
 /// @param[in] inMassScale       a (1)
 /// @param[in] inStiffnessScale  b (s^2 for the implicit system, 1 for the static one)
-/// @return 3 #free by 3 #free, units of inMassScale x kg
-Eigen::SparseMatrix<double> TetRestSystemMatrix(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                                                std::span<const int> inFreeIndex, int inFreeCount,
-                                                double inMassScale, double inStiffnessScale);
+/// @return blocks of a #free by #free block matrix, units of inMassScale x kg
+std::vector<NodeBlock> TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                                           std::span<const int> inFreeIndex, double inMassScale,
+                                           double inStiffnessScale);
 
 } // namespace crumple::fem

@@ -1,9 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "TetRestSystemMatrix.h"
+#include "TetRestSystemBlocks.h"
 
 #include <array>
-#include <vector>
 
 namespace crumple::fem
 {
@@ -39,50 +38,38 @@ Eigen::Matrix<double, 6, 12> StrainDisplacement(const Mat3& inRestEdgeInverse)
 
 } // namespace
 
-Eigen::SparseMatrix<double> TetRestSystemMatrix(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                                                std::span<const int> inFreeIndex, int inFreeCount,
-                                                double inMassScale, double inStiffnessScale)
+std::vector<NodeBlock> TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                                           std::span<const int> inFreeIndex, double inMassScale,
+                                           double inStiffnessScale)
 {
-    // Triplets of every element block between free corners, then the masses; setFromTriplets sums duplicates
-    // in a fixed order, so the matrix is the same bit for bit on every run.
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(inInput.mTets.size() * 144 + 3 * static_cast<std::size_t>(inFreeCount));
+    // Per element the blocks between free corners in the lower triangle (each node pair once), then the
+    // masses.
+    std::vector<NodeBlock> blocks;
+    blocks.reserve(inInput.mTets.size() * 10 + inMasses.size());
     const Matrix6& c = *inInput.mMaterialMatrix;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        // Symmetrised: B^T C B in floating point is symmetric only to round-off.
         const TetElementRest& rest = inInput.mRest[tet];
         const Eigen::Matrix<double, 6, 12> b = StrainDisplacement(rest.mRestEdgeInverse);
-        // Symmetrised: B^T C B in floating point is symmetric only to round-off, and the factor reads one
-        // triangle.
         const Eigen::Matrix<double, 12, 12> bcb = b.transpose() * c * b;
         const Eigen::Matrix<double, 12, 12> k =
             (0.5 * inStiffnessScale * rest.mRestVolume) * (bcb + bcb.transpose());
         const TetIndices& nodes = inInput.mTets[tet];
         for (int row_corner = 0; row_corner < 4; ++row_corner)
-        {
-            const int row_node = inFreeIndex[nodes[row_corner]];
-            if (row_node < 0)
-                continue;
             for (int col_corner = 0; col_corner < 4; ++col_corner)
             {
-                const int col_node = inFreeIndex[nodes[col_corner]];
-                if (col_node < 0)
+                const int row = inFreeIndex[nodes[row_corner]];
+                const int column = inFreeIndex[nodes[col_corner]];
+                if (row < 0 || column < 0 || row < column || (row == column && row_corner != col_corner))
                     continue;
-                for (int row = 0; row < 3; ++row)
-                    for (int col = 0; col < 3; ++col)
-                        entries.emplace_back(3 * row_node + row, 3 * col_node + col,
-                                             k(3 * row_corner + row, 3 * col_corner + col));
+                blocks.push_back({row, column, k.block<3, 3>(3 * row_corner, 3 * col_corner)});
             }
-        }
     }
     for (std::size_t node = 0; node < inMasses.size(); ++node)
         if (inFreeIndex[node] >= 0)
-            for (int axis = 0; axis < 3; ++axis)
-                entries.emplace_back(3 * inFreeIndex[node] + axis, 3 * inFreeIndex[node] + axis,
-                                     inMassScale * inMasses[node]);
-    Eigen::SparseMatrix<double> matrix(3 * inFreeCount, 3 * inFreeCount);
-    matrix.setFromTriplets(entries.begin(), entries.end());
-    return matrix;
+            blocks.push_back({inFreeIndex[node], inFreeIndex[node], (inMassScale * inMasses[node]) * Mat3::Identity()});
+    return blocks;
 }
 
 } // namespace crumple::fem

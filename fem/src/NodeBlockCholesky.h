@@ -1,0 +1,62 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+
+#include <span>
+#include <vector>
+
+namespace crumple::fem
+{
+
+/// One 3 x 3 block A_ij of a symmetric matrix of nodes (A_ji = A_ij^T is implied). Entries with the same
+/// (mRow, mColumn) are summed, in the order given.
+struct NodeBlock
+{
+    int mRow = 0;    ///< Node i
+    int mColumn = 0; ///< Node j <= i
+    Mat3 mBlock = Mat3::Zero();
+};
+
+/// Sparse Cholesky factorisation A = P^T L L^T P of a symmetric positive definite matrix made of 3 x 3 node
+/// blocks (FEM systems: three degrees of freedom per node), with a precompute (ordering, symbolic analysis,
+/// numeric factorisation) and an allocation-free solve.
+///
+/// Why not Eigen's SimplicialLLT: it factors scalar entries, one index per number, and its triangular solves
+/// ran at about 1.2 GFLOP/s on a 9,000-tet prop, 41 % of an implicit step. The same algorithm on 3 x 3 blocks
+/// reads one index per nine numbers and does its arithmetic in small dense products: the solves of a prop's
+/// implicit step are the hot loop, and they run several times faster this way.
+///
+/// Algorithm: approximate minimum degree ordering of the node graph (Eigen's AMD, Amestoy, Davis & Duff
+/// 1996); elimination tree and column counts (Liu 1990); up-looking Cholesky, row by row, each row a sparse
+/// triangular solve over the elimination-tree reach of A's column (Davis, "Direct Methods for Sparse Linear
+/// Systems", 2006, section 4.8), with 3 x 3 blocks in place of numbers. Deterministic: no threads, sums in a
+/// fixed order.
+class NodeBlockCholesky
+{
+public:
+    /// Orders, analyses and factors A. Returns false, and holds no factor, when A is not positive definite.
+    /// @param[in] inNodeCount  n, the number of block rows
+    /// @param[in] inBlocks     the blocks of the lower triangle (mRow >= mColumn) in any order
+    bool Factor(int inNodeCount, std::span<const NodeBlock> inBlocks);
+
+    /// True after a successful Factor()
+    bool IsFactored() const { return mFactored; }
+    /// Number of 3 x 3 blocks in L, diagonal included (0 without a factor)
+    std::int64_t GetBlockCount() const;
+
+    /// ioX = A^-1 ioX (#n; no allocation).
+    void Solve(std::span<Vec3> ioX) const;
+
+private:
+    bool mFactored = false;
+    std::vector<int> mNewOfOld;          // #n permutation P: node i is row mNewOfOld[i] of L
+    std::vector<int> mColumnStart;       // #n + 1, strictly lower part of L by column
+    std::vector<int> mRowIndex;          // row of each off-diagonal block
+    std::vector<Mat3> mLower;            // L_rc, off-diagonal blocks by column
+    std::vector<Mat3> mDiagonalInverse;  // #n, L_kk^-1 (lower triangular)
+    mutable std::vector<Vec3> mWork;     // #n, permuted right-hand side
+};
+
+} // namespace crumple::fem
