@@ -28,6 +28,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/TetGrid.cpp
     src/TetMesh.cpp
     src/TetNodalForces.cpp
+    src/TetPassParallel.cpp
     src/TetPreconditioner.cpp
     src/TetRestSystemBlocks.cpp
     src/TetSolver.cpp

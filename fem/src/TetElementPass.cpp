@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "TetElementPass.h"
 
+#include "TetPassParallel.h"
+
 #include <crumple/fem/DeformationGradient.h>
 #include <crumple/fem/FirstPiolaStress.h>
 #include <crumple/fem/MaterialStress.h>
@@ -41,26 +43,56 @@ inline Mat3 InlineDeformationGradient(const Vec3& inX0, const Vec3& inX1, const 
     return edges * inRestEdgeInverse;
 }
 
-// Adds the corner forces of the first Piola-Kirchhoff stress inP: f_i = -V0 P D_m^-T column i (i = 1..3),
-// corner 0 minus their sum (TetNodalForces, inlined).
-inline void AddStressForces(const TetIndices& inNodes, const Mat3& inP, const TetElementRest& inRest,
-                            std::span<Vec3> ioForces)
+// The corner forces of the first Piola-Kirchhoff stress inP: f_i = -V0 P D_m^-T column i (i = 1..3), corner 0
+// minus their sum (TetNodalForces, inlined).
+inline std::array<Vec3, 4> StressCornerForces(const Mat3& inP, const TetElementRest& inRest)
 {
     const Mat3 h = -inRest.mRestVolume * (inP * inRest.mRestEdgeInverse.transpose());
     const Vec3 f1 = h.col(0);
     const Vec3 f2 = h.col(1);
     const Vec3 f3 = h.col(2);
-    ioForces[inNodes[0]] -= f1 + f2 + f3;
-    ioForces[inNodes[1]] += f1;
-    ioForces[inNodes[2]] += f2;
-    ioForces[inNodes[3]] += f3;
+    return {-(f1 + f2 + f3), f1, f2, f3};
 }
 
-// Scatter the four corner forces of an element (element order, so sums are deterministic).
-void AddCornerForces(const TetIndices& inNodes, const std::array<Vec3, 4>& inForces, std::span<Vec3> ioForces)
+// Elements per piece of a parallel element pass: below this, handing a piece to a worker and gathering its
+// corners costs more than it saves (measured: a 1,125-tet beam stepped 30 % slower on 2 threads with 256).
+constexpr std::size_t cMinElementsPerPiece = 2048;
+
+// Runs inKernel(tet, energy) -> the element's four corner values for every element and sums them onto the
+// nodes, outValues[n] = sum over the elements at n in element order; returns the sum of the elements'
+// energies in element order. Serial: scattered as they come. With inInput.mParallel: the elements in pieces
+// on the host's jobs, then gathered per node (TetPassParallel), bitwise the same.
+template <class Kernel>
+double RunElementPass(const TetElementPassInput& inInput, std::span<Vec3> outValues, const Kernel& inKernel)
 {
-    for (int corner = 0; corner < 4; ++corner)
-        ioForces[inNodes[corner]] += inForces[corner];
+    double energy = 0.0;
+    if (inInput.mParallel == nullptr ||
+        PieceCount(inInput.mParallel->mJobs, inInput.mTets.size(), cMinElementsPerPiece) <= 1)
+    {
+        for (Vec3& value : outValues)
+            value.setZero();
+        for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+        {
+            double element_energy = 0.0;
+            const std::array<Vec3, 4> corners = inKernel(tet, element_energy);
+            const TetIndices& nodes = inInput.mTets[tet];
+            for (int corner = 0; corner < 4; ++corner)
+                outValues[nodes[corner]] += corners[corner];
+            energy += element_energy;
+        }
+        return energy;
+    }
+    TetPassParallel& parallel = *inInput.mParallel;
+    parallel.ForPieces(inInput.mTets.size(), cMinElementsPerPiece,
+                       [&](std::size_t inFirst, std::size_t inLast)
+                       {
+                           for (std::size_t tet = inFirst; tet < inLast; ++tet)
+                               parallel.mCorners[tet] = inKernel(tet, parallel.mElementEnergy[tet]);
+                       });
+    parallel.Gather(outValues);
+    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+        energy += parallel.mElementEnergy[tet];
+    return energy;
 }
 
 // dP of the linearisation applied to dF.
@@ -112,14 +144,11 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
                       std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
                       std::span<Vec3> outForces, double* outElasticEnergy)
 {
-    for (Vec3& force : outForces)
-        force.setZero();
-    double energy = 0.0;
     const Matrix6& c = *inInput.mMaterialMatrix;
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     const bool viscous = !inVelocities.empty() && inStiffnessDamping > 0.0;
-
-    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    const bool with_energy = outElasticEnergy != nullptr;
+    const auto element = [&](std::size_t tet, double& outEnergy) -> std::array<Vec3, 4>
     {
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
@@ -139,8 +168,8 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
             if (!inInput.mPlasticStrains.empty())
                 strain -= inInput.mPlasticStrains[tet];
             const Mat3 stress = MaterialStress(c, strain);
-            if (outElasticEnergy != nullptr)
-                energy += rest.mRestVolume * (0.5 * stress.cwiseProduct(strain).sum()); // V0 sigma : e / 2
+            if (with_energy)
+                outEnergy = rest.mRestVolume * (0.5 * stress.cwiseProduct(strain).sum()); // V0 sigma : e / 2
             Mat3 p = r * stress;
             if (viscous)
             {
@@ -150,51 +179,41 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
                 const Mat3 rate = r.transpose() * f_dot;
                 p += r * (inStiffnessDamping * MaterialStress(c, 0.5 * (rate + rate.transpose())));
             }
-            AddStressForces(n, p, rest, outForces);
             if (!outLinearization.empty())
             {
                 outLinearization[tet].mFrame = r;
                 outLinearization[tet].mStress.setZero();
             }
-            continue;
+            return StressCornerForces(p, rest);
         }
 
-        // Any model through the general kernels (St. Venant-Kirchhoff: the frame is F): deformation gradient
-        // and, for the corotated model, its rotation.
+        // St. Venant-Kirchhoff through the general kernels: deformation gradient, frame F (rotation identity).
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
 
         // Elastic stress, plus the viscous stress beta C:strain_rate in the same frame.
         const Mat3 plastic = inInput.PlasticStrain(tet);
         Mat3 p = FirstPiolaStress(inInput.mModel, f, r, c, plastic);
-        if (outElasticEnergy != nullptr)
-            energy += rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, plastic);
+        if (with_energy)
+            outEnergy = rest.mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, plastic);
         if (viscous)
         {
             const Mat3 f_dot = DeformationGradient(inVelocities[n[0]], inVelocities[n[1]], inVelocities[n[2]],
                                                    inVelocities[n[3]], rest.mRestEdgeInverse);
-            const Mat3& frame = corotated ? r : f;
-            const Mat3 local = frame.transpose() * f_dot;
-            p += frame * (inStiffnessDamping * MaterialStress(c, 0.5 * (local + local.transpose())));
+            const Mat3 local = f.transpose() * f_dot;
+            p += f * (inStiffnessDamping * MaterialStress(c, 0.5 * (local + local.transpose())));
         }
-        AddCornerForces(n, TetNodalForces(p, rest.mRestEdgeInverse, rest.mRestVolume), outForces);
 
         // Linearisation around this state for the implicit solve.
         if (!outLinearization.empty())
         {
             TetLinearization& lin = outLinearization[tet];
-            if (corotated)
-            {
-                lin.mFrame = r;
-                lin.mStress.setZero();
-            }
-            else
-            {
-                lin.mFrame = f;
-                lin.mStress = PositivePart(MaterialStress(c, ModelStrain(inInput.mModel, f, r) - plastic));
-            }
+            lin.mFrame = f;
+            lin.mStress = PositivePart(MaterialStress(c, ModelStrain(inInput.mModel, f, r) - plastic));
         }
-    }
-    if (outElasticEnergy != nullptr)
+        return TetNodalForces(p, rest.mRestEdgeInverse, rest.mRestVolume);
+    };
+    const double energy = RunElementPass(inInput, outForces, element);
+    if (with_energy)
         *outElasticEnergy = energy;
 }
 
@@ -204,12 +223,10 @@ void TetStiffnessProduct(const TetElementPassInput& inInput,
 {
     // The hot loop of every implicit solve (one pass per conjugate-gradient iteration): the element kernel is
     // written out here so that it inlines, with the isotropic stress instead of the Voigt product.
-    for (Vec3& product : outProduct)
-        product.setZero();
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     const double lambda = inInput.mLambda;
     const double mu = inInput.mShearModulus;
-    for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
+    const auto element = [&](std::size_t tet, double&) -> std::array<Vec3, 4>
     {
         // dF = D_s(d) D_m^-1 from the corner directions.
         const TetIndices& n = inInput.mTets[tet];
@@ -225,8 +242,9 @@ void TetStiffnessProduct(const TetElementPassInput& inInput,
             delta_p += delta_f * lin.mStress;
 
         // K d = -df: the corner forces of -dP.
-        AddStressForces(n, -delta_p, rest, outProduct);
-    }
+        return StressCornerForces(-delta_p, rest);
+    };
+    RunElementPass(inInput, outProduct, element);
 }
 
 void TetStiffnessDiagonal(const TetElementPassInput& inInput,

@@ -14,6 +14,8 @@ namespace crumple::fem
 {
 
 /// What every element pass reads: connectivity, rest data and material (private to the solvers).
+struct TetPassParallel;
+
 struct TetElementPassInput
 {
     std::span<const TetIndices> mTets;        ///< #T element -> node indices
@@ -24,6 +26,10 @@ struct TetElementPassInput
     EElasticModel mModel = EElasticModel::CorotatedLinear;
     /// #T plastic strains (in the model's frame), or empty when the material has no plasticity
     std::span<const Mat3> mPlasticStrains;
+
+    /// The host's jobs and the gather scratch for the force and stiffness-product passes, or null to run them
+    /// serially; either way the results are bitwise the same (TetPassParallel)
+    TetPassParallel* mParallel = nullptr;
 
     /// Plastic strain of element inTet (zero without plasticity)
     Mat3 PlasticStrain(std::size_t inTet) const

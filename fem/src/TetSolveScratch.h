@@ -4,6 +4,7 @@
 
 #include "ConjugateGradient.h"
 #include "TetFactoredPreconditioner.h"
+#include "TetPassParallel.h"
 #include "TetPreconditioner.h"
 
 #include <vector>
@@ -17,6 +18,7 @@ struct TetSolveScratch
 {
     TetFactoredPreconditioner mFactor;
     TetPreconditioner mJacobi;
+    TetPassParallel mParallel; ///< Gather scratch of the element passes on the host's jobs
     ConjugateGradientScratch mCg;
     std::vector<Vec3> mKv;             ///< #N K v (N s/m x m/s)
     std::vector<Vec3> mResidual;       ///< #N

@@ -151,6 +151,24 @@ TetElementPassInput TetSolver::PassInput() const
                                mPlasticStrains};
 }
 
+TetElementPassInput TetSolver::ParallelPassInput()
+{
+    TetElementPassInput input = PassInput();
+    if (mJobs != nullptr && mJobs->mParallelFor != nullptr && mJobs->mWorkerCount > 1)
+    {
+        TetPassParallel& parallel = mWorkspace.Get().mParallel;
+        parallel.mJobs = mJobs;
+        parallel.Prepare(mElementNodes, static_cast<int>(mPositions.size()));
+        input.mParallel = &parallel;
+    }
+    return input;
+}
+
+void TetSolver::SetJobSystem(const JobSystem* inJobs)
+{
+    mJobs = inJobs;
+}
+
 void TetSolver::AfterSubStep(double inDeltaTime)
 {
     // Plastic flow and fracture on the state at the end of each (sub-)step: a crack must open while the stress
@@ -460,7 +478,7 @@ void TetSolver::StepSymplectic(double inDeltaTime, int inSubSteps)
     const bool viscous = material.mStiffnessDamping > 0.0;
     for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
     {
-        const TetElementPassInput input = PassInput(); // fracture may have changed the connectivity
+        const TetElementPassInput input = ParallelPassInput(); // fracture may have changed the connectivity
         // Element pass: elastic (+ viscous) forces at the current state.
         TetElasticForces(input, mPositions,
                          viscous ? std::span<const Vec3>(mVelocities) : std::span<const Vec3>(),
@@ -499,7 +517,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     const FemMaterialSettings& material = mMaterial.GetSettings();
     const double mass_scale = 1.0 + h * material.mMassDamping;
     const double stiffness_scale = h * h + h * material.mStiffnessDamping;
-    const TetElementPassInput input = PassInput();
+    const TetElementPassInput input = ParallelPassInput();
     const std::size_t node_count = mPositions.size();
     mStartPositions = mPositions;
     mStartVelocities = mVelocities;
@@ -835,7 +853,7 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
     mSavedPositions = mPositions;
     mSavedRotations = mRotations;
 
-    const TetElementPassInput input = PassInput();
+    const TetElementPassInput input = ParallelPassInput();
     TetStaticResult result;
     TetSolveScratch& scratch = mWorkspace.Get();
     scratch.Resize(node_count);

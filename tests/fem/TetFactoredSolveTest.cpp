@@ -14,6 +14,7 @@
 #include <crumple/fem/TetSolver.h>
 
 #include <BrittleMaterial.h>
+#include <ThreadJobSystem.h>
 
 #include <catch2/catch.hpp>
 
@@ -356,5 +357,69 @@ TEST_CASE("Factored solve: an implicit step allocates nothing once the solver ha
         INFO(ToString(model));
         CHECK(iterations > 0);
         CHECK(allocations == 0);
+    }
+}
+
+TEST_CASE("Element passes on the host's jobs: bitwise the serial results for 1, 2 and 4 threads", "[fem]")
+{
+    // Implicit (factored) and explicit beams, and a brittle wall that cracks (the connectivity changes under
+    // the gather), each stepped serially and on 2 and 4 threads.
+    struct Run
+    {
+        std::vector<Vec3> mPositions;
+        std::vector<Vec3> mVelocities;
+        int mBroken = 0;
+    };
+    const auto beam_run = [](EIntegrator inIntegrator, const JobSystem* inJobs)
+    {
+        common::CantileverSettings settings;
+        settings.mLengthCells = 30;
+        settings.mSectionCells = 3;
+        settings.mSolver.mIntegrator = inIntegrator;
+        CantileverScene beam = CantileverScene::Create(settings).Get();
+        beam.GetSolver().SetJobSystem(inJobs);
+        const double step = inIntegrator == EIntegrator::ImplicitEuler ? cStep : 2.0e-5;
+        for (int index = 0; index < 5; ++index)
+            REQUIRE(beam.GetSolver().Step(step).IsValid());
+        return Run{beam.GetSolver().GetPositions(), beam.GetSolver().GetVelocities(), 0};
+    };
+    const auto wall_run = [](const JobSystem* inJobs)
+    {
+        TetGridSettings grid;
+        grid.mSize = Vec3(2.0, 0.2, 1.0);
+        grid.mCellCount = {10, 1, 5};
+        FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
+        material.mYoungsModulus = 1.0e10;
+        material.mPoissonRatio = 0.2;
+        TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
+        wall.SetJobSystem(inJobs);
+        for (int i = 0; i <= 10; ++i)
+            REQUIRE(wall.SetNodeFixed(TetGridNode(grid.mCellCount, i, 0, 0), true).IsValid());
+        for (int k = 3; k <= 4; ++k)
+            for (int i = 7; i <= 8; ++i)
+                REQUIRE(wall.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 2000.0, 0.0)).IsValid());
+        for (int index = 0; index < 10; ++index)
+            REQUIRE(wall.Step(1.0e-3).IsValid());
+        return Run{wall.GetPositions(), wall.GetVelocities(), wall.GetBrokenLinkCount()};
+    };
+
+    const Run implicit_serial = beam_run(EIntegrator::ImplicitEuler, nullptr);
+    const Run explicit_serial = beam_run(EIntegrator::SymplecticEuler, nullptr);
+    const Run wall_serial = wall_run(nullptr);
+    REQUIRE(wall_serial.mBroken > 0);
+    for (int threads : {1, 2, 4})
+    {
+        const common::ThreadJobSystem jobs(threads);
+        INFO(threads << " threads");
+        const Run implicit_parallel = beam_run(EIntegrator::ImplicitEuler, &jobs.Get());
+        CHECK(implicit_parallel.mPositions == implicit_serial.mPositions);
+        CHECK(implicit_parallel.mVelocities == implicit_serial.mVelocities);
+        const Run explicit_parallel = beam_run(EIntegrator::SymplecticEuler, &jobs.Get());
+        CHECK(explicit_parallel.mPositions == explicit_serial.mPositions);
+        CHECK(explicit_parallel.mVelocities == explicit_serial.mVelocities);
+        const Run wall_parallel = wall_run(&jobs.Get());
+        CHECK(wall_parallel.mBroken == wall_serial.mBroken);
+        CHECK(wall_parallel.mPositions == wall_serial.mPositions);
+        CHECK(wall_parallel.mVelocities == wall_serial.mVelocities);
     }
 }

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/FractureLinks.h>
@@ -60,6 +61,12 @@ public:
     Status SetVelocities(std::span<const Vec3> inVelocities);
     /// Ends sleep without changing the state.
     void WakeUp();
+    /// Runs the element passes of Step() and SolveStatic() (forces with the polar decompositions, stiffness
+    /// products) on the host's job system, or serially when inJobs is null (the default). The results are
+    /// bitwise the same for any number of workers and any scheduling: each element writes only its own slots
+    /// and each node sums its elements' in element order. inJobs must outlive its use (or be replaced);
+    /// Step() and SolveStatic() call it from the calling thread only.
+    void SetJobSystem(const JobSystem* inJobs);
 
     /// Advances by inDeltaTime (s, > 0, finite). Refused (nothing changes) when symplectic Euler would need
     /// more than mMaxSubSteps sub-steps. A step that diverges is retried from its start split into 2, 4, ...
@@ -153,6 +160,9 @@ private:
 
     // Element pass input with the current connectivity and plastic strains.
     TetElementPassInput PassInput() const;
+    // PassInput() with the host's jobs and the gather scratch prepared for the current connectivity, when a
+    // job system with more than one worker is set.
+    TetElementPassInput ParallelPassInput();
     // Density x rest volume per element (kg).
     std::vector<double> ElementMasses() const;
     // One step of plastic flow; returns the number of elements that flowed.
@@ -249,6 +259,7 @@ private:
 
     std::uint64_t mElementWork = 0;
     int mFactorizationCount = 0;
+    const JobSystem* mJobs = nullptr; // the host's, not owned
 
     // Scratch reused across steps (no allocation per step once sized).
     std::vector<TetLinearization> mLinearization;
