@@ -68,6 +68,27 @@ double MaxNorm(const std::vector<Vec3>& inValues)
     return largest;
 }
 
+// A 2 m x 0.2 m x 1 m brittle wall of 0.2 m cubes (E = 10 GPa, implicit), anchored along its base, hit on
+// its front face around (1.6, 0, 0.8) with 4 x 2000 N s: it cracks within a few 1 ms steps.
+TetSolver HitBrittleWall(double inMassDamping)
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(2.0, 0.2, 1.0);
+    grid.mCellCount = {10, 1, 5};
+    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e10;
+    material.mPoissonRatio = 0.2;
+    material.mMassDamping = inMassDamping;
+    TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j <= 1; ++j)
+            REQUIRE(wall.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
+    for (int k = 3; k <= 4; ++k)
+        for (int i = 7; i <= 8; ++i)
+            REQUIRE(wall.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 2000.0, 0.0)).IsValid());
+    return wall;
+}
+
 } // namespace
 
 TEST_CASE("Rest system: the assembled a M + b K0 blocks apply exactly the matrix-free implicit operator at rest",
@@ -284,29 +305,14 @@ TEST_CASE("Factored solve: factored once, again only after anchoring, a new step
     CHECK(solver.GetFactorizationCount() == 3);
 
     // A brittle wall hit hard enough to crack: each step after one that opened links factors again, no other.
-    TetGridSettings grid;
-    grid.mSize = Vec3(2.0, 0.2, 1.0);
-    grid.mCellCount = {10, 1, 5};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
-    material.mMassDamping = 2.0;
-    TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
-    for (int i = 0; i <= 10; ++i)
-        for (int j = 0; j <= 1; ++j)
-            REQUIRE(wall.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
-    REQUIRE(wall.Step(1.0e-3).IsValid());
-    REQUIRE(wall.GetFactorizationCount() == 1);
-    for (int k = 3; k <= 4; ++k)
-        for (int i = 7; i <= 8; ++i)
-            REQUIRE(wall.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 2000.0, 0.0)).IsValid());
+    TetSolver wall = HitBrittleWall(2.0);
     int fracture_steps = 0;
     bool fractured_before = false;
     for (int step = 0; step < 20; ++step)
     {
         const int before = wall.GetFactorizationCount();
         const TetStepResult result = wall.Step(1.0e-3).Get();
-        CHECK(wall.GetFactorizationCount() == before + (fractured_before ? 1 : 0));
+        CHECK(wall.GetFactorizationCount() == before + (step == 0 || fractured_before ? 1 : 0));
         fractured_before = HasEvent(result.mEvents, ETetStepEvent::Fractured);
         fracture_steps += fractured_before ? 1 : 0;
     }
@@ -385,19 +391,8 @@ TEST_CASE("Element passes on the host's jobs: bitwise the serial results for 1, 
     };
     const auto wall_run = [](const JobSystem* inJobs)
     {
-        TetGridSettings grid;
-        grid.mSize = Vec3(2.0, 0.2, 1.0);
-        grid.mCellCount = {10, 1, 5};
-        FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-        material.mYoungsModulus = 1.0e10;
-        material.mPoissonRatio = 0.2;
-        TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
+        TetSolver wall = HitBrittleWall(0.0);
         wall.SetJobSystem(inJobs);
-        for (int i = 0; i <= 10; ++i)
-            REQUIRE(wall.SetNodeFixed(TetGridNode(grid.mCellCount, i, 0, 0), true).IsValid());
-        for (int k = 3; k <= 4; ++k)
-            for (int i = 7; i <= 8; ++i)
-                REQUIRE(wall.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 2000.0, 0.0)).IsValid());
         for (int index = 0; index < 10; ++index)
             REQUIRE(wall.Step(1.0e-3).IsValid());
         return Run{wall.GetPositions(), wall.GetVelocities(), wall.GetBrokenLinkCount()};
