@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FfdDeformer.h>
+#include <crumple/ffd/OneSidedControls.h>
 #include <crumple/ffd/FoldGuard.h>
 
 #include <algorithm>
@@ -261,8 +262,10 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         // Solve dC = B^+ dP over the controls these points reach.
         const DirectManipulationData data = DirectManipulationPrecompute(zone, locations, mSettings.mRankTolerance);
         DirectManipulationSolveInfo solve_info;
-        const Eigen::MatrixX3d control_delta =
+        Eigen::MatrixX3d control_delta =
             DirectManipulationSolve(data, wanted, mSettings.mPrior, mSettings.mMaxControlGain, &solve_info);
+        if (mSettings.mOneSidedDents && control_delta.allFinite())
+            report.mControlsClipped += OneSidedControls(wanted, control_delta);
         // A solve past the double range moves nothing (and stores no NaN).
         if (!wanted.allFinite() || !control_delta.allFinite())
         {

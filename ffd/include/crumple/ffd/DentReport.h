@@ -16,6 +16,8 @@ struct DentReport
     int mControlsChanged = 0;      ///< Controls whose displacement changed
     int mControlsPushed = 0;       ///< Of those, controls the fold guard moved because a neighbour was pushed
                                    ///< into them (0 unless a dent is deep for the lattice spacing)
+    int mControlsClipped = 0;      ///< Controls whose change against the push direction was removed
+                                   ///< (FfdDeformerSettings::mOneSidedDents, OneSidedControls)
     double mScale = 1.0;           ///< Smallest factor a zone's dent was scaled by to respect the step bound and
                                    ///< the maximum total deformation (1 when nothing was limited)
     int mRankDeficiency = 0;       ///< Sum over zones of (#points - rank of B used): > 0 for coincident/collinear

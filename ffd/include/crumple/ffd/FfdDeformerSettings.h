@@ -50,6 +50,10 @@ struct FfdDeformerSettings
     /// brick barrier's first dent (0.14 m lattice, merged targets up to 2.5 cm that disagree between
     /// neighbours): controls of 10.9 m at tau = 1e-3 become 7.3 cm at tau = 0.1, rank 124 of 206.
     double mMaxControlGain = 3.0;
+    /// One-sided dents (see OneSidedControls): when a dent's wanted displacements all push one way, no
+    /// control moves against that way, so no vertex does: a crush never bulges the surface out beside the
+    /// pushed patch. False commits the solve's controls as they are (a general FFD edit).
+    bool mOneSidedDents = true;
 };
 
 } // namespace crumple::ffd
