@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "BarycentricSearch.h"
+#include <crumple/fem/BarycentricSearch.h>
 
 #include <crumple/fem/EmbeddedMesh.h>
 

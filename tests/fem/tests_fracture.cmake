@@ -2,7 +2,6 @@
 # SPDX-License-Identifier: MIT
 # Tests of plasticity, fracture and fragments (paths relative to tests/).
 set(CRUMPLE_FEM_FRACTURE_TESTS
-    fem/CollisionImpulsesTest.cpp
     fem/FractureLinksTest.cpp
     fem/FractureTopologyTest.cpp
     fem/PlasticFlowTest.cpp

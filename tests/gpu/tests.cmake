@@ -3,7 +3,6 @@
 # test_gpu: the compute module and the GPU FEM solver (on llvmpipe where no GPU exists).
 crumple_add_test(gpu
     gpu/ComputeDeviceTest.cpp
-    gpu/FemPropTest.cpp
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
     gpu/GpuTetSolverTest.cpp

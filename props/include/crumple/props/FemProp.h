@@ -2,24 +2,34 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <crumple/fem/CollisionImpulses.h>
 #include <crumple/fem/TetSolver.h>
-#include <crumple/gpu/GpuTetSolver.h>
+#include <crumple/plugin/Collision.h>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace crumple::gpu
 {
+class ComputeDeviceProvider; // crumple/gpu/ComputeDevice.h, when the build has crumple::gpu
+class GpuTetSolver;          // crumple/gpu/GpuTetSolver.h
+} // namespace crumple::props
+
+namespace crumple::props
+{
+
+/// True in builds whose crumple::props has the GPU backend (crumple::gpu was built), false elsewhere.
+bool HasGpuBackend();
 
 /// Where a prop's FEM runs.
 enum class EFemBackend : std::uint8_t
 {
     Cpu, ///< fem::TetSolver, double precision: every feature
-    Gpu, ///< GpuTetSolver, float, compute shaders: symplectic Euler, elasticity and damping
+    Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic Euler, elasticity and damping (only in
+         ///< builds with crumple::gpu; elsewhere a GPU request runs on the CPU with that reason)
 };
 
 /// Short name of an EFemBackend, for messages.
@@ -38,12 +48,17 @@ struct FemPropSettings
 /// prop. A prop that asks for the GPU where there is none (or for what the GPU solver cannot do) runs on the
 /// CPU instead: GetBackend() says which, GetFallbackReason() why. Bad input (mesh, material, settings) is an
 /// error either way, never a fallback. A CPU prop never touches the device provider, so a scene without GPU
-/// props makes no EGL context.
+/// props makes no EGL context, and a game built without crumple::gpu (CRUMPLE_WITH_GPU off) links this type
+/// without EGL or OpenGL: the GPU backend is compiled in only where crumple::gpu is
+/// (HasGpuBackend()).
+///
+/// Lives in crumple::props, the layer that knows both the damage core (plugin::Collision) and the FEM: the
+/// FEM itself depends on Eigen only.
 class FemProp
 {
 public:
     /// @param ioProvider  shared device provider of the scene; may be nullptr for CPU-only scenes
-    static Result<FemProp> Create(ComputeDeviceProvider* ioProvider, const fem::TetMesh& inMesh,
+    static Result<FemProp> Create(gpu::ComputeDeviceProvider* ioProvider, const fem::TetMesh& inMesh,
                                   const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
                                   const FemPropSettings& inPropSettings);
 
@@ -58,7 +73,7 @@ public:
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);
     Result<fem::TetStepResult> Step(double inDeltaTime);
-    /// Applies a dispatched collision's contact impulses (fem::CollisionNodalImpulses) to the prop whose body is
+    /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses) to the prop whose body is
     /// inPropBody; all or nothing.
     Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody);
     /// The pieces now (fem::TetFragment), as the CPU solver reports them
@@ -70,14 +85,24 @@ public:
     /// The CPU solver, or nullptr on the GPU backend
     fem::TetSolver* GetCpuSolver() { return mCpu ? &*mCpu : nullptr; }
     /// The GPU solver, or nullptr on the CPU backend
-    GpuTetSolver* GetGpuSolver() { return mGpu ? &*mGpu : nullptr; }
+    gpu::GpuTetSolver* GetGpuSolver() { return mGpu.get(); }
+
+    FemProp(FemProp&& ioOther) noexcept;
+    FemProp& operator=(FemProp&& ioOther) noexcept;
+    ~FemProp();
 
 private:
-    FemProp() = default;
+    FemProp();
+
+    // Deletes the GPU solver; defined in FemProp.cpp, where a build without crumple::gpu never has one.
+    struct GpuSolverDeleter
+    {
+        void operator()(gpu::GpuTetSolver* inSolver) const;
+    };
 
     std::optional<fem::TetSolver> mCpu;
-    std::optional<GpuTetSolver> mGpu;
+    std::unique_ptr<gpu::GpuTetSolver, GpuSolverDeleter> mGpu; // incomplete here: a CPU-only build never defines it
     std::string mFallbackReason;
 };
 
-} // namespace crumple::gpu
+} // namespace crumple::props

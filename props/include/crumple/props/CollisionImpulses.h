@@ -4,15 +4,14 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
+#include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/Collision.h>
 
 #include <span>
 #include <vector>
 
-namespace crumple::fem
+namespace crumple::props
 {
-
-class TetSolver;
 
 /// An impulse on one node of a prop.
 struct NodalImpulse
@@ -36,11 +35,11 @@ struct NodalImpulse
 ///         mesh is empty, or a contact is not finite
 Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
-                                                         std::span<const TetIndices> inElementNodes,
+                                                         std::span<const fem::TetIndices> inElementNodes,
                                                          std::span<const Vec3> inPositions);
 
 /// Applies CollisionNodalImpulses() to a solver (waking it). All or nothing: a refused collision changes
 /// nothing.
-Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody);
+Status ApplyCollision(fem::TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody);
 
-} // namespace crumple::fem
+} // namespace crumple::props

@@ -4,7 +4,7 @@
 // decides the sign, bad collisions change nothing, and a collision dispatched by a DamageWorld reaches a prop.
 #include "WorldFixture.h"
 
-#include <crumple/fem/CollisionImpulses.h>
+#include <crumple/props/CollisionImpulses.h>
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
@@ -16,6 +16,7 @@
 using namespace crumple;
 using namespace crumple::fem;
 using namespace crumple::plugin;
+using namespace crumple::props;
 
 namespace
 {
@@ -60,7 +61,7 @@ Vec3 Momentum(const TetSolver& inSolver)
 
 } // namespace
 
-TEST_CASE("CollisionNodalImpulses keeps each contact's impulse and its moment", "[fem]")
+TEST_CASE("CollisionNodalImpulses keeps each contact's impulse and its moment", "[props]")
 {
     const TetSolver panel = Panel();
     const Collision collision = TwoContacts(BodyId{3}, BodyId{7});
@@ -93,7 +94,7 @@ TEST_CASE("CollisionNodalImpulses keeps each contact's impulse and its moment", 
     CHECK((total - Vec3(500.0, 0.0, 0.0)).norm() < 1e-12 * 500.0);
 }
 
-TEST_CASE("ApplyCollision refuses a collision the prop is not in, or a NaN contact, and changes nothing", "[fem]")
+TEST_CASE("ApplyCollision refuses a collision the prop is not in, or a NaN contact, and changes nothing", "[props]")
 {
     TetSolver panel = Panel();
     const std::vector<Vec3> velocities = panel.GetVelocities();
@@ -107,7 +108,7 @@ TEST_CASE("ApplyCollision refuses a collision the prop is not in, or a NaN conta
     CHECK(panel.GetVelocities() == velocities);
 }
 
-TEST_CASE("A collision dispatched by a DamageWorld moves a free prop by exactly its impulse", "[fem]")
+TEST_CASE("A collision dispatched by a DamageWorld moves a free prop by exactly its impulse", "[props]")
 {
     // The fixture's car hits its static wall; a listener hands the wall's side of every collision to a FEM
     // panel standing in for the wall (same body frame). A free panel takes all of it as momentum.

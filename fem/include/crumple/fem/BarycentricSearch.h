@@ -23,8 +23,8 @@ struct BarycentricHit
 };
 
 /// Barycentric coordinates of points in the elements of a tetrahedral mesh, with every element's edge matrix
-/// inverted once up front (private to fem: EmbeddedMesh binds display vertices, CollisionNodalImpulses
-/// spreads contact impulses). The weights of x in element (p0, p1, p2, p3) solve D l = x - p0 with D =
+/// inverted once up front (EmbeddedMesh binds display vertices with it, props::CollisionNodalImpulses spreads
+/// contact impulses). The weights of x in element (p0, p1, p2, p3) solve D l = x - p0 with D =
 /// EdgeMatrix(p0, p1, p2, p3), then w = (1 - l1 - l2 - l3, l1, l2, l3) in that order of subtraction.
 class BarycentricSearch
 {

@@ -1,15 +1,20 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "BarycentricSearch.h"
+#include <crumple/props/CollisionImpulses.h>
 
-#include <crumple/fem/CollisionImpulses.h>
+#include <crumple/fem/BarycentricSearch.h>
 #include <crumple/fem/TetSolver.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace crumple::fem
+namespace crumple::props
 {
+
+using fem::BarycentricHit;
+using fem::BarycentricSearch;
+using fem::TetIndices;
+using fem::TetSolver;
 
 Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
@@ -71,4 +76,4 @@ Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision,
     return Status::Ok();
 }
 
-} // namespace crumple::fem
+} // namespace crumple::props

@@ -1,0 +1,180 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/props/FemProp.h>
+
+#include <crumple/props/CollisionImpulses.h>
+
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#include <crumple/gpu/GpuTetSolver.h>
+#endif
+
+namespace crumple::props
+{
+
+bool HasGpuBackend()
+{
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    return true;
+#else
+    return false;
+#endif
+}
+
+const char* ToString(EFemBackend inBackend)
+{
+    switch (inBackend)
+    {
+    case EFemBackend::Cpu:
+        return "Cpu";
+    case EFemBackend::Gpu:
+        return "Gpu";
+    }
+    return "unknown";
+}
+
+void FemProp::GpuSolverDeleter::operator()(gpu::GpuTetSolver* inSolver) const
+{
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    delete inSolver;
+#else
+    (void)inSolver; // never set without the GPU backend
+#endif
+}
+
+FemProp::FemProp() = default;
+FemProp::FemProp(FemProp&& ioOther) noexcept = default;
+FemProp& FemProp::operator=(FemProp&& ioOther) noexcept = default;
+FemProp::~FemProp() = default;
+
+Result<FemProp> FemProp::Create(gpu::ComputeDeviceProvider* ioProvider, const fem::TetMesh& inMesh,
+                                const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
+                                const FemPropSettings& inPropSettings)
+{
+    if (inPropSettings.mBackend != EFemBackend::Cpu && inPropSettings.mBackend != EFemBackend::Gpu)
+        return MakeError(EError::InvalidArgument, "FemPropSettings.mBackend is not an EFemBackend");
+
+    // Bad input is refused whatever the backend: the CPU solver validates everything.
+    Result<fem::TetSolver> cpu = fem::TetSolver::Create(inMesh, inMaterial, inSettings);
+    if (cpu.HasError())
+        return cpu.GetError();
+    FemProp prop;
+    if (inPropSettings.mBackend == EFemBackend::Gpu)
+    {
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+        // The device, made on the first GPU prop of the scene; then the GPU solver, which refuses what it
+        // cannot do yet. Either failure is a fallback with its reason, not an error.
+        Result<std::shared_ptr<gpu::ComputeDevice>> device =
+            ioProvider != nullptr ? ioProvider->Acquire()
+                                  : Result<std::shared_ptr<gpu::ComputeDevice>>(
+                                        MakeError(EError::InvalidArgument, "no ComputeDeviceProvider given"));
+        if (device.IsValid())
+        {
+            Result<gpu::GpuTetSolver> gpu = gpu::GpuTetSolver::CreateFrom(device.Get(), cpu.Get());
+            if (gpu.IsValid())
+            {
+                prop.mGpu.reset(new gpu::GpuTetSolver(std::move(gpu.Get())));
+                return prop;
+            }
+            prop.mFallbackReason = gpu.GetError().mMessage;
+        }
+        else
+            prop.mFallbackReason = device.GetError().mMessage;
+#else
+        (void)ioProvider;
+        prop.mFallbackReason = "this build of Crumple has no GPU backend (crumple::gpu was not built: "
+                               "CRUMPLE_WITH_GPU off or EGL/OpenGL missing)";
+#endif
+        if (inPropSettings.mLog)
+            inPropSettings.mLog("FemProp: GPU requested, running on the CPU: " + prop.mFallbackReason);
+    }
+    prop.mCpu.emplace(std::move(cpu.Get()));
+    return prop;
+}
+
+// Each call goes to the GPU solver when the prop has one (only possible in builds with crumple::gpu), else
+// to the CPU solver.
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+#define CRUMPLE_PROPS_ON_GPU(inCall)                                                                                \
+    if (mGpu)                                                                                                      \
+        return mGpu->inCall;
+#else
+#define CRUMPLE_PROPS_ON_GPU(inCall)
+#endif
+
+Status FemProp::SetNodeFixed(int inNode, bool inFixed)
+{
+    CRUMPLE_PROPS_ON_GPU(SetNodeFixed(inNode, inFixed))
+    return mCpu->SetNodeFixed(inNode, inFixed);
+}
+
+Status FemProp::ApplyImpulse(int inNode, const Vec3& inImpulse)
+{
+    CRUMPLE_PROPS_ON_GPU(ApplyImpulse(inNode, inImpulse))
+    return mCpu->ApplyImpulse(inNode, inImpulse);
+}
+
+Status FemProp::SetExternalForce(int inNode, const Vec3& inForce)
+{
+    CRUMPLE_PROPS_ON_GPU(SetExternalForce(inNode, inForce))
+    return mCpu->SetExternalForce(inNode, inForce);
+}
+
+Status FemProp::SetGravity(const Vec3& inGravity)
+{
+    CRUMPLE_PROPS_ON_GPU(SetGravity(inGravity))
+    return mCpu->SetGravity(inGravity);
+}
+
+Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
+{
+    CRUMPLE_PROPS_ON_GPU(Step(inDeltaTime))
+    return mCpu->Step(inDeltaTime);
+}
+
+Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody)
+{
+    if (mCpu)
+        return props::ApplyCollision(*mCpu, inCollision, inPropBody);
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    std::vector<Vec3> positions;
+    mGpu->ReadPositions(positions);
+    Result<std::vector<NodalImpulse>> impulses =
+        CollisionNodalImpulses(inCollision, inPropBody, mGpu->GetElementNodes(), positions);
+    if (impulses.HasError())
+        return impulses.GetError();
+    // Node indices come from the solver's own connectivity and impulses are finite: none can be refused.
+    for (const NodalImpulse& impulse : impulses.Get())
+        if (Status status = mGpu->ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
+            return status;
+#endif
+    return Status::Ok();
+}
+
+std::vector<fem::TetFragment> FemProp::ComputeFragments() const
+{
+    CRUMPLE_PROPS_ON_GPU(ComputeFragments())
+    return mCpu->ComputeFragments();
+}
+
+void FemProp::ReadPositions(std::vector<Vec3>& outPositions) const
+{
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    if (mGpu)
+    {
+        mGpu->ReadPositions(outPositions);
+        return;
+    }
+#endif
+    outPositions = mCpu->GetPositions();
+}
+
+int FemProp::GetNodeCount() const
+{
+    CRUMPLE_PROPS_ON_GPU(GetNodeCount())
+    return mCpu->GetNodeCount();
+}
+
+#undef CRUMPLE_PROPS_ON_GPU
+
+} // namespace crumple::props

@@ -1,0 +1,11 @@
+# SPDX-FileCopyrightText: 2026 The Crumple authors
+# SPDX-License-Identifier: MIT
+# test_props: collision impulses onto FEM props and FemProp on either backend (its GPU cases need crumple::gpu
+# and run on llvmpipe where no GPU exists).
+crumple_add_test(props
+    props/CollisionImpulsesTest.cpp
+    props/FemPropTest.cpp
+    LINK crumple::props crumple_common_fem)
+if(TARGET crumple_gpu)
+    target_compile_definitions(test_props PRIVATE CRUMPLE_TEST_PROPS_WITH_GPU)
+endif()
