@@ -1,0 +1,96 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/DamageListener.h>
+#include <crumple/plugin/DamageWorld.h>
+#include <crumple/props/FemProp.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace crumple::props
+{
+
+/// A prop's handle in its PropWorld: index in order of AddProp.
+struct PropId
+{
+    static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
+    std::uint32_t mValue = cInvalid; ///< Index in creation order
+
+    bool IsValid() const { return mValue != cInvalid; }
+    bool operator==(const PropId&) const = default;
+};
+
+/// What one PropWorld::Step did.
+struct PropStepReport
+{
+    int mStepped = 0;    ///< Props that integrated (awake)
+    int mSleeping = 0;   ///< Props that were asleep and did nothing (no element work)
+    int mFractured = 0;  ///< Props in which links broke this step
+    int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
+};
+
+/// Destructible props in a DamageWorld's damage flow. Each prop (a FemProp, CPU or GPU) is bound to a body of
+/// the world, whose frame its solver works in; every collision the world dispatches with that body gets onto
+/// the prop's nodes as the Baraff impulses the world computed (CollisionNodalImpulses: +j n on body A, -j n
+/// on body B), so a prop takes exactly the opposite of what the body that hit it took. Step() integrates the
+/// props; a sleeping prop costs nothing.
+///
+/// The game keeps the bodies (static, kinematic or dynamic, in its engine and in the DamageWorld through the
+/// adapter); the prop is the deformable structure of one of them. A DamageListener of its world (registered
+/// by Create, removed by the destructor), so it sees collisions in the world's dispatch order after the
+/// dents. Not recorded by DamageRecorder yet: a replay does not reproduce props.
+///
+/// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
+class PropWorld final : public plugin::DamageListener
+{
+public:
+    /// Registers with ioWorld, which must outlive this object.
+    static Result<std::unique_ptr<PropWorld>> Create(plugin::DamageWorld& ioWorld);
+    ~PropWorld() override;
+    PropWorld(const PropWorld&) = delete;
+    PropWorld& operator=(const PropWorld&) = delete;
+
+    /// Binds inProp to body inBody of the world (one prop per body). Refused, and inProp left as it was, when
+    /// the body does not exist or already has a prop.
+    Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
+    /// The prop, or nullptr for an unknown id
+    FemProp* GetProp(PropId inProp);
+    const FemProp* GetProp(PropId inProp) const;
+    /// The prop bound to inBody, or an invalid id
+    PropId FindProp(plugin::BodyId inBody) const;
+    /// Number of props
+    int GetPropCount() const { return static_cast<int>(mProps.size()); }
+
+    /// Steps every prop by inDeltaTime (s, finite, > 0), in PropId order. A refused step (a symplectic prop
+    /// that would need more sub-steps than allowed) is an error naming the prop; the props before it have
+    /// stepped.
+    Result<PropStepReport> Step(double inDeltaTime);
+
+    /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
+    /// world validated; kept for diagnosis with the first refusal's reason)
+    std::uint64_t GetCollisionCount() const { return mCollisions; }
+    std::uint64_t GetRefusedCount() const { return mRefused; }
+    const Status& GetFirstRefusal() const { return mFirstRefusal; }
+
+    void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
+
+private:
+    explicit PropWorld(plugin::DamageWorld& ioWorld) : mWorld(&ioWorld) {}
+
+    struct Prop
+    {
+        plugin::BodyId mBody;
+        FemProp mProp;
+    };
+    plugin::DamageWorld* mWorld = nullptr;
+    std::vector<Prop> mProps;
+    std::uint64_t mCollisions = 0;
+    std::uint64_t mRefused = 0;
+    Status mFirstRefusal;
+};
+
+} // namespace crumple::props

@@ -1,0 +1,97 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/props/PropWorld.h>
+
+#include <cmath>
+#include <string>
+
+namespace crumple::props
+{
+
+Result<std::unique_ptr<PropWorld>> PropWorld::Create(plugin::DamageWorld& ioWorld)
+{
+    std::unique_ptr<PropWorld> world(new PropWorld(ioWorld));
+    ioWorld.AddListener(world.get());
+    return world;
+}
+
+PropWorld::~PropWorld()
+{
+    mWorld->RemoveListener(this);
+}
+
+Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
+{
+    if (mWorld->GetBodyState(inBody) == nullptr)
+        return MakeError(EError::InvalidArgument,
+                         "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " is not in the world");
+    if (FindProp(inBody).IsValid())
+        return MakeError(EError::InvalidArgument,
+                         "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " already has a prop");
+    mProps.push_back({inBody, std::move(ioProp)});
+    return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
+}
+
+FemProp* PropWorld::GetProp(PropId inProp)
+{
+    return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
+}
+
+const FemProp* PropWorld::GetProp(PropId inProp) const
+{
+    return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
+}
+
+PropId PropWorld::FindProp(plugin::BodyId inBody) const
+{
+    for (std::size_t index = 0; index < mProps.size(); ++index)
+        if (mProps[index].mBody == inBody)
+            return PropId{static_cast<std::uint32_t>(index)};
+    return PropId{};
+}
+
+Result<PropStepReport> PropWorld::Step(double inDeltaTime)
+{
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
+                         "PropWorld::Step: time step " + std::to_string(inDeltaTime) + " s must be finite and > 0");
+    PropStepReport report;
+    for (std::size_t index = 0; index < mProps.size(); ++index)
+    {
+        Result<fem::TetStepResult> step = mProps[index].mProp.Step(inDeltaTime);
+        if (step.HasError())
+        {
+            Error error = step.GetError();
+            error.mMessage = "PropWorld::Step: prop " + std::to_string(index) + ": " + error.mMessage;
+            return error;
+        }
+        const fem::ETetStepEvent events = step.Get().mEvents;
+        if (fem::HasEvent(events, fem::ETetStepEvent::Sleeping))
+            ++report.mSleeping;
+        else
+            ++report.mStepped;
+        report.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
+        report.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
+    }
+    return report;
+}
+
+void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)
+{
+    (void)inDents;
+    // Both bodies may carry a prop (a car hitting a fence carries none; two crates hitting each other two).
+    for (const plugin::BodyId body : {inCollision.mBodyA, inCollision.mBodyB})
+    {
+        const PropId prop = FindProp(body);
+        if (!prop.IsValid())
+            continue;
+        ++mCollisions;
+        if (Status status = mProps[prop.mValue].mProp.ApplyCollision(inCollision, body); status.HasError())
+        {
+            if (mRefused++ == 0)
+                mFirstRefusal = status;
+        }
+    }
+}
+
+} // namespace crumple::props

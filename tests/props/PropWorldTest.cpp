@@ -1,0 +1,147 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Props in the damage flow: a FEM prop bound to a DamageWorld body takes the opposite of the impulses the
+// world gave the body that hit it.
+#include "WorldFixture.h"
+
+#include <crumple/fem/TetGrid.h>
+#include <crumple/props/PropWorld.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// A 2 m x 0.2 m x 2 m wall panel, x in [0, 0.2], y and z in [-1, 1] (the wall body's frame), steel-like but
+// soft enough to ring, no gravity, no damping.
+FemProp Panel(bool inAnchored)
+{
+    TetGridSettings grid;
+    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = {1, 10, 10};
+    TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), FemMaterialSettings{}, settings, FemPropSettings{}).Get();
+    if (inAnchored)
+        for (int node = 0; node < prop.GetNodeCount(); ++node)
+            if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
+                REQUIRE(prop.SetNodeFixed(node, true).IsValid());
+    return prop;
+}
+
+Vec3 Momentum(const TetSolver& inSolver)
+{
+    Vec3 momentum = Vec3::Zero();
+    for (int node = 0; node < inSolver.GetNodeCount(); ++node)
+        momentum += inSolver.GetMasses()[node] * inSolver.GetVelocities()[node];
+    return momentum;
+}
+
+// The impulse the world's collisions gave inBody (N s, world frame): +j n on body A, -j n on body B.
+struct ImpulseTally : DamageListener
+{
+    BodyId mBody;
+    Vec3 mImpulse = Vec3::Zero();
+    void OnCollision(const Collision& inCollision, std::span<const ObjectDent>) override
+    {
+        for (const CollisionContact& contact : inCollision.mContacts)
+            mImpulse += (inCollision.mBodyA == mBody ? 1.0 : inCollision.mBodyB == mBody ? -1.0 : 0.0) *
+                        contact.mImpulse * contact.mNormal;
+    }
+};
+
+} // namespace
+
+TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses; momentum is conserved, energy never grows",
+          "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, Panel(false)).Get();
+    ImpulseTally car;
+    car.mBody = fixture.mCar;
+    fixture.mWorld.AddListener(&car);
+
+    // The car hits the wall at 15 m/s with two contacts.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.3, 0.2, 0.0),
+                                                                    fixture.FrontContact(-0.4, -0.1, 0.0)}));
+    fixture.mWorld.Flush();
+    fixture.mWorld.RemoveListener(&car);
+    REQUIRE(props->GetCollisionCount() == 1u);
+    CHECK(props->GetRefusedCount() == 0u);
+    const double impulse = car.mImpulse.norm();
+    REQUIRE(impulse > 0.0);
+
+    // Over the hit: the car's impulse plus the prop's momentum is zero (the wall body is unrotated, so its
+    // frame is the world's).
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    INFO("car impulse " << car.mImpulse.transpose() << " N s, prop momentum " << Momentum(solver).transpose());
+    CHECK((Momentum(solver) + car.mImpulse).norm() <= 1.0e-9 * impulse);
+
+    // Afterwards the free prop rings and drifts: momentum kept to the solver's tolerance, energy never up.
+    double energy = solver.TotalEnergy();
+    for (int step = 0; step < 30; ++step)
+    {
+        const PropStepReport report = props->Step(1.0 / 60.0).Get();
+        CHECK(report.mStepped == 1);
+        CHECK(report.mDiverged == 0);
+        CHECK(solver.TotalEnergy() <= energy * (1.0 + 1.0e-12));
+        energy = solver.TotalEnergy();
+    }
+    CHECK((Momentum(solver) + car.mImpulse).norm() <= 1.0e-6 * impulse);
+    CHECK(energy > 0.0);
+}
+
+TEST_CASE("PropWorld: a prop at rest falls asleep and then costs nothing per step", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, Panel(true)).Get();
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    int sleeping_steps = 0;
+    for (int step = 0; step < 40 && sleeping_steps == 0; ++step)
+        sleeping_steps += props->Step(1.0 / 60.0).Get().mSleeping;
+    REQUIRE(solver.IsSleeping());
+    const std::uint64_t work = solver.GetElementWorkCount();
+    for (int step = 0; step < 10; ++step)
+    {
+        const PropStepReport report = props->Step(1.0 / 60.0).Get();
+        CHECK(report.mSleeping == 1);
+        CHECK(report.mStepped == 0);
+    }
+    CHECK(solver.GetElementWorkCount() == work);
+
+    // A hit wakes it.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
+    fixture.mWorld.Flush();
+    CHECK(props->Step(1.0 / 60.0).Get().mStepped == 1);
+    CHECK(solver.GetElementWorkCount() > work);
+}
+
+TEST_CASE("PropWorld refuses an unknown body, a second prop on a body and a bad step, changing nothing", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    CHECK(props->AddProp(BodyId{999}, Panel(false)).HasError());
+    REQUIRE(props->AddProp(fixture.mWall, Panel(false)).IsValid());
+    CHECK(props->AddProp(fixture.mWall, Panel(false)).HasError());
+    CHECK(props->GetPropCount() == 1);
+    CHECK(props->FindProp(fixture.mWall) == PropId{0});
+    CHECK_FALSE(props->FindProp(fixture.mCar).IsValid());
+    CHECK(props->GetProp(PropId{7}) == nullptr);
+    const std::vector<Vec3> positions = props->GetProp(PropId{0})->GetCpuSolver()->GetPositions();
+    CHECK(props->Step(0.0).HasError());
+    CHECK(props->Step(std::nan("")).HasError());
+    CHECK(props->Step(-1.0).HasError());
+    CHECK(props->GetProp(PropId{0})->GetCpuSolver()->GetPositions() == positions);
+}
