@@ -196,6 +196,7 @@ void TetSolver::SaveShape(ShapeState& outShape) const
 
 void TetSolver::RestoreShape(const ShapeState& inShape)
 {
+    mForcesCached = false;
     mElementNodes = inShape.mElementNodes;
     mNodeRestPositions = inShape.mNodeRestPositions;
     mMasses = inShape.mMasses;
@@ -222,6 +223,8 @@ int TetSolver::FlowPlastically(double inDeltaTime)
     const int flowed = TetPlasticFlow(PassInput(), mPositions, mRotations, mMaterial.GetShearModulus(),
                                       mMaterial.GetSettings(), inDeltaTime, mPlasticStrains);
     mElementWork += mRest.size();
+    if (flowed > 0)
+        mForcesCached = false; // the rest shape changed: the forces at these positions did too
     return flowed;
 }
 
@@ -244,6 +247,7 @@ int TetSolver::Fracture()
 // the old node at the same element corner; an external force is shared among the copies by mass.
 void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
 {
+    mForcesCached = false;
     const std::size_t new_count = inConnectivity.mNodeOrigin.size();
     std::vector<int> old_of_new(new_count, -1);
     for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
@@ -582,11 +586,17 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     for (int iteration = 0; iteration <= mSettings.mImplicitMaxIterations; ++iteration)
     {
         // Forces, linearisation and elastic energy at the current iterate (x0 itself on the first pass). The
-        // last pass of the step is always at its final positions: Step() reads the energy from it.
-        TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy);
-        mPassEnergyValid = true;
-        mElementWork += mRest.size();
+        // last pass of a step is always at its final positions: Step() reads the energy from it, and the next
+        // step starts from it when nothing has moved the nodes or changed the shape since (one element pass
+        // of the two a step needs).
         const bool first = iteration == 0;
+        const bool cached = first && mForcesCached && mForcePositions == mPositions;
+        if (!cached)
+        {
+            TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy);
+            mElementWork += mRest.size();
+        }
+        mPassEnergyValid = true;
         if (first || material.mStiffnessDamping > 0.0)
         {
             TetStiffnessProduct(input, mLinearization, mVelocities, scratch.mKv);
@@ -663,6 +673,10 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     mElementWork += products * mRest.size();
     if (!converged)
         ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
+
+    // The last pass was at the final positions: keep them as the key of mForces, mLinearization, mRotations.
+    mForcePositions = mPositions;
+    mForcesCached = true;
 }
 
 TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,

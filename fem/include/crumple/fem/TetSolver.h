@@ -248,6 +248,10 @@ private:
     // it saw.
     double mPassEnergy = 0.0;
     bool mPassEnergyValid = false;
+    // mForces, mLinearization, mRotations and mPassEnergy are those of mForcePositions (the end of the last
+    // implicit step) while mForcesCached: plastic flow, a crack or a restored shape clear it.
+    std::vector<Vec3> mForcePositions;
+    bool mForcesCached = false;
 
     // Energy reference for divergence detection.
     double mReferenceEnergy = 0.0;
