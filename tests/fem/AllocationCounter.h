@@ -8,10 +8,14 @@ namespace crumple::test
 {
 
 /// Counts the calls of the global operator new (every form) made by this thread between construction and
-/// Count(); test_fem replaces operator new for this (AllocationCounter.cpp), forwarding to malloc.
+/// Count(); test_fem replaces operator new for this (AllocationCounter.cpp), forwarding to malloc. Not under
+/// AddressSanitizer, whose runtime owns operator new: IsAvailable() is false there and tests skip.
 class AllocationCounter
 {
 public:
+    /// True when this build counts allocations
+    static bool IsAvailable();
+
     AllocationCounter();
     ~AllocationCounter();
     AllocationCounter(const AllocationCounter&) = delete;
