@@ -71,6 +71,7 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     // An out-of-range prior is left as read, for FfdDeformer::Create to refuse with its message.
     deformer.mPrior = static_cast<ffd::EDirectManipulationPrior>(reader.ReadU32());
     deformer.mMaxControlGain = reader.ReadDouble();
+    deformer.mOneSidedDents = reader.ReadU8() != 0;
     std::uint32_t zones = 0;
     if (!ReadCount(reader, 19 * 8, zones))
         return MakeError(EError::CorruptData, "object record: zone count is corrupt");
@@ -219,6 +220,7 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mDeformer.mMinControlSpacing);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mPrior));
     writer.WriteDouble(settings.mDeformer.mMaxControlGain);
+    writer.WriteU8(settings.mDeformer.mOneSidedDents ? 1 : 0);
     writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mZones.size()));
     for (const ffd::FfdZoneSettings& zone : settings.mDeformer.mZones)
     {

@@ -52,6 +52,7 @@ std::vector<Vec3> RecordCrash(const std::filesystem::path& inPath, bool inDentBe
     REQUIRE(recorder->GetCollisionCount() >= 1);
     DeformableObjectSettings bumper;
     bumper.mMesh = MakeBoxMesh(Vec3(2.0, 0.8, 0.6), {8, 4, 4});
+    bumper.mDeformer.mOneSidedDents = false; // a non-default deformer setting the replay must carry
     REQUIRE(scene.GetWorld().CreateDeformableObject(scene.GetCar(), bumper));
     // A second hit, on the same front, so the late object is dented too.
     BodyState again = scene.GetCarState();
@@ -96,6 +97,9 @@ TEST_CASE("A recorded run replayed without an engine gives bitwise identical mes
             CHECK(object.mSettings.mDeformer.mPrior == ffd::FfdDeformerSettings{}.mPrior);
             CHECK(object.mSettings.mDeformer.mInverseIterations == ffd::FfdDeformerSettings{}.mInverseIterations);
         }
+        // Version 6 carries the one-sided dents flag (the bumper, recorded last, has it off).
+        CHECK(replay.Get().mObjects[0].mSettings.mDeformer.mOneSidedDents);
+        CHECK_FALSE(replay.Get().mObjects[2].mSettings.mDeformer.mOneSidedDents);
         Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
         REQUIRE(objects);
         REQUIRE(objects.Get().size() == 3);

@@ -35,8 +35,9 @@ struct Replay
 /// Replay file format version. Readers refuse other versions. 2: the material's impulse threshold.
 /// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain bound.
 /// 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up axis;
-/// per contact the absorbed energy; per collision the crush energy of each side).
-constexpr std::uint32_t cReplayVersion = 5;
+/// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
+/// dents flag.
+constexpr std::uint32_t cReplayVersion = 6;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
