@@ -14,7 +14,7 @@
 namespace crumple::fem
 {
 
-/// Precompute/solve pair of the rest system A0 = a M + b K0 (TetRestSystemMatrix), used as the preconditioner
+/// Precompute/solve pair of the rest system A0 = a M + b K0 (TetRestSystemBlocks), used as the preconditioner
 /// of the implicit and static solves: P r = R A0^-1 R^T r, R the block diagonal of node rotations (the mean of
 /// the corotated frames of the elements around each node; identity for St. Venant-Kirchhoff).
 ///
