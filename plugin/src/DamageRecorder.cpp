@@ -72,6 +72,19 @@ void DamageRecorder::OnBeforeCollision(const Collision&)
         RecordNewObjects();
 }
 
+Status DamageRecorder::WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload)
+{
+    if (mFile == nullptr)
+        return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: the recorder is closed");
+    if (mStatus.HasError())
+        return mStatus;
+    ByteWriter writer;
+    writer.WriteU32(inTag);
+    writer.WriteBytes(inPayload);
+    Write(EncodeReplayRecord(EReplayRecord::Extension, writer.GetBytes()));
+    return mStatus;
+}
+
 void DamageRecorder::OnCollision(const Collision& inCollision, std::span<const ObjectDent>)
 {
     if (mFile == nullptr)

@@ -320,6 +320,18 @@ Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
             replay.mCollisions.push_back(std::move(collision).Get());
             break;
         }
+        case EReplayRecord::Extension:
+        {
+            ByteReader extension(payload);
+            RecordedExtension recorded;
+            recorded.mAfterCollisions = replay.mCollisions.size();
+            recorded.mTag = extension.ReadU32();
+            if (extension.Failed())
+                return MakeError(EError::CorruptData, where + "an extension record without its tag");
+            recorded.mPayload.assign(payload.begin() + 4, payload.end());
+            replay.mExtensions.push_back(std::move(recorded));
+            break;
+        }
         case EReplayRecord::End:
         {
             ByteReader end(payload);

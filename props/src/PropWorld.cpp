@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/props/PropWorld.h>
 
+#include <crumple/base/ByteWriter.h>
+#include <crumple/props/PropRecording.h>
+
 #include <cmath>
 #include <string>
 
@@ -28,8 +31,53 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     if (FindProp(inBody).IsValid())
         return MakeError(EError::InvalidArgument,
                          "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " already has a prop");
+    if (mRecorder != nullptr)
+    {
+        Result<std::vector<std::byte>> setup = RecordedSetup(inBody, ioProp);
+        if (setup.HasError())
+            return setup.GetError();
+        if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Added), setup.Get());
+            status.HasError())
+            return status.GetError();
+    }
     mProps.push_back({inBody, std::move(ioProp)});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
+}
+
+Result<std::vector<std::byte>> PropWorld::RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const
+{
+    const fem::TetSolver* solver = inProp.GetCpuSolver();
+    if (solver == nullptr)
+        return MakeError(EError::InvalidArgument,
+                         "PropWorld: a GPU prop cannot be recorded yet (its replay would run on the CPU)");
+    Result<PropSetup> setup = MakePropSetup(inBody, inProp.GetBackend(), *solver);
+    if (setup.HasError())
+        return setup.GetError();
+    return EncodePropSetup(setup.Get());
+}
+
+Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
+{
+    if (ioRecorder == nullptr)
+    {
+        mRecorder = nullptr;
+        return Status::Ok();
+    }
+    // Every prop so far must be recordable before any is written.
+    std::vector<std::vector<std::byte>> setups;
+    for (const Prop& prop : mProps)
+    {
+        Result<std::vector<std::byte>> setup = RecordedSetup(prop.mBody, prop.mProp);
+        if (setup.HasError())
+            return setup.GetError();
+        setups.push_back(std::move(setup).Get());
+    }
+    for (const std::vector<std::byte>& setup : setups)
+        if (Status status = ioRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Added), setup);
+            status.HasError())
+            return status;
+    mRecorder = ioRecorder;
+    return Status::Ok();
 }
 
 FemProp* PropWorld::GetProp(PropId inProp)
@@ -55,6 +103,14 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
     if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
         return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
                          "PropWorld::Step: time step " + std::to_string(inDeltaTime) + " s must be finite and > 0");
+    if (mRecorder != nullptr)
+    {
+        ByteWriter step;
+        step.WriteDouble(inDeltaTime);
+        if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Step), step.GetBytes());
+            status.HasError())
+            return status.GetError();
+    }
     PropStepReport report;
     for (std::size_t index = 0; index < mProps.size(); ++index)
     {

@@ -9,6 +9,10 @@
 #include <crumple/base/FileBytes.h>
 #include <crumple/base/Version.h>
 #include <crumple/plugin/ReplayDamage.h>
+#if defined(CRUMPLE_REPLAY_PROPS)
+#include <crumple/fem/TetBoundary.h>
+#include <crumple/props/PropRecording.h>
+#endif
 
 #include <chrono>
 #include <cstdio>
@@ -168,6 +172,47 @@ int main(int argc, char** argv)
                     static_cast<unsigned long long>(common::HashPositions(deformer.GetPositions())),
                     meshes ? path.string().c_str() : "(no mesh written)");
     }
+#if defined(CRUMPLE_REPLAY_PROPS)
+    // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
+    // recorded; each one's boundary is written as it ended, cracks and all.
+    Result<std::vector<props::ReplayedProp>> replayed_props = props::ReplayProps(replay.Get());
+    if (!replayed_props)
+    {
+        std::fprintf(stderr, "crumple-replay: %s\n", replayed_props.GetError().mMessage.c_str());
+        return 2;
+    }
+    for (std::size_t index = 0; index < replayed_props.Get().size(); ++index)
+    {
+        const fem::TetSolver& solver = replayed_props.Get()[index].mSolver;
+        const std::vector<fem::TriangleIndices> boundary = fem::TetBoundary(solver.GetElementNodes());
+        std::vector<std::array<std::uint32_t, 3>> triangles;
+        std::vector<Vec3> normals(solver.GetPositions().size(), Vec3::Zero());
+        for (const fem::TriangleIndices& triangle : boundary)
+        {
+            const Vec3& a = solver.GetPositions()[static_cast<std::size_t>(triangle[0])];
+            const Vec3 area = (solver.GetPositions()[static_cast<std::size_t>(triangle[1])] - a)
+                                  .cross(solver.GetPositions()[static_cast<std::size_t>(triangle[2])] - a);
+            for (int corner : triangle)
+                normals[static_cast<std::size_t>(corner)] += area;
+            triangles.push_back({static_cast<std::uint32_t>(triangle[0]), static_cast<std::uint32_t>(triangle[1]),
+                                 static_cast<std::uint32_t>(triangle[2])});
+        }
+        for (Vec3& normal : normals)
+            normal = normal.norm() > 0.0 ? Vec3(normal.normalized()) : Vec3::UnitZ();
+        const std::filesystem::path path = out / ("prop" + std::to_string(index) + ".obj");
+        if (Status written = meshes ? common::WriteObj(path, solver.GetPositions(), normals, triangles) : Status::Ok();
+            !written)
+        {
+            std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
+            return 2;
+        }
+        std::printf("prop %zu (body %u): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n", index,
+                    replayed_props.Get()[index].mBody.mValue, solver.GetNodeCount(), solver.GetBrokenLinkCount(),
+                    solver.ComputeFragments().size(),
+                    static_cast<unsigned long long>(common::HashPositions(solver.GetPositions())),
+                    meshes ? path.string().c_str() : "(no mesh written)");
+    }
+#endif
     // Against the recording's own clock: it runs at least until its last collision closed.
     const auto& collisions = replay.Get().mCollisions;
     const double recorded_s = collisions.empty() ? 0.0 : collisions.back().mEndTime;

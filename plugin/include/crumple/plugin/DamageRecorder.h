@@ -34,6 +34,11 @@ public:
     void OnBeforeCollision(const Collision& inCollision) override;
     void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) override;
 
+    /// Writes a record of a layer above the core (EReplayRecord::Extension: inTag, then inPayload) now, after
+    /// the collisions recorded so far; DecodeReplay hands it back in Replay::mExtensions. Refused after
+    /// Close() or a write error.
+    Status WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload);
+
     /// Records written so far.
     std::uint64_t GetCollisionCount() const { return mCollisions; }
     /// The first write error, if any (later records are dropped after one).

@@ -25,29 +25,41 @@ struct RecordedObject
     std::vector<std::vector<Vec3>> mInitialControls; ///< Control displacements when recording began (m)
 };
 
+/// A record a layer above the core wrote into the recording (DamageRecorder::WriteExtension): the core keeps
+/// its bytes and where it stood among the collisions; the layer that wrote it reads it (crumple::props records
+/// its props this way).
+struct RecordedExtension
+{
+    std::uint64_t mAfterCollisions = 0; ///< Collisions recorded before it
+    std::uint32_t mTag = 0;             ///< The writer's record kind
+    std::vector<std::byte> mPayload;    ///< The writer's bytes, CRC-checked like every record
+};
+
 /// A whole recording: objects and collisions, in the order the live world dispatched them.
 struct Replay
 {
-    std::vector<RecordedObject> mObjects; ///< In the order they were recorded
-    std::vector<Collision> mCollisions;   ///< In dispatch order
+    std::vector<RecordedObject> mObjects;       ///< In the order they were recorded
+    std::vector<Collision> mCollisions;         ///< In dispatch order
+    std::vector<RecordedExtension> mExtensions; ///< In the order they were written
 };
 
 /// Replay file format version. Readers refuse other versions. 2: the material's impulse threshold.
 /// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain bound.
 /// 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up axis;
 /// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
-/// dents flag.
+/// dents flag; extension records.
 constexpr std::uint32_t cReplayVersion = 6;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
-///   payload. Types: 1 object, 2 collision, 3 end (u32 objects, u64 collisions). A file without its end
-///   record (a run that crashed, a truncated copy) is refused.
+///   payload. Types: 1 object, 2 collision, 3 end (u32 objects, u64 collisions), 4 extension (u32 tag, then
+///   the writer's bytes). A file without its end record (a run that crashed, a truncated copy) is refused.
 enum class EReplayRecord : std::uint8_t
 {
     Object = 1,
     Collision = 2,
     End = 3,
+    Extension = 4,
 };
 
 /// The file header (magic and version).

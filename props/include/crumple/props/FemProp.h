@@ -84,6 +84,7 @@ public:
     int GetNodeCount() const;
     /// The CPU solver, or nullptr on the GPU backend
     fem::TetSolver* GetCpuSolver() { return mCpu ? &*mCpu : nullptr; }
+    const fem::TetSolver* GetCpuSolver() const { return mCpu ? &*mCpu : nullptr; }
     /// The GPU solver, or nullptr on the CPU backend
     gpu::GpuTetSolver* GetGpuSolver() { return mGpu.get(); }
 

@@ -4,6 +4,7 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/plugin/DamageListener.h>
+#include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/props/FemProp.h>
 
@@ -42,7 +43,9 @@ struct PropStepReport
 /// The game keeps the bodies (static, kinematic or dynamic, in its engine and in the DamageWorld through the
 /// adapter); the prop is the deformable structure of one of them. A DamageListener of its world (registered
 /// by Create, removed by the destructor), so it sees collisions in the world's dispatch order after the
-/// dents. Not recorded by DamageRecorder yet: a replay does not reproduce props.
+/// dents. With a DamageRecorder (AttachRecorder) every prop and every step goes into the recording as
+/// extension records beside the world's collisions, and ReplayProps (PropRecording.h) reproduces the CPU
+/// props bit for bit without an engine.
 ///
 /// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
 class PropWorld final : public plugin::DamageListener
@@ -55,8 +58,15 @@ public:
     PropWorld& operator=(const PropWorld&) = delete;
 
     /// Binds inProp to body inBody of the world (one prop per body). Refused, and inProp left as it was, when
-    /// the body does not exist or already has a prop.
+    /// the body does not exist or already has a prop, or, while recording, when the prop cannot be recorded
+    /// (a GPU prop, or one that has already stepped).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
+
+    /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
+    /// which must be recording the same world and outlive this object or be detached (nullptr) first.
+    /// Refused, recording nothing, when a prop added so far cannot be recorded (a GPU prop, or one that has
+    /// stepped): attach the recorder before the first Step().
+    Status AttachRecorder(plugin::DamageRecorder* ioRecorder);
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);
     const FemProp* GetProp(PropId inProp) const;
@@ -86,7 +96,11 @@ private:
         plugin::BodyId mBody;
         FemProp mProp;
     };
+    // The recording of a prop about to join, or an error when it cannot be recorded.
+    Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
+
     plugin::DamageWorld* mWorld = nullptr;
+    plugin::DamageRecorder* mRecorder = nullptr;
     std::vector<Prop> mProps;
     std::uint64_t mCollisions = 0;
     std::uint64_t mRefused = 0;

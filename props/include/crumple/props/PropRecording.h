@@ -1,0 +1,73 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Result.h>
+#include <crumple/fem/TetSolver.h>
+#include <crumple/plugin/Ids.h>
+#include <crumple/plugin/ReplayFormat.h>
+#include <crumple/props/FemProp.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace crumple::props
+{
+
+/// The extension-record tags crumple::props writes into a damage recording (plugin::RecordedExtension).
+enum class EPropRecord : std::uint32_t
+{
+    /// A prop joined: its body, backend, mesh, material, solver settings and state (PropSetup)
+    Added = 0x50524f50u, // "PROP"
+    /// Every prop stepped by a time step (f64 seconds)
+    Step = 0x50535450u, // "PSTP"
+};
+
+/// A prop as recorded when it joined a PropWorld: enough to rebuild its solver bit for bit. The state is
+/// the solver's at that moment (positions, velocities, anchors, external forces, gravity) before its first
+/// step: a stepped solver also carries warm starts (element rotations) and sleep and energy history that a
+/// rebuilt one would not have, so MakePropSetup refuses it.
+struct PropSetup
+{
+    plugin::BodyId mBody;                  ///< The body the prop is bound to
+    EFemBackend mBackend = EFemBackend::Cpu; ///< The backend it ran on live
+    std::vector<Vec3> mRestPositions;      ///< #N rest mesh positions (m, body frame)
+    std::vector<fem::TetIndices> mTets;    ///< #T elements
+    std::vector<int> mGroups;              ///< #T element groups
+    fem::FemMaterialSettings mMaterial;
+    fem::TetSolverSettings mSettings;      ///< Gravity as last set
+    std::vector<Vec3> mPositions;          ///< #N solver nodes (m, body frame; a breakable mesh may have more
+                                           ///< than its rest mesh: pieces touching along an edge are apart)
+    std::vector<Vec3> mVelocities;         ///< #N (m/s)
+    std::vector<std::uint8_t> mAnchored;   ///< #N, 1 where the node is fixed
+    std::vector<Vec3> mExternalForces;     ///< #N (N)
+};
+
+/// The setup of a CPU solver bound to inBody; refused once the solver has stepped or solved statics.
+Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, const fem::TetSolver& inSolver);
+
+/// Bytes of a PropSetup (little-endian) and back; decoding checks sizes and finite values, and the mesh,
+/// material and settings are validated again when the solver is rebuilt (RebuildProp).
+std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup);
+Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes);
+
+/// A CPU solver in the recorded state (a GPU prop is replayed on the CPU: close, not bitwise).
+Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup);
+
+/// A prop rebuilt from a recording and replayed: its final solver.
+struct ReplayedProp
+{
+    plugin::BodyId mBody;
+    EFemBackend mRecordedBackend = EFemBackend::Cpu;
+    fem::TetSolver mSolver;
+};
+
+/// Replays the props of a recording without an engine: each prop is rebuilt when it joined, takes the
+/// recorded collisions with its body (props::ApplyCollision) and the recorded steps, in the recorded order.
+/// CPU props end bitwise as they did live. Refused with a message naming the record on a corrupt or
+/// inconsistent prop record.
+Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay);
+
+} // namespace crumple::props

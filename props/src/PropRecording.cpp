@@ -1,0 +1,262 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/props/PropRecording.h>
+
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
+#include <crumple/props/CollisionImpulses.h>
+
+#include <cmath>
+#include <string>
+
+namespace crumple::props
+{
+
+namespace
+{
+
+// Refuses a count that the remaining bytes cannot hold at inBytesEach bytes per item.
+bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& outCount)
+{
+    outCount = ioReader.ReadU32();
+    return !ioReader.Failed() && static_cast<std::size_t>(outCount) <= ioReader.Remaining() / inBytesEach;
+}
+
+void WriteMaterial(ByteWriter& ioWriter, const fem::FemMaterialSettings& inMaterial)
+{
+    ioWriter.WriteDouble(inMaterial.mYoungsModulus);
+    ioWriter.WriteDouble(inMaterial.mPoissonRatio);
+    ioWriter.WriteDouble(inMaterial.mDensity);
+    ioWriter.WriteDouble(inMaterial.mMassDamping);
+    ioWriter.WriteDouble(inMaterial.mStiffnessDamping);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inMaterial.mModel));
+    ioWriter.WriteDouble(inMaterial.mYieldStress);
+    ioWriter.WriteDouble(inMaterial.mCreepRate);
+    ioWriter.WriteDouble(inMaterial.mMaxPlasticStrain);
+    ioWriter.WriteDouble(inMaterial.mTensileStrength);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inMaterial.mFractureMode));
+}
+
+// Out-of-range enums are left as read, for the solver's Create to refuse with its message.
+void ReadMaterial(ByteReader& ioReader, fem::FemMaterialSettings& outMaterial)
+{
+    outMaterial.mYoungsModulus = ioReader.ReadDouble();
+    outMaterial.mPoissonRatio = ioReader.ReadDouble();
+    outMaterial.mDensity = ioReader.ReadDouble();
+    outMaterial.mMassDamping = ioReader.ReadDouble();
+    outMaterial.mStiffnessDamping = ioReader.ReadDouble();
+    outMaterial.mModel = static_cast<fem::EElasticModel>(ioReader.ReadU32());
+    outMaterial.mYieldStress = ioReader.ReadDouble();
+    outMaterial.mCreepRate = ioReader.ReadDouble();
+    outMaterial.mMaxPlasticStrain = ioReader.ReadDouble();
+    outMaterial.mTensileStrength = ioReader.ReadDouble();
+    outMaterial.mFractureMode = static_cast<fem::EFractureMode>(ioReader.ReadU32());
+}
+
+void WriteSettings(ByteWriter& ioWriter, const fem::TetSolverSettings& inSettings)
+{
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mIntegrator));
+    ioWriter.WriteVec3(inSettings.mGravity);
+    ioWriter.WriteDouble(inSettings.mStabilitySafetyFactor);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mMaxSubSteps));
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mPreconditioner));
+    ioWriter.WriteDouble(inSettings.mCgRelativeTolerance);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mCgMaxIterations));
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mImplicitMaxIterations));
+    ioWriter.WriteDouble(inSettings.mImplicitTolerance);
+    ioWriter.WriteDouble(inSettings.mSleepSpeed);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mSleepStepCount));
+    ioWriter.WriteDouble(inSettings.mDivergenceEnergyRatio);
+    ioWriter.WriteU32(static_cast<std::uint32_t>(inSettings.mMaxStepSplits));
+}
+
+void ReadSettings(ByteReader& ioReader, fem::TetSolverSettings& outSettings)
+{
+    outSettings.mIntegrator = static_cast<fem::EIntegrator>(ioReader.ReadU32());
+    outSettings.mGravity = ioReader.ReadVec3();
+    outSettings.mStabilitySafetyFactor = ioReader.ReadDouble();
+    outSettings.mMaxSubSteps = static_cast<int>(ioReader.ReadU32());
+    outSettings.mPreconditioner = static_cast<fem::EImplicitPreconditioner>(ioReader.ReadU32());
+    outSettings.mCgRelativeTolerance = ioReader.ReadDouble();
+    outSettings.mCgMaxIterations = static_cast<int>(ioReader.ReadU32());
+    outSettings.mImplicitMaxIterations = static_cast<int>(ioReader.ReadU32());
+    outSettings.mImplicitTolerance = ioReader.ReadDouble();
+    outSettings.mSleepSpeed = ioReader.ReadDouble();
+    outSettings.mSleepStepCount = static_cast<int>(ioReader.ReadU32());
+    outSettings.mDivergenceEnergyRatio = ioReader.ReadDouble();
+    outSettings.mMaxStepSplits = static_cast<int>(ioReader.ReadU32());
+}
+
+} // namespace
+
+Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, const fem::TetSolver& inSolver)
+{
+    const fem::TetMesh& mesh = inSolver.GetMesh();
+    if (inSolver.GetElementWorkCount() != 0)
+        return MakeError(EError::InvalidArgument,
+                         "MakePropSetup: the prop has already stepped; record a prop before its first step (add it "
+                         "to a recording PropWorld when it is made)");
+    PropSetup setup;
+    setup.mBody = inBody;
+    setup.mBackend = inBackend;
+    setup.mRestPositions = mesh.GetRestPositions();
+    setup.mTets = mesh.GetTets();
+    setup.mGroups = mesh.GetGroups();
+    setup.mMaterial = inSolver.GetMaterial().GetSettings();
+    setup.mSettings = inSolver.GetSettings();
+    setup.mPositions = inSolver.GetPositions();
+    setup.mVelocities = inSolver.GetVelocities();
+    setup.mExternalForces = inSolver.GetExternalForces();
+    setup.mAnchored.resize(setup.mPositions.size());
+    for (std::size_t node = 0; node < setup.mAnchored.size(); ++node)
+        setup.mAnchored[node] = inSolver.GetInverseMasses()[node] == 0.0 ? 1 : 0;
+    return setup;
+}
+
+std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup)
+{
+    ByteWriter writer;
+    writer.WriteU32(inSetup.mBody.mValue);
+    writer.WriteU32(static_cast<std::uint32_t>(inSetup.mBackend));
+    WriteMaterial(writer, inSetup.mMaterial);
+    WriteSettings(writer, inSetup.mSettings);
+    writer.WriteU32(static_cast<std::uint32_t>(inSetup.mRestPositions.size()));
+    for (const Vec3& rest : inSetup.mRestPositions)
+        writer.WriteVec3(rest);
+    writer.WriteU32(static_cast<std::uint32_t>(inSetup.mPositions.size()));
+    for (std::size_t node = 0; node < inSetup.mPositions.size(); ++node)
+    {
+        writer.WriteVec3(inSetup.mPositions[node]);
+        writer.WriteVec3(inSetup.mVelocities[node]);
+        writer.WriteVec3(inSetup.mExternalForces[node]);
+        writer.WriteU8(inSetup.mAnchored[node]);
+    }
+    writer.WriteU32(static_cast<std::uint32_t>(inSetup.mTets.size()));
+    for (std::size_t tet = 0; tet < inSetup.mTets.size(); ++tet)
+    {
+        for (int corner : inSetup.mTets[tet])
+            writer.WriteU32(static_cast<std::uint32_t>(corner));
+        writer.WriteU32(static_cast<std::uint32_t>(inSetup.mGroups.empty() ? static_cast<int>(tet) : inSetup.mGroups[tet]));
+    }
+    return writer.TakeBytes();
+}
+
+Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
+{
+    ByteReader reader(inBytes);
+    PropSetup setup;
+    setup.mBody.mValue = reader.ReadU32();
+    setup.mBackend = static_cast<EFemBackend>(reader.ReadU32());
+    ReadMaterial(reader, setup.mMaterial);
+    ReadSettings(reader, setup.mSettings);
+    std::uint32_t rest_nodes = 0, nodes = 0, tets = 0;
+    if (!ReadCount(reader, 24, rest_nodes))
+        return MakeError(EError::CorruptData, "prop record: rest node count is corrupt");
+    for (std::uint32_t node = 0; node < rest_nodes; ++node)
+        setup.mRestPositions.push_back(reader.ReadVec3());
+    if (!ReadCount(reader, 3 * 24 + 1, nodes))
+        return MakeError(EError::CorruptData, "prop record: node count is corrupt");
+    for (std::uint32_t node = 0; node < nodes; ++node)
+    {
+        setup.mPositions.push_back(reader.ReadVec3());
+        setup.mVelocities.push_back(reader.ReadVec3());
+        setup.mExternalForces.push_back(reader.ReadVec3());
+        setup.mAnchored.push_back(reader.ReadU8() != 0 ? 1 : 0);
+    }
+    if (!ReadCount(reader, 5 * 4, tets))
+        return MakeError(EError::CorruptData, "prop record: element count is corrupt");
+    for (std::uint32_t tet = 0; tet < tets; ++tet)
+    {
+        fem::TetIndices corners;
+        for (int& corner : corners)
+            corner = static_cast<int>(reader.ReadU32());
+        setup.mTets.push_back(corners);
+        setup.mGroups.push_back(static_cast<int>(reader.ReadU32()));
+    }
+    if (reader.Failed() || reader.Remaining() != 0)
+        return MakeError(EError::CorruptData, "prop record: wrong length");
+    if (setup.mBackend != EFemBackend::Cpu && setup.mBackend != EFemBackend::Gpu)
+        return MakeError(EError::CorruptData, "prop record: unknown backend");
+    return setup;
+}
+
+Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup)
+{
+    // The mesh, material and settings are validated by their own Create; the state by the setters.
+    Result<fem::TetMesh> mesh = fem::TetMesh::Create(inSetup.mRestPositions, inSetup.mTets, inSetup.mGroups);
+    if (mesh.HasError())
+        return mesh.GetError();
+    Result<fem::TetSolver> solver = fem::TetSolver::Create(mesh.Get(), inSetup.mMaterial, inSetup.mSettings);
+    if (solver.HasError())
+        return solver.GetError();
+    fem::TetSolver& rebuilt = solver.Get();
+    if (rebuilt.GetNodeCount() != static_cast<int>(inSetup.mPositions.size()))
+        return MakeError(EError::CorruptData, "prop record: the breakable mesh has a different node count than recorded");
+    for (int node = 0; node < rebuilt.GetNodeCount(); ++node)
+        if (inSetup.mAnchored[static_cast<std::size_t>(node)] != 0)
+            if (Status status = rebuilt.SetNodeFixed(node, true); status.HasError())
+                return status.GetError();
+    if (Status status = rebuilt.SetPositions(inSetup.mPositions); status.HasError())
+        return status.GetError();
+    if (Status status = rebuilt.SetVelocities(inSetup.mVelocities); status.HasError())
+        return status.GetError();
+    for (int node = 0; node < rebuilt.GetNodeCount(); ++node)
+        if (Status status = rebuilt.SetExternalForce(node, inSetup.mExternalForces[static_cast<std::size_t>(node)]);
+            status.HasError())
+            return status.GetError();
+    return solver;
+}
+
+Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
+{
+    std::vector<ReplayedProp> props;
+    std::size_t next_collision = 0;
+    // The collisions before an extension record reach the props that exist then, in dispatch order.
+    const auto apply_collisions_until = [&](std::size_t inEnd) -> Status
+    {
+        for (; next_collision < inEnd; ++next_collision)
+        {
+            const plugin::Collision& collision = inReplay.mCollisions[next_collision];
+            for (ReplayedProp& prop : props)
+                if (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB)
+                    if (Status status = ApplyCollision(prop.mSolver, collision, prop.mBody); status.HasError())
+                        return status;
+        }
+        return Status::Ok();
+    };
+    for (std::size_t index = 0; index < inReplay.mExtensions.size(); ++index)
+    {
+        const plugin::RecordedExtension& extension = inReplay.mExtensions[index];
+        const std::string where = "prop record " + std::to_string(index) + ": ";
+        if (extension.mAfterCollisions > inReplay.mCollisions.size())
+            return MakeError(EError::CorruptData, where + "placed after more collisions than the file has");
+        if (Status status = apply_collisions_until(static_cast<std::size_t>(extension.mAfterCollisions)); status.HasError())
+            return MakeError(status.GetError().mCode, where + status.GetError().mMessage);
+        if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added))
+        {
+            Result<PropSetup> setup = DecodePropSetup(extension.mPayload);
+            if (setup.HasError())
+                return MakeError(setup.GetError().mCode, where + setup.GetError().mMessage);
+            Result<fem::TetSolver> solver = RebuildProp(setup.Get());
+            if (solver.HasError())
+                return MakeError(solver.GetError().mCode, where + solver.GetError().mMessage);
+            props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(solver).Get()});
+        }
+        else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step))
+        {
+            ByteReader reader(extension.mPayload);
+            const double step = reader.ReadDouble();
+            if (reader.Failed() || reader.Remaining() != 0)
+                return MakeError(EError::CorruptData, where + "a step record of the wrong length");
+            for (ReplayedProp& prop : props)
+                if (Result<fem::TetStepResult> result = prop.mSolver.Step(step); result.HasError())
+                    return MakeError(result.GetError().mCode, where + result.GetError().mMessage);
+        }
+        // Other tags belong to other layers.
+    }
+    if (Status status = apply_collisions_until(inReplay.mCollisions.size()); status.HasError())
+        return status.GetError();
+    return props;
+}
+
+} // namespace crumple::props

@@ -1,0 +1,127 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Props in a damage recording: a run with a prop that cracks, replayed without an engine, ends bit for bit.
+#include "ScratchDirectory.h"
+#include "WorldFixture.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/fem/TetGrid.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/props/PropRecording.h>
+#include <crumple/props/PropWorld.h>
+
+#include <BrittleMaterial.h>
+
+#include <catch2/catch.hpp>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// A brittle 2 m x 0.2 m x 2 m panel standing in for the fixture's wall (its body frame), anchored along its
+// base: the car's hit cracks it.
+FemProp BrittlePanel()
+{
+    TetGridSettings grid;
+    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = {1, 10, 10};
+    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e10;
+    material.mPoissonRatio = 0.2;
+    TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), material, settings, FemPropSettings{}).Get();
+    for (int node = 0; node < prop.GetNodeCount(); ++node)
+        if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
+            REQUIRE(prop.SetNodeFixed(node, true).IsValid());
+    return prop;
+}
+
+} // namespace
+
+TEST_CASE("Props in a recording: a cracking prop replays bit for bit without an engine", "[props][replay]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "props.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, BrittlePanel()).Get();
+
+    // Two hits a few steps apart, the props stepping in between.
+    int fractured = 0;
+    for (int hit = 0; hit < 2; ++hit)
+    {
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0 + 5.0 * hit)));
+        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
+            fixture.FrontContact(0.3 - 0.5 * hit, 0.2, 0.1 * hit), fixture.FrontContact(-0.4, -0.1, 0.1 * hit)}));
+        fixture.mWorld.Flush();
+        for (int step = 0; step < 6; ++step)
+            fractured += props->Step(1.0 / 120.0).Get().mFractured;
+    }
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();
+    REQUIRE(fractured > 0); // the run really cracked the prop
+    REQUIRE(live.GetBrokenLinkCount() > 0);
+
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    CHECK(replay.mCollisions.size() == 2u);
+    CHECK(replay.mExtensions.size() == 13u); // one prop, 12 steps
+    const std::vector<ReplayedProp> replayed = ReplayProps(replay).Get();
+    REQUIRE(replayed.size() == 1u);
+    const TetSolver& again = replayed[0].mSolver;
+    CHECK(replayed[0].mBody == fixture.mWall);
+    CHECK(again.GetBrokenLinks() == live.GetBrokenLinks());
+    CHECK(again.GetElementNodes() == live.GetElementNodes());
+    CHECK(again.GetPositions() == live.GetPositions());
+    CHECK(again.GetVelocities() == live.GetVelocities());
+    const std::vector<TetFragment> live_pieces = live.ComputeFragments();
+    const std::vector<TetFragment> replayed_pieces = again.ComputeFragments();
+    REQUIRE(replayed_pieces.size() == live_pieces.size());
+    for (std::size_t piece = 0; piece < live_pieces.size(); ++piece)
+    {
+        CHECK(replayed_pieces[piece].mGroups == live_pieces[piece].mGroups);
+        CHECK(replayed_pieces[piece].mMass == live_pieces[piece].mMass);
+        CHECK(replayed_pieces[piece].mCenterOfMass == live_pieces[piece].mCenterOfMass);
+    }
+}
+
+TEST_CASE("Props in a recording: a prop that cannot be replayed exactly is refused, and bad records too",
+          "[props][replay]")
+{
+    common::WorldFixture fixture;
+    const std::filesystem::path path = common::ScratchDirectory() / "props_refused.crumple";
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+
+    // A prop that has stepped carries warm starts a rebuilt one would not: attaching is refused, nothing written.
+    REQUIRE(props->AddProp(fixture.mWall, BrittlePanel()).IsValid());
+    REQUIRE(props->Step(1.0 / 60.0).IsValid());
+    CHECK(props->AttachRecorder(recorder.get()).HasError());
+    REQUIRE(recorder->Close().IsValid());
+    CHECK(DecodeReplay(ReadFileBytes(path).Get()).Get().mExtensions.empty());
+
+    // A truncated or foreign prop record is refused with the record's index.
+    Replay replay;
+    RecordedExtension bad;
+    bad.mTag = static_cast<std::uint32_t>(EPropRecord::Added);
+    bad.mPayload = std::vector<std::byte>(10, std::byte{0x7f});
+    replay.mExtensions.push_back(bad);
+    Result<std::vector<ReplayedProp>> refused = ReplayProps(replay);
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mMessage.find("prop record 0") != std::string::npos);
+    bad.mTag = static_cast<std::uint32_t>(EPropRecord::Step);
+    bad.mPayload = std::vector<std::byte>(3, std::byte{0});
+    replay.mExtensions = {bad};
+    CHECK(ReplayProps(replay).HasError());
+    // Another layer's record is left alone.
+    bad.mTag = 0x12345678u;
+    replay.mExtensions = {bad};
+    CHECK(ReplayProps(replay).IsValid());
+}
