@@ -17,6 +17,8 @@ public:
     /// The hit: four contacts on the car's front face, dispatched (the front dented).
     void Dent();
     plugin::DamageWorld& Get() { return mWorld; }
+    /// The static wall's body (its frame is the world's)
+    plugin::BodyId GetWall() const { return mWall; }
     /// The car's deformable object settings (what a recording stores).
     const plugin::DeformableObjectSettings& GetCarSettings() const { return mCarSettings; }
 

@@ -1,12 +1,16 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // crumple-fuzz-seeds DIR: writes the seed corpus of each fuzz target with the project's own writers, into
-// DIR/replay, DIR/damage_state, DIR/hex_compliance, DIR/tetgen_output and DIR/surface_mesh. (The scenario target's seeds are
+// DIR/replay, DIR/prop_replay, DIR/damage_state, DIR/hex_compliance, DIR/tetgen_output and DIR/surface_mesh. (The scenario target's seeds are
 // the shipped scenario files.)
 #include "FuzzWorld.h"
 
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
+#ifdef CRUMPLE_FUZZ_PROPS
+#include <crumple/fem/TetGrid.h>
+#include <crumple/props/PropWorld.h>
+#endif
 #ifdef CRUMPLE_FUZZ_FEM
 #include <crumple/fem/HexComplianceFile.h>
 #include <crumple/fem/HexCompliancePrecompute.h>
@@ -79,6 +83,37 @@ int main(int argc, char** argv)
         ok = ok && recorder.IsValid() && recorder.Get()->Close().IsValid();
         ok = ok && Write(out / "damage_state" / "dented", world.Get().SaveDamage());
     }
+
+#ifdef CRUMPLE_FUZZ_PROPS
+    // A recording with a brittle panel standing in for the wall: its setup, the hit, three prop steps.
+    {
+        fuzz::FuzzWorld world;
+        std::filesystem::create_directories(out / "prop_replay");
+        Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
+            plugin::DamageRecorder::Create(out / "prop_replay" / "panel_hit.crumple", world.Get());
+        Result<std::unique_ptr<props::PropWorld>> prop_world = props::PropWorld::Create(world.Get());
+        ok = ok && recorder.IsValid() && prop_world.IsValid();
+        if (ok)
+        {
+            fem::TetGridSettings grid;
+            grid.mOrigin = Vec3(2.1, -1.0, -1.0);
+            grid.mSize = Vec3(0.2, 2.0, 2.0);
+            grid.mCellCount = {1, 4, 4};
+            fem::FemMaterialSettings material;
+            material.mTensileStrength = 1.0e6;
+            fem::TetSolverSettings settings;
+            settings.mGravity = Vec3::Zero();
+            Result<props::FemProp> panel =
+                props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material, settings, props::FemPropSettings{});
+            ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
+                 prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
+            world.Dent();
+            for (int step = 0; ok && step < 3; ++step)
+                ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
+            ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
+        }
+    }
+#endif
 
 #ifdef CRUMPLE_FUZZ_FEM
     // The compliance of a small clamped steel bar's tip.
