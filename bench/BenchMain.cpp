@@ -23,7 +23,8 @@ int main(int argc, char** argv)
             std::printf("usage: crumple-bench [--quick] [--only GROUP] [--csv FILE]\n"
                         "  Times every benchmark (median of repetitions) and reports its error.\n"
                         "  --quick       few repetitions on small meshes (a smoke run)\n"
-                        "  --only GROUP  one group: dent, impulse, adapter, frame_budget, fem, barrier, crush or gpu\n"
+                        "  --only GROUP  one group: dent, impulse, adapter, frame_budget, fem, fem_vs_bullet, barrier,\n"
+                        "                crush or gpu\n"
                         "  --csv FILE    also write rows benchmark,case,median_ms,error,error_unit,extra\n");
             return 0;
         }
@@ -49,8 +50,8 @@ int main(int argc, char** argv)
     const std::pair<const char*, Group> groups[] = {
         {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
         {"frame_budget", RunFrameBudgetBenchmarks},
-        {"fem", RunFemBenchmarks},   {"barrier", RunBarrierBenchmarks}, {"crush", RunCrushBenchmarks},
-        {"gpu", RunGpuBenchmarks}};
+        {"fem", RunFemBenchmarks},   {"fem_vs_bullet", RunFemVsBulletBenchmarks},
+        {"barrier", RunBarrierBenchmarks}, {"crush", RunCrushBenchmarks}, {"gpu", RunGpuBenchmarks}};
     bool known = only.empty();
     for (const auto& [name, run] : groups)
         known = known || only == name;

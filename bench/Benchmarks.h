@@ -33,6 +33,11 @@ void RunFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions
 /// block Jacobi, interleaved, against a solve converged to round-off. Empty without crumple::fem.
 void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// Crumple's implicit FEM against Bullet's implicit deformable solver on the identical cantilever, 1k, 10k
+/// and 100k tets (--quick: 1k): runs crumple-bench-fem-vs-bullet beside this program (it links Bullet's
+/// double build) and takes its rows. Empty, with a note, where that program is not built.
+void RunFemVsBulletBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 /// The two-way FEM barrier coupling of crumple-crash: a car stopped by a steel barrier at three engine steps,
 /// time per step against the crush's error relative to Campbell's line. Empty without crumple-crash.
 void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
