@@ -91,13 +91,22 @@ Result<GpuTetSolver> GpuTetSolver::Create(std::shared_ptr<ComputeDevice> inDevic
     Result<fem::TetSolver> reference = fem::TetSolver::Create(inMesh, inMaterial, inSettings);
     if (reference.HasError())
         return reference.GetError();
+    return CreateFromReference(std::move(inDevice), inMesh, inMaterial, inSettings, reference.Get());
+}
+
+Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDevice> inDevice,
+                                                       const fem::TetMesh& inMesh,
+                                                       const fem::FemMaterialSettings& inMaterial,
+                                                       const fem::TetSolverSettings& inSettings,
+                                                       const fem::TetSolver& inReference)
+{
     if (!inDevice)
         return MakeError(EError::InvalidArgument, "GpuTetSolver: no compute device");
     if (inSettings.mIntegrator != fem::EIntegrator::SymplecticEuler)
         return MakeError(EError::InvalidArgument,
                          "GpuTetSolver: implicit Euler is not implemented on the GPU; use "
                          "EIntegrator::SymplecticEuler (the CPU's stable sub-steps) or the CPU solver");
-    const fem::TetSolver& cpu = reference.Get();
+    const fem::TetSolver& cpu = inReference;
     const fem::FemMaterial& material = cpu.GetMaterial();
     if (material.IsPlastic())
         return MakeError(EError::InvalidArgument, "GpuTetSolver: plasticity is not implemented on the GPU; use the "
@@ -229,8 +238,10 @@ Status GpuTetSolver::UploadTopology(const std::vector<fem::TetIndices>& inElemen
 
 Result<GpuTetSolver> GpuTetSolver::CreateFrom(std::shared_ptr<ComputeDevice> inDevice, const fem::TetSolver& inSolver)
 {
-    Result<GpuTetSolver> created =
-        Create(std::move(inDevice), inSolver.GetMesh(), inSolver.GetMaterial().GetSettings(), inSolver.GetSettings());
+    // inSolver is already a validated CPU solver of this mesh, material and settings: no second one is built.
+    Result<GpuTetSolver> created = CreateFromReference(std::move(inDevice), inSolver.GetMesh(),
+                                                       inSolver.GetMaterial().GetSettings(), inSolver.GetSettings(),
+                                                       inSolver);
     if (created.HasError())
         return created;
     GpuTetSolver& solver = created.Get();

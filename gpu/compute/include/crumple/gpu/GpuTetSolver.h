@@ -109,6 +109,14 @@ public:
 private:
     explicit GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
 
+    // Create() on a CPU solver already validated for this mesh, material and settings (its rest data, masses,
+    // stable step and links are read from it): CreateFrom() passes the prop's own solver instead of building
+    // a second one.
+    static Result<GpuTetSolver> CreateFromReference(std::shared_ptr<ComputeDevice> inDevice, const fem::TetMesh& inMesh,
+                                                    const fem::FemMaterialSettings& inMaterial,
+                                                    const fem::TetSolverSettings& inSettings,
+                                                    const fem::TetSolver& inReference);
+
     // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps, then the kinetic energy reduction; returns true
     // when the state stayed finite and sets outKineticEnergy (J). Counts the links opened in ioBrokenLinks.
     bool Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks, double& outKineticEnergy);
