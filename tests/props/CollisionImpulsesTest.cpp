@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 // Collision -> nodal impulses: the total impulse and its moment are kept, the prop's side of the collision
 // decides the sign, bad collisions change nothing, and a collision dispatched by a DamageWorld reaches a prop.
+#include "PropMomentum.h"
 #include "WorldFixture.h"
 
 #include <crumple/props/CollisionImpulses.h>
@@ -49,14 +50,6 @@ Collision TwoContacts(BodyId inA, BodyId inB)
         collision.mContacts.push_back(contact);
     }
     return collision;
-}
-
-Vec3 Momentum(const TetSolver& inSolver)
-{
-    Vec3 momentum = Vec3::Zero();
-    for (int node = 0; node < inSolver.GetNodeCount(); ++node)
-        momentum += inSolver.GetMasses()[node] * inSolver.GetVelocities()[node];
-    return momentum;
 }
 
 } // namespace
@@ -136,5 +129,5 @@ TEST_CASE("A collision dispatched by a DamageWorld moves a free prop by exactly 
     fixture.mWorld.Flush();
     REQUIRE(listener.mTotal > 0.0);
     // The car pushes the wall along +x with the collision's total impulse.
-    CHECK((Momentum(panel) - Vec3(listener.mTotal, 0.0, 0.0)).norm() < 1e-9 * listener.mTotal);
+    CHECK((test::PropMomentum(panel) - Vec3(listener.mTotal, 0.0, 0.0)).norm() < 1e-9 * listener.mTotal);
 }

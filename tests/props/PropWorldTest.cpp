@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 // Props in the damage flow: a FEM prop bound to a DamageWorld body takes the opposite of the impulses the
 // world gave the body that hit it.
+#include "PropMomentum.h"
 #include "WorldFixture.h"
 
 #include <crumple/fem/TetGrid.h>
@@ -35,14 +36,6 @@ FemProp Panel(bool inAnchored)
             if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
                 REQUIRE(prop.SetNodeFixed(node, true).IsValid());
     return prop;
-}
-
-Vec3 Momentum(const TetSolver& inSolver)
-{
-    Vec3 momentum = Vec3::Zero();
-    for (int node = 0; node < inSolver.GetNodeCount(); ++node)
-        momentum += inSolver.GetMasses()[node] * inSolver.GetVelocities()[node];
-    return momentum;
 }
 
 // The impulse the world's collisions gave inBody (N s, world frame): +j n on body A, -j n on body B.
@@ -84,8 +77,8 @@ TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses; momentum 
     // Over the hit: the car's impulse plus the prop's momentum is zero (the wall body is unrotated, so its
     // frame is the world's).
     const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
-    INFO("car impulse " << car.mImpulse.transpose() << " N s, prop momentum " << Momentum(solver).transpose());
-    CHECK((Momentum(solver) + car.mImpulse).norm() <= 1.0e-9 * impulse);
+    INFO("car impulse " << car.mImpulse.transpose() << " N s, prop momentum " << test::PropMomentum(solver).transpose());
+    CHECK((test::PropMomentum(solver) + car.mImpulse).norm() <= 1.0e-9 * impulse);
 
     // Afterwards the free prop rings and drifts: momentum kept to the solver's tolerance, energy never up.
     double energy = solver.TotalEnergy();
@@ -97,7 +90,7 @@ TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses; momentum 
         CHECK(solver.TotalEnergy() <= energy * (1.0 + 1.0e-12));
         energy = solver.TotalEnergy();
     }
-    CHECK((Momentum(solver) + car.mImpulse).norm() <= 1.0e-6 * impulse);
+    CHECK((test::PropMomentum(solver) + car.mImpulse).norm() <= 1.0e-6 * impulse);
     CHECK(energy > 0.0);
 }
 
