@@ -4,6 +4,8 @@
 #include <crumple/ffd/OneSidedControls.h>
 #include <crumple/ffd/FoldGuard.h>
 
+#include "CellSurfaceIndex.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -98,14 +100,12 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         }
 
     // Bucket vertices by cell per zone (counting sort keeps ascending vertex order inside a cell).
-    std::size_t max_cells = 0;
     deformer.mCellStart.resize(deformer.mZones.size());
     deformer.mCellVertices.resize(deformer.mZones.size());
     for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
     {
         const FfdLattice& lattice = deformer.mZones[z];
         const auto cells = static_cast<std::size_t>(lattice.GetCellTotal());
-        max_cells = std::max(max_cells, cells);
         std::vector<std::uint32_t>& start = deformer.mCellStart[z];
         start.assign(cells + 1, 0);
         for (std::uint32_t v = 0; v < vertex_count; ++v)
@@ -119,6 +119,21 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
             if (deformer.mVertexZone[v] == static_cast<int>(z))
                 deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell))]++] = v;
     }
+
+    // Cells numbered across zones, and each vertex's, for the surface index.
+    int cell_total = 0;
+    for (const FfdLattice& zone : deformer.mZones)
+    {
+        deformer.mCellOffset.push_back(cell_total);
+        cell_total += zone.GetCellTotal();
+    }
+    deformer.mVertexCell.assign(vertex_count, -1);
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        if (const int zone = deformer.mVertexZone[v]; zone >= 0)
+            deformer.mVertexCell[v] = deformer.mCellOffset[static_cast<std::size_t>(zone)] +
+                                      deformer.mZones[static_cast<std::size_t>(zone)].CellIndex(deformer.mVertexLocation[v].mCell);
+    deformer.mSurfaceIndex = std::make_shared<const CellSurfaceIndex>(
+        CellSurfaceIndex::Build(deformer.mRestMesh, deformer.mVertexCell, cell_total));
 
     // Which controls reach a vertex: the 4 x 4 x 4 of every cell that holds one. The others move nothing,
     // so dents never store a value in them and a loaded state must have them zero.
@@ -158,9 +173,9 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
 
     for (const FfdLattice& zone : deformer.mZones)
         deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
+    deformer.mGuardControls = deformer.mScratchControls;
     deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
-    deformer.mCellMark.assign(max_cells, 0);
-    deformer.mTriangleMark.assign(triangle_count, 0);
+    deformer.mCellMark.assign(static_cast<std::size_t>(cell_total), 0);
     deformer.mVertexMark.assign(vertex_count, 0);
     deformer.mDirty.assign(vertex_count, 0);
     deformer.mPositions = deformer.mRestMesh.mPositions;
@@ -301,7 +316,8 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
     for (std::size_t k = 0; k < inControls.size(); ++k)
         if (!inDelta.row(static_cast<Eigen::Index>(k)).isZero(0.0))
             changed.push_back(inControls[k]);
-    std::vector<std::uint32_t> reached = ReachedVertices(inZone, changed);
+    TouchCells(inZone, changed);
+    std::vector<std::uint32_t> reached = TouchedVertices();
     double scale = DentScale(inZone, inControls, inDelta, reached, inMaxStep);
     std::span<const int> dent_controls = inControls;
     const Eigen::MatrixX3d* dent_delta = &inDelta;
@@ -313,12 +329,13 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
     // then moved the car's rear by 8 cm). When nothing is pushed (the common case) the solve's controls,
     // rows and scale are committed as they are, bit for bit.
     std::vector<Vec3>& controls = mZones[static_cast<std::size_t>(inZone)].GetControlDisplacements();
+    // intent: the guard's trial field, equal to the controls outside this call (no copy of the lattice)
+    std::vector<Vec3>& after = mGuardControls[static_cast<std::size_t>(inZone)];
     std::vector<int> pushed;
     std::vector<int> guarded_controls;
     Eigen::MatrixX3d guarded_delta;
     if (mSettings.mMinControlSpacing > 0.0 && scale > 0.0 && !changed.empty())
     {
-        std::vector<Vec3> after = controls;
         for (std::size_t k = 0; k < inControls.size(); ++k)
             after[static_cast<std::size_t>(inControls[k])] +=
                 scale * inDelta.row(static_cast<Eigen::Index>(k)).transpose();
@@ -342,7 +359,9 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
             // The guard's bound is a set of linear inequalities on the controls, hence convex; the
             // controls before (factor 0) and after the guard (factor 1) both satisfy it, so every factor
             // in [0, 1] that DentScale picks keeps it.
-            reached = ReachedVertices(inZone, changed);
+            UntouchCells();
+            TouchCells(inZone, changed);
+            reached = TouchedVertices();
             const double guarded_scale =
                 DentScale(inZone, guarded_controls, guarded_delta, reached, inMaxStep);
             // The first factor is already in guarded_delta: commit with the second, report their product.
@@ -363,8 +382,17 @@ void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, c
                 scale * dent_delta->row(static_cast<Eigen::Index>(k)).transpose();
     report.mControlsChanged += scale > 0.0 ? static_cast<int>(changed.size()) : 0;
     report.mControlsPushed += scale > 0.0 ? static_cast<int>(pushed.size()) : 0;
+    // intent: the trial field back to the controls, wherever the guard's trial wrote
+    if (mSettings.mMinControlSpacing > 0.0)
+    {
+        for (int control : inControls)
+            after[static_cast<std::size_t>(control)] = controls[static_cast<std::size_t>(control)];
+        for (int control : pushed)
+            after[static_cast<std::size_t>(control)] = controls[static_cast<std::size_t>(control)];
+    }
     if (scale > 0.0)
         UpdateVertices(inZone, reached, report);
+    UntouchCells();
 }
 
 Result<DentReport> FfdDeformer::ApplyControlDelta(int inZone, std::span<const int> inControls,
@@ -393,46 +421,103 @@ Result<DentReport> FfdDeformer::ApplyControlDelta(int inZone, std::span<const in
     return report;
 }
 
-std::vector<std::uint32_t> FfdDeformer::ReachedVertices(int inZone, std::span<const int> inControls)
+void FfdDeformer::TouchCells(int inZone, std::span<const int> inControls)
 {
-    std::vector<std::uint32_t> reached;
     if (inControls.empty())
-        return reached;
+        return;
     const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
     const std::array<int, 3>& n = zone.GetSettings().mControlCount;
     const std::array<int, 3>& cells = zone.GetCellCount();
 
-    // A control (a,b,c) reaches cells a-3..a per axis: mark them once.
-    std::vector<int> touched_cells;
+    // intent: the box of the changed controls, and the cells it can reach (a control reaches cells a-3..a)
+    std::array<int, 3> low{n[0], n[1], n[2]}, high{-1, -1, -1};
     for (int control : inControls)
     {
-        const int a = control % n[0];
-        const int b = (control / n[0]) % n[1];
-        const int c = control / (n[0] * n[1]);
-        for (int k = std::max(c - 3, 0); k <= std::min(c, cells[2] - 1); ++k)
-            for (int j = std::max(b - 3, 0); j <= std::min(b, cells[1] - 1); ++j)
-                for (int i = std::max(a - 3, 0); i <= std::min(a, cells[0] - 1); ++i)
-                {
-                    const int cell = zone.CellIndex({i, j, k});
-                    if (mCellMark[static_cast<std::size_t>(cell)] == 0)
-                    {
-                        mCellMark[static_cast<std::size_t>(cell)] = 1;
-                        touched_cells.push_back(cell);
-                    }
-                }
+        const std::array<int, 3> abc{control % n[0], (control / n[0]) % n[1], control / (n[0] * n[1])};
+        for (std::size_t axis = 0; axis < 3; ++axis)
+        {
+            low[axis] = std::min(low[axis], abc[axis]);
+            high[axis] = std::max(high[axis], abc[axis]);
+        }
     }
-    std::sort(touched_cells.begin(), touched_cells.end());
-
-    // The vertices bucketed in those cells.
-    const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(inZone)];
-    const std::vector<std::uint32_t>& bucket = mCellVertices[static_cast<std::size_t>(inZone)];
-    for (int cell : touched_cells)
+    std::array<int, 3> cell_low{}, cell_high{}, extent{};
+    for (std::size_t axis = 0; axis < 3; ++axis)
     {
-        mCellMark[static_cast<std::size_t>(cell)] = 0;
-        reached.insert(reached.end(), bucket.begin() + start[static_cast<std::size_t>(cell)],
-                       bucket.begin() + start[static_cast<std::size_t>(cell) + 1]);
+        cell_low[axis] = std::max(low[axis] - 3, 0);
+        cell_high[axis] = std::min(high[axis], cells[axis] - 1);
+        // One index range covers both the controls and the cells of the box along the axis.
+        extent[axis] = high[axis] - cell_low[axis] + 1;
     }
-    return reached;
+
+    // intent: a cell is touched when a changed control lies in its 4 x 4 x 4: a window-4 OR along each
+    // axis in turn over the box (separable dilation), linear in the box, not 64 marks per control
+    const auto box = static_cast<std::size_t>(extent[0]) * static_cast<std::size_t>(extent[1]) * static_cast<std::size_t>(extent[2]);
+    auto at = [&](int inI, int inJ, int inK) {
+        return static_cast<std::size_t>(inI) +
+               static_cast<std::size_t>(extent[0]) * (static_cast<std::size_t>(inJ) + static_cast<std::size_t>(extent[1]) * static_cast<std::size_t>(inK));
+    };
+    std::vector<std::uint8_t>& mask = mDilation[0];
+    std::vector<std::uint8_t>& swept = mDilation[1];
+    mask.assign(box, 0);
+    swept.assign(box, 0);
+    for (int control : inControls)
+        mask[at(control % n[0] - cell_low[0], (control / n[0]) % n[1] - cell_low[1], control / (n[0] * n[1]) - cell_low[2])] = 1;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+    {
+        const std::array<int, 3> step{axis == 0 ? 1 : 0, axis == 1 ? 1 : 0, axis == 2 ? 1 : 0};
+        for (int k = 0; k < extent[2]; ++k)
+            for (int j = 0; j < extent[1]; ++j)
+                for (int i = 0; i < extent[0]; ++i)
+                {
+                    const std::array<int, 3> ijk{i, j, k};
+                    std::uint8_t any = 0;
+                    for (int d = 0; d < 4 && ijk[axis] + d < extent[axis]; ++d)
+                        any |= mask[at(i + d * step[0], j + d * step[1], k + d * step[2])];
+                    swept[at(i, j, k)] = any;
+                }
+        mask.swap(swept);
+    }
+
+    // intent: the touched cells that hold a vertex, ascending (CellIndex runs i fastest)
+    const int offset = mCellOffset[static_cast<std::size_t>(inZone)];
+    const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(inZone)];
+    for (int k = cell_low[2]; k <= cell_high[2]; ++k)
+        for (int j = cell_low[1]; j <= cell_high[1]; ++j)
+            for (int i = cell_low[0]; i <= cell_high[0]; ++i)
+            {
+                const auto cell = static_cast<std::size_t>(zone.CellIndex({i, j, k}));
+                if (mask[at(i - cell_low[0], j - cell_low[1], k - cell_low[2])] == 0 || start[cell + 1] == start[cell])
+                    continue;
+                const int global = offset + static_cast<int>(cell);
+                mCellMark[static_cast<std::size_t>(global)] = 1;
+                mTouchedCells.push_back(global);
+            }
+    mTouchedZone = inZone;
+}
+
+void FfdDeformer::UntouchCells()
+{
+    for (int cell : mTouchedCells)
+        mCellMark[static_cast<std::size_t>(cell)] = 0;
+    mTouchedCells.clear();
+}
+
+std::vector<std::uint32_t> FfdDeformer::TouchedVertices() const
+{
+    std::vector<std::uint32_t> vertices;
+    if (mTouchedCells.empty())
+        return vertices;
+    const int offset = mCellOffset[static_cast<std::size_t>(mTouchedZone)];
+    const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(mTouchedZone)];
+    const std::vector<std::uint32_t>& bucket = mCellVertices[static_cast<std::size_t>(mTouchedZone)];
+    std::size_t total = 0;
+    for (int cell : mTouchedCells)
+        total += start[static_cast<std::size_t>(cell - offset) + 1] - start[static_cast<std::size_t>(cell - offset)];
+    vertices.reserve(total);
+    for (int cell : mTouchedCells)
+        vertices.insert(vertices.end(), bucket.begin() + start[static_cast<std::size_t>(cell - offset)],
+                        bucket.begin() + start[static_cast<std::size_t>(cell - offset) + 1]);
+    return vertices;
 }
 
 double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
@@ -517,10 +602,12 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
         {
             const Vec3 displacement = zone.Displacement(mVertexLocation[v]);
             mPositions[v] = mRestMesh.mPositions[v] + displacement;
-            largest = std::max(largest, displacement.norm());
+            // intent: the largest squared length, one square root per piece (sqrt is monotone and
+            // correctly rounded, so this is bitwise the largest length)
+            largest = std::max(largest, displacement.squaredNorm());
             mDirty[v] = 1;
         }
-        piece_bound[static_cast<std::size_t>(inPiece)] = largest;
+        piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
     });
     for (double largest : piece_bound)
         bound = std::max(bound, largest);
@@ -548,31 +635,17 @@ Vec3 FfdDeformer::VertexNormal(std::uint32_t inVertex) const
 
 void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport)
 {
-    // Triangles touching a moved vertex.
+
+    // intent: the triangles with a vertex in a touched cell, each once; their corners are the moved
+    // vertices that have a triangle and the ring around the touched cells
     std::vector<std::uint32_t> triangles;
-    for (std::uint32_t v : inMoved)
-        for (std::uint32_t i = mVertexTriangleStart[v]; i < mVertexTriangleStart[v + 1]; ++i)
-        {
-            const std::uint32_t f = mVertexTriangles[i];
-            if (mTriangleMark[f] == 0)
-            {
-                mTriangleMark[f] = 1;
-                triangles.push_back(f);
-            }
-        }
+    mSurfaceIndex->AppendTriangles(mTouchedCells, mCellMark, triangles);
     std::vector<std::uint32_t> corners;
-    for (std::uint32_t f : triangles)
-    {
-        mTriangleMark[f] = 0;
-        for (std::uint32_t v : mRestMesh.mTriangles[f])
-            if (mVertexMark[v] == 0)
-            {
-                mVertexMark[v] = 1;
-                corners.push_back(v);
-            }
-    }
-    for (std::uint32_t v : corners)
-        mVertexMark[v] = 0;
+    corners.reserve(inMoved.size());
+    for (std::uint32_t v : inMoved)
+        if (mVertexTriangleStart[v + 1] != mVertexTriangleStart[v])
+            corners.push_back(v);
+    mSurfaceIndex->AppendRing(mTouchedCells, mCellMark, mVertexCell, mVertexMark, corners);
     // Face normals, then the normals of every corner of those triangles (a corner may not have moved
     // itself); each piece writes only its own elements.
     const int face_pieces = PieceCount(mJobs, triangles.size(), cMinVerticesPerPiece);
@@ -594,6 +667,9 @@ void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, De
 
 void FfdDeformer::RecomputeAll()
 {
+    // intent: the fold guard's trial field follows controls set from outside a dent (Reset, a loaded state)
+    for (std::size_t z = 0; z < mZones.size(); ++z)
+        mGuardControls[z] = mZones[z].GetControlDisplacements();
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
     for (std::uint32_t v = 0; v < vertex_count; ++v)

@@ -13,6 +13,17 @@ namespace crumple::ffd
 /// They sum to one (partition of unity) and reproduce linear functions: sum_k w_k (k - 1) = t.
 /// @param[in] inT  local parameter in [0, 1]
 /// @return {w0, w1, w2, w3}
-std::array<double, 4> CubicBSplineWeights(double inT);
+inline std::array<double, 4> CubicBSplineWeights(double inT)
+{
+    // Horner forms of the four cubic pieces; written out so that the operation order is fixed. Inline: it
+    // runs three times per vertex of every dent.
+    const double t = inT;
+    const double t2 = t * t;
+    const double t3 = t2 * t;
+    const double s = 1.0 - t;
+    constexpr double cSixth = 1.0 / 6.0;
+    return {s * s * s * cSixth, (3.0 * t3 - 6.0 * t2 + 4.0) * cSixth, (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) * cSixth,
+            t3 * cSixth};
+}
 
 } // namespace crumple::ffd

@@ -13,11 +13,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace crumple::ffd
 {
+
+class CellSurfaceIndex;
 
 /// Dents a render mesh through one or more FFD zones by direct manipulation (D4MD section 6.2).
 ///
@@ -112,8 +115,13 @@ private:
 
     // Where a deformed body-frame point lies in zone inZone, in rest lattice coordinates.
     Vec3 RestLatticeCoordinate(int inZone, const Vec3& inPoint) const;
-    // Vertices bucketed in the cells that inControls of inZone reach, ascending by cell then vertex.
-    std::vector<std::uint32_t> ReachedVertices(int inZone, std::span<const int> inControls);
+    // Marks the cells (numbered across zones) that inControls of inZone reach and hold a vertex, and lists
+    // them ascending in mTouchedCells; a control (a,b,c) reaches cells a-3..a per axis.
+    void TouchCells(int inZone, std::span<const int> inControls);
+    // Clears what TouchCells marked.
+    void UntouchCells();
+    // Vertices bucketed in the touched cells, ascending by cell then vertex.
+    std::vector<std::uint32_t> TouchedVertices() const;
     // Largest s in [0, 1] such that moving every vertex in inVertices by s times the field of inDelta
     // (control changes over inControls) respects inMaxStep and the zone's maximum total deformation.
     double DentScale(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
@@ -122,11 +130,13 @@ private:
     // the vertices it reaches; the report gathers scale, counts and vertex work.
     void CommitZoneDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
                          double inMaxStep, DentReport& ioReport);
-    // Recompute positions of inVertices from the zone's controls, then the normals around them.
+    // Recompute positions of inVertices (the touched cells' vertices) from the zone's controls, then the
+    // normals around the touched cells.
     void UpdateVertices(int inZone, std::span<const std::uint32_t> inVertices, DentReport& ioReport);
     // Recompute every face and vertex normal from the current positions, marking changed normals dirty.
     void RecomputeNormals();
-    // Recompute face normals of triangles touching inMoved, then vertex normals of their corners.
+    // Recompute face normals of the triangles with a vertex in a touched cell (inMoved: those vertices), then
+    // the vertex normals of their corners.
     void UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport);
     Vec3 VertexNormal(std::uint32_t inVertex) const;
     Vec3 FaceNormal(std::uint32_t inTriangle) const;
@@ -144,15 +154,21 @@ private:
     std::vector<LatticeLocation> mVertexLocation; ///< #V rest lattice location in its zone
     std::vector<std::vector<std::uint32_t>> mCellStart;    ///< Per zone: CSR offsets, #cells + 1
     std::vector<std::vector<std::uint32_t>> mCellVertices; ///< Per zone: vertices bucketed by cell
+    std::vector<int> mCellOffset;                          ///< Per zone: number of its first cell across zones
+    std::vector<int> mVertexCell;                          ///< #V: cell across zones, -1 for a vertex of no zone
+    std::shared_ptr<const CellSurfaceIndex> mSurfaceIndex; ///< Triangles and rings per cell; immutable, shared by copies
     std::vector<std::vector<std::uint8_t>> mControlReaches; ///< Per zone, per control: 1 when it moves a vertex
     std::vector<std::uint32_t> mVertexTriangleStart;       ///< CSR offsets, #V + 1
     std::vector<std::uint32_t> mVertexTriangles;           ///< Triangles around each vertex
 
-    // Scratch marks, all zero between calls.
-    std::vector<std::uint8_t> mCellMark;
-    std::vector<std::uint8_t> mTriangleMark;
+    // Scratch, all zero (marks) or empty between calls.
+    std::vector<std::uint8_t> mCellMark;    ///< Per cell across zones
+    std::vector<int> mTouchedCells;         ///< The marked cells, ascending
+    int mTouchedZone = 0;                   ///< The zone of mTouchedCells
+    std::vector<std::uint8_t> mDilation[2]; ///< TouchCells' masks over the changed controls' box
     std::vector<std::uint8_t> mVertexMark;
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
+    std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
 
     std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges (publishing: since Publish)

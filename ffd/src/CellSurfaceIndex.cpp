@@ -1,0 +1,116 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "CellSurfaceIndex.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace crumple::ffd
+{
+
+CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<const int> inVertexCell, int inCellCount)
+{
+    CellSurfaceIndex index;
+    const auto cells = static_cast<std::size_t>(inCellCount);
+
+    // intent: each triangle's distinct cells, ascending (at most three)
+    auto distinct_cells = [&](const std::array<std::uint32_t, 3>& inTriangle, std::array<int, 3>& outCells) {
+        int count = 0;
+        for (std::uint32_t v : inTriangle)
+        {
+            const int cell = inVertexCell[v];
+            bool known = false;
+            for (int i = 0; i < count; ++i)
+                known = known || outCells[static_cast<std::size_t>(i)] == cell;
+            if (cell >= 0 && !known)
+                outCells[static_cast<std::size_t>(count++)] = cell;
+        }
+        // intent: insertion sort of at most three cells
+        for (int i = 1; i < count; ++i)
+            for (int j = i; j > 0 && outCells[static_cast<std::size_t>(j)] < outCells[static_cast<std::size_t>(j - 1)]; --j)
+                std::swap(outCells[static_cast<std::size_t>(j)], outCells[static_cast<std::size_t>(j - 1)]);
+        return count;
+    };
+
+    // intent: triangle entries per cell (counting sort keeps ascending triangle order inside a cell)
+    index.mEntryStart.assign(cells + 1, 0);
+    std::array<int, 3> own{};
+    for (const auto& triangle : inMesh.mTriangles)
+    {
+        const int count = distinct_cells(triangle, own);
+        for (int i = 0; i < count; ++i)
+            ++index.mEntryStart[static_cast<std::size_t>(own[static_cast<std::size_t>(i)]) + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c)
+        index.mEntryStart[c + 1] += index.mEntryStart[c];
+    index.mEntries.resize(index.mEntryStart[cells]);
+    std::vector<std::uint32_t> fill(index.mEntryStart.begin(), index.mEntryStart.end() - 1);
+    for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
+    {
+        const int count = distinct_cells(inMesh.mTriangles[t], own);
+        for (int i = 0; i < count; ++i)
+        {
+            Entry entry{t, {-1, -1}};
+            for (int j = 0; j < i; ++j)
+                entry.mEarlierCell[j] = own[static_cast<std::size_t>(j)];
+            index.mEntries[fill[static_cast<std::size_t>(own[static_cast<std::size_t>(i)])]++] = entry;
+        }
+    }
+
+    // intent: ring vertices per cell: corners of the cell's triangles that lie in another cell (or in no zone)
+    std::vector<std::vector<std::uint32_t>> ring(cells);
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+        for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
+            for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
+                if (inVertexCell[v] != static_cast<int>(c))
+                    ring[c].push_back(v);
+        std::sort(ring[c].begin(), ring[c].end());
+        ring[c].erase(std::unique(ring[c].begin(), ring[c].end()), ring[c].end());
+    }
+    index.mRingStart.assign(cells + 1, 0);
+    for (std::size_t c = 0; c < cells; ++c)
+        index.mRingStart[c + 1] = index.mRingStart[c] + static_cast<std::uint32_t>(ring[c].size());
+    index.mRing.reserve(index.mRingStart[cells]);
+    for (const std::vector<std::uint32_t>& vertices : ring)
+        index.mRing.insert(index.mRing.end(), vertices.begin(), vertices.end());
+    return index;
+}
+
+void CellSurfaceIndex::AppendTriangles(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
+                                       std::vector<std::uint32_t>& ioTriangles) const
+{
+    for (int cell : inCells)
+        for (std::uint32_t e = mEntryStart[static_cast<std::size_t>(cell)]; e < mEntryStart[static_cast<std::size_t>(cell) + 1]; ++e)
+        {
+            // intent: reported under its first touched cell only
+            const Entry& entry = mEntries[e];
+            const bool earlier = (entry.mEarlierCell[0] >= 0 && inCellMarks[static_cast<std::size_t>(entry.mEarlierCell[0])] != 0) ||
+                                 (entry.mEarlierCell[1] >= 0 && inCellMarks[static_cast<std::size_t>(entry.mEarlierCell[1])] != 0);
+            if (!earlier)
+                ioTriangles.push_back(entry.mTriangle);
+        }
+}
+
+void CellSurfaceIndex::AppendRing(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
+                                  std::span<const int> inVertexCell, std::vector<std::uint8_t>& ioVertexMarks,
+                                  std::vector<std::uint32_t>& ioVertices) const
+{
+    const std::size_t first = ioVertices.size();
+    for (int cell : inCells)
+        for (std::uint32_t r = mRingStart[static_cast<std::size_t>(cell)]; r < mRingStart[static_cast<std::size_t>(cell) + 1]; ++r)
+        {
+            // intent: a ring vertex inside another touched cell is not ring; a shared one is taken once
+            const std::uint32_t v = mRing[r];
+            const int own = inVertexCell[v];
+            if ((own >= 0 && inCellMarks[static_cast<std::size_t>(own)] != 0) || ioVertexMarks[v] != 0)
+                continue;
+            ioVertexMarks[v] = 1;
+            ioVertices.push_back(v);
+        }
+    for (std::size_t i = first; i < ioVertices.size(); ++i)
+        ioVertexMarks[ioVertices[i]] = 0;
+}
+
+} // namespace crumple::ffd
