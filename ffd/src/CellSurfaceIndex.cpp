@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 namespace crumple::ffd
@@ -75,6 +76,32 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
     index.mRing.reserve(index.mRingStart[cells]);
     for (const std::vector<std::uint32_t>& vertices : ring)
         index.mRing.insert(index.mRing.end(), vertices.begin(), vertices.end());
+
+    // intent: reach boxes from each cell's vertices and its triangles' corners; loose vertices and triangles
+    constexpr double cInf = std::numeric_limits<double>::infinity();
+    index.mReachLow.assign(cells, Vec3::Constant(cInf));
+    index.mReachHigh.assign(cells, Vec3::Constant(-cInf));
+    for (std::uint32_t v = 0; v < inVertexCell.size(); ++v)
+    {
+        const int cell = inVertexCell[v];
+        if (cell < 0)
+        {
+            index.mLooseVertices.push_back(v);
+            continue;
+        }
+        index.mReachLow[static_cast<std::size_t>(cell)] = index.mReachLow[static_cast<std::size_t>(cell)].cwiseMin(inMesh.mPositions[v]);
+        index.mReachHigh[static_cast<std::size_t>(cell)] = index.mReachHigh[static_cast<std::size_t>(cell)].cwiseMax(inMesh.mPositions[v]);
+    }
+    for (std::size_t c = 0; c < cells; ++c)
+        for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
+            for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
+            {
+                index.mReachLow[c] = index.mReachLow[c].cwiseMin(inMesh.mPositions[v]);
+                index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(inMesh.mPositions[v]);
+            }
+    for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
+        if (distinct_cells(inMesh.mTriangles[t], own) == 0)
+            index.mLooseTriangles.push_back(t);
     return index;
 }
 

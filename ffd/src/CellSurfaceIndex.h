@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Math.h>
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <cstdint>
@@ -21,9 +22,20 @@ namespace crumple::ffd
 /// triangle with a vertex that is (its "ring"). Each triangle is listed under every distinct zone cell of its
 /// vertices, with the smaller of those cells beside it, and is reported under the first touched one only, so
 /// it is reported once without a mark.
+///
+/// For region queries (FfdDeformer::ProbeSurface) each cell also keeps its reach box: the rest-frame box of
+/// its vertices and of every vertex of its triangles, so a triangle larger than a cell is found from any
+/// cell of its vertices. Vertices and triangles in no zone are kept apart (loose), for a query to scan always.
 class CellSurfaceIndex
 {
 public:
+    /// One triangle listed under a cell: the cells of its other vertices that come before this one (-1: none).
+    struct Entry
+    {
+        std::uint32_t mTriangle;
+        int mEarlierCell[2];
+    };
+
     /// @param[in] inMesh        the rest mesh
     /// @param[in] inVertexCell  #V: each vertex's cell (numbered across zones), -1 for a vertex of no zone
     /// @param[in] inCellCount   cells of all zones
@@ -42,18 +54,29 @@ public:
                     std::span<const int> inVertexCell, std::vector<std::uint8_t>& ioVertexMarks,
                     std::vector<std::uint32_t>& ioVertices) const;
 
-private:
-    // One triangle listed under a cell: the cells of its other vertices that come before this one (-1: none).
-    struct Entry
+    /// The triangles with a vertex in inCell
+    std::span<const Entry> EntriesOf(int inCell) const
     {
-        std::uint32_t mTriangle;
-        int mEarlierCell[2];
-    };
+        return std::span<const Entry>(mEntries).subspan(mEntryStart[static_cast<std::size_t>(inCell)],
+                                                        mEntryStart[static_cast<std::size_t>(inCell) + 1] - mEntryStart[static_cast<std::size_t>(inCell)]);
+    }
+    /// Rest-frame box of the cell's vertices and its triangles' vertices (body frame, m); empty (low > high)
+    /// for a cell without vertices
+    const Vec3& ReachLow(int inCell) const { return mReachLow[static_cast<std::size_t>(inCell)]; }
+    const Vec3& ReachHigh(int inCell) const { return mReachHigh[static_cast<std::size_t>(inCell)]; }
+    /// Vertices in no zone, ascending
+    const std::vector<std::uint32_t>& LooseVertices() const { return mLooseVertices; }
+    /// Triangles with no vertex in a zone, ascending
+    const std::vector<std::uint32_t>& LooseTriangles() const { return mLooseTriangles; }
 
+private:
     std::vector<std::uint32_t> mEntryStart; ///< #cells + 1: CSR offsets into mEntries
     std::vector<Entry> mEntries;
     std::vector<std::uint32_t> mRingStart;  ///< #cells + 1: CSR offsets into mRing
     std::vector<std::uint32_t> mRing;       ///< Per cell: vertices outside it sharing a triangle with one inside, ascending
+    std::vector<Vec3> mReachLow, mReachHigh; ///< Per cell: reach box (body frame, m)
+    std::vector<std::uint32_t> mLooseVertices;
+    std::vector<std::uint32_t> mLooseTriangles;
 };
 
 } // namespace crumple::ffd

@@ -176,6 +176,35 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     deformer.mGuardControls = deformer.mScratchControls;
     deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
     deformer.mCellMark.assign(static_cast<std::size_t>(cell_total), 0);
+    deformer.mCellBound.assign(static_cast<std::size_t>(cell_total), 0.0);
+    // intent: each slice's reach: the union of its cells' reach boxes, per axis
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+    {
+        const FfdLattice& zone = deformer.mZones[z];
+        const std::array<int, 3>& cells = zone.GetCellCount();
+        SliceReach slices;
+        for (std::size_t axis = 0; axis < 3; ++axis)
+        {
+            slices.mLow[axis].assign(static_cast<std::size_t>(cells[axis]), Vec3::Constant(std::numeric_limits<double>::infinity()));
+            slices.mHigh[axis].assign(static_cast<std::size_t>(cells[axis]), Vec3::Constant(-std::numeric_limits<double>::infinity()));
+            slices.mBound[axis].assign(static_cast<std::size_t>(cells[axis]), 0.0);
+        }
+        for (int k = 0; k < cells[2]; ++k)
+            for (int j = 0; j < cells[1]; ++j)
+                for (int i = 0; i < cells[0]; ++i)
+                {
+                    const int cell = deformer.mCellOffset[z] + zone.CellIndex({i, j, k});
+                    const std::array<int, 3> ijk{i, j, k};
+                    for (std::size_t axis = 0; axis < 3; ++axis)
+                    {
+                        Vec3& low = slices.mLow[axis][static_cast<std::size_t>(ijk[axis])];
+                        Vec3& high = slices.mHigh[axis][static_cast<std::size_t>(ijk[axis])];
+                        low = low.cwiseMin(deformer.mSurfaceIndex->ReachLow(cell));
+                        high = high.cwiseMax(deformer.mSurfaceIndex->ReachHigh(cell));
+                    }
+                }
+        deformer.mSlices.push_back(std::move(slices));
+    }
     deformer.mVertexMark.assign(vertex_count, 0);
     deformer.mDirty.assign(vertex_count, 0);
     deformer.mPositions = deformer.mRestMesh.mPositions;
@@ -593,24 +622,63 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
 {
     const FfdLattice& zone = mZones[static_cast<std::size_t>(inZone)];
     double& bound = mZoneDisplacementBound[static_cast<std::size_t>(inZone)];
-    // intent: each piece writes only its own vertices; the bound is a max, exact in any order
+    // intent: inVertices are the touched cells' buckets in order: where each cell's run starts
+    const int offset = mCellOffset[static_cast<std::size_t>(inZone)];
+    const std::vector<std::uint32_t>& start = mCellStart[static_cast<std::size_t>(inZone)];
+    const std::size_t cells = mTouchedCells.size();
+    std::vector<std::size_t> run(cells + 1, 0);
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+        const auto local = static_cast<std::size_t>(mTouchedCells[c] - offset);
+        run[c + 1] = run[c] + (start[local + 1] - start[local]);
+    }
+
+    // intent: pieces of whole cells, each writing only its own vertices and cells; the zone's bound is a
+    // max, exact in any order
     const int pieces = PieceCount(mJobs, inVertices.size(), cMinVerticesPerPiece);
+    std::vector<std::size_t> first_cell(static_cast<std::size_t>(pieces) + 1, cells);
+    for (int p = 0; p < pieces; ++p)
+    {
+        const std::size_t begin = inVertices.size() * static_cast<std::size_t>(p) / static_cast<std::size_t>(pieces);
+        first_cell[static_cast<std::size_t>(p)] =
+            static_cast<std::size_t>(std::lower_bound(run.begin(), run.end() - 1, begin) - run.begin());
+    }
     std::vector<double> piece_bound(static_cast<std::size_t>(pieces), 0.0);
     ParallelFor(mJobs, pieces, [&](int inPiece) {
         double largest = 0.0;
-        for (std::uint32_t v : PieceOf(inVertices, inPiece, pieces))
+        for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
         {
-            const Vec3 displacement = zone.Displacement(mVertexLocation[v]);
-            mPositions[v] = mRestMesh.mPositions[v] + displacement;
-            // intent: the largest squared length, one square root per piece (sqrt is monotone and
-            // correctly rounded, so this is bitwise the largest length)
-            largest = std::max(largest, displacement.squaredNorm());
-            mDirty[v] = 1;
+            // intent: the largest squared length, one square root per cell (sqrt is monotone and correctly
+            // rounded, so this is bitwise the largest length)
+            double cell_largest = 0.0;
+            for (std::size_t i = run[c]; i < run[c + 1]; ++i)
+            {
+                const std::uint32_t v = inVertices[i];
+                const Vec3 displacement = zone.Displacement(mVertexLocation[v]);
+                mPositions[v] = mRestMesh.mPositions[v] + displacement;
+                cell_largest = std::max(cell_largest, displacement.squaredNorm());
+                mDirty[v] = 1;
+            }
+            mCellBound[static_cast<std::size_t>(mTouchedCells[c])] = std::sqrt(cell_largest);
+            largest = std::max(largest, cell_largest);
         }
         piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
     });
     for (double largest : piece_bound)
         bound = std::max(bound, largest);
+    // intent: the slices' bounds only grow between full recomputes (an upper bound stays one)
+    SliceReach& slices = mSlices[static_cast<std::size_t>(inZone)];
+    const std::array<int, 3>& n = zone.GetCellCount();
+    for (int cell : mTouchedCells)
+    {
+        const int local = cell - offset;
+        const std::array<int, 3> ijk{local % n[0], (local / n[0]) % n[1], local / (n[0] * n[1])};
+        for (std::size_t axis = 0; axis < 3; ++axis)
+        {
+            double& slice_bound = slices.mBound[axis][static_cast<std::size_t>(ijk[axis])];
+            slice_bound = std::max(slice_bound, mCellBound[static_cast<std::size_t>(cell)]);
+        }
+    }
     mVertexEvaluations += inVertices.size();
     ioReport.mVerticesMoved += static_cast<std::uint32_t>(inVertices.size());
     UpdateNormalsAround(inVertices, ioReport);
@@ -672,6 +740,10 @@ void FfdDeformer::RecomputeAll()
         mGuardControls[z] = mZones[z].GetControlDisplacements();
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
+    std::fill(mCellBound.begin(), mCellBound.end(), 0.0);
+    for (SliceReach& slices : mSlices)
+        for (std::vector<double>& bounds : slices.mBound)
+            std::fill(bounds.begin(), bounds.end(), 0.0);
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const int zone = mVertexZone[v];
@@ -682,8 +754,17 @@ void FfdDeformer::RecomputeAll()
             mDirty[v] = 1;
         mPositions[v] = position;
         if (zone >= 0)
-            mZoneDisplacementBound[static_cast<std::size_t>(zone)] =
-                std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], (position - mRestMesh.mPositions[v]).norm());
+        {
+            const double moved = (position - mRestMesh.mPositions[v]).norm();
+            mZoneDisplacementBound[static_cast<std::size_t>(zone)] = std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], moved);
+            mCellBound[static_cast<std::size_t>(mVertexCell[v])] = std::max(mCellBound[static_cast<std::size_t>(mVertexCell[v])], moved);
+            const std::array<int, 3>& ijk = mVertexLocation[v].mCell;
+            for (std::size_t axis = 0; axis < 3; ++axis)
+            {
+                double& slice_bound = mSlices[static_cast<std::size_t>(zone)].mBound[axis][static_cast<std::size_t>(ijk[axis])];
+                slice_bound = std::max(slice_bound, moved);
+            }
+        }
     }
     mVertexEvaluations += vertex_count;
     RecomputeNormals();

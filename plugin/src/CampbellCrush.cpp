@@ -91,96 +91,6 @@ std::optional<Footprint> FootprintOf(const Collision& inCollision, ECollisionSid
     return footprint;
 }
 
-struct SurfaceUnderFootprint
-{
-    double mFront = std::numeric_limits<double>::infinity(); ///< Smallest d.x of the surface over the footprint
-    int mVerticesInside = 0;
-    double mCrushInside = 0.0; ///< Largest inward move of a vertex inside the footprint (m)
-    double mCrushAcross = 0.0; ///< Largest inward move of a vertex of a triangle over the footprint (m)
-};
-
-// A point in crush coordinates: across (side, third) and along (depth).
-struct CrushPoint
-{
-    double mSide, mThird, mDepth;
-};
-
-// A polygon of at most 3 + 4 corners (a triangle clipped by a rectangle's four edges).
-struct SmallPolygon
-{
-    std::array<CrushPoint, 8> mCorners{};
-    std::size_t mCount = 0;
-};
-
-// Sutherland-Hodgman: keeps the part of inPolygon where inCoordinate(p) * inSign <= inLimit * inSign.
-SmallPolygon ClipPolygon(const SmallPolygon& inPolygon, double CrushPoint::*inCoordinate, double inLimit, double inSign)
-{
-    SmallPolygon out;
-    for (std::size_t i = 0; i < inPolygon.mCount; ++i)
-    {
-        const CrushPoint& a = inPolygon.mCorners[i];
-        const CrushPoint& b = inPolygon.mCorners[(i + 1) % inPolygon.mCount];
-        const double da = inSign * (a.*inCoordinate - inLimit), db = inSign * (b.*inCoordinate - inLimit);
-        if (da <= 0.0)
-            out.mCorners[out.mCount++] = a;
-        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
-        {
-            const double t = da / (da - db);
-            out.mCorners[out.mCount++] = {a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird),
-                                          a.mDepth + t * (b.mDepth - a.mDepth)};
-        }
-    }
-    return out;
-}
-
-SurfaceUnderFootprint ScanFootprint(const CrushPlan& inPlan, const ffd::FfdDeformer& inDeformer)
-{
-    SurfaceUnderFootprint surface;
-    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
-    const std::vector<Vec3>& rest = inDeformer.GetRestMesh().mPositions;
-    // Every vertex in crush coordinates once; bit 0-3: outside the rectangle's low side, high side, low
-    // third, high third.
-    std::vector<CrushPoint> projected(positions.size());
-    std::vector<std::uint8_t> outside(positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v)
-    {
-        const Vec3& p = positions[v];
-        const CrushPoint c{inPlan.mSide.dot(p), inPlan.mThird.dot(p), inPlan.mDirection.dot(p)};
-        projected[v] = c;
-        outside[v] = static_cast<std::uint8_t>((c.mSide < inPlan.mSideMin ? 1 : 0) | (c.mSide > inPlan.mSideMax ? 2 : 0) |
-                                               (c.mThird < inPlan.mThirdMin ? 4 : 0) | (c.mThird > inPlan.mThirdMax ? 8 : 0));
-        if (outside[v] == 0)
-        {
-            surface.mFront = std::min(surface.mFront, c.mDepth);
-            surface.mCrushInside = std::max(surface.mCrushInside, inPlan.mDirection.dot(p - rest[v]));
-            ++surface.mVerticesInside;
-        }
-    }
-    for (const auto& triangle : inDeformer.GetRestMesh().mTriangles)
-    {
-        const std::uint8_t a = outside[triangle[0]], b = outside[triangle[1]], c = outside[triangle[2]];
-        if ((a & b & c) != 0 || (a | b | c) == 0)
-            continue; // wholly beyond one edge, or wholly inside (its vertices were counted above)
-        SmallPolygon polygon;
-        polygon.mCorners[0] = projected[triangle[0]];
-        polygon.mCorners[1] = projected[triangle[1]];
-        polygon.mCorners[2] = projected[triangle[2]];
-        polygon.mCount = 3;
-        polygon = ClipPolygon(polygon, &CrushPoint::mSide, inPlan.mSideMin, -1.0);
-        polygon = ClipPolygon(polygon, &CrushPoint::mSide, inPlan.mSideMax, 1.0);
-        polygon = ClipPolygon(polygon, &CrushPoint::mThird, inPlan.mThirdMin, -1.0);
-        polygon = ClipPolygon(polygon, &CrushPoint::mThird, inPlan.mThirdMax, 1.0);
-        if (polygon.mCount == 0)
-            continue;
-        // Depth is linear over the triangle: its least over the clipped part is at a corner of it.
-        for (std::size_t i = 0; i < polygon.mCount; ++i)
-            surface.mFront = std::min(surface.mFront, polygon.mCorners[i].mDepth);
-        for (std::uint32_t v : triangle)
-            surface.mCrushAcross = std::max(surface.mCrushAcross, inPlan.mDirection.dot(positions[v] - rest[v]));
-    }
-    return surface;
-}
-
 } // namespace
 
 double CrushPlan::DisplacementAt(const Vec3& inPoint) const
@@ -279,13 +189,21 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // The impactor meets the body's foremost surface point in the footprint (a low-poly roof may have no
     // vertex there, only a triangle across it); the crush already there is the deepest earlier inward move
     // of the vertices in the footprint, or of the triangles across it when none is.
-    const SurfaceUnderFootprint surface = ScanFootprint(plan, inDeformer);
+    ffd::SurfaceProbe probe;
+    probe.mDirection = plan.mDirection;
+    probe.mSide = plan.mSide;
+    probe.mThird = plan.mThird;
+    probe.mSideMin = plan.mSideMin;
+    probe.mSideMax = plan.mSideMax;
+    probe.mThirdMin = plan.mThirdMin;
+    probe.mThirdMax = plan.mThirdMax;
+    const ffd::SurfaceProbeResult surface = inDeformer.ProbeSurface(probe);
     if (!std::isfinite(surface.mFront))
         return std::nullopt;
     const double front = surface.mFront;
     // A move shallower than the material's smallest dent (the fade of a neighbouring crush) is no crush: it
     // must not waive the no-damage energy G of an undamaged front.
-    double previous = surface.mVerticesInside > 0 ? surface.mCrushInside : surface.mCrushAcross;
+    double previous = surface.mMoved;
     if (!(previous >= std::max(inMaterial.mMinDeformation, 1.0e-9)))
         previous = 0.0;
     plan.mFront = front;

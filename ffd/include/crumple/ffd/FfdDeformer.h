@@ -8,9 +8,11 @@
 #include <crumple/ffd/FfdDeformerSettings.h>
 #include <crumple/ffd/FfdLattice.h>
 #include <crumple/ffd/PointDisplacement.h>
+#include <crumple/ffd/SurfaceProbe.h>
 #include <crumple/ffd/TriangleMesh.h>
 #include <crumple/ffd/VertexRange.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -96,6 +98,13 @@ public:
     /// Smallest control spacing over all zones (m): the scale below which contacts need no interpolation
     double GetMinSpacing() const;
 
+    /// Probes the current (deformed) surface: the foremost point inside a prism along a direction, and how
+    /// far the surface there has moved (SurfaceProbe.h). Exactly the answer of a scan over every vertex and
+    /// triangle, found from the cells whose reach box (CellSurfaceIndex), widened by how far any vertex has
+    /// moved, meets the prism, nearest first: cells behind the front found so far are skipped, and so are
+    /// their vertices once no vertex there can have moved further. A probe that is not finite finds nothing.
+    SurfaceProbeResult ProbeSurface(const SurfaceProbe& inProbe) const;
+
     /// Vertex ranges changed since the last call, then forgets them (for the game's buffer upload).
     std::vector<VertexRange> TakeDirtyRanges();
     /// Vertex ranges changed since the last TakeDirtyRanges, without forgetting them.
@@ -170,6 +179,15 @@ private:
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
+    std::vector<double> mCellBound;             ///< Per cell across zones: the largest displacement of its vertices (m)
+    /// Per zone, per lattice axis, per slice of cells across that axis: the union of the slice's reach boxes
+    /// (rest, body frame, m) and an upper bound of its cells' mCellBound (m), so probes skip whole slices.
+    struct SliceReach
+    {
+        std::array<std::vector<Vec3>, 3> mLow, mHigh;
+        std::array<std::vector<double>, 3> mBound;
+    };
+    std::vector<SliceReach> mSlices;
 
     std::vector<std::uint8_t> mDirty; ///< #V: changed since the last TakeDirtyRanges (publishing: since Publish)
     bool mPublishing = false;

@@ -1,0 +1,253 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/FfdDeformer.h>
+
+#include "CellSurfaceIndex.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+namespace crumple::ffd
+{
+
+namespace
+{
+
+// A point in probe coordinates: across (side, third) and along (depth).
+struct ProbePoint
+{
+    double mSide, mThird, mDepth;
+};
+
+// A polygon of at most 3 + 4 corners (a triangle clipped by a rectangle's four edges). Its corners past
+// mCount are left uninitialised: zeroing them cost more than the clip of most triangles.
+struct SmallPolygon
+{
+    std::array<ProbePoint, 8> mCorners;
+    std::size_t mCount = 0;
+};
+
+// Sutherland-Hodgman: keeps the part of inPolygon where inCoordinate(p) * inSign <= inLimit * inSign.
+SmallPolygon ClipPolygon(const SmallPolygon& inPolygon, double ProbePoint::*inCoordinate, double inLimit, double inSign)
+{
+    SmallPolygon out;
+    for (std::size_t i = 0; i < inPolygon.mCount; ++i)
+    {
+        const ProbePoint& a = inPolygon.mCorners[i];
+        const ProbePoint& b = inPolygon.mCorners[(i + 1) % inPolygon.mCount];
+        const double da = inSign * (a.*inCoordinate - inLimit), db = inSign * (b.*inCoordinate - inLimit);
+        if (da <= 0.0)
+            out.mCorners[out.mCount++] = a;
+        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
+        {
+            const double t = da / (da - db);
+            out.mCorners[out.mCount++] = {a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird),
+                                          a.mDepth + t * (b.mDepth - a.mDepth)};
+        }
+    }
+    return out;
+}
+
+// The running scan: every vertex and triangle handed to it is tested exactly as a scan over the whole mesh
+// would test it, so the order and repetition in which cells hand them over change nothing.
+class ProbeScan
+{
+public:
+    ProbeScan(const SurfaceProbe& inProbe, std::span<const Vec3> inPositions, std::span<const Vec3> inRest,
+              std::span<const std::array<std::uint32_t, 3>> inTriangles)
+        : mProbe(inProbe), mPositions(inPositions), mRest(inRest), mTriangles(inTriangles)
+    {
+    }
+
+    void Vertex(std::uint32_t inVertex)
+    {
+        const Vec3& p = mPositions[inVertex];
+        const ProbePoint c = Project(p);
+        if (Outside(c) != 0)
+            return;
+        mFront = std::min(mFront, c.mDepth);
+        mMoveInside = std::max(mMoveInside, mProbe.mDirection.dot(p - mRest[inVertex]));
+        mVertexInside = true;
+    }
+
+    void Triangle(std::uint32_t inTriangle)
+    {
+        const std::array<std::uint32_t, 3>& triangle = mTriangles[inTriangle];
+        std::array<ProbePoint, 3> corners;
+        std::array<std::uint8_t, 3> outside;
+        for (std::size_t i = 0; i < 3; ++i)
+        {
+            corners[i] = Project(mPositions[triangle[i]]);
+            outside[i] = Outside(corners[i]);
+        }
+        // intent: wholly beyond one edge, or wholly inside (its vertices are scanned as vertices)
+        if ((outside[0] & outside[1] & outside[2]) != 0 || (outside[0] | outside[1] | outside[2]) == 0)
+            return;
+        SmallPolygon polygon;
+        std::copy(corners.begin(), corners.end(), polygon.mCorners.begin());
+        polygon.mCount = 3;
+        polygon = ClipPolygon(polygon, &ProbePoint::mSide, mProbe.mSideMin, -1.0);
+        polygon = ClipPolygon(polygon, &ProbePoint::mSide, mProbe.mSideMax, 1.0);
+        polygon = ClipPolygon(polygon, &ProbePoint::mThird, mProbe.mThirdMin, -1.0);
+        polygon = ClipPolygon(polygon, &ProbePoint::mThird, mProbe.mThirdMax, 1.0);
+        if (polygon.mCount == 0)
+            return;
+        // Depth is linear over the triangle: its least over the clipped part is at a corner of it.
+        for (std::size_t i = 0; i < polygon.mCount; ++i)
+            mFront = std::min(mFront, polygon.mCorners[i].mDepth);
+        for (std::uint32_t v : triangle)
+            mMoveAcross = std::max(mMoveAcross, mProbe.mDirection.dot(mPositions[v] - mRest[v]));
+    }
+
+    double GetFront() const { return mFront; }
+    bool HasVertexInside() const { return mVertexInside; }
+    double GetMoveInside() const { return mMoveInside; }
+
+    SurfaceProbeResult Result() const { return {mFront, mVertexInside, mVertexInside ? mMoveInside : mMoveAcross}; }
+
+private:
+    ProbePoint Project(const Vec3& inPoint) const
+    {
+        return {mProbe.mSide.dot(inPoint), mProbe.mThird.dot(inPoint), mProbe.mDirection.dot(inPoint)};
+    }
+    // Bits 0-3: beyond the prism's low side, high side, low third, high third.
+    std::uint8_t Outside(const ProbePoint& inPoint) const
+    {
+        return static_cast<std::uint8_t>((inPoint.mSide < mProbe.mSideMin ? 1 : 0) | (inPoint.mSide > mProbe.mSideMax ? 2 : 0) |
+                                         (inPoint.mThird < mProbe.mThirdMin ? 4 : 0) | (inPoint.mThird > mProbe.mThirdMax ? 8 : 0));
+    }
+
+    const SurfaceProbe& mProbe;
+    std::span<const Vec3> mPositions;
+    std::span<const Vec3> mRest;
+    std::span<const std::array<std::uint32_t, 3>> mTriangles;
+    double mFront = std::numeric_limits<double>::infinity();
+    bool mVertexInside = false;
+    double mMoveInside = 0.0;
+    double mMoveAcross = 0.0;
+};
+
+// Range of inAxis.p over the box [inLow, inHigh] with every point moved by up to inMoved, widened by a hair
+// for the round-off of the projections.
+std::array<double, 2> BoxRange(const Vec3& inAxis, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+{
+    const Vec3 centre = 0.5 * (inLow + inHigh), half = 0.5 * (inHigh - inLow);
+    const double margin = inMoved + 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff());
+    const double middle = inAxis.dot(centre);
+    const double extent = inAxis.cwiseAbs().dot(half) + margin;
+    return {middle - extent, middle + extent};
+}
+
+// Whether any point of the box, moved by up to inMoved, can lie in the probe's prism.
+bool MeetsPrism(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+{
+    const std::array<double, 2> side = BoxRange(inProbe.mSide, inLow, inHigh, inMoved);
+    const std::array<double, 2> third = BoxRange(inProbe.mThird, inLow, inHigh, inMoved);
+    return !(side[1] < inProbe.mSideMin || side[0] > inProbe.mSideMax || third[1] < inProbe.mThirdMin ||
+             third[0] > inProbe.mThirdMax);
+}
+
+// Whether every point of the box, moved by up to inMoved, lies in the probe's prism (so each triangle in it
+// lies wholly inside, and a scan skips it).
+bool InsidePrism(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+{
+    const std::array<double, 2> side = BoxRange(inProbe.mSide, inLow, inHigh, inMoved);
+    const std::array<double, 2> third = BoxRange(inProbe.mThird, inLow, inHigh, inMoved);
+    return side[0] > inProbe.mSideMin && side[1] < inProbe.mSideMax && third[0] > inProbe.mThirdMin &&
+           third[1] < inProbe.mThirdMax;
+}
+
+// A lower bound of d.p over the box with every point moved by up to inMoved.
+double NearestAlong(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+{
+    return BoxRange(inProbe.mDirection, inLow, inHigh, inMoved)[0];
+}
+
+} // namespace
+
+SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
+{
+    const bool finite = IsFinite(inProbe.mDirection) && IsFinite(inProbe.mSide) && IsFinite(inProbe.mThird) &&
+                        std::isfinite(inProbe.mSideMin) && std::isfinite(inProbe.mSideMax) &&
+                        std::isfinite(inProbe.mThirdMin) && std::isfinite(inProbe.mThirdMax);
+    if (!finite)
+        return {};
+    ProbeScan scan(inProbe, mPositions, mRestMesh.mPositions, mRestMesh.mTriangles);
+
+    // intent: what lies in no zone never moved and has no cell: scan it all
+    for (std::uint32_t v : mSurfaceIndex->LooseVertices())
+        scan.Vertex(v);
+    for (std::uint32_t t : mSurfaceIndex->LooseTriangles())
+        scan.Triangle(t);
+
+    // How far any vertex has moved from its rest position, which lies in its cells' reach boxes.
+    double moved = 0.0;
+    for (double bound : mZoneDisplacementBound)
+        moved = std::max(moved, bound);
+
+    for (std::size_t z = 0; z < mZones.size(); ++z)
+    {
+        const FfdLattice& zone = mZones[z];
+        const std::array<int, 3>& cells = zone.GetCellCount();
+        // intent: slices across the lattice axis nearest the probe's direction, front slice first, so the
+        // front is found early and the cells behind it are skipped
+        const Vec3 along = zone.GetSettings().mAxes.transpose() * inProbe.mDirection;
+        Eigen::Index axis = 0;
+        along.cwiseAbs().maxCoeff(&axis);
+        const bool forward = along[axis] >= 0.0;
+        const std::array<int, 2> others{axis == 0 ? 1 : 0, axis == 2 ? 1 : 2};
+        const int offset = mCellOffset[z];
+        std::array<int, 3> ijk{};
+        const SliceReach& slices = mSlices[z];
+        for (int s = 0; s < cells[static_cast<std::size_t>(axis)]; ++s)
+        {
+            const int slice = forward ? s : cells[static_cast<std::size_t>(axis)] - 1 - s;
+            ijk[static_cast<std::size_t>(axis)] = slice;
+            // intent: the slice as a whole first: it must meet the prism, and lie partly before the front
+            // or hold a vertex that moved further than any inside so far (the cell tests below, at once)
+            const Vec3& slice_low = slices.mLow[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)];
+            const Vec3& slice_high = slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)];
+            if (!(slice_low.x() <= slice_high.x()))
+                continue;
+            if (!MeetsPrism(inProbe, slice_low, slice_high, moved))
+                continue;
+            if (scan.HasVertexInside() && NearestAlong(inProbe, slice_low, slice_high, moved) > scan.GetFront() &&
+                !(slices.mBound[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)] * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+                continue;
+            for (int b = 0; b < cells[static_cast<std::size_t>(others[1])]; ++b)
+                for (int a = 0; a < cells[static_cast<std::size_t>(others[0])]; ++a)
+                {
+                    ijk[static_cast<std::size_t>(others[0])] = a;
+                    ijk[static_cast<std::size_t>(others[1])] = b;
+                    const int cell = offset + zone.CellIndex(ijk);
+                    const Vec3& low = mSurfaceIndex->ReachLow(cell);
+                    const Vec3& high = mSurfaceIndex->ReachHigh(cell);
+                    if (!(low.x() <= high.x()))
+                        continue; // no vertex in the cell
+                    if (!MeetsPrism(inProbe, low, high, moved))
+                        continue;
+                    const double nearest = NearestAlong(inProbe, low, high, moved);
+                    // intent: a cell wholly behind the front adds nothing once a vertex is inside, except a
+                    // vertex that moved further than any inside so far (its bound, with a hair for round-off)
+                    const bool behind = nearest > scan.GetFront() && scan.HasVertexInside();
+                    const auto local = static_cast<std::size_t>(cell - offset);
+                    const std::vector<std::uint32_t>& start = mCellStart[z];
+                    if (behind && !(mCellBound[static_cast<std::size_t>(cell)] * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+                        continue;
+                    for (std::uint32_t i = start[local]; i < start[local + 1]; ++i)
+                        scan.Vertex(mCellVertices[z][i]);
+                    if (behind || InsidePrism(inProbe, low, high, moved))
+                        continue;
+                    for (const CellSurfaceIndex::Entry& entry : mSurfaceIndex->EntriesOf(cell))
+                        scan.Triangle(entry.mTriangle);
+                }
+        }
+    }
+    return scan.Result();
+}
+
+} // namespace crumple::ffd

@@ -1,0 +1,186 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "BoxMesh.h"
+
+#include <crumple/ffd/FfdDeformer.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace crumple;
+using namespace crumple::ffd;
+
+namespace
+{
+
+const Vec3 cHalf(2.0, 0.9, 0.7);
+
+// The reference: every vertex and every triangle of the mesh tested against the prism, as a crush planner
+// would scan it without an index.
+struct Corner
+{
+    double mSide, mThird, mDepth;
+};
+
+std::vector<Corner> Clip(const std::vector<Corner>& inPolygon, double Corner::*inCoordinate, double inLimit, double inSign)
+{
+    std::vector<Corner> out;
+    for (std::size_t i = 0; i < inPolygon.size(); ++i)
+    {
+        const Corner& a = inPolygon[i];
+        const Corner& b = inPolygon[(i + 1) % inPolygon.size()];
+        const double da = inSign * (a.*inCoordinate - inLimit), db = inSign * (b.*inCoordinate - inLimit);
+        if (da <= 0.0)
+            out.push_back(a);
+        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
+        {
+            const double t = da / (da - db);
+            out.push_back({a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird), a.mDepth + t * (b.mDepth - a.mDepth)});
+        }
+    }
+    return out;
+}
+
+SurfaceProbeResult BruteForceProbe(const FfdDeformer& inDeformer, const SurfaceProbe& inProbe)
+{
+    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
+    const std::vector<Vec3>& rest = inDeformer.GetRestMesh().mPositions;
+    auto project = [&](const Vec3& inPoint) {
+        return Corner{inProbe.mSide.dot(inPoint), inProbe.mThird.dot(inPoint), inProbe.mDirection.dot(inPoint)};
+    };
+    auto outside = [&](const Corner& inCorner) {
+        return (inCorner.mSide < inProbe.mSideMin ? 1 : 0) | (inCorner.mSide > inProbe.mSideMax ? 2 : 0) |
+               (inCorner.mThird < inProbe.mThirdMin ? 4 : 0) | (inCorner.mThird > inProbe.mThirdMax ? 8 : 0);
+    };
+    double front = std::numeric_limits<double>::infinity(), inside_move = 0.0, across_move = 0.0;
+    bool inside = false;
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        if (const Corner c = project(positions[v]); outside(c) == 0)
+        {
+            front = std::min(front, c.mDepth);
+            inside_move = std::max(inside_move, inProbe.mDirection.dot(positions[v] - rest[v]));
+            inside = true;
+        }
+    for (const auto& triangle : inDeformer.GetRestMesh().mTriangles)
+    {
+        std::vector<Corner> polygon;
+        int all = 15, any = 0;
+        for (std::uint32_t v : triangle)
+        {
+            polygon.push_back(project(positions[v]));
+            all &= outside(polygon.back());
+            any |= outside(polygon.back());
+        }
+        if (all != 0 || any == 0)
+            continue;
+        polygon = Clip(polygon, &Corner::mSide, inProbe.mSideMin, -1.0);
+        polygon = Clip(polygon, &Corner::mSide, inProbe.mSideMax, 1.0);
+        polygon = Clip(polygon, &Corner::mThird, inProbe.mThirdMin, -1.0);
+        polygon = Clip(polygon, &Corner::mThird, inProbe.mThirdMax, 1.0);
+        if (polygon.empty())
+            continue;
+        for (const Corner& c : polygon)
+            front = std::min(front, c.mDepth);
+        for (std::uint32_t v : triangle)
+            across_move = std::max(across_move, inProbe.mDirection.dot(positions[v] - rest[v]));
+    }
+    return {front, inside, inside ? inside_move : across_move};
+}
+
+// A random probe: a unit direction, axes across it, and a rectangle somewhere over the body (from a sliver
+// to wider than the body).
+SurfaceProbe RandomProbe(std::mt19937_64& ioRandom)
+{
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> centre(-1.2, 1.2), width(0.01, 2.5);
+    SurfaceProbe probe;
+    probe.mDirection = Vec3(normal(ioRandom), normal(ioRandom), normal(ioRandom)).normalized();
+    // Half of the probes along a body axis, as crushes mostly are.
+    if (ioRandom() % 2 == 0)
+        probe.mDirection = Vec3::Unit(static_cast<Eigen::Index>(ioRandom() % 3)) * (ioRandom() % 2 == 0 ? 1.0 : -1.0);
+    Eigen::Index least = 0;
+    probe.mDirection.cwiseAbs().minCoeff(&least);
+    probe.mSide = probe.mDirection.cross(Vec3::Unit(least)).normalized();
+    probe.mThird = probe.mDirection.cross(probe.mSide);
+    const double s = centre(ioRandom), t = centre(ioRandom), ws = width(ioRandom), wt = width(ioRandom);
+    probe.mSideMin = s - 0.5 * ws;
+    probe.mSideMax = s + 0.5 * ws;
+    probe.mThirdMin = t - 0.5 * wt;
+    probe.mThirdMax = t + 0.5 * wt;
+    return probe;
+}
+
+void CheckSameAsBruteForce(const FfdDeformer& inDeformer, std::mt19937_64& ioRandom, int inProbes, int& ioHits)
+{
+    for (int i = 0; i < inProbes; ++i)
+    {
+        const SurfaceProbe probe = RandomProbe(ioRandom);
+        const SurfaceProbeResult indexed = inDeformer.ProbeSurface(probe);
+        const SurfaceProbeResult reference = BruteForceProbe(inDeformer, probe);
+        INFO("probe " << i << ": front " << indexed.mFront << " vs " << reference.mFront << ", moved " << indexed.mMoved
+                      << " vs " << reference.mMoved);
+        // Bit for bit: the same tests on the same values, only fewer of them.
+        REQUIRE(indexed.mFront == reference.mFront);
+        REQUIRE(indexed.mVertexInside == reference.mVertexInside);
+        REQUIRE(indexed.mMoved == reference.mMoved);
+        ioHits += std::isfinite(reference.mFront) ? 1 : 0;
+    }
+}
+
+} // namespace
+
+TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and coarse meshes, dented or not", "[ffd]")
+{
+    std::mt19937_64 random(3);
+    // {segments per axis, split into two zones with a loose rear}: a fine mesh, and a coarse one whose
+    // triangles span many cells (a probe often holds no vertex, only triangles across it).
+    for (const std::array<int, 3>& segments : {std::array<int, 3>{40, 18, 14}, std::array<int, 3>{2, 1, 1}})
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, segments);
+        FfdDeformerSettings settings;
+        const FfdZoneSettings whole = plugin::FitZoneToMesh(mesh, {14, 8, 7}, 0.6);
+        FfdZoneSettings front = whole, middle = whole;
+        front.mLattice.mOrigin.x() = 0.3;
+        front.mLattice.mSize.x() = whole.mLattice.mOrigin.x() + whole.mLattice.mSize.x() - 0.3;
+        middle.mLattice.mOrigin.x() = -1.8;
+        middle.mLattice.mSize.x() = 2.1;
+        settings.mZones = {front, middle};
+        FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+        int hits = 0;
+        CheckSameAsBruteForce(deformer, random, 300, hits);
+
+        // Dents on the front, the sides and the top, then probes again.
+        std::uniform_real_distribution<double> y(-0.85, 0.85), z(-0.65, 0.65), depth(0.05, 0.4);
+        for (int dent = 0; dent < 8; ++dent)
+        {
+            std::vector<PointDisplacement> points;
+            for (int i = 0; i < 3; ++i)
+                points.push_back(dent % 3 == 0   ? PointDisplacement{Vec3(2.0, y(random), z(random)), Vec3(-depth(random), 0.0, 0.0)}
+                                 : dent % 3 == 1 ? PointDisplacement{Vec3(0.8 * y(random), 0.9, z(random)), Vec3(0.0, -depth(random), 0.0)}
+                                                 : PointDisplacement{Vec3(2.0 * y(random), y(random), 0.7), Vec3(0.0, 0.0, -depth(random))});
+            REQUIRE(deformer.ApplyDent(points));
+            CheckSameAsBruteForce(deformer, random, 100, hits);
+        }
+        CHECK(hits > 300); // most probes meet the body: the comparison is not over empty answers
+    }
+}
+
+TEST_CASE("ProbeSurface finds nothing for a probe that is not finite", "[ffd]")
+{
+    TriangleMesh mesh = common::MakeBoxMesh(cHalf, {8, 4, 4});
+    FfdDeformerSettings settings;
+    settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {8, 6, 6}, 0.5));
+    const FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    SurfaceProbe probe;
+    probe.mSideMin = probe.mThirdMin = -1.0;
+    probe.mSideMax = probe.mThirdMax = 1.0;
+    CHECK(deformer.ProbeSurface(probe).mFront == -2.0); // the rear face, seen along +x
+    probe.mSideMax = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isinf(deformer.ProbeSurface(probe).mFront));
+}
