@@ -91,6 +91,39 @@ std::optional<Footprint> FootprintOf(const Collision& inCollision, ECollisionSid
     return footprint;
 }
 
+// The controls a of lattice row (b, c) that the plan's field can reach, as an index range (empty: low >
+// high). The field is nonzero only where d.p < s0 + f + L and the side and third coordinates lie within the
+// footprint widened by f + ramp (CrushPlan::DisplacementAt); a control is at its rest position r(a) = r0 + a e
+// moved by at most inMoved, so each of the five bounds holds on an interval of a. A hair on each bound and one
+// index of slack on each side absorb the round-off; the field itself decides inside the range.
+std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattice& inZone, int inB, int inC, double inMoved)
+{
+    const int last = inZone.GetSettings().mControlCount[0] - 1;
+    const Vec3 r0 = inZone.RestControlPosition(0, inB, inC);
+    const Vec3 e = inZone.RestControlPosition(1, inB, inC) - r0;
+    double low = 0.0, high = static_cast<double>(last);
+    // u.r(a) < inLimit, widened by the move
+    auto below = [&](const Vec3& inU, double inLimit) {
+        const double start = inU.dot(r0), slope = inU.dot(e);
+        const double limit = inLimit + inMoved + 1.0e-9 * (1.0 + std::abs(inLimit) + std::abs(start));
+        if (slope > 0.0)
+            high = std::min(high, (limit - start) / slope);
+        else if (slope < 0.0)
+            low = std::max(low, (limit - start) / slope);
+        else if (!(start < limit))
+            high = -1.0;
+    };
+    const double across = inPlan.mFlatLayer + inPlan.mRamp;
+    below(inPlan.mDirection, inPlan.mFront + inPlan.mFlatLayer + inPlan.mZoneLength);
+    below(inPlan.mSide, inPlan.mSideMax + across);
+    below(-inPlan.mSide, -(inPlan.mSideMin - across));
+    below(inPlan.mThird, inPlan.mThirdMax + across);
+    below(-inPlan.mThird, -(inPlan.mThirdMin - across));
+    if (!(low <= high)) // empty, or NaN from a degenerate plan: the whole row, as the field decides
+        return low > high ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, last};
+    return {std::max(static_cast<int>(std::floor(low)) - 1, 0), std::min(static_cast<int>(std::ceil(high)) + 1, last)};
+}
+
 } // namespace
 
 double CrushPlan::DisplacementAt(const Vec3& inPoint) const
@@ -242,11 +275,18 @@ ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::F
         const ffd::FfdLattice& zone = ioDeformer.GetZones()[z];
         const std::array<int, 3>& count = zone.GetSettings().mControlCount;
         const std::vector<Vec3>& displacements = zone.GetControlDisplacements();
+        // intent: how far any control has moved, to bound where the field can reach a control
+        double moved2 = 0.0;
+        for (const Vec3& displacement : displacements)
+            moved2 = std::max(moved2, displacement.squaredNorm());
+        const double moved = std::sqrt(moved2);
         std::vector<int> controls;
         std::vector<double> magnitudes;
         for (int c = 0; c < count[2]; ++c)
             for (int b = 0; b < count[1]; ++b)
-                for (int a = 0; a < count[0]; ++a)
+            {
+                const std::array<int, 2> range = FieldRangeOnRow(inPlan, zone, b, c, moved);
+                for (int a = range[0]; a <= range[1]; ++a)
                 {
                     const int index = zone.ControlIndex(a, b, c);
                     const Vec3 position = zone.RestControlPosition(a, b, c) + displacements[static_cast<std::size_t>(index)];
@@ -257,6 +297,7 @@ ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::F
                         magnitudes.push_back(magnitude);
                     }
                 }
+            }
         if (controls.empty())
             continue;
         // ControlIndex runs a fastest, so the indices are already ascending.
