@@ -34,48 +34,62 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
         return count;
     };
 
-    // intent: triangle entries per cell (counting sort keeps ascending triangle order inside a cell)
+    // intent: each triangle's cells once (-1 past its count); the loose ones, in no zone, apart
+    std::vector<std::array<int, 3>> triangle_cells(inMesh.mTriangles.size());
     index.mEntryStart.assign(cells + 1, 0);
-    std::array<int, 3> own{};
-    for (const auto& triangle : inMesh.mTriangles)
+    for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
     {
-        const int count = distinct_cells(triangle, own);
+        std::array<int, 3>& own = triangle_cells[t];
+        own = {-1, -1, -1};
+        const int count = distinct_cells(inMesh.mTriangles[t], own);
+        if (count == 0)
+            index.mLooseTriangles.push_back(t);
         for (int i = 0; i < count; ++i)
             ++index.mEntryStart[static_cast<std::size_t>(own[static_cast<std::size_t>(i)]) + 1];
     }
+
+    // intent: triangle entries per cell (counting sort keeps ascending triangle order inside a cell)
     for (std::size_t c = 0; c < cells; ++c)
         index.mEntryStart[c + 1] += index.mEntryStart[c];
     index.mEntries.resize(index.mEntryStart[cells]);
     std::vector<std::uint32_t> fill(index.mEntryStart.begin(), index.mEntryStart.end() - 1);
     for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
     {
-        const int count = distinct_cells(inMesh.mTriangles[t], own);
-        for (int i = 0; i < count; ++i)
+        const std::array<int, 3>& own = triangle_cells[t];
+        for (std::size_t i = 0; i < 3 && own[i] >= 0; ++i)
         {
             Entry entry{t, {-1, -1}};
-            for (int j = 0; j < i; ++j)
-                entry.mEarlierCell[j] = own[static_cast<std::size_t>(j)];
-            index.mEntries[fill[static_cast<std::size_t>(own[static_cast<std::size_t>(i)])]++] = entry;
+            for (std::size_t j = 0; j < i; ++j)
+                entry.mEarlierCell[j] = own[j];
+            index.mEntries[fill[static_cast<std::size_t>(own[i])]++] = entry;
         }
     }
 
-    // intent: ring vertices per cell: corners of the cell's triangles that lie in another cell (or in no zone)
-    std::vector<std::vector<std::uint32_t>> ring(cells);
+    // intent: ring vertices per cell: corners of the cell's triangles that lie in another cell (or in no
+    // zone); counted, filled, then sorted and made unique inside each cell's run in place
+    auto for_each_ring = [&](auto&& inVisit) {
+        for (std::size_t c = 0; c < cells; ++c)
+            for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
+                for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
+                    if (inVertexCell[v] != static_cast<int>(c))
+                        inVisit(c, v);
+    };
+    std::vector<std::uint32_t> ring_start(cells + 1, 0);
+    for_each_ring([&](std::size_t inCell, std::uint32_t) { ++ring_start[inCell + 1]; });
+    for (std::size_t c = 0; c < cells; ++c)
+        ring_start[c + 1] += ring_start[c];
+    std::vector<std::uint32_t> ring(ring_start[cells]);
+    std::vector<std::uint32_t> ring_fill(ring_start.begin(), ring_start.end() - 1);
+    for_each_ring([&](std::size_t inCell, std::uint32_t inVertex) { ring[ring_fill[inCell]++] = inVertex; });
+    index.mRingStart.assign(cells + 1, 0);
+    index.mRing.reserve(ring.size());
     for (std::size_t c = 0; c < cells; ++c)
     {
-        for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
-            for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
-                if (inVertexCell[v] != static_cast<int>(c))
-                    ring[c].push_back(v);
-        std::sort(ring[c].begin(), ring[c].end());
-        ring[c].erase(std::unique(ring[c].begin(), ring[c].end()), ring[c].end());
+        const auto begin = ring.begin() + ring_start[c], end = ring.begin() + ring_start[c + 1];
+        std::sort(begin, end);
+        index.mRing.insert(index.mRing.end(), begin, std::unique(begin, end));
+        index.mRingStart[c + 1] = static_cast<std::uint32_t>(index.mRing.size());
     }
-    index.mRingStart.assign(cells + 1, 0);
-    for (std::size_t c = 0; c < cells; ++c)
-        index.mRingStart[c + 1] = index.mRingStart[c] + static_cast<std::uint32_t>(ring[c].size());
-    index.mRing.reserve(index.mRingStart[cells]);
-    for (const std::vector<std::uint32_t>& vertices : ring)
-        index.mRing.insert(index.mRing.end(), vertices.begin(), vertices.end());
 
     // intent: reach boxes from each cell's vertices and its triangles' corners; loose vertices and triangles
     constexpr double cInf = std::numeric_limits<double>::infinity();
@@ -99,9 +113,6 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
                 index.mReachLow[c] = index.mReachLow[c].cwiseMin(inMesh.mPositions[v]);
                 index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(inMesh.mPositions[v]);
             }
-    for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
-        if (distinct_cells(inMesh.mTriangles[t], own) == 0)
-            index.mLooseTriangles.push_back(t);
     return index;
 }
 
