@@ -188,11 +188,17 @@ const DeformableObject* DamageWorld::GetObject(ObjectId inObject) const
     return &mObjects[inObject.mValue].mObject.front();
 }
 
-DeformableObject* DamageWorld::GetObject(ObjectId inObject)
+DeformableObject* DamageWorld::GetMutableObject(ObjectId inObject)
 {
     if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty())
         return nullptr;
     return &mObjects[inObject.mValue].mObject.front();
+}
+
+std::vector<ffd::VertexRange> DamageWorld::TakeDirtyRanges(ObjectId inObject)
+{
+    DeformableObject* object = GetMutableObject(inObject);
+    return object != nullptr ? object->GetDeformer().TakeDirtyRanges() : std::vector<ffd::VertexRange>{};
 }
 
 BodyId DamageWorld::GetObjectBody(ObjectId inObject) const
@@ -545,7 +551,7 @@ Status DamageWorld::SetDamageState(const DamageState& inState)
     }
     for (std::size_t i = 0; i < ids.size(); ++i)
     {
-        Status applied = GetObject(ids[i])->GetDeformer().SetControlDisplacements(inState.mObjects[i].mZones);
+        Status applied = GetMutableObject(ids[i])->GetDeformer().SetControlDisplacements(inState.mObjects[i].mZones);
         CRUMPLE_ASSERT(applied.IsValid(), "validated damage state was refused");
         (void)applied;
     }

@@ -8,6 +8,8 @@
 
 #include <cstring>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -302,4 +304,35 @@ TEST_CASE("A pair that parts and hits again is solved from the engine's velociti
     for (const Collision& collision : listener.mCollisions)
         total += collision.TotalImpulse();
     CHECK(total == Approx((1.0 + e) * fixture.mMass * 18.0).epsilon(1.0e-9));
+}
+
+TEST_CASE("The world lends its objects read-only and hands out their changed vertex ranges", "[plugin]")
+{
+    // Every dent of a world's object goes through collisions (or LoadDamage), so listeners and recorders see
+    // all of it: the game gets no mutable object, only the ranges to upload.
+    static_assert(std::is_const_v<std::remove_pointer_t<decltype(std::declval<DamageWorld&>().GetObject(ObjectId{}))>>,
+                  "DamageWorld::GetObject must not give a game a mutable object");
+    WorldFixture fixture;
+    (void)fixture.mWorld.TakeDirtyRanges(fixture.mCarObject); // creation is not a change to upload
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+    fixture.mWorld.Flush();
+    const std::vector<ffd::VertexRange> ranges = fixture.mWorld.TakeDirtyRanges(fixture.mCarObject);
+    REQUIRE_FALSE(ranges.empty());
+    // The ranges cover every vertex the dent moved.
+    const ffd::FfdDeformer& deformer = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
+    std::vector<bool> covered(deformer.GetPositions().size(), false);
+    for (const ffd::VertexRange& range : ranges)
+        for (std::uint32_t v = range.mBegin; v < range.mEnd; ++v)
+            covered[v] = true;
+    int moved = 0;
+    for (std::uint32_t v = 0; v < deformer.GetPositions().size(); ++v)
+        if (deformer.GetPositions()[v] != deformer.GetRestMesh().mPositions[v])
+        {
+            ++moved;
+            CHECK(covered[v]);
+        }
+    CHECK(moved > 0);
+    CHECK(fixture.mWorld.TakeDirtyRanges(fixture.mCarObject).empty()); // taken once
+    CHECK(fixture.mWorld.TakeDirtyRanges(ObjectId{}).empty());         // an unknown id: nothing
 }

@@ -82,7 +82,8 @@ TEST_CASE("Replaying dispatched collisions on fresh objects reproduces the live 
     REQUIRE_FALSE(recorder.mCollisions.empty());
 
     WallCrashScene fresh = WallCrashScene::Create(settings).Get();
-    DeformableObject& replayed = *fresh.GetWorld().GetObject(fresh.GetCarObject());
+    // A copy of the fresh world's car, dented by hand outside any world.
+    DeformableObject replayed = *fresh.GetWorld().GetObject(fresh.GetCarObject());
     for (const Collision& collision : recorder.mCollisions)
         replayed.ApplyCollision(collision, collision.mBodyA == fresh.GetCar() ? ECollisionSide::A : ECollisionSide::B);
     CHECK(SameBytes(replayed.GetDeformer().GetPositions(),

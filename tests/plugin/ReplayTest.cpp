@@ -9,6 +9,7 @@
 #include <crumple/base/Crc32.h>
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
+#include <crumple/plugin/DamageState.h>
 #include <crumple/plugin/ReplayDamage.h>
 
 #include <catch2/catch.hpp>
@@ -36,9 +37,19 @@ std::vector<Vec3> RecordCrash(const std::filesystem::path& inPath, bool inDentBe
     WallCrashScene scene = WallCrashScene::Create(settings).Get();
     if (inDentBeforeRecording)
     {
-        // Damage the car's rear before recording starts: the recording must carry it.
-        DeformableObject& car = *scene.GetWorld().GetObject(scene.GetCarObject());
+        // Damage the car's rear before recording starts (a saved damage state loaded into the world, the way
+        // a game restores a damaged car): the recording must carry it.
+        DeformableObject car = *scene.GetWorld().GetObject(scene.GetCarObject());
         REQUIRE(car.GetDeformer().ApplyDent(std::vector<ffd::PointDisplacement>{{Vec3(-2.1, 0.0, 0.0), Vec3(0.05, 0.0, 0.0)}}));
+        DamageState state = DecodeDamageState(scene.GetWorld().SaveDamage()).Get();
+        for (ObjectDamage& object : state.mObjects)
+            if (object.mObject == scene.GetCarObject())
+            {
+                object.mZones.clear();
+                for (const ffd::FfdLattice& zone : car.GetDeformer().GetZones())
+                    object.mZones.push_back(zone.GetControlDisplacements());
+            }
+        REQUIRE(scene.GetWorld().LoadDamage(EncodeDamageState(state)));
     }
     std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(inPath, scene.GetWorld()).Get());
     // A second deformable object created mid-run, on the wall, is recorded before its first collision.

@@ -61,9 +61,12 @@ public:
 
     /// Attaches a deformable object to a body; the object's mesh and zones are in that body's frame.
     Result<ObjectId> CreateDeformableObject(BodyId inBody, const DeformableObjectSettings& inSettings);
-    /// The object, or nullptr for an invalid or removed id.
+    /// The object, or nullptr for an invalid or removed id. Read-only: damage reaches an object of the world
+    /// only through collisions and LoadDamage, so every dent passes the listeners and the recorder.
     const DeformableObject* GetObject(ObjectId inObject) const;
-    DeformableObject* GetObject(ObjectId inObject);
+    /// The vertex ranges of an object's mesh that changed since the last call (for the game's buffer upload),
+    /// then forgets them; empty for an invalid or removed id. See ffd::FfdDeformer::TakeDirtyRanges.
+    std::vector<ffd::VertexRange> TakeDirtyRanges(ObjectId inObject);
     /// The body an object is attached to.
     BodyId GetObjectBody(ObjectId inObject) const;
     /// Ids of all live objects, ascending.
@@ -112,6 +115,9 @@ public:
     std::size_t GetOpenCollisionCount() const { return mGrouper.GetOpenCount(); }
 
 private:
+    // The object for the world's own changes (dispatch, reset, load), or nullptr.
+    DeformableObject* GetMutableObject(ObjectId inObject);
+
     DamageWorld(const DamageWorldSettings& inSettings, CollisionGrouper inGrouper)
         : mSettings(inSettings), mGrouper(std::move(inGrouper)) {}
 
