@@ -321,3 +321,69 @@ TEST_CASE("Bullet: a btRaycastVehicle driving on flat ground gets no damage", "[
     bullet.mWorld.removeRigidBody(&chassis);
     bullet.mWorld.removeRigidBody(&ground);
 }
+
+TEST_CASE("Bullet: a convex body the adapter makes has the settings' mass, inertia, pose and velocities, and goes with RemoveBody",
+          "[bullet]")
+{
+    BulletWorld world;
+    world.mWorld.setGravity(btVector3(0, 0, 0));
+    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, damage).Get());
+
+    // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.
+    ConvexBodySettings settings;
+    settings.mMass = 12.0;
+    settings.mPrincipalInertia = Vec3(0.1 * 0.1 + 0.2 * 0.2, 0.6 * 0.6 + 0.2 * 0.2, 0.6 * 0.6 + 0.1 * 0.1) * (12.0 / 12.0);
+    settings.mOrientation = Eigen::AngleAxisd(0.9, Vec3(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
+    settings.mPosition = Vec3(2.0, 1.0, 0.5);
+    settings.mLinearVelocity = Vec3(3.0, -1.0, 0.5);
+    settings.mAngularVelocity = Vec3(0.5, 2.0, -1.0);
+    for (double x : {-0.3, 0.3})
+        for (double y : {-0.05, 0.05})
+            for (double z : {-0.1, 0.1})
+                settings.mHullPoints.push_back(Vec3(x, y, z));
+    const int objects = world.mWorld.getNumCollisionObjects();
+    const BodyId id = adapter->CreateConvexBody(settings).Get();
+    btRigidBody* body = adapter->GetConvexBody(id);
+    REQUIRE(body != nullptr);
+    CHECK(adapter->FindBody(*body) == id);
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 1);
+
+    // Bullet keeps single precision here: compare to float round-off.
+    constexpr double cFloat = 1.0e-5;
+    CHECK(std::abs(1.0 / body->getInvMass() - settings.mMass) <= cFloat * settings.mMass);
+    const btMatrix3x3& inverse = body->getInvInertiaTensorWorld();
+    const Mat3 expected = settings.WorldInertia().inverse();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            CHECK(std::abs(double(inverse[i][j]) - expected(i, j)) <= cFloat * expected.norm());
+    const btVector3 position = body->getCenterOfMassPosition();
+    CHECK((Vec3(position.x(), position.y(), position.z()) - settings.mPosition).norm() <= cFloat);
+    const btVector3 v = body->getLinearVelocity(), w = body->getAngularVelocity();
+    CHECK((Vec3(v.x(), v.y(), v.z()) - settings.mLinearVelocity).norm() <= cFloat * settings.mLinearVelocity.norm());
+    CHECK((Vec3(w.x(), w.y(), w.z()) - settings.mAngularVelocity).norm() <= cFloat * settings.mAngularVelocity.norm());
+    // The damage world knows it with the same mass.
+    REQUIRE(damage.GetBodyState(id) != nullptr);
+    CHECK(std::abs(damage.GetBodyState(id)->mMass - settings.mMass) <= cFloat * settings.mMass);
+
+    // Free flight: its momentum stays.
+    for (int step = 0; step < 30; ++step)
+        world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+    const btVector3 after = body->getLinearVelocity();
+    CHECK((Vec3(after.x(), after.y(), after.z()) - settings.mLinearVelocity).norm() <= cFloat * settings.mLinearVelocity.norm());
+
+    // Bad settings are refused and add nothing; RemoveBody takes the body out of both worlds.
+    ConvexBodySettings flat = settings;
+    for (Vec3& point : flat.mHullPoints)
+        point.z() = 0.0;
+    CHECK_FALSE(adapter->CreateConvexBody(flat));
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 1);
+    REQUIRE(adapter->RemoveBody(*body));
+    CHECK(adapter->GetConvexBody(id) == nullptr);
+    CHECK(damage.GetBodyState(id) == nullptr);
+    CHECK(world.mWorld.getNumCollisionObjects() == objects);
+    // One left for the adapter's destructor to take out of the world.
+    REQUIRE(adapter->CreateConvexBody(settings));
+    adapter.reset();
+    CHECK(world.mWorld.getNumCollisionObjects() == objects);
+}

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -186,4 +187,81 @@ TEST_CASE("ODE: a recorded crash replays headless to bitwise identical meshes", 
     REQUIRE(objects);
     REQUIRE(objects.Get().size() == 1);
     CHECK(objects.Get()[0].mDeformable.GetDeformer().GetPositions() == live.mPositions);
+}
+
+TEST_CASE("ODE: a convex body the adapter makes has the settings' mass, inertia, pose and velocities, and goes with RemoveBody",
+          "[ode]")
+{
+    dInitODE2(0);
+    dWorldID world = dWorldCreate();
+    dSpaceID space = dHashSpaceCreate(nullptr);
+    {
+        DamageWorld damage = DamageWorld::Create().Get();
+        std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
+
+        // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.
+        ConvexBodySettings settings;
+        settings.mMass = 12.0;
+        settings.mPrincipalInertia = Vec3(0.1 * 0.1 + 0.2 * 0.2, 0.6 * 0.6 + 0.2 * 0.2, 0.6 * 0.6 + 0.1 * 0.1);
+        settings.mOrientation = Eigen::AngleAxisd(0.9, Vec3(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
+        settings.mPosition = Vec3(2.0, 1.0, 0.5);
+        settings.mLinearVelocity = Vec3(3.0, -1.0, 0.5);
+        settings.mAngularVelocity = Vec3(0.5, 2.0, -1.0);
+        for (double x : {-0.3, 0.3})
+            for (double y : {-0.05, 0.05})
+                for (double z : {0.0, 0.2}) // off the centre of mass: the box geom sits where the points are
+                    settings.mHullPoints.push_back(Vec3(x, y, z - 0.1 + 0.02));
+        const BodyId id = adapter->CreateConvexBody(world, space, settings).Get();
+        dBodyID body = adapter->GetConvexBody(id);
+        REQUIRE(body != nullptr);
+        CHECK(adapter->FindBody(body) == id);
+        CHECK(dSpaceGetNumGeoms(space) == 1);
+
+        dMass mass;
+        dBodyGetMass(body, &mass);
+        CHECK(std::abs(mass.mass - settings.mMass) <= 1.0e-12 * settings.mMass);
+        CHECK(std::abs(mass.c[0]) + std::abs(mass.c[1]) + std::abs(mass.c[2]) == 0.0);
+        const Mat3 local = settings.mOrientation.transpose() * settings.WorldInertia() * settings.mOrientation;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                CHECK(std::abs(mass.I[4 * i + j] - local(i, j)) <= 1.0e-12 * local.norm());
+        const dReal* position = dBodyGetPosition(body);
+        const dReal* rotation = dBodyGetRotation(body);
+        CHECK((Vec3(position[0], position[1], position[2]) - settings.mPosition).norm() <= 1.0e-12);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                CHECK(std::abs(rotation[4 * i + j] - settings.mOrientation(i, j)) <= 1.0e-9);
+        const dReal* v = dBodyGetLinearVel(body);
+        const dReal* w = dBodyGetAngularVel(body);
+        CHECK((Vec3(v[0], v[1], v[2]) - settings.mLinearVelocity).norm() <= 1.0e-12);
+        CHECK((Vec3(w[0], w[1], w[2]) - settings.mAngularVelocity).norm() <= 1.0e-12);
+        // The box geom bounds the points along the body axes, centred on them (0.02 m above the centre of mass).
+        dGeomID geom = dSpaceGetGeom(space, 0);
+        dVector3 lengths;
+        dGeomBoxGetLengths(geom, lengths);
+        CHECK(std::abs(lengths[0] - 0.6) <= 1.0e-12);
+        CHECK(std::abs(lengths[2] - 0.2) <= 1.0e-12);
+        const dReal* offset = dGeomGetOffsetPosition(geom);
+        CHECK(std::abs(offset[2] - 0.02) <= 1.0e-12);
+        REQUIRE(damage.GetBodyState(id) != nullptr);
+        CHECK(std::abs(damage.GetBodyState(id)->mMass - settings.mMass) <= 1.0e-12 * settings.mMass);
+
+        // Bad settings are refused and add nothing; RemoveBody destroys body and geom.
+        ConvexBodySettings heavy = settings;
+        heavy.mMass = std::numeric_limits<double>::quiet_NaN();
+        CHECK_FALSE(adapter->CreateConvexBody(world, space, heavy));
+        CHECK_FALSE(adapter->CreateConvexBody(nullptr, space, settings));
+        CHECK(dSpaceGetNumGeoms(space) == 1);
+        REQUIRE(adapter->RemoveBody(body));
+        CHECK(adapter->GetConvexBody(id) == nullptr);
+        CHECK(damage.GetBodyState(id) == nullptr);
+        CHECK(dSpaceGetNumGeoms(space) == 0);
+        // One left for the adapter's destructor.
+        REQUIRE(adapter->CreateConvexBody(world, space, settings));
+        adapter.reset();
+        CHECK(dSpaceGetNumGeoms(space) == 0);
+    }
+    dSpaceDestroy(space);
+    dWorldDestroy(world);
+    dCloseODE();
 }

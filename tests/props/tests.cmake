@@ -5,6 +5,7 @@
 crumple_add_test(props
     props/CollisionImpulsesTest.cpp
     props/FemPropTest.cpp
+    props/FragmentBodyTest.cpp
     props/PropRecordingTest.cpp
     props/PropWorldTest.cpp
     LINK crumple::props crumple_common_fem)

@@ -49,6 +49,9 @@ BulletAdapter::BulletAdapter(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDa
 
 BulletAdapter::~BulletAdapter()
 {
+    // intent: the bodies this adapter made leave the world before they are deleted
+    for (OwnedBody& owned : mOwned)
+        mWorld.removeRigidBody(owned.mRigidBody.get());
     mWorld.setInternalTickCallback(mPreviousPreTick, mPreviousUserInfo, true);
     mWorld.setInternalTickCallback(mPreviousPostTick, mPreviousUserInfo, false);
     for (FollowingHull& hull : mHulls)
@@ -83,7 +86,64 @@ Status BulletAdapter::RemoveBody(const btCollisionObject& inObject)
     for (FollowingHull& hull : mHulls)
         if (hull.mOwner == &inObject)
             hull.mOwner = nullptr;
+    // intent: a body this adapter made leaves the world and is deleted (inObject dies here)
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == body; });
+    if (owned != mOwned.end())
+    {
+        mWorld.removeRigidBody(owned->mRigidBody.get());
+        mOwned.erase(owned);
+    }
     return Status::Ok();
+}
+
+Result<BodyId> BulletAdapter::CreateConvexBody(const plugin::ConvexBodySettings& inSettings)
+{
+    if (Status valid = plugin::ValidateConvexBodySettings(inSettings); !valid)
+        return valid.GetError();
+    OwnedBody owned;
+    // intent: the hull, with a margin Bullet adds outside it kept small against the hull's size
+    owned.mShape = std::make_unique<btConvexHullShape>();
+    Vec3 low = inSettings.mHullPoints[0], high = low;
+    for (const Vec3& p : inSettings.mHullPoints)
+    {
+        owned.mShape->addPoint(btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())), false);
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    owned.mShape->setMargin(btScalar(std::min(0.01, 0.05 * (high - low).minCoeff())));
+    owned.mShape->recalcLocalAabb();
+
+    const Mat3& r = inSettings.mOrientation;
+    const btMatrix3x3 basis(btScalar(r(0, 0)), btScalar(r(0, 1)), btScalar(r(0, 2)), btScalar(r(1, 0)), btScalar(r(1, 1)),
+                            btScalar(r(1, 2)), btScalar(r(2, 0)), btScalar(r(2, 1)), btScalar(r(2, 2)));
+    const Vec3& x = inSettings.mPosition;
+    owned.mMotion = std::make_unique<btDefaultMotionState>(
+        btTransform(basis, btVector3(btScalar(x.x()), btScalar(x.y()), btScalar(x.z()))));
+    const Vec3& inertia = inSettings.mPrincipalInertia;
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), owned.mMotion.get(), owned.mShape.get(),
+                                                  btVector3(btScalar(inertia.x()), btScalar(inertia.y()), btScalar(inertia.z())));
+    owned.mRigidBody = std::make_unique<btRigidBody>(info);
+    const Vec3& v = inSettings.mLinearVelocity;
+    const Vec3& w = inSettings.mAngularVelocity;
+    owned.mRigidBody->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())));
+    owned.mRigidBody->setAngularVelocity(btVector3(btScalar(w.x()), btScalar(w.y()), btScalar(w.z())));
+    mWorld.addRigidBody(owned.mRigidBody.get());
+
+    Result<BodyId> body = AddBody(*owned.mRigidBody);
+    if (!body)
+    {
+        mWorld.removeRigidBody(owned.mRigidBody.get());
+        return body;
+    }
+    owned.mBody = body.Get();
+    mOwned.push_back(std::move(owned));
+    return body;
+}
+
+btRigidBody* BulletAdapter::GetConvexBody(BodyId inBody) const
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    return owned != mOwned.end() ? owned->mRigidBody.get() : nullptr;
 }
 
 BodyId BulletAdapter::FindBody(const btCollisionObject& inObject) const

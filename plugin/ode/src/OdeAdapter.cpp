@@ -44,6 +44,73 @@ Result<BodyId> OdeAdapter::AddStaticGeom(dGeomID inGeom)
     return body;
 }
 
+OdeAdapter::~OdeAdapter()
+{
+    for (const OwnedBody& owned : mOwned)
+    {
+        dGeomDestroy(owned.mGeom);
+        dBodyDestroy(owned.mOdeBody);
+    }
+}
+
+Result<BodyId> OdeAdapter::CreateConvexBody(dWorldID inWorld, dSpaceID inSpace, const ConvexBodySettings& inSettings)
+{
+    if (inWorld == nullptr || inSpace == nullptr)
+        return MakeError(EError::InvalidArgument, "CreateConvexBody: null dWorldID or dSpaceID");
+    if (Status valid = ValidateConvexBodySettings(inSettings); !valid)
+        return valid.GetError();
+    OwnedBody owned;
+    owned.mOdeBody = dBodyCreate(inWorld);
+    dMass mass;
+    const Vec3& inertia = inSettings.mPrincipalInertia;
+    dMassSetParameters(&mass, inSettings.mMass, 0.0, 0.0, 0.0, inertia.x(), inertia.y(), inertia.z(), 0.0, 0.0, 0.0);
+    dBodySetMass(owned.mOdeBody, &mass);
+    const Vec3& x = inSettings.mPosition;
+    dBodySetPosition(owned.mOdeBody, x.x(), x.y(), x.z());
+    dMatrix3 rotation;
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j)
+            rotation[4 * i + j] = inSettings.mOrientation(i, j);
+        rotation[4 * i + 3] = 0.0;
+    }
+    dBodySetRotation(owned.mOdeBody, rotation);
+    const Vec3& v = inSettings.mLinearVelocity;
+    const Vec3& w = inSettings.mAngularVelocity;
+    dBodySetLinearVel(owned.mOdeBody, v.x(), v.y(), v.z());
+    dBodySetAngularVel(owned.mOdeBody, w.x(), w.y(), w.z());
+    // intent: the hull's bounding box along the body (principal) axes, centred where the points are
+    Vec3 low = inSettings.mHullPoints[0], high = low;
+    for (const Vec3& p : inSettings.mHullPoints)
+    {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    const Vec3 size = high - low, centre = 0.5 * (low + high);
+    owned.mGeom = dCreateBox(inSpace, size.x(), size.y(), size.z());
+    dGeomSetBody(owned.mGeom, owned.mOdeBody);
+    dGeomSetOffsetPosition(owned.mGeom, centre.x(), centre.y(), centre.z());
+
+    Result<BodyId> body = AddBody(owned.mOdeBody);
+    if (!body)
+    {
+        dGeomDestroy(owned.mGeom);
+        dBodyDestroy(owned.mOdeBody);
+        return body;
+    }
+    owned.mBody = body.Get();
+    mOwned.push_back(owned);
+    return body;
+}
+
+dBodyID OdeAdapter::GetConvexBody(BodyId inBody) const
+{
+    for (const OwnedBody& owned : mOwned)
+        if (owned.mBody == inBody)
+            return owned.mOdeBody;
+    return nullptr;
+}
+
 Status OdeAdapter::RemoveBody(dBodyID inBody)
 {
     const auto found = mBodies.find(inBody);
@@ -55,6 +122,15 @@ Status OdeAdapter::RemoveBody(dBodyID inBody)
     mBodies.erase(found);
     // Contacts buffered this step with the body would make the damage world refuse the whole step.
     std::erase_if(mEvents, [&](const ContactEvent& e) { return e.mBodyA == body || e.mBodyB == body; });
+    // intent: a body this adapter made is destroyed with its geom (inBody dies here)
+    for (auto owned = mOwned.begin(); owned != mOwned.end(); ++owned)
+        if (owned->mBody == body)
+        {
+            dGeomDestroy(owned->mGeom);
+            dBodyDestroy(owned->mOdeBody);
+            mOwned.erase(owned);
+            break;
+        }
     return Status::Ok();
 }
 

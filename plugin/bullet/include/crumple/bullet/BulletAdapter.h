@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Result.h>
+#include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
 
 #include <LinearMath/btScalar.h>
@@ -14,6 +15,8 @@
 
 class btCollisionObject;
 class btConvexHullShape;
+class btDefaultMotionState;
+class btRigidBody;
 class btDiscreteDynamicsWorld;
 class btDynamicsWorld;
 
@@ -70,6 +73,16 @@ public:
     /// to the deformed vertices, refreshes its bounds and the body's broadphase entry.
     Result<btConvexHullShape*> CreateFollowingHull(plugin::ObjectId inObject, int inMaxPoints = 256);
 
+    /// Creates a rigid body for Crumple (debris: a prop's loose fragment, props::FragmentBody) and registers it
+    /// with the damage world: a btRigidBody with the settings' mass, principal inertia (its local inertia), pose
+    /// and velocities, and a btConvexHullShape of the hull points with a collision margin of at most 1 cm (and
+    /// at most a tenth of the hull's smallest half extent: Bullet inflates convex shapes by their margin). It
+    /// is added to the world with the default group and mask; friction and restitution are Bullet's defaults
+    /// (set them on GetConvexBody). The adapter owns it: RemoveBody takes it out of the world and deletes it,
+    /// and so does the adapter's destructor for those left. Refused, creating nothing, on invalid settings.
+    Result<plugin::BodyId> CreateConvexBody(const plugin::ConvexBodySettings& inSettings);
+    /// The Bullet body of a convex body this adapter created, nullptr for any other id
+    btRigidBody* GetConvexBody(plugin::BodyId inBody) const;
     /// Simulated time (s) the adapter has seen: the sum of internal sub-steps.
     double GetTime() const { return mTime; }
     const BulletStepStats& GetLastStepStats() const { return mLastStats; }
@@ -102,6 +115,14 @@ private:
     std::vector<MappedBody> mBodies; ///< In BodyId order: deterministic snapshot order
     std::unordered_map<const btCollisionObject*, plugin::BodyId> mLookup; ///< Lookup only, never iterated
     std::vector<FollowingHull> mHulls;
+    struct OwnedBody
+    {
+        plugin::BodyId mBody;
+        std::unique_ptr<btConvexHullShape> mShape;
+        std::unique_ptr<btDefaultMotionState> mMotion;
+        std::unique_ptr<btRigidBody> mRigidBody;
+    };
+    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody made, in creation order
     std::vector<plugin::ContactEvent> mEvents; ///< Scratch, reused every sub-step
 
     // The game's callbacks and user pointer, chained and restored.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Result.h>
+#include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
 
 #include <ode/common.h>
@@ -47,6 +48,20 @@ public:
     Result<plugin::BodyId> AddStaticGeom(dGeomID inGeom);
     /// Unregisters a body and removes it from the damage world.
     Status RemoveBody(dBodyID inBody);
+    /// Creates a rigid body for Crumple (debris: a prop's loose fragment, props::FragmentBody) in inWorld and
+    /// registers it with the damage world: a dBody with the settings' mass and principal inertia (its centre of
+    /// mass at the body origin, as ODE requires), pose and velocities, and as its geom in inSpace the box that
+    /// bounds the hull points along the principal axes (ODE's convex geom needs the hull's faces; the box is
+    /// what ODE collides robustly, at most the hull's bounding box larger than it). Contact parameters are the
+    /// game's near callback's, as for its own geoms. The adapter owns body and geom: RemoveBody destroys them,
+    /// and so does the adapter's destructor for those left, so inWorld and inSpace must outlive the adapter.
+    /// Refused, creating nothing, on invalid settings or a null world or space.
+    Result<plugin::BodyId> CreateConvexBody(dWorldID inWorld, dSpaceID inSpace, const plugin::ConvexBodySettings& inSettings);
+    /// The ODE body of a convex body this adapter created, nullptr for any other id
+    dBodyID GetConvexBody(plugin::BodyId inBody) const;
+    ~OdeAdapter();
+    OdeAdapter(const OdeAdapter&) = delete;
+    OdeAdapter& operator=(const OdeAdapter&) = delete;
     /// The damage body of an ODE body, invalid when not registered.
     plugin::BodyId FindBody(dBodyID inBody) const;
     /// The damage body standing for every unregistered body-less geom.
@@ -74,6 +89,13 @@ private:
     std::vector<std::uint8_t> mSnapshotted;                   ///< Per BodyId: state taken this step
     std::vector<plugin::BodyId> mSnapshottedList;
     std::vector<plugin::ContactEvent> mEvents;
+    struct OwnedBody
+    {
+        plugin::BodyId mBody;
+        dBodyID mOdeBody = nullptr;
+        dGeomID mGeom = nullptr;
+    };
+    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody made, in creation order
     double mTime = 0.0;
     OdeStepStats mCurrent;   ///< The step being collected
     OdeStepStats mLastStats; ///< The last finished step

@@ -1,0 +1,105 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/props/FragmentBody.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <string>
+
+namespace crumple::props
+{
+
+Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::span<const Vec3> inPositions,
+                                       std::span<const Vec3> inVelocities, std::span<const double> inMasses,
+                                       const plugin::BodyState& inPropBody)
+{
+    // intent: refuse before computing anything
+    if (inFragment.mAnchored)
+        return MakeError(EError::InvalidArgument, "FragmentBody: the fragment is anchored: it is not loose");
+    if (inPositions.size() != inVelocities.size() || inPositions.size() != inMasses.size())
+        return MakeError(EError::InvalidArgument, "FragmentBody: positions, velocities and masses differ in count");
+    if (inFragment.mNodes.size() < 4 || !(inFragment.mMass > 0.0))
+        return MakeError(EError::DegenerateGeometry, "FragmentBody: a fragment needs mass and at least 4 nodes");
+    for (int node : inFragment.mNodes)
+        if (node < 0 || static_cast<std::size_t>(node) >= inPositions.size())
+            return MakeError(EError::OutOfRange, "FragmentBody: fragment node " + std::to_string(node) + " is not a node");
+    if (Status state = plugin::ValidateBodyState(inPropBody); !state)
+        return state.GetError();
+
+    // intent: the principal frame of the fragment's inertia, right-handed, moments ascending
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inFragment.mInertia);
+    if (eigen.info() != Eigen::Success || !IsFinite(inFragment.mInertia))
+        return MakeError(EError::NonFinite, "FragmentBody: the fragment's inertia is not finite");
+    Mat3 axes = eigen.eigenvectors();
+    if (axes.determinant() < 0.0)
+        axes.col(2) = -axes.col(2);
+    const Vec3& c = inFragment.mCenterOfMass;
+
+    // intent: the nodes' momentum, mass centre, and rigid spin about it (least squares under the lumped masses)
+    double nodal_mass = 0.0;
+    Vec3 momentum = Vec3::Zero(), mass_centre = Vec3::Zero();
+    for (int node : inFragment.mNodes)
+    {
+        const auto n = static_cast<std::size_t>(node);
+        nodal_mass += inMasses[n];
+        momentum += inMasses[n] * inVelocities[n];
+        mass_centre += inMasses[n] * inPositions[n];
+    }
+    if (!(nodal_mass > 0.0))
+        return MakeError(EError::InvalidArgument, "FragmentBody: the fragment's nodes have no mass");
+    mass_centre /= nodal_mass;
+    Vec3 lumped_angular = Vec3::Zero();
+    Mat3 lumped_inertia = Mat3::Zero();
+    for (int node : inFragment.mNodes)
+    {
+        const auto n = static_cast<std::size_t>(node);
+        const Vec3 r = inPositions[n] - mass_centre;
+        lumped_angular += inMasses[n] * r.cross(inVelocities[n]);
+        lumped_inertia += inMasses[n] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+    }
+    const Vec3 velocity = momentum / inFragment.mMass;
+    const Vec3 spin = lumped_inertia.ldlt().solve(lumped_angular);
+    if (!IsFinite(velocity) || !IsFinite(spin))
+        return MakeError(EError::NonFinite, "FragmentBody: the nodes' velocities give no finite rigid motion");
+    FragmentRigidBody result;
+    {
+        Vec3 angular = Vec3::Zero(); // the nodes' angular momentum about the body's centre of mass
+        for (int node : inFragment.mNodes)
+        {
+            const auto n = static_cast<std::size_t>(node);
+            angular += inMasses[n] * (inPositions[n] - c).cross(inVelocities[n]);
+        }
+        result.mAngularMomentumChange = (inFragment.mInertia * spin - angular).norm();
+    }
+
+    // intent: to the world through the prop body's state
+    const Mat3& rotation = inPropBody.mTransform.mRotation;
+    plugin::ConvexBodySettings& body = result.mBody;
+    body.mMass = inFragment.mMass;
+    body.mPrincipalInertia = eigen.eigenvalues();
+    body.mPosition = inPropBody.mTransform.ToWorld(c);
+    body.mOrientation = rotation * axes;
+    body.mLinearVelocity = rotation * velocity + inPropBody.PointVelocity(body.mPosition);
+    body.mAngularVelocity = rotation * spin + (inPropBody.mMotionType == plugin::EMotionType::Static ? Vec3::Zero()
+                                                                                                       : inPropBody.mAngularVelocity);
+    for (int node : inFragment.mNodes)
+        body.mHullPoints.push_back(axes.transpose() * (inPositions[static_cast<std::size_t>(node)] - c));
+
+    // intent: energies in the world (the prop body's motion added to every node and to the body alike)
+    double world_nodal = 0.0;
+    for (int node : inFragment.mNodes)
+    {
+        const auto n = static_cast<std::size_t>(node);
+        const Vec3 world_velocity = rotation * inVelocities[n] + inPropBody.PointVelocity(inPropBody.mTransform.ToWorld(inPositions[n]));
+        world_nodal += 0.5 * inMasses[n] * world_velocity.squaredNorm();
+    }
+    result.mNodalKineticEnergy = world_nodal;
+    result.mRigidKineticEnergy = 0.5 * body.mMass * body.mLinearVelocity.squaredNorm() +
+                                 0.5 * body.mAngularVelocity.dot(body.WorldInertia() * body.mAngularVelocity);
+    if (Status valid = plugin::ValidateConvexBodySettings(body); !valid)
+        return valid.GetError();
+    return result;
+}
+
+} // namespace crumple::props
