@@ -169,6 +169,24 @@ void FemProp::ReadPositions(std::vector<Vec3>& outPositions) const
     outPositions = mCpu->GetPositions();
 }
 
+void FemProp::ReadVelocities(std::vector<Vec3>& outVelocities) const
+{
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    if (mGpu)
+    {
+        mGpu->ReadVelocities(outVelocities);
+        return;
+    }
+#endif
+    outVelocities = mCpu->GetVelocities();
+}
+
+const std::vector<double>& FemProp::GetMasses() const
+{
+    CRUMPLE_PROPS_ON_GPU(GetMasses())
+    return mCpu->GetMasses();
+}
+
 int FemProp::GetNodeCount() const
 {
     CRUMPLE_PROPS_ON_GPU(GetNodeCount())

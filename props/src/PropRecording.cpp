@@ -252,6 +252,27 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
                 if (Result<fem::TetStepResult> result = prop.mSolver.Step(step); result.HasError())
                     return MakeError(result.GetError().mCode, where + result.GetError().mMessage);
         }
+        else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose))
+        {
+            ByteReader reader(extension.mPayload);
+            const std::uint32_t prop = reader.ReadU32();
+            const std::uint32_t count = reader.ReadU32();
+            if (reader.Failed() || prop >= props.size() || reader.Remaining() != 4 * static_cast<std::size_t>(count))
+                return MakeError(EError::CorruptData, where + "a loose-piece record of no known prop or of the wrong length");
+            fem::TetSolver& solver = props[prop].mSolver;
+            // intent: every node checked before any is fixed
+            std::vector<int> nodes(count);
+            for (int& node : nodes)
+            {
+                const std::uint32_t value = reader.ReadU32();
+                if (value >= static_cast<std::uint32_t>(solver.GetNodeCount()))
+                    return MakeError(EError::CorruptData, where + "a loose piece's node is not a node of its prop");
+                node = static_cast<int>(value);
+            }
+            for (int node : nodes)
+                if (Status fixed = solver.SetNodeFixed(node, true); fixed.HasError())
+                    return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
+        }
         // Other tags belong to other layers.
     }
     if (Status status = apply_collisions_until(inReplay.mCollisions.size()); status.HasError())

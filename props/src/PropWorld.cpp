@@ -5,6 +5,7 @@
 #include <crumple/base/ByteWriter.h>
 #include <crumple/props/PropRecording.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -130,6 +131,68 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
         report.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
     }
     return report;
+}
+
+Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMass)
+{
+    if (!std::isfinite(inMinMass) || !(inMinMass >= 0.0))
+        return MakeError(std::isfinite(inMinMass) ? EError::InvalidArgument : EError::NonFinite,
+                         "PropWorld::TakeLooseFragments: the minimum mass must be finite and >= 0 kg");
+    // intent: every piece and its rigid body first (nothing changes until all are known)
+    std::vector<LooseFragment> loose;
+    std::vector<Vec3> positions, velocities;
+    for (std::size_t index = 0; index < mProps.size(); ++index)
+    {
+        const FemProp& prop = mProps[index].mProp;
+        const std::vector<fem::TetFragment> fragments = prop.ComputeFragments();
+        const bool anchored = std::any_of(fragments.begin(), fragments.end(), [](const fem::TetFragment& f) { return f.mAnchored; });
+        if (fragments.size() < 2 && !anchored)
+            continue; // a whole free prop is its body's, not debris
+        const plugin::BodyState* body = mWorld->GetBodyState(mProps[index].mBody);
+        if (body == nullptr)
+            return MakeError(EError::OutOfRange, "PropWorld::TakeLooseFragments: prop " + std::to_string(index) +
+                                                     ": its body left the world");
+        prop.ReadPositions(positions);
+        prop.ReadVelocities(velocities);
+        for (std::size_t f = 0; f < fragments.size(); ++f)
+        {
+            if (fragments[f].mAnchored || (!anchored && f == 0))
+                continue;
+            LooseFragment piece;
+            piece.mProp = PropId{static_cast<std::uint32_t>(index)};
+            piece.mElements = fragments[f].mElements;
+            piece.mNodes = fragments[f].mNodes;
+            piece.mDropped = fragments[f].mMass < inMinMass;
+            if (!piece.mDropped)
+            {
+                Result<FragmentRigidBody> rigid = FragmentBody(fragments[f], positions, velocities, prop.GetMasses(), *body);
+                if (rigid.HasError())
+                    return MakeError(rigid.GetError().mCode, "PropWorld::TakeLooseFragments: prop " + std::to_string(index) +
+                                                                 ", piece " + std::to_string(f) + ": " + rigid.GetError().mMessage);
+                piece.mRigidBody = std::move(rigid).Get();
+            }
+            loose.push_back(std::move(piece));
+        }
+    }
+    // intent: record, then fix the pieces' nodes in their props
+    for (const LooseFragment& piece : loose)
+    {
+        if (mRecorder != nullptr)
+        {
+            ByteWriter record;
+            record.WriteU32(piece.mProp.mValue);
+            record.WriteU32(static_cast<std::uint32_t>(piece.mNodes.size()));
+            for (int node : piece.mNodes)
+                record.WriteU32(static_cast<std::uint32_t>(node));
+            if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Loose), record.GetBytes());
+                status.HasError())
+                return status.GetError();
+        }
+        for (int node : piece.mNodes)
+            if (Status fixed = mProps[piece.mProp.mValue].mProp.SetNodeFixed(node, true); fixed.HasError())
+                return fixed.GetError(); // nodes from the prop's own fragments: cannot happen
+    }
+    return loose;
 }
 
 void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)

@@ -6,6 +6,7 @@ crumple_add_test(props
     props/CollisionImpulsesTest.cpp
     props/FemPropTest.cpp
     props/FragmentBodyTest.cpp
+    props/LooseFragmentsTest.cpp
     props/PropRecordingTest.cpp
     props/PropWorldTest.cpp
     LINK crumple::props crumple_common_fem)

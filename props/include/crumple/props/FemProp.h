@@ -80,6 +80,10 @@ public:
     std::vector<fem::TetFragment> ComputeFragments() const;
     /// Current node positions (m), #N (a readback on the GPU)
     void ReadPositions(std::vector<Vec3>& outPositions) const;
+    /// Current node velocities (m/s), #N (a readback on the GPU)
+    void ReadVelocities(std::vector<Vec3>& outVelocities) const;
+    /// Lumped node masses (kg), #N
+    const std::vector<double>& GetMasses() const;
     /// Number of nodes #N
     int GetNodeCount() const;
     /// The CPU solver, or nullptr on the GPU backend

@@ -23,6 +23,8 @@ enum class EPropRecord : std::uint32_t
     Added = 0x50524f50u, // "PROP"
     /// Every prop stepped by a time step (f64 seconds)
     Step = 0x50535450u, // "PSTP"
+    /// Pieces left a prop (PropWorld::TakeLooseFragments): u32 prop index, u32 node count, the u32 nodes fixed
+    Loose = 0x504c4f53u, // "PLOS"
 };
 
 /// A prop as recorded when it joined a PropWorld: enough to rebuild its solver bit for bit. The state is

@@ -7,6 +7,7 @@
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/props/FemProp.h>
+#include <crumple/props/FragmentBody.h>
 
 #include <cstdint>
 #include <memory>
@@ -32,6 +33,16 @@ struct PropStepReport
     int mSleeping = 0;   ///< Props that were asleep and did nothing (no element work)
     int mFractured = 0;  ///< Props in which links broke this step
     int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
+};
+
+/// A piece of a prop that broke loose, handed to the game as a rigid body (PropWorld::TakeLooseFragments).
+struct LooseFragment
+{
+    PropId mProp;                 ///< The prop it broke from
+    std::vector<int> mElements;   ///< The prop's elements it holds: the game stops drawing them there
+    std::vector<int> mNodes;      ///< The prop's nodes it holds, now fixed in the prop's solver
+    bool mDropped = false;        ///< Lighter than the minimum mass: no body, it just leaves the prop
+    FragmentRigidBody mRigidBody; ///< World frame, for an adapter's CreateConvexBody (unless dropped)
 };
 
 /// Destructible props in a DamageWorld's damage flow. Each prop (a FemProp, CPU or GPU) is bound to a body of
@@ -80,6 +91,16 @@ public:
     /// stepped.
     Result<PropStepReport> Step(double inDeltaTime);
 
+    /// Hands over the pieces of the props that broke loose since the last call, each once, in PropId order
+    /// and then fragment order: a piece with no fixed node, except, in a prop with no fixed node at all, the
+    /// piece holding its first element group (the prop's body carries that one). Each becomes a rigid body in
+    /// the world frame (FragmentBody: its exact mass and inertia, the nodes' momentum and rigid spin) for the
+    /// game to create in its engine (BulletAdapter / OdeAdapter::CreateConvexBody), and leaves the prop: its
+    /// nodes are fixed where they are, so the FEM neither moves nor wakes for them again while the rest of the
+    /// prop goes on. Pieces lighter than inMinMass (kg, >= 0) leave the same way without a body (mDropped).
+    /// While recording, the fixed nodes are recorded, so replays drop the pieces at the same point.
+    /// Refused, changing nothing, for a non-finite or negative minimum.
+    Result<std::vector<LooseFragment>> TakeLooseFragments(double inMinMass = 0.0);
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
     /// world validated; kept for diagnosis with the first refusal's reason)
     std::uint64_t GetCollisionCount() const { return mCollisions; }

@@ -99,6 +99,8 @@ public:
 
     /// Number of nodes #N
     int GetNodeCount() const { return static_cast<int>(mInverseMasses.size()); }
+    /// Lumped node masses (kg), #N (host copy)
+    const std::vector<double>& GetMasses() const { return mMasses; }
     /// The symplectic sub-step (s), the CPU solver's
     double GetStableTimeStep() const { return mStableTimeStep; }
     /// Element evaluations so far (one per element per sub-step), as fem::TetSolver counts them

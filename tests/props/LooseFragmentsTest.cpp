@@ -1,0 +1,147 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Pieces that break loose from a prop leave it as rigid bodies: momentum kept, handed over once, replayed.
+#include "ScratchDirectory.h"
+#include "WorldFixture.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/fem/TetGrid.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/props/PropRecording.h>
+#include <crumple/props/PropWorld.h>
+
+#include <BrittleMaterial.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// A brittle 2 m x 0.2 m x 2 m panel standing in for the fixture's wall (its body frame), anchored along its
+// base; weak enough that hard hits knock pieces out of it.
+FemProp WeakPanel()
+{
+    TetGridSettings grid;
+    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = {1, 8, 8};
+    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e9;
+    material.mPoissonRatio = 0.2;
+    material.mTensileStrength *= 0.1;
+    TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), material, settings, FemPropSettings{}).Get();
+    for (int node = 0; node < prop.GetNodeCount(); ++node)
+        if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
+            REQUIRE(prop.SetNodeFixed(node, true).IsValid());
+    return prop;
+}
+
+// Momentum of the prop's free nodes, world frame.
+Vec3 FreeMomentum(const TetSolver& inSolver, const Mat3& inRotation)
+{
+    Vec3 momentum = Vec3::Zero();
+    for (int node = 0; node < inSolver.GetNodeCount(); ++node)
+        if (inSolver.GetInverseMasses()[static_cast<std::size_t>(node)] > 0.0)
+            momentum += inSolver.GetMasses()[static_cast<std::size_t>(node)] * inSolver.GetVelocities()[static_cast<std::size_t>(node)];
+    return inRotation * momentum;
+}
+
+// Hard hits across the panel until pieces are loose (at most inHits), the props stepping in between.
+void Smash(common::WorldFixture& ioFixture, PropWorld& ioProps, const PropId& inWall, int inHits)
+{
+    for (int hit = 0; hit < inHits; ++hit)
+    {
+        REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(40.0)));
+        const double y = -0.6 + 0.4 * (hit % 4), z = 0.6 - 0.4 * (hit / 4);
+        REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{ioFixture.FrontContact(y, z, 0.2 * hit),
+                                                                          ioFixture.FrontContact(y + 0.1, z - 0.1, 0.2 * hit)}));
+        ioFixture.mWorld.Flush();
+        for (int step = 0; step < 10; ++step)
+            REQUIRE(ioProps.Step(1.0 / 120.0));
+        const std::vector<TetFragment> pieces = ioProps.GetProp(inWall)->ComputeFragments();
+        if (std::any_of(pieces.begin(), pieces.end(), [](const TetFragment& p) { return !p.mAnchored; }))
+            return;
+    }
+}
+
+} // namespace
+
+TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum, and replay", "[props][replay]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "loose.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    Smash(fixture, *props, wall, 12);
+
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    const std::vector<TetFragment> before = solver.ComputeFragments();
+    int loose_before = 0;
+    for (const TetFragment& piece : before)
+        loose_before += piece.mAnchored ? 0 : 1;
+    REQUIRE(loose_before > 0); // the hits knocked pieces out: the rest of the test is not vacuous
+    const Mat3 rotation = fixture.mWorld.GetBodyState(fixture.mWall)->mTransform.mRotation;
+    const Vec3 momentum_before = FreeMomentum(solver, rotation);
+
+    CHECK_FALSE(props->TakeLooseFragments(-1.0));
+    CHECK_FALSE(props->TakeLooseFragments(std::numeric_limits<double>::quiet_NaN()));
+    const std::vector<LooseFragment> loose = props->TakeLooseFragments().Get();
+    REQUIRE(static_cast<int>(loose.size()) == loose_before);
+    Vec3 momentum_after = FreeMomentum(solver, rotation);
+    for (const LooseFragment& piece : loose)
+    {
+        CHECK(piece.mProp == wall);
+        CHECK_FALSE(piece.mDropped);
+        // The piece's body carries its exact mass, and no more kinetic energy than its nodes had.
+        const auto same = std::find_if(before.begin(), before.end(), [&](const TetFragment& f) { return f.mElements == piece.mElements; });
+        REQUIRE(same != before.end());
+        CHECK(piece.mRigidBody.mBody.mMass == same->mMass);
+        CHECK(piece.mRigidBody.mRigidKineticEnergy <= piece.mRigidBody.mNodalKineticEnergy);
+        momentum_after += piece.mRigidBody.mBody.mMass * piece.mRigidBody.mBody.mLinearVelocity;
+    }
+    CHECK((momentum_after - momentum_before).norm() <= 1.0e-9 * std::max(momentum_before.norm(), 1.0));
+    // They left the prop: every piece now holds a fixed node, and a second call hands over nothing.
+    for (const TetFragment& piece : solver.ComputeFragments())
+        CHECK(piece.mAnchored);
+    CHECK(props->TakeLooseFragments().Get().empty());
+
+    // The run goes on (the props step), then the recording replays bit for bit with the pieces dropped.
+    for (int step = 0; step < 6; ++step)
+        REQUIRE(props->Step(1.0 / 120.0));
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
+    REQUIRE(replayed.size() == 1u);
+    CHECK(replayed[0].mSolver.GetPositions() == solver.GetPositions());
+    CHECK(replayed[0].mSolver.GetVelocities() == solver.GetVelocities());
+    CHECK(replayed[0].mSolver.GetInverseMasses() == solver.GetInverseMasses());
+}
+
+TEST_CASE("Loose pieces lighter than the minimum mass are dropped without a body", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    Smash(fixture, *props, wall, 12);
+    const std::vector<LooseFragment> loose = props->TakeLooseFragments(1.0e9).Get();
+    REQUIRE_FALSE(loose.empty());
+    for (const LooseFragment& piece : loose)
+    {
+        CHECK(piece.mDropped);
+        CHECK(piece.mRigidBody.mBody.mHullPoints.empty());
+    }
+    for (const TetFragment& piece : props->GetProp(wall)->ComputeFragments())
+        CHECK(piece.mAnchored);
+}
