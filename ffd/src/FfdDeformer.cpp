@@ -120,6 +120,18 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
                 deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell))]++] = v;
     }
 
+    // The bucketed vertices' locations and rest positions in bucket order.
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+    {
+        std::vector<LatticeLocation>& locations = deformer.mBucketLocations.emplace_back();
+        std::vector<Vec3>& rest = deformer.mBucketRest.emplace_back();
+        for (std::uint32_t v : deformer.mCellVertices[z])
+        {
+            locations.push_back(deformer.mVertexLocation[v]);
+            rest.push_back(deformer.mRestMesh.mPositions[v]);
+        }
+    }
+
     // Cells numbered across zones, and each vertex's, for the surface index.
     int cell_total = 0;
     for (const FfdLattice& zone : deformer.mZones)
@@ -644,6 +656,8 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             static_cast<std::size_t>(std::lower_bound(run.begin(), run.end() - 1, begin) - run.begin());
     }
     std::vector<double> piece_bound(static_cast<std::size_t>(pieces), 0.0);
+    const std::vector<LatticeLocation>& locations = mBucketLocations[static_cast<std::size_t>(inZone)];
+    const std::vector<Vec3>& rest = mBucketRest[static_cast<std::size_t>(inZone)];
     ParallelFor(mJobs, pieces, [&](int inPiece) {
         double largest = 0.0;
         for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
@@ -651,11 +665,14 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             // intent: the largest squared length, one square root per cell (sqrt is monotone and correctly
             // rounded, so this is bitwise the largest length)
             double cell_largest = 0.0;
+            // intent: the cell's bucket, read in memory order; only the outputs are scattered
+            const std::size_t first = start[static_cast<std::size_t>(mTouchedCells[c] - offset)];
             for (std::size_t i = run[c]; i < run[c + 1]; ++i)
             {
                 const std::uint32_t v = inVertices[i];
-                const Vec3 displacement = zone.Displacement(mVertexLocation[v]);
-                mPositions[v] = mRestMesh.mPositions[v] + displacement;
+                const std::size_t k = first + (i - run[c]);
+                const Vec3 displacement = zone.Displacement(locations[k]);
+                mPositions[v] = rest[k] + displacement;
                 cell_largest = std::max(cell_largest, displacement.squaredNorm());
                 mDirty[v] = 1;
             }

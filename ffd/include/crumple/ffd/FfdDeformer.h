@@ -163,6 +163,10 @@ private:
     std::vector<LatticeLocation> mVertexLocation; ///< #V rest lattice location in its zone
     std::vector<std::vector<std::uint32_t>> mCellStart;    ///< Per zone: CSR offsets, #cells + 1
     std::vector<std::vector<std::uint32_t>> mCellVertices; ///< Per zone: vertices bucketed by cell
+    /// Per zone, in mCellVertices order: each vertex's lattice location and rest position, so a dent reads them
+    /// in memory order (an imported mesh's vertex order scatters a cell's vertices over the arrays)
+    std::vector<std::vector<LatticeLocation>> mBucketLocations;
+    std::vector<std::vector<Vec3>> mBucketRest;
     std::vector<int> mCellOffset;                          ///< Per zone: number of its first cell across zones
     std::vector<int> mVertexCell;                          ///< #V: cell across zones, -1 for a vertex of no zone
     std::shared_ptr<const CellSurfaceIndex> mSurfaceIndex; ///< Triangles and rings per cell; immutable, shared by copies
