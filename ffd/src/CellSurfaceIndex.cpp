@@ -91,6 +91,20 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
         index.mRingStart[c + 1] = static_cast<std::uint32_t>(index.mRing.size());
     }
 
+    // intent: the other cells each cell's triangles reach (its ring vertices' cells), ascending
+    index.mLinkStart.assign(cells + 1, 0);
+    std::vector<int> linked;
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+        linked.clear();
+        for (std::uint32_t r = index.mRingStart[c]; r < index.mRingStart[c + 1]; ++r)
+            if (const int cell = inVertexCell[index.mRing[r]]; cell >= 0)
+                linked.push_back(cell);
+        std::sort(linked.begin(), linked.end());
+        index.mLinked.insert(index.mLinked.end(), linked.begin(), std::unique(linked.begin(), linked.end()));
+        index.mLinkStart[c + 1] = static_cast<std::uint32_t>(index.mLinked.size());
+    }
+
     // intent: reach boxes from each cell's vertices and its triangles' corners; loose vertices and triangles
     constexpr double cInf = std::numeric_limits<double>::infinity();
     index.mReachLow.assign(cells, Vec3::Constant(cInf));

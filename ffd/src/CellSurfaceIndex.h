@@ -64,6 +64,13 @@ public:
     /// for a cell without vertices
     const Vec3& ReachLow(int inCell) const { return mReachLow[static_cast<std::size_t>(inCell)]; }
     const Vec3& ReachHigh(int inCell) const { return mReachHigh[static_cast<std::size_t>(inCell)]; }
+    /// The other cells that hold a vertex of one of inCell's triangles, ascending: how far inCell's surface
+    /// moved is bounded by how far the vertices of these cells and of inCell moved
+    std::span<const int> LinkedCells(int inCell) const
+    {
+        return std::span<const int>(mLinked).subspan(mLinkStart[static_cast<std::size_t>(inCell)],
+                                                     mLinkStart[static_cast<std::size_t>(inCell) + 1] - mLinkStart[static_cast<std::size_t>(inCell)]);
+    }
     /// Vertices in no zone, ascending
     const std::vector<std::uint32_t>& LooseVertices() const { return mLooseVertices; }
     /// Triangles with no vertex in a zone, ascending
@@ -75,6 +82,8 @@ private:
     std::vector<std::uint32_t> mRingStart;  ///< #cells + 1: CSR offsets into mRing
     std::vector<std::uint32_t> mRing;       ///< Per cell: vertices outside it sharing a triangle with one inside, ascending
     std::vector<Vec3> mReachLow, mReachHigh; ///< Per cell: reach box (body frame, m)
+    std::vector<std::uint32_t> mLinkStart;  ///< #cells + 1: CSR offsets into mLinked
+    std::vector<int> mLinked;               ///< Per cell: LinkedCells
     std::vector<std::uint32_t> mLooseVertices;
     std::vector<std::uint32_t> mLooseTriangles;
 };

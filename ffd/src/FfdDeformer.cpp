@@ -218,6 +218,7 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         deformer.mSlices.push_back(std::move(slices));
     }
     deformer.mVertexMark.assign(vertex_count, 0);
+    deformer.mTriangleMark.assign(triangle_count, 0);
     deformer.mDirty.assign(vertex_count, 0);
     deformer.mPositions = deformer.mRestMesh.mPositions;
     deformer.mNormals.assign(vertex_count, Vec3::Zero());
@@ -718,9 +719,32 @@ Vec3 FfdDeformer::VertexNormal(std::uint32_t inVertex) const
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
-void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport)
+namespace
 {
 
+// Puts a list of distinct indices into ascending order when it holds a good part of all inCount indices: a
+// pass over byte marks (linear, no comparisons), after which the work walks the mesh's arrays in memory order
+// instead of in the cell order the list came in (which scatters it over an imported mesh). Short lists stay
+// as they are: the pass would cost more than their scattered reads.
+void AscendingIfLarge(std::vector<std::uint32_t>& ioIndices, std::vector<std::uint8_t>& ioMarks)
+{
+    if (ioIndices.size() * 16 < ioMarks.size())
+        return;
+    for (std::uint32_t index : ioIndices)
+        ioMarks[index] = 1;
+    ioIndices.clear();
+    for (std::uint32_t index = 0; index < ioMarks.size(); ++index)
+        if (ioMarks[index] != 0)
+        {
+            ioMarks[index] = 0;
+            ioIndices.push_back(index);
+        }
+}
+
+} // namespace
+
+void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport)
+{
     // intent: the triangles with a vertex in a touched cell, each once; their corners are the moved
     // vertices that have a triangle and the ring around the touched cells
     std::vector<std::uint32_t> triangles;
@@ -731,6 +755,8 @@ void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, De
         if (mVertexTriangleStart[v + 1] != mVertexTriangleStart[v])
             corners.push_back(v);
     mSurfaceIndex->AppendRing(mTouchedCells, mCellMark, mVertexCell, mVertexMark, corners);
+    AscendingIfLarge(triangles, mTriangleMark);
+    AscendingIfLarge(corners, mVertexMark);
     // Face normals, then the normals of every corner of those triangles (a corner may not have moved
     // itself); each piece writes only its own elements.
     const int face_pieces = PieceCount(mJobs, triangles.size(), cMinVerticesPerPiece);

@@ -90,9 +90,9 @@ public:
         ClippedTriangle(triangle, corners, outside);
     }
 
-    // Every vertex (of a zone, when inVertexCell says which) and every triangle in memory order, each vertex
-    // projected once: the pass a probe falls back to when it would visit much of the mesh anyway.
-    void Everything(std::span<const int> inVertexCell)
+    // Every vertex and every triangle in memory order, each vertex projected once: the pass a probe falls back
+    // to when it would visit much of the mesh anyway.
+    void Everything()
     {
         std::vector<ProbePoint> projected(mPositions.size());
         std::vector<std::uint8_t> outside(mPositions.size());
@@ -100,7 +100,7 @@ public:
         {
             projected[v] = Project(mPositions[v]);
             outside[v] = Outside(projected[v]);
-            if (outside[v] == 0 && inVertexCell[v] >= 0)
+            if (outside[v] == 0)
                 Inside(v, projected[v]);
         }
         for (const std::array<std::uint32_t, 3>& triangle : mTriangles)
@@ -216,17 +216,19 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
     for (double bound : mZoneDisplacementBound)
         moved = std::max(moved, bound);
 
-    // intent: the cells whose reach box can meet the prism, zone by zone in slices across the lattice axis
-    // nearest the probe's direction, front slice first (so the front is found early); a slice whose whole
-    // reach misses the prism is skipped at once
-    struct Candidate
-    {
-        std::size_t mZone;
-        int mCell;
-        double mNearest;
+    // How far a cell's surface moved: its vertices' and those of the cells its triangles reach.
+    auto reach_moved = [&](int inCell) {
+        double bound = mCellBound[static_cast<std::size_t>(inCell)];
+        for (int linked : mSurfaceIndex->LinkedCells(inCell))
+            bound = std::max(bound, mCellBound[static_cast<std::size_t>(linked)]);
+        return bound;
     };
-    std::vector<Candidate> candidates;
-    std::size_t work = 0;
+
+    // intent: zone by zone, slices across the lattice axis nearest the probe's direction, front slice first
+    // (so the front is found early); a slice whose reach misses the prism even moved by the largest move is
+    // skipped at once, and a cell whose reach box, widened by how far its surface moved, misses it too
+    std::size_t visited = 0;
+    const std::size_t budget = (mPositions.size() + mRestMesh.mTriangles.size()) / 4;
     for (std::size_t z = 0; z < mZones.size(); ++z)
     {
         const FfdLattice& zone = mZones[z];
@@ -255,40 +257,37 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                     const int cell = offset + zone.CellIndex(ijk);
                     const Vec3& low = mSurfaceIndex->ReachLow(cell);
                     const Vec3& high = mSurfaceIndex->ReachHigh(cell);
-                    if (!(low.x() <= high.x()) || !MeetsPrism(inProbe, low, high, moved))
-                        continue; // no vertex in the cell, or none that can reach the prism
+                    if (!(low.x() <= high.x()))
+                        continue; // no vertex in the cell
+                    const double cell_moved = reach_moved(cell);
+                    if (!MeetsPrism(inProbe, low, high, cell_moved))
+                        continue;
+                    // intent: a cell wholly behind the front adds nothing once a vertex is inside, except a
+                    // vertex that moved further than any inside so far (its bound, with a hair for round-off)
+                    const bool behind = NearestAlong(inProbe, low, high, cell_moved) > scan.GetFront() && scan.HasVertexInside();
+                    if (behind && !(mCellBound[static_cast<std::size_t>(cell)] * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+                        continue;
                     const auto local = static_cast<std::size_t>(cell - offset);
-                    work += mCellStart[z][local + 1] - mCellStart[z][local] + mSurfaceIndex->EntriesOf(cell).size();
-                    candidates.push_back({z, cell, NearestAlong(inProbe, low, high, moved)});
+                    for (std::uint32_t i = mCellStart[z][local]; i < mCellStart[z][local + 1]; ++i)
+                        scan.Vertex(mCellVertices[z][i]);
+                    visited += mCellStart[z][local + 1] - mCellStart[z][local];
+                    if (!behind && !InsidePrism(inProbe, low, high, cell_moved))
+                    {
+                        for (const CellSurfaceIndex::Entry& entry : mSurfaceIndex->EntriesOf(cell))
+                            scan.Triangle(entry.mTriangle);
+                        visited += mSurfaceIndex->EntriesOf(cell).size();
+                    }
+                    // intent: a probe that visits a good part of the mesh cell by cell (a wide one over a
+                    // body dented deep) is cheaper as one pass in memory order: start over that way (same
+                    // answer; cell order costs several times more per item on an imported mesh)
+                    if (visited > budget)
+                    {
+                        ProbeScan everything(inProbe, mPositions, mRestMesh.mPositions, mRestMesh.mTriangles);
+                        everything.Everything();
+                        return everything.Result();
+                    }
                 }
         }
-    }
-
-    // intent: when the candidates hold a good part of the mesh (a wide probe over a body dented deep, whose
-    // reach boxes all widen by the deepest move), one pass over every vertex and triangle in memory order is
-    // cheaper than visiting them cell by cell (measured: a tenth of the cost per item); same answer
-    if (4 * work > mPositions.size() + mRestMesh.mTriangles.size())
-    {
-        scan.Everything(mVertexCell);
-        return scan.Result();
-    }
-
-    for (const Candidate& candidate : candidates)
-    {
-        const std::size_t z = candidate.mZone;
-        const int cell = candidate.mCell;
-        // intent: a cell wholly behind the front adds nothing once a vertex is inside, except a vertex that
-        // moved further than any inside so far (its bound, with a hair for round-off)
-        const bool behind = candidate.mNearest > scan.GetFront() && scan.HasVertexInside();
-        if (behind && !(mCellBound[static_cast<std::size_t>(cell)] * (1.0 + 1.0e-9) > scan.GetMoveInside()))
-            continue;
-        const auto local = static_cast<std::size_t>(cell - mCellOffset[z]);
-        for (std::uint32_t i = mCellStart[z][local]; i < mCellStart[z][local + 1]; ++i)
-            scan.Vertex(mCellVertices[z][i]);
-        if (behind || InsidePrism(inProbe, mSurfaceIndex->ReachLow(cell), mSurfaceIndex->ReachHigh(cell), moved))
-            continue;
-        for (const CellSurfaceIndex::Entry& entry : mSurfaceIndex->EntriesOf(cell))
-            scan.Triangle(entry.mTriangle);
     }
     return scan.Result();
 }

@@ -180,6 +180,7 @@ private:
     int mTouchedZone = 0;                   ///< The zone of mTouchedCells
     std::vector<std::uint8_t> mDilation[2]; ///< TouchCells' masks over the changed controls' box
     std::vector<std::uint8_t> mVertexMark;
+    std::vector<std::uint8_t> mTriangleMark;
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
