@@ -34,7 +34,7 @@ T Must(Result<T> inResult)
 
 } // namespace
 
-FuzzWorld::FuzzWorld() : mCarSettings(CarSettings()), mWorld(Must(plugin::DamageWorld::Create()))
+FuzzWorld::FuzzWorld() : mCarSettings(CarSettings()), mWorldOwner(Must(plugin::DamageWorld::Create())), mWorld(*mWorldOwner)
 {
     plugin::BodyState car;
     car.mMass = 1200.0;

@@ -5,6 +5,8 @@
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
 
+#include <memory>
+
 namespace crumple::fuzz
 {
 
@@ -24,7 +26,8 @@ public:
 
 private:
     plugin::DeformableObjectSettings mCarSettings;
-    plugin::DamageWorld mWorld;
+    std::unique_ptr<plugin::DamageWorld> mWorldOwner; ///< On the heap: the world never moves
+    plugin::DamageWorld& mWorld;
     plugin::BodyId mCar, mWall;
 };
 

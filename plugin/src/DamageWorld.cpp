@@ -15,7 +15,7 @@
 namespace crumple::plugin
 {
 
-Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
+Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettings& inSettings)
 {
     if (!(inSettings.mRestitution >= 0.0 && inSettings.mRestitution <= 1.0))
         return MakeError(EError::InvalidArgument, "DamageWorldSettings.mRestitution must be in [0, 1]");
@@ -33,27 +33,12 @@ Result<DamageWorld> DamageWorld::Create(const DamageWorldSettings& inSettings)
     Result<CollisionGrouper> grouper = CollisionGrouper::Create(inSettings.mGrouping);
     if (!grouper)
         return grouper.GetError();
-    return DamageWorld(inSettings, std::move(grouper).Get());
+    return std::unique_ptr<DamageWorld>(new DamageWorld(inSettings, std::move(grouper).Get()));
 }
 
 DamageWorld::~DamageWorld()
 {
     WaitForDents();
-}
-
-DamageWorld& DamageWorld::operator=(DamageWorld&& inOther) noexcept
-{
-    if (this == &inOther)
-        return *this;
-    WaitForDents(); // the task points into this world's objects
-    mSettings = inOther.mSettings;
-    mGrouper = std::move(inOther.mGrouper);
-    mBodies = std::move(inOther.mBodies);
-    mObjects = std::move(inOther.mObjects);
-    mListeners = std::move(inOther.mListeners);
-    mImpactMemories = std::move(inOther.mImpactMemories);
-    mInFlight = std::move(inOther.mInFlight);
-    return *this;
 }
 
 void DamageWorld::WaitForDents() const

@@ -12,7 +12,8 @@ using namespace crumple::plugin;
 
 int main()
 {
-    DamageWorld world = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> world_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& world = *world_owner;
 
     // A static wall and a 1,000 kg car driving at 10 m/s along +x (body frame at its centre of mass).
     BodyState wall_state;

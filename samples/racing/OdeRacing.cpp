@@ -101,7 +101,8 @@ int main(int argc, char** argv)
     DamageWorldSettings damage_settings;
     damage_settings.mJobs = options.mThreads > 1 || options.mDeferDents ? &jobs.Get() : nullptr;
     damage_settings.mDeferDents = options.mDeferDents;
-    DamageWorld damage = DamageWorld::Create(damage_settings).Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create(damage_settings).Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
     scene.mAdapter = adapter.get();
     std::map<BodyId, std::string> names{{adapter->GetEnvironment(), "ground"}};

@@ -83,7 +83,8 @@ TEST_CASE("Bullet: a sphere dropped on a plane gets (1+e) m v, and agrees with B
 
     DamageWorldSettings settings;
     settings.mRestitution = 0.0; // Bullet's default restitution is 0
-    DamageWorld damage = DamageWorld::Create(settings).Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create(settings).Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
 
     btStaticPlaneShape plane_shape(btVector3(0, 0, 1), 0);
@@ -175,7 +176,8 @@ TEST_CASE("Bullet: a car driving on flat ground gets no damage", "[bullet]")
 TEST_CASE("Bullet: a compound chassis maps its children's contacts to its body", "[bullet]")
 {
     BulletWorld bullet;
-    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
     btStaticPlaneShape plane_shape(btVector3(0, 0, 1), 0);
     btCollisionObject plane;
@@ -274,7 +276,8 @@ TEST_CASE("Bullet: a recorded crash replays headless to bitwise identical meshes
 TEST_CASE("Bullet: a btRaycastVehicle driving on flat ground gets no damage", "[bullet]")
 {
     BulletWorld bullet;
-    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
     btStaticPlaneShape ground_shape(btVector3(0, 0, 1), 0);
     btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ground_shape)); // raycast wheels need a rigid body
@@ -327,7 +330,8 @@ TEST_CASE("Bullet: a convex body the adapter makes has the settings' mass, inert
 {
     BulletWorld world;
     world.mWorld.setGravity(btVector3(0, 0, 0));
-    DamageWorld damage = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, damage).Get());
 
     // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.

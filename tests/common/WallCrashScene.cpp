@@ -17,7 +17,7 @@ using namespace crumple::plugin;
 
 Result<WallCrashScene> WallCrashScene::Create(const WallCrashSettings& inSettings)
 {
-    Result<DamageWorld> world = DamageWorld::Create(inSettings.mWorld);
+    Result<std::unique_ptr<DamageWorld>> world = DamageWorld::Create(inSettings.mWorld);
     if (!world)
         return world.GetError();
     WallCrashScene scene(inSettings, std::move(world).Get());
@@ -42,8 +42,8 @@ Result<WallCrashScene> WallCrashScene::Create(const WallCrashSettings& inSetting
     // Wall: static, its frame at the wall plane.
     scene.mWallState.mMotionType = EMotionType::Static;
 
-    Result<BodyId> car = scene.mWorld.CreateBody(scene.mCarState);
-    Result<BodyId> wall = scene.mWorld.CreateBody(scene.mWallState);
+    Result<BodyId> car = scene.mWorld->CreateBody(scene.mCarState);
+    Result<BodyId> wall = scene.mWorld->CreateBody(scene.mWallState);
     if (!car || !wall)
         return MakeError(EError::InvalidArgument, "WallCrashScene: invalid car or wall state");
     scene.mCar = car.Get();
@@ -53,7 +53,7 @@ Result<WallCrashScene> WallCrashScene::Create(const WallCrashSettings& inSetting
     object.mMesh = MakeBoxMesh(h, BoxSegmentsForTriangles(h, inSettings.mTriangles));
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
-    Result<ObjectId> car_object = scene.mWorld.CreateDeformableObject(scene.mCar, object);
+    Result<ObjectId> car_object = scene.mWorld->CreateDeformableObject(scene.mCar, object);
     if (!car_object)
         return car_object.GetError();
     scene.mCarObject = car_object.Get();
@@ -74,7 +74,7 @@ void WallCrashScene::UpdateInertia()
 void WallCrashScene::Step()
 {
     // Pre-solve snapshot, as an adapter takes it before the engine's solver.
-    Status set = mWorld.SetBodyState(mCar, mCarState);
+    Status set = mWorld->SetBodyState(mCar, mCarState);
     (void)set;
 
     // Narrow phase: the deepest samples behind the wall plane x = 0, normal from wall (B) to car (A) is -x.
@@ -142,7 +142,7 @@ void WallCrashScene::Step()
     mContactCount += static_cast<int>(events.size());
     if (!events.empty())
     {
-        Status submitted = mWorld.SubmitContacts(events);
+        Status submitted = mWorld->SubmitContacts(events);
         (void)submitted;
         // The "engine's solver": apply the same impulses, then push the car out of the wall.
         const std::vector<double> impulses =
@@ -171,7 +171,7 @@ void WallCrashScene::Step()
     mCarState.mCenterOfMass = mCarState.mTransform.mTranslation;
     UpdateInertia();
     mTime += dt;
-    mWorld.Update(mTime);
+    mWorld->Update(mTime);
 }
 
 void WallCrashScene::Run()
@@ -179,7 +179,7 @@ void WallCrashScene::Run()
     const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
     for (int i = 0; i < steps; ++i)
         Step();
-    mWorld.Flush();
+    mWorld->Flush();
 }
 
 } // namespace crumple::common

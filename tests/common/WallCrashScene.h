@@ -4,6 +4,8 @@
 
 #include <crumple/plugin/DamageWorld.h>
 
+#include <memory>
+
 #include <array>
 #include <vector>
 
@@ -41,8 +43,8 @@ public:
     /// Steps until mDuration, then flushes open collisions.
     void Run();
 
-    plugin::DamageWorld& GetWorld() { return mWorld; }
-    const plugin::DamageWorld& GetWorld() const { return mWorld; }
+    plugin::DamageWorld& GetWorld() { return *mWorld; }
+    const plugin::DamageWorld& GetWorld() const { return *mWorld; }
     plugin::BodyId GetCar() const { return mCar; }
     plugin::BodyId GetWall() const { return mWall; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
@@ -52,12 +54,12 @@ public:
     int GetContactCount() const { return mContactCount; }
 
 private:
-    WallCrashScene(const WallCrashSettings& inSettings, plugin::DamageWorld inWorld)
+    WallCrashScene(const WallCrashSettings& inSettings, std::unique_ptr<plugin::DamageWorld> inWorld)
         : mSettings(inSettings), mWorld(std::move(inWorld)) {}
     void UpdateInertia();
 
     WallCrashSettings mSettings;
-    plugin::DamageWorld mWorld;
+    std::unique_ptr<plugin::DamageWorld> mWorld; ///< On the heap: the world never moves
     plugin::BodyId mCar, mWall;
     plugin::ObjectId mCarObject;
     plugin::BodyState mCarState, mWallState;

@@ -11,7 +11,7 @@ namespace crumple::common
 using namespace crumple::plugin;
 
 WorldFixture::WorldFixture(int inTriangles, std::array<int, 3> inControlCount, const DamageWorldSettings& inSettings)
-    : mWorld(DamageWorld::Create(inSettings).Get())
+    : mWorldOwner(std::move(DamageWorld::Create(inSettings).Get())), mWorld(*mWorldOwner)
 {
     BodyState floor;
     floor.mMotionType = EMotionType::Static;

@@ -4,6 +4,8 @@
 
 #include <crumple/plugin/DamageWorld.h>
 
+#include <memory>
+
 #include <vector>
 
 namespace crumple::common
@@ -26,7 +28,8 @@ public:
     /// A car-wall contact at a point of the car's front face (body frame y, z), as an engine reports it.
     plugin::ContactEvent FrontContact(double inY, double inZ, double inTime, double inDepth = 0.01) const;
 
-    plugin::DamageWorld mWorld;
+    std::unique_ptr<plugin::DamageWorld> mWorldOwner; ///< On the heap: the world never moves
+    plugin::DamageWorld& mWorld;
     plugin::BodyId mFloor, mWall, mCar;
     plugin::ObjectId mCarObject;
     Vec3 mHalfExtents{2.1, 0.9, 0.7};

@@ -54,7 +54,8 @@ TEST_CASE("FemBarrierCoupling: bad input is refused and changes nothing", "[cras
 {
     plugin::DamageWorldSettings world;
     world.mCountImpactOnce = false;
-    plugin::DamageWorld damage = plugin::DamageWorld::Create(world).Get();
+    std::unique_ptr<plugin::DamageWorld> damage_owner = std::move(plugin::DamageWorld::Create(world).Get());
+    plugin::DamageWorld& damage = *damage_owner;
     plugin::BodyState car;
     car.mMass = 1575.0;
     car.mLinearVelocity = Vec3(8.0, 0.0, 0.0);
@@ -82,7 +83,8 @@ TEST_CASE("FemBarrierCoupling: bad input is refused and changes nothing", "[cras
     CHECK(FemBarrierCoupling::Create(target, Vec3::Zero(), damage).HasError());
     // A world that counts an impact once would count only the first step of the barrier's push.
     target.mBarrierMaterial = "wood";
-    plugin::DamageWorld counting_once = plugin::DamageWorld::Create().Get();
+    std::unique_ptr<plugin::DamageWorld> counting_once_owner = std::move(plugin::DamageWorld::Create().Get());
+    plugin::DamageWorld& counting_once = *counting_once_owner;
     CHECK(FemBarrierCoupling::Create(target, Vec3::Zero(), counting_once).HasError());
     FloatingBarrierCrashSettings settings;
     settings.mTimeStep = 0.0;

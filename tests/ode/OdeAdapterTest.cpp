@@ -102,7 +102,8 @@ TEST_CASE("ODE: a sphere dropped on a plane gets (1+e) m v, and agrees with ODE'
     DropScene scene;
     DamageWorldSettings settings;
     settings.mRestitution = 0.0; // ODE contacts without dContactBounce are plastic
-    DamageWorld damage = DamageWorld::Create(settings).Get();
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create(settings).Get());
+    DamageWorld& damage = *damage_owner;
     std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
     scene.mAdapter = adapter.get();
     REQUIRE(adapter->AddBody(scene.mSphere));
@@ -196,7 +197,8 @@ TEST_CASE("ODE: a convex body the adapter makes has the settings' mass, inertia,
     dWorldID world = dWorldCreate();
     dSpaceID space = dHashSpaceCreate(nullptr);
     {
-        DamageWorld damage = DamageWorld::Create().Get();
+        std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+        DamageWorld& damage = *damage_owner;
         std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
 
         // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.

@@ -39,7 +39,7 @@ struct CampbellCar
 {
     explicit CampbellCar(const DamageWorldSettings& inSettings = {}, const DamageMaterial& inMaterial = CampbellMaterial(),
                          const Vec3& inUp = Vec3::UnitZ())
-        : mWorld(DamageWorld::Create(inSettings).Get())
+        : mWorldOwner(std::move(DamageWorld::Create(inSettings).Get())), mWorld(*mWorldOwner)
     {
         BodyState wall;
         wall.mMotionType = EMotionType::Static;
@@ -108,7 +108,8 @@ struct CampbellCar
     }
 
     Vec3 mHalf{2.2, 0.825, 0.7};
-    DamageWorld mWorld;
+    std::unique_ptr<DamageWorld> mWorldOwner; // on the heap: the world never moves
+    DamageWorld& mWorld;
     BodyId mWall, mCar;
     ObjectId mObject;
     double mTime = 0.0;
@@ -265,7 +266,8 @@ TEST_CASE("A Campbell crush replays bit for bit", "[plugin]")
 
 TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]")
 {
-    DamageWorld world = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> world_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& world = *world_owner;
     const BodyId body = world.CreateBody(BodyState{}).Get();
     const Vec3 half(1.0, 0.5, 0.5);
     auto refused = [&](const DeformableObjectSettings& inSettings, const std::string& inField) {

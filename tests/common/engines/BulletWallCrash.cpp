@@ -11,7 +11,7 @@ namespace crumple::common
 using namespace crumple::plugin;
 
 BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
-    : mSettings(inSettings), mDamage(DamageWorld::Create(inSettings.mWorld).Get())
+    : mSettings(inSettings), mDamageOwner(std::move(DamageWorld::Create(inSettings.mWorld).Get())), mDamage(*mDamageOwner)
 {
     mConfiguration = std::make_unique<btDefaultCollisionConfiguration>();
     mDispatcher = std::make_unique<btCollisionDispatcher>(mConfiguration.get());

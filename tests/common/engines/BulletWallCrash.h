@@ -49,7 +49,8 @@ private:
     std::vector<std::unique_ptr<btCollisionShape>> mShapes;
     std::vector<std::unique_ptr<btCollisionObject>> mObjects;
     btRigidBody* mCar = nullptr;
-    plugin::DamageWorld mDamage;
+    std::unique_ptr<plugin::DamageWorld> mDamageOwner; ///< On the heap: the world never moves
+    plugin::DamageWorld& mDamage;
     std::unique_ptr<bullet::BulletAdapter> mAdapter;
     plugin::ObjectId mCarObject;
     btRigidBody* mTarget = nullptr;

@@ -12,7 +12,7 @@ namespace crumple::common
 using namespace crumple::plugin;
 
 OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
-    : mSettings(inSettings), mDamage(DamageWorld::Create(inSettings.mWorld).Get())
+    : mSettings(inSettings), mDamageOwner(std::move(DamageWorld::Create(inSettings.mWorld).Get())), mDamage(*mDamageOwner)
 {
     dInitODE2(0); // reference counted by ODE; paired with dCloseODE in the destructor
     mWorld = dWorldCreate();

@@ -49,7 +49,8 @@ private:
     dSpaceID mSpace = nullptr;
     dJointGroupID mContacts = nullptr;
     dBodyID mCar = nullptr;
-    plugin::DamageWorld mDamage;
+    std::unique_ptr<plugin::DamageWorld> mDamageOwner; ///< On the heap: the world never moves
+    plugin::DamageWorld& mDamage;
     std::unique_ptr<ode::OdeAdapter> mAdapter;
     plugin::ObjectId mCarObject;
     dBodyID mTarget = nullptr;

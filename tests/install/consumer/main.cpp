@@ -10,7 +10,8 @@ int main()
 {
     using namespace crumple;
     using namespace crumple::plugin;
-    DamageWorld world = DamageWorld::Create().Get();
+    std::unique_ptr<DamageWorld> world_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& world = *world_owner;
     BodyState wall;
     wall.mMotionType = EMotionType::Static;
     BodyState car;

@@ -32,7 +32,8 @@ Result<FloatingBarrierCrashResult> RunFloatingBarrierCrash(const FloatingBarrier
 
     plugin::DamageWorldSettings world;
     world.mCountImpactOnce = false; // the coupling reports each step's share of its push (FemBarrierCoupling::Create)
-    plugin::DamageWorld damage = plugin::DamageWorld::Create(world).Get();
+    std::unique_ptr<plugin::DamageWorld> damage_owner = std::move(plugin::DamageWorld::Create(world).Get());
+    plugin::DamageWorld& damage = *damage_owner;
     Result<plugin::BodyId> car_body = damage.CreateBody(car);
     if (car_body.HasError())
         return car_body.GetError();

@@ -41,12 +41,13 @@ struct UpdateReport
 class DamageWorld
 {
 public:
-    /// Validates the settings.
-    static Result<DamageWorld> Create(const DamageWorldSettings& inSettings = {});
+    /// Validates the settings and makes the world on the heap. It never moves: adapters, recorders, prop
+    /// worlds and deferred dents keep references to it (as Jolt's PhysicsSystem).
+    static Result<std::unique_ptr<DamageWorld>> Create(const DamageWorldSettings& inSettings = {});
     /// Waits for deferred dents still running (they point into this world).
     ~DamageWorld();
-    DamageWorld(DamageWorld&&) noexcept = default;
-    DamageWorld& operator=(DamageWorld&& inOther) noexcept;
+    DamageWorld(DamageWorld&&) = delete;
+    DamageWorld& operator=(DamageWorld&&) = delete;
     DamageWorld(const DamageWorld&) = delete;
     DamageWorld& operator=(const DamageWorld&) = delete;
 
