@@ -132,7 +132,14 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         }
     }
 
-    // Cells numbered across zones, and each vertex's, for the surface index.
+    // Cells numbered across zones, and each vertex's, for the surface index (about 70 bytes per cell).
+    std::int64_t cells_in_zones = 0;
+    for (const FfdLattice& zone : deformer.mZones)
+        cells_in_zones += zone.GetCellTotal();
+    if (cells_in_zones > cMaxCellsInZones)
+        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mZones: " + std::to_string(cells_in_zones) +
+                                                      " cells in all, more than the " + std::to_string(cMaxCellsInZones) +
+                                                      " a deformer indexes");
     int cell_total = 0;
     for (const FfdLattice& zone : deformer.mZones)
     {
@@ -199,7 +206,6 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         {
             slices.mLow[axis].assign(static_cast<std::size_t>(cells[axis]), Vec3::Constant(std::numeric_limits<double>::infinity()));
             slices.mHigh[axis].assign(static_cast<std::size_t>(cells[axis]), Vec3::Constant(-std::numeric_limits<double>::infinity()));
-            slices.mBound[axis].assign(static_cast<std::size_t>(cells[axis]), 0.0);
         }
         for (int k = 0; k < cells[2]; ++k)
             for (int j = 0; j < cells[1]; ++j)
@@ -663,9 +669,11 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
         double largest = 0.0;
         for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
         {
-            // intent: the largest squared length, one square root per cell (sqrt is monotone and correctly
-            // rounded, so this is bitwise the largest length)
-            double cell_largest = 0.0;
+            // intent: the largest squared lengths, one square root per cell (sqrt is monotone and correctly
+            // rounded, so this is bitwise the largest length): of the displacement for the zone's bound, and of
+            // the stored position's offset from rest for the cell's (what a probe measures; rounding the sum
+            // can make it longer than the displacement)
+            double cell_largest = 0.0, cell_moved = 0.0;
             // intent: the cell's bucket, read in memory order; only the outputs are scattered
             const std::size_t first = start[static_cast<std::size_t>(mTouchedCells[c] - offset)];
             for (std::size_t i = run[c]; i < run[c + 1]; ++i)
@@ -675,28 +683,16 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
                 const Vec3 displacement = zone.Displacement(locations[k]);
                 mPositions[v] = rest[k] + displacement;
                 cell_largest = std::max(cell_largest, displacement.squaredNorm());
+                cell_moved = std::max(cell_moved, (mPositions[v] - rest[k]).squaredNorm());
                 mDirty[v] = 1;
             }
-            mCellBound[static_cast<std::size_t>(mTouchedCells[c])] = std::sqrt(cell_largest);
+            mCellBound[static_cast<std::size_t>(mTouchedCells[c])] = std::sqrt(cell_moved);
             largest = std::max(largest, cell_largest);
         }
         piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
     });
     for (double largest : piece_bound)
         bound = std::max(bound, largest);
-    // intent: the slices' bounds only grow between full recomputes (an upper bound stays one)
-    SliceReach& slices = mSlices[static_cast<std::size_t>(inZone)];
-    const std::array<int, 3>& n = zone.GetCellCount();
-    for (int cell : mTouchedCells)
-    {
-        const int local = cell - offset;
-        const std::array<int, 3> ijk{local % n[0], (local / n[0]) % n[1], local / (n[0] * n[1])};
-        for (std::size_t axis = 0; axis < 3; ++axis)
-        {
-            double& slice_bound = slices.mBound[axis][static_cast<std::size_t>(ijk[axis])];
-            slice_bound = std::max(slice_bound, mCellBound[static_cast<std::size_t>(cell)]);
-        }
-    }
     mVertexEvaluations += inVertices.size();
     ioReport.mVerticesMoved += static_cast<std::uint32_t>(inVertices.size());
     UpdateNormalsAround(inVertices, ioReport);
@@ -784,9 +780,6 @@ void FfdDeformer::RecomputeAll()
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
     std::fill(mCellBound.begin(), mCellBound.end(), 0.0);
-    for (SliceReach& slices : mSlices)
-        for (std::vector<double>& bounds : slices.mBound)
-            std::fill(bounds.begin(), bounds.end(), 0.0);
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const int zone = mVertexZone[v];
@@ -801,12 +794,6 @@ void FfdDeformer::RecomputeAll()
             const double moved = (position - mRestMesh.mPositions[v]).norm();
             mZoneDisplacementBound[static_cast<std::size_t>(zone)] = std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], moved);
             mCellBound[static_cast<std::size_t>(mVertexCell[v])] = std::max(mCellBound[static_cast<std::size_t>(mVertexCell[v])], moved);
-            const std::array<int, 3>& ijk = mVertexLocation[v].mCell;
-            for (std::size_t axis = 0; axis < 3; ++axis)
-            {
-                double& slice_bound = mSlices[static_cast<std::size_t>(zone)].mBound[axis][static_cast<std::size_t>(ijk[axis])];
-                slice_bound = std::max(slice_bound, moved);
-            }
         }
     }
     mVertexEvaluations += vertex_count;

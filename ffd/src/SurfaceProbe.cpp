@@ -213,7 +213,7 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
 
     // How far any vertex has moved from its rest position, which lies in its cells' reach boxes.
     double moved = 0.0;
-    for (double bound : mZoneDisplacementBound)
+    for (double bound : mCellBound)
         moved = std::max(moved, bound);
 
     // How far a cell's surface moved: its vertices' and those of the cells its triangles reach.

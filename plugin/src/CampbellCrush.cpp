@@ -119,8 +119,8 @@ std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattic
     below(-inPlan.mSide, -(inPlan.mSideMin - across));
     below(inPlan.mThird, inPlan.mThirdMax + across);
     below(-inPlan.mThird, -(inPlan.mThirdMin - across));
-    if (!(low <= high)) // empty, or NaN from a degenerate plan: the whole row, as the field decides
-        return low > high ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, last};
+    if (!(low <= high)) // empty (ApplyCrushPlan takes finite plans only)
+        return {1, 0};
     return {std::max(static_cast<int>(std::floor(low)) - 1, 0), std::min(static_cast<int>(std::ceil(high)) + 1, last)};
 }
 
@@ -270,6 +270,14 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
 ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::FfdDeformer& ioDeformer)
 {
     ffd::DentReport total;
+    // intent: a plan that is not finite crushes nothing (PlanCampbellCrush makes finite ones; a hand-made one
+    // could otherwise empty rows FieldRangeOnRow cannot bound)
+    const bool finite = IsFinite(inPlan.mDirection) && IsFinite(inPlan.mSide) && IsFinite(inPlan.mThird) &&
+                        std::isfinite(inPlan.mSideMin) && std::isfinite(inPlan.mSideMax) && std::isfinite(inPlan.mThirdMin) &&
+                        std::isfinite(inPlan.mThirdMax) && std::isfinite(inPlan.mFront) && std::isfinite(inPlan.mDepth) &&
+                        std::isfinite(inPlan.mFlatLayer) && std::isfinite(inPlan.mZoneLength) && std::isfinite(inPlan.mRamp);
+    if (!finite)
+        return total;
     for (std::size_t z = 0; z < ioDeformer.GetZones().size(); ++z)
     {
         const ffd::FfdLattice& zone = ioDeformer.GetZones()[z];

@@ -41,7 +41,7 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
             status.HasError())
             return status.GetError();
     }
-    mProps.push_back({inBody, std::move(ioProp)});
+    mProps.push_back({inBody, std::move(ioProp), {}});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
@@ -138,26 +138,32 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     if (!std::isfinite(inMinMass) || !(inMinMass >= 0.0))
         return MakeError(std::isfinite(inMinMass) ? EError::InvalidArgument : EError::NonFinite,
                          "PropWorld::TakeLooseFragments: the minimum mass must be finite and >= 0 kg");
-    // intent: every piece and its rigid body first (nothing changes until all are known)
+    // intent: every piece and its rigid body first
     std::vector<LooseFragment> loose;
     std::vector<Vec3> positions, velocities;
     for (std::size_t index = 0; index < mProps.size(); ++index)
     {
-        const FemProp& prop = mProps[index].mProp;
-        const std::vector<fem::TetFragment> fragments = prop.ComputeFragments();
-        const bool anchored = std::any_of(fragments.begin(), fragments.end(), [](const fem::TetFragment& f) { return f.mAnchored; });
-        if (fragments.size() < 2 && !anchored)
-            continue; // a whole free prop is its body's, not debris
-        const plugin::BodyState* body = mWorld->GetBodyState(mProps[index].mBody);
+        Prop& prop = mProps[index];
+        const plugin::BodyState* body = mWorld->GetBodyState(prop.mBody);
         if (body == nullptr)
-            return MakeError(EError::OutOfRange, "PropWorld::TakeLooseFragments: prop " + std::to_string(index) +
-                                                     ": its body left the world");
-        prop.ReadPositions(positions);
-        prop.ReadVelocities(velocities);
+            continue; // its body left the world: nothing of it is in the game's world to hand over
+        prop.mTaken.resize(static_cast<std::size_t>(prop.mProp.GetNodeCount()), 0);
+        const std::vector<fem::TetFragment> fragments = prop.mProp.ComputeFragments();
+        // A piece taken before has all its nodes fixed by us: it anchors nothing. The prop is held by a node
+        // fixed otherwise; a prop held by none keeps the piece holding group 0 (its body carries it).
+        const auto taken = [&](const fem::TetFragment& inPiece) { return prop.mTaken[static_cast<std::size_t>(inPiece.mNodes[0])] != 0; };
+        const bool held = std::any_of(fragments.begin(), fragments.end(),
+                                      [&](const fem::TetFragment& f) { return f.mAnchored && !taken(f); });
+        std::vector<std::size_t> leaving;
         for (std::size_t f = 0; f < fragments.size(); ++f)
+            if (!fragments[f].mAnchored && (held || f != 0))
+                leaving.push_back(f);
+        if (leaving.empty())
+            continue;
+        prop.mProp.ReadPositions(positions);
+        prop.mProp.ReadVelocities(velocities);
+        for (std::size_t f : leaving)
         {
-            if (fragments[f].mAnchored || (!anchored && f == 0))
-                continue;
             LooseFragment piece;
             piece.mProp = PropId{static_cast<std::uint32_t>(index)};
             piece.mElements = fragments[f].mElements;
@@ -165,16 +171,18 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             piece.mDropped = fragments[f].mMass < inMinMass;
             if (!piece.mDropped)
             {
-                Result<FragmentRigidBody> rigid = FragmentBody(fragments[f], positions, velocities, prop.GetMasses(), *body);
-                if (rigid.HasError())
-                    return MakeError(rigid.GetError().mCode, "PropWorld::TakeLooseFragments: prop " + std::to_string(index) +
-                                                                 ", piece " + std::to_string(f) + ": " + rigid.GetError().mMessage);
-                piece.mRigidBody = std::move(rigid).Get();
+                // A piece no rigid body can stand for (crushed flat, its nodes coplanar) leaves without one.
+                Result<FragmentRigidBody> rigid = FragmentBody(fragments[f], positions, velocities, prop.mProp.GetMasses(), *body);
+                if (rigid.IsValid())
+                    piece.mRigidBody = std::move(rigid).Get();
+                else
+                    piece.mDropped = true;
             }
             loose.push_back(std::move(piece));
         }
     }
-    // intent: record, then fix the pieces' nodes in their props
+    // intent: record, then fix the pieces' nodes in their props. A recorder's write error does not stop the
+    // hand-over (the game's world already holds what it returns): the recorder keeps it (GetStatus, Close).
     for (const LooseFragment& piece : loose)
     {
         if (mRecorder != nullptr)
@@ -184,13 +192,14 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             record.WriteU32(static_cast<std::uint32_t>(piece.mNodes.size()));
             for (int node : piece.mNodes)
                 record.WriteU32(static_cast<std::uint32_t>(node));
-            if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Loose), record.GetBytes());
-                status.HasError())
-                return status.GetError();
+            (void)mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Loose), record.GetBytes());
         }
+        Prop& prop = mProps[piece.mProp.mValue];
         for (int node : piece.mNodes)
-            if (Status fixed = mProps[piece.mProp.mValue].mProp.SetNodeFixed(node, true); fixed.HasError())
-                return fixed.GetError(); // nodes from the prop's own fragments: cannot happen
+        {
+            (void)prop.mProp.SetNodeFixed(node, true); // the prop's own fragment nodes: cannot be refused
+            prop.mTaken[static_cast<std::size_t>(node)] = 1;
+        }
     }
     return loose;
 }

@@ -184,3 +184,53 @@ TEST_CASE("ProbeSurface finds nothing for a probe that is not finite", "[ffd]")
     probe.mSideMax = std::numeric_limits<double>::quiet_NaN();
     CHECK(std::isinf(deformer.ProbeSurface(probe).mFront));
 }
+
+TEST_CASE("ProbeSurface bounds a cell by how far its stored positions moved, not by the displacement", "[ffd]")
+{
+    // Review finding: a displacement of 1e-16 m added to a rest coordinate of 1 rounds to a move of 2.2e-16 m.
+    // A cell bound taken from the displacement let the probe skip that vertex behind the front (probe 'moved'
+    // 1.39e-16 against the scan's 2.22e-16). Two small triangles across the probe at x = 0.1 and x = 1, and
+    // 200 slivers elsewhere so the probe stays in its cell-by-cell path.
+    TriangleMesh mesh;
+    auto add = [&](const Vec3& inPoint) {
+        mesh.mPositions.push_back(inPoint);
+        return static_cast<std::uint32_t>(mesh.mPositions.size() - 1);
+    };
+    const std::uint32_t w = add({0.1, 0.0, 0.0}), a = add({0.1, 0.4, 0.01}), b = add({0.1, -0.4, 0.01});
+    const std::uint32_t v = add({1.0, 0.0, 0.0}), c = add({1.0, 0.4, 0.01}), e = add({1.0, -0.4, 0.01});
+    mesh.mTriangles = {{w, a, b}, {v, c, e}};
+    for (int i = 0; i < 200; ++i)
+    {
+        const double x = 0.05 + 1.9 * i / 200.0;
+        const std::uint32_t p = add({x, 0.45, 0.3}), q = add({x + 0.001, 0.46, 0.3}), r = add({x, 0.45, 0.31});
+        mesh.mTriangles.push_back({p, q, r});
+    }
+    FfdDeformerSettings settings;
+    FfdZoneSettings zone;
+    zone.mLattice.mOrigin = Vec3(0.0, -0.5, -0.5);
+    zone.mLattice.mSize = Vec3(2.0, 1.0, 1.0);
+    zone.mLattice.mControlCount = {8, 4, 4};
+    zone.mMaxTotalDeformation = 1.0;
+    settings.mZones = {zone};
+    FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    const FfdLattice& lattice = deformer.GetZones()[0];
+    std::vector<int> controls;
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 8; ++i)
+                controls.push_back(lattice.ControlIndex(i, j, k));
+    std::sort(controls.begin(), controls.end());
+    Eigen::MatrixX3d delta = Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(controls.size()), 3);
+    for (std::size_t n = 0; n < controls.size(); ++n)
+        delta(static_cast<Eigen::Index>(n), 0) = 1.2e-16 / 1.15 * (1.5 - 0.1 * (controls[n] % 8));
+    REQUIRE(deformer.ApplyControlDelta(0, controls, delta));
+    SurfaceProbe probe;
+    probe.mSideMin = probe.mThirdMin = -0.1;
+    probe.mSideMax = probe.mThirdMax = 0.1;
+    const SurfaceProbeResult indexed = deformer.ProbeSurface(probe);
+    const SurfaceProbeResult reference = BruteForceProbe(deformer, probe);
+    CHECK(indexed.mFront == reference.mFront);
+    CHECK(indexed.mVertexInside == reference.mVertexInside);
+    CHECK(indexed.mMoved == reference.mMoved);
+    CHECK(reference.mMoved > 0.0);
+}

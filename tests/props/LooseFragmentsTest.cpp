@@ -145,3 +145,28 @@ TEST_CASE("Loose pieces lighter than the minimum mass are dropped without a body
     for (const TetFragment& piece : props->GetProp(wall)->ComputeFragments())
         CHECK(piece.mAnchored);
 }
+
+TEST_CASE("A free prop keeps the piece its body carries, however often its loose pieces are taken", "[props]")
+{
+    // Review finding: a prop with no fixed node counted as held once the first pieces taken from it were fixed,
+    // and the second call handed over the piece the prop's own body carries.
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    FemProp panel = WeakPanel();
+    for (int node = 0; node < panel.GetNodeCount(); ++node)
+        REQUIRE(panel.SetNodeFixed(node, false).IsValid()); // free: nothing holds it
+    const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
+    Smash(fixture, *props, wall, 12);
+    REQUIRE(props->GetProp(wall)->ComputeFragments().size() > 2);
+    const std::vector<LooseFragment> first = props->TakeLooseFragments().Get();
+    REQUIRE_FALSE(first.empty());
+    for (const LooseFragment& piece : first)
+        CHECK(std::find(piece.mElements.begin(), piece.mElements.end(), 0) == piece.mElements.end()); // group 0 stays
+    // More hits and steps, then a second call: still never the carried piece (the one holding element 0).
+    Smash(fixture, *props, wall, 4);
+    const std::vector<LooseFragment> second = props->TakeLooseFragments().Get();
+    for (const LooseFragment& piece : second)
+        CHECK(std::find(piece.mElements.begin(), piece.mElements.end(), 0) == piece.mElements.end());
+    const std::vector<TetFragment> pieces = props->GetProp(wall)->ComputeFragments();
+    CHECK_FALSE(pieces[0].mAnchored); // the carried piece still moves freely
+}

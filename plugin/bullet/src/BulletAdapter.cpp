@@ -49,9 +49,12 @@ BulletAdapter::BulletAdapter(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDa
 
 BulletAdapter::~BulletAdapter()
 {
-    // intent: the bodies this adapter made leave the world before they are deleted
+    // intent: the bodies this adapter made leave both worlds before they are deleted
     for (OwnedBody& owned : mOwned)
+    {
         mWorld.removeRigidBody(owned.mRigidBody.get());
+        (void)mDamage.RemoveBody(owned.mBody);
+    }
     mWorld.setInternalTickCallback(mPreviousPreTick, mPreviousUserInfo, true);
     mWorld.setInternalTickCallback(mPreviousPostTick, mPreviousUserInfo, false);
     for (FollowingHull& hull : mHulls)

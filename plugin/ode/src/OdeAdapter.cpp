@@ -46,8 +46,10 @@ Result<BodyId> OdeAdapter::AddStaticGeom(dGeomID inGeom)
 
 OdeAdapter::~OdeAdapter()
 {
+    // intent: the bodies this adapter made leave the damage world and ODE
     for (const OwnedBody& owned : mOwned)
     {
+        (void)mDamage.RemoveBody(owned.mBody);
         dGeomDestroy(owned.mGeom);
         dBodyDestroy(owned.mOdeBody);
     }

@@ -34,7 +34,10 @@ class CellSurfaceIndex;
 class FfdDeformer
 {
 public:
-    /// Validates the mesh and zones and binds vertices.
+    /// Most lattice cells over all zones (each costs about 70 bytes of index): 2^24, a 256^3 lattice
+    static constexpr std::int64_t cMaxCellsInZones = std::int64_t{1} << 24;
+
+    /// Validates the mesh and zones (at most cMaxCellsInZones cells in all) and binds vertices.
     static Result<FfdDeformer> Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings);
 
     /// Moves each point by its displacement (body frame, m), accumulating onto earlier dents.
@@ -184,13 +187,12 @@ private:
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
-    std::vector<double> mCellBound;             ///< Per cell across zones: the largest displacement of its vertices (m)
+    std::vector<double> mCellBound;             ///< Per cell across zones: the largest |position - rest| of its vertices (m)
     /// Per zone, per lattice axis, per slice of cells across that axis: the union of the slice's reach boxes
-    /// (rest, body frame, m) and an upper bound of its cells' mCellBound (m), so probes skip whole slices.
+    /// (rest, body frame, m), so probes skip whole slices.
     struct SliceReach
     {
         std::array<std::vector<Vec3>, 3> mLow, mHigh;
-        std::array<std::vector<double>, 3> mBound;
     };
     std::vector<SliceReach> mSlices;
 

@@ -98,7 +98,9 @@ public:
     /// game to create in its engine (BulletAdapter / OdeAdapter::CreateConvexBody), and leaves the prop: its
     /// nodes are fixed where they are, so the FEM neither moves nor wakes for them again while the rest of the
     /// prop goes on. Pieces lighter than inMinMass (kg, >= 0) leave the same way without a body (mDropped).
-    /// While recording, the fixed nodes are recorded, so replays drop the pieces at the same point.
+    /// A piece no rigid body can stand for (crushed flat) leaves without one too. Props whose body left the
+    /// world are skipped. While recording, the fixed nodes are recorded, so replays drop the pieces at the same
+    /// point; a recorder's write error does not stop the hand-over (DamageRecorder::GetStatus keeps it).
     /// Refused, changing nothing, for a non-finite or negative minimum.
     Result<std::vector<LooseFragment>> TakeLooseFragments(double inMinMass = 0.0);
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
@@ -116,6 +118,7 @@ private:
     {
         plugin::BodyId mBody;
         FemProp mProp;
+        std::vector<std::uint8_t> mTaken; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
