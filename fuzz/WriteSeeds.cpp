@@ -85,7 +85,8 @@ int main(int argc, char** argv)
     }
 
 #ifdef CRUMPLE_FUZZ_PROPS
-    // A recording with a brittle panel standing in for the wall: its setup, the hit, three prop steps.
+    // A recording with a brittle panel standing in for the wall: its setup, the hit, three prop steps, the
+    // loose pieces taken, a fourth step.
     {
         fuzz::FuzzWorld world;
         std::filesystem::create_directories(out / "prop_replay");
@@ -100,7 +101,7 @@ int main(int argc, char** argv)
             grid.mSize = Vec3(0.2, 2.0, 2.0);
             grid.mCellCount = {1, 4, 4};
             fem::FemMaterialSettings material;
-            material.mTensileStrength = 1.0e6;
+            material.mTensileStrength = 2.0e5; // weak enough that the hit knocks pieces loose
             fem::TetSolverSettings settings;
             settings.mGravity = Vec3::Zero();
             Result<props::FemProp> panel =
@@ -110,6 +111,8 @@ int main(int argc, char** argv)
             world.Dent();
             for (int step = 0; ok && step < 3; ++step)
                 ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
+            // The pieces knocked loose leave as bodies (a PLOS record), then one more step.
+            ok = ok && prop_world.Get()->TakeLooseFragments().IsValid() && prop_world.Get()->Step(1.0 / 60.0).IsValid();
             ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
         }
     }
