@@ -67,12 +67,13 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
 
     // intent: ring vertices per cell: corners of the cell's triangles that lie in another cell (or in no
     // zone); counted, filled, then sorted and made unique inside each cell's run in place
+    // (in triangle order: the mesh's arrays are read in memory order, only the small per-cell tallies jump)
     auto for_each_ring = [&](auto&& inVisit) {
-        for (std::size_t c = 0; c < cells; ++c)
-            for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
-                for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
-                    if (inVertexCell[v] != static_cast<int>(c))
-                        inVisit(c, v);
+        for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
+            for (std::size_t i = 0; i < 3 && triangle_cells[t][i] >= 0; ++i)
+                for (std::uint32_t v : inMesh.mTriangles[t])
+                    if (inVertexCell[v] != triangle_cells[t][i])
+                        inVisit(static_cast<std::size_t>(triangle_cells[t][i]), v);
     };
     std::vector<std::uint32_t> ring_start(cells + 1, 0);
     for_each_ring([&](std::size_t inCell, std::uint32_t) { ++ring_start[inCell + 1]; });
@@ -120,13 +121,18 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
         index.mReachLow[static_cast<std::size_t>(cell)] = index.mReachLow[static_cast<std::size_t>(cell)].cwiseMin(inMesh.mPositions[v]);
         index.mReachHigh[static_cast<std::size_t>(cell)] = index.mReachHigh[static_cast<std::size_t>(cell)].cwiseMax(inMesh.mPositions[v]);
     }
-    for (std::size_t c = 0; c < cells; ++c)
-        for (std::uint32_t e = index.mEntryStart[c]; e < index.mEntryStart[c + 1]; ++e)
-            for (std::uint32_t v : inMesh.mTriangles[index.mEntries[e].mTriangle])
-            {
-                index.mReachLow[c] = index.mReachLow[c].cwiseMin(inMesh.mPositions[v]);
-                index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(inMesh.mPositions[v]);
-            }
+    for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
+    {
+        const std::array<std::uint32_t, 3>& triangle = inMesh.mTriangles[t];
+        const Vec3 low = inMesh.mPositions[triangle[0]].cwiseMin(inMesh.mPositions[triangle[1]]).cwiseMin(inMesh.mPositions[triangle[2]]);
+        const Vec3 high = inMesh.mPositions[triangle[0]].cwiseMax(inMesh.mPositions[triangle[1]]).cwiseMax(inMesh.mPositions[triangle[2]]);
+        for (std::size_t i = 0; i < 3 && triangle_cells[t][i] >= 0; ++i)
+        {
+            const auto c = static_cast<std::size_t>(triangle_cells[t][i]);
+            index.mReachLow[c] = index.mReachLow[c].cwiseMin(low);
+            index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(high);
+        }
+    }
     return index;
 }
 
