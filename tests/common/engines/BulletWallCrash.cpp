@@ -44,7 +44,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         object->setRestitution(restitution);
         mWorld->addCollisionObject(object.get());
         if (mAdapter != nullptr)
-            (void)mAdapter->AddBody(*object);
+            mWallBody = mAdapter->AddBody(*object).Get(); // the last one added is the target
         mShapes.push_back(std::move(inShape));
         mObjects.push_back(std::move(object));
     };

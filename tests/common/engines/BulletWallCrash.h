@@ -38,6 +38,8 @@ public:
     /// The target vehicle's deformable object (invalid without one)
     plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     CrashCounter& GetCounter() { return mCounter; }
+    /// The damage body of the target (wall or pole; the ground when only driving)
+    plugin::BodyId GetWallBody() const { return mWallBody; }
 
 private:
     EngineCrashSettings mSettings;
@@ -55,6 +57,7 @@ private:
     plugin::ObjectId mCarObject;
     btRigidBody* mTarget = nullptr;
     plugin::ObjectId mTargetObject;
+    plugin::BodyId mWallBody;
     CrashCounter mCounter;
 };
 

@@ -29,8 +29,11 @@ public:
     void Step();
 
     dWorldID GetWorld() const { return mWorld; }
+    dSpaceID GetSpace() const { return mSpace; }
     dBodyID GetCar() const { return mCar; }
     ode::OdeAdapter& GetAdapter() { return *mAdapter; }
+    /// The damage body of the target: ODE's static geoms (ground, wall or pole) are the adapter's environment
+    plugin::BodyId GetWallBody() const { return mAdapter->GetEnvironment(); }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
     /// The car's state as Crumple reads it (mass, world inertia, frame, velocities)
