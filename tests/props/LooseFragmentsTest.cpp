@@ -1,16 +1,14 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // Pieces that break loose from a prop leave it as rigid bodies: momentum kept, handed over once, replayed.
+#include "BrittlePanel.h"
 #include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
-#include <crumple/fem/TetGrid.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
-
-#include <BrittleMaterial.h>
 
 #include <catch2/catch.hpp>
 
@@ -25,25 +23,11 @@ using namespace crumple::props;
 namespace
 {
 
-// A brittle 2 m x 0.2 m x 2 m panel standing in for the fixture's wall (its body frame), anchored along its
-// base; weak enough that hard hits knock pieces out of it.
+// The panel of these tests: weak enough (1 GPa, a tenth of the shared brittle strength, 8 x 8 cells) that hard
+// hits knock pieces out of it.
 FemProp WeakPanel()
 {
-    TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 8, 8};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e9;
-    material.mPoissonRatio = 0.2;
-    material.mTensileStrength *= 0.1;
-    TetSolverSettings settings;
-    settings.mGravity = Vec3::Zero();
-    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), material, settings, FemPropSettings{}).Get();
-    for (int node = 0; node < prop.GetNodeCount(); ++node)
-        if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
-            REQUIRE(prop.SetNodeFixed(node, true).IsValid());
-    return prop;
+    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
 }
 
 // Momentum of the prop's free nodes, world frame.

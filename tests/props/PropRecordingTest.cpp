@@ -1,16 +1,14 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // Props in a damage recording: a run with a prop that cracks, replayed without an engine, ends bit for bit.
+#include "BrittlePanel.h"
 #include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
-#include <crumple/fem/TetGrid.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
-
-#include <BrittleMaterial.h>
 
 #include <catch2/catch.hpp>
 
@@ -22,24 +20,10 @@ using namespace crumple::props;
 namespace
 {
 
-// A brittle 2 m x 0.2 m x 2 m panel standing in for the fixture's wall (its body frame), anchored along its
-// base: the car's hit cracks it.
-FemProp BrittlePanel()
+// The panel of these tests: stiff (10 GPa) at the shared brittle strength, 10 x 10 cells.
+props::FemProp BrittlePanel()
 {
-    TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 10, 10};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
-    TetSolverSettings settings;
-    settings.mGravity = Vec3::Zero();
-    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), material, settings, FemPropSettings{}).Get();
-    for (int node = 0; node < prop.GetNodeCount(); ++node)
-        if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)
-            REQUIRE(prop.SetNodeFixed(node, true).IsValid());
-    return prop;
+    return test::BrittlePanel({1, 10, 10}, 1.0e10, 1.0);
 }
 
 } // namespace

@@ -1,0 +1,41 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/fem/TetGrid.h>
+#include <crumple/props/FemProp.h>
+
+#include <BrittleMaterial.h>
+
+#include <catch2/catch.hpp>
+
+#include <array>
+
+namespace crumple::test
+{
+
+/// A brittle 2 m x 0.2 m x 2 m panel standing in for the WorldFixture's wall (its body frame: x in [0, 0.2],
+/// y and z in [-1, 1]), anchored along its base (z = -1), without gravity: the car's hits crack it.
+/// @param[in] inCells           cells along x, y, z (five tetrahedra each)
+/// @param[in] inYoungsModulus   Pa (Poisson ratio 0.2)
+/// @param[in] inStrengthFactor  times the shared brittle material's tensile strength
+inline props::FemProp BrittlePanel(const std::array<int, 3>& inCells, double inYoungsModulus, double inStrengthFactor)
+{
+    fem::TetGridSettings grid;
+    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = inCells;
+    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
+    material.mYoungsModulus = inYoungsModulus;
+    material.mPoissonRatio = 0.2;
+    material.mTensileStrength *= inStrengthFactor;
+    fem::TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    props::FemProp prop = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material, settings, props::FemPropSettings{}).Get();
+    for (int node = 0; node < prop.GetNodeCount(); ++node)
+        if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
+            REQUIRE(prop.SetNodeFixed(node, true).IsValid());
+    return prop;
+}
+
+} // namespace crumple::test
