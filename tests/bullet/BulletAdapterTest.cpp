@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
 #include "BulletWallCrash.h"
+#include "TurnedBlock.h"
 
 #include <crumple/bullet/BulletAdapter.h>
 
@@ -335,17 +336,7 @@ TEST_CASE("Bullet: a convex body the adapter makes has the settings' mass, inert
     std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, damage).Get());
 
     // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.
-    ConvexBodySettings settings;
-    settings.mMass = 12.0;
-    settings.mPrincipalInertia = Vec3(0.1 * 0.1 + 0.2 * 0.2, 0.6 * 0.6 + 0.2 * 0.2, 0.6 * 0.6 + 0.1 * 0.1) * (12.0 / 12.0);
-    settings.mOrientation = Eigen::AngleAxisd(0.9, Vec3(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
-    settings.mPosition = Vec3(2.0, 1.0, 0.5);
-    settings.mLinearVelocity = Vec3(3.0, -1.0, 0.5);
-    settings.mAngularVelocity = Vec3(0.5, 2.0, -1.0);
-    for (double x : {-0.3, 0.3})
-        for (double y : {-0.05, 0.05})
-            for (double z : {-0.1, 0.1})
-                settings.mHullPoints.push_back(Vec3(x, y, z));
+    const ConvexBodySettings settings = TurnedBlock();
     const int objects = world.mWorld.getNumCollisionObjects();
     const BodyId id = adapter->CreateConvexBody(settings).Get();
     btRigidBody* body = adapter->GetConvexBody(id);

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "OdeWallCrash.h"
+#include "TurnedBlock.h"
 
 #include <crumple/ode/OdeAdapter.h>
 
@@ -201,18 +202,9 @@ TEST_CASE("ODE: a convex body the adapter makes has the settings' mass, inertia,
         DamageWorld& damage = *damage_owner;
         std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
 
-        // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning.
-        ConvexBodySettings settings;
-        settings.mMass = 12.0;
-        settings.mPrincipalInertia = Vec3(0.1 * 0.1 + 0.2 * 0.2, 0.6 * 0.6 + 0.2 * 0.2, 0.6 * 0.6 + 0.1 * 0.1);
-        settings.mOrientation = Eigen::AngleAxisd(0.9, Vec3(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
-        settings.mPosition = Vec3(2.0, 1.0, 0.5);
-        settings.mLinearVelocity = Vec3(3.0, -1.0, 0.5);
-        settings.mAngularVelocity = Vec3(0.5, 2.0, -1.0);
-        for (double x : {-0.3, 0.3})
-            for (double y : {-0.05, 0.05})
-                for (double z : {0.0, 0.2}) // off the centre of mass: the box geom sits where the points are
-                    settings.mHullPoints.push_back(Vec3(x, y, z - 0.1 + 0.02));
+        // A 0.6 x 0.1 x 0.2 m, 12 kg block turned about an oblique axis, moving and spinning; its hull 0.02 m
+        // above the centre of mass (the box geom sits where the points are).
+        const ConvexBodySettings settings = TurnedBlock(0.02);
         const BodyId id = adapter->CreateConvexBody(world, space, settings).Get();
         dBodyID body = adapter->GetConvexBody(id);
         REQUIRE(body != nullptr);
