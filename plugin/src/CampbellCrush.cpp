@@ -58,16 +58,12 @@ void Widen(double& ioLo, double& ioHi, double inMinWidth)
     }
 }
 
-struct Footprint
+// The impactor's footprint on this side: the crush direction, the axes across it and the rectangle the
+// pushing contacts span there, widened to inMinWidth (the prism the crush planner probes the surface with).
+std::optional<ffd::SurfaceProbe> FootprintOf(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp,
+                                             double inMinWidth)
 {
-    Vec3 mDirection, mSide, mThird;
-    double mSideMin, mSideMax, mThirdMin, mThirdMax;
-};
-
-std::optional<Footprint> FootprintOf(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp,
-                                     double inMinWidth)
-{
-    Footprint footprint;
+    ffd::SurfaceProbe footprint;
     footprint.mDirection = CrushDirection(inCollision, inSide);
     if (footprint.mDirection.isZero(0.0))
         return std::nullopt;
@@ -144,7 +140,7 @@ double CrushPlan::DisplacementAt(const Vec3& inPoint) const
 
 double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth)
 {
-    const std::optional<Footprint> footprint = FootprintOf(inCollision, inSide, inUp, inMinWidth);
+    const std::optional<ffd::SurfaceProbe> footprint = FootprintOf(inCollision, inSide, inUp, inMinWidth);
     return footprint ? footprint->mSideMax - footprint->mSideMin : inMinWidth;
 }
 
@@ -199,7 +195,7 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
 {
     if (!(inEnergy > 0.0))
         return std::nullopt;
-    const std::optional<Footprint> footprint = FootprintOf(inCollision, inSide, inUp, inMaterial.mMinCrushWidth);
+    const std::optional<ffd::SurfaceProbe> footprint = FootprintOf(inCollision, inSide, inUp, inMaterial.mMinCrushWidth);
     if (!footprint)
         return std::nullopt;
     CrushPlan plan;
@@ -222,15 +218,7 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // The impactor meets the body's foremost surface point in the footprint (a low-poly roof may have no
     // vertex there, only a triangle across it); the crush already there is the deepest earlier inward move
     // of the vertices in the footprint, or of the triangles across it when none is.
-    ffd::SurfaceProbe probe;
-    probe.mDirection = plan.mDirection;
-    probe.mSide = plan.mSide;
-    probe.mThird = plan.mThird;
-    probe.mSideMin = plan.mSideMin;
-    probe.mSideMax = plan.mSideMax;
-    probe.mThirdMin = plan.mThirdMin;
-    probe.mThirdMax = plan.mThirdMax;
-    const ffd::SurfaceProbeResult surface = inDeformer.ProbeSurface(probe);
+    const ffd::SurfaceProbeResult surface = inDeformer.ProbeSurface(*footprint);
     if (!std::isfinite(surface.mFront))
         return std::nullopt;
     const double front = surface.mFront;

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
 #include "ThreadJobSystem.h"
+#include "TwoZoneBox.h"
 
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/ffd/OneSidedControls.h>
@@ -149,17 +150,7 @@ TEST_CASE("Incremental dents equal a full recompute bit for bit across zones, re
     // Two zones split the box at x = 0.3 (triangles span the split) and leave its rear 0.2 m in no zone (loose
     // vertices whose normals change only through their neighbours): the dent updates exactly the triangles and
     // vertex normals it must, so every byte equals a full recompute from the same controls.
-    TriangleMesh mesh = common::MakeBoxMesh(cHalf, {40, 18, 14});
-    FfdDeformerSettings settings;
-    const FfdZoneSettings whole = plugin::FitZoneToMesh(mesh, {12, 8, 7}, 0.5);
-    FfdZoneSettings front = whole, middle = whole;
-    front.mLattice.mOrigin.x() = 0.3;
-    front.mLattice.mSize.x() = whole.mLattice.mOrigin.x() + whole.mLattice.mSize.x() - 0.3;
-    middle.mLattice.mOrigin.x() = -1.8;
-    middle.mLattice.mSize.x() = 2.1;
-    middle.mLattice.mControlCount = {9, 7, 6};
-    settings.mZones = {front, middle};
-    FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    FfdDeformer deformer = test::TwoZoneBox(cHalf, {40, 18, 14}, {12, 8, 7}, {9, 7, 6}, 0.5);
     const FfdDeformer pristine = deformer;
     int loose = 0;
     for (std::uint32_t v = 0; v < deformer.GetPositions().size(); ++v)

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "TwoZoneBox.h"
 
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
@@ -142,16 +143,7 @@ TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and 
     // triangles span many cells (a probe often holds no vertex, only triangles across it).
     for (const std::array<int, 3>& segments : {std::array<int, 3>{40, 18, 14}, std::array<int, 3>{2, 1, 1}})
     {
-        TriangleMesh mesh = common::MakeBoxMesh(cHalf, segments);
-        FfdDeformerSettings settings;
-        const FfdZoneSettings whole = plugin::FitZoneToMesh(mesh, {14, 8, 7}, 0.6);
-        FfdZoneSettings front = whole, middle = whole;
-        front.mLattice.mOrigin.x() = 0.3;
-        front.mLattice.mSize.x() = whole.mLattice.mOrigin.x() + whole.mLattice.mSize.x() - 0.3;
-        middle.mLattice.mOrigin.x() = -1.8;
-        middle.mLattice.mSize.x() = 2.1;
-        settings.mZones = {front, middle};
-        FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+        FfdDeformer deformer = test::TwoZoneBox(cHalf, segments, {14, 8, 7}, {14, 8, 7}, 0.6);
         int hits = 0;
         CheckSameAsBruteForce(deformer, random, 300, hits);
 
