@@ -44,11 +44,12 @@ void DamageRecorder::RecordNewObjects()
     // Objects appear in the file before any collision that can dent them, with the damage they have now.
     for (ObjectId id : mWorld->GetObjectIds())
     {
+        // A slot reused by a new object (next generation) is a new object of the recording.
         if (mRecorded.size() <= id.mValue)
             mRecorded.resize(id.mValue + 1, 0);
-        if (mRecorded[id.mValue] != 0)
+        if (mRecorded[id.mValue] == id.mGeneration + 1)
             continue;
-        mRecorded[id.mValue] = 1;
+        mRecorded[id.mValue] = id.mGeneration + 1;
         const DeformableObject& object = *mWorld->GetObject(id);
         RecordedObject record;
         record.mObject = id;

@@ -109,10 +109,19 @@ Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
 {
     if (Status valid = ValidateBodyState(inState); !valid)
         return valid.GetError();
+    if (!mFreeBodies.empty())
+    {
+        const std::uint32_t index = mFreeBodies.back();
+        mFreeBodies.pop_back();
+        BodySlot& slot = mBodies[index];
+        slot.mState = inState;
+        slot.mAlive = true;
+        return BodyId{index, slot.mGeneration};
+    }
     if (mBodies.size() >= BodyId::cInvalid)
         return MakeError(EError::OutOfRange, "too many bodies");
-    mBodies.push_back({inState, true, {}});
-    return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1)};
+    mBodies.push_back({inState, true, 0, {}});
+    return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1), 0};
 }
 
 Status DamageWorld::SetBodyState(BodyId inBody, const BodyState& inState)
@@ -137,9 +146,17 @@ Status DamageWorld::RemoveBody(BodyId inBody)
     Land(); // its objects may be denting
     BodySlot& slot = mBodies[inBody.mValue];
     for (ObjectId object : slot.mObjects)
-        mObjects[object.mValue].mObject.clear();
+    {
+        ObjectSlot& freed = mObjects[object.mValue];
+        freed.mObject.clear();
+        freed.mBody = BodyId{};
+        ++freed.mGeneration; // the removed object's id is stale from now on
+        mFreeObjects.push_back(object.mValue);
+    }
     slot.mObjects.clear();
     slot.mAlive = false;
+    ++slot.mGeneration;
+    mFreeBodies.push_back(inBody.mValue);
     mGrouper.Forget(inBody);
     std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
     return Status::Ok();
@@ -157,25 +174,38 @@ Result<ObjectId> DamageWorld::CreateDeformableObject(BodyId inBody, const Deform
     // Deferred dents run on the task's thread and never call the parallel for from it.
     object.Get().GetDeformer().SetJobSystem(mSettings.mDeferDents ? nullptr : mSettings.mJobs);
     object.Get().GetDeformer().SetPublishing(mSettings.mDeferDents);
-    const ObjectId id{static_cast<std::uint32_t>(mObjects.size())};
-    ObjectSlot slot;
+    ObjectId id;
+    if (!mFreeObjects.empty())
+    {
+        id = ObjectId{mFreeObjects.back(), mObjects[mFreeObjects.back()].mGeneration};
+        mFreeObjects.pop_back();
+    }
+    else if (mObjects.size() < ObjectId::cInvalid)
+    {
+        id = ObjectId{static_cast<std::uint32_t>(mObjects.size()), 0};
+        mObjects.emplace_back();
+    }
+    else
+        return MakeError(EError::OutOfRange, "too many deformable objects");
+    ObjectSlot& slot = mObjects[id.mValue];
     slot.mBody = inBody;
     slot.mObject.push_back(std::move(object).Get());
-    mObjects.push_back(std::move(slot));
     mBodies[inBody.mValue].mObjects.push_back(id);
     return id;
 }
 
 const DeformableObject* DamageWorld::GetObject(ObjectId inObject) const
 {
-    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty())
+    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty() ||
+        mObjects[inObject.mValue].mGeneration != inObject.mGeneration)
         return nullptr;
     return &mObjects[inObject.mValue].mObject.front();
 }
 
 DeformableObject* DamageWorld::GetMutableObject(ObjectId inObject)
 {
-    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty())
+    if (inObject.mValue >= mObjects.size() || mObjects[inObject.mValue].mObject.empty() ||
+        mObjects[inObject.mValue].mGeneration != inObject.mGeneration)
         return nullptr;
     return &mObjects[inObject.mValue].mObject.front();
 }
@@ -196,7 +226,7 @@ std::vector<ObjectId> DamageWorld::GetObjectIds() const
     std::vector<ObjectId> ids;
     for (std::uint32_t i = 0; i < mObjects.size(); ++i)
         if (!mObjects[i].mObject.empty())
-            ids.push_back(ObjectId{i});
+            ids.push_back(ObjectId{i, mObjects[i].mGeneration});
     return ids;
 }
 
@@ -527,7 +557,9 @@ Status DamageWorld::SetDamageState(const DamageState& inState)
     for (std::size_t i = 0; i < ids.size(); ++i)
     {
         const ObjectDamage& damage = inState.mObjects[i];
-        if (damage.mObject != ids[i])
+        // By slot index: a game that loads a save recreates its objects afresh (generation 0), while the
+        // world that saved them may have reused slots.
+        if (damage.mObject.mValue != ids[i].mValue)
             return MakeError(EError::StateMismatch, "damage state names object " + std::to_string(damage.mObject.mValue) +
                                                         " where the world has object " + std::to_string(ids[i].mValue));
         if (Status valid = GetObject(ids[i])->GetDeformer().ValidateControlDisplacements(damage.mZones); !valid)

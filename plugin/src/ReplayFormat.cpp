@@ -46,7 +46,9 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     ByteReader reader(inPayload);
     RecordedObject object;
     object.mObject.mValue = reader.ReadU32();
+    object.mObject.mGeneration = reader.ReadU32();
     object.mBody.mValue = reader.ReadU32();
+    object.mBody.mGeneration = reader.ReadU32();
     object.mFirstCollision = reader.ReadU64();
     DeformableObjectSettings& settings = object.mSettings;
     settings.mMaterial.mDeformationFactor = reader.ReadDouble();
@@ -133,7 +135,9 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     ByteReader reader(inPayload);
     Collision collision;
     collision.mBodyA.mValue = reader.ReadU32();
+    collision.mBodyA.mGeneration = reader.ReadU32();
     collision.mBodyB.mValue = reader.ReadU32();
+    collision.mBodyB.mGeneration = reader.ReadU32();
     collision.mStartTime = reader.ReadDouble();
     collision.mEndTime = reader.ReadDouble();
     collision.mSequence = reader.ReadU64();
@@ -199,7 +203,9 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     ByteWriter writer;
     const DeformableObjectSettings& settings = inObject.mSettings;
     writer.WriteU32(inObject.mObject.mValue);
+    writer.WriteU32(inObject.mObject.mGeneration);
     writer.WriteU32(inObject.mBody.mValue);
+    writer.WriteU32(inObject.mBody.mGeneration);
     writer.WriteU64(inObject.mFirstCollision);
     writer.WriteDouble(settings.mMaterial.mDeformationFactor);
     writer.WriteDouble(settings.mMaterial.mMinDeformation);
@@ -252,7 +258,9 @@ std::vector<std::byte> EncodeCollision(const Collision& inCollision)
 {
     ByteWriter writer;
     writer.WriteU32(inCollision.mBodyA.mValue);
+    writer.WriteU32(inCollision.mBodyA.mGeneration);
     writer.WriteU32(inCollision.mBodyB.mValue);
+    writer.WriteU32(inCollision.mBodyB.mGeneration);
     writer.WriteDouble(inCollision.mStartTime);
     writer.WriteDouble(inCollision.mEndTime);
     writer.WriteU64(inCollision.mSequence);

@@ -117,6 +117,7 @@ std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup)
 {
     ByteWriter writer;
     writer.WriteU32(inSetup.mBody.mValue);
+    writer.WriteU32(inSetup.mBody.mGeneration);
     writer.WriteU32(static_cast<std::uint32_t>(inSetup.mBackend));
     WriteMaterial(writer, inSetup.mMaterial);
     WriteSettings(writer, inSetup.mSettings);
@@ -146,6 +147,7 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     ByteReader reader(inBytes);
     PropSetup setup;
     setup.mBody.mValue = reader.ReadU32();
+    setup.mBody.mGeneration = reader.ReadU32();
     setup.mBackend = static_cast<EFemBackend>(reader.ReadU32());
     ReadMaterial(reader, setup.mMaterial);
     ReadSettings(reader, setup.mSettings);

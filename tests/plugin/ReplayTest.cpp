@@ -150,6 +150,23 @@ TEST_CASE("A truncated, corrupt or foreign replay file is refused with a clear m
     CHECK(DecodeReplay(foreign).GetError().mCode == EError::CorruptData);
 }
 
+TEST_CASE("The replay fuzz regressions are in the current format, so they reach the decoder", "[plugin][replay]")
+{
+    // A version bump refuses an old file at its header: the regression would then pass without testing
+    // anything (the three files below sat at version 5 behind versions 6 and 7). Convert them when bumping.
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(CRUMPLE_SOURCE_DIR) / "fuzz/regressions/replay"))
+    {
+        const Result<Replay> replay = DecodeReplay(ReadFileBytes(entry.path()).Get());
+        INFO(entry.path().filename().string());
+        REQUIRE(replay);
+        CHECK_FALSE(replay.Get().mObjects.empty());
+        CHECK_FALSE(replay.Get().mCollisions.empty());
+        ++files;
+    }
+    CHECK(files >= 3);
+}
+
 TEST_CASE("An interrupted recording never looks complete", "[plugin][replay]")
 {
     const std::filesystem::path path = ScratchFile("interrupted.crumple");

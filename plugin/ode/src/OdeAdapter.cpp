@@ -124,6 +124,10 @@ Status OdeAdapter::RemoveBody(dBodyID inBody)
     mBodies.erase(found);
     // Contacts buffered this step with the body would make the damage world refuse the whole step.
     std::erase_if(mEvents, [&](const ContactEvent& e) { return e.mBodyA == body || e.mBodyB == body; });
+    // A body made later this step may reuse the slot: it must be snapshotted for itself.
+    if (body.mValue < mSnapshotted.size())
+        mSnapshotted[body.mValue] = 0;
+    std::erase(mSnapshottedList, body);
     // intent: a body this adapter made is destroyed with its geom (inBody dies here)
     for (auto owned = mOwned.begin(); owned != mOwned.end(); ++owned)
         if (owned->mBody == body)

@@ -53,7 +53,7 @@ private:
     std::FILE* mFile = nullptr;
     std::filesystem::path mPath;
     DamageWorld* mWorld = nullptr;
-    std::vector<std::uint8_t> mRecorded; ///< Per ObjectId: setup written
+    std::vector<std::uint32_t> mRecorded; ///< Per object slot: 1 + the generation whose setup is written, 0: none
     std::uint32_t mObjects = 0;
     std::uint64_t mCollisions = 0;
     Status mStatus;

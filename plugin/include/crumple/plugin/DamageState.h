@@ -16,7 +16,7 @@ namespace crumple::plugin
 /// The damage of one object: its FFD control displacements, one vector per zone (body frame, m).
 struct ObjectDamage
 {
-    ObjectId mObject;                          ///< Which object
+    ObjectId mObject;                          ///< Which object: its slot index (saved and matched; not its generation)
     std::vector<std::vector<Vec3>> mZones;     ///< Per zone, per control (FfdLattice::ControlIndex order)
 };
 

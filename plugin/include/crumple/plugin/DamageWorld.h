@@ -51,13 +51,15 @@ public:
     DamageWorld(const DamageWorld&) = delete;
     DamageWorld& operator=(const DamageWorld&) = delete;
 
-    /// Registers a rigid body with its current state; ids come in creation order.
+    /// Registers a rigid body with its current state. Its id takes the slot of the body removed last (next
+    /// generation), else a new slot: the same calls give the same ids.
     Result<BodyId> CreateBody(const BodyState& inState);
     /// Replaces a body's state (call before the engine's solver: impulses need pre-solve velocities).
     Status SetBodyState(BodyId inBody, const BodyState& inState);
     /// The body's last state.
     const BodyState* GetBodyState(BodyId inBody) const;
-    /// Removes a body, its deformable objects and its open collisions. Ids are not reused.
+    /// Removes a body, its deformable objects and its open collisions. Their ids are refused from then on
+    /// (their slots are reused with the next generation).
     Status RemoveBody(BodyId inBody);
 
     /// Attaches a deformable object to a body; the object's mesh and zones are in that body's frame.
@@ -72,6 +74,10 @@ public:
     BodyId GetObjectBody(ObjectId inObject) const;
     /// Ids of all live objects, ascending.
     std::vector<ObjectId> GetObjectIds() const;
+    /// Slots the world holds for bodies and objects, live or free: at most the most bodies (objects) live at
+    /// once, however many were created and removed.
+    std::size_t GetBodySlotCount() const { return mBodies.size(); }
+    std::size_t GetObjectSlotCount() const { return mObjects.size(); }
 
     /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
     /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
@@ -126,11 +132,13 @@ private:
     {
         BodyState mState;
         bool mAlive = false;
+        std::uint32_t mGeneration = 0; ///< Of the body that holds (or last held) the slot
         std::vector<ObjectId> mObjects;
     };
     struct ObjectSlot
     {
         BodyId mBody;
+        std::uint32_t mGeneration = 0;         ///< Of the object that holds (or last held) the slot
         std::vector<DeformableObject> mObject; ///< Empty once removed (DeformableObject has no default state)
     };
 
@@ -149,7 +157,11 @@ private:
     const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
     ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB);
 
-    bool IsLive(BodyId inBody) const { return inBody.mValue < mBodies.size() && mBodies[inBody.mValue].mAlive; }
+    bool IsLive(BodyId inBody) const
+    {
+        return inBody.mValue < mBodies.size() && mBodies[inBody.mValue].mAlive &&
+               mBodies[inBody.mValue].mGeneration == inBody.mGeneration;
+    }
     Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
     CrushSide CrushSideOf(BodyId inBody) const;
@@ -185,6 +197,8 @@ private:
     CollisionGrouper mGrouper;
     std::vector<BodySlot> mBodies;
     std::vector<ObjectSlot> mObjects;
+    std::vector<std::uint32_t> mFreeBodies;  ///< Slots of removed bodies, the last removed at the back
+    std::vector<std::uint32_t> mFreeObjects; ///< Slots of removed objects, likewise
     std::vector<DamageListener*> mListeners;
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
     std::unique_ptr<InFlight> mInFlight;        ///< Deferred dents (stable address for the task)

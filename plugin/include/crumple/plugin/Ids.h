@@ -8,22 +8,28 @@
 namespace crumple::plugin
 {
 
-/// Stable handle of a rigid body registered with a DamageWorld. Ids are handed out in creation order and
-/// never reused, so ordering by id is deterministic across runs (unlike ordering by pointer).
+/// Handle of a rigid body registered with a DamageWorld: a slot index and the slot's generation (as Box2D's
+/// ids). A removed body's slot is reused by a later body with the next generation, so a session that keeps
+/// spawning and removing debris holds only as many slots as bodies live at once, and the removed body's id
+/// (same index, older generation) is refused everywhere. The world hands out the same ids for the same
+/// sequence of calls, so ordering by id (index, then generation) is deterministic across runs (unlike
+/// ordering by pointer).
 struct BodyId
 {
     static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
-    std::uint32_t mValue = cInvalid; ///< Index in creation order
+    std::uint32_t mValue = cInvalid; ///< Slot index
+    std::uint32_t mGeneration = 0;   ///< How many bodies held the slot before this one
 
     bool IsValid() const { return mValue != cInvalid; }
     auto operator<=>(const BodyId&) const = default;
 };
 
-/// Stable handle of a DeformableObject in a DamageWorld, in creation order.
+/// Handle of a DeformableObject in a DamageWorld: a slot index and generation, reused as BodyId's.
 struct ObjectId
 {
     static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
-    std::uint32_t mValue = cInvalid; ///< Index in creation order
+    std::uint32_t mValue = cInvalid; ///< Slot index
+    std::uint32_t mGeneration = 0;   ///< How many objects held the slot before this one
 
     bool IsValid() const { return mValue != cInvalid; }
     auto operator<=>(const ObjectId&) const = default;

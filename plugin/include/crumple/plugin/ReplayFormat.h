@@ -18,8 +18,8 @@ namespace crumple::plugin
 /// A deformable object as recorded: enough to rebuild it, including the damage it already had.
 struct RecordedObject
 {
-    ObjectId mObject;                          ///< Its id in the live world
-    BodyId mBody;                              ///< The body it is attached to
+    ObjectId mObject;                          ///< Its id in the live world (index and generation)
+    BodyId mBody;                              ///< The body it is attached to (a later body may reuse its index)
     std::uint64_t mFirstCollision = 0;         ///< Collisions recorded before it: only later ones can dent it
     DeformableObjectSettings mSettings;        ///< Mesh, material and the resolved zones (never empty)
     std::vector<std::vector<Vec3>> mInitialControls; ///< Control displacements when recording began (m)
@@ -47,8 +47,8 @@ struct Replay
 /// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain bound.
 /// 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up axis;
 /// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
-/// dents flag; extension records.
-constexpr std::uint32_t cReplayVersion = 6;
+/// dents flag; extension records. 7: ids carry their generation (u32 after each object and body index).
+constexpr std::uint32_t cReplayVersion = 7;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
