@@ -33,7 +33,12 @@ Result<CollisionGrouper> CollisionGrouper::Create(const CollisionGrouperSettings
     return CollisionGrouper(inSettings);
 }
 
-void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts)
+double CollisionGrouper::WindowOf(const Collision& inCollision) const
+{
+    return std::find(mEachStep.begin(), mEachStep.end(), inCollision.mSequence) != mEachStep.end() ? 0.0 : mSettings.mTimeWindow;
+}
+
+void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep)
 {
     if (inContacts.empty())
         return;
@@ -50,7 +55,7 @@ void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const Colli
     {
         if (collision.mBodyA != inBodyA || collision.mBodyB != inBodyB)
             continue;
-        if (time < collision.mStartTime || time > collision.mStartTime + mSettings.mTimeWindow || !near(collision))
+        if (time < collision.mStartTime || time > collision.mStartTime + WindowOf(collision) || !near(collision))
             continue;
         collision.mContacts.insert(collision.mContacts.end(), inContacts.begin(), inContacts.end());
         collision.mEndTime = std::max(collision.mEndTime, time);
@@ -63,6 +68,8 @@ void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const Colli
     collision.mEndTime = time;
     collision.mSequence = mNextSequence++;
     collision.mContacts.assign(inContacts.begin(), inContacts.end());
+    if (inEachStep)
+        mEachStep.push_back(collision.mSequence);
     mOpen.push_back(std::move(collision));
 }
 
@@ -73,18 +80,27 @@ std::vector<Collision> CollisionGrouper::TakeClosed(double inTime)
         return closed;
     // Stable partition keeps the open ones in creation order.
     auto first_closed = std::stable_partition(mOpen.begin(), mOpen.end(), [&](const Collision& c) {
-        return inTime < c.mStartTime + mSettings.mTimeWindow;
+        return inTime < c.mStartTime + WindowOf(c);
     });
     closed.assign(std::make_move_iterator(first_closed), std::make_move_iterator(mOpen.end()));
     mOpen.erase(first_closed, mOpen.end());
+    ForgetClosedEachStep();
     std::sort(closed.begin(), closed.end(), DispatchesBefore);
     return closed;
+}
+
+void CollisionGrouper::ForgetClosedEachStep()
+{
+    std::erase_if(mEachStep, [&](std::uint64_t inSequence) {
+        return std::none_of(mOpen.begin(), mOpen.end(), [&](const Collision& c) { return c.mSequence == inSequence; });
+    });
 }
 
 std::vector<Collision> CollisionGrouper::TakeAll()
 {
     std::vector<Collision> all = std::move(mOpen);
     mOpen.clear();
+    mEachStep.clear();
     std::sort(all.begin(), all.end(), DispatchesBefore);
     return all;
 }
@@ -92,6 +108,7 @@ std::vector<Collision> CollisionGrouper::TakeAll()
 void CollisionGrouper::Forget(BodyId inBody)
 {
     std::erase_if(mOpen, [&](const Collision& c) { return c.mBodyA == inBody || c.mBodyB == inBody; });
+    ForgetClosedEachStep();
 }
 
 } // namespace crumple::plugin

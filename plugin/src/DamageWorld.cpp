@@ -116,11 +116,12 @@ Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
         BodySlot& slot = mBodies[index];
         slot.mState = inState;
         slot.mAlive = true;
+        slot.mDispatchEachStep = false;
         return BodyId{index, slot.mGeneration};
     }
     if (mBodies.size() >= BodyId::cInvalid)
         return MakeError(EError::OutOfRange, "too many bodies");
-    mBodies.push_back({inState, true, 0, {}});
+    mBodies.push_back({inState, true, 0, false, {}});
     return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1), 0};
 }
 
@@ -159,6 +160,22 @@ Status DamageWorld::RemoveBody(BodyId inBody)
     mFreeBodies.push_back(inBody.mValue);
     mGrouper.Forget(inBody);
     std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
+    return Status::Ok();
+}
+
+Status DamageWorld::ForgetImpacts(BodyId inBody)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange, "ForgetImpacts: body " + std::to_string(inBody.mValue) + " does not exist");
+    std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
+    return Status::Ok();
+}
+
+Status DamageWorld::SetDispatchEachStep(BodyId inBody, bool inEachStep)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange, "SetDispatchEachStep: body " + std::to_string(inBody.mValue) + " does not exist");
+    mBodies[inBody.mValue].mDispatchEachStep = inEachStep;
     return Status::Ok();
 }
 
@@ -387,7 +404,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             mImpactMemories.push_back(memory);
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
-        mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b]);
+        mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b],
+                     mBodies[batches[b].mA.mValue].mDispatchEachStep || mBodies[batches[b].mB.mValue].mDispatchEachStep);
     return Status::Ok();
 }
 

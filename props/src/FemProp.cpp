@@ -187,6 +187,12 @@ const std::vector<double>& FemProp::GetMasses() const
     return mCpu->GetMasses();
 }
 
+const std::vector<fem::TetIndices>& FemProp::GetElementNodes() const
+{
+    CRUMPLE_PROPS_ON_GPU(GetElementNodes())
+    return mCpu->GetElementNodes();
+}
+
 int FemProp::GetNodeCount() const
 {
     CRUMPLE_PROPS_ON_GPU(GetNodeCount())

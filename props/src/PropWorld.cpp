@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
 
 #include <crumple/base/ByteWriter.h>
@@ -41,6 +42,10 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
             status.HasError())
             return status.GetError();
     }
+    // intent: a body the engine moves (a held or a free prop) cannot wait for the world's time window: the
+    // prop's FEM must hear of each hit before the next step, so its collisions are dispatched every step
+    if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
+        (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
     mProps.push_back({inBody, std::move(ioProp), {}});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
@@ -195,6 +200,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             (void)mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Loose), record.GetBytes());
         }
         Prop& prop = mProps[piece.mProp.mValue];
+        ++prop.mPiecesTaken;
         for (int node : piece.mNodes)
         {
             (void)prop.mProp.SetNodeFixed(node, true); // the prop's own fragment nodes: cannot be refused
@@ -202,6 +208,47 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         }
     }
     return loose;
+}
+
+Result<std::vector<std::vector<Vec3>>> PropWorld::GetCollisionPieces(PropId inProp, double inCellSize) const
+{
+    if (inProp.mValue >= mProps.size())
+        return MakeError(EError::OutOfRange, "PropWorld::GetCollisionPieces: no prop " + std::to_string(inProp.mValue));
+    if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
+        return MakeError(EError::InvalidArgument, "PropWorld::GetCollisionPieces: the cell size must be finite and > 0 m");
+    const Prop& prop = mProps[inProp.mValue];
+    std::vector<Vec3> positions;
+    prop.mProp.ReadPositions(positions);
+    const std::vector<fem::TetIndices>& elements = prop.mProp.GetElementNodes();
+    // An element of a piece handed over has all its nodes taken: its first one tells.
+    std::vector<std::uint8_t> left_out(elements.size(), 0);
+    for (std::size_t element = 0; element < elements.size(); ++element)
+    {
+        const auto node = static_cast<std::size_t>(elements[element][0]);
+        left_out[element] = node < prop.mTaken.size() ? prop.mTaken[node] : 0;
+    }
+    return PropCollisionPieces(positions, elements, left_out, inCellSize);
+}
+
+Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShape(PropId inProp, double inCellSize,
+                                                                                 double inTolerance)
+{
+    if (!std::isfinite(inTolerance) || !(inTolerance >= 0.0))
+        return MakeError(EError::InvalidArgument, "PropWorld::TakeChangedShape: the tolerance must be finite and >= 0 m");
+    Result<std::vector<std::vector<Vec3>>> pieces = GetCollisionPieces(inProp, inCellSize);
+    if (pieces.HasError())
+        return pieces.GetError();
+    Prop& prop = mProps[inProp.mValue];
+    std::vector<Vec3> positions;
+    prop.mProp.ReadPositions(positions);
+    bool changed = prop.mShapeRevision != prop.mPiecesTaken || prop.mShapePositions.size() != positions.size();
+    for (std::size_t node = 0; node < positions.size() && !changed; ++node)
+        changed = (positions[node] - prop.mShapePositions[node]).squaredNorm() > inTolerance * inTolerance;
+    if (!changed)
+        return std::optional<std::vector<std::vector<Vec3>>>();
+    prop.mShapeRevision = prop.mPiecesTaken;
+    prop.mShapePositions = std::move(positions);
+    return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces).Get());
 }
 
 void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)

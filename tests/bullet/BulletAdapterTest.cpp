@@ -382,3 +382,63 @@ TEST_CASE("Bullet: a convex body the adapter makes has the settings' mass, inert
     adapter.reset();
     CHECK(world.mWorld.getNumCollisionObjects() == objects);
 }
+
+TEST_CASE("Bullet: a held prop body stays at its pose without gravity, and its pieces can be replaced", "[bullet][props]")
+{
+    BulletWorld world;
+    world.mWorld.setGravity(btVector3(0, 0, btScalar(-9.81)));
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, damage).Get());
+    const int objects = world.mWorld.getNumCollisionObjects();
+
+    const PropBodySettings settings = TurnedSlab();
+    const BodyId id = adapter->CreatePropBody(settings).Get();
+    btRigidBody* body = adapter->GetConvexBody(id);
+    REQUIRE(body != nullptr);
+    auto* compound = static_cast<btCompoundShape*>(body->getCollisionShape());
+    CHECK(compound->getNumChildShapes() == 2);
+    constexpr double cFloat = 1.0e-5;
+    CHECK(std::abs(1.0 / body->getInvMass() - settings.mMass) <= cFloat * settings.mMass);
+
+    // Pushed and under gravity, it is back at its pose, at rest, after every step.
+    for (int step = 0; step < 20; ++step)
+    {
+        body->activate(true);
+        body->setLinearVelocity(btVector3(3, -1, 2));
+        body->setAngularVelocity(btVector3(0, 4, 0));
+        world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+        const btVector3 position = body->getCenterOfMassPosition();
+        CHECK((Vec3(position.x(), position.y(), position.z()) - settings.mPosition).norm() <= cFloat);
+        CHECK(body->getLinearVelocity().length() == 0.0f);
+        CHECK(body->getAngularVelocity().length() == 0.0f);
+    }
+
+    // New pieces replace the shape; bad ones, and bodies that are not prop bodies, are refused.
+    PropBodySettings one = settings;
+    one.mPieces.pop_back();
+    REQUIRE(adapter->SetPropPieces(id, one.mPieces));
+    compound = static_cast<btCompoundShape*>(body->getCollisionShape());
+    CHECK(compound->getNumChildShapes() == 1);
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 1);
+    CHECK(adapter->SetPropPieces(id, {}).HasError());
+    std::vector<std::vector<Vec3>> flat = one.mPieces;
+    for (Vec3& point : flat[0])
+        point.z() = 0.0;
+    CHECK(adapter->SetPropPieces(id, flat).HasError());
+    CHECK(static_cast<btCompoundShape*>(body->getCollisionShape())->getNumChildShapes() == 1);
+    const BodyId debris = adapter->CreateConvexBody(TurnedBlock()).Get();
+    CHECK(adapter->SetPropPieces(debris, one.mPieces).GetError().mCode == EError::OutOfRange);
+    PropBodySettings massless = settings;
+    massless.mMass = 0.0;
+    CHECK(adapter->CreatePropBody(massless).HasError());
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 2);
+
+    // A free prop body falls.
+    const BodyId free = adapter->CreatePropBody(TurnedSlab(false)).Get();
+    for (int step = 0; step < 10; ++step)
+        world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+    CHECK(adapter->GetConvexBody(free)->getLinearVelocity().z() < -1.0f);
+    adapter.reset();
+    CHECK(world.mWorld.getNumCollisionObjects() == objects);
+}

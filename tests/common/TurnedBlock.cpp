@@ -22,4 +22,24 @@ plugin::ConvexBodySettings TurnedBlock(double inHullOffsetZ)
     return settings;
 }
 
+plugin::PropBodySettings TurnedSlab(bool inHeld)
+{
+    const plugin::ConvexBodySettings block = TurnedBlock();
+    plugin::PropBodySettings settings;
+    settings.mMass = block.mMass;
+    settings.mPrincipalInertia = block.mPrincipalInertia;
+    settings.mOrientation = block.mOrientation;
+    settings.mPosition = block.mPosition;
+    settings.mHeld = inHeld;
+    for (double x0 : {-0.3, 0.0})
+    {
+        std::vector<Vec3>& piece = settings.mPieces.emplace_back();
+        for (double x : {x0, x0 + 0.3})
+            for (double y : {-0.05, 0.05})
+                for (double z : {-0.1, 0.1})
+                    piece.push_back(Vec3(x, y, z));
+    }
+    return settings;
+}
+
 } // namespace crumple::common

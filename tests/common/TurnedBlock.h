@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/plugin/ConvexBodySettings.h>
+#include <crumple/plugin/PropBodySettings.h>
 
 namespace crumple::common
 {
@@ -12,5 +13,9 @@ namespace crumple::common
 /// hull points are the box's corners, shifted along the body's z by inHullOffsetZ (m): 0 centres them on the
 /// centre of mass.
 plugin::ConvexBodySettings TurnedBlock(double inHullOffsetZ = 0.0);
+
+/// The adapters' prop-body tests' slab: TurnedBlock's mass, inertia and pose, at rest, its shape the block's
+/// two halves along x as two pieces; held unless inHeld is false.
+plugin::PropBodySettings TurnedSlab(bool inHeld = true);
 
 } // namespace crumple::common

@@ -14,7 +14,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <type_traits>
 
 using namespace crumple;
 using namespace crumple::common;
@@ -93,12 +92,7 @@ PropRun HitFacing(const EngineCrashSettings& inSettings)
     {
         if (piece.mDropped)
             continue;
-        Result<plugin::BodyId> body = [&] {
-            if constexpr (std::is_same_v<Scene, BulletWallCrash>)
-                return scene.GetAdapter().CreateConvexBody(piece.mRigidBody.mBody);
-            else
-                return scene.GetAdapter().CreateConvexBody(scene.GetWorld(), scene.GetSpace(), piece.mRigidBody.mBody);
-        }();
+        Result<plugin::BodyId> body = scene.MakeDebrisBody(piece.mRigidBody.mBody);
         REQUIRE(body);
         bodies.push_back(body.Get());
     }

@@ -259,3 +259,62 @@ TEST_CASE("ODE: a convex body the adapter makes has the settings' mass, inertia,
     dWorldDestroy(world);
     dCloseODE();
 }
+
+TEST_CASE("ODE: a held prop body stays at its pose without gravity, and its pieces can be replaced", "[ode][props]")
+{
+    dInitODE2(0);
+    dWorldID world = dWorldCreate();
+    dWorldSetGravity(world, 0.0, 0.0, -9.81);
+    dSpaceID space = dHashSpaceCreate(nullptr);
+    {
+        std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+        DamageWorld& damage = *damage_owner;
+        std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
+        const PropBodySettings settings = TurnedSlab();
+        const BodyId id = adapter->CreatePropBody(world, space, settings).Get();
+        dBodyID body = adapter->GetConvexBody(id);
+        REQUIRE(body != nullptr);
+        CHECK(dSpaceGetNumGeoms(space) == 2);
+        CHECK(dBodyGetGravityMode(body) == 0);
+
+        // Pushed, it is back at its pose, at rest, after every step.
+        for (int step = 0; step < 20; ++step)
+        {
+            dBodySetLinearVel(body, 3.0, -1.0, 2.0);
+            dBodySetAngularVel(body, 0.0, 4.0, 0.0);
+            dWorldStep(world, 1.0 / 60.0);
+            adapter->AfterStep(1.0 / 60.0);
+            const dReal* position = dBodyGetPosition(body);
+            CHECK((Vec3(position[0], position[1], position[2]) - settings.mPosition).norm() <= 1.0e-12);
+            const dReal* v = dBodyGetLinearVel(body);
+            const dReal* w = dBodyGetAngularVel(body);
+            CHECK(Vec3(v[0], v[1], v[2]).norm() + Vec3(w[0], w[1], w[2]).norm() == 0.0);
+        }
+
+        // New pieces replace the geoms; bad ones, and bodies that are not prop bodies, are refused.
+        PropBodySettings one = settings;
+        one.mPieces.pop_back();
+        REQUIRE(adapter->SetPropPieces(id, one.mPieces));
+        CHECK(dSpaceGetNumGeoms(space) == 1);
+        CHECK(adapter->SetPropPieces(id, {}).HasError());
+        CHECK(dSpaceGetNumGeoms(space) == 1);
+        const BodyId debris = adapter->CreateConvexBody(world, space, TurnedBlock()).Get();
+        CHECK(adapter->SetPropPieces(debris, one.mPieces).GetError().mCode == EError::OutOfRange);
+        CHECK(adapter->CreatePropBody(nullptr, space, settings).HasError());
+        CHECK(dSpaceGetNumGeoms(space) == 2);
+
+        // A free prop body falls; the adapter's destructor destroys what it made.
+        const BodyId free = adapter->CreatePropBody(world, space, TurnedSlab(false)).Get();
+        for (int step = 0; step < 10; ++step)
+        {
+            dWorldStep(world, 1.0 / 60.0);
+            adapter->AfterStep(1.0 / 60.0);
+        }
+        CHECK(dBodyGetLinearVel(adapter->GetConvexBody(free))[2] < -1.0);
+        adapter.reset();
+        CHECK(dSpaceGetNumGeoms(space) == 0);
+    }
+    dSpaceDestroy(space);
+    dWorldDestroy(world);
+    dCloseODE();
+}

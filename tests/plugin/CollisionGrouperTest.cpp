@@ -97,3 +97,28 @@ TEST_CASE("Forget drops a removed body's open collisions", "[plugin]")
     grouper.Forget(BodyId{1});
     CHECK(grouper.GetOpenCount() == 1);
 }
+
+TEST_CASE("Each-step contacts close at their own time and join nothing later", "[plugin]")
+{
+    CollisionGrouper grouper = CollisionGrouper::Create({0.05, 0.5}).Get();
+    const BodyId a{0}, b{1}, c{2};
+    const CollisionContact first = At(0.0, Vec3(2.0, 0.0, 0.0));
+    const CollisionContact second = At(0.01, Vec3(2.0, 0.0, 0.0));
+    grouper.Add(a, b, std::span(&first, 1), true);
+    Add(grouper, a, c, first); // a pair with the window
+    const std::vector<Collision> now = grouper.TakeClosed(0.0);
+    REQUIRE(now.size() == 1);
+    CHECK(now[0].mBodyB == b);
+    CHECK(grouper.GetOpenCount() == 1);
+    // The next step's contacts of the each-step pair make a collision of their own, the windowed pair's join.
+    grouper.Add(a, b, std::span(&second, 1), true);
+    Add(grouper, a, c, second);
+    CHECK(grouper.GetOpenCount() == 2);
+    const std::vector<Collision> next = grouper.TakeClosed(0.01);
+    REQUIRE(next.size() == 1);
+    CHECK(next[0].mBodyB == b);
+    CHECK(next[0].mContacts.size() == 1);
+    const std::vector<Collision> later = grouper.TakeClosed(0.05);
+    REQUIRE(later.size() == 1);
+    CHECK(later[0].mContacts.size() == 2);
+}

@@ -336,3 +336,33 @@ TEST_CASE("The world lends its objects read-only and hands out their changed ver
     CHECK(fixture.mWorld.TakeDirtyRanges(fixture.mCarObject).empty()); // taken once
     CHECK(fixture.mWorld.TakeDirtyRanges(ObjectId{}).empty());         // an unknown id: nothing
 }
+
+TEST_CASE("A body set to dispatch every step has its collisions dispatched in the step they happen", "[plugin]")
+{
+    WorldFixture fixture;
+    RecordingListener listener;
+    fixture.mWorld.AddListener(&listener);
+    CHECK(fixture.mWorld.SetDispatchEachStep(BodyId{99}, true).GetError().mCode == EError::OutOfRange);
+    CHECK(fixture.mWorld.ForgetImpacts(BodyId{99}).GetError().mCode == EError::OutOfRange);
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 0.0)));
+    fixture.mWorld.Update(0.0);
+    CHECK(listener.mCollisions.empty()); // the world's 50 ms window
+    fixture.mWorld.Flush();
+    REQUIRE(listener.mCollisions.size() == 1);
+
+    REQUIRE(fixture.mWorld.SetDispatchEachStep(fixture.mWall, true));
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 1.0)));
+    fixture.mWorld.Update(1.0);
+    CHECK(listener.mCollisions.size() == 2); // at once
+    // ForgetImpacts: the pair's next contacts are solved from the engine's velocities again, so the same
+    // approach gives the same impulse a second time.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.ForgetImpacts(fixture.mWall));
+    REQUIRE(fixture.mWorld.SubmitContacts(FrontCorners(fixture, 1.0 + 1.0 / 120.0), 1.0 / 120.0));
+    fixture.mWorld.Update(1.0 + 1.0 / 120.0);
+    REQUIRE(listener.mCollisions.size() == 3);
+    CHECK(listener.mCollisions[2].TotalImpulse() == Approx(listener.mCollisions[1].TotalImpulse()).epsilon(1e-12));
+    fixture.mWorld.RemoveListener(&listener);
+}

@@ -7,6 +7,7 @@ crumple_add_test(props
     props/FemPropTest.cpp
     props/FragmentBodyTest.cpp
     props/LooseFragmentsTest.cpp
+    props/PropBodyTest.cpp
     props/PropRecordingTest.cpp
     props/PropWorldTest.cpp
     LINK crumple::props crumple_common_fem)

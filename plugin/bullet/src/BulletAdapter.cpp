@@ -23,6 +23,30 @@ Vec3 ToVec3(const btVector3& inV)
     return {static_cast<double>(inV.x()), static_cast<double>(inV.y()), static_cast<double>(inV.z())};
 }
 
+// The convex hull of inPoints, with a margin Bullet adds outside it kept small against the hull's size.
+std::unique_ptr<btConvexHullShape> MakeHull(const std::vector<Vec3>& inPoints)
+{
+    auto hull = std::make_unique<btConvexHullShape>();
+    Vec3 low = inPoints[0], high = low;
+    for (const Vec3& p : inPoints)
+    {
+        hull->addPoint(btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())), false);
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    hull->setMargin(btScalar(std::min(0.01, 0.05 * (high - low).minCoeff())));
+    hull->recalcLocalAabb();
+    return hull;
+}
+
+btTransform ToBulletPose(const Mat3& inRotation, const Vec3& inPosition)
+{
+    const Mat3& r = inRotation;
+    const btMatrix3x3 basis(btScalar(r(0, 0)), btScalar(r(0, 1)), btScalar(r(0, 2)), btScalar(r(1, 0)), btScalar(r(1, 1)),
+                            btScalar(r(1, 2)), btScalar(r(2, 0)), btScalar(r(2, 1)), btScalar(r(2, 2)));
+    return btTransform(basis, btVector3(btScalar(inPosition.x()), btScalar(inPosition.y()), btScalar(inPosition.z())));
+}
+
 } // namespace
 
 Result<std::unique_ptr<BulletAdapter>> BulletAdapter::Create(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDamage,
@@ -104,24 +128,8 @@ Result<BodyId> BulletAdapter::CreateConvexBody(const plugin::ConvexBodySettings&
     if (Status valid = plugin::ValidateConvexBodySettings(inSettings); !valid)
         return valid.GetError();
     OwnedBody owned;
-    // intent: the hull, with a margin Bullet adds outside it kept small against the hull's size
-    owned.mShape = std::make_unique<btConvexHullShape>();
-    Vec3 low = inSettings.mHullPoints[0], high = low;
-    for (const Vec3& p : inSettings.mHullPoints)
-    {
-        owned.mShape->addPoint(btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())), false);
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    owned.mShape->setMargin(btScalar(std::min(0.01, 0.05 * (high - low).minCoeff())));
-    owned.mShape->recalcLocalAabb();
-
-    const Mat3& r = inSettings.mOrientation;
-    const btMatrix3x3 basis(btScalar(r(0, 0)), btScalar(r(0, 1)), btScalar(r(0, 2)), btScalar(r(1, 0)), btScalar(r(1, 1)),
-                            btScalar(r(1, 2)), btScalar(r(2, 0)), btScalar(r(2, 1)), btScalar(r(2, 2)));
-    const Vec3& x = inSettings.mPosition;
-    owned.mMotion = std::make_unique<btDefaultMotionState>(
-        btTransform(basis, btVector3(btScalar(x.x()), btScalar(x.y()), btScalar(x.z()))));
+    owned.mShape = MakeHull(inSettings.mHullPoints);
+    owned.mMotion = std::make_unique<btDefaultMotionState>(ToBulletPose(inSettings.mOrientation, inSettings.mPosition));
     const Vec3& inertia = inSettings.mPrincipalInertia;
     btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), owned.mMotion.get(), owned.mShape.get(),
                                                   btVector3(btScalar(inertia.x()), btScalar(inertia.y()), btScalar(inertia.z())));
@@ -130,17 +138,92 @@ Result<BodyId> BulletAdapter::CreateConvexBody(const plugin::ConvexBodySettings&
     const Vec3& w = inSettings.mAngularVelocity;
     owned.mRigidBody->setLinearVelocity(btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())));
     owned.mRigidBody->setAngularVelocity(btVector3(btScalar(w.x()), btScalar(w.y()), btScalar(w.z())));
-    mWorld.addRigidBody(owned.mRigidBody.get());
+    return Own(std::move(owned));
+}
 
-    Result<BodyId> body = AddBody(*owned.mRigidBody);
+Result<BodyId> BulletAdapter::Own(OwnedBody&& ioOwned)
+{
+    mWorld.addRigidBody(ioOwned.mRigidBody.get());
+    Result<BodyId> body = AddBody(*ioOwned.mRigidBody);
     if (!body)
     {
-        mWorld.removeRigidBody(owned.mRigidBody.get());
+        mWorld.removeRigidBody(ioOwned.mRigidBody.get());
         return body;
     }
-    owned.mBody = body.Get();
-    mOwned.push_back(std::move(owned));
+    ioOwned.mBody = body.Get();
+    mOwned.push_back(std::move(ioOwned));
     return body;
+}
+
+Result<BodyId> BulletAdapter::CreatePropBody(const plugin::PropBodySettings& inSettings)
+{
+    if (Status valid = plugin::ValidatePropBodySettings(inSettings); !valid)
+        return valid.GetError();
+    OwnedBody owned;
+    owned.mCompound = std::make_unique<btCompoundShape>();
+    for (const std::vector<Vec3>& piece : inSettings.mPieces)
+    {
+        owned.mPieces.push_back(MakeHull(piece));
+        owned.mCompound->addChildShape(btTransform::getIdentity(), owned.mPieces.back().get());
+    }
+    owned.mHeld = inSettings.mHeld;
+    owned.mHome = ToBulletPose(inSettings.mOrientation, inSettings.mPosition);
+    owned.mMotion = std::make_unique<btDefaultMotionState>(owned.mHome);
+    const Vec3& inertia = inSettings.mPrincipalInertia;
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), owned.mMotion.get(), owned.mCompound.get(),
+                                                  btVector3(btScalar(inertia.x()), btScalar(inertia.y()), btScalar(inertia.z())));
+    owned.mRigidBody = std::make_unique<btRigidBody>(info);
+    if (owned.mHeld)
+    {
+        // intent: the ground holds it, not a contact with the ground (addRigidBody keeps its own gravity)
+        owned.mRigidBody->setFlags(owned.mRigidBody->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+        owned.mRigidBody->setGravity(btVector3(0, 0, 0));
+    }
+    return Own(std::move(owned));
+}
+
+Status BulletAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    if (owned == mOwned.end() || owned->mCompound == nullptr)
+        return MakeError(EError::OutOfRange, "SetPropPieces: body " + std::to_string(inBody.mValue) + " is not a prop body of this adapter");
+    if (Status valid = plugin::ValidatePropPieces(inPieces); !valid)
+        return valid;
+    // intent: out of the world (its manifolds and broadphase pairs go with it), new children, back in
+    mWorld.removeRigidBody(owned->mRigidBody.get());
+    auto compound = std::make_unique<btCompoundShape>();
+    std::vector<std::unique_ptr<btConvexHullShape>> pieces;
+    for (const std::vector<Vec3>& piece : inPieces)
+    {
+        pieces.push_back(MakeHull(piece));
+        compound->addChildShape(btTransform::getIdentity(), pieces.back().get());
+    }
+    owned->mRigidBody->setCollisionShape(compound.get());
+    owned->mCompound = std::move(compound);
+    owned->mPieces = std::move(pieces);
+    mWorld.addRigidBody(owned->mRigidBody.get());
+    owned->mRigidBody->activate(true);
+    return Status::Ok();
+}
+
+void BulletAdapter::HoldProps()
+{
+    const btVector3 zero(0, 0, 0);
+    for (OwnedBody& owned : mOwned)
+    {
+        if (!owned.mHeld || !owned.mRigidBody->isActive())
+            continue;
+        btRigidBody& body = *owned.mRigidBody;
+        body.setWorldTransform(owned.mHome);
+        body.setInterpolationWorldTransform(owned.mHome);
+        owned.mMotion->setWorldTransform(owned.mHome);
+        body.setLinearVelocity(zero);
+        body.setAngularVelocity(zero);
+        body.setInterpolationLinearVelocity(zero);
+        body.setInterpolationAngularVelocity(zero);
+        body.clearForces();
+        (void)mDamage.ForgetImpacts(owned.mBody); // its velocity was set here, not by the contact solve
+    }
 }
 
 btRigidBody* BulletAdapter::GetConvexBody(BodyId inBody) const
@@ -243,6 +326,7 @@ void BulletAdapter::PostTick(double inTimeStep)
     mLastStats.mUpdate = mDamage.Update(mTime);
     if (mLastStats.mUpdate.mObjectsDented > 0)
         UpdateHulls();
+    HoldProps();
 }
 
 void BulletAdapter::UpdateHulls()

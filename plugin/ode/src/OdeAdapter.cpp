@@ -5,6 +5,9 @@
 
 #include <ode/ode.h>
 
+#include <algorithm>
+#include <string>
+
 namespace crumple::ode
 {
 
@@ -44,13 +47,59 @@ Result<BodyId> OdeAdapter::AddStaticGeom(dGeomID inGeom)
     return body;
 }
 
+namespace
+{
+
+void SetPose(dBodyID ioBody, const Vec3& inPosition, const Mat3& inOrientation)
+{
+    dBodySetPosition(ioBody, inPosition.x(), inPosition.y(), inPosition.z());
+    dMatrix3 rotation;
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j)
+            rotation[4 * i + j] = inOrientation(i, j);
+        rotation[4 * i + 3] = 0.0;
+    }
+    dBodySetRotation(ioBody, rotation);
+}
+
+// A dBody with its centre of mass at its origin (as ODE requires), principal inertia along its axes.
+dBodyID MakeBody(dWorldID inWorld, double inMass, const Vec3& inInertia, const Vec3& inPosition, const Mat3& inOrientation)
+{
+    dBodyID body = dBodyCreate(inWorld);
+    dMass mass;
+    dMassSetParameters(&mass, inMass, 0.0, 0.0, 0.0, inInertia.x(), inInertia.y(), inInertia.z(), 0.0, 0.0, 0.0);
+    dBodySetMass(body, &mass);
+    SetPose(body, inPosition, inOrientation);
+    return body;
+}
+
+// The box that bounds inPoints along the body axes, centred where they are, on inBody.
+dGeomID MakeBoundingBox(dSpaceID inSpace, dBodyID inBody, const std::vector<Vec3>& inPoints)
+{
+    Vec3 low = inPoints[0], high = low;
+    for (const Vec3& p : inPoints)
+    {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    const Vec3 size = high - low, centre = 0.5 * (low + high);
+    dGeomID geom = dCreateBox(inSpace, size.x(), size.y(), size.z());
+    dGeomSetBody(geom, inBody);
+    dGeomSetOffsetPosition(geom, centre.x(), centre.y(), centre.z());
+    return geom;
+}
+
+} // namespace
+
 OdeAdapter::~OdeAdapter()
 {
     // intent: the bodies this adapter made leave the damage world and ODE
     for (const OwnedBody& owned : mOwned)
     {
         (void)mDamage.RemoveBody(owned.mBody);
-        dGeomDestroy(owned.mGeom);
+        for (dGeomID geom : owned.mGeoms)
+            dGeomDestroy(geom);
         dBodyDestroy(owned.mOdeBody);
     }
 }
@@ -62,47 +111,80 @@ Result<BodyId> OdeAdapter::CreateConvexBody(dWorldID inWorld, dSpaceID inSpace, 
     if (Status valid = ValidateConvexBodySettings(inSettings); !valid)
         return valid.GetError();
     OwnedBody owned;
-    owned.mOdeBody = dBodyCreate(inWorld);
-    dMass mass;
-    const Vec3& inertia = inSettings.mPrincipalInertia;
-    dMassSetParameters(&mass, inSettings.mMass, 0.0, 0.0, 0.0, inertia.x(), inertia.y(), inertia.z(), 0.0, 0.0, 0.0);
-    dBodySetMass(owned.mOdeBody, &mass);
-    const Vec3& x = inSettings.mPosition;
-    dBodySetPosition(owned.mOdeBody, x.x(), x.y(), x.z());
-    dMatrix3 rotation;
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int j = 0; j < 3; ++j)
-            rotation[4 * i + j] = inSettings.mOrientation(i, j);
-        rotation[4 * i + 3] = 0.0;
-    }
-    dBodySetRotation(owned.mOdeBody, rotation);
+    owned.mOdeBody = MakeBody(inWorld, inSettings.mMass, inSettings.mPrincipalInertia, inSettings.mPosition, inSettings.mOrientation);
     const Vec3& v = inSettings.mLinearVelocity;
     const Vec3& w = inSettings.mAngularVelocity;
     dBodySetLinearVel(owned.mOdeBody, v.x(), v.y(), v.z());
     dBodySetAngularVel(owned.mOdeBody, w.x(), w.y(), w.z());
-    // intent: the hull's bounding box along the body (principal) axes, centred where the points are
-    Vec3 low = inSettings.mHullPoints[0], high = low;
-    for (const Vec3& p : inSettings.mHullPoints)
-    {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    const Vec3 size = high - low, centre = 0.5 * (low + high);
-    owned.mGeom = dCreateBox(inSpace, size.x(), size.y(), size.z());
-    dGeomSetBody(owned.mGeom, owned.mOdeBody);
-    dGeomSetOffsetPosition(owned.mGeom, centre.x(), centre.y(), centre.z());
+    owned.mSpace = inSpace;
+    owned.mGeoms.push_back(MakeBoundingBox(inSpace, owned.mOdeBody, inSettings.mHullPoints));
+    return Own(std::move(owned));
+}
 
-    Result<BodyId> body = AddBody(owned.mOdeBody);
+Result<BodyId> OdeAdapter::CreatePropBody(dWorldID inWorld, dSpaceID inSpace, const plugin::PropBodySettings& inSettings)
+{
+    if (inWorld == nullptr || inSpace == nullptr)
+        return MakeError(EError::InvalidArgument, "CreatePropBody: null dWorldID or dSpaceID");
+    if (Status valid = plugin::ValidatePropBodySettings(inSettings); !valid)
+        return valid.GetError();
+    OwnedBody owned;
+    owned.mOdeBody = MakeBody(inWorld, inSettings.mMass, inSettings.mPrincipalInertia, inSettings.mPosition, inSettings.mOrientation);
+    owned.mSpace = inSpace;
+    owned.mProp = true;
+    owned.mHeld = inSettings.mHeld;
+    owned.mHomePosition = inSettings.mPosition;
+    owned.mHomeOrientation = inSettings.mOrientation;
+    if (owned.mHeld)
+        dBodySetGravityMode(owned.mOdeBody, 0); // the ground holds it, not a contact with the ground
+    for (const std::vector<Vec3>& piece : inSettings.mPieces)
+        owned.mGeoms.push_back(MakeBoundingBox(inSpace, owned.mOdeBody, piece));
+    return Own(std::move(owned));
+}
+
+Result<BodyId> OdeAdapter::Own(OwnedBody&& ioOwned)
+{
+    Result<BodyId> body = AddBody(ioOwned.mOdeBody);
     if (!body)
     {
-        dGeomDestroy(owned.mGeom);
-        dBodyDestroy(owned.mOdeBody);
+        for (dGeomID geom : ioOwned.mGeoms)
+            dGeomDestroy(geom);
+        dBodyDestroy(ioOwned.mOdeBody);
         return body;
     }
-    owned.mBody = body.Get();
-    mOwned.push_back(owned);
+    ioOwned.mBody = body.Get();
+    mOwned.push_back(std::move(ioOwned));
     return body;
+}
+
+Status OdeAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    if (owned == mOwned.end() || !owned->mProp)
+        return MakeError(EError::OutOfRange, "SetPropPieces: body " + std::to_string(inBody.mValue) + " is not a prop body of this adapter");
+    if (Status valid = plugin::ValidatePropPieces(inPieces); !valid)
+        return valid;
+    for (dGeomID geom : owned->mGeoms)
+        dGeomDestroy(geom);
+    owned->mGeoms.clear();
+    for (const std::vector<Vec3>& piece : inPieces)
+        owned->mGeoms.push_back(MakeBoundingBox(owned->mSpace, owned->mOdeBody, piece));
+    dBodyEnable(owned->mOdeBody);
+    return Status::Ok();
+}
+
+void OdeAdapter::HoldProps()
+{
+    for (const OwnedBody& owned : mOwned)
+    {
+        if (!owned.mHeld || !dBodyIsEnabled(owned.mOdeBody))
+            continue;
+        SetPose(owned.mOdeBody, owned.mHomePosition, owned.mHomeOrientation);
+        dBodySetLinearVel(owned.mOdeBody, 0.0, 0.0, 0.0);
+        dBodySetAngularVel(owned.mOdeBody, 0.0, 0.0, 0.0);
+        dBodySetForce(owned.mOdeBody, 0.0, 0.0, 0.0);
+        dBodySetTorque(owned.mOdeBody, 0.0, 0.0, 0.0);
+        (void)mDamage.ForgetImpacts(owned.mBody); // its velocity was set here, not by the contact solve
+    }
 }
 
 dBodyID OdeAdapter::GetConvexBody(BodyId inBody) const
@@ -132,7 +214,8 @@ Status OdeAdapter::RemoveBody(dBodyID inBody)
     for (auto owned = mOwned.begin(); owned != mOwned.end(); ++owned)
         if (owned->mBody == body)
         {
-            dGeomDestroy(owned->mGeom);
+            for (dGeomID geom : owned->mGeoms)
+                dGeomDestroy(geom);
             dBodyDestroy(owned->mOdeBody);
             mOwned.erase(owned);
             break;
@@ -202,6 +285,7 @@ void OdeAdapter::AfterStep(double inTimeStep)
     if (!mEvents.empty() && !mDamage.SubmitContacts(mEvents, inTimeStep))
         mCurrent.mContactsRefused = static_cast<int>(mEvents.size());
     mCurrent.mUpdate = mDamage.Update(mTime);
+    HoldProps();
 
     // Ready for the next step.
     mLastStats = mCurrent;

@@ -177,6 +177,16 @@ BulletWallCrash::~BulletWallCrash()
     }
 }
 
+Result<plugin::BodyId> BulletWallCrash::MakeDebrisBody(const plugin::ConvexBodySettings& inSettings)
+{
+    return mAdapter->CreateConvexBody(inSettings);
+}
+
+Result<plugin::BodyId> BulletWallCrash::MakePropBody(const plugin::PropBodySettings& inSettings)
+{
+    return mAdapter->CreatePropBody(inSettings);
+}
+
 plugin::BodyState BulletWallCrash::GetCarState() const
 {
     return bullet::BulletBodyState(*mCar);

@@ -157,6 +157,16 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     }
 }
 
+Result<plugin::BodyId> OdeWallCrash::MakeDebrisBody(const plugin::ConvexBodySettings& inSettings)
+{
+    return mAdapter->CreateConvexBody(mWorld, mSpace, inSettings);
+}
+
+Result<plugin::BodyId> OdeWallCrash::MakePropBody(const plugin::PropBodySettings& inSettings)
+{
+    return mAdapter->CreatePropBody(mWorld, mSpace, inSettings);
+}
+
 plugin::BodyState OdeWallCrash::GetCarState() const
 {
     return ode::OdeBodyState(mCar);

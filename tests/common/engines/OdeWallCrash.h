@@ -36,6 +36,10 @@ public:
     plugin::BodyId GetWallBody() const { return mAdapter->GetEnvironment(); }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// A loose piece's body (the adapter's CreateConvexBody in this scene's world)
+    Result<plugin::BodyId> MakeDebrisBody(const plugin::ConvexBodySettings& inSettings);
+    /// A prop's body (the adapter's CreatePropBody in this scene's world)
+    Result<plugin::BodyId> MakePropBody(const plugin::PropBodySettings& inSettings);
     /// The car's state as Crumple reads it (mass, world inertia, frame, velocities)
     plugin::BodyState GetCarState() const;
     /// Sets the car's velocities (m/s, rad/s, world): for contacts solved outside the engine

@@ -32,7 +32,9 @@ public:
     /// same time. They stay together (the engine reported them as one manifold, however far apart: a box
     /// face's corners) and join the oldest open collision of the pair whose window holds their time and one
     /// of whose contacts lies within the group distance of one of theirs; otherwise they open a new one.
-    void Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts);
+    /// inEachStep: the contacts form a collision of their own that closes at their own time (a window of
+    /// zero), for bodies whose collisions must be dispatched at every step (DamageWorld::SetDispatchEachStep).
+    void Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep = false);
 
     /// Removes and returns, in dispatch order, the collisions whose window has closed at inTime
     /// (inTime >= start + window).
@@ -51,6 +53,9 @@ private:
 
     CollisionGrouperSettings mSettings;
     std::vector<Collision> mOpen; ///< In creation order
+    std::vector<std::uint64_t> mEachStep; ///< Sequences of the open collisions with a window of zero
+    double WindowOf(const Collision& inCollision) const;
+    void ForgetClosedEachStep();
     std::uint64_t mNextSequence = 0;
 };
 

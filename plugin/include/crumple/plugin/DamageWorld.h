@@ -58,6 +58,15 @@ public:
     Status SetBodyState(BodyId inBody, const BodyState& inState);
     /// The body's last state.
     const BodyState* GetBodyState(BodyId inBody) const;
+    /// The game set the body's velocities outside the engine's contact solve (held in place, teleported):
+    /// the next contacts of its pairs are solved from the velocities the engine reports, not from what
+    /// their last impulse left (DamageWorldSettings::mCountImpactOnce). Refused for an unknown body.
+    Status ForgetImpacts(BodyId inBody);
+    /// Collisions with the body are dispatched at the end of the step they happen in, not when the world's
+    /// time window (CollisionGrouperSettings::mTimeWindow) has passed: a destructible prop's FEM must hear of
+    /// a hit before the engine goes on (props::PropWorld sets it for props on bodies the engine moves). Off
+    /// for every body at first. Refused for an unknown body.
+    Status SetDispatchEachStep(BodyId inBody, bool inEachStep);
     /// Removes a body, its deformable objects and its open collisions. Their ids are refused from then on
     /// (their slots are reused with the next generation).
     Status RemoveBody(BodyId inBody);
@@ -133,6 +142,7 @@ private:
         BodyState mState;
         bool mAlive = false;
         std::uint32_t mGeneration = 0; ///< Of the body that holds (or last held) the slot
+        bool mDispatchEachStep = false;
         std::vector<ObjectId> mObjects;
     };
     struct ObjectSlot

@@ -86,6 +86,8 @@ public:
     const std::vector<double>& GetMasses() const;
     /// Number of nodes #N
     int GetNodeCount() const;
+    /// Each element's current nodes (fracture gives a crack's sides nodes of their own)
+    const std::vector<fem::TetIndices>& GetElementNodes() const;
     /// The CPU solver, or nullptr on the GPU backend
     fem::TetSolver* GetCpuSolver() { return mCpu ? &*mCpu : nullptr; }
     const fem::TetSolver* GetCpuSolver() const { return mCpu ? &*mCpu : nullptr; }

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace crumple::props
@@ -103,6 +104,23 @@ public:
     /// point; a recorder's write error does not stop the hand-over (DamageRecorder::GetStatus keeps it).
     /// Refused, changing nothing, for a non-finite or negative minimum.
     Result<std::vector<LooseFragment>> TakeLooseFragments(double inMinMass = 0.0);
+    /// The collision shape of what is left of a prop (props::PropCollisionPieces of its current node positions,
+    /// without the elements of the pieces TakeLooseFragments handed over), body frame: for the adapter's
+    /// SetPropPieces once pieces have left (GetShapeRevision). Refused for an unknown prop or a cell size that
+    /// is not finite and > 0.
+    Result<std::vector<std::vector<Vec3>>> GetCollisionPieces(PropId inProp, double inCellSize) const;
+    /// The prop's collision shape (GetCollisionPieces) when it changed since the last call: pieces were handed
+    /// over, or a node moved more than inTolerance (m, finite, >= 0) from where it was at the last shape taken
+    /// (the first call always gives it); otherwise nothing. For a held prop body, whose shape must follow
+    /// what its FEM does (a rail swinging away lets the car through), call it after each Step() and pass a
+    /// shape to the adapter's SetPropPieces. Refused as GetCollisionPieces, or for a bad tolerance.
+    Result<std::optional<std::vector<std::vector<Vec3>>>> TakeChangedShape(PropId inProp, double inCellSize, double inTolerance);
+    /// How many pieces TakeLooseFragments has taken from the prop: its collision shape changed when this did
+    /// (0 for an unknown prop)
+    std::uint64_t GetShapeRevision(PropId inProp) const
+    {
+        return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mPiecesTaken : 0;
+    }
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
     /// world validated; kept for diagnosis with the first refusal's reason)
     std::uint64_t GetCollisionCount() const { return mCollisions; }
@@ -119,6 +137,9 @@ private:
         plugin::BodyId mBody;
         FemProp mProp;
         std::vector<std::uint8_t> mTaken; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
+        std::uint64_t mPiecesTaken = 0;   ///< Pieces handed over
+        std::uint64_t mShapeRevision = ~std::uint64_t{0}; ///< mPiecesTaken at the last TakeChangedShape
+        std::vector<Vec3> mShapePositions; ///< Node positions at the last TakeChangedShape
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;

@@ -5,8 +5,10 @@
 #include <crumple/base/Result.h>
 #include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/PropBodySettings.h>
 
 #include <LinearMath/btScalar.h>
+#include <LinearMath/btTransform.h>
 
 #include <cstdint>
 #include <memory>
@@ -14,6 +16,7 @@
 #include <vector>
 
 class btCollisionObject;
+class btCompoundShape;
 class btConvexHullShape;
 class btDefaultMotionState;
 class btRigidBody;
@@ -81,8 +84,22 @@ public:
     /// (set them on GetConvexBody). The adapter owns it: RemoveBody takes it out of the world and deletes it,
     /// and so does the adapter's destructor for those left. Refused, creating nothing, on invalid settings.
     Result<plugin::BodyId> CreateConvexBody(const plugin::ConvexBodySettings& inSettings);
-    /// The Bullet body of a convex body this adapter created, nullptr for any other id
+    /// The Bullet body of a convex or prop body this adapter created, nullptr for any other id
     btRigidBody* GetConvexBody(plugin::BodyId inBody) const;
+
+    /// Creates the body of a destructible prop (plugin::PropBodySettings, props::MakePropBody) and registers
+    /// it with the damage world: a btRigidBody with the settings' mass, principal inertia and pose, at rest,
+    /// whose shape is a btCompoundShape of one btConvexHullShape per piece (margins as CreateConvexBody's).
+    /// A held body has no gravity and is put back at its pose, at rest, after every internal sub-step, once
+    /// the sub-step's contacts have gone to the damage world (whose memory of its last impulses it clears:
+    /// DamageWorld::ForgetImpacts). Owned as CreateConvexBody's bodies are. Refused, creating nothing, on
+    /// invalid settings.
+    Result<plugin::BodyId> CreatePropBody(const plugin::PropBodySettings& inSettings);
+    /// Replaces the pieces of a prop body's shape (body frame): what is left of the prop once pieces broke
+    /// loose (props::PropWorld::GetCollisionPieces). The body leaves the world and comes back with the new
+    /// shape, so no contact with a piece that left survives. Mass and inertia stay. Refused, changing
+    /// nothing, for a body that is not a prop body of this adapter or for invalid pieces.
+    Status SetPropPieces(plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces);
     /// Simulated time (s) the adapter has seen: the sum of internal sub-steps.
     double GetTime() const { return mTime; }
     const BulletStepStats& GetLastStepStats() const { return mLastStats; }
@@ -95,6 +112,7 @@ private:
     void PreTick(double inTimeStep);
     void PostTick(double inTimeStep);
     void UpdateHulls();
+    void HoldProps();
 
     struct MappedBody
     {
@@ -112,17 +130,23 @@ private:
     btDiscreteDynamicsWorld& mWorld;
     plugin::DamageWorld& mDamage;
     BulletAdapterSettings mSettings;
-    std::vector<MappedBody> mBodies; ///< In BodyId order: deterministic snapshot order
+    std::vector<MappedBody> mBodies; ///< In registration order: deterministic snapshot order
     std::unordered_map<const btCollisionObject*, plugin::BodyId> mLookup; ///< Lookup only, never iterated
     std::vector<FollowingHull> mHulls;
     struct OwnedBody
     {
         plugin::BodyId mBody;
         std::unique_ptr<btConvexHullShape> mShape;
+        std::unique_ptr<btCompoundShape> mCompound;                ///< A prop body's shape, else null
+        std::vector<std::unique_ptr<btConvexHullShape>> mPieces; ///< Its children
         std::unique_ptr<btDefaultMotionState> mMotion;
         std::unique_ptr<btRigidBody> mRigidBody;
+        bool mHeld = false;
+        btTransform mHome; ///< A held body's pose
     };
-    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody made, in creation order
+    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody and CreatePropBody made, in creation order
+    /// Adds a body made here to both worlds and keeps it; on refusal takes it out again
+    Result<plugin::BodyId> Own(OwnedBody&& ioOwned);
     std::vector<plugin::ContactEvent> mEvents; ///< Scratch, reused every sub-step
 
     // The game's callbacks and user pointer, chained and restored.

@@ -5,6 +5,7 @@
 #include <crumple/base/Result.h>
 #include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/PropBodySettings.h>
 
 #include <ode/common.h>
 #include <ode/contact.h>
@@ -57,8 +58,21 @@ public:
     /// and so does the adapter's destructor for those left, so inWorld and inSpace must outlive the adapter.
     /// Refused, creating nothing, on invalid settings or a null world or space.
     Result<plugin::BodyId> CreateConvexBody(dWorldID inWorld, dSpaceID inSpace, const plugin::ConvexBodySettings& inSettings);
-    /// The ODE body of a convex body this adapter created, nullptr for any other id
+    /// The ODE body of a convex or prop body this adapter created, nullptr for any other id
     dBodyID GetConvexBody(plugin::BodyId inBody) const;
+
+    /// Creates the body of a destructible prop (plugin::PropBodySettings, props::MakePropBody) in inWorld and
+    /// registers it with the damage world: a dBody with the settings' mass, principal inertia and pose, at
+    /// rest, and in inSpace one box geom per piece, the piece's bounding box along the body axes (as
+    /// CreateConvexBody's). A held body ignores gravity and is put back at its pose, at rest, by AfterStep,
+    /// once the step's contacts have gone to the damage world (whose memory of its last impulses it clears:
+    /// DamageWorld::ForgetImpacts). Owned as CreateConvexBody's bodies are. Refused, creating nothing, on
+    /// invalid settings or a null world or space.
+    Result<plugin::BodyId> CreatePropBody(dWorldID inWorld, dSpaceID inSpace, const plugin::PropBodySettings& inSettings);
+    /// Replaces the pieces of a prop body's shape (body frame): its box geoms are destroyed and new ones made
+    /// in the same space. Mass and inertia stay. Refused, changing nothing, for a body that is not a prop body
+    /// of this adapter or for invalid pieces.
+    Status SetPropPieces(plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces);
     ~OdeAdapter();
     OdeAdapter(const OdeAdapter&) = delete;
     OdeAdapter& operator=(const OdeAdapter&) = delete;
@@ -93,9 +107,16 @@ private:
     {
         plugin::BodyId mBody;
         dBodyID mOdeBody = nullptr;
-        dGeomID mGeom = nullptr;
+        std::vector<dGeomID> mGeoms;
+        dSpaceID mSpace = nullptr;
+        bool mProp = false;                     ///< Made by CreatePropBody
+        bool mHeld = false;
+        Vec3 mHomePosition = Vec3::Zero();      ///< A held body's pose
+        Mat3 mHomeOrientation = Mat3::Identity();
     };
-    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody made, in creation order
+    std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody and CreatePropBody made, in creation order
+    void HoldProps();
+    Result<plugin::BodyId> Own(OwnedBody&& ioOwned);
     double mTime = 0.0;
     OdeStepStats mCurrent;   ///< The step being collected
     OdeStepStats mLastStats; ///< The last finished step

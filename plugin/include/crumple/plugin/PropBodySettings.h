@@ -1,0 +1,48 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/base/Result.h>
+
+#include <vector>
+
+namespace crumple::plugin
+{
+
+/// The engine body of a destructible prop (a fence, a barrier, a crate) that an adapter creates and owns
+/// (BulletAdapter::CreatePropBody, OdeAdapter::CreatePropBody; props::MakePropBody fills it from a prop's
+/// mesh). Its shape is a compound of convex pieces, so that it can lose the pieces that break loose
+/// (SetPropPieces) while the rest stands.
+///
+/// A held prop (one anchored to the ground: a fence's posts, a wall's facing) is a dynamic body that the
+/// adapter puts back at its pose, at rest, after every engine step, without gravity. Within a step a car
+/// meets it as a free body of the prop's mass: the engine's contact takes from the car the momentum it
+/// takes to set that mass moving, and Crumple computes the same impulse (from the pre-solve velocities and
+/// this mass) and hands it to the prop's FEM, where it cracks what it breaks. A prop that breaks lets the
+/// car through with the speed a real one leaves it (a static body would stop the car dead in the first
+/// step); one that holds is hit again at every step the car keeps pushing, so it slows the car over a few
+/// steps as a yielding barrier does. A free prop (a crate) is an ordinary dynamic body.
+/// The body frame sits at the centre of mass along the principal axes of inertia (what engines need).
+struct PropBodySettings
+{
+    double mMass = 1.0;                    ///< kg, in (0, cMaxBodyMass]
+    Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), > 0 each,
+                                           ///< each at most the sum of the other two
+    Vec3 mPosition = Vec3::Zero();         ///< Centre of mass, world frame (m)
+    Mat3 mOrientation = Mat3::Identity();  ///< Body axes in world coordinates (columns): a rotation
+    /// The collision shape, body frame (m): the union of each piece's convex hull (Bullet) or bounding box
+    /// along the body axes (ODE). At least one piece; each at least 4 points that span a volume.
+    std::vector<std::vector<Vec3>> mPieces;
+    bool mHeld = true; ///< Put back at its pose, at rest, after every engine step (above); false: a free body
+};
+
+/// Checks the settings at an adapter's boundary (the ranges of ConvexBodySettings, every piece a hull);
+/// the message names the offending field.
+Status ValidatePropBodySettings(const PropBodySettings& inSettings);
+
+/// Checks a prop body's pieces alone (SetPropPieces): at least one, each at least 4 finite points within
+/// 1e9 m that span a volume.
+Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces);
+
+} // namespace crumple::plugin

@@ -1,0 +1,109 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Validation of the bodies engine adapters create for Crumple: debris (ConvexBodySettings) and props
+// (PropBodySettings).
+#include <crumple/plugin/BodyState.h>
+#include <crumple/plugin/ConvexBodySettings.h>
+#include <crumple/plugin/PropBodySettings.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace crumple::plugin
+{
+
+namespace
+{
+
+bool Within(const Vec3& inValue, double inBound)
+{
+    return IsFinite(inValue) && inValue.cwiseAbs().maxCoeff() <= inBound;
+}
+
+// Mass, inertia, pose and velocities of a body an adapter makes; inName prefixes the messages.
+Status ValidateRigidBody(const std::string& inName, double inMass, const Vec3& inInertia, const Vec3& inPosition,
+                         const Mat3& inOrientation, const Vec3& inLinearVelocity, const Vec3& inAngularVelocity)
+{
+    if (!(inMass > 0.0 && inMass <= cMaxBodyMass))
+        return MakeError(EError::InvalidArgument, inName + ".mMass must be in (0, 1e12] kg");
+    if (!IsFinite(inInertia) || !(inInertia.minCoeff() > 0.0))
+        return MakeError(EError::InvalidArgument, inName + ".mPrincipalInertia must be finite and > 0 kg m^2");
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(inInertia[axis] <= (inInertia.sum() - inInertia[axis]) * (1.0 + 1.0e-9)))
+            return MakeError(EError::InvalidArgument, inName + ".mPrincipalInertia: no mass distribution has one "
+                                                               "principal moment above the sum of the other two");
+    if (!Within(inPosition, cMaxBodyPosition))
+        return MakeError(EError::InvalidArgument, inName + ".mPosition must be finite, each coordinate within 1e9 m");
+    if (!IsRotation(inOrientation, 1.0e-6))
+        return MakeError(EError::InvalidArgument, inName + ".mOrientation must be a rotation");
+    if (!Within(inLinearVelocity, cMaxBodySpeed))
+        return MakeError(EError::InvalidArgument, inName + ".mLinearVelocity must be finite, within 1e6 m/s");
+    if (!Within(inAngularVelocity, cMaxBodyAngularSpeed))
+        return MakeError(EError::InvalidArgument, inName + ".mAngularVelocity must be finite, within 1e6 rad/s");
+    return Status::Ok();
+}
+
+// Points of one convex hull; inName names them in the messages.
+Status ValidateHull(const std::string& inName, const std::vector<Vec3>& inPoints)
+{
+    const std::vector<Vec3>& points = inPoints;
+    if (points.size() < 4)
+        return MakeError(EError::DegenerateGeometry, inName + ": a hull needs at least 4 points");
+    double extent = 0.0;
+    for (const Vec3& point : points)
+    {
+        if (!Within(point, cMaxBodyPosition))
+            return MakeError(EError::InvalidArgument, inName + " must be finite, within 1e9 m");
+        extent = std::max(extent, (point - points[0]).norm());
+    }
+    // intent: the points span a volume: some tetrahedron of them is not flat against the points' extent
+    double largest = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i)
+        for (std::size_t j = i + 1; j < points.size() && largest == 0.0; ++j)
+        {
+            const Vec3 normal = (points[i] - points[0]).cross(points[j] - points[0]);
+            if (normal.norm() <= 1.0e-9 * extent * extent)
+                continue;
+            for (const Vec3& point : points)
+                largest = std::max(largest, std::abs(normal.normalized().dot(point - points[0])));
+            if (largest <= 1.0e-9 * extent)
+                largest = 0.0;
+        }
+    if (!(largest > 0.0))
+        return MakeError(EError::DegenerateGeometry, inName + " are flat: they span no volume");
+    return Status::Ok();
+}
+
+} // namespace
+
+Status ValidateConvexBodySettings(const ConvexBodySettings& inSettings)
+{
+    if (Status body = ValidateRigidBody("ConvexBodySettings", inSettings.mMass, inSettings.mPrincipalInertia,
+                                        inSettings.mPosition, inSettings.mOrientation, inSettings.mLinearVelocity,
+                                        inSettings.mAngularVelocity);
+        !body)
+        return body;
+    return ValidateHull("ConvexBodySettings.mHullPoints", inSettings.mHullPoints);
+}
+
+Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces)
+{
+    if (inPieces.empty())
+        return MakeError(EError::DegenerateGeometry, "PropBodySettings.mPieces: a prop body needs at least one piece");
+    for (std::size_t piece = 0; piece < inPieces.size(); ++piece)
+        if (Status hull = ValidateHull("PropBodySettings.mPieces[" + std::to_string(piece) + "]", inPieces[piece]); !hull)
+            return hull;
+    return Status::Ok();
+}
+
+Status ValidatePropBodySettings(const PropBodySettings& inSettings)
+{
+    if (Status body = ValidateRigidBody("PropBodySettings", inSettings.mMass, inSettings.mPrincipalInertia,
+                                        inSettings.mPosition, inSettings.mOrientation, Vec3::Zero(), Vec3::Zero());
+        !body)
+        return body;
+    return ValidatePropPieces(inSettings.mPieces);
+}
+
+} // namespace crumple::plugin

@@ -1,0 +1,153 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// A prop as an engine body: its exact mass frame, its mesh moved into it, and its collision pieces, which
+// lose what breaks loose and follow what its FEM does.
+#include "BrittlePanel.h"
+#include "WorldFixture.h"
+
+#include <crumple/fem/TetGrid.h>
+#include <crumple/fem/TetVolume.h>
+#include <crumple/props/PropBody.h>
+#include <crumple/props/PropWorld.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace crumple;
+using namespace crumple::props;
+
+namespace
+{
+
+// A 1 x 0.5 x 0.2 m slab of 4 x 2 x 1 cubes of 0.25 x 0.25 x 0.2 m.
+fem::TetMesh Slab()
+{
+    fem::TetGridSettings grid;
+    grid.mOrigin = Vec3(2.0, -1.0, 0.0);
+    grid.mSize = Vec3(1.0, 0.5, 0.2);
+    grid.mCellCount = {4, 2, 1};
+    return fem::TetGrid(grid).Get();
+}
+
+Transform Pose()
+{
+    Transform pose;
+    pose.mRotation = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
+    pose.mTranslation = Vec3(5.0, -3.0, 1.0);
+    return pose;
+}
+
+} // namespace
+
+TEST_CASE("MakePropBody: the exact mass, centre and principal inertia of a slab, its mesh moved into that frame", "[props]")
+{
+    const fem::TetMesh slab = Slab();
+    const PropBody made = MakePropBody(slab, 500.0, Pose(), true, 0.25).Get();
+    const double mass = 500.0 * 1.0 * 0.5 * 0.2;
+    CHECK(std::abs(made.mBody.mMass - mass) <= 1.0e-12 * mass);
+    // A uniform box: m / 12 (b^2 + c^2), ascending.
+    const Vec3 inertia = mass / 12.0 * Vec3(0.5 * 0.5 + 0.2 * 0.2, 1.0 + 0.2 * 0.2, 1.0 + 0.5 * 0.5);
+    CHECK((made.mBody.mPrincipalInertia - inertia).norm() <= 1.0e-9 * inertia.norm());
+    CHECK((made.mBody.mPosition - Pose().ToWorld(Vec3(2.5, -0.75, 0.1))).norm() <= 1.0e-12);
+    CHECK(IsRotation(made.mBody.mOrientation, 1.0e-12));
+    CHECK(made.mBody.mHeld);
+    // The body axes are the slab's (up to sign), turned by the pose.
+    const Mat3 local = Pose().mRotation.transpose() * made.mBody.mOrientation;
+    for (int axis = 0; axis < 3; ++axis)
+        CHECK(std::abs(std::abs(local(axis, axis)) - 1.0) <= 1.0e-9);
+    // Same nodes, same elements, moved rigidly into the body frame, whose origin is the centre of mass.
+    REQUIRE(made.mMesh.GetNodeCount() == slab.GetNodeCount());
+    CHECK(made.mMesh.GetTets() == slab.GetTets());
+    Vec3 first = Vec3::Zero();
+    for (std::size_t node = 0; node < slab.GetRestPositions().size(); ++node)
+        CHECK((made.mMesh.GetRestPositions()[node] - made.mMeshToBody.ToWorld(slab.GetRestPositions()[node])).norm() <= 1.0e-15);
+    for (const fem::TetIndices& tet : made.mMesh.GetTets())
+    {
+        const auto& x = made.mMesh.GetRestPositions();
+        const Vec3 sum = x[tet[0]] + x[tet[1]] + x[tet[2]] + x[tet[3]];
+        first += fem::TetVolume(x[tet[0]], x[tet[1]], x[tet[2]], x[tet[3]]) * 0.25 * sum;
+    }
+    CHECK(first.norm() <= 1.0e-15);
+    // The world sees the mesh where it was: body pose times body-frame position.
+    const Transform body{made.mBody.mOrientation, made.mBody.mPosition};
+    CHECK((body.ToWorld(made.mMesh.GetRestPositions()[7]) - Pose().ToWorld(slab.GetRestPositions()[7])).norm() <= 1.0e-12);
+    // The pieces are those of the moved mesh (cubes of the body frame's grid), and hold every node.
+    CHECK(made.mBody.mPieces == PropCollisionPieces(made.mMesh.GetRestPositions(), made.mMesh.GetTets(), {}, 0.25));
+    std::size_t held = 0;
+    for (const Vec3& node : made.mMesh.GetRestPositions())
+        held += std::any_of(made.mBody.mPieces.begin(), made.mBody.mPieces.end(), [&](const std::vector<Vec3>& inPiece) {
+            return std::find(inPiece.begin(), inPiece.end(), node) != inPiece.end();
+        }) ? 1 : 0;
+    CHECK(held == made.mMesh.GetRestPositions().size());
+}
+
+TEST_CASE("MakePropBody and PropCollisionPieces refuse bad input and leave out what left", "[props]")
+{
+    const fem::TetMesh slab = Slab();
+    CHECK(MakePropBody(slab, 0.0, Pose(), true, 0.25).HasError());
+    CHECK(MakePropBody(slab, 500.0, Pose(), true, std::numeric_limits<double>::quiet_NaN()).HasError());
+    Transform skewed = Pose();
+    skewed.mRotation(0, 0) += 0.1;
+    CHECK(MakePropBody(slab, 500.0, skewed, true, 0.25).HasError());
+
+    // In the slab's own frame its cubes are the grid's: one piece per cube, its eight corners. Leaving out the
+    // first cube's five tetrahedra removes its piece, and only that one.
+    std::vector<std::uint8_t> left_out(slab.GetTets().size(), 0);
+    const std::vector<std::vector<Vec3>> all = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), {}, 0.25);
+    for (std::size_t element = 0; element < 5; ++element)
+        left_out[element] = 1;
+    const std::vector<std::vector<Vec3>> rest = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), left_out, 0.25);
+    REQUIRE(all.size() == 8);
+    for (const std::vector<Vec3>& piece : all)
+        CHECK(piece.size() == 8);
+    CHECK(rest.size() == 7);
+    CHECK(std::find(rest.begin(), rest.end(), all[0]) == rest.end());
+}
+
+TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed over", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1)).Get();
+    CHECK(props->GetCollisionPieces(PropId{7}, 0.25).HasError());
+    CHECK(props->TakeChangedShape(wall, 0.25, -1.0).HasError());
+    // The first call gives the shape; with nothing moved, the next gives nothing.
+    const std::optional<std::vector<std::vector<Vec3>>> first = props->TakeChangedShape(wall, 0.25, 0.01).Get();
+    REQUIRE(first);
+    CHECK(first->size() == 64);
+    CHECK_FALSE(props->TakeChangedShape(wall, 0.25, 0.01).Get());
+    // Hits until pieces break loose: the shape moves with the panel, and the pieces handed over leave it.
+    int hits = 0;
+    std::vector<LooseFragment> loose;
+    while (loose.empty() && hits < 12)
+    {
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(40.0)));
+        const double y = -0.6 + 0.4 * (hits % 4), z = 0.6 - 0.4 * (hits / 4);
+        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<plugin::ContactEvent>{fixture.FrontContact(y, z, 0.2 * hits),
+                                                                               fixture.FrontContact(y + 0.1, z - 0.1, 0.2 * hits)}));
+        fixture.mWorld.Flush();
+        for (int step = 0; step < 10; ++step)
+            REQUIRE(props->Step(1.0 / 120.0));
+        if (hits++ == 0)
+            CHECK(props->TakeChangedShape(wall, 0.25, 0.001).Get()); // the first hit moved the panel
+        loose = props->TakeLooseFragments().Get();
+    }
+    REQUIRE_FALSE(loose.empty());
+    CHECK(props->GetShapeRevision(wall) == loose.size());
+    const std::optional<std::vector<std::vector<Vec3>>> after = props->TakeChangedShape(wall, 0.25, 1.0e9).Get();
+    REQUIRE(after); // pieces left: a new shape whatever the tolerance
+    std::size_t left = 0;
+    for (const LooseFragment& piece : loose)
+        left += piece.mElements.size();
+    std::size_t points = 0, points_before = 0;
+    for (const std::vector<Vec3>& piece : *after)
+        points += piece.size();
+    for (const std::vector<Vec3>& piece : *first)
+        points_before += piece.size();
+    CHECK(left > 0);
+    CHECK(after->size() <= first->size());
+    CHECK(points < points_before);
+}
