@@ -3,7 +3,10 @@
 #include "ScenePainter.h"
 #include "BoxMesh.h"
 
+#include <crumple/render/Annotate.h>
 #include <crumple/render/WritePng.h>
+
+#include <cmath>
 
 namespace crumple::samples
 {
@@ -27,7 +30,32 @@ Result<std::unique_ptr<ScenePainter>> ScenePainter::Create(int inWidth, int inHe
     painter->mRenderer = std::move(renderer).Get();
     painter->mWidth = inWidth;
     painter->mHeight = inHeight;
+    if (Status scale = painter->SetScalarMax(inScalarMax); !scale)
+        return scale.GetError();
     return painter;
+}
+
+Status ScenePainter::SetScalarMax(double inScalarMax)
+{
+    if (!std::isfinite(inScalarMax) || !(inScalarMax > 0.0))
+        return MakeError(EError::InvalidArgument, "ScenePainter: the colour scale's top must be finite and > 0 m");
+    render::RenderSettings settings = mRenderer->GetSettings();
+    settings.mScalarMin = -inScalarMax;
+    settings.mScalarMax = inScalarMax;
+    if (Status set = mRenderer->SetSettings(settings); !set)
+        return set;
+    mScalarMax = inScalarMax;
+    return Status::Ok();
+}
+
+double DentColorScale(double inDeepest)
+{
+    const double deepest = std::isfinite(inDeepest) ? std::max(inDeepest, 0.01) : 0.01;
+    const double decade = std::pow(10.0, std::floor(std::log10(deepest)));
+    for (double step : {1.0, 2.0, 2.5, 5.0, 10.0})
+        if (deepest <= step * decade * (1.0 + 1.0e-12))
+            return step * decade;
+    return 10.0 * decade;
 }
 
 void ScenePainter::Clear()
@@ -77,6 +105,15 @@ Status ScenePainter::Paint(const render::Camera& inCamera, const std::filesystem
 {
     if (Status rendered = mRenderer->Render(mPositions, mNormals, mTriangles, mScalars, inCamera, mPixels); !rendered)
         return rendered;
+    // The diverging map is centred on zero; depths are >= 0, so the legend shows its upper half.
+    render::ColorLegend legend;
+    legend.mMap = render::EColorMap::CoolWarm;
+    legend.mMapMin = -mScalarMax;
+    legend.mMapMax = mScalarMax;
+    legend.mShownMin = 0.0;
+    legend.mShownMax = mScalarMax;
+    legend.mTitle = "dent depth (m)";
+    render::DrawColorLegend({mPixels, mWidth, mHeight}, legend);
     return render::WritePng(inPath, mWidth, mHeight, mPixels);
 }
 

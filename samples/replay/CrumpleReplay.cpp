@@ -14,9 +14,13 @@
 #include <crumple/props/PropRecording.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
+#include <map>
 #include <string>
 
 #if defined(CRUMPLE_REPLAY_PICTURES)
@@ -31,18 +35,21 @@ int main(int argc, char** argv)
     std::filesystem::path input, out;
     bool pictures = false;
     bool meshes = true;
+    double colour_max = 0.0; // 0: per object, its deepest dent rounded up (samples::DentColorScale)
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
         {
-            std::printf("usage: crumple-replay FILE --out DIR [--pictures] [--no-meshes]\n"
+            std::printf("usage: crumple-replay FILE --out DIR [--pictures [--colour-max M]] [--no-meshes]\n"
                         "  Replays a Crumple recording (written by DamageRecorder) without a physics engine and\n"
                         "  writes each object's deformed mesh as DIR/object<ID>.obj, with one line per object\n"
                         "  (its deepest dent and a hash of its positions) and the replay's time.\n"
                         "  --no-meshes  writes no OBJ (the hash line still checks the result)\n"
                         "  --pictures  also DIR/object<ID>_before.png, _after.png (coloured by dent depth) and\n"
-                        "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n");
+                        "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n"
+                        "  --colour-max M  the dent colour scale's top (m; default: each object's deepest dent at\n"
+                        "              the end, rounded up to 1, 2, 2.5 or 5 x 10^k, as crumple-crash does)\n");
             return 0;
         }
         if (arg == "--version")
@@ -56,6 +63,16 @@ int main(int argc, char** argv)
             pictures = true;
         else if (arg == "--no-meshes")
             meshes = false;
+        else if (arg == "--colour-max" && i + 1 < argc)
+        {
+            char* end = nullptr;
+            colour_max = std::strtod(argv[++i], &end);
+            if (end == argv[i] || *end != '\0' || !std::isfinite(colour_max) || !(colour_max > 0.0))
+            {
+                std::fprintf(stderr, "crumple-replay: --colour-max needs a number > 0 (m), got '%s'\n", argv[i]);
+                return 2;
+            }
+        }
         else if (!arg.starts_with("-") && input.empty())
             input = arg;
         else
@@ -113,8 +130,24 @@ int main(int argc, char** argv)
         else
             std::printf("note: no pictures: %s\n", created.GetError().mMessage.c_str());
     }
+    // The colour scale of each object: the given one, or its deepest dent at the end, which a first replay
+    // finds (only when pictures are asked for), so its frames share the scale of its last picture.
+    std::map<ObjectId, double> scales;
+    if (painter != nullptr && colour_max == 0.0)
+    {
+        Result<std::vector<ReplayedObject>> ended = ReplayDamage(replay.Get());
+        if (ended)
+            for (const ReplayedObject& object : ended.Get())
+            {
+                const ffd::FfdDeformer& d = object.mDeformable.GetDeformer();
+                const std::vector<double> depths = samples::DentDepths(d.GetPositions(), d.GetRestMesh().mPositions);
+                scales[object.mObject] = samples::DentColorScale(depths.empty() ? 0.0 : *std::max_element(depths.begin(), depths.end()));
+            }
+    }
     if (painter != nullptr)
         paint = [&](const ReplayedObject& inObject, const std::filesystem::path& inPath) {
+            const auto scale = scales.find(inObject.mObject);
+            (void)painter->SetScalarMax(colour_max > 0.0 ? colour_max : scale != scales.end() ? scale->second : 0.25);
             const ffd::FfdDeformer& d = inObject.mDeformable.GetDeformer();
             const ffd::AlignedBox bounds = ffd::BoundingBox(d.GetRestMesh().mPositions);
             const Vec3 lo = bounds.mMin, hi = bounds.mMax;

@@ -147,6 +147,8 @@ Status WriteCampbellPlot(const std::filesystem::path& inPath, const CampbellLine
     canvas.Line(x_of(b0_kmh), y_of(0.0), x_of(right_kmh), y_of(inLine.Crush(right_kmh / cKmhPerMs)), 3, blue);
     for (const CampbellPoint& point : inPoints)
         canvas.Disc(x_of(point.mSpeed * cKmhPerMs), y_of(point.mCrush), 6.0, red);
+    CrushSpeedChart::AddLegend(canvas, 1, blue, "the line calibrated to");
+    CrushSpeedChart::AddLegend(canvas, 2, red, "simulated");
     return canvas.Save(inPath);
 }
 

@@ -39,6 +39,8 @@ void PrintUsage(std::FILE* inStream)
                  "  crumple-replay) and PNG pictures. Exit status: 0 all expectations hold, 1 one failed,\n"
                  "  2 bad scenario or command line (nothing written).\n"
                  "  --no-pictures  skip the renders (no EGL context is made)\n"
+                 "  --colour-max M the dent colour scale's top (m; default: the deepest dent rounded up to 1, 2,\n"
+                 "                 2.5 or 5 x 10^k, as crumple-replay does, so the same damage gets the same colours)\n"
                  "  --strict       refuse a mesh whose stated forward axis is not its longest horizontal extent\n"
                  "                 (without it the run goes on and the report carries a warning)\n"
                  "  --calibrate --b0 B0 --b1 B1 [--preset-name NAME] [--source TEXT]\n"
@@ -114,12 +116,13 @@ int RunCampbell(const CrashScenario& inScenario, const CampbellLine& inLine, boo
 
 int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
         bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
-        const std::string& inSource, bool inPictures, bool inStrict, const std::filesystem::path& inOut);
+        const std::string& inSource, bool inPictures, double inColourMax, bool inStrict, const std::filesystem::path& inOut);
 
 int main(int argc, char** argv)
 {
     std::filesystem::path scenario_path, out;
     bool pictures = true, calibrate = false, campbell_check = false, strict = false;
+    double colour_max = 0.0; // 0: the deepest dent, rounded up (samples::DentColorScale)
     CampbellLine line{std::nan(""), std::nan("")};
     double impulse_tolerance = std::numeric_limits<double>::quiet_NaN();
     std::string preset_name = "calibrated", source = "crumple-crash --calibrate", sweep;
@@ -147,6 +150,14 @@ int main(int argc, char** argv)
             strict = true;
         else if (arg == "--no-pictures")
             pictures = false;
+        else if (arg == "--colour-max" && i + 1 < argc)
+        {
+            if (!number(argv[++i], colour_max) || !(colour_max > 0.0))
+            {
+                std::fprintf(stderr, "crumple-crash: --colour-max needs a number > 0 (m), got '%s'\n", argv[i]);
+                return cExitBadInput;
+            }
+        }
         else if (arg == "--calibrate")
             calibrate = true;
         else if (arg == "--campbell-check")
@@ -238,7 +249,7 @@ int main(int argc, char** argv)
     }
     // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing.
     const int status = Run(scenario.Get(), sweep, sweep_spec.Get(), workers, calibrate || campbell_check, calibrate,
-                           line, preset_name, source, pictures, strict, out);
+                           line, preset_name, source, pictures, colour_max, strict, out);
     if (status == cExitBadInput && made_folder)
         std::filesystem::remove_all(out, error);
     return status;
@@ -246,7 +257,7 @@ int main(int argc, char** argv)
 
 int Run(const CrashScenario& inScenario, const std::string& inSweep, const CrashSweepSpec& inSweepSpec, int inWorkers,
         bool inCampbell, bool inCalibrate, const CampbellLine& inLine, const std::string& inPresetName,
-        const std::string& inSource, bool inPictures, bool inStrict, const std::filesystem::path& inOut)
+        const std::string& inSource, bool inPictures, double inColourMax, bool inStrict, const std::filesystem::path& inOut)
 {
     const CrashScenario& scenario = inScenario;
     const std::filesystem::path& out = inOut;
@@ -290,7 +301,7 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
     if (inPictures && scenario.mPictures)
-        if (Status status = WritePictures(out, outcome.Get()); status.HasError())
+        if (Status status = WritePictures(out, outcome.Get(), inColourMax); status.HasError())
             std::printf("crumple-crash: pictures skipped: %s\n", status.GetError().mMessage.c_str());
     if (Status status = WriteReportHtml(out / "report.html", scenario, outcome.Get(), findings, out);
         status.HasError())

@@ -294,17 +294,19 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     return WriteFileAtomically(inPath, std::as_bytes(std::span(html.data(), html.size())), "crumple-crash report");
 }
 
-Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome)
+Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome, double inColourMax)
 {
-    const double deepest = std::max(inOutcome.mResidualCrush[static_cast<int>(EZone::Any)], 0.01);
-    Result<std::unique_ptr<samples::ScenePainter>> created = samples::ScenePainter::Create(960, 540, deepest);
+    const std::vector<double> depths = samples::DentDepths(inOutcome.mPositions, inOutcome.mRestMesh.mPositions);
+    const double deepest = depths.empty() ? 0.0 : *std::max_element(depths.begin(), depths.end());
+    const double scale = inColourMax > 0.0 ? inColourMax : samples::DentColorScale(deepest);
+    Result<std::unique_ptr<samples::ScenePainter>> created = samples::ScenePainter::Create(960, 540, scale);
     if (created.HasError())
         return created.GetError();
     samples::ScenePainter& painter = *created.Get();
     const ffd::AlignedBox bounds = ffd::BoundingBox(inOutcome.mRestMesh.mPositions);
     const Vec3 margin = Vec3::Constant(0.05);
     const double aspect = painter.GetWidth() / static_cast<double>(painter.GetHeight());
-    const std::vector<double> dents = samples::DentDepths(inOutcome.mPositions, inOutcome.mRestMesh.mPositions);
+    const std::vector<double>& dents = depths;
     const struct
     {
         render::EView mView;

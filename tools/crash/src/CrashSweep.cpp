@@ -230,7 +230,7 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
     std::string csv = "case,speed_km_h,wall_angle_deg,offset_m,front_crush_m,max_crush_m,delta_v_km_h,"
                       "energy_absorbed_J,total_impulse_N_s,collisions,status\n";
     int failed = 0;
-    std::vector<std::array<double, 2>> points;
+    std::vector<std::array<double, 2>> points, failed_points;
     for (std::size_t index = 0; index < total; ++index)
     {
         Result<std::vector<std::byte>> row = ReadFileBytes(cases / CasePath(index));
@@ -242,17 +242,20 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
         }
         const std::string text(reinterpret_cast<const char*>(row.Get().data()), row.Get().size());
         csv += text;
-        if (text.find(",ok\n") == std::string::npos)
+        const bool ok = text.find(",ok\n") != std::string::npos;
+        if (!ok)
         {
             ++failed;
             // Say which case and why (the row's last field).
             if (inProgress != nullptr)
                 std::fprintf(inProgress, "  case %zu %s", index, text.substr(text.rfind(',') + 1).c_str());
-            continue;
         }
+        // A case that ran but failed a check still has its crush: it is drawn in its own colour.
         double speed = 0.0, angle = 0.0, offset = 0.0;
         (void)CaseScenario(inScenario, inSpec, index, speed, angle, offset);
-        points.push_back({speed * cKmhPerMs, CsvField(text, 4)});
+        const double crush = CsvField(text, 4);
+        if (std::isfinite(crush))
+            (ok ? points : failed_points).push_back({speed * cKmhPerMs, crush});
     }
     if (Status status = WriteFileAtomically(inFolder / "sweep.csv", std::as_bytes(std::span(csv.data(), csv.size())),
                                             "crumple-crash sweep");
@@ -267,6 +270,11 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
         chart.mRightKmh = std::max(chart.mRightKmh, point[0]);
         chart.mTop = std::max(chart.mTop, point[1]);
     }
+    for (const auto& point : failed_points)
+    {
+        chart.mRightKmh = std::max(chart.mRightKmh, point[0]);
+        chart.mTop = std::max(chart.mTop, point[1]);
+    }
     chart.mRightKmh = std::ceil(chart.mRightKmh / 10.0 + 1.0) * 10.0;
     chart.mTop = std::ceil(chart.mTop * 10.0 + 0.5) / 10.0;
     PlotCanvas canvas = chart.Draw();
@@ -274,6 +282,11 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
     auto y_of = [&](double inCrush) { return chart.Y(inCrush); };
     for (const auto& point : points)
         canvas.Disc(x_of(point[0]), y_of(point[1]), 6.0, {210, 30, 30});
+    for (const auto& point : failed_points)
+        canvas.Disc(x_of(point[0]), y_of(point[1]), 6.0, {240, 150, 20});
+    CrushSpeedChart::AddLegend(canvas, 1, {210, 30, 30}, "simulated cases");
+    if (!failed_points.empty())
+        CrushSpeedChart::AddLegend(canvas, 2, {240, 150, 20}, "cases that failed a check (sweep.csv says which)");
     if (Status status = canvas.Save(inFolder / "sweep.png"); status.HasError())
         return status.GetError();
     return failed;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <crumple/base/Result.h>
+#include <crumple/crash/Calibration.h>
+#include <crumple/render/Annotate.h>
 #include <crumple/render/WritePng.h>
 
 #include <algorithm>
@@ -48,49 +50,42 @@ public:
                 if ((x - inX) * (x - inX) + (y - inY) * (y - inY) <= inRadius * inRadius + 0.25)
                     Dot(x, y, inColour);
     }
-    /// Writes inText (digits, '.', '-', '/', 'k', 'm', 'h', ' ') at (inX, inY) top-left, 3 x 5 glyphs scaled by
-    /// inScale: enough for tick labels and units without a font library.
+    /// Writes inText (printable ASCII) at (inX, inY) top-left, stb_easy_font scaled by inScale.
     void Text(int inX, int inY, const std::string& inText, int inScale, std::array<std::uint8_t, 3> inColour)
     {
-        for (char character : inText)
+        render::DrawText(Image(), inX, inY, inText, inScale, inColour);
+    }
+    /// Fills the quadrilateral with corners inCorners (x, y), in order around it, with inColour.
+    void Fill(const std::array<std::array<double, 2>, 4>& inCorners, std::array<std::uint8_t, 3> inColour)
+    {
+        double top = inCorners[0][1], bottom = top;
+        for (const auto& corner : inCorners)
         {
-            const std::uint16_t glyph = Glyph(character);
-            for (int row = 0; row < 5; ++row)
-                for (int column = 0; column < 3; ++column)
-                    if ((glyph >> (14 - 3 * row - column)) & 1u)
-                        for (int dy = 0; dy < inScale; ++dy)
-                            for (int dx = 0; dx < inScale; ++dx)
-                                Dot(inX + column * inScale + dx, inY + row * inScale + dy, inColour);
-            inX += 4 * inScale;
+            top = std::min(top, corner[1]);
+            bottom = std::max(bottom, corner[1]);
+        }
+        for (int y = static_cast<int>(std::ceil(top)); y <= static_cast<int>(bottom); ++y)
+        {
+            // intent: the span of the row inside the (convex) quadrilateral, from its edges' crossings
+            double left = 1e30, right = -1e30;
+            for (std::size_t i = 0; i < 4; ++i)
+            {
+                const auto& p = inCorners[i];
+                const auto& q = inCorners[(i + 1) % 4];
+                if ((p[1] - y) * (q[1] - y) > 0.0 || p[1] == q[1])
+                    continue;
+                const double x = p[0] + (q[0] - p[0]) * (y - p[1]) / (q[1] - p[1]);
+                left = std::min(left, x);
+                right = std::max(right, x);
+            }
+            for (int x = static_cast<int>(std::ceil(left)); x <= static_cast<int>(right); ++x)
+                Dot(x, y, inColour);
         }
     }
     Status Save(const std::filesystem::path& inPath) const { return render::WritePng(inPath, mWidth, mHeight, mPixels); }
 
 private:
-    // 15-bit 3 x 5 glyphs, rows top to bottom, most significant bit first.
-    static std::uint16_t Glyph(char inCharacter)
-    {
-        switch (inCharacter)
-        {
-        case '0': return 0b111101101101111;
-        case '1': return 0b010110010010111;
-        case '2': return 0b111001111100111;
-        case '3': return 0b111001111001111;
-        case '4': return 0b101101111001001;
-        case '5': return 0b111100111001111;
-        case '6': return 0b111100111101111;
-        case '7': return 0b111001001001001;
-        case '8': return 0b111101111101111;
-        case '9': return 0b111101111001111;
-        case '.': return 0b000000000000010;
-        case '-': return 0b000000111000000;
-        case '/': return 0b001001010100100;
-        case 'k': return 0b100101110101101;
-        case 'm': return 0b000111111101101;
-        case 'h': return 0b100100111101101;
-        default: return 0;
-        }
-    }
+    render::RgbaImage Image() { return {mPixels, mWidth, mHeight}; }
 
     int mWidth, mHeight;
     std::vector<std::uint8_t> mPixels;
@@ -98,39 +93,62 @@ private:
 
 
 /// A residual-crush-against-impact-speed chart on an 800 x 500 canvas: speed 0 to mRightKmh (grid and labels
-/// every 10 km/h), crush 0 to mTop (every 0.1 m).
+/// every 10 km/h), crush 0 to mTop (every 0.1 m), axis titles, and Campbell's band of the crash data
+/// (CampbellBand) shaded under the grid, named in the legend with what the caller draws (AddLegend).
 struct CrushSpeedChart
 {
-    static constexpr int cWidth = 800, cHeight = 500, cLeft = 60, cBottom = 440, cRight = 770, cTop = 30;
+    static constexpr int cWidth = 800, cHeight = 500, cLeft = 70, cBottom = 430, cRight = 770, cTop = 40;
     double mRightKmh = 70.0; ///< km/h
     double mTop = 0.1;       ///< m
 
     double X(double inKmh) const { return cLeft + (cRight - cLeft) * inKmh / mRightKmh; }
     double Y(double inCrush) const { return cBottom - (cBottom - cTop) * inCrush / mTop; }
 
-    /// A canvas with the grid, tick labels, units and axes drawn.
+    /// A canvas with the band, grid, tick labels, axis titles and axes drawn.
     PlotCanvas Draw() const
     {
         PlotCanvas canvas(cWidth, cHeight);
         const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{200, 200, 200}, label{60, 60, 60};
+        // Campbell's band, clipped to the chart: between its two lines from 0 to the right edge (crush 0 below b0).
+        const CampbellBand band;
+        auto y_in = [&](const CampbellLine& inLine, double inKmh) { return Y(std::min(inLine.Crush(inKmh / 3.6), mTop)); };
+        for (double kmh = 0.0; kmh < mRightKmh; kmh += 0.5)
+        {
+            const double next = std::min(kmh + 0.5, mRightKmh);
+            canvas.Fill({{{X(kmh), y_in(band.mLeast, kmh)}, {X(next), y_in(band.mLeast, next)}, {X(next), y_in(band.mMost, next)},
+                          {X(kmh), y_in(band.mMost, kmh)}}},
+                        cBand);
+        }
         for (double kmh = 0.0; kmh <= mRightKmh; kmh += 10.0)
             canvas.Text(static_cast<int>(X(kmh)) - 6, cBottom + 8, std::to_string(static_cast<int>(kmh)), 2, label);
-        canvas.Text(cRight - 40, cBottom + 28, "km/h", 2, label);
+        canvas.Text((cLeft + cRight) / 2 - 110, cBottom + 34, "impact speed (km/h)", 2, label);
         for (double crush = 0.0; crush <= mTop + 1e-9; crush += 0.1)
         {
             char tick[16];
             std::snprintf(tick, sizeof(tick), "%.1f", crush);
-            canvas.Text(cLeft - 40, static_cast<int>(Y(crush)) - 5, tick, 2, label);
+            canvas.Text(cLeft - 44, static_cast<int>(Y(crush)) - 6, tick, 2, label);
         }
-        canvas.Text(cLeft - 40, cTop - 24, "m", 2, label);
+        canvas.Text(cLeft - 44, cTop - 30, "residual front crush (m)", 2, label);
         for (double kmh = 10.0; kmh <= mRightKmh; kmh += 10.0)
             canvas.Line(X(kmh), cBottom, X(kmh), cTop, 1, grey);
         for (double crush = 0.1; crush <= mTop + 1e-9; crush += 0.1)
             canvas.Line(cLeft, Y(crush), cRight, Y(crush), 1, grey);
         canvas.Line(cLeft, cBottom, cRight, cBottom, 2, black);
         canvas.Line(cLeft, cBottom, cLeft, cTop, 2, black);
+        AddLegend(canvas, 0, cBand, "Campbell band (crash data, 16-56 km/h)");
         return canvas;
     }
+
+    /// Legend entry inRow (0 is the band's) at the chart's top left: a swatch of inColour and inText.
+    static void AddLegend(PlotCanvas& ioCanvas, int inRow, std::array<std::uint8_t, 3> inColour, const std::string& inText)
+    {
+        const int y = cTop + 10 + 24 * inRow;
+        for (int dy = 0; dy < 12; ++dy)
+            ioCanvas.Line(cLeft + 14, y + dy, cLeft + 34, y + dy, 1, inColour);
+        ioCanvas.Text(cLeft + 42, y - 1, inText, 2, {60, 60, 60});
+    }
+
+    static constexpr std::array<std::uint8_t, 3> cBand{198, 232, 198};
 };
 
 } // namespace crumple::crash

@@ -24,6 +24,15 @@ struct CampbellLine
     double Crush(double inSpeed) const { return inSpeed > mNoDamageSpeed ? (inSpeed - mNoDamageSpeed) / mSlope : 0.0; }
 };
 
+/// The band of Campbell lines the crash data spans (shared/data/crash/campbell_oracle.csv, the same for every
+/// class: 0-0.125 m at 16 km/h to 0.369-0.742 m at 56 km/h, i.e. b0 2.2-4.5 m/s with b1 18-30 1/s,
+/// SOURCES.md): the least crush at a speed is on mLeast, the most on mMost. Plots draw it (CrushSpeedChart).
+struct CampbellBand
+{
+    CampbellLine mLeast{16.0 / 3.6, 1.0 / (0.369 / (40.0 / 3.6))};         ///< 0 at 16 km/h, 0.369 m at 56 km/h
+    CampbellLine mMost{(16.0 - 0.125 / (0.617 / 40.0)) / 3.6, 40.0 / 3.6 / 0.617}; ///< 0.125 m at 16, 0.742 m at 56 km/h
+};
+
 /// One speed of a calibration or check: the model's crush and the simulated one.
 struct CampbellPoint
 {

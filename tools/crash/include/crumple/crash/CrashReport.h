@@ -60,6 +60,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
 
 /// PNG renders of the car before and after from the front, side and top, and a heat map of the residual
 /// displacement (iso view), into inFolder. Needs an EGL context: without one the error says why.
-Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome);
+/// @param inColourMax  the dent colour scale's top (m); 0: samples::DentColorScale of the deepest dent, as
+///                     crumple-replay uses, so that the same damage has the same colours in both
+Status WritePictures(const std::filesystem::path& inFolder, const CrashOutcome& inOutcome, double inColourMax = 0.0);
 
 } // namespace crumple::crash
