@@ -4,7 +4,10 @@
 // scale crumple-crash and crumple-replay share.
 #include "ScenePainter.h"
 
+#include "PlotCanvas.h"
+
 #include <crumple/crash/Calibration.h>
+#include <crumple/crash/TimeHistory.h>
 
 #include <catch2/catch.hpp>
 
@@ -61,4 +64,31 @@ TEST_CASE("The dent colour scale is the deepest dent rounded up to 1, 2, 2.5 or 
     CHECK(samples::DentColorScale(2.6) == Approx(5.0));
     CHECK(samples::DentColorScale(0.0) == Approx(0.01));
     CHECK(samples::DentColorScale(std::nan("")) == Approx(0.01));
+}
+
+TEST_CASE("Time-history plots: three PNGs with round grid steps; too short a history is refused", "[crash]")
+{
+    CHECK(crash::NiceStep(300.0, 8) == Approx(50.0));
+    CHECK(crash::NiceStep(0.7, 5) == Approx(0.2));
+    CHECK(crash::NiceStep(12.0, 5) == Approx(2.5));
+    crash::TimeHistory history;
+    for (int step = 0; step <= 120; ++step)
+    {
+        crash::TimeHistoryRow row;
+        row.mTime = step / 120.0;
+        row.mVelocity = step < 30 ? 15.0 : 0.0;
+        row.mAcceleration = step == 30 ? -15.0 * 120.0 : 0.0;
+        row.mKineticEnergy = 0.5 * 1200.0 * row.mVelocity * row.mVelocity;
+        row.mEnergyAbsorbed = 0.5 * 1200.0 * 225.0 - row.mKineticEnergy;
+        history.mRows.push_back(row);
+    }
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "crumple-charts-test";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    REQUIRE(crash::WriteTimeHistoryPlots(folder, history));
+    for (const char* name : {"deceleration.png", "velocity.png", "energy.png"})
+        CHECK(std::filesystem::file_size(folder / name) > 1000);
+    history.mRows.resize(1);
+    CHECK(crash::WriteTimeHistoryPlots(folder, history).HasError());
+    std::filesystem::remove_all(folder);
 }

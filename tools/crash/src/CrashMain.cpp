@@ -301,8 +301,12 @@ int Run(const CrashScenario& inScenario, const std::string& inSweep, const Crash
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
     if (inPictures && scenario.mPictures)
+    {
         if (Status status = WritePictures(out, outcome.Get(), inColourMax); status.HasError())
             std::printf("crumple-crash: pictures skipped: %s\n", status.GetError().mMessage.c_str());
+        if (Status status = WriteTimeHistoryPlots(out, findings.mHistory); status.HasError())
+            std::printf("crumple-crash: time-history plots skipped: %s\n", status.GetError().mMessage.c_str());
+    }
     if (Status status = WriteReportHtml(out / "report.html", scenario, outcome.Get(), findings, out);
         status.HasError())
         std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -280,16 +281,21 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     for (const SanityResult& check : inFindings.mSanity)
         html += "<tr><td>" + Escape(check.mName) + "</td><td>" + Escape(check.mDetail) + "</td><td class=\"" +
                 (!check.mApplies ? "pass\">n/a" : check.mPassed ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
-    html += "</table>\n<h2>Pictures</h2>\n<div>";
-    for (const char* name : {"before_front", "after_front", "before_side", "after_side", "before_top", "after_top",
-                             "heat_map"})
-    {
-        Result<std::vector<std::byte>> png = ReadFileBytes(inPictureFolder / (std::string(name) + ".png"));
-        if (png.IsValid())
-            html += "<figure style=\"display:inline-block\"><img alt=\"" + std::string(name) +
-                    "\" src=\"data:image/png;base64," + Base64(png.Get()) + "\"><figcaption>" + name +
-                    "</figcaption></figure>";
-    }
+    // Each PNG that was written, embedded with its name as caption.
+    auto figures = [&](std::initializer_list<const char*> inNames, const std::string& inNote) {
+        for (const char* name : inNames)
+        {
+            Result<std::vector<std::byte>> png = ReadFileBytes(inPictureFolder / (std::string(name) + ".png"));
+            if (png.IsValid())
+                html += "<figure style=\"display:inline-block\"><img alt=\"" + std::string(name) +
+                        "\" src=\"data:image/png;base64," + Base64(png.Get()) + "\"><figcaption>" + name + inNote +
+                        "</figcaption></figure>";
+        }
+    };
+    html += "</table>\n<h2>Time histories</h2>\n<div>";
+    figures({"deceleration", "velocity", "energy"}, " (timeseries.csv)");
+    html += "</div>\n<h2>Pictures</h2>\n<div>";
+    figures({"before_front", "after_front", "before_side", "after_side", "before_top", "after_top", "heat_map"}, "");
     html += "</div>\n</body></html>\n";
     return WriteFileAtomically(inPath, std::as_bytes(std::span(html.data(), html.size())), "crumple-crash report");
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,78 @@ struct CrushSpeedChart
     }
 
     static constexpr std::array<std::uint8_t, 3> cBand{198, 232, 198};
+};
+
+/// The grid step for a range shown in about inDivisions parts: 1, 2, 2.5 or 5 times a power of ten.
+inline double NiceStep(double inRange, int inDivisions)
+{
+    const double raw = std::max(inRange, 1e-12) / inDivisions;
+    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double step : {1.0, 2.0, 2.5, 5.0})
+        if (raw <= step * decade * (1.0 + 1e-9))
+            return step * decade;
+    return 10.0 * decade;
+}
+
+/// A line chart of quantities against time on an 800 x 400 canvas: x from mX0 to mX1, y from mY0 to mY1
+/// (widened to round grid steps), both axes titled with their units, series drawn as polylines and named
+/// in a legend.
+struct LineChart
+{
+    static constexpr int cWidth = 800, cHeight = 400, cLeft = 80, cBottom = 340, cRight = 770, cTop = 40;
+    double mX0 = 0.0, mX1 = 1.0, mY0 = 0.0, mY1 = 1.0;
+    std::string mXTitle, mYTitle;
+
+    double X(double inX) const { return cLeft + (cRight - cLeft) * (inX - mX0) / (mX1 - mX0); }
+    double Y(double inY) const { return cBottom - (cBottom - cTop) * (inY - mY0) / (mY1 - mY0); }
+
+    /// Widens the y range to round steps (and to include 0), then draws the grid, ticks, titles and axes.
+    PlotCanvas Draw()
+    {
+        mY0 = std::min(mY0, 0.0);
+        mY1 = std::max(mY1, mY0 + 1e-9);
+        mY1 += 0.2 * (mY1 - mY0); // headroom for the legend
+        const double y_step = NiceStep(mY1 - mY0, 5), x_step = NiceStep(mX1 - mX0, 8);
+        mY0 = std::floor(mY0 / y_step + 1e-9) * y_step;
+        mY1 = std::ceil(mY1 / y_step - 1e-9) * y_step;
+        PlotCanvas canvas(cWidth, cHeight);
+        const std::array<std::uint8_t, 3> black{0, 0, 0}, grey{215, 215, 215}, label{60, 60, 60};
+        char tick[32];
+        for (double x = std::ceil(mX0 / x_step) * x_step; x <= mX1 + 1e-9 * x_step; x += x_step)
+        {
+            canvas.Line(X(x), cBottom, X(x), cTop, 1, grey);
+            std::snprintf(tick, sizeof(tick), "%g", std::abs(x) < 1e-12 ? 0.0 : x);
+            canvas.Text(static_cast<int>(X(x)) - render::TextWidth(tick, 2) / 2, cBottom + 8, tick, 2, label);
+        }
+        for (double y = mY0; y <= mY1 + 1e-9 * y_step; y += y_step)
+        {
+            canvas.Line(cLeft, Y(y), cRight, Y(y), 1, grey);
+            std::snprintf(tick, sizeof(tick), "%g", std::abs(y) < 1e-12 * y_step ? 0.0 : y);
+            canvas.Text(cLeft - 8 - render::TextWidth(tick, 2), static_cast<int>(Y(y)) - 6, tick, 2, label);
+        }
+        canvas.Text((cLeft + cRight) / 2 - render::TextWidth(mXTitle, 2) / 2, cBottom + 32, mXTitle, 2, label);
+        canvas.Text(8, cTop - 30, mYTitle, 2, label);
+        canvas.Line(cLeft, Y(0.0), cRight, Y(0.0), 2, black);
+        canvas.Line(cLeft, cBottom, cLeft, cTop, 2, black);
+        return canvas;
+    }
+
+    /// The series (inX[i], inY[i]) as a polyline, points outside the x range left out.
+    void Series(PlotCanvas& ioCanvas, std::span<const double> inX, std::span<const double> inY, std::array<std::uint8_t, 3> inColour) const
+    {
+        for (std::size_t i = 1; i < std::min(inX.size(), inY.size()); ++i)
+            if (inX[i - 1] >= mX0 && inX[i] <= mX1)
+                ioCanvas.Line(X(inX[i - 1]), Y(inY[i - 1]), X(inX[i]), Y(inY[i]), 2, inColour);
+    }
+
+    /// Legend entry inRow at the chart's top right.
+    static void AddLegend(PlotCanvas& ioCanvas, int inRow, std::array<std::uint8_t, 3> inColour, const std::string& inText)
+    {
+        const int x = cRight - 20 - render::TextWidth(inText, 2) - 30, y = cTop + 10 + 24 * inRow;
+        for (int dy = 0; dy < 4; ++dy)
+            ioCanvas.Line(x, y + 4 + dy, x + 20, y + 4 + dy, 1, inColour);
+        ioCanvas.Text(x + 28, y - 1, inText, 2, {60, 60, 60});
+    }
 };
 
 } // namespace crumple::crash

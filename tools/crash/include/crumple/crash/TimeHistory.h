@@ -62,4 +62,8 @@ TimeHistory MakeTimeHistory(const CrashOutcome& inOutcome);
 /// (empty without the filter), kinetic_energy_J, energy_absorbed_J.
 Status WriteTimeSeriesCsv(const std::filesystem::path& inPath, const TimeHistory& inHistory);
 
+/// Plots of the history into inFolder, time in ms on x, axes titled with units: deceleration.png (in g,
+/// unfiltered and CFC 60 when filtered), velocity.png (km/h), energy.png (kinetic and absorbed, kJ).
+Status WriteTimeHistoryPlots(const std::filesystem::path& inFolder, const TimeHistory& inHistory);
+
 } // namespace crumple::crash
