@@ -250,7 +250,7 @@ int main(int argc, char** argv)
     const auto& collisions = replay.Get().mCollisions;
     const double recorded_s = collisions.empty() ? 0.0 : collisions.back().mEndTime;
     std::printf("replayed %zu collisions in %.2f ms (building the objects included, writing excluded); the last "
-                "recorded collision closed at t = %.3f s (%.0fx real time)\n",
+                "recorded collision closed at t = %.3f s (%.3gx real time)\n",
                 collisions.size(), replay_ms, recorded_s, replay_ms > 0.0 ? 1.0e3 * recorded_s / replay_ms : 0.0);
     return 0;
 }
