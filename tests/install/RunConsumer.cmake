@@ -20,3 +20,20 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${SCRATCH_DIR}/build -DCMAKE_B
     "-DCMAKE_CXX_FLAGS=${CONSUMER_CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_LINKER_FLAGS}")
 run(${CMAKE_COMMAND} --build ${SCRATCH_DIR}/build --config ${BUILD_TYPE})
 run(${SCRATCH_DIR}/build/consumer)
+
+# The installed tools (when this build has them): they run from the prefix alone, on an installed
+# scenario that needs no shared data (a box car), and the replay rebuilds its recording.
+if(EXISTS ${CRUMPLE_BINARY_DIR}/samples/crumple-crash)
+    foreach(tool crumple-crash crumple-replay)
+        if(NOT EXISTS ${prefix}/bin/${tool})
+            message(FATAL_ERROR "cmake --install did not install ${tool}")
+        endif()
+        run(${prefix}/bin/${tool} --version)
+    endforeach()
+    if(NOT EXISTS ${prefix}/share/doc/crumple/scenarios.md)
+        message(FATAL_ERROR "cmake --install did not install the scenario schema (docs/scenarios.md)")
+    endif()
+    run(${prefix}/bin/crumple-crash ${prefix}/share/crumple/scenarios/pole_frontal_32kmh.json --no-pictures
+        --out ${SCRATCH_DIR}/pole)
+    run(${prefix}/bin/crumple-replay ${SCRATCH_DIR}/pole/replay.crumple --out ${SCRATCH_DIR}/pole-replay --no-meshes)
+endif()

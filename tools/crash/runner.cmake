@@ -29,6 +29,14 @@ endif()
 target_link_libraries(crumple_crash_run PUBLIC crumple::fem)
 add_executable(crumple-crash ${CMAKE_CURRENT_LIST_DIR}/src/CrashMain.cpp)
 target_link_libraries(crumple-crash PRIVATE crumple_crash_run crumple::compile_options)
+# cmake --install: the tool, its scenario schema and the shipped scenarios and presets (scenarios name their
+# presets by relative path, so both folders keep their layout under share/crumple).
+include(GNUInstallDirs)
+install(TARGETS crumple-crash RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+install(FILES ${PROJECT_SOURCE_DIR}/docs/scenarios.md ${PROJECT_SOURCE_DIR}/README.md
+        DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT tools)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/samples/scenarios ${PROJECT_SOURCE_DIR}/samples/presets
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/crumple COMPONENT tools)
 if(CRUMPLE_BUILD_TESTS)
     include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
     # The runner's private parts (the FEM barrier coupling), against known answers.
