@@ -21,6 +21,15 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${SCRATCH_DIR}/build -DCMAKE_B
 run(${CMAKE_COMMAND} --build ${SCRATCH_DIR}/build --config ${BUILD_TYPE})
 run(${SCRATCH_DIR}/build/consumer)
 
+# A Bullet-only game asks for the bullet component alone (when the package has it).
+if(EXISTS ${prefix}/include/crumple/bullet/BulletAdapter.h)
+    run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR}/../bullet_consumer -B ${SCRATCH_DIR}/bullet_build
+        -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}
+        "-DCMAKE_CXX_FLAGS=${CONSUMER_CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_LINKER_FLAGS}")
+    run(${CMAKE_COMMAND} --build ${SCRATCH_DIR}/bullet_build --config ${BUILD_TYPE})
+    run(${SCRATCH_DIR}/bullet_build/bullet_consumer)
+endif()
+
 # The installed tools (when this build has them): they run from the prefix alone, on an installed
 # scenario that needs no shared data (a box car), and the replay rebuilds its recording.
 if(EXISTS ${CRUMPLE_BINARY_DIR}/samples/crumple-crash)
