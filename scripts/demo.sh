@@ -12,14 +12,15 @@ crumple_ensure_packages
 crumple_build -DCRUMPLE_BUILD_TESTS=OFF -DCRUMPLE_BUILD_SAMPLES=ON
 out="${1:-$CRUMPLE_ROOT/demo-output}"
 bin="$CRUMPLE_BUILD_DIR/samples"
+crash="$CRUMPLE_BUILD_DIR/tools/crash/crumple-crash"
 mkdir -p "$out"
-if [ ! -x "$bin/crumple-racing-bullet" ] || [ ! -x "$bin/crumple-crash" ]; then
+if [ ! -x "$bin/crumple-racing-bullet" ] || [ ! -x "$crash" ]; then
     echo "crumple demo: the racing samples were not built (see the configure messages above)" >&2
     exit 1
 fi
 
 echo "== Crash test: the shipped Toy Car, full frontal into a rigid barrier at 56 km/h"
-"$bin/crumple-crash" "$CRUMPLE_ROOT/samples/scenarios/frontal_rigid_barrier_56kmh.json" --out "$out/crash-frontal-56"
+"$crash" "$CRUMPLE_ROOT/samples/scenarios/frontal_rigid_barrier_56kmh.json" --out "$out/crash-frontal-56"
 "$bin/crumple-replay" "$out/crash-frontal-56/replay.crumple" --out "$out/crash-frontal-56/replay" > /dev/null
 if cmp -s "$out/crash-frontal-56/deformed.obj" "$out/crash-frontal-56/replay/object0.obj"; then
     echo "replayed crash mesh is byte-identical to the live one"

@@ -5,7 +5,7 @@
 // deformed meshes as OBJ plus a summary. Exit 0 on success, 2 on bad input (nothing written).
 #include "ObjWriter.h"
 #include "WallCrashScene.h"
-#include "WorldFixture.h"
+#include "MeshHash.h"
 
 #include <crumple/base/Version.h>
 #include <crumple/plugin/DamageRecorder.h>

@@ -3,7 +3,7 @@
 // crumple-replay: replays a recorded damage file headless, with no physics engine linked, and writes the
 // deformed meshes. Exit 0 on success, 2 on a bad file or arguments (nothing is written then).
 #include "ObjWriter.h"
-#include "WorldFixture.h"
+#include "MeshHash.h"
 
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/base/FileBytes.h>

@@ -55,13 +55,4 @@ ContactEvent WorldFixture::FrontContact(double inY, double inZ, double inTime, d
     return contact;
 }
 
-std::uint64_t HashPositions(const std::vector<Vec3>& inPositions)
-{
-    std::uint64_t hash = 1469598103934665603ull;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(inPositions.data());
-    for (std::size_t i = 0; i < inPositions.size() * sizeof(Vec3); ++i)
-        hash = (hash ^ bytes[i]) * 1099511628211ull;
-    return hash;
-}
-
 } // namespace crumple::common

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "MeshHash.h"
+
 #include <crumple/plugin/DamageWorld.h>
 
 #include <memory>
@@ -36,7 +38,5 @@ public:
     double mMass = 1200.0;
 };
 
-/// FNV-1a hash of the bytes of a vector of Vec3, to compare and print meshes.
-std::uint64_t HashPositions(const std::vector<Vec3>& inPositions);
 
 } // namespace crumple::common

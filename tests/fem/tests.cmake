@@ -9,7 +9,7 @@ foreach(part IN ITEMS tet fracture edges io hex)
     list(APPEND CRUMPLE_FEM_TESTS ${CRUMPLE_FEM_${upper}_TESTS})
 endforeach()
 if(CRUMPLE_FEM_TESTS)
-    crumple_add_test(fem ${CRUMPLE_FEM_TESTS} LINK crumple::fem crumple_common_fem)
+    crumple_add_test(fem ${CRUMPLE_FEM_TESTS} LINK crumple::fem crumple_scenes_fem)
     # White-box tests of the solver's private kernels (STYLE rule 19: the test links the static target).
     target_include_directories(test_fem PRIVATE ${PROJECT_SOURCE_DIR}/fem/src)
 endif()

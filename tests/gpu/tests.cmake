@@ -6,4 +6,4 @@ crumple_add_test(gpu
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
     gpu/GpuTetSolverTest.cpp
-    LINK crumple::gpu crumple_common_fem)
+    LINK crumple::gpu crumple_scenes_fem)

@@ -10,7 +10,7 @@ crumple_add_test(props
     props/PropBodyTest.cpp
     props/PropRecordingTest.cpp
     props/PropWorldTest.cpp
-    LINK crumple::props crumple_common_fem)
+    LINK crumple::props crumple_scenes_fem)
 if(TARGET crumple_gpu)
     target_compile_definitions(test_props PRIVATE CRUMPLE_TEST_PROPS_WITH_GPU)
 endif()

@@ -1,12 +1,12 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
-# The crash runner and the crumple-crash program (included from samples/CMakeLists.txt, which has the car-mesh
-# loader and painter; paths relative to this file).
+# The crash runner and the crumple-crash program, built from library targets only: the scene builders of
+# scenes/ (engine scenes, car-mesh loader, painter) and crumple::fem (paths relative to this file).
 if(NOT TARGET crumple_crash_scenario)
     return()
 endif()
 find_package(nlohmann_json 3 QUIET) # imported targets are per directory
-if(NOT TARGET crumple_samples_common OR NOT TARGET crumple_fem OR NOT (TARGET crumple_common_bullet OR TARGET crumple_common_ode))
+if(NOT TARGET crumple_scenes_pictures OR NOT TARGET crumple_fem OR NOT (TARGET crumple_scenes_bullet OR TARGET crumple_scenes_ode))
     message(STATUS "crumple: crumple-crash not built: it needs assimp, crumple::render, crumple::fem and Bullet or ODE")
     return()
 endif()
@@ -16,14 +16,14 @@ add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.c
     ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistoryPlots.cpp)
-target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_samples_common
+target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_scenes_pictures
     PRIVATE nlohmann_json::nlohmann_json crumple::compile_options)
-if(TARGET crumple_common_bullet)
-    target_link_libraries(crumple_crash_run PUBLIC crumple_common_bullet)
+if(TARGET crumple_scenes_bullet)
+    target_link_libraries(crumple_crash_run PUBLIC crumple_scenes_bullet)
     target_compile_definitions(crumple_crash_run PRIVATE CRUMPLE_CRASH_BULLET)
 endif()
-if(TARGET crumple_common_ode)
-    target_link_libraries(crumple_crash_run PUBLIC crumple_common_ode)
+if(TARGET crumple_scenes_ode)
+    target_link_libraries(crumple_crash_run PUBLIC crumple_scenes_ode)
     target_compile_definitions(crumple_crash_run PRIVATE CRUMPLE_CRASH_ODE)
 endif()
 target_link_libraries(crumple_crash_run PUBLIC crumple::fem)
@@ -38,7 +38,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/docs/scenarios.md ${PROJECT_SOURCE_DIR}/READ
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/samples/scenarios ${PROJECT_SOURCE_DIR}/samples/presets
         DESTINATION ${CMAKE_INSTALL_DATADIR}/crumple COMPONENT tools)
 if(CRUMPLE_BUILD_TESTS)
-    include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
+    if(CRUMPLE_BUILD_SAMPLES) # the command-line checks replay each run with crumple-replay (samples/)
+        include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
+    endif()
     # The runner's private parts (the FEM barrier coupling), against known answers.
     find_package(Catch2 REQUIRED) # imported targets are per directory
     include(Catch)
