@@ -13,6 +13,7 @@ crumple_build -DCRUMPLE_BUILD_TESTS=OFF -DCRUMPLE_BUILD_SAMPLES=ON
 out="${1:-$CRUMPLE_ROOT/demo-output}"
 bin="$CRUMPLE_BUILD_DIR/samples"
 crash="$CRUMPLE_BUILD_DIR/tools/crash/crumple-crash"
+replay="$CRUMPLE_BUILD_DIR/tools/replay/crumple-replay"
 mkdir -p "$out"
 if [ ! -x "$bin/crumple-racing-bullet" ] || [ ! -x "$crash" ]; then
     echo "crumple demo: the racing samples were not built (see the configure messages above)" >&2
@@ -21,7 +22,7 @@ fi
 
 echo "== Crash test: the shipped Toy Car, full frontal into a rigid barrier at 56 km/h"
 "$crash" "$CRUMPLE_ROOT/samples/scenarios/frontal_rigid_barrier_56kmh.json" --out "$out/crash-frontal-56"
-"$bin/crumple-replay" "$out/crash-frontal-56/replay.crumple" --out "$out/crash-frontal-56/replay" > /dev/null
+"$replay" "$out/crash-frontal-56/replay.crumple" --out "$out/crash-frontal-56/replay" > /dev/null
 if cmp -s "$out/crash-frontal-56/deformed.obj" "$out/crash-frontal-56/replay/object0.obj"; then
     echo "replayed crash mesh is byte-identical to the live one"
 else
@@ -36,7 +37,7 @@ if [ -x "$bin/crumple-racing-ode" ]; then
     "$bin/crumple-racing-ode" --out "$out/racing-ode"
 fi
 echo; echo "== Headless replay of the Bullet recording (no physics engine)"
-"$bin/crumple-replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
+"$replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
 if cmp -s "$out/racing-bullet/car.obj" "$out/replay/object0.obj"; then
     echo "replayed car mesh is byte-identical to the live one"
 else

@@ -32,7 +32,7 @@ endif()
 
 # The installed tools (when this build has them): they run from the prefix alone, on an installed
 # scenario that needs no shared data (a box car), and the replay rebuilds its recording.
-if(EXISTS ${CRUMPLE_BINARY_DIR}/tools/crash/crumple-crash AND EXISTS ${CRUMPLE_BINARY_DIR}/samples/crumple-replay)
+if(EXISTS ${CRUMPLE_BINARY_DIR}/tools/crash/crumple-crash AND EXISTS ${CRUMPLE_BINARY_DIR}/tools/replay/crumple-replay)
     foreach(tool crumple-crash crumple-replay)
         if(NOT EXISTS ${prefix}/bin/${tool})
             message(FATAL_ERROR "cmake --install did not install ${tool}")

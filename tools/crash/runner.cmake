@@ -38,7 +38,7 @@ install(FILES ${PROJECT_SOURCE_DIR}/docs/scenarios.md ${PROJECT_SOURCE_DIR}/READ
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/samples/scenarios ${PROJECT_SOURCE_DIR}/samples/presets
         DESTINATION ${CMAKE_INSTALL_DATADIR}/crumple COMPONENT tools)
 if(CRUMPLE_BUILD_TESTS)
-    if(CRUMPLE_BUILD_SAMPLES) # the command-line checks replay each run with crumple-replay (samples/)
+    if(TARGET crumple-replay) # the command-line checks replay each run with crumple-replay (tools/replay)
         include(${PROJECT_SOURCE_DIR}/tests/crash/cli.cmake)
     endif()
     # The runner's private parts (the FEM barrier coupling), against known answers.
