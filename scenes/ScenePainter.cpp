@@ -50,12 +50,7 @@ Status ScenePainter::SetScalarMax(double inScalarMax)
 
 double DentColorScale(double inDeepest)
 {
-    const double deepest = std::isfinite(inDeepest) ? std::max(inDeepest, 0.01) : 0.01;
-    const double decade = std::pow(10.0, std::floor(std::log10(deepest)));
-    for (double step : {1.0, 2.0, 2.5, 5.0, 10.0})
-        if (deepest <= step * decade * (1.0 + 1.0e-12))
-            return step * decade;
-    return 10.0 * decade;
+    return RoundUpToNiceNumber(std::isfinite(inDeepest) ? std::max(inDeepest, 0.01) : 0.01);
 }
 
 void ScenePainter::Clear()

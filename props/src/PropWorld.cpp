@@ -210,34 +210,46 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     return loose;
 }
 
-Result<std::vector<std::vector<Vec3>>> PropWorld::GetCollisionPieces(PropId inProp, double inCellSize) const
+std::vector<std::vector<Vec3>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
 {
-    if (inProp.mValue >= mProps.size())
-        return MakeError(EError::OutOfRange, "PropWorld::GetCollisionPieces: no prop " + std::to_string(inProp.mValue));
-    if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
-        return MakeError(EError::InvalidArgument, "PropWorld::GetCollisionPieces: the cell size must be finite and > 0 m");
-    const Prop& prop = mProps[inProp.mValue];
-    std::vector<Vec3> positions;
-    prop.mProp.ReadPositions(positions);
-    const std::vector<fem::TetIndices>& elements = prop.mProp.GetElementNodes();
+    const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
     // An element of a piece handed over has all its nodes taken: its first one tells.
     std::vector<std::uint8_t> left_out(elements.size(), 0);
     for (std::size_t element = 0; element < elements.size(); ++element)
     {
         const auto node = static_cast<std::size_t>(elements[element][0]);
-        left_out[element] = node < prop.mTaken.size() ? prop.mTaken[node] : 0;
+        left_out[element] = node < inProp.mTaken.size() ? inProp.mTaken[node] : 0;
     }
-    return PropCollisionPieces(positions, elements, left_out, inCellSize);
+    return PropCollisionPieces(inPositions, elements, left_out, inCellSize);
+}
+
+Status PropWorld::ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const
+{
+    if (inProp.mValue >= mProps.size())
+        return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": no prop " + std::to_string(inProp.mValue));
+    if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
+        return MakeError(EError::InvalidArgument, std::string("PropWorld::") + inWhat + ": the cell size must be finite and > 0 m");
+    return Status::Ok();
+}
+
+Result<std::vector<std::vector<Vec3>>> PropWorld::GetCollisionPieces(PropId inProp, double inCellSize) const
+{
+    if (Status valid = ValidateShapeQuery(inProp, inCellSize, "GetCollisionPieces"); !valid)
+        return valid.GetError();
+    const Prop& prop = mProps[inProp.mValue];
+    std::vector<Vec3> positions;
+    prop.mProp.ReadPositions(positions);
+    return PiecesOf(prop, positions, inCellSize);
 }
 
 Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShape(PropId inProp, double inCellSize,
                                                                                  double inTolerance)
 {
+    if (Status valid = ValidateShapeQuery(inProp, inCellSize, "TakeChangedShape"); !valid)
+        return valid.GetError();
     if (!std::isfinite(inTolerance) || !(inTolerance >= 0.0))
         return MakeError(EError::InvalidArgument, "PropWorld::TakeChangedShape: the tolerance must be finite and >= 0 m");
-    Result<std::vector<std::vector<Vec3>>> pieces = GetCollisionPieces(inProp, inCellSize);
-    if (pieces.HasError())
-        return pieces.GetError();
+    // intent: the positions read once; the pieces built only when the shape changed (called every step)
     Prop& prop = mProps[inProp.mValue];
     std::vector<Vec3> positions;
     prop.mProp.ReadPositions(positions);
@@ -246,9 +258,10 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
         changed = (positions[node] - prop.mShapePositions[node]).squaredNorm() > inTolerance * inTolerance;
     if (!changed)
         return std::optional<std::vector<std::vector<Vec3>>>();
+    std::vector<std::vector<Vec3>> pieces = PiecesOf(prop, positions, inCellSize);
     prop.mShapeRevision = prop.mPiecesTaken;
     prop.mShapePositions = std::move(positions);
-    return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces).Get());
+    return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces));
 }
 
 void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)

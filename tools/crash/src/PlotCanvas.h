@@ -155,12 +155,7 @@ struct CrushSpeedChart
 /// The grid step for a range shown in about inDivisions parts: 1, 2, 2.5 or 5 times a power of ten.
 inline double NiceStep(double inRange, int inDivisions)
 {
-    const double raw = std::max(inRange, 1e-12) / inDivisions;
-    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double step : {1.0, 2.0, 2.5, 5.0})
-        if (raw <= step * decade * (1.0 + 1e-9))
-            return step * decade;
-    return 10.0 * decade;
+    return RoundUpToNiceNumber(std::max(inRange, 1e-12) / inDivisions);
 }
 
 /// A line chart of quantities against time on an 800 x 400 canvas: x from mX0 to mX1, y from mY0 to mY1

@@ -44,4 +44,15 @@ inline bool IsRotation(const Mat3& inRotation, double inTolerance = 1.0e-9)
            std::abs(inRotation.determinant() - 1.0) < inTolerance;
 }
 
+/// The smallest of 1, 2, 2.5 and 5 times a power of ten that is at least inValue (> 0, finite; to within
+/// 1e-9 relative, so a value already round stays): round scale tops and grid steps for pictures and plots.
+inline double RoundUpToNiceNumber(double inValue)
+{
+    const double decade = std::pow(10.0, std::floor(std::log10(inValue)));
+    for (double step : {1.0, 2.0, 2.5, 5.0})
+        if (inValue <= step * decade * (1.0 + 1.0e-9))
+            return step * decade;
+    return 10.0 * decade;
+}
+
 } // namespace crumple

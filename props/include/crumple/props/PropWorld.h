@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace crumple::props
@@ -143,6 +144,9 @@ private:
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
+    // GetCollisionPieces of inProp at inPositions.
+    static std::vector<std::vector<Vec3>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
+    Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;
 
     plugin::DamageWorld* mWorld = nullptr;
     plugin::DamageRecorder* mRecorder = nullptr;
