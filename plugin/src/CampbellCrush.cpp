@@ -249,9 +249,12 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // a spacing times the compaction slope (2.8 cm at 56 km/h on a 0.15 m lattice). The outermost spacing is
     // therefore pressed flat against the impactor and the compaction starts behind it.
     plan.mFlatLayer = spacing;
-    // The pocket's walls slope no steeper than 2:1 (a wall moving the surface by C fades over C / 2), and the
-    // fade spans at least two control spacings: a steeper shear tears the lattice's coarse triangles over.
-    plan.mRamp = std::max(2.0 * spacing, 0.5 * depth);
+    // The pocket's walls: where the compaction (to f of a length) meets the fade's shear k = C / ramp, a surface
+    // whose normal makes the angle t with the crush keeps facing out (its normal within 90 degrees of where it
+    // was) iff cos^2 t / f - k sin t cos t / f + sin^2 t > 0 for every t, that is iff k < 2 sqrt(f). The walls
+    // therefore slope at most 2 sqrt(f) : 1 (1:1 at the default quarter; the 2:1 walls before turned the box
+    // car's pocket walls over at 64 km/h), and the fade spans at least two control spacings.
+    plan.mRamp = std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01))));
     return plan;
 }
 

@@ -73,91 +73,101 @@ const Run& Find(const std::string& inBody, const std::string& inTarget, double i
 
 } // namespace
 
-TEST_CASE("Crush model: the same crash crushes the same in Bullet and ODE, within 5 %", "[crash][slow]")
+// One test case per verdict, its checks as sections: the 128 crashes run once per process (about a minute
+// on this project's machine with the re-cut meshes), not once per check.
+TEST_CASE("Crush model: engines agree, crush grows with speed and width, the rear and the outside stay, Campbell's band", "[crash][slow]")
 {
-    for (const NamedVehicle& body : ShippedCars())
-        for (const auto& [target, spec] : Targets())
-            for (double km_h : cSpeedsKmh)
-            {
-                const double bullet = Find(body.mName, target, km_h, EEngine::Bullet).mFront;
-                const double ode = Find(body.mName, target, km_h, EEngine::Ode).mFront;
-                INFO(body.mName << ", " << target << ", " << km_h << " km/h: Bullet " << bullet << " m, ODE " << ode << " m");
-                CHECK(std::abs(bullet - ode) <= 0.05 * std::max(bullet, ode));
-            }
-}
-
-TEST_CASE("Crush model: front crush grows with speed in both engines", "[crash][slow]")
-{
-    for (const NamedVehicle& body : ShippedCars())
-        for (const auto& [target, spec] : Targets())
-            for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
-                for (std::size_t i = 1; i < cSpeedsKmh.size(); ++i)
+    SECTION("the same crash crushes the same in Bullet and ODE, within 5 %")
+    {
+        for (const NamedVehicle& body : ShippedCars())
+            for (const auto& [target, spec] : Targets())
+                for (double km_h : cSpeedsKmh)
                 {
-                    const double slower = Find(body.mName, target, cSpeedsKmh[i - 1], engine).mFront;
-                    const double faster = Find(body.mName, target, cSpeedsKmh[i], engine).mFront;
-                    INFO(body.mName << ", " << target << ", " << ToString(engine) << ": " << cSpeedsKmh[i - 1] << " km/h "
-                                    << slower << " m, " << cSpeedsKmh[i] << " km/h " << faster << " m");
-                    CHECK(faster > slower);
+                    const double bullet = Find(body.mName, target, km_h, EEngine::Bullet).mFront;
+                    const double ode = Find(body.mName, target, km_h, EEngine::Ode).mFront;
+                    INFO(body.mName << ", " << target << ", " << km_h << " km/h: Bullet " << bullet << " m, ODE " << ode << " m");
+                    CHECK(std::abs(bullet - ode) <= 0.05 * std::max(bullet, ode));
                 }
-}
+    }
 
-TEST_CASE("Crush model: a pole crushes deeper than a full wall at the same speed", "[crash][slow]")
-{
-    for (const NamedVehicle& body : ShippedCars())
-        for (double km_h : cSpeedsKmh)
+    SECTION("front crush grows with speed in both engines")
+    {
+        for (const NamedVehicle& body : ShippedCars())
+            for (const auto& [target, spec] : Targets())
+                for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+                    for (std::size_t i = 1; i < cSpeedsKmh.size(); ++i)
+                    {
+                        const double slower = Find(body.mName, target, cSpeedsKmh[i - 1], engine).mFront;
+                        const double faster = Find(body.mName, target, cSpeedsKmh[i], engine).mFront;
+                        INFO(body.mName << ", " << target << ", " << ToString(engine) << ": " << cSpeedsKmh[i - 1] << " km/h "
+                                        << slower << " m, " << cSpeedsKmh[i] << " km/h " << faster << " m");
+                        CHECK(faster > slower);
+                    }
+    }
+
+    SECTION("a pole crushes deeper than a full wall at the same speed")
+    {
+        for (const NamedVehicle& body : ShippedCars())
+            for (double km_h : cSpeedsKmh)
+                for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+                {
+                    const double wall = Find(body.mName, "full wall", km_h, engine).mFront;
+                    const double pole = Find(body.mName, "pole", km_h, engine).mFront;
+                    INFO(body.mName << ", " << km_h << " km/h, " << ToString(engine) << ": wall " << wall << " m, pole " << pole << " m");
+                    CHECK(pole > 1.2 * wall);
+                }
+    }
+
+    SECTION("the rear never moves and no vertex moves out against the crush by more than 1 cm")
+    {
+        for (const auto& [name, run] : Runs())
+        {
+            INFO(name << ": rear " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] << " m, outward "
+                      << run.mOutcome.mOutwardDisplacement << " m, front " << run.mFront << " m");
+            CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] <= 0.02 * run.mFront);
+            CHECK(run.mOutcome.mOutwardDisplacement <= 0.01);
+        }
+    }
+
+    SECTION("a 56 km/h full-width hit crushes inside Campbell's band")
+    {
+        // shared/data/crash/campbell_oracle.csv: 0.369-0.742 m at 56 km/h for every class (the default
+        // material is the mid-size class; the bodies' masses and widths differ from it).
+        for (const NamedVehicle& body : ShippedCars())
             for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
             {
-                const double wall = Find(body.mName, "full wall", km_h, engine).mFront;
-                const double pole = Find(body.mName, "pole", km_h, engine).mFront;
-                INFO(body.mName << ", " << km_h << " km/h, " << ToString(engine) << ": wall " << wall << " m, pole " << pole << " m");
-                CHECK(pole > 1.2 * wall);
+                const Run& run = Find(body.mName, "full wall", 56.0, engine);
+                INFO(body.mName << ", " << ToString(engine) << ": front " << run.mFront << " m, CRASH3 average "
+                                << run.mOutcome.mFrontProfile.Average() << " m");
+                CHECK(run.mFront >= 0.369);
+                CHECK(run.mFront <= 0.742);
             }
-}
-
-TEST_CASE("Crush model: the rear never moves and no vertex moves out against the crush by more than 1 cm", "[crash][slow]")
-{
-    for (const auto& [name, run] : Runs())
-    {
-        INFO(name << ": rear " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] << " m, outward "
-                  << run.mOutcome.mOutwardDisplacement << " m, front " << run.mFront << " m");
-        CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Rear)] <= 0.02 * run.mFront);
-        CHECK(run.mOutcome.mOutwardDisplacement <= 0.01);
     }
 }
 
-TEST_CASE("Crush model: a 56 km/h full-width hit crushes inside Campbell's band", "[crash][slow]")
+TEST_CASE("Crush model: the roof stays and no triangle turns over", "[crash][slow][!mayfail]")
 {
-    // shared/data/crash/campbell_oracle.csv: 0.369-0.742 m at 56 km/h for every class (the default
-    // material is the mid-size class; the bodies' masses and widths differ from it).
-    for (const NamedVehicle& body : ShippedCars())
-        for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
+    SECTION("the roof moves less than 2 % of the front crush")
+    {
+        // Known to fail: a crush of C compacts the 1.33 C behind the impactor (mCrushedLengthFraction 0.25), so a
+        // crush deeper than about 0.7 m (narrow hits at 56-64 km/h, the box car's from 40) reaches the front of
+        // the roof zone (the top fifth behind the front quarter) of every body: the cabin is not modelled stiffer.
+        for (const auto& [name, run] : Runs())
         {
-            const Run& run = Find(body.mName, "full wall", 56.0, engine);
-            INFO(body.mName << ", " << ToString(engine) << ": front " << run.mFront << " m, CRASH3 average "
-                            << run.mOutcome.mFrontProfile.Average() << " m");
-            CHECK(run.mFront >= 0.369);
-            CHECK(run.mFront <= 0.742);
+            INFO(name << ": roof " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] << " m, front " << run.mFront << " m");
+            CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] <= 0.02 * run.mFront);
         }
-}
-
-TEST_CASE("Crush model: the roof moves less than 2 % of the front crush", "[crash][slow][!mayfail]")
-{
-    // Known to fail: a crush deeper than about 0.7 m (narrow hits past 40 km/h) compacts a zone that reaches
-    // the front of the roof zone (the top fifth behind the front quarter) of the box car and the Toy Car.
-    for (const auto& [name, run] : Runs())
-    {
-        INFO(name << ": roof " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] << " m, front " << run.mFront << " m");
-        CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] <= 0.02 * run.mFront);
     }
-}
 
-TEST_CASE("Crush model: no triangle turns over", "[crash][slow][!mayfail]")
-{
-    // Known to fail on the Toy Car (thin trims and lights) at the walls of pole and offset pockets, and at
-    // the leading corner of the 30-degree wall: 100-420 of its 88,837 triangles.
-    for (const auto& [name, run] : Runs())
+    SECTION("no triangle turns over")
     {
-        INFO(name << ": " << run.mOutcome.mFoldedTriangles << " triangles turned over");
-        CHECK(run.mOutcome.mFoldedTriangles == 0);
+        // Known to fail on the Toy Car's front lip, bevel strips a fraction of a millimetre wide that no affordable
+        // edge length follows (hundreds of its 265,817 re-cut triangles in pole, offset and 30-degree hits), and
+        // on 1-2 triangles of the hatchback in pole hits. The truck's and the box car's are clean.
+        for (const auto& [name, run] : Runs())
+        {
+            INFO(name << ": " << run.mOutcome.mFoldedTriangles << " triangles turned over");
+            CHECK(run.mOutcome.mFoldedTriangles == 0);
+        }
     }
 }

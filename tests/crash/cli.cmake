@@ -12,10 +12,8 @@ file(GLOB crash_examples CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/samples/scenari
 # exits 1 for its users.
 #  - angled_wall_30deg_ode: Crumple's Baraff impulse is frictionless (D4MD), and against a 30-degree wall with
 #    friction 0.5 ODE's normal impulse is 7 % larger (the friction's torque changes the normal closing speed).
-#  - offset_wall_40pct_64kmh: the Toy Car's crush pocket folds 15 vertices over at its walls (issue 11).
 set(crash_known_insane
-    "angled_wall_30deg_ode|FAIL sanity impulse_momentum"
-    "offset_wall_40pct_64kmh|FAIL sanity no_folded_vertices")
+    "angled_wall_30deg_ode|FAIL sanity impulse_momentum")
 foreach(example IN LISTS crash_examples)
     get_filename_component(name ${example} NAME_WE)
     set(expect_exit 0)

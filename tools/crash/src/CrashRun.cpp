@@ -9,6 +9,8 @@
 #include <crumple/crash/TimeHistory.h>
 
 #include <crumple/ffd/BoundingBox.h>
+#include <crumple/ffd/FlipFlatEdges.h>
+#include <crumple/ffd/RefineLongEdges.h>
 #include <crumple/plugin/DamageRecorder.h>
 
 #if defined(CRUMPLE_CRASH_BULLET)
@@ -129,6 +131,17 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             if (inOptions.mStrictMesh)
                 return MakeError(EError::InvalidArgument, text + "; refused by --strict");
             outWarnings.push_back(text);
+        }
+        if (vehicle.mMeshMaxEdge > 0.0)
+        {
+            if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
+                return flipped.GetError();
+            Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(loaded.Get(), vehicle.mMeshMaxEdge);
+            if (refined.HasError())
+                return refined.GetError();
+            loaded.Get() = std::move(refined.Get().mMesh);
+            if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
+                return flipped.GetError();
         }
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);

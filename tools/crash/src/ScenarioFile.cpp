@@ -453,7 +453,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
-                         "box_size_m", "mass_kg", "inertia_kg_m2",
+                         "mesh_max_edge_m",                          "box_size_m", "mass_kg", "inertia_kg_m2",
                          "inertia_from", "control_count", "control_spacing_m", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
@@ -510,6 +510,8 @@ class ScenarioReader
         if (!ReadNumber(inVehicle, inPointer, "mesh_unit_m", NumberRange::Positive(), false, ioVehicle.mMeshUnit) ||
             !ReadNumber(inVehicle, inPointer, "mesh_length_m", NumberRange::Positive(), false,
                         ioVehicle.mMeshLength) ||
+            !ReadNumber(inVehicle, inPointer, "mesh_max_edge_m", NumberRange::NonNegative(), false,
+                        ioVehicle.mMeshMaxEdge) ||
             !ReadVec3(inVehicle, inPointer, "box_size_m", NumberRange::Positive(), ioVehicle.mBoxSize) ||
             !ReadNumber(inVehicle, inPointer, "mass_kg", NumberRange::Positive(), true, ioVehicle.mMass))
             return false;

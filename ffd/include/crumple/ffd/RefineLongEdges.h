@@ -1,0 +1,45 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/ffd/TriangleMesh.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace crumple::ffd
+{
+
+/// A mesh with its long edges split, and where each added vertex came from.
+struct RefinedMesh
+{
+    TriangleMesh mMesh; ///< The input's vertices first, in their order, then the added ones; its triangles
+    /// #added by 2: added vertex mMesh.mPositions.size() - mMidpointParents.size() + k is the midpoint of
+    /// vertices mMidpointParents[k] (either may itself be an added vertex of a lower index). A game carries its
+    /// own vertex attributes (texture coordinates, colours, bone weights) over with the same midpoints.
+    std::vector<std::array<std::uint32_t, 2>> mMidpointParents;
+};
+
+/// Splits every edge longer than inMaxEdge at its midpoint until none is, keeping the mesh conforming (an
+/// edge is split for every triangle that uses it, so a closed mesh stays closed), each triangle's orientation,
+/// its plane and the total area.
+///
+/// Why: a dent is a smooth field sampled at the vertices, and a triangle shows it as the plane through its
+/// three samples. A long thin triangle (a bumper strip 1.3 m wide and 6 cm deep) cannot follow a pole's pocket
+/// that varies across it: its vertices move farther apart than the triangle is deep and it turns over although
+/// the field folds nothing. Edges shorter than about a third of the lattice's control spacing follow the
+/// field closely enough (crumple-crash's default, mesh_max_edge_m).
+///
+/// A triangle with one long edge becomes two, with two becomes three (the quad left over is cut along its
+/// shorter diagonal), with three becomes four; passes repeat until no edge is longer. The result depends only
+/// on the input (vertices are added in triangle order).
+///
+/// @param[in] inMesh        the mesh; ValidateTriangleMesh must accept it
+/// @param[in] inMaxEdge     longest edge wanted (m), finite and > 0
+/// @param[in] inMaxTriangles refuse (and return an error) rather than grow past this many triangles
+/// @return the refined mesh, or an error for bad input or too many triangles (nothing is half-made)
+Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles = 4'000'000);
+
+} // namespace crumple::ffd

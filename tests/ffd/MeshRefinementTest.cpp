@@ -1,0 +1,270 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// RefineLongEdges and FlipFlatEdges: the surface stays the same, the triangles get short and well shaped,
+// and a smooth dent that turns a bumper's slivers over leaves the refined triangles of the same face alone.
+#include <crumple/ffd/FlipFlatEdges.h>
+#include <crumple/ffd/RefineLongEdges.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <utility>
+
+using namespace crumple;
+using namespace crumple::ffd;
+
+namespace
+{
+
+Vec3 AreaVector(const TriangleMesh& inMesh, const std::array<std::uint32_t, 3>& inTriangle)
+{
+    const Vec3& a = inMesh.mPositions[inTriangle[0]];
+    return 0.5 * (inMesh.mPositions[inTriangle[1]] - a).cross(inMesh.mPositions[inTriangle[2]] - a);
+}
+
+double TotalArea(const TriangleMesh& inMesh)
+{
+    double area = 0.0;
+    for (const auto& t : inMesh.mTriangles)
+        area += AreaVector(inMesh, t).norm();
+    return area;
+}
+
+double LongestEdge(const TriangleMesh& inMesh)
+{
+    double longest = 0.0;
+    for (const auto& t : inMesh.mTriangles)
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, (inMesh.mPositions[t[k]] - inMesh.mPositions[t[(k + 1) % 3]]).norm());
+    return longest;
+}
+
+// Every directed edge once, and its reverse once: a closed, consistently oriented, manifold surface.
+bool IsClosedManifold(const TriangleMesh& inMesh)
+{
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (const auto& t : inMesh.mTriangles)
+        for (int k = 0; k < 3; ++k)
+            ++directed[{t[k], t[(k + 1) % 3]}];
+    for (const auto& [edge, count] : directed)
+        if (count != 1 || directed.count({edge.second, edge.first}) != 1 || directed.at({edge.second, edge.first}) != 1)
+            return false;
+    return true;
+}
+
+// A closed cube of side 2 m about the origin, two triangles per face, counter-clockwise from outside.
+TriangleMesh Cube()
+{
+    TriangleMesh mesh;
+    for (int i = 0; i < 8; ++i)
+        mesh.mPositions.emplace_back((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
+    mesh.mTriangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                       {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return mesh;
+}
+
+// A bumper's flat underside as exporters cut it: a strip 1.3 m wide whose front edge is curved (x from
+// 0.06 m at the middle to 0.01 m at the ends, 41 points) and whose straight back edge (x = 0) has only its
+// two corners, fanned from the back-left corner into slivers. Normal -z (seen from below).
+TriangleMesh BumperUnderside()
+{
+    TriangleMesh mesh;
+    mesh.mPositions.emplace_back(0.0, -0.65, 0.0); // 0: back left
+    mesh.mPositions.emplace_back(0.0, 0.65, 0.0);  // 1: back right
+    constexpr int cFront = 41;
+    for (int i = 0; i < cFront; ++i)
+    {
+        const double y = -0.65 + 1.3 * i / (cFront - 1);
+        mesh.mPositions.emplace_back(0.06 - 0.05 * (y / 0.65) * (y / 0.65), y, 0.0);
+    }
+    // intent: the fan from the back-left corner over the front edge, then the last triangle to the back right
+    for (std::uint32_t i = 2; i + 1 < 2 + cFront; ++i)
+        mesh.mTriangles.push_back({0, i + 1, i});
+    mesh.mTriangles.push_back({0, 1, 2 + cFront - 1});
+    return mesh;
+}
+
+// A pole's pocket pushed along -x: 0.27 m at y = 0, fading over 0.3 m (smooth, and folding nothing: x' = x -
+// w(y) keeps every horizontal surface's orientation).
+TriangleMesh Pocket(const TriangleMesh& inMesh)
+{
+    TriangleMesh dented = inMesh;
+    for (Vec3& p : dented.mPositions)
+        p.x() -= 0.27 * std::exp(-(p.y() / 0.3) * (p.y() / 0.3));
+    return dented;
+}
+
+int TurnedOver(const TriangleMesh& inRest, const TriangleMesh& inNow)
+{
+    int turned = 0;
+    for (const auto& t : inRest.mTriangles)
+        turned += AreaVector(inRest, t).dot(AreaVector(inNow, t)) < 0.0 ? 1 : 0;
+    return turned;
+}
+
+double SmallestAngle(const TriangleMesh& inMesh)
+{
+    double smallest = std::numbers::pi;
+    for (const auto& t : inMesh.mTriangles)
+        for (int k = 0; k < 3; ++k)
+        {
+            const Vec3 u = inMesh.mPositions[t[(k + 1) % 3]] - inMesh.mPositions[t[k]];
+            const Vec3 v = inMesh.mPositions[t[(k + 2) % 3]] - inMesh.mPositions[t[k]];
+            smallest = std::min(smallest, std::atan2(u.cross(v).norm(), u.dot(v)));
+        }
+    return smallest;
+}
+
+} // namespace
+
+TEST_CASE("RefineLongEdges: a closed cube stays closed, flat and of the same area, with no edge over the limit", "[ffd]")
+{
+    const TriangleMesh cube = Cube();
+    Result<RefinedMesh> refined = RefineLongEdges(cube, 0.3);
+    REQUIRE(refined);
+    const RefinedMesh& r = refined.Get();
+    CHECK(r.mMesh.mTriangles.size() > 12 * 16);
+    CHECK(LongestEdge(r.mMesh) <= 0.3);
+    CHECK(TotalArea(r.mMesh) == Approx(24.0).epsilon(1e-12));
+    CHECK(IsClosedManifold(r.mMesh));
+    // intent: every piece lies on its cube face and faces out as the face did
+    for (const auto& t : r.mMesh.mTriangles)
+    {
+        const Vec3 n = AreaVector(r.mMesh, t).normalized();
+        const Vec3 centre = (r.mMesh.mPositions[t[0]] + r.mMesh.mPositions[t[1]] + r.mMesh.mPositions[t[2]]) / 3.0;
+        Eigen::Index axis = 0;
+        n.cwiseAbs().maxCoeff(&axis);
+        CHECK(std::abs(n[axis]) == Approx(1.0).epsilon(1e-12));
+        CHECK(n[axis] * centre[axis] == Approx(1.0).epsilon(1e-12));
+    }
+    // intent: the input's vertices first, unchanged; each added one exactly its parents' midpoint
+    REQUIRE(r.mMesh.mPositions.size() == cube.mPositions.size() + r.mMidpointParents.size());
+    for (std::size_t v = 0; v < cube.mPositions.size(); ++v)
+        CHECK(r.mMesh.mPositions[v] == cube.mPositions[v]);
+    for (std::size_t k = 0; k < r.mMidpointParents.size(); ++k)
+    {
+        const auto [a, b] = r.mMidpointParents[k];
+        const std::size_t added = cube.mPositions.size() + k;
+        CHECK(a < added);
+        CHECK(b < added);
+        CHECK(r.mMesh.mPositions[added] == 0.5 * (r.mMesh.mPositions[a] + r.mMesh.mPositions[b]));
+    }
+    // intent: the same input, the same mesh, bit for bit
+    Result<RefinedMesh> again = RefineLongEdges(cube, 0.3);
+    REQUIRE(again);
+    CHECK(again.Get().mMesh.mPositions == r.mMesh.mPositions);
+    CHECK(again.Get().mMesh.mTriangles == r.mMesh.mTriangles);
+}
+
+TEST_CASE("RefineLongEdges: the two sides of a texture seam get the same midpoints, so no crack opens", "[ffd]")
+{
+    // Two triangles sharing the edge (0, 1) by position only: vertices 2 and 3 duplicate 0 and 1.
+    TriangleMesh mesh;
+    mesh.mPositions = {Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.3, 0.0), Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.3, 0.0),
+                       Vec3(0.4, 0.9, 0.0), Vec3(0.6, -0.7, 0.0)};
+    mesh.mTriangles = {{0, 1, 4}, {3, 2, 5}};
+    Result<RefinedMesh> refined = RefineLongEdges(mesh, 0.2);
+    REQUIRE(refined);
+    const TriangleMesh& r = refined.Get().mMesh;
+    // intent: every point on the seam (y = 0.3 x, 0 <= x <= 1) from one side has a bitwise twin from the other
+    std::vector<Vec3> left, right;
+    auto side = [](const Vec3& inPoint) { return inPoint.y() - 0.3 * inPoint.x(); };
+    for (const auto& t : r.mTriangles)
+    {
+        const Vec3 centre = (r.mPositions[t[0]] + r.mPositions[t[1]] + r.mPositions[t[2]]) / 3.0;
+        for (std::uint32_t v : t)
+            if (std::abs(side(r.mPositions[v])) < 1e-15)
+                (side(centre) > 0.0 ? left : right).push_back(r.mPositions[v]);
+    }
+    REQUIRE(left.size() > 4);
+    REQUIRE(right.size() > 4);
+    for (const Vec3& p : left)
+        CHECK(std::find(right.begin(), right.end(), p) != right.end());
+    CHECK(LongestEdge(r) <= 0.2);
+}
+
+TEST_CASE("RefineLongEdges: bad input is refused with a reason", "[ffd]")
+{
+    const TriangleMesh cube = Cube();
+    for (double bad : {0.0, -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+        Result<RefinedMesh> refined = RefineLongEdges(cube, bad);
+        REQUIRE(refined.HasError());
+        CHECK(refined.GetError().mMessage.find("longest edge") != std::string::npos);
+    }
+    CHECK(RefineLongEdges(TriangleMesh{}, 0.1).HasError());
+    Result<RefinedMesh> too_many = RefineLongEdges(cube, 0.001, 100'000);
+    REQUIRE(too_many.HasError());
+    CHECK(too_many.GetError().mMessage.find("100000 triangles") != std::string::npos);
+    // intent: a mesh already fine enough comes back as it was
+    Result<RefinedMesh> same = RefineLongEdges(cube, 10.0);
+    REQUIRE(same);
+    CHECK(same.Get().mMesh.mTriangles == cube.mTriangles);
+    CHECK(same.Get().mMidpointParents.empty());
+}
+
+TEST_CASE("FlipFlatEdges: a fan of slivers becomes Delaunay, the face and its outline unchanged", "[ffd]")
+{
+    const TriangleMesh fan = BumperUnderside();
+    TriangleMesh flipped = fan;
+    Result<std::size_t> flips = FlipFlatEdges(flipped);
+    REQUIRE(flips);
+    CHECK(flips.Get() > 10);
+    CHECK(flipped.mPositions == fan.mPositions);
+    CHECK(flipped.mTriangles.size() == fan.mTriangles.size());
+    CHECK(TotalArea(flipped) == Approx(TotalArea(fan)).epsilon(1e-12));
+    for (const auto& t : flipped.mTriangles)
+        CHECK(AreaVector(flipped, t).z() < 0.0);
+    // a Delaunay triangulation has the largest smallest angle of all (the strip is thin: it stays small)
+    CHECK(SmallestAngle(flipped) >= SmallestAngle(fan));
+    // intent: no edge left whose two facing angles add up to more than pi (the Delaunay property)
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
+    for (const auto& t : flipped.mTriangles)
+        for (int k = 0; k < 3; ++k)
+            opposite[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+    for (const auto& [edge, c] : opposite)
+        if (const auto other = opposite.find({edge.second, edge.first}); other != opposite.end())
+        {
+            auto angle = [&](std::uint32_t inApex) {
+                const Vec3 u = flipped.mPositions[edge.first] - flipped.mPositions[inApex];
+                const Vec3 v = flipped.mPositions[edge.second] - flipped.mPositions[inApex];
+                return std::atan2(u.cross(v).norm(), u.dot(v));
+            };
+            CHECK(angle(c) + angle(other->second) <= std::numbers::pi + 1e-9);
+        }
+}
+
+TEST_CASE("FlipFlatEdges: a fold between two planes is left alone; bad input changes nothing", "[ffd]")
+{
+    TriangleMesh roof;
+    roof.mPositions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.1, 0.3), Vec3(0.5, -0.1, 0.3)};
+    roof.mTriangles = {{0, 1, 2}, {1, 0, 3}};
+    TriangleMesh copy = roof;
+    Result<std::size_t> flips = FlipFlatEdges(copy);
+    REQUIRE(flips);
+    CHECK(flips.Get() == 0);
+    CHECK(copy.mTriangles == roof.mTriangles);
+    for (double bad : {0.0, -1.0, 1.5, std::numeric_limits<double>::quiet_NaN()})
+    {
+        REQUIRE(FlipFlatEdges(copy, bad).HasError());
+        CHECK(copy.mTriangles == roof.mTriangles);
+    }
+}
+
+TEST_CASE("A smooth pocket turns a bumper's slivers over, and none of the Delaunay, refined triangles", "[ffd]")
+{
+    const TriangleMesh fan = BumperUnderside();
+    // the premise: the exported fan folds under a field that folds nothing
+    CHECK(TurnedOver(fan, Pocket(fan)) > 0);
+    TriangleMesh better = fan;
+    REQUIRE(FlipFlatEdges(better));
+    Result<RefinedMesh> refined = RefineLongEdges(better, 0.1);
+    REQUIRE(refined);
+    better = refined.Get().mMesh;
+    REQUIRE(FlipFlatEdges(better));
+    CHECK(TotalArea(better) == Approx(TotalArea(fan)).epsilon(1e-12));
+    CHECK(TurnedOver(better, Pocket(better)) == 0);
+}
