@@ -118,6 +118,34 @@ add_test(NAME "crash: a sweep writes the same rows in 1 or 3 worker processes"
             -P ${CMAKE_CURRENT_LIST_DIR}/SweepWorkers.cmake)
 set_tests_properties("crash: a sweep writes the same rows in 1 or 3 worker processes" PROPERTIES LABELS crash)
 
+# Sweeps on Slurm: the emitted batch scripts run by bash as array tasks would be, and the same job submitted
+# to a single-node Slurm started in a scratch folder (skipped, saying why, where munged, slurmctld or slurmd
+# cannot start), each give sweep.csv and sweep.png byte for byte as the local sweep.
+find_program(CRUMPLE_BASH bash)
+if(CRUMPLE_BASH)
+    foreach(mode scripts cluster)
+        set(test_name "crash: a Slurm sweep (${mode}) writes the local sweep's csv and png byte for byte")
+        add_test(NAME "${test_name}"
+            COMMAND ${CRUMPLE_BASH} ${CMAKE_CURRENT_LIST_DIR}/SlurmSweep.sh $<TARGET_FILE:crumple-crash>
+                    ${PROJECT_SOURCE_DIR}/samples/scenarios/pole_frontal_32kmh.json ${crash_out}/slurm-${mode} ${mode})
+        set_tests_properties("${test_name}" PROPERTIES LABELS crash SKIP_RETURN_CODE 77 TIMEOUT 600)
+    endforeach()
+endif()
+foreach(entry "emit_without_sweep|--emit-slurm;@OUT@-job|each need --sweep"
+              "bad_slurm_time|--sweep;speeds_km_h=20;--emit-slurm;@OUT@-job;--slurm-time;soon|--slurm-time must be"
+              "task_past_the_end|--sweep;speeds_km_h=20;--sweep-task;1|starts past the sweep")
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 0 name)
+    list(GET parts -1 text)
+    list(REMOVE_AT parts 0 -1)
+    string(REPLACE "@OUT@" "${crash_out}/slurm-bad-${name}" args "${parts}")
+    add_test(NAME "crash: slurm ${name} exits 2 with its message"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash>
+                -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/pole_frontal_32kmh.json -DOUT=${crash_out}/slurm-bad-${name}
+                "-DARGS=${args}" -DEXPECT_EXIT=2 "-DEXPECT_TEXT=${text}" -P ${crash_script})
+    set_tests_properties("crash: slurm ${name} exits 2 with its message" PROPERTIES LABELS crash)
+endforeach()
+
 # The HTML report in headless Chromium (Debian's chromium): the screenshot shows the pictures.
 find_program(CRUMPLE_CHROMIUM NAMES chromium chromium-browser)
 if(CRUMPLE_CHROMIUM AND CRUMPLE_STB_INCLUDE_DIR)

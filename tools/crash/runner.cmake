@@ -12,6 +12,7 @@ if(NOT TARGET crumple_scenes_pictures OR NOT TARGET crumple_fem OR NOT (TARGET c
 endif()
 add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashRun.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashSweep.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/SlurmSweep.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp ${CMAKE_CURRENT_LIST_DIR}/src/FloatingBarrierCrash.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp

@@ -7,6 +7,7 @@
 #include <crumple/crash/Calibration.h>
 #include <crumple/crash/CrashReport.h>
 #include <crumple/crash/CrashSweep.h>
+#include <crumple/crash/SlurmSweep.h>
 #include <crumple/crash/SanityChecks.h>
 #include <crumple/crash/TimeHistory.h>
 #include <crumple/crash/ScenarioFile.h>
@@ -51,6 +52,12 @@ void PrintUsage(std::FILE* inStream)
                  "  --sweep \"speeds_km_h=20,40,60;angles_deg=0,30;offsets_m=0\" [--workers N]\n"
                  "      every combination as a case, in N worker processes (default 2): sweep.csv (one row per\n"
                  "      case, in case order whatever N) and sweep.png (front crush against speed)\n"
+                 "  --sweep SPEC --emit-slurm DIR [--cases-per-task N] [--slurm-time T] [--slurm-cpus C]\n"
+                 "          [--slurm-mem M] [--slurm-partition P]\n"
+                 "      the sweep as a Slurm job array for a cluster that shares DIR: DIR/submit.sh submits\n"
+                 "      sweep_array.sbatch (N cases per task, default 1; time T, default 00:30:00) and then\n"
+                 "      sweep_merge.sbatch, which writes DIR/sweep.csv and sweep.png byte for byte as a local\n"
+                 "      --sweep would (tasks run --sweep-task K --cases-per-task N, the merge --sweep-merge)\n"
                  "  --campbell-check --b0 B0 --b1 B1\n"
                  "      the same speeds with the scenario's material as it is: csv, plot, exit 0 within 10 %%\n"
                  "  --impulse-tolerance F\n"
@@ -127,6 +134,11 @@ int main(int argc, char** argv)
     double impulse_tolerance = std::numeric_limits<double>::quiet_NaN();
     std::string preset_name = "calibrated", source = "crumple-crash --calibrate", sweep;
     int workers = 2;
+    // Slurm: write the job (--emit-slurm), run one array task's cases (--sweep-task), or merge (--sweep-merge)
+    std::filesystem::path emit_slurm;
+    SlurmSweepSettings slurm;
+    long long sweep_task = -1;
+    bool sweep_merge = false;
     auto number = [](const char* inText, double& outValue)
     {
         char* end = nullptr;
@@ -183,6 +195,32 @@ int main(int argc, char** argv)
             }
             workers = static_cast<int>(value);
         }
+        else if (arg == "--emit-slurm" && i + 1 < argc)
+            emit_slurm = argv[++i];
+        else if ((arg == "--sweep-task" || arg == "--cases-per-task" || arg == "--slurm-cpus") && i + 1 < argc)
+        {
+            double value = 0.0;
+            const double low = arg == "--sweep-task" ? 0.0 : 1.0;
+            if (!number(argv[++i], value) || value < low || value > 1.0e9 || value != std::floor(value))
+            {
+                std::fprintf(stderr, "crumple-crash: %s needs an integer >= %g, got '%s'\n", arg.c_str(), low, argv[i]);
+                return cExitBadInput;
+            }
+            if (arg == "--sweep-task")
+                sweep_task = static_cast<long long>(value);
+            else if (arg == "--cases-per-task")
+                slurm.mCasesPerTask = static_cast<std::size_t>(value);
+            else
+                slurm.mCpusPerTask = static_cast<int>(std::min(value, 1.0e6));
+        }
+        else if (arg == "--sweep-merge")
+            sweep_merge = true;
+        else if (arg == "--slurm-time" && i + 1 < argc)
+            slurm.mTime = argv[++i];
+        else if (arg == "--slurm-mem" && i + 1 < argc)
+            slurm.mMemory = argv[++i];
+        else if (arg == "--slurm-partition" && i + 1 < argc)
+            slurm.mPartition = argv[++i];
         else if (arg == "--impulse-tolerance" && i + 1 < argc)
         {
             if (!number(argv[++i], impulse_tolerance) || !(impulse_tolerance > 0.0 && impulse_tolerance <= 1.0))
@@ -237,8 +275,59 @@ int main(int argc, char** argv)
             return cExitBadInput;
         }
     }
+    const int slurm_modes = (emit_slurm.empty() ? 0 : 1) + (sweep_task >= 0 ? 1 : 0) + (sweep_merge ? 1 : 0);
+    if (slurm_modes > 1 || (slurm_modes == 1 && sweep.empty()))
+    {
+        std::fprintf(stderr, "crumple-crash: --emit-slurm, --sweep-task and --sweep-merge each need --sweep, and one at a time\n");
+        return cExitBadInput;
+    }
+    if (!emit_slurm.empty())
+    {
+        std::error_code self_error;
+        slurm.mExecutable = std::filesystem::read_symlink("/proc/self/exe", self_error);
+        if (self_error)
+            slurm.mExecutable = std::filesystem::absolute(argv[0], self_error);
+        if (Status status = WriteSlurmSweep(scenario_path, sweep, sweep_spec.Get(), slurm, emit_slurm); status.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        std::printf("crumple-crash: %zu cases as a Slurm array of %zu tasks; submit with %s\n", sweep_spec.Get().GetCaseCount(),
+                    (sweep_spec.Get().GetCaseCount() + slurm.mCasesPerTask - 1) / slurm.mCasesPerTask,
+                    (emit_slurm / "submit.sh").string().c_str());
+        return cExitPass;
+    }
     if (out.empty())
         out = std::filesystem::path("crash-output") / scenario_path.stem();
+    if (sweep_task >= 0)
+    {
+        // One array task: its cases' rows, nothing else (the merge decides the verdict).
+        const std::size_t first = static_cast<std::size_t>(sweep_task) * slurm.mCasesPerTask;
+        if (first >= sweep_spec.Get().GetCaseCount())
+        {
+            std::fprintf(stderr, "crumple-crash: --sweep-task %lld starts past the sweep's %zu cases\n", sweep_task,
+                         sweep_spec.Get().GetCaseCount());
+            return cExitBadInput;
+        }
+        if (Status status = RunCrashSweepCases(scenario.Get(), sweep_spec.Get(), first, slurm.mCasesPerTask, out); status.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        return cExitPass;
+    }
+    if (sweep_merge)
+    {
+        Result<int> failed = MergeCrashSweep(scenario.Get(), sweep_spec.Get(), out, stdout);
+        if (failed.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", failed.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        std::printf("crumple-crash: %d of %zu cases failed; %s, %s\n", failed.Get(), sweep_spec.Get().GetCaseCount(),
+                    (out / "sweep.csv").string().c_str(), (out / "sweep.png").string().c_str());
+        return failed.Get() == 0 ? cExitPass : cExitFail;
+    }
     std::error_code error;
     const bool made_folder = !std::filesystem::exists(out, error);
     std::filesystem::create_directories(out, error);

@@ -175,6 +175,20 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
     return spec;
 }
 
+Status RunCrashSweepCases(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std::size_t inFirst,
+                          std::size_t inCount, const std::filesystem::path& inFolder)
+{
+    const std::filesystem::path cases = inFolder / "cases";
+    std::error_code error;
+    std::filesystem::create_directories(cases, error);
+    if (error)
+        return MakeError(EError::IoError, "cannot create " + cases.string() + ": " + error.message());
+    const std::size_t total = inSpec.GetCaseCount();
+    for (std::size_t index = inFirst; index < total && index - inFirst < inCount; ++index)
+        RunCase(inScenario, inSpec, index, cases);
+    return Status::Ok();
+}
+
 Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, int inWorkers,
                           const std::filesystem::path& inFolder, std::FILE* inProgress)
 {
@@ -187,7 +201,6 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
     if (error)
         return MakeError(EError::IoError, "cannot create " + cases.string() + ": " + error.message());
     const std::size_t total = inSpec.GetCaseCount();
-
     // Worker processes: case i in worker i mod N. Each case is a separate, deterministic run, so which
     // process runs it does not change its row.
     std::fflush(nullptr);
@@ -226,6 +239,14 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
     if (inProgress != nullptr)
         std::fprintf(inProgress, "\n");
 
+    return MergeCrashSweep(inScenario, inSpec, inFolder, inProgress);
+}
+
+Result<int> MergeCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec,
+                            const std::filesystem::path& inFolder, std::FILE* inProgress)
+{
+    const std::filesystem::path cases = inFolder / "cases";
+    const std::size_t total = inSpec.GetCaseCount();
     // Rows in case order, then the plot.
     std::string csv = "case,speed_km_h,wall_angle_deg,offset_m,front_crush_m,max_crush_m,delta_v_km_h,"
                       "energy_absorbed_J,total_impulse_N_s,collisions,status\n";

@@ -37,4 +37,18 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText);
 Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, int inWorkers,
                           const std::filesystem::path& inFolder, std::FILE* inProgress);
 
+/// Runs the cases inFirst .. inFirst + inCount - 1 (those below the case count) of inSpec on inScenario, one
+/// after the other in this process, each writing its row to inFolder/cases/ (a Slurm array task's share of a
+/// sweep, WriteSlurmSweep). A case that fails writes a row that says why.
+/// @return an error only when the cases folder cannot be made
+Status RunCrashSweepCases(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std::size_t inFirst,
+                          std::size_t inCount, const std::filesystem::path& inFolder);
+
+/// Gathers the rows in inFolder/cases/ into inFolder/sweep.csv and inFolder/sweep.png, byte for byte what
+/// RunCrashSweep writes for the same rows, whoever ran them; a case without a row counts as failed. Names
+/// each failed case on inProgress (may be null).
+/// @return the number of cases that failed a check, failed to run or wrote no row
+Result<int> MergeCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec& inSpec,
+                            const std::filesystem::path& inFolder, std::FILE* inProgress);
+
 } // namespace crumple::crash
