@@ -46,7 +46,7 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     // prop's FEM must hear of each hit before the next step, so its collisions are dispatched every step
     if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
         (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
-    mProps.push_back({inBody, std::move(ioProp), {}});
+    mProps.push_back({inBody, std::move(ioProp), {}, 0, ~std::uint64_t{0}, {}});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 

@@ -1,7 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // Text and colour legends drawn into pictures (no GL: plain pixels).
-#include "../../render/src/ColorMapTable.h"
 
 #include <crumple/render/Annotate.h>
 
@@ -75,9 +74,12 @@ TEST_CASE("A colour legend's bar has the renderer's colours from the shown botto
     const int top = (600 - 300) / 2, bottom = top + 300 - 1;
     CHECK(canvas.At(bar_x + 2, top) == MapColor(EColorMap::CoolWarm, -0.5, 0.5, 0.5));
     CHECK(canvas.At(bar_x + 2, bottom) == MapColor(EColorMap::CoolWarm, -0.5, 0.5, 0.0));
-    // The ends of the map are its table's ends.
-    const auto table = ColorMapTable(EColorMap::CoolWarm);
-    CHECK(MapColor(EColorMap::CoolWarm, -0.5, 0.5, 9.0)[0] == static_cast<std::uint8_t>(std::lround(255.0 * table.back()[0])));
+    // The map saturates at its end, Moreland's cool-warm red (0.705673, 0.015556, 0.150233).
+    const Rgb warm = MapColor(EColorMap::CoolWarm, -0.5, 0.5, 9.0);
+    CHECK(warm == MapColor(EColorMap::CoolWarm, -0.5, 0.5, 0.5));
+    CHECK(warm[0] == std::lround(255.0 * 0.705673));
+    CHECK(warm[1] == std::lround(255.0 * 0.015556));
+    CHECK(warm[2] == std::lround(255.0 * 0.150233));
     // Title above the bar and tick labels to its right are inked.
     CHECK(canvas.Inked(500, top - 30, 800, top - 2) > 50);
     CHECK(canvas.Inked(bar_x + 30, top - 8, 800, bottom + 8) > 100);

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -15,7 +17,7 @@ namespace crumple
 
 /// Reads what ByteWriter wrote. Every read checks the remaining length; after the first failure all
 /// reads fail and Failed() is true, so a parser can read a whole record and check once.
-class ByteReader
+class CRUMPLE_API ByteReader
 {
 public:
     explicit ByteReader(std::span<const std::byte> inBytes) : mBytes(inBytes) {}

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <cstddef>
@@ -15,7 +17,7 @@ namespace crumple
 
 /// Appends little-endian integers and IEEE-754 doubles to a byte buffer, so that saved files are the
 /// same bytes on every platform.
-class ByteWriter
+class CRUMPLE_API ByteWriter
 {
 public:
     void WriteU8(std::uint8_t inValue);

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 
 #include <cstddef>
@@ -30,7 +32,7 @@ namespace crumple
 /// @return inWork's bytes or error; EError::CorruptData when the child died by a signal or took longer than
 ///         inTimeout; EError::IoError when no child could be started; EError::InvalidArgument (nothing run) for a
 ///         timeout that is not finite and > 0
-Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
+CRUMPLE_API Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
                                            double inTimeout, const std::string& inWhat);
 
 } // namespace crumple

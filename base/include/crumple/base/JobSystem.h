@@ -15,7 +15,7 @@ namespace crumple
 /// vertices its bounds are checked on) is handed to mParallelFor; each piece writes only its own elements
 /// and reductions are exact (max, min), so results are bitwise identical whatever the number of workers and
 /// however the host schedules the pieces.
-struct JobSystem
+struct CRUMPLE_API JobSystem
 {
     /// Runs inTask(inTaskContext, i) for every i in [0, inCount), on any threads in any order, and returns
     /// when all have finished. Called only from the thread that called Crumple; it is never re-entered

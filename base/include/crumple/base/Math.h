@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -27,7 +29,7 @@ inline bool IsFinite(double inValue)
 }
 
 /// A rigid transform from a body frame to the world: x_world = mRotation * x_body + mTranslation.
-struct Transform
+struct CRUMPLE_API Transform
 {
     Mat3 mRotation = Mat3::Identity(); ///< Body axes in world coordinates (columns), orthonormal, det +1
     Vec3 mTranslation = Vec3::Zero();  ///< Body origin in world coordinates (m)

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <string>
 #include <utility>
 #include <variant>
@@ -23,10 +25,10 @@ enum class EError
 };
 
 /// Short name of an EError, for messages.
-const char* ToString(EError inError);
+CRUMPLE_API const char* ToString(EError inError);
 
 /// An error: its kind and a message that names the offending field and value.
-struct Error
+struct CRUMPLE_API Error
 {
     EError mCode = EError::InvalidArgument; ///< What went wrong
     std::string mMessage;                   ///< Human-readable detail, e.g. "BodySettings.mMass = -1 kg must be >= 0"
@@ -61,7 +63,7 @@ private:
 };
 
 /// Result of an operation that produces no value.
-class [[nodiscard]] Status
+class [[nodiscard]] CRUMPLE_API Status
 {
 public:
     /// Success

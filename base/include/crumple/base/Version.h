@@ -2,10 +2,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 namespace crumple
 {
 
 /// The library version, "major.minor.patch".
-const char* VersionString();
+CRUMPLE_API const char* VersionString();
 
 } // namespace crumple

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/fem/TetMesh.h>
 
@@ -15,7 +17,7 @@ namespace crumple::fem
 
 /// The element a point is bound to: among the candidates, the one whose smallest barycentric weight is
 /// largest (the containing element if there is one, else the nearest in weight space).
-struct BarycentricHit
+struct CRUMPLE_API BarycentricHit
 {
     int mElement = -1;                                            ///< Element index, -1 when none won
     std::array<double, 4> mWeights{};                             ///< Its barycentric weights, sum 1
@@ -26,7 +28,7 @@ struct BarycentricHit
 /// inverted once up front (EmbeddedMesh binds display vertices with it, props::CollisionNodalImpulses spreads
 /// contact impulses). The weights of x in element (p0, p1, p2, p3) solve D l = x - p0 with D =
 /// EdgeMatrix(p0, p1, p2, p3), then w = (1 - l1 - l2 - l3, l1, l2, l3) in that order of subtraction.
-class BarycentricSearch
+class CRUMPLE_API BarycentricSearch
 {
   public:
     /// Inverts the edge matrix of every element of inElementNodes (#T corner node indices into inPositions,

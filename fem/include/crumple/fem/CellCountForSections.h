@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/ProceduralEdgeSettings.h>
@@ -22,7 +24,7 @@ namespace crumple::fem
 /// @param[in] inSize            extent of the box along x, y, z (m)
 /// @param[in] inSettings        the edge parameters
 /// @param[in] inThicknessCells  cells across the thickness, >= 1
-Result<std::array<int, 3>> CellCountForSections(const Vec3& inSize, const ProceduralEdgeSettings& inSettings,
+CRUMPLE_API Result<std::array<int, 3>> CellCountForSections(const Vec3& inSize, const ProceduralEdgeSettings& inSettings,
                                                 int inThicknessCells = 1);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -13,7 +15,7 @@ namespace crumple::fem
 /// @param[in] inX0, inX1, inX2, inX3  current corner positions (m), or velocities (m/s) for dF/dt
 /// @param[in] inRestEdgeInverse       D_m^-1 (1/m), 3 by 3, from the rest positions
 /// @return F (dimensionless; 1/s for velocities), 3 by 3
-Mat3 DeformationGradient(const Vec3& inX0, const Vec3& inX1, const Vec3& inX2, const Vec3& inX3,
+CRUMPLE_API Mat3 DeformationGradient(const Vec3& inX0, const Vec3& inX1, const Vec3& inX2, const Vec3& inX3,
                          const Mat3& inRestEdgeInverse);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -27,6 +29,6 @@ enum class EElasticModel : std::uint8_t
 };
 
 /// Short name of an EElasticModel, for messages.
-const char* ToString(EElasticModel inModel);
+CRUMPLE_API const char* ToString(EElasticModel inModel);
 
 } // namespace crumple::fem

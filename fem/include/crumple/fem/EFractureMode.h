@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -22,6 +24,6 @@ enum class EFractureMode : std::uint8_t
 };
 
 /// Short name of an EFractureMode, for messages.
-const char* ToString(EFractureMode inMode);
+CRUMPLE_API const char* ToString(EFractureMode inMode);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -23,6 +25,6 @@ enum class EImplicitPreconditioner : std::uint8_t
 };
 
 /// Short name of an EImplicitPreconditioner, for messages.
-const char* ToString(EImplicitPreconditioner inPreconditioner);
+CRUMPLE_API const char* ToString(EImplicitPreconditioner inPreconditioner);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -24,6 +26,6 @@ enum class EIntegrator : std::uint8_t
 };
 
 /// Short name of an EIntegrator, for messages.
-const char* ToString(EIntegrator inIntegrator);
+CRUMPLE_API const char* ToString(EIntegrator inIntegrator);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -20,6 +22,6 @@ enum class EPropMaterial : std::uint8_t
 };
 
 /// Short name of an EPropMaterial ("Glass", ...), for messages and sample menus; "unknown" otherwise.
-const char* ToString(EPropMaterial inMaterial);
+CRUMPLE_API const char* ToString(EPropMaterial inMaterial);
 
 } // namespace crumple::fem

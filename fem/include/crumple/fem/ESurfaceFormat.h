@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -20,9 +22,9 @@ enum class ESurfaceFormat : std::uint8_t
 };
 
 /// Short name of an ESurfaceFormat, for messages.
-const char* ToString(ESurfaceFormat inFormat);
+CRUMPLE_API const char* ToString(ESurfaceFormat inFormat);
 
 /// File name extension of an ESurfaceFormat, without the dot: "obj" or "ply".
-const char* SurfaceFileExtension(ESurfaceFormat inFormat);
+CRUMPLE_API const char* SurfaceFileExtension(ESurfaceFormat inFormat);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -12,6 +14,6 @@ namespace crumple::fem
 /// D_s; det(D) = 6 x signed volume.
 /// @param[in] inP0, inP1, inP2, inP3  corner positions (m)
 /// @return D (m), 3 by 3
-Mat3 EdgeMatrix(const Vec3& inP0, const Vec3& inP1, const Vec3& inP2, const Vec3& inP3);
+CRUMPLE_API Mat3 EdgeMatrix(const Vec3& inP0, const Vec3& inP1, const Vec3& inP2, const Vec3& inP3);
 
 } // namespace crumple::fem

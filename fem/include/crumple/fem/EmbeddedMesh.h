@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TriangleIndices.h>
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
@@ -16,7 +18,7 @@ namespace crumple::fem
 
 /// Where one display vertex sits inside the simulation mesh: an element and the vertex's barycentric
 /// coordinates in it, x = sum_i mWeights[i] x[corner i of mElement].
-struct EmbeddedVertex
+struct CRUMPLE_API EmbeddedVertex
 {
     int mElement = 0;                                     ///< Element (tetrahedron) index, fixed for life
     std::array<double, 4> mWeights{{1.0, 0.0, 0.0, 0.0}}; ///< Barycentric weights, sum 1; negative outside
@@ -26,7 +28,7 @@ struct EmbeddedVertex
 /// simulation (Morris & Anderson, "GPU destruction", section IV.C; Parker & O'Brien 2009 embed the same
 /// way). Each vertex follows one element affinely: rigid motions and affine deformations of that element are
 /// reproduced exactly, and a broken-off piece carries the vertices bound to its elements.
-class EmbeddedMesh
+class CRUMPLE_API EmbeddedMesh
 {
   public:
     /// Largest accepted extrapolation: a vertex whose best element still has a weight below

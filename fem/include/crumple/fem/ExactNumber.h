@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <string>
 
 namespace crumple::fem
@@ -11,6 +13,6 @@ namespace crumple::fem
 /// but independent of the C locale: the decimal separator is always '.'. For text files other programs read
 /// (OBJ surfaces, tetgen's OFF input) and for exact values in error messages.
 /// @param[in] inValue  any double; non-finite values print as "inf", "-inf" or "nan"
-std::string ExactNumber(double inValue);
+CRUMPLE_API std::string ExactNumber(double inValue);
 
 } // namespace crumple::fem

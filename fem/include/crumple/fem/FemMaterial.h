@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterialSettings.h>
 #include <crumple/fem/IsotropicMaterialMatrix.h>
@@ -11,7 +13,7 @@ namespace crumple::fem
 
 /// A validated FemMaterialSettings with the quantities derived from it: the 6x6 material matrix and the Lame
 /// parameters. Immutable once created.
-class FemMaterial
+class CRUMPLE_API FemMaterial
 {
 public:
     /// Refuses non-finite values, E <= 0, density <= 0, nu outside (-1, cMaxPoissonRatio], negative damping,

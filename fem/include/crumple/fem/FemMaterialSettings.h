@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/EElasticModel.h>
 #include <crumple/fem/EFractureMode.h>
 
@@ -23,7 +25,7 @@ namespace crumple::fem
 /// in sub-steps). The implicit integrator puts both in its system matrix; it is also numerically dissipative
 /// by itself (a mode of frequency omega loses amplitude by 1 / sqrt(1 + (omega h)^2) per step), so it comes
 /// to rest without either, while symplectic Euler needs some damping to ever fall asleep.
-struct FemMaterialSettings
+struct CRUMPLE_API FemMaterialSettings
 {
     /// Young's modulus E (Pa), > 0 (steel 2e11, aluminium 7e10, wood ~1e10, rubber ~1e6)
     double mYoungsModulus = 1.0e9;

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/EElasticModel.h>
 #include <crumple/fem/IsotropicMaterialMatrix.h>
 
@@ -20,7 +22,7 @@ namespace crumple::fem
 /// @param[in] inMaterialMatrix  C (Pa), 6 by 6
 /// @param[in] inPlasticStrain   eps_p (dimensionless), 3 by 3 symmetric, in the model's frame
 /// @return P (Pa), 3 by 3
-Mat3 FirstPiolaStress(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
+CRUMPLE_API Mat3 FirstPiolaStress(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
                       const Matrix6& inMaterialMatrix, const Mat3& inPlasticStrain = Mat3::Zero());
 
 } // namespace crumple::fem

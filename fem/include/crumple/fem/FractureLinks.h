@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TetMesh.h>
 
 #include <array>
@@ -15,7 +17,7 @@ namespace crumple::fem
 /// corner slots (0..3), ordered so that the triangle's normal points out of that element, towards the second
 /// group. Reading the nodes through the current connectivity (GetElementNodes()[mElement][slot]) gives the
 /// face as it is now.
-struct FractureLinkFace
+struct CRUMPLE_API FractureLinkFace
 {
     int mElement = 0;                  ///< Element of the link's group A
     std::array<std::uint8_t, 3> mCorners{}; ///< Corner slots of mElement, counter-clockwise seen from outside
@@ -26,7 +28,7 @@ struct FractureLinkFace
 /// groups that share a face (at least three nodes). Fracture marks links broken; FractureTopology() turns a
 /// set of broken links into duplicated nodes. The same arrays describe the state for the CPU and the GPU
 /// solver: a byte per link.
-struct FractureLinks
+struct CRUMPLE_API FractureLinks
 {
     std::vector<int> mGroupOfElement;              ///< #T dense group index of each element
     std::vector<int> mGroupIds;                    ///< #G the mesh's group id of each dense group
@@ -51,6 +53,6 @@ struct FractureLinks
 
 /// Builds the links of a mesh: deterministic (every list is sorted), O(#T log #T).
 /// @param[in] inMesh  a valid mesh; its group ids say which elements break away together
-FractureLinks BuildFractureLinks(const TetMesh& inMesh);
+CRUMPLE_API FractureLinks BuildFractureLinks(const TetMesh& inMesh);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/FractureLinks.h>
 
 #include <cstdint>
@@ -12,7 +14,7 @@ namespace crumple::fem
 {
 
 /// Element connectivity after fracture: where links are broken, the nodes on them are duplicated.
-struct FractureConnectivity
+struct CRUMPLE_API FractureConnectivity
 {
     std::vector<TetIndices> mElementNodes; ///< #T current element -> node indices
     std::vector<int> mNodeOrigin;          ///< #N' rest node each current node is a copy of (identity for i < N)
@@ -28,7 +30,7 @@ struct FractureConnectivity
 /// @param[in] inMesh    the rest mesh the links were built from
 /// @param[in] inLinks   BuildFractureLinks(inMesh)
 /// @param[in] inBroken  #L, nonzero where a link is broken
-FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
+CRUMPLE_API FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
                                       std::span<const std::uint8_t> inBroken);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/ESurfaceFormat.h>
 #include <crumple/fem/TetMesh.h>
@@ -14,7 +16,7 @@ namespace crumple::fem
 {
 
 /// Where and how a FrameSequenceWriter writes.
-struct FrameSequenceSettings
+struct CRUMPLE_API FrameSequenceSettings
 {
     std::filesystem::path mDirectory; ///< Folder of the frames; created (with its parents) if missing
     std::string mBaseName = "frame";  ///< File name prefix: not empty, no '/', not "." or ".."
@@ -27,7 +29,7 @@ struct FrameSequenceSettings
 /// uses, in increasing node index, reindexed from 0: frames of an unbroken body share their topology, and a
 /// fracture that remaps element corners shows its crack faces from the frame it happens in. Single-threaded:
 /// one writer per sequence.
-class FrameSequenceWriter
+class CRUMPLE_API FrameSequenceWriter
 {
   public:
     /// Checks the settings and creates the folder. Refused: an empty folder path or a bad base name

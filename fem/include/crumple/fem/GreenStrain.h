@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -11,6 +13,6 @@ namespace crumple::fem
 /// Symmetric, exactly zero for any rigid motion, quadratic in the displacement gradient.
 /// @param[in] inF  deformation gradient, 3 by 3
 /// @return E (dimensionless), 3 by 3 symmetric
-Mat3 GreenStrain(const Mat3& inF);
+CRUMPLE_API Mat3 GreenStrain(const Mat3& inF);
 
 } // namespace crumple::fem

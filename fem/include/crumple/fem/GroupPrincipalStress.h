@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/FractureLinks.h>
 #include <crumple/fem/TetElementRest.h>
 
@@ -11,7 +13,7 @@ namespace crumple::fem
 {
 
 /// The largest principal stress of an element group and its direction.
-struct PrincipalStress
+struct CRUMPLE_API PrincipalStress
 {
     double mValue = 0.0;               ///< Largest eigenvalue of the stress tensor (Pa), > 0 is tension
     Vec3 mDirection = Vec3::UnitX();   ///< Unit eigenvector (sign arbitrary), world axes
@@ -24,7 +26,7 @@ struct PrincipalStress
 /// @param[in]  inElementStress  #T Cauchy stresses (Pa), symmetric 3 by 3
 /// @param[in]  inRest           #T element rest data (its rest volume weighs the mean)
 /// @param[out] outPrincipal     #G, overwritten
-void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
+CRUMPLE_API void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
                           std::span<const TetElementRest> inRest, std::span<PrincipalStress> outPrincipal);
 
 } // namespace crumple::fem

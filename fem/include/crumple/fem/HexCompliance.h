@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -15,7 +17,7 @@ namespace crumple::fem
 /// matrix-vector product, U_out = C F_load (HexComplianceSolve). Built by HexCompliancePrecompute, saved and
 /// loaded by SaveHexCompliance / LoadHexCompliance, so that a game can ship it instead of the mesh solver.
 /// Memory: 72 #output #load bytes (9 doubles per node pair).
-struct HexCompliance
+struct CRUMPLE_API HexCompliance
 {
     int mNodeCount = 0;              ///< Nodes of the mesh it was computed for
     std::uint32_t mSourceCrc = 0;    ///< HexSourceCrc of that mesh, material and fixed nodes

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexCompliance.h>
 
@@ -20,6 +22,6 @@ namespace crumple::fem
 /// a failed write leaves any existing file as it was.
 /// @return EError::InvalidArgument for an inconsistent compliance or an empty path, EError::IoError when the file
 ///         cannot be written
-Status WriteHexComplianceCsv(const std::filesystem::path& inPath, const HexCompliance& inCompliance);
+CRUMPLE_API Status WriteHexComplianceCsv(const std::filesystem::path& inPath, const HexCompliance& inCompliance);
 
 } // namespace crumple::fem

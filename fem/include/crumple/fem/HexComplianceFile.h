@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexCompliance.h>
 
@@ -28,19 +30,19 @@ constexpr std::string_view cHexComplianceMagic = "CRUMPHEX";
 /// Size: 28 + 4 (#load + #output) + 72 #load #output bytes.
 /// @param[in] inCompliance  a consistent compliance (matrix size matching the node lists)
 /// @return the bytes; EError::InvalidArgument for an inconsistent compliance
-Result<std::vector<std::byte>> EncodeHexCompliance(const HexCompliance& inCompliance);
+CRUMPLE_API Result<std::vector<std::byte>> EncodeHexCompliance(const HexCompliance& inCompliance);
 
 /// Decodes and checks a compliance: magic, version (EError::VersionMismatch), checksum, counts against the length,
 /// node indices in range and unique, finite entries (EError::CorruptData otherwise). Nothing is returned unless
 /// everything checks out.
-Result<HexCompliance> DecodeHexCompliance(std::span<const std::byte> inBytes);
+CRUMPLE_API Result<HexCompliance> DecodeHexCompliance(std::span<const std::byte> inBytes);
 
 /// Writes EncodeHexCompliance to a file through a temporary beside it and a rename, so that a failed write leaves
 /// any existing file as it was (EError::IoError).
-Status SaveHexCompliance(const std::filesystem::path& inPath, const HexCompliance& inCompliance);
+CRUMPLE_API Status SaveHexCompliance(const std::filesystem::path& inPath, const HexCompliance& inCompliance);
 
 /// Reads and decodes a file written by SaveHexCompliance (EError::IoError when unreadable; decode errors as above,
 /// their message prefixed with the path).
-Result<HexCompliance> LoadHexCompliance(const std::filesystem::path& inPath);
+CRUMPLE_API Result<HexCompliance> LoadHexCompliance(const std::filesystem::path& inPath);
 
 } // namespace crumple::fem

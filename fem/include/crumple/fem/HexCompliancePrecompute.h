@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexCompliance.h>
 #include <crumple/fem/HexStaticData.h>
@@ -30,7 +32,7 @@ constexpr long long cHexMaxComplianceEntries = 1LL << 28;
 /// @param[in] inLoadNodes    nodes that may carry forces (a fixed node gives a zero column)
 /// @param[in] inOutputNodes  nodes whose displacements are wanted (a fixed node gives a zero row); empty means
 ///                           all nodes in index order
-Result<HexCompliance> HexCompliancePrecompute(const HexStaticData& inData, std::span<const int> inLoadNodes,
+CRUMPLE_API Result<HexCompliance> HexCompliancePrecompute(const HexStaticData& inData, std::span<const int> inLoadNodes,
                                               std::span<const int> inOutputNodes);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexCompliance.h>
 
@@ -19,6 +21,6 @@ namespace crumple::fem
 /// @param[in] inLoadForces  3 #load forces (N), entry 3 l + a = mLoadNodes[l] along axis a, body frame
 /// @return 3 #output displacements (m), entry 3 o + b = mOutputNodes[o] along axis b; EError::InvalidArgument
 ///         for a wrong length or an inconsistent inCompliance, EError::NonFinite for a NaN or Inf force
-Result<Eigen::VectorXd> HexComplianceSolve(const HexCompliance& inCompliance, const Eigen::VectorXd& inLoadForces);
+CRUMPLE_API Result<Eigen::VectorXd> HexComplianceSolve(const HexCompliance& inCompliance, const Eigen::VectorXd& inLoadForces);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexMaterial.h>
 #include <crumple/fem/HexMesh.h>
@@ -22,6 +24,6 @@ using HexElementStiffnessMatrix = Eigen::Matrix<double, 24, 24>;
 /// @param[in] inMaterial  isotropic material (E, nu, formulation)
 /// @return K_e (N/m), or EError::NonFinite / EError::DegenerateGeometry for non-finite corners or an element
 ///         failing cHexMinJacobianRatio (inverted, flat or twisted)
-Result<HexElementStiffnessMatrix> HexElementStiffness(const HexCornerMatrix& inCorners, const HexMaterial& inMaterial);
+CRUMPLE_API Result<HexElementStiffnessMatrix> HexElementStiffness(const HexCornerMatrix& inCorners, const HexMaterial& inMaterial);
 
 } // namespace crumple::fem

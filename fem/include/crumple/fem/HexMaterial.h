@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexMaterialSettings.h>
 
@@ -15,7 +17,7 @@ namespace crumple::fem
 using HexElasticityMatrix = Eigen::Matrix<double, 6, 6>;
 
 /// A validated isotropic linear-elastic material with its elasticity matrix.
-class HexMaterial
+class CRUMPLE_API HexMaterial
 {
 public:
     /// Validates the settings: E finite and > 0 (NonFinite / InvalidArgument), nu finite and in (-1, 0.5)

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 namespace crumple::fem
 {
 
@@ -23,7 +25,7 @@ enum class EHexFormulation
 };
 
 /// An isotropic linear-elastic material for hexahedral meshes. HexMaterial::Create validates it.
-struct HexMaterialSettings
+struct CRUMPLE_API HexMaterialSettings
 {
     double mYoungsModulus = 200.0e9; ///< Young's modulus E (Pa), finite and > 0; default structural steel
     double mPoissonRatio = 0.3;      ///< Poisson ratio nu (dimensionless), in the open interval (-1, 0.5)

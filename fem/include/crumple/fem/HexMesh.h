@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexMeshSettings.h>
 
@@ -33,7 +35,7 @@ constexpr double cHexMinJacobianRatio = 1.0e-6;
 ///
 /// A structured mesh (from HexMeshSettings) numbers node (i, j, k), 0 <= i <= nx, as i + (nx + 1) (j + (ny + 1) k)
 /// and cell (i, j, k) as i + nx (j + ny k); xi runs along +x, eta along +y, zeta along +z.
-class HexMesh
+class CRUMPLE_API HexMesh
 {
 public:
     /// Builds the structured mesh of a box. Refuses non-finite or non-positive sizes (NonFinite,

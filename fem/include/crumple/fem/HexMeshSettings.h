@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <array>
@@ -12,7 +14,7 @@ namespace crumple::fem
 /// Describes a structured hexahedral mesh of an axis-aligned box (body frame): mCellCount[0] x mCellCount[1] x
 /// mCellCount[2] equal cells. HexMesh::Create(const HexMeshSettings&) builds it; node and element numbering are
 /// documented on HexMesh.
-struct HexMeshSettings
+struct CRUMPLE_API HexMeshSettings
 {
     Vec3 mOrigin = Vec3::Zero();                ///< Box corner with the smallest coordinates, body frame (m), finite
     Vec3 mSize = Vec3::Ones();                  ///< Box extent along x, y, z (m), finite and > 0

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/fem/HexMesh.h>
 
@@ -17,6 +19,6 @@ namespace crumple::fem
 /// @param[in] inMin   smallest corner of the box, body frame (m)
 /// @param[in] inMax   largest corner of the box, body frame (m)
 /// @return node indices, ascending
-std::vector<int> HexNodesInBox(const HexMesh& inMesh, const Vec3& inMin, const Vec3& inMax);
+CRUMPLE_API std::vector<int> HexNodesInBox(const HexMesh& inMesh, const Vec3& inMin, const Vec3& inMax);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/HexMaterial.h>
 #include <crumple/fem/HexMesh.h>
 
@@ -17,6 +19,6 @@ namespace crumple::fem
 /// @param[in] inMesh        the mesh
 /// @param[in] inMaterial    the material
 /// @param[in] inFixedNodes  fixed node indices, ascending and without repeats (as in HexStaticData)
-std::uint32_t HexSourceCrc(const HexMesh& inMesh, const HexMaterial& inMaterial, std::span<const int> inFixedNodes);
+CRUMPLE_API std::uint32_t HexSourceCrc(const HexMesh& inMesh, const HexMaterial& inMaterial, std::span<const int> inFixedNodes);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -27,7 +29,7 @@ constexpr double cHexSingularPivotRatio = 1.0e-8;
 /// HexStaticPrecompute, used by HexStaticSolve and HexCompliancePrecompute. Move-only (owns the factorization).
 /// Memory: the factor L (GetFactorNonZeros(), 12 bytes per entry: 3.8 MB for 40 x 4 x 4 cells, 22 MB for
 /// 20 x 20 x 5) plus K_fb.
-struct HexStaticData
+struct CRUMPLE_API HexStaticData
 {
     int mNodeCount = 0;                   ///< Nodes of the mesh; forces and displacements have 3 mNodeCount rows
     std::vector<int> mFixedNodes;         ///< Fixed nodes, ascending, no repeats: displacement 0 (or prescribed)

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexMaterial.h>
 #include <crumple/fem/HexMesh.h>
@@ -28,7 +30,7 @@ namespace crumple::fem
 /// @param[in] inMesh        the mesh
 /// @param[in] inMaterial    its material
 /// @param[in] inFixedNodes  node indices held at zero displacement
-Result<HexStaticData> HexStaticPrecompute(const HexMesh& inMesh, const HexMaterial& inMaterial,
+CRUMPLE_API Result<HexStaticData> HexStaticPrecompute(const HexMesh& inMesh, const HexMaterial& inMaterial,
                                           std::span<const int> inFixedNodes);
 
 } // namespace crumple::fem

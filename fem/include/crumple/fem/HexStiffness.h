@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/HexMaterial.h>
 #include <crumple/fem/HexMesh.h>
@@ -22,6 +24,6 @@ namespace crumple::fem
 /// @param[in] inMaterial  the material of every element
 /// @return 3 #nodes by 3 #nodes compressed column matrix (N/m), or the first element's error
 ///         (EError::DegenerateGeometry, with its index)
-Result<Eigen::SparseMatrix<double>> HexStiffness(const HexMesh& inMesh, const HexMaterial& inMaterial);
+CRUMPLE_API Result<Eigen::SparseMatrix<double>> HexStiffness(const HexMesh& inMesh, const HexMaterial& inMaterial);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -21,6 +23,6 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 /// @param[in] inYoungsModulus  E (Pa), > 0
 /// @param[in] inPoissonRatio   nu, in (-1, 0.5)
 /// @return C (Pa), 6 by 6, symmetric positive definite for valid inputs
-Matrix6 IsotropicMaterialMatrix(double inYoungsModulus, double inPoissonRatio);
+CRUMPLE_API Matrix6 IsotropicMaterialMatrix(double inYoungsModulus, double inPoissonRatio);
 
 } // namespace crumple::fem

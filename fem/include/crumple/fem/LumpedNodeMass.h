@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetMesh.h>
 
@@ -17,7 +19,7 @@ namespace crumple::fem
 /// @param[in] inMesh     the mesh
 /// @param[in] inDensity  rho (kg/m^3), > 0
 /// @return #N node masses (kg), each > 0 for a valid mesh
-std::vector<double> LumpedNodeMass(const TetMesh& inMesh, double inDensity);
+CRUMPLE_API std::vector<double> LumpedNodeMass(const TetMesh& inMesh, double inDensity);
 
 /// The same for a connectivity that differs from a mesh's (after fracture duplicated nodes).
 /// @param[in] inElementNodes  #T element -> node indices, each < inNodeCount
@@ -25,7 +27,7 @@ std::vector<double> LumpedNodeMass(const TetMesh& inMesh, double inDensity);
 /// @param[in] inNodeCount     #N
 /// @param[in] inDensity       rho (kg/m^3), > 0
 /// @return #N node masses (kg)
-std::vector<double> LumpedNodeMass(std::span<const TetIndices> inElementNodes, std::span<const TetElementRest> inRest,
+CRUMPLE_API std::vector<double> LumpedNodeMass(std::span<const TetIndices> inElementNodes, std::span<const TetElementRest> inRest,
                                    int inNodeCount, double inDensity);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/IsotropicMaterialMatrix.h>
 
 namespace crumple::fem
@@ -14,6 +16,6 @@ namespace crumple::fem
 /// @param[in] inStrain          symmetric strain tensor (dimensionless, or 1/s for a strain rate), 3 by 3;
 ///                              only its symmetric part is used
 /// @return stress (Pa; Pa s for a strain rate), 3 by 3 symmetric
-Mat3 MaterialStress(const Matrix6& inMaterialMatrix, const Mat3& inStrain);
+CRUMPLE_API Mat3 MaterialStress(const Matrix6& inMaterialMatrix, const Mat3& inStrain);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/EElasticModel.h>
 
 #include <crumple/base/Math.h>
@@ -15,6 +17,6 @@ namespace crumple::fem
 /// @param[in] inF         deformation gradient, 3 by 3
 /// @param[in] inRotation  polar rotation of inF (used by CorotatedLinear only), 3 by 3
 /// @return symmetric strain (dimensionless), 3 by 3
-Mat3 ModelStrain(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation);
+CRUMPLE_API Mat3 ModelStrain(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/EFractureMode.h>
 #include <crumple/fem/GroupPrincipalStress.h>
 
@@ -27,7 +29,7 @@ inline constexpr double cCrackFaceCosine = 0.573576436351046; // cos(55 deg)
 /// @param[in]     inMode            which faces open
 /// @param[in,out] ioBroken          #L, set to 1 where a link breaks
 /// @return number of links broken by this call
-int OpenCracks(const FractureLinks& inLinks, std::span<const PrincipalStress> inPrincipal,
+CRUMPLE_API int OpenCracks(const FractureLinks& inLinks, std::span<const PrincipalStress> inPrincipal,
                std::span<const TetIndices> inElementNodes, std::span<const Vec3> inPositions,
                double inTensileStrength, EFractureMode inMode, std::span<std::uint8_t> ioBroken);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/FemMaterialSettings.h>
 
 #include <crumple/base/Math.h>
@@ -22,11 +24,11 @@ namespace crumple::fem
 /// @param[in] inMaterial        mYieldStress (Pa), mCreepRate (1/s), mMaxPlasticStrain
 /// @param[in] inDeltaTime       dt (s), > 0
 /// @return eps_p after the step, 3 by 3 symmetric (equal to inPlasticStrain when below yield)
-Mat3 PlasticFlow(const Mat3& inTotalStrain, const Mat3& inPlasticStrain, double inShearModulus,
+CRUMPLE_API Mat3 PlasticFlow(const Mat3& inTotalStrain, const Mat3& inPlasticStrain, double inShearModulus,
                  const FemMaterialSettings& inMaterial, double inDeltaTime);
 
 /// Equivalent (von Mises) plastic strain sqrt(2/3 eps_p:eps_p) of a deviatoric plastic strain: for uniaxial
 /// plastic stretch e it is |e|.
-double EquivalentPlasticStrain(const Mat3& inPlasticStrain);
+CRUMPLE_API double EquivalentPlasticStrain(const Mat3& inPlasticStrain);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -21,6 +23,6 @@ namespace crumple::fem
 /// @param[in] inMaxIterations  at most this many updates (>= 1); from identity, a random rotation with 50 %
 ///                             stretch converges to 1e-15 in under 10
 /// @return R as a unit quaternion
-Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations = 40);
+CRUMPLE_API Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations = 40);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/EmbeddedMesh.h>
 #include <crumple/fem/ProceduralEdgeSettings.h>
@@ -16,7 +18,7 @@ namespace crumple::fem
 /// One display section of a ProceduralEdgeMesh: a closed, outward-oriented triangle mesh (a prism over its
 /// outline) that follows one TetGrid cell. Its vertices are its own (not shared with other sections), so a
 /// piece that breaks off carries all its faces.
-struct EdgeSection
+struct CRUMPLE_API EdgeSection
 {
     int mGroup = 0; ///< Group id of its cell, i + n_x (j + n_y k): every vertex follows it
     std::array<int, 3> mCell{{0, 0, 0}}; ///< Cell (i, j, k) along x, y, z
@@ -50,7 +52,7 @@ struct EdgeSection
 ///    splinters, not star-shaped) and extruded over each cell layer of the thickness.
 /// Random numbers come from one SplitMix64 stream seeded with mSeed, drawn in a fixed order (lattice corners
 /// row by row, then horizontal edges, then vertical edges): bitwise reproducible.
-class ProceduralEdgeMesh
+class CRUMPLE_API ProceduralEdgeMesh
 {
   public:
     /// Builds the sections and binds each vertex to an element of its own cell's group (EmbeddedMesh).

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 
 #include <cstdint>
@@ -19,7 +21,7 @@ namespace crumple::fem
 ///
 /// Validated by ValidateProceduralEdgeSettings(); ProceduralEdgeMesh::Create() checks it again against the
 /// actual cell sizes.
-struct ProceduralEdgeSettings
+struct CRUMPLE_API ProceduralEdgeSettings
 {
     /// Average section width along u (m), > 0: divided into the wall's width to choose the cell count
     double mAverageSectionWidth = 0.25;
@@ -62,12 +64,12 @@ struct ProceduralEdgeSettings
 /// clamped.
 /// @param[in] inSettings  the parameters to check
 /// @return Ok, or the first violation found
-Status ValidateProceduralEdgeSettings(const ProceduralEdgeSettings& inSettings);
+CRUMPLE_API Status ValidateProceduralEdgeSettings(const ProceduralEdgeSettings& inSettings);
 
 /// Checks the edge amplitudes against actual cell sizes inWidth (along u) and inHeight (along v), in metres:
 /// mHorizontalEdgeAmplitude <= cMaxAmplitudeFraction (1 - 2 mRandomSectionHeight) inHeight and
 /// mVerticalEdgeAmplitude <= cMaxAmplitudeFraction (1 - 2 mRandomSectionWidth) inWidth. Assumes the settings
 /// are otherwise valid.
-Status ValidateEdgeAmplitudes(const ProceduralEdgeSettings& inSettings, double inWidth, double inHeight);
+CRUMPLE_API Status ValidateEdgeAmplitudes(const ProceduralEdgeSettings& inSettings, double inWidth, double inHeight);
 
 } // namespace crumple::fem

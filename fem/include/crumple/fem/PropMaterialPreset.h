@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/EPropMaterial.h>
 #include <crumple/fem/FemMaterialSettings.h>
@@ -12,7 +14,7 @@ namespace crumple::fem
 
 /// A prop material: the physical constants for the FEM solver and the parameters of its procedural broken
 /// edges. Both pass their validation (FemMaterial::Create, ValidateProceduralEdgeSettings).
-struct PropMaterialPreset
+struct CRUMPLE_API PropMaterialPreset
 {
     FemMaterialSettings mMaterial; ///< Elasticity, density, damping, plasticity and fracture
     ProceduralEdgeSettings mEdges; ///< Display sections and their edges (seed 0; set your own per prop)
@@ -42,6 +44,6 @@ struct PropMaterialPreset
 /// 2e-6 s for glass, wood and steel, 4e-6 s brick, 4e-5 s rubber), which gives the fastest mode of 0.1 m
 /// elements (omega ~ 2 c / 0.1 m) a damping ratio of about 0.1 and leaves slow modes nearly undamped.
 /// Refused: a value that is not an EPropMaterial.
-Result<PropMaterialPreset> MakePropMaterialPreset(EPropMaterial inMaterial);
+CRUMPLE_API Result<PropMaterialPreset> MakePropMaterialPreset(EPropMaterial inMaterial);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -12,7 +14,7 @@ namespace crumple::fem
 /// exact unsigned integer arithmetic and NextDouble() converts by an exact power-of-two scaling, so the
 /// stream is bitwise identical on every platform and compiler (unlike std::uniform_real_distribution, whose
 /// algorithm is implementation-defined).
-class SplitMix64
+class CRUMPLE_API SplitMix64
 {
   public:
     /// Starts the stream at inSeed; any value (0 included) is a good seed

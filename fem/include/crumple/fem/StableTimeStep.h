@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/TetElementRest.h>
 
@@ -29,7 +31,7 @@ namespace crumple::fem
 /// @param[in] inMaterial      the material
 /// @param[in] inSafetyFactor  in (0, 1]
 /// @return stable sub-step (s), > 0 (infinite for no elements)
-double StableTimeStep(std::span<const TetElementRest> inRest, const FemMaterial& inMaterial,
+CRUMPLE_API double StableTimeStep(std::span<const TetElementRest> inRest, const FemMaterial& inMaterial,
                       double inSafetyFactor);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/EElasticModel.h>
 #include <crumple/fem/IsotropicMaterialMatrix.h>
 
@@ -17,7 +19,7 @@ namespace crumple::fem
 /// @param[in] inMaterialMatrix  C (Pa), 6 by 6
 /// @param[in] inPlasticStrain   eps_p (dimensionless), 3 by 3 symmetric; psi is that of eps - eps_p
 /// @return psi (J/m^3), >= 0
-double StrainEnergyDensity(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
+CRUMPLE_API double StrainEnergyDensity(EElasticModel inModel, const Mat3& inF, const Mat3& inRotation,
                            const Matrix6& inMaterialMatrix, const Mat3& inPlasticStrain = Mat3::Zero());
 
 } // namespace crumple::fem

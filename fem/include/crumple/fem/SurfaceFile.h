@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/ESurfaceFormat.h>
 #include <crumple/fem/SurfaceMesh.h>
@@ -23,15 +25,15 @@ namespace crumple::fem
 /// @param[in] inPositions  #V vertex positions (m), any frame
 /// @param[in] inTriangles  #F triangles indexing inPositions, written as given (orientation kept)
 /// @param[in] inFormat     OBJ text or binary PLY
-Status SaveSurface(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
+CRUMPLE_API Status SaveSurface(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
                    std::span<const TriangleIndices> inTriangles, ESurfaceFormat inFormat);
 
 /// SaveSurface in ESurfaceFormat::Obj.
-Status SaveSurfaceObj(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
+CRUMPLE_API Status SaveSurfaceObj(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
                       std::span<const TriangleIndices> inTriangles);
 
 /// SaveSurface in ESurfaceFormat::Ply.
-Status SaveSurfacePly(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
+CRUMPLE_API Status SaveSurfacePly(const std::filesystem::path& inPath, std::span<const Vec3> inPositions,
                       std::span<const TriangleIndices> inTriangles);
 
 } // namespace crumple::fem

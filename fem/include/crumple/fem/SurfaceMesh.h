@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TriangleIndices.h>
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
@@ -13,7 +15,7 @@ namespace crumple::fem
 {
 
 /// A triangle surface in double precision: the input of Tetrahedralize and what LoadSurfaceMesh returns.
-struct SurfaceMesh
+struct CRUMPLE_API SurfaceMesh
 {
     std::vector<Vec3> mPositions;            ///< #V vertex positions (m), body frame
     std::vector<TriangleIndices> mTriangles; ///< #F triangles, indices into mPositions
@@ -26,6 +28,6 @@ struct SurfaceMesh
 /// EError::DegenerateGeometry (repeated vertex, open or non-manifold edges: the message gives their count and
 /// one edge's end positions).
 /// @param[in] inSurface  #V positions and #F triangles
-Status ValidateClosedSurface(const SurfaceMesh& inSurface);
+CRUMPLE_API Status ValidateClosedSurface(const SurfaceMesh& inSurface);
 
 } // namespace crumple::fem

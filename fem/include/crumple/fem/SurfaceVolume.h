@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/SurfaceMesh.h>
 
 #include <span>
@@ -15,6 +17,6 @@ namespace crumple::fem
 /// @param[in] inPositions  #V vertex positions (m)
 /// @param[in] inTriangles  #F triangles indexing inPositions
 /// @return signed volume (m^3)
-double SurfaceVolume(std::span<const Vec3> inPositions, std::span<const TriangleIndices> inTriangles);
+CRUMPLE_API double SurfaceVolume(std::span<const Vec3> inPositions, std::span<const TriangleIndices> inTriangles);
 
 } // namespace crumple::fem

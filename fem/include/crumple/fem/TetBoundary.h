@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/SurfaceMesh.h>
 #include <crumple/fem/TetMesh.h>
 
@@ -22,6 +24,6 @@ namespace crumple::fem
 /// three or more elements (an invalid mesh) is not boundary. Indices are not checked against a node count.
 /// @param[in] inTets  #T elements, 4 node indices each
 /// @return #B boundary triangles of node indices, #B <= 4 #T
-std::vector<TriangleIndices> TetBoundary(std::span<const TetIndices> inTets);
+CRUMPLE_API std::vector<TriangleIndices> TetBoundary(std::span<const TetIndices> inTets);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TetGrid.h>
 
 #include <vector>
@@ -12,7 +14,7 @@ namespace crumple::fem
 /// Describes a fence: square posts at a regular spacing joined by horizontal rails, all cut from one lattice
 /// of cubes, so posts and rails are conforming and each cube can break away on its own. The fence runs along
 /// +x from mOrigin, its thickness along +y, its height along +z (z up, the base at mOrigin.z).
-struct TetFenceSettings
+struct CRUMPLE_API TetFenceSettings
 {
     Vec3 mOrigin = Vec3::Zero(); ///< Minimum corner (m), body frame
     double mLength = 4.0;        ///< Along x (m), > 0
@@ -27,7 +29,7 @@ struct TetFenceSettings
 };
 
 /// A fence mesh and the nodes to anchor: the bottoms of its posts.
-struct TetFence
+struct CRUMPLE_API TetFence
 {
     TetMesh mMesh;                ///< Posts and rails
     std::vector<int> mGroundNodes; ///< Nodes at the base (z = mOrigin.z), ascending
@@ -36,6 +38,6 @@ struct TetFence
 
 /// Builds a fence (TetGridCells over its bounding box). Refused with a message naming the field: non-finite
 /// or non-positive sizes, fewer than one rail, more cells than TetGridSettings::cMaxCells.
-Result<TetFence> MakeTetFence(const TetFenceSettings& inSettings);
+CRUMPLE_API Result<TetFence> MakeTetFence(const TetFenceSettings& inSettings);
 
 } // namespace crumple::fem

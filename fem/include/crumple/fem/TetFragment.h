@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/FractureLinks.h>
 
 #include <cstdint>
@@ -14,7 +16,7 @@ namespace crumple::fem
 /// A connected piece of a prop: element groups joined through shared nodes. What an adapter needs to turn a
 /// loose piece into a rigid body: its mass, centre of mass and inertia (uniform density, exact for linear
 /// tetrahedra), plus whether it is still held by an anchored node.
-struct TetFragment
+struct CRUMPLE_API TetFragment
 {
     std::vector<int> mGroups;   ///< Dense group indices (FractureLinks), ascending
     std::vector<int> mElements; ///< Elements, ascending
@@ -34,7 +36,7 @@ struct TetFragment
 /// @param[in] inElementMasses  #T element masses (kg): density x rest volume
 /// @param[in] inPositions      #N current node positions (m)
 /// @param[in] inInverseMasses  #N (1/kg), 0 = anchored
-std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const TetIndices> inElementNodes,
+CRUMPLE_API std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const TetIndices> inElementNodes,
                                       std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
                                       std::span<const double> inInverseMasses);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TetMesh.h>
 
 #include <cstdint>
@@ -24,7 +26,7 @@ enum class ECubeSplit : std::uint8_t
 
 /// Describes a box of mCellCount cubes (cuboids) cut into tetrahedra. A plate is a box with one cell across
 /// its thickness, a beam one with few cells across its section: there is one builder for all three.
-struct TetGridSettings
+struct CRUMPLE_API TetGridSettings
 {
     Vec3 mOrigin = Vec3::Zero();              ///< Minimum corner (m), body frame
     Vec3 mSize = Vec3::Ones();                ///< Extent along x, y, z (m), each > 0
@@ -40,16 +42,16 @@ struct TetGridSettings
 /// non-finite origin or size, a size <= 0, a cell count < 1 or too many cells.
 /// @param[in] inSettings  the box
 /// @return (n_x+1)(n_y+1)(n_z+1) nodes and 5 or 6 n_x n_y n_z elements
-Result<TetMesh> TetGrid(const TetGridSettings& inSettings);
+CRUMPLE_API Result<TetMesh> TetGrid(const TetGridSettings& inSettings);
 
 /// TetGrid() restricted to the cells whose flag in inKeepCells is nonzero (cell (i, j, k) at index
 /// i + n_x (j + n_y k)); the nodes no kept cell uses are dropped and the others keep lattice order, so
 /// TetGridNode() does not apply unless every cell is kept. Groups stay the cell indices. Cells that share
 /// only an edge or a corner are joined there (conforming). Refused: the TetGrid() cases, a flag count that
 /// is not the cell count, no cell kept. An empty span keeps every cell (TetGrid()).
-Result<TetMesh> TetGridCells(const TetGridSettings& inSettings, std::span<const std::uint8_t> inKeepCells);
+CRUMPLE_API Result<TetMesh> TetGridCells(const TetGridSettings& inSettings, std::span<const std::uint8_t> inKeepCells);
 
 /// Index of grid node (i, j, k) in a TetGrid with inCellCount cells: i + (n_x + 1)(j + (n_y + 1) k).
-int TetGridNode(const std::array<int, 3>& inCellCount, int inI, int inJ, int inK);
+CRUMPLE_API int TetGridNode(const std::array<int, 3>& inCellCount, int inI, int inJ, int inK);
 
 } // namespace crumple::fem

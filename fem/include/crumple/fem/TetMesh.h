@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -18,7 +20,7 @@ using TetIndices = std::array<int, 4>;
 /// Element and node order is the caller's and is kept: every solver loop runs in this order, so results are
 /// deterministic. Each element may carry a group id (the cube it was cut from) so that fracture can later
 /// detach whole groups (the paper's section IV.B breaks whole 5-tet cubes away).
-class TetMesh
+class CRUMPLE_API TetMesh
 {
 public:
     /// Smallest accepted |volume| / (longest edge)^3; a regular tetrahedron has 0.118, a 5-tet cube's corner

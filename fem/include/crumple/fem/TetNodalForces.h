@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <array>
@@ -18,7 +20,7 @@ namespace crumple::fem
 /// @param[in] inRestEdgeInverse   D_m^-1 (1/m), 3 by 3
 /// @param[in] inRestVolume        V0 (m^3), > 0
 /// @return forces on corners 0..3 (N), world frame
-std::array<Vec3, 4> TetNodalForces(const Mat3& inFirstPiolaStress, const Mat3& inRestEdgeInverse,
+CRUMPLE_API std::array<Vec3, 4> TetNodalForces(const Mat3& inFirstPiolaStress, const Mat3& inRestEdgeInverse,
                                    double inRestVolume);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterial.h>
@@ -35,7 +37,7 @@ class TetFactoredPreconditioner; // private to the solver (src/TetFactoredPrecon
 /// PolarRotation).
 ///
 /// Every input is checked; a refused input returns an error and changes nothing.
-class TetSolver
+class CRUMPLE_API TetSolver
 {
 public:
     /// Validates the material and settings and builds a solver at rest (positions = rest positions, zero

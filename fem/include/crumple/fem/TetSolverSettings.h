@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/fem/EImplicitPreconditioner.h>
 #include <crumple/fem/EIntegrator.h>
@@ -11,7 +13,7 @@ namespace crumple::fem
 
 /// Settings of a TetSolver (the material comes separately in FemMaterialSettings). Validated by
 /// TetSolver::Create().
-struct TetSolverSettings
+struct CRUMPLE_API TetSolverSettings
 {
     /// Time integration; implicit is stable at game steps for any stiffness, symplectic is cheaper per
     /// sub-step

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <memory>
 
 namespace crumple::fem
@@ -14,7 +16,7 @@ struct TetSolveScratch; // private to the solver (src/TetSolveScratch.h)
 /// so a step allocates nothing once sized. A copy starts empty and builds its own on its first solve, which
 /// gives the same factor bit for bit (it is a function of the mesh, the anchors and the step only): copies
 /// stay independent and deterministic.
-class TetSolverWorkspace
+class CRUMPLE_API TetSolverWorkspace
 {
 public:
     TetSolverWorkspace();

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::fem
@@ -53,7 +55,7 @@ constexpr bool HasEvent(ETetStepEvent inEvents, ETetStepEvent inEvent)
 }
 
 /// Outcome of one TetSolver::Step().
-struct TetStepResult
+struct CRUMPLE_API TetStepResult
 {
     ETetStepEvent mEvents = ETetStepEvent::None; ///< What happened, bit flags
     int mSubSteps = 0;            ///< Sub-steps of the last attempt (symplectic: stable sub-steps;
@@ -68,7 +70,7 @@ struct TetStepResult
 };
 
 /// Outcome of TetSolver::SolveStatic().
-struct TetStaticResult
+struct CRUMPLE_API TetStaticResult
 {
     int mIterations = 0;            ///< Outer (re-linearisation) iterations
     int mSolverIterations = 0;      ///< Conjugate-gradient iterations, all outer iterations together

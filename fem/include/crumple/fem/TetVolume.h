@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 namespace crumple::fem
@@ -12,6 +14,6 @@ namespace crumple::fem
 /// (p1 - p0) x (p2 - p0) points to: the orientation every TetMesh element must have.
 /// @param[in] inP0, inP1, inP2, inP3  corner positions (m)
 /// @return signed volume (m^3)
-double TetVolume(const Vec3& inP0, const Vec3& inP1, const Vec3& inP2, const Vec3& inP3);
+CRUMPLE_API double TetVolume(const Vec3& inP0, const Vec3& inP1, const Vec3& inP2, const Vec3& inP3);
 
 } // namespace crumple::fem

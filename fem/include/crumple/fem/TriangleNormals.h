@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/TriangleIndices.h>
@@ -19,7 +21,7 @@ namespace crumple::fem
 /// @param[in]  inPositions  #V vertex positions (m)
 /// @param[in]  inTriangles  #F triangles
 /// @param[out] outNormals   #F unit normals (dimensionless), same frame as the positions
-Status TriangleNormals(std::span<const Vec3> inPositions, std::span<const TriangleIndices> inTriangles,
+CRUMPLE_API Status TriangleNormals(std::span<const Vec3> inPositions, std::span<const TriangleIndices> inTriangles,
                        std::vector<Vec3>& outNormals);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <array>
@@ -13,6 +15,6 @@ namespace crumple::fem
 /// (z). The wall plane is spanned by the two largest extents, the longer of them being the width; the
 /// smallest extent is the thickness. Ties go to the lower axis index first, so a cube gives {x, y, z}.
 /// @param[in] inSize  extent along x, y, z (m)
-std::array<int, 3> WallAxes(const Vec3& inSize);
+CRUMPLE_API std::array<int, 3> WallAxes(const Vec3& inSize);
 
 } // namespace crumple::fem

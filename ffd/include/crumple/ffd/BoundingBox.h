@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <span>
@@ -10,13 +12,13 @@ namespace crumple::ffd
 {
 
 /// An axis-aligned box (m).
-struct AlignedBox
+struct CRUMPLE_API AlignedBox
 {
     Vec3 mMin = Vec3::Zero(); ///< Smallest coordinates
     Vec3 mMax = Vec3::Zero(); ///< Largest coordinates
 };
 
 /// The axis-aligned bounding box of a point set (a zero box at the origin for an empty set).
-AlignedBox BoundingBox(std::span<const Vec3> inPoints);
+CRUMPLE_API AlignedBox BoundingBox(std::span<const Vec3> inPoints);
 
 } // namespace crumple::ffd

@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::ffd
 {
 
 /// What one FfdDeformer::ApplyDent did; counts are for instrumentation, tests and benchmarks.
-struct DentReport
+struct CRUMPLE_API DentReport
 {
     int mPointsApplied = 0;        ///< Constrained points that reached a zone (after merging)
     int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/ffd/FfdLattice.h>
 
@@ -50,7 +52,7 @@ constexpr double cDefaultRankTolerance = 1.0e-3;
 /// below this act as this one on the Gram path (the tall path takes any tolerance).
 constexpr double cMinRankTolerance = 3.0e-7;
 
-struct DirectManipulationData
+struct CRUMPLE_API DirectManipulationData
 {
     std::vector<int> mControls;      ///< Linear indices of B's columns, ascending (the controls reached)
     std::vector<int> mRowColumns;    ///< #points * 64: column (into mControls) of each weight of each row
@@ -71,7 +73,7 @@ struct DirectManipulationData
 /// @param[in] inLattice    the lattice the points are in
 /// @param[in] inLocations  #points locations (cell and local parameter)
 /// @param[in] inRelativeTolerance pivot threshold relative to the largest pivot of B, in (0, 1)
-DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
+CRUMPLE_API DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
                                                     std::span<const LatticeLocation> inLocations,
                                                     double inRelativeTolerance = cDefaultRankTolerance);
 
@@ -92,7 +94,7 @@ enum class EDirectManipulationPrior
 };
 
 /// What a solve used.
-struct DirectManipulationSolveInfo
+struct CRUMPLE_API DirectManipulationSolveInfo
 {
     int mRank = 0;            ///< Rank of B the solution was computed with
     double mTolerance = 0.0;  ///< The relative pivot tolerance that gave that rank
@@ -114,7 +116,7 @@ struct DirectManipulationSolveInfo
 /// @param[in] inMaxControlGain bound on max |dC| / max |dP|, >= 1, or infinity
 /// @param[out] outInfo        rank and tolerance used, when not null
 /// @return #controls by 3 control displacements (m), rows in the order of inData.mControls
-Eigen::MatrixX3d DirectManipulationSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements,
+CRUMPLE_API Eigen::MatrixX3d DirectManipulationSolve(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements,
                                          EDirectManipulationPrior inPrior = EDirectManipulationPrior::None,
                                          double inMaxControlGain = std::numeric_limits<double>::infinity(),
                                          DirectManipulationSolveInfo* outInfo = nullptr);
@@ -123,9 +125,9 @@ Eigen::MatrixX3d DirectManipulationSolve(const DirectManipulationData& inData, c
 /// displacements of the points it reaches, weighted by its B-spline weight at each point (column-normalized
 /// B^T dP). A convex combination per control, so no control exceeds the largest wanted displacement.
 /// @return #controls by 3 (m), rows in the order of inData.mControls
-Eigen::MatrixX3d QuasiInterpolant(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements);
+CRUMPLE_API Eigen::MatrixX3d QuasiInterpolant(const DirectManipulationData& inData, const Eigen::MatrixX3d& inDisplacements);
 
 /// B itself (#points by #controls, sparse), for tests and diagnostics; the solve never forms it.
-Eigen::SparseMatrix<double, Eigen::RowMajor> DirectManipulationMatrix(const DirectManipulationData& inData);
+CRUMPLE_API Eigen::SparseMatrix<double, Eigen::RowMajor> DirectManipulationMatrix(const DirectManipulationData& inData);
 
 } // namespace crumple::ffd

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
 #include <crumple/ffd/DentReport.h>
@@ -31,7 +33,7 @@ class CellSurfaceIndex;
 /// recomputes only the vertices in cells that a changed control reaches (a control reaches 4 cells per
 /// axis), the face normals of their triangles and the normals of those triangles' vertices. The rest mesh
 /// is kept, so damage can be reset or restored exactly. Not thread-safe; one deformer per object.
-class FfdDeformer
+class CRUMPLE_API FfdDeformer
 {
 public:
     /// Most lattice cells over all zones (each costs about 70 bytes of index): 2^24, a 256^3 lattice

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/DirectManipulation.h>
 #include <crumple/ffd/FfdLatticeSettings.h>
 
@@ -11,7 +13,7 @@ namespace crumple::ffd
 {
 
 /// One deformation zone: a lattice and the most its points may ever move.
-struct FfdZoneSettings
+struct CRUMPLE_API FfdZoneSettings
 {
     FfdLatticeSettings mLattice;        ///< The zone's volume and control resolution
     double mMaxTotalDeformation = 0.25; ///< Bound on the total displacement of any vertex of the zone (m), >= 0.
@@ -20,7 +22,7 @@ struct FfdZoneSettings
 };
 
 /// Settings of an FfdDeformer: the zones of one object and the solver's tolerances.
-struct FfdDeformerSettings
+struct CRUMPLE_API FfdDeformerSettings
 {
     std::vector<FfdZoneSettings> mZones; ///< One or more zones; a vertex belongs to the first zone containing it
     double mRankTolerance = cDefaultRankTolerance; ///< Relative pivot threshold of B^+ (see DirectManipulation.h)

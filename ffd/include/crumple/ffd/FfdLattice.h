@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/ffd/FfdLatticeSettings.h>
 
@@ -14,7 +16,7 @@ namespace crumple::ffd
 {
 
 /// Where a point sits in a lattice: its cell and the local parameter inside it.
-struct LatticeLocation
+struct CRUMPLE_API LatticeLocation
 {
     std::array<int, 3> mCell{{0, 0, 0}}; ///< Cell index per axis, in [0, n - 4]; controls mCell..mCell+3 reach it
     Vec3 mT = Vec3::Zero();              ///< Local parameter per axis, in [0, 1]
@@ -24,7 +26,7 @@ struct LatticeLocation
 /// phantom controls). It stores only control *displacements*: a point's displacement is
 /// sum_{a,b,c} w_a(t_x) w_b(t_y) w_c(t_z) dC(i+a, j+b, k+c), so an undeformed lattice moves no point by even
 /// one ulp, and the rest shape is never lost.
-class FfdLattice
+class CRUMPLE_API FfdLattice
 {
 public:
     /// Validates the settings (finite, positive size, rotation axes, >= 4 controls) and builds a lattice

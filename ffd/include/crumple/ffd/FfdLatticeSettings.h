@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <array>
@@ -13,7 +15,7 @@ namespace crumple::ffd
 /// B-spline lattice. The box spans exactly the region where the spline is defined (D4MD section 5:
 /// no phantom controls), so with n controls along an axis the box holds n - 3 spline segments and the
 /// controls sit one spacing outside the box on each side.
-struct FfdLatticeSettings
+struct CRUMPLE_API FfdLatticeSettings
 {
     Vec3 mOrigin = Vec3::Zero();            ///< Box corner with lattice coordinate (0,0,0), body frame (m)
     Mat3 mAxes = Mat3::Identity();          ///< Box edge directions as columns, body frame, orthonormal, det +1

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <cstddef>
@@ -23,6 +25,6 @@ namespace crumple::ffd
 /// @param[in]     inFlatCosine two triangles are coplanar when their unit normals' dot product is at least
 ///                           this, in (0, 1]; the default is an angle of about 0.08 degrees
 /// @return the number of flips made, or an error for bad input (the mesh unchanged)
-Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine = 1.0 - 1.0e-6);
+CRUMPLE_API Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine = 1.0 - 1.0e-6);
 
 } // namespace crumple::ffd

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/FfdLattice.h>
 
 #include <cstdint>
@@ -44,7 +46,7 @@ namespace crumple::ffd
 ///                          Controls that move none are left out of their lines (neither pushed nor
 ///                          pushing); the gap between the remaining neighbours is then k spacings at rest
 /// @return the indices of the controls this function moved, ascending
-std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> inBefore, std::span<Vec3> ioAfter,
+CRUMPLE_API std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> inBefore, std::span<Vec3> ioAfter,
                            std::span<const int> inChanged, double inMinSpacing,
                            std::span<const std::uint8_t> inMoves = {});
 

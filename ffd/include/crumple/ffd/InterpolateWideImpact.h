@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/PointDisplacement.h>
 
 #include <span>
@@ -25,7 +27,7 @@ namespace crumple::ffd
 /// @param[in] inSpacing  sample pitch (m), typically the lattice control spacing; > 0
 /// @param[in] inMaxPoints cap on the output size; the pitch grows until the samples fit
 /// @return the input points followed by the interpolated samples, in a deterministic order
-std::vector<PointDisplacement> InterpolateWideImpact(std::span<const PointDisplacement> inPoints, double inSpacing,
+CRUMPLE_API std::vector<PointDisplacement> InterpolateWideImpact(std::span<const PointDisplacement> inPoints, double inSpacing,
                                                      std::size_t inMaxPoints = 512);
 
 } // namespace crumple::ffd

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <Eigen/Core>
 
 namespace crumple::ffd
@@ -22,6 +24,6 @@ namespace crumple::ffd
 /// @param[in]     inWanted  #points by 3 wanted displacements (m)
 /// @param[in,out] ioDelta   #controls by 3 control changes (m), clipped in place
 /// @return number of controls clipped (0 when the wanted displacements are not one-sided, or all zero)
-int OneSidedControls(const Eigen::MatrixX3d& inWanted, Eigen::MatrixX3d& ioDelta);
+CRUMPLE_API int OneSidedControls(const Eigen::MatrixX3d& inWanted, Eigen::MatrixX3d& ioDelta);
 
 } // namespace crumple::ffd

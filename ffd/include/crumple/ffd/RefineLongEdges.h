@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <array>
@@ -13,7 +15,7 @@ namespace crumple::ffd
 {
 
 /// A mesh with its long edges split, and where each added vertex came from.
-struct RefinedMesh
+struct CRUMPLE_API RefinedMesh
 {
     TriangleMesh mMesh; ///< The input's vertices first, in their order, then the added ones; its triangles
     /// #added by 2: added vertex mMesh.mPositions.size() - mMidpointParents.size() + k is the midpoint of
@@ -40,6 +42,6 @@ struct RefinedMesh
 /// @param[in] inMaxEdge     longest edge wanted (m), finite and > 0
 /// @param[in] inMaxTriangles refuse (and return an error) rather than grow past this many triangles
 /// @return the refined mesh, or an error for bad input or too many triangles (nothing is half-made)
-Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles = 4'000'000);
+CRUMPLE_API Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles = 4'000'000);
 
 } // namespace crumple::ffd

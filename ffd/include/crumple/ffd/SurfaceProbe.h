@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 
 #include <limits>
@@ -12,7 +14,7 @@ namespace crumple::ffd
 /// A probe of the deformed surface along a direction: the prism of body points p whose coordinates
 /// mSide.p and mThird.p lie in [mSideMin, mSideMax] and [mThirdMin, mThirdMax] (an impactor's face swept
 /// along mDirection). Body frame, m. The three axes are unit and mutually perpendicular.
-struct SurfaceProbe
+struct CRUMPLE_API SurfaceProbe
 {
     Vec3 mDirection = Vec3::UnitX(); ///< d: unit direction the probe looks along (into the body)
     Vec3 mSide = Vec3::UnitY();      ///< First unit axis across d
@@ -22,7 +24,7 @@ struct SurfaceProbe
 };
 
 /// What a probe found on the deformed surface (FfdDeformer::ProbeSurface).
-struct SurfaceProbeResult
+struct CRUMPLE_API SurfaceProbeResult
 {
     /// Smallest d.p over the surface inside the prism (m): over its vertices inside, and over the part inside
     /// of each triangle that crosses the prism's boundary; +infinity when the surface misses the prism.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -13,7 +15,7 @@ namespace crumple::ffd
 {
 
 /// An indexed triangle mesh (a render mesh), counter-clockwise triangles seen from outside.
-struct TriangleMesh
+struct CRUMPLE_API TriangleMesh
 {
     std::vector<Vec3> mPositions;                        ///< #V positions, body frame (m)
     std::vector<std::array<std::uint32_t, 3>> mTriangles; ///< #F vertex index triples
@@ -25,6 +27,6 @@ constexpr double cMaxMeshCoordinate = 1.0e6;
 
 /// Checks a mesh at the API boundary: at least one triangle, finite positions within cMaxMeshCoordinate of
 /// the origin, indices in range.
-Status ValidateTriangleMesh(const TriangleMesh& inMesh);
+CRUMPLE_API Status ValidateTriangleMesh(const TriangleMesh& inMesh);
 
 } // namespace crumple::ffd

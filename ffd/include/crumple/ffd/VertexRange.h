@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -11,7 +13,7 @@ namespace crumple::ffd
 
 /// A half-open range [mBegin, mEnd) of vertex indices whose position or normal changed: what a game
 /// re-uploads to its vertex buffer.
-struct VertexRange
+struct CRUMPLE_API VertexRange
 {
     std::uint32_t mBegin = 0; ///< First changed vertex
     std::uint32_t mEnd = 0;   ///< One past the last changed vertex
@@ -20,6 +22,6 @@ struct VertexRange
 };
 
 /// Turns a flag per vertex (non-zero = changed) into ascending, disjoint, non-adjacent ranges.
-std::vector<VertexRange> VertexRangesFromFlags(std::span<const std::uint8_t> inChanged);
+CRUMPLE_API std::vector<VertexRange> VertexRangesFromFlags(std::span<const std::uint8_t> inChanged);
 
 } // namespace crumple::ffd

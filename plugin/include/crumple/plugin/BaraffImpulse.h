@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/plugin/BodyState.h>
 
 #include <span>
@@ -12,7 +14,7 @@ namespace crumple::plugin
 
 /// Normal approach velocity of A relative to B at world point inPoint along inNormal (B to A), from the
 /// bodies' (pre-solve) states: v_rel = n . (v_A + w_A x r_A - v_B - w_B x r_B) (m/s). Negative when closing.
-double RelativeNormalVelocity(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal);
+CRUMPLE_API double RelativeNormalVelocity(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal);
 
 /// Impulse magnitude of one frictionless contact (Baraff 1992, "Dynamic simulation of non-penetrating
 /// rigid bodies", eq. 8-18; D4MD section 6.2):
@@ -23,11 +25,11 @@ double RelativeNormalVelocity(const BodyState& inA, const BodyState& inB, const 
 /// @param[in] inPoint          contact point, world frame (m)
 /// @param[in] inNormal         unit normal from B to A, world frame
 /// @param[in] inRestitution    coefficient of restitution e in [0, 1]
-double BaraffImpulse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal,
+CRUMPLE_API double BaraffImpulse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal,
                      double inRestitution);
 
 /// One contact of a simultaneous impulse solve.
-struct ImpulseContact
+struct CRUMPLE_API ImpulseContact
 {
     Vec3 mPoint = Vec3::Zero();  ///< World contact point (m)
     Vec3 mNormal = Vec3::UnitZ(); ///< Unit normal from B to A
@@ -48,7 +50,7 @@ struct ImpulseContact
 /// need a pulling impulse are dropped from the active set and the rest re-solved (at most N rounds).
 /// @param[in] inClosingSpeed  contacts approaching slower than this (m/s, >= 0), after their speculative
 ///                            speed, count as resting: zero impulse
-std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& inB,
+CRUMPLE_API std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& inB,
                                          std::span<const ImpulseContact> inContacts, double inRestitution,
                                          double inClosingSpeed);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -18,7 +20,7 @@ enum class EMotionType
 
 /// Everything a Baraff impulse needs to know about a body, snapshotted by the adapter *before* the engine's
 /// solver runs (post-solve velocities have already resolved the impact and would give zero impulse).
-struct BodyState
+struct CRUMPLE_API BodyState
 {
     EMotionType mMotionType = EMotionType::Dynamic; ///< See EMotionType
     double mMass = 1.0;                         ///< Mass (kg), > 0 for dynamic bodies; ignored otherwise
@@ -52,6 +54,6 @@ constexpr double cMaxInverseInertia = 1.0e12; ///< 1/(kg m^2), any entry of the 
 
 /// Checks a body state at the API boundary: a motion type of the enum, finite values within the ranges above,
 /// positive mass, symmetric PSD inverse inertia and a proper rotation. The message names the offending field.
-Status ValidateBodyState(const BodyState& inState);
+CRUMPLE_API Status ValidateBodyState(const BodyState& inState);
 
 } // namespace crumple::plugin

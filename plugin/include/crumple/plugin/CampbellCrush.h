@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/DentReport.h>
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/plugin/Collision.h>
@@ -25,7 +27,7 @@ namespace crumple::plugin
 /// max(2 lattice spacings, C / 2) (pocket walls no steeper than 2:1). So a flat
 /// barrier leaves a flat front at its final position (to within kappa L), a pole a pocket as wide as the
 /// footprint, and nothing moves outside the footprint's margin or behind the crush zone.
-struct CrushPlan
+struct CRUMPLE_API CrushPlan
 {
     Vec3 mDirection = Vec3::UnitX(); ///< d: unit crush direction, into the body
     Vec3 mSide = Vec3::UnitY();      ///< Unit axis across d measuring the width (perpendicular to up and d)
@@ -46,17 +48,17 @@ struct CrushPlan
 };
 
 /// The width across inUp over which the collision's contacts of side inSide crush, at least inMinWidth (m).
-double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
+CRUMPLE_API double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
 
 /// Depth C (m) at which a structure of width inWidth has absorbed inEnergy by Campbell's law
 /// E / w = A C + B C^2 / 2 + G: 0 while E / w <= G.
-double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, double inEnergy);
+CRUMPLE_API double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, double inEnergy);
 /// Energy (J) a structure of width inWidth absorbs to reach crush inDepth (0 at 0 crush): the inverse.
-double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth);
+CRUMPLE_API double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth);
 
 /// One side of a collision, for the split of its energy: the material of its Campbell object (null: the side
 /// does not crush by Campbell's law: a wall, a pole, or a body dented by the impulse factor) and its up axis.
-struct CrushSide
+struct CRUMPLE_API CrushSide
 {
     const DamageMaterial* mMaterial = nullptr;
     Vec3 mUp = Vec3::UnitZ();
@@ -65,18 +67,18 @@ struct CrushSide
 /// Sets the collision's mCrushEnergyA and mCrushEnergyB: its absorbed energy split between the sides in
 /// inverse proportion to their crush stiffness B w (two structures in series carry the same force, and each
 /// stores about F^2 / (2 k)). A side that does not crush takes none and the other all of it.
-void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushSide& inB);
+CRUMPLE_API void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushSide& inB);
 
 /// The crush a collision with inEnergy (J) for this side makes on a body whose deformer is inDeformer; empty
 /// when there is nothing to crush (no closing contact, the energy below G, no vertex in the footprint,
 /// or a depth under the material's minimum).
-std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
+CRUMPLE_API std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
                                            const ffd::FfdDeformer& inDeformer);
 
 /// Applies a plan: each zone's controls take the field at their current positions (the B-spline
 /// quasi-interpolant of the field, exact for its linear parts), through FfdDeformer::ApplyControlDelta with
 /// the material's maximum instantaneous deformation as the step bound. The reports of the zones are merged.
-ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::FfdDeformer& ioDeformer);
+CRUMPLE_API ffd::DentReport ApplyCrushPlan(const CrushPlan& inPlan, double inMaxStep, ffd::FfdDeformer& ioDeformer);
 
 } // namespace crumple::plugin

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/plugin/Ids.h>
 
@@ -20,7 +22,7 @@ enum class ECollisionSide
 
 /// One contact of a collision, on the surfaces, with its impulse. Stored with mBodyA < mBodyB of its
 /// Collision (the contact is flipped on arrival when the engine named the bodies the other way round).
-struct CollisionContact
+struct CRUMPLE_API CollisionContact
 {
     Vec3 mPointOnA = Vec3::Zero();      ///< Surface point on A, world frame at mTime (m)
     Vec3 mPointOnB = Vec3::Zero();      ///< Surface point on B, world frame at mTime (m)
@@ -40,7 +42,7 @@ struct CollisionContact
 };
 
 /// Contacts of one body pair grouped over a time window: one physical impact.
-struct Collision
+struct CRUMPLE_API Collision
 {
     BodyId mBodyA;                  ///< Lower body id of the pair
     BodyId mBodyB;                  ///< Higher body id of the pair

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/Collision.h>
 
@@ -12,7 +14,7 @@ namespace crumple::plugin
 {
 
 /// Settings of a CollisionGrouper.
-struct CollisionGrouperSettings
+struct CRUMPLE_API CollisionGrouperSettings
 {
     double mTimeWindow = 0.05;   ///< A collision stays open this long after its first contact (s), > 0
     double mGroupDistance = 0.5; ///< A contact joins a collision when within this distance of one of its
@@ -22,7 +24,7 @@ struct CollisionGrouperSettings
 /// Groups contacts into collisions (D4MD section 6.2: engines report contacts one step at a time, so the
 /// contacts of one impact arrive over several steps). Collisions close when their window has passed and
 /// come out ordered by (start time, body A, body B, creation sequence): deterministic, never by pointer.
-class CollisionGrouper
+class CRUMPLE_API CollisionGrouper
 {
 public:
     /// Validates the settings.

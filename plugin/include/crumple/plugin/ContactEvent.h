@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/plugin/Ids.h>
 
@@ -14,7 +16,7 @@ namespace crumple::plugin
 /// means the bodies overlap by that much along the normal. Engines that report a single point (ODE's
 /// dContactGeom::pos) put it in both mPointOnA and mPointOnB; SurfaceContactPoints() then moves it onto
 /// each surface by half the depth.
-struct ContactEvent
+struct CRUMPLE_API ContactEvent
 {
     BodyId mBodyA;                   ///< First body
     BodyId mBodyB;                   ///< Second body (may be static: the world)

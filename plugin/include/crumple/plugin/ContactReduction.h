@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/plugin/Collision.h>
 
 #include <cstddef>
@@ -18,6 +20,6 @@ namespace crumple::plugin
 /// their extent. Deterministic: ties go to the lower index, and the kept contacts keep their order.
 /// Sets no larger than inMaxContacts come back unchanged.
 /// @param[in] inMaxContacts >= 9 (the extremes and the deepest)
-std::vector<CollisionContact> ReduceContacts(const std::vector<CollisionContact>& inContacts, std::size_t inMaxContacts);
+CRUMPLE_API std::vector<CollisionContact> ReduceContacts(const std::vector<CollisionContact>& inContacts, std::size_t inMaxContacts);
 
 } // namespace crumple::plugin

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -14,7 +16,7 @@ namespace crumple::plugin
 /// OdeAdapter::CreateConvexBody): a destructible prop's fragment that broke loose (props::FragmentBody), or any
 /// other debris. Its body frame sits at the centre of mass along the principal axes of inertia, the frame
 /// engines need (ODE requires the centre of mass at the body origin, Bullet a diagonal local inertia).
-struct ConvexBodySettings
+struct CRUMPLE_API ConvexBodySettings
 {
     double mMass = 1.0;                    ///< kg, in (0, cMaxBodyMass]
     Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), > 0 each, and
@@ -33,6 +35,6 @@ struct ConvexBodySettings
 /// Checks the settings at an adapter's boundary (finite values within the body-state ranges of BodyState.h,
 /// positive mass and inertia obeying the triangle inequality to within 1e-9 relative, a proper rotation, a hull
 /// that spans a volume); the message names the offending field.
-Status ValidateConvexBodySettings(const ConvexBodySettings& inSettings);
+CRUMPLE_API Status ValidateConvexBodySettings(const ConvexBodySettings& inSettings);
 
 } // namespace crumple::plugin

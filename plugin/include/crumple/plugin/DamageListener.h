@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/DentReport.h>
 #include <crumple/plugin/Collision.h>
 #include <crumple/plugin/Ids.h>
@@ -12,7 +14,7 @@ namespace crumple::plugin
 {
 
 /// What one object did with a dispatched collision.
-struct ObjectDent
+struct CRUMPLE_API ObjectDent
 {
     ObjectId mObject;        ///< The object
     ffd::DentReport mReport; ///< Its dent (all zero when the collision asked for none)
@@ -23,7 +25,7 @@ struct ObjectDent
 ///
 /// Threading: called synchronously from DamageWorld::Update/Flush on the calling thread, in dispatch order
 /// (start time, body ids, creation order). A listener must not call back into the same world.
-class DamageListener
+class CRUMPLE_API DamageListener
 {
 public:
     virtual ~DamageListener() = default;

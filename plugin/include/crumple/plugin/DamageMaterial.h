@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <cstdint>
 
 namespace crumple::plugin
@@ -26,7 +28,7 @@ enum class ECrushModel : std::uint8_t
 /// hitting a rigid wall at 56 km/h crushes 0.55 m, on the line of shared/data/crash/campbell_oracle.csv and
 /// inside its band (0.37-0.74 m). With ECrushModel::ImpulseFactor the factor 2e-5 m/(N s) crushes a 1,200 kg
 /// car hitting a wall at 15 m/s (about 18 kN s) by 0.36 m.
-struct DamageMaterial
+struct CRUMPLE_API DamageMaterial
 {
     double mDeformationFactor = 2.0e-5;   ///< Dent depth per unit impulse (m/(N s)), >= 0: depth = factor |J|,
                                           ///< like a spring turning force into displacement

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/DamageListener.h>
 
@@ -21,7 +23,7 @@ class DamageWorld;
 /// file is written as "<path>.partial" and renamed to <path> by Close(), so an interrupted run never
 /// leaves a file that looks complete. A game replicates damage over a network the same way: send these
 /// records, not meshes.
-class DamageRecorder : public DamageListener
+class CRUMPLE_API DamageRecorder : public DamageListener
 {
 public:
     /// Opens the file and registers with inWorld (which must outlive the recorder or Close it first).

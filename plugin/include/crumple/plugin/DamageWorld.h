@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/BodyState.h>
 #include <crumple/plugin/CampbellCrush.h>
@@ -22,7 +24,7 @@ namespace crumple::plugin
 {
 
 /// What one DamageWorld::Update did.
-struct UpdateReport
+struct CRUMPLE_API UpdateReport
 {
     int mCollisionsDispatched = 0;     ///< Collisions whose window closed
     int mObjectsDented = 0;            ///< Object dents that moved at least one vertex
@@ -38,7 +40,7 @@ struct UpdateReport
 /// collisions costs nothing per body or vertex. All calls are on one thread; the world holds no global state,
 /// so several worlds may run on several threads. Every call that can fail validates all of its input first
 /// and changes nothing when it refuses it.
-class DamageWorld
+class CRUMPLE_API DamageWorld
 {
 public:
     /// Validates the settings and makes the world on the heap. It never moves: adapters, recorders, prop

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/JobSystem.h>
 #include <crumple/plugin/CollisionGrouper.h>
 
@@ -11,7 +13,7 @@ namespace crumple::plugin
 {
 
 /// Settings of a DamageWorld.
-struct DamageWorldSettings
+struct CRUMPLE_API DamageWorldSettings
 {
     CollisionGrouperSettings mGrouping; ///< Time window and distance of a collision
     double mRestitution = 0.1;          ///< Coefficient of restitution of impacts, in [0, 1]; car crashes are

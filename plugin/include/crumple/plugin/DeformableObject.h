@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/plugin/Collision.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
@@ -12,7 +14,7 @@ namespace crumple::plugin
 {
 
 /// A deformable object: material plus an FFD deformer over its render mesh.
-class DeformableObject
+class CRUMPLE_API DeformableObject
 {
 public:
     /// Validates the material and builds the deformer (fitting a zone when none is given).

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/ffd/FfdDeformerSettings.h>
 #include <crumple/ffd/TriangleMesh.h>
 #include <crumple/plugin/DamageMaterial.h>
@@ -13,7 +15,7 @@ namespace crumple::plugin
 
 /// Describes a deformable object: its render mesh, material and FFD zones (D4MD's "deformable object"
 /// with its "geometry deformers"). Everything is in the frame of the body it is attached to.
-struct DeformableObjectSettings
+struct CRUMPLE_API DeformableObjectSettings
 {
     ffd::TriangleMesh mMesh;            ///< Render mesh, body frame (m)
     DamageMaterial mMaterial;           ///< Impulse-to-dent parameters
@@ -35,11 +37,11 @@ struct DeformableObjectSettings
 
 /// Controls per axis for a lattice of inSize (m) with at most inSpacing (m) between controls: ceil(size /
 /// spacing) cells plus 3, clamped to [4, FfdLatticeSettings::cMaxControlsPerAxis].
-std::array<int, 3> ControlCountForSpacing(const Vec3& inSize, double inSpacing);
+CRUMPLE_API std::array<int, 3> ControlCountForSpacing(const Vec3& inSize, double inSpacing);
 
 /// An axis-aligned zone (body frame) enclosing inMesh with a margin of 1 % of its size plus 1 mm.
 /// @param[in] inControlCount controls per axis, each >= 4; all 0: from inSpacing
-ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
+CRUMPLE_API ffd::FfdZoneSettings FitZoneToMesh(const ffd::TriangleMesh& inMesh, const std::array<int, 3>& inControlCount,
                                    double inMaxTotalDeformation, double inSpacing = 0.15);
 
 } // namespace crumple::plugin

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <compare>
 #include <cstdint>
 
@@ -14,7 +16,7 @@ namespace crumple::plugin
 /// (same index, older generation) is refused everywhere. The world hands out the same ids for the same
 /// sequence of calls, so ordering by id (index, then generation) is deterministic across runs (unlike
 /// ordering by pointer).
-struct BodyId
+struct CRUMPLE_API BodyId
 {
     static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
     std::uint32_t mValue = cInvalid; ///< Slot index
@@ -25,7 +27,7 @@ struct BodyId
 };
 
 /// Handle of a DeformableObject in a DamageWorld: a slot index and generation, reused as BodyId's.
-struct ObjectId
+struct CRUMPLE_API ObjectId
 {
     static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
     std::uint32_t mValue = cInvalid; ///< Slot index

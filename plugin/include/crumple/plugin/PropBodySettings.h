@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -24,7 +26,7 @@ namespace crumple::plugin
 /// step); one that holds is hit again at every step the car keeps pushing, so it slows the car over a few
 /// steps as a yielding barrier does. A free prop (a crate) is an ordinary dynamic body.
 /// The body frame sits at the centre of mass along the principal axes of inertia (what engines need).
-struct PropBodySettings
+struct CRUMPLE_API PropBodySettings
 {
     double mMass = 1.0;                    ///< kg, in (0, cMaxBodyMass]
     Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), > 0 each,
@@ -39,10 +41,10 @@ struct PropBodySettings
 
 /// Checks the settings at an adapter's boundary (the ranges of ConvexBodySettings, every piece a hull);
 /// the message names the offending field.
-Status ValidatePropBodySettings(const PropBodySettings& inSettings);
+CRUMPLE_API Status ValidatePropBodySettings(const PropBodySettings& inSettings);
 
 /// Checks a prop body's pieces alone (SetPropPieces): at least one, each at least 4 finite points within
 /// 1e9 m that span a volume.
-Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces);
+CRUMPLE_API Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces);
 
 } // namespace crumple::plugin

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/plugin/DeformableObject.h>
 #include <crumple/plugin/ReplayFormat.h>
 
@@ -13,7 +15,7 @@ namespace crumple::plugin
 {
 
 /// An object rebuilt from a recording, with its replayed damage.
-struct ReplayedObject
+struct CRUMPLE_API ReplayedObject
 {
     ObjectId mObject; ///< Its id in the recorded world
     BodyId mBody;     ///< Its body in the recorded world
@@ -24,13 +26,13 @@ struct ReplayedObject
 /// Rebuilds every object of a recording with the damage it had when recording began, in object id order
 /// (the dispatch order of the live world). Fails, building nothing further, on the first object whose
 /// settings or initial damage the library refuses.
-Result<std::vector<ReplayedObject>> CreateReplayedObjects(const Replay& inReplay);
+CRUMPLE_API Result<std::vector<ReplayedObject>> CreateReplayedObjects(const Replay& inReplay);
 
 /// Applies each recorded collision to ioObjects (from CreateReplayedObjects of the same recording): the
 /// objects of body A, then of body B, in object id order, exactly as DamageWorld dispatched them; an
 /// object created mid-run only takes the collisions recorded after it.
 /// @param[in] inAfterCollision called after each collision with its index and the objects; may be empty
-void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
+CRUMPLE_API void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
                              const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
 
 /// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
@@ -38,7 +40,7 @@ void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>
 /// DamageWorld dispatched them; an object created mid-run only takes the collisions recorded after it. The deformed meshes are bitwise identical to the live run's.
 /// @param[in] inAfterCollision called after each collision with its index and the objects (for a frame
 ///            sequence); may be empty
-Result<std::vector<ReplayedObject>> ReplayDamage(
+CRUMPLE_API Result<std::vector<ReplayedObject>> ReplayDamage(
     const Replay& inReplay,
     const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/Collision.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
@@ -16,7 +18,7 @@ namespace crumple::plugin
 {
 
 /// A deformable object as recorded: enough to rebuild it, including the damage it already had.
-struct RecordedObject
+struct CRUMPLE_API RecordedObject
 {
     ObjectId mObject;                          ///< Its id in the live world (index and generation)
     BodyId mBody;                              ///< The body it is attached to (a later body may reuse its index)
@@ -28,7 +30,7 @@ struct RecordedObject
 /// A record a layer above the core wrote into the recording (DamageRecorder::WriteExtension): the core keeps
 /// its bytes and where it stood among the collisions; the layer that wrote it reads it (crumple::props records
 /// its props this way).
-struct RecordedExtension
+struct CRUMPLE_API RecordedExtension
 {
     std::uint64_t mAfterCollisions = 0; ///< Collisions recorded before it
     std::uint32_t mTag = 0;             ///< The writer's record kind
@@ -36,7 +38,7 @@ struct RecordedExtension
 };
 
 /// A whole recording: objects and collisions, in the order the live world dispatched them.
-struct Replay
+struct CRUMPLE_API Replay
 {
     std::vector<RecordedObject> mObjects;       ///< In the order they were recorded
     std::vector<Collision> mCollisions;         ///< In dispatch order
@@ -63,14 +65,14 @@ enum class EReplayRecord : std::uint8_t
 };
 
 /// The file header (magic and version).
-std::vector<std::byte> EncodeReplayHeader();
+CRUMPLE_API std::vector<std::byte> EncodeReplayHeader();
 /// One framed record.
-std::vector<std::byte> EncodeReplayRecord(EReplayRecord inType, std::span<const std::byte> inPayload);
-std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject);
-std::vector<std::byte> EncodeCollision(const Collision& inCollision);
+CRUMPLE_API std::vector<std::byte> EncodeReplayRecord(EReplayRecord inType, std::span<const std::byte> inPayload);
+CRUMPLE_API std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject);
+CRUMPLE_API std::vector<std::byte> EncodeCollision(const Collision& inCollision);
 
 /// Parses and checks a whole replay file: magic, version, every record's CRC and length, the end record's
 /// counts, finite values, valid meshes. Refused with a message naming the record on any problem.
-Result<Replay> DecodeReplay(std::span<const std::byte> inBytes);
+CRUMPLE_API Result<Replay> DecodeReplay(std::span<const std::byte> inBytes);
 
 } // namespace crumple::plugin

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem/TetSolver.h>
@@ -14,7 +16,7 @@ namespace crumple::props
 {
 
 /// An impulse on one node of a prop.
-struct NodalImpulse
+struct CRUMPLE_API NodalImpulse
 {
     int mNode = 0;                  ///< Current node index
     Vec3 mImpulse = Vec3::Zero();   ///< N s, in the prop's body frame
@@ -33,13 +35,13 @@ struct NodalImpulse
 /// @param[in] inPositions     #N current node positions (m, body frame)
 /// @return impulses in contact order, four per contact; refused when the prop is not in the collision, the
 ///         mesh is empty, or a contact is not finite
-Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
+CRUMPLE_API Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
                                                          std::span<const fem::TetIndices> inElementNodes,
                                                          std::span<const Vec3> inPositions);
 
 /// Applies CollisionNodalImpulses() to a solver (waking it). All or nothing: a refused collision changes
 /// nothing.
-Status ApplyCollision(fem::TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody);
+CRUMPLE_API Status ApplyCollision(fem::TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody);
 
 } // namespace crumple::props

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/Collision.h>
 
@@ -22,7 +24,7 @@ namespace crumple::props
 {
 
 /// True in builds whose crumple::props has the GPU backend (crumple::gpu was built), false elsewhere.
-bool HasGpuBackend();
+CRUMPLE_API bool HasGpuBackend();
 
 /// Where a prop's FEM runs.
 enum class EFemBackend : std::uint8_t
@@ -33,10 +35,10 @@ enum class EFemBackend : std::uint8_t
 };
 
 /// Short name of an EFemBackend, for messages.
-const char* ToString(EFemBackend inBackend);
+CRUMPLE_API const char* ToString(EFemBackend inBackend);
 
 /// How a FemProp chooses its backend.
-struct FemPropSettings
+struct CRUMPLE_API FemPropSettings
 {
     EFemBackend mBackend = EFemBackend::Cpu; ///< The wanted backend
     /// Called once with the reason when a GPU prop falls back to the CPU (no device, or a feature the GPU
@@ -54,7 +56,7 @@ struct FemPropSettings
 ///
 /// Lives in crumple::props, the layer that knows both the damage core (plugin::Collision) and the FEM: the
 /// FEM itself depends on Eigen only.
-class FemProp
+class CRUMPLE_API FemProp
 {
 public:
     /// @param ioProvider  shared device provider of the scene; may be nullptr for CPU-only scenes

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetFragment.h>
 #include <crumple/plugin/BodyState.h>
@@ -13,7 +15,7 @@ namespace crumple::props
 {
 
 /// A loose fragment of a prop as a rigid body (FragmentBody).
-struct FragmentRigidBody
+struct CRUMPLE_API FragmentRigidBody
 {
     plugin::ConvexBodySettings mBody;      ///< For an engine adapter's CreateConvexBody
     double mNodalKineticEnergy = 0.0;      ///< The fragment's nodes' kinetic energy, world frame (J)
@@ -41,7 +43,7 @@ struct FragmentRigidBody
 /// @param[in] inVelocities #N node velocities, prop frame (m/s)
 /// @param[in] inMasses     #N lumped node masses (kg)
 /// @param[in] inPropBody   the prop body's state (its transform; its velocities unless static)
-Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::span<const Vec3> inPositions,
+CRUMPLE_API Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::span<const Vec3> inPositions,
                                        std::span<const Vec3> inVelocities, std::span<const double> inMasses,
                                        const plugin::BodyState& inPropBody);
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/plugin/PropBodySettings.h>
@@ -14,7 +16,7 @@ namespace crumple::props
 {
 
 /// A prop made into an engine body: its mesh moved into the body's frame, and the body for an adapter.
-struct PropBody
+struct CRUMPLE_API PropBody
 {
     fem::TetMesh mMesh;             ///< The prop's mesh in the body frame: build the FemProp from it
     plugin::PropBodySettings mBody; ///< For BulletAdapter::CreatePropBody / OdeAdapter::CreatePropBody
@@ -36,7 +38,7 @@ struct PropBody
 ///                        that can break away, so a piece that leaves takes its part of the shape with it
 /// @return refused with a message for bad arguments, a non-rotation pose or a prop the engines cannot hold
 ///         (PropBodySettings' ranges)
-Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, const Transform& inPose, bool inHeld,
+CRUMPLE_API Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, const Transform& inPose, bool inHeld,
                               double inCellSize);
 
 /// The collision shape of a prop's elements as convex pieces: each element goes to the cube of edge
@@ -48,7 +50,7 @@ Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, cons
 /// @param[in] inElements   #T elements' node indices
 /// @param[in] inLeftOut    #T flags, or empty
 /// @param[in] inCellSize   cube edge (m), finite and > 0
-std::vector<std::vector<Vec3>> PropCollisionPieces(std::span<const Vec3> inPositions, std::span<const fem::TetIndices> inElements,
+CRUMPLE_API std::vector<std::vector<Vec3>> PropCollisionPieces(std::span<const Vec3> inPositions, std::span<const fem::TetIndices> inElements,
                                                    std::span<const std::uint8_t> inLeftOut, double inCellSize);
 
 } // namespace crumple::props

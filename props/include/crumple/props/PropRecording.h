@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/Ids.h>
@@ -31,7 +33,7 @@ enum class EPropRecord : std::uint32_t
 /// the solver's at that moment (positions, velocities, anchors, external forces, gravity) before its first
 /// step: a stepped solver also carries warm starts (element rotations) and sleep and energy history that a
 /// rebuilt one would not have, so MakePropSetup refuses it.
-struct PropSetup
+struct CRUMPLE_API PropSetup
 {
     plugin::BodyId mBody;                  ///< The body the prop is bound to
     EFemBackend mBackend = EFemBackend::Cpu; ///< The backend it ran on live
@@ -48,18 +50,18 @@ struct PropSetup
 };
 
 /// The setup of a CPU solver bound to inBody; refused once the solver has stepped or solved statics.
-Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, const fem::TetSolver& inSolver);
+CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, const fem::TetSolver& inSolver);
 
 /// Bytes of a PropSetup (little-endian) and back; decoding checks sizes and finite values, and the mesh,
 /// material and settings are validated again when the solver is rebuilt (RebuildProp).
-std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup);
-Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes);
+CRUMPLE_API std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup);
+CRUMPLE_API Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes);
 
 /// A CPU solver in the recorded state (a GPU prop is replayed on the CPU: close, not bitwise).
-Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup);
+CRUMPLE_API Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup);
 
 /// A prop rebuilt from a recording and replayed: its final solver.
-struct ReplayedProp
+struct CRUMPLE_API ReplayedProp
 {
     plugin::BodyId mBody;
     EFemBackend mRecordedBackend = EFemBackend::Cpu;
@@ -70,6 +72,6 @@ struct ReplayedProp
 /// recorded collisions with its body (props::ApplyCollision) and the recorded steps, in the recorded order.
 /// CPU props end bitwise as they did live. Refused with a message naming the record on a corrupt or
 /// inconsistent prop record.
-Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay);
+CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay);
 
 } // namespace crumple::props

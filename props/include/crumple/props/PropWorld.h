@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/DamageListener.h>
 #include <crumple/plugin/DamageRecorder.h>
@@ -19,7 +21,7 @@ namespace crumple::props
 {
 
 /// A prop's handle in its PropWorld: index in order of AddProp.
-struct PropId
+struct CRUMPLE_API PropId
 {
     static constexpr std::uint32_t cInvalid = 0xFFFFFFFFu;
     std::uint32_t mValue = cInvalid; ///< Index in creation order
@@ -29,7 +31,7 @@ struct PropId
 };
 
 /// What one PropWorld::Step did.
-struct PropStepReport
+struct CRUMPLE_API PropStepReport
 {
     int mStepped = 0;    ///< Props that integrated (awake)
     int mSleeping = 0;   ///< Props that were asleep and did nothing (no element work)
@@ -38,7 +40,7 @@ struct PropStepReport
 };
 
 /// A piece of a prop that broke loose, handed to the game as a rigid body (PropWorld::TakeLooseFragments).
-struct LooseFragment
+struct CRUMPLE_API LooseFragment
 {
     PropId mProp;                 ///< The prop it broke from
     std::vector<int> mElements;   ///< The prop's elements it holds: the game stops drawing them there
@@ -61,7 +63,7 @@ struct LooseFragment
 /// props bit for bit without an engine.
 ///
 /// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
-class PropWorld final : public plugin::DamageListener
+class CRUMPLE_API PropWorld final : public plugin::DamageListener
 {
 public:
     /// Registers with ioWorld, which must outlive this object.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 
@@ -21,7 +23,7 @@ enum class EView
 
 /// A perspective pinhole camera in the world frame (m, right-handed). The image's up is mUp projected onto
 /// the image plane; +x of the image is (mTarget - mEye) x mUp.
-struct Camera
+struct CRUMPLE_API Camera
 {
     Vec3 mEye{3.0, -3.0, 2.0};   ///< Eye position, world frame (m)
     Vec3 mTarget = Vec3::Zero(); ///< Point looked at, world frame (m), != mEye

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/render/EColorMap.h>
 
@@ -14,7 +16,7 @@ namespace crumple::render
 ///   colour = albedo * (mAmbient + mKeyIntensity * max(n.l, 0) + mHeadlightIntensity * max(n.v, 0)),
 /// clamped to 1, with n the interpolated vertex normal (flipped towards the eye, so open panels are lit on
 /// both sides), l the key light direction and v the direction to the eye. Colours are RGB(A) in [0, 1].
-struct RenderSettings
+struct CRUMPLE_API RenderSettings
 {
     /// Flat background RGBA; alpha 0 gives a transparent PNG
     std::array<float, 4> mBackgroundColor{1.0f, 1.0f, 1.0f, 1.0f};

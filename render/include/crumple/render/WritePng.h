@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 
 #include <cstdint>
@@ -19,7 +21,7 @@ namespace crumple::render
 /// @param[in] inWidth  image width (pixels), > 0
 /// @param[in] inHeight image height (pixels), > 0
 /// @param[in] inRgba   inWidth * inHeight * 4 bytes, rows top to bottom (as MeshRenderer::Render gives them)
-Status WritePng(const std::filesystem::path& inPath, int inWidth, int inHeight,
+CRUMPLE_API Status WritePng(const std::filesystem::path& inPath, int inWidth, int inHeight,
                 std::span<const std::uint8_t> inRgba);
 
 } // namespace crumple::render

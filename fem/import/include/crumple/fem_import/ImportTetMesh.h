@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem_import/TetgenSettings.h>
@@ -15,6 +17,6 @@ namespace crumple::fem
 /// open or corrupt file is refused before tetgen runs. Positions in metres as stored in the file.
 /// @param[in] inPath      OBJ, PLY, STL, glTF, ... file of a closed surface
 /// @param[in] inSettings  how tetgen runs
-Result<TetMesh> ImportTetMesh(const std::filesystem::path& inPath, const TetgenSettings& inSettings = {});
+CRUMPLE_API Result<TetMesh> ImportTetMesh(const std::filesystem::path& inPath, const TetgenSettings& inSettings = {});
 
 } // namespace crumple::fem

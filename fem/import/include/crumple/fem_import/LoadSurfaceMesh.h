@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/SurfaceMesh.h>
 
@@ -33,6 +35,6 @@ namespace crumple::fem
 /// @param[in] inPath    the file
 /// @param[in] inTimeout seconds the parse may take before it is stopped, > 0
 /// @return #V joined vertex positions (m) and #F triangles (winding as in the file)
-Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double inTimeout = 30.0);
+CRUMPLE_API Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double inTimeout = 30.0);
 
 } // namespace crumple::fem

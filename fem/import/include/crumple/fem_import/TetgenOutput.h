@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetMesh.h>
 
@@ -12,7 +14,7 @@ namespace crumple::fem
 {
 
 /// What tetgen wrote: its nodes and its tetrahedra (not yet checked against the surface it was given).
-struct TetgenOutput
+struct CRUMPLE_API TetgenOutput
 {
     std::vector<Vec3> mNodes;      ///< In tetgen's order (m)
     std::vector<TetIndices> mTets; ///< Indices into mNodes, from 0
@@ -23,6 +25,6 @@ struct TetgenOutput
 /// starts a comment. Refused with EError::CorruptData naming the file and the line: a bad header, too few
 /// lines, a malformed number, indices that do not count up, a node out of range, more than
 /// TetMesh::cMaxCount entries. Tetrahedralize reads tetgen's files with it.
-Result<TetgenOutput> ParseTetgenOutput(std::string_view inNodeText, std::string_view inElementText);
+CRUMPLE_API Result<TetgenOutput> ParseTetgenOutput(std::string_view inNodeText, std::string_view inElementText);
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <filesystem>
 #include <string>
 
@@ -15,7 +17,7 @@ namespace crumple::fem
 /// MIT; linking libtet would put every program that links Crumple under the AGPL. Running the unmodified
 /// tetgen executable as a separate process, exchanging plain files, keeps the two works separate, so Crumple
 /// neither links nor ships TetGen: a user installs it where wanted, and only then is import available.
-struct TetgenSettings
+struct CRUMPLE_API TetgenSettings
 {
     /// Smallest accepted nonzero mMaxRadiusEdgeRatio. TetGen proves termination above 2.0; in practice it
     /// terminates down to about 1.1, and below that it may refine forever.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/SurfaceMesh.h>
 #include <crumple/fem/TetMesh.h>
@@ -37,6 +39,6 @@ namespace crumple::fem
 /// @param[in] inSurface   closed surface, #V positions (m) and #F triangles (orientation not needed)
 /// @param[in] inSettings  program, quality and size bounds
 /// @return the tetrahedral mesh, #N >= #V nodes
-Result<TetMesh> Tetrahedralize(const SurfaceMesh& inSurface, const TetgenSettings& inSettings = {});
+CRUMPLE_API Result<TetMesh> Tetrahedralize(const SurfaceMesh& inSurface, const TetgenSettings& inSettings = {});
 
 } // namespace crumple::fem

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/gpu/EglContext.h>
 
@@ -18,7 +20,7 @@ struct ComputeGlFunctions;
 /// scene without a GPU prop never makes a context.
 ///
 /// Threading: one thread at a time; every GPU object makes the context current before its GL calls.
-class ComputeDevice
+class CRUMPLE_API ComputeDevice
 {
 public:
     /// Creates the context (OpenGL 4.3 core at least: compute shaders and shader storage buffers) and loads the
@@ -48,7 +50,7 @@ private:
 /// Creates the shared ComputeDevice on the first Acquire() and hands the same one to every later caller; a
 /// failure is remembered (with its reason) and not retried, so a machine without EGL pays for one attempt.
 /// Owned by the game (one per scene or world): not a global.
-class ComputeDeviceProvider
+class CRUMPLE_API ComputeDeviceProvider
 {
 public:
     explicit ComputeDeviceProvider(const EglContextSettings& inSettings = {}) : mSettings(inSettings) {}

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
 #include <crumple/gpu/ComputeDevice.h>
@@ -15,7 +17,7 @@ namespace crumple::gpu
 {
 
 /// A linked GLSL compute program. Move-only; deletes its program with the device current.
-class ComputeProgram
+class CRUMPLE_API ComputeProgram
 {
 public:
     /// Compiles and links inSource (a complete "#version 430" compute shader). A compile or link failure

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/TetMesh.h>
@@ -50,7 +52,7 @@ namespace crumple::gpu
 /// Not on the GPU, refused by Create with a clear message: implicit Euler and plasticity. Divergence is
 /// detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A refused input changes
 /// nothing.
-class GpuTetSolver
+class CRUMPLE_API GpuTetSolver
 {
 public:
     /// Validates like fem::TetSolver::Create and uploads the mesh. inDevice comes from a ComputeDeviceProvider.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/gpu/ComputeDevice.h>
 
@@ -14,7 +16,7 @@ namespace crumple::gpu
 
 /// A shader storage buffer on a ComputeDevice (std430 layout is the shader's business). Move-only; freed
 /// with the device current. Sizes in bytes.
-class StorageBuffer
+class CRUMPLE_API StorageBuffer
 {
 public:
     /// Allocates inBytes (> 0) and fills them from inData, or leaves them zero when inData is nullptr.

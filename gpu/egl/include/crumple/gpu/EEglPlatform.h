@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 namespace crumple::gpu
 {
 
@@ -14,6 +16,6 @@ enum class EEglPlatform
 };
 
 /// Short name of a platform, for messages and logs.
-const char* ToString(EEglPlatform inPlatform);
+CRUMPLE_API const char* ToString(EEglPlatform inPlatform);
 
 } // namespace crumple::gpu

@@ -16,7 +16,7 @@ namespace crumple::gpu
 struct GlFunctions;
 
 /// An OpenGL version as reported by the driver (GL_MAJOR_VERSION, GL_MINOR_VERSION).
-struct GlVersion
+struct CRUMPLE_API GlVersion
 {
     int mMajor = 0; ///< Major version, e.g. 4
     int mMinor = 0; ///< Minor version, e.g. 5

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
@@ -27,7 +29,7 @@ namespace crumple::bullet
 {
 
 /// Settings of a BulletAdapter.
-struct BulletAdapterSettings
+struct CRUMPLE_API BulletAdapterSettings
 {
     double mMaxSeparation = 0.05; ///< Manifold points further apart than this (m) are not reported. Points with a
                                   ///< small gap are reported as speculative contacts (their gap/dt of approach
@@ -35,7 +37,7 @@ struct BulletAdapterSettings
 };
 
 /// What the adapter did in the last internal sub-step.
-struct BulletStepStats
+struct CRUMPLE_API BulletStepStats
 {
     int mBodiesSnapshotted = 0; ///< Active mapped bodies whose pre-solve state was taken
     int mContactsReported = 0;  ///< Manifold points submitted
@@ -52,7 +54,7 @@ struct BulletStepStats
 /// (with the game's own world user pointer restored around the call); the destructor puts them back.
 /// Bodies are mapped in a table, so the game keeps btCollisionObject user pointers for itself. Several
 /// adapters on several worlds are independent. Not thread-safe: one adapter per world, stepped on one thread.
-class BulletAdapter
+class CRUMPLE_API BulletAdapter
 {
 public:
     /// Attaches to inWorld. Both worlds must outlive the adapter.

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/plugin/BodyState.h>
 
 class btCollisionObject;
@@ -12,6 +14,6 @@ namespace crumple::bullet
 /// The state a Baraff impulse needs, read from a Bullet collision object (a btRigidBody or a static
 /// btCollisionObject). The body frame is Bullet's world transform of the object, i.e. the centre-of-mass
 /// frame for rigid bodies: deformable meshes attached to it are given in that frame.
-plugin::BodyState BulletBodyState(const btCollisionObject& inObject);
+CRUMPLE_API plugin::BodyState BulletBodyState(const btCollisionObject& inObject);
 
 } // namespace crumple::bullet

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/base/Result.h>
 #include <crumple/plugin/ConvexBodySettings.h>
 #include <crumple/plugin/DamageWorld.h>
@@ -19,7 +21,7 @@ namespace crumple::ode
 {
 
 /// What the adapter did in the last step.
-struct OdeStepStats
+struct CRUMPLE_API OdeStepStats
 {
     int mBodiesSnapshotted = 0;   ///< Bodies whose pre-solve state was taken (only bodies in contact)
     int mContactsReported = 0;    ///< Contacts submitted
@@ -37,7 +39,7 @@ struct OdeStepStats
 /// Geoms without a body (the static environment) map to one static damage body unless registered with
 /// AddStaticGeom. Bodies are mapped in a table: the game keeps ODE's user data pointers. Single-threaded,
 /// one adapter per ODE world; no global state.
-class OdeAdapter
+class CRUMPLE_API OdeAdapter
 {
 public:
     /// Creates the adapter and the static environment body in inDamage (which must outlive it).

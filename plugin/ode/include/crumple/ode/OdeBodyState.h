@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Export.h>
+
 #include <crumple/plugin/BodyState.h>
 
 #include <ode/common.h>
@@ -11,9 +13,9 @@ namespace crumple::ode
 
 /// The state a Baraff impulse needs, read from an ODE body. ODE keeps a body's centre of mass at its
 /// origin, so the body frame is the centre-of-mass frame: deformable meshes attached to it are given in it.
-plugin::BodyState OdeBodyState(dBodyID inBody);
+CRUMPLE_API plugin::BodyState OdeBodyState(dBodyID inBody);
 
 /// The state of a static geom (no body): static, at the geom's position and rotation.
-plugin::BodyState OdeStaticGeomState(dGeomID inGeom);
+CRUMPLE_API plugin::BodyState OdeStaticGeomState(dGeomID inGeom);
 
 } // namespace crumple::ode
