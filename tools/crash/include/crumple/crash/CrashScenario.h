@@ -59,8 +59,9 @@ struct VehicleSpec
     int mMeshUpAxis = -1;
     /// A mesh's edges longer than this are split at their midpoints (m), >= 0; 0: the file's triangles as
     /// they are. A long thin triangle cannot follow a pocket that varies along it and turns over although the
-    /// dent folds nothing (ffd::RefineLongEdges); the default is two thirds of the default control spacing.
-    double mMeshMaxEdge = 0.1;
+    /// dent folds nothing (ffd::RefineLongEdges); the default is the default control spacing, so that no
+    /// triangle spans more than a lattice cell, the scale the dent field varies on.
+    double mMeshMaxEdge = 0.15;
     Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box (m); a mesh's collision box is its
                                        ///< bounding box
     double mMass = 1200.0;             ///< kg, > 0
