@@ -132,22 +132,21 @@ Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
     return mCpu->Step(inDeltaTime);
 }
 
-Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody)
+Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
+                               std::vector<NodalImpulse>* outApplied)
 {
-    if (mCpu)
-        return props::ApplyCollision(*mCpu, inCollision, inPropBody);
-#if defined(CRUMPLE_PROPS_WITH_GPU)
     std::vector<Vec3> positions;
-    mGpu->ReadPositions(positions);
-    Result<std::vector<NodalImpulse>> impulses =
-        CollisionNodalImpulses(inCollision, inPropBody, mGpu->GetElementNodes(), positions);
+    ReadPositions(positions);
+    Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions);
     if (impulses.HasError())
         return impulses.GetError();
-    // Node indices come from the solver's own connectivity and impulses are finite: none can be refused.
+    // Node indices come from the solver's own connectivity and impulses are finite: none can be refused, so
+    // the collision applies in full.
     for (const NodalImpulse& impulse : impulses.Get())
-        if (Status status = mGpu->ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
+        if (Status status = ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
             return status;
-#endif
+    if (outApplied != nullptr)
+        outApplied->insert(outApplied->end(), impulses.Get().begin(), impulses.Get().end());
     return Status::Ok();
 }
 

@@ -46,7 +46,7 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     // prop's FEM must hear of each hit before the next step, so its collisions are dispatched every step
     if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
         (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
-    mProps.push_back({inBody, std::move(ioProp), {}, 0, ~std::uint64_t{0}, {}});
+    mProps.push_back({inBody, std::move(ioProp), {}, 0, ~std::uint64_t{0}, {}, {}, Vec3::Zero()});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
@@ -134,6 +134,7 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
             ++report.mStepped;
         report.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
         report.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
+        UpdateContactVelocity(mProps[index]);
     }
     return report;
 }
@@ -264,6 +265,29 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces));
 }
 
+void PropWorld::UpdateContactVelocity(Prop& ioProp) const
+{
+    ioProp.mContactVelocity = Vec3::Zero();
+    if (ioProp.mHits.empty())
+        return;
+    // intent: the struck nodes' mean velocity, each weighted by the size of the impulse it took (body frame)
+    std::vector<Vec3> velocities;
+    ioProp.mProp.ReadVelocities(velocities);
+    Vec3 sum = Vec3::Zero();
+    double weight = 0.0;
+    for (const NodalImpulse& hit : ioProp.mHits)
+    {
+        const double share = hit.mImpulse.norm();
+        sum += share * velocities[static_cast<std::size_t>(hit.mNode)];
+        weight += share;
+    }
+    ioProp.mHits.clear();
+    const plugin::BodyState* state = mWorld->GetBodyState(ioProp.mBody);
+    if (!(weight > 0.0) || state == nullptr)
+        return;
+    ioProp.mContactVelocity = state->mTransform.mRotation * (sum / weight);
+}
+
 void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)
 {
     (void)inDents;
@@ -274,7 +298,8 @@ void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<cons
         if (!prop.IsValid())
             continue;
         ++mCollisions;
-        if (Status status = mProps[prop.mValue].mProp.ApplyCollision(inCollision, body); status.HasError())
+        Prop& hit = mProps[prop.mValue];
+        if (Status status = hit.mProp.ApplyCollision(inCollision, body, &hit.mHits); status.HasError())
         {
             if (mRefused++ == 0)
                 mFirstRefusal = status;

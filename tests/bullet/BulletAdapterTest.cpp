@@ -414,6 +414,26 @@ TEST_CASE("Bullet: a held prop body stays at its pose without gravity, and its p
         CHECK(body->getAngularVelocity().length() == 0.0f);
     }
 
+    // Given the velocity of the material a car struck, it is back at its pose moving so; refused, changing
+    // nothing, for a body that is not held or a velocity that is not finite.
+    const Vec3 struck(4.0, 0.5, 0.0);
+    REQUIRE(adapter->SetHeldVelocity(id, struck));
+    for (int step = 0; step < 3; ++step)
+    {
+        world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+        const btVector3 position = body->getCenterOfMassPosition();
+        CHECK((Vec3(position.x(), position.y(), position.z()) - settings.mPosition).norm() <= cFloat);
+        const btVector3 v = body->getLinearVelocity();
+        CHECK((Vec3(v.x(), v.y(), v.z()) - struck).norm() <= cFloat);
+        CHECK(body->getAngularVelocity().length() == 0.0f);
+    }
+    CHECK(adapter->SetHeldVelocity(id, Vec3(std::nan(""), 0.0, 0.0)).GetError().mCode == EError::NonFinite);
+    CHECK(adapter->SetHeldVelocity(id, Vec3(2.0e6, 0.0, 0.0)).GetError().mCode == EError::OutOfRange);
+    CHECK(adapter->SetHeldVelocity(BodyId{}, struck).GetError().mCode == EError::OutOfRange);
+    REQUIRE(adapter->SetHeldVelocity(id, Vec3::Zero()));
+    world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+    CHECK(body->getLinearVelocity().length() == 0.0f);
+
     // New pieces replace the shape; bad ones, and bodies that are not prop bodies, are refused.
     PropBodySettings one = settings;
     one.mPieces.pop_back();

@@ -106,6 +106,7 @@ FenceRun DriveThrough(double inSpeed, bool inBreakable)
     {
         scene.Step();
         REQUIRE(props->Step(settings.mTimeStep));
+        REQUIRE(scene.GetAdapter().SetHeldVelocity(fence_body, props->GetContactVelocity(fence_prop)));
         const std::vector<LooseFragment> loose = props->TakeLooseFragments(cMinBodyMass).Get(); // a local: Get() of a temporary dangles
         for (const LooseFragment& piece : loose)
         {
@@ -150,9 +151,10 @@ std::string Describe(const FenceRun& inRun)
 }
 
 // inPiecesComeLoose: whether the hit sheds whole pieces within the run (Bullet's does; in ODE the fence
-// cracks but holds together: see the known limits in the README).
+// cracks but holds together: see the known limits in the README). inImpulseMatchesMomentum: whether the
+// engine takes from the car what Crumple's impulses say (Bullet's does).
 template <class Scene>
-void CheckFence(const char* inEngine, bool inPiecesComeLoose)
+void CheckFence(const char* inEngine, bool inPiecesComeLoose, bool inImpulseMatchesMomentum)
 {
     const double speed = 64.0 / 3.6;
     const FenceRun wood = DriveThrough<Scene>(speed, true);
@@ -178,20 +180,27 @@ void CheckFence(const char* inEngine, bool inPiecesComeLoose)
     }
     CHECK(unbreakable.mBrokenLinks == 0);
     CHECK(unbreakable.mLoose == 0);
-    // Not checked (README, known limits): how much of the car's speed each takes. The held body has the
-    // whole prop's mass, so the engine takes from the car at each step what setting the whole fence moving
-    // would, and the FEM gets that impulse on the few nodes the car touches: a light fence shatters and
-    // slows the car more than a real one, and an unbreakable one bends out of the way.
+    // The held body moves as fast as the planks the car struck (SetHeldVelocity, GetContactVelocity): in
+    // Bullet the car then loses what Crumple's impulses say, within 3 % (1.2 % measured; at rest each step the
+    // body took 13,100 N s from the car instead of 2,470). Not checked (README, known limits): the unbreakable
+    // fence, whose bent planks keep pushing the car between contacts (14 %), ODE, whose contact pushes the car
+    // out of the body put back over it (4.7x), and how much of the car's speed each should take: the held
+    // body still has the whole prop's mass in each contact.
+    if (inImpulseMatchesMomentum)
+    {
+        const double change = 1200.0 * (wood.mSpeedAfter - wood.mSpeedBefore);
+        CHECK(std::abs(change - wood.mCarImpulse) <= 0.03 * std::abs(change));
+    }
 }
 
 } // namespace
 
 TEST_CASE("Bullet: a car breaks through a held wooden fence, whose shape follows its FEM", "[bullet][props]")
 {
-    CheckFence<BulletWallCrash>("Bullet", true);
+    CheckFence<BulletWallCrash>("Bullet", true, true);
 }
 
 TEST_CASE("ODE: a car breaks through a held wooden fence, whose shape follows its FEM", "[ode][props]")
 {
-    CheckFence<OdeWallCrash>("ODE", false);
+    CheckFence<OdeWallCrash>("ODE", false, false);
 }

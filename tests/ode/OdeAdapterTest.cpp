@@ -291,6 +291,24 @@ TEST_CASE("ODE: a held prop body stays at its pose without gravity, and its piec
             CHECK(Vec3(v[0], v[1], v[2]).norm() + Vec3(w[0], w[1], w[2]).norm() == 0.0);
         }
 
+        // Given the velocity of the material a car struck, it is back at its pose moving so; refused, changing
+        // nothing, for a body that is not held or a velocity that is not finite.
+        const Vec3 struck(4.0, 0.5, 0.0);
+        REQUIRE(adapter->SetHeldVelocity(id, struck));
+        for (int step = 0; step < 3; ++step)
+        {
+            dWorldStep(world, 1.0 / 60.0);
+            adapter->AfterStep(1.0 / 60.0);
+            const dReal* position = dBodyGetPosition(body);
+            CHECK((Vec3(position[0], position[1], position[2]) - settings.mPosition).norm() <= 1.0e-12);
+            const dReal* v = dBodyGetLinearVel(body);
+            CHECK((Vec3(v[0], v[1], v[2]) - struck).norm() == 0.0);
+        }
+        CHECK(adapter->SetHeldVelocity(id, Vec3(std::nan(""), 0.0, 0.0)).GetError().mCode == EError::NonFinite);
+        CHECK(adapter->SetHeldVelocity(id, Vec3(2.0e6, 0.0, 0.0)).GetError().mCode == EError::OutOfRange);
+        CHECK(adapter->SetHeldVelocity(BodyId{}, struck).GetError().mCode == EError::OutOfRange);
+        REQUIRE(adapter->SetHeldVelocity(id, Vec3::Zero()));
+
         // New pieces replace the geoms; bad ones, and bodies that are not prop bodies, are refused.
         PropBodySettings one = settings;
         one.mPieces.pop_back();

@@ -206,6 +206,20 @@ Status BulletAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector
     return Status::Ok();
 }
 
+Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    if (owned == mOwned.end() || !owned->mHeld)
+        return MakeError(EError::OutOfRange, "SetHeldVelocity: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+    if (!IsFinite(inVelocity) || !(inVelocity.norm() <= plugin::cMaxBodySpeed))
+        return MakeError(IsFinite(inVelocity) ? EError::OutOfRange : EError::NonFinite,
+                         "SetHeldVelocity: the velocity must be finite and at most 1e6 m/s");
+    owned->mHeldVelocity = btVector3(btScalar(inVelocity.x()), btScalar(inVelocity.y()), btScalar(inVelocity.z()));
+    if (!inVelocity.isZero(0.0))
+        owned->mRigidBody->activate(true);
+    return Status::Ok();
+}
+
 void BulletAdapter::HoldProps()
 {
     const btVector3 zero(0, 0, 0);
@@ -217,9 +231,9 @@ void BulletAdapter::HoldProps()
         body.setWorldTransform(owned.mHome);
         body.setInterpolationWorldTransform(owned.mHome);
         owned.mMotion->setWorldTransform(owned.mHome);
-        body.setLinearVelocity(zero);
+        body.setLinearVelocity(owned.mHeldVelocity);
         body.setAngularVelocity(zero);
-        body.setInterpolationLinearVelocity(zero);
+        body.setInterpolationLinearVelocity(owned.mHeldVelocity);
         body.setInterpolationAngularVelocity(zero);
         body.clearForces();
         (void)mDamage.ForgetImpacts(owned.mBody); // its velocity was set here, not by the contact solve

@@ -172,6 +172,20 @@ Status OdeAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector<Ve
     return Status::Ok();
 }
 
+Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    if (owned == mOwned.end() || !owned->mHeld)
+        return MakeError(EError::OutOfRange, "SetHeldVelocity: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+    if (!IsFinite(inVelocity) || !(inVelocity.norm() <= plugin::cMaxBodySpeed))
+        return MakeError(IsFinite(inVelocity) ? EError::OutOfRange : EError::NonFinite,
+                         "SetHeldVelocity: the velocity must be finite and at most 1e6 m/s");
+    owned->mHeldVelocity = inVelocity;
+    if (!inVelocity.isZero(0.0))
+        dBodyEnable(owned->mOdeBody);
+    return Status::Ok();
+}
+
 void OdeAdapter::HoldProps()
 {
     for (const OwnedBody& owned : mOwned)
@@ -179,7 +193,7 @@ void OdeAdapter::HoldProps()
         if (!owned.mHeld || !dBodyIsEnabled(owned.mOdeBody))
             continue;
         SetPose(owned.mOdeBody, owned.mHomePosition, owned.mHomeOrientation);
-        dBodySetLinearVel(owned.mOdeBody, 0.0, 0.0, 0.0);
+        dBodySetLinearVel(owned.mOdeBody, owned.mHeldVelocity.x(), owned.mHeldVelocity.y(), owned.mHeldVelocity.z());
         dBodySetAngularVel(owned.mOdeBody, 0.0, 0.0, 0.0);
         dBodySetForce(owned.mOdeBody, 0.0, 0.0, 0.0);
         dBodySetTorque(owned.mOdeBody, 0.0, 0.0, 0.0);

@@ -18,7 +18,9 @@ namespace crumple::plugin
 /// (SetPropPieces) while the rest stands.
 ///
 /// A held prop (one anchored to the ground: a fence's posts, a wall's facing) is a dynamic body that the
-/// adapter puts back at its pose, at rest, after every engine step, without gravity. Within a step a car
+/// adapter puts back at its pose after every engine step, without gravity, at rest or moving as fast as the
+/// material the last step struck (the adapters' SetHeldVelocity with props::PropWorld::GetContactVelocity:
+/// then a member the car already pushes at its own speed takes no new impulse). Within a step a car
 /// meets it as a free body of the prop's mass: the engine's contact takes from the car the momentum it
 /// takes to set that mass moving, and Crumple computes the same impulse (from the pre-solve velocities and
 /// this mass) and hands it to the prop's FEM, where it cracks what it breaks. A prop that breaks lets the
@@ -36,7 +38,7 @@ struct CRUMPLE_API PropBodySettings
     /// The collision shape, body frame (m): the union of each piece's convex hull (Bullet) or bounding box
     /// along the body axes (ODE). At least one piece; each at least 4 points that span a volume.
     std::vector<std::vector<Vec3>> mPieces;
-    bool mHeld = true; ///< Put back at its pose, at rest, after every engine step (above); false: a free body
+    bool mHeld = true; ///< Put back at its pose after every engine step (above); false: a free body
 };
 
 /// Checks the settings at an adapter's boundary (the ranges of ConvexBodySettings, every piece a hull);

@@ -5,6 +5,7 @@
 #include <crumple/base/Export.h>
 
 #include <crumple/fem/TetSolver.h>
+#include <crumple/props/CollisionImpulses.h>
 #include <crumple/plugin/Collision.h>
 
 #include <cstdint>
@@ -76,8 +77,9 @@ public:
     Status SetGravity(const Vec3& inGravity);
     Result<fem::TetStepResult> Step(double inDeltaTime);
     /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses) to the prop whose body is
-    /// inPropBody; all or nothing.
-    Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody);
+    /// inPropBody; all or nothing. outApplied (may be null) receives the nodal impulses applied (appended).
+    Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
+                          std::vector<NodalImpulse>* outApplied = nullptr);
     /// The pieces now (fem::TetFragment), as the CPU solver reports them
     std::vector<fem::TetFragment> ComputeFragments() const;
     /// Current node positions (m), #N (a readback on the GPU)

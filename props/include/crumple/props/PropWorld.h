@@ -124,6 +124,16 @@ public:
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mPiecesTaken : 0;
     }
+    /// How fast the prop's material that the last step's collisions struck is moving after the step (world
+    /// frame, m/s): the mean velocity of the nodes that took their impulses, weighted by each node's share;
+    /// zero when nothing struck it (or for an unknown prop). A held prop body stands for the whole prop but a
+    /// car meets only the members it touches: give this to the adapter's SetHeldVelocity after each Step, so
+    /// that the engine's next contact sees the struck planks moving as the FEM moves them (a plank already
+    /// pushed to the car's speed takes no new impulse; one its posts hold back takes what holds it back).
+    Vec3 GetContactVelocity(PropId inProp) const
+    {
+        return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactVelocity : Vec3::Zero();
+    }
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
     /// world validated; kept for diagnosis with the first refusal's reason)
     std::uint64_t GetCollisionCount() const { return mCollisions; }
@@ -143,9 +153,13 @@ private:
         std::uint64_t mPiecesTaken = 0;   ///< Pieces handed over
         std::uint64_t mShapeRevision = ~std::uint64_t{0}; ///< mPiecesTaken at the last TakeChangedShape
         std::vector<Vec3> mShapePositions; ///< Node positions at the last TakeChangedShape
+        std::vector<NodalImpulse> mHits;   ///< Nodal impulses of the collisions since the last Step
+        Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
+    // mContactVelocity from the hits since the last step and the nodes' velocities now; clears the hits.
+    void UpdateContactVelocity(Prop& ioProp) const;
     // GetCollisionPieces of inProp at inPositions.
     static std::vector<std::vector<Vec3>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;

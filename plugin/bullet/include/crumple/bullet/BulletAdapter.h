@@ -102,6 +102,12 @@ public:
     /// shape, so no contact with a piece that left survives. Mass and inertia stay. Refused, changing
     /// nothing, for a body that is not a prop body of this adapter or for invalid pieces.
     Status SetPropPieces(plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces);
+    /// Sets the velocity a held prop body gets when it is put back at its pose after each step (world frame,
+    /// m/s; zero until set): how fast the prop's struck material moves (props::PropWorld::GetContactVelocity),
+    /// so that the next step's contacts meet the members a car already pushes at their own speed, not at rest.
+    /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a velocity that is
+    /// not finite or beyond plugin::cMaxBodySpeed.
+    Status SetHeldVelocity(plugin::BodyId inBody, const Vec3& inVelocity);
     /// Simulated time (s) the adapter has seen: the sum of internal sub-steps.
     double GetTime() const { return mTime; }
     const BulletStepStats& GetLastStepStats() const { return mLastStats; }
@@ -145,6 +151,7 @@ private:
         std::unique_ptr<btRigidBody> mRigidBody;
         bool mHeld = false;
         btTransform mHome; ///< A held body's pose
+        btVector3 mHeldVelocity{0, 0, 0}; ///< A held body's velocity at its pose (SetHeldVelocity)
     };
     std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody and CreatePropBody made, in creation order
     /// Adds a body made here to both worlds and keeps it; on refusal takes it out again

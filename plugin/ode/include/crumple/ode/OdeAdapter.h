@@ -75,6 +75,12 @@ public:
     /// in the same space. Mass and inertia stay. Refused, changing nothing, for a body that is not a prop body
     /// of this adapter or for invalid pieces.
     Status SetPropPieces(plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces);
+    /// Sets the velocity a held prop body gets when it is put back at its pose after each step (world frame,
+    /// m/s; zero until set): how fast the prop's struck material moves (props::PropWorld::GetContactVelocity),
+    /// so that the next step's contacts meet the members a car already pushes at their own speed, not at rest.
+    /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a velocity that is
+    /// not finite or beyond plugin::cMaxBodySpeed.
+    Status SetHeldVelocity(plugin::BodyId inBody, const Vec3& inVelocity);
     ~OdeAdapter();
     OdeAdapter(const OdeAdapter&) = delete;
     OdeAdapter& operator=(const OdeAdapter&) = delete;
@@ -115,6 +121,7 @@ private:
         bool mHeld = false;
         Vec3 mHomePosition = Vec3::Zero();      ///< A held body's pose
         Mat3 mHomeOrientation = Mat3::Identity();
+        Vec3 mHeldVelocity = Vec3::Zero(); ///< A held body's velocity at its pose (SetHeldVelocity)
     };
     std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody and CreatePropBody made, in creation order
     void HoldProps();
