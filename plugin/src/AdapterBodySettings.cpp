@@ -97,6 +97,15 @@ Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces)
     return Status::Ok();
 }
 
+Status ValidateHeldVelocity(const Vec3& inVelocity)
+{
+    if (!IsFinite(inVelocity))
+        return MakeError(EError::NonFinite, "SetHeldVelocity: the velocity must be finite");
+    if (!(inVelocity.norm() <= cMaxBodySpeed))
+        return MakeError(EError::OutOfRange, "SetHeldVelocity: the velocity must be at most 1e6 m/s");
+    return Status::Ok();
+}
+
 Status ValidatePropBodySettings(const PropBodySettings& inSettings)
 {
     if (Status body = ValidateRigidBody("PropBodySettings", inSettings.mMass, inSettings.mPrincipalInertia,

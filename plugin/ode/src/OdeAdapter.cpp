@@ -177,9 +177,8 @@ Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
     const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
     if (owned == mOwned.end() || !owned->mHeld)
         return MakeError(EError::OutOfRange, "SetHeldVelocity: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
-    if (!IsFinite(inVelocity) || !(inVelocity.norm() <= plugin::cMaxBodySpeed))
-        return MakeError(IsFinite(inVelocity) ? EError::OutOfRange : EError::NonFinite,
-                         "SetHeldVelocity: the velocity must be finite and at most 1e6 m/s");
+    if (Status valid = plugin::ValidateHeldVelocity(inVelocity); !valid)
+        return valid;
     owned->mHeldVelocity = inVelocity;
     if (!inVelocity.isZero(0.0))
         dBodyEnable(owned->mOdeBody);

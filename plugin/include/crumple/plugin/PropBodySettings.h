@@ -49,4 +49,7 @@ CRUMPLE_API Status ValidatePropBodySettings(const PropBodySettings& inSettings);
 /// 1e9 m that span a volume.
 CRUMPLE_API Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces);
 
+/// Checks a held body's velocity (SetHeldVelocity): finite, at most cMaxBodySpeed (m/s).
+CRUMPLE_API Status ValidateHeldVelocity(const Vec3& inVelocity);
+
 } // namespace crumple::plugin
