@@ -10,6 +10,7 @@
 #include <ode/ode.h>
 
 #include <memory>
+#include <vector>
 
 namespace crumple::common
 {
@@ -63,6 +64,7 @@ private:
     dBodyID mTarget = nullptr;
     plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
+    std::vector<dBodyID> mHeldBodies; ///< Held prop bodies: their contacts get no error reduction (NearCallback)
 };
 
 } // namespace crumple::common
