@@ -69,8 +69,9 @@ struct FenceRun
     double mCarImpulse = 0.0;    ///< Crumple's impulses on the car over the run, along x (N s)
 };
 
+// inMatchVelocity: the held body is put back moving as fast as the planks the car struck (false: at rest).
 template <class Scene>
-FenceRun DriveThrough(double inSpeed, bool inBreakable)
+FenceRun DriveThrough(double inSpeed, bool inBreakable, bool inMatchVelocity = true)
 {
     EngineCrashSettings settings;
     settings.mDriveOnly = true;
@@ -106,7 +107,8 @@ FenceRun DriveThrough(double inSpeed, bool inBreakable)
     {
         scene.Step();
         REQUIRE(props->Step(settings.mTimeStep));
-        REQUIRE(scene.GetAdapter().SetHeldVelocity(fence_body, props->GetContactVelocity(fence_prop)));
+        if (inMatchVelocity)
+            REQUIRE(scene.GetAdapter().SetHeldVelocity(fence_body, props->GetContactVelocity(fence_prop)));
         const std::vector<LooseFragment> loose = props->TakeLooseFragments(cMinBodyMass).Get(); // a local: Get() of a temporary dangles
         for (const LooseFragment& piece : loose)
         {
@@ -151,10 +153,9 @@ std::string Describe(const FenceRun& inRun)
 }
 
 // inPiecesComeLoose: whether the hit sheds whole pieces within the run (Bullet's does; in ODE the fence
-// cracks but holds together: see the known limits in the README). inImpulseMatchesMomentum: whether the
-// engine takes from the car what Crumple's impulses say (Bullet's does).
+// cracks but holds together: see the known limits in the README).
 template <class Scene>
-void CheckFence(const char* inEngine, bool inPiecesComeLoose, bool inImpulseMatchesMomentum)
+void CheckFence(const char* inEngine, bool inPiecesComeLoose)
 {
     const double speed = 64.0 / 3.6;
     const FenceRun wood = DriveThrough<Scene>(speed, true);
@@ -180,28 +181,28 @@ void CheckFence(const char* inEngine, bool inPiecesComeLoose, bool inImpulseMatc
     }
     CHECK(unbreakable.mBrokenLinks == 0);
     CHECK(unbreakable.mLoose == 0);
-    // The held body moves as fast as the planks the car struck (SetHeldVelocity, GetContactVelocity): in
-    // Bullet the car then loses what Crumple's impulses say, within 3 % (1.2 % measured; at rest each step the
-    // body took 13,100 N s from the car instead of 2,470). Not checked (README, known limits): the unbreakable
-    // fence, whose bent planks keep pushing the car between contacts (14 %), ODE, where the car loses 1.38
-    // times what Crumple counts (4.7 times while the scene's contacts with a held body had error reduction),
-    // and how much of the car's speed each should take: the held body still has the whole prop's mass in
-    // each contact.
-    if (inImpulseMatchesMomentum)
-    {
-        const double change = 1200.0 * (wood.mSpeedAfter - wood.mSpeedBefore);
-        CHECK(std::abs(change - wood.mCarImpulse) <= 0.03 * std::abs(change));
-    }
+    // Put back at rest after every step, the fence met the car afresh at every step and took far more from it
+    // (Bullet 13,100 against 2,470 N s, ODE 3,860 against 2,680): planks already moving at the car's speed
+    // take no new impulse.
+    const FenceRun at_rest = DriveThrough<Scene>(speed, true, false);
+    INFO(inEngine << ", wood put back at rest: " << Describe(at_rest));
+    CHECK(wood.mFenceImpulse < at_rest.mFenceImpulse);
+    CHECK(wood.mSpeedAfter > at_rest.mSpeedAfter);
+    // Not checked (README, known limits): how much of the car's speed each takes, and whether the engine
+    // takes from the car what Crumple's impulses say. With the held body moving as fast as the planks the car
+    // struck (SetHeldVelocity, GetContactVelocity) Bullet's car loses 1.01 times what Crumple counts with the
+    // scene's friction 0.5 but 0.91 times without friction, ODE's 1.38 and 1.25 times: a check at either
+    // would pass by the friction's luck. The held body still has the whole prop's mass in each contact.
 }
 
 } // namespace
 
 TEST_CASE("Bullet: a car breaks through a held wooden fence, whose shape follows its FEM", "[bullet][props]")
 {
-    CheckFence<BulletWallCrash>("Bullet", true, true);
+    CheckFence<BulletWallCrash>("Bullet", true);
 }
 
 TEST_CASE("ODE: a car breaks through a held wooden fence, whose shape follows its FEM", "[ode][props]")
 {
-    CheckFence<OdeWallCrash>("ODE", false, false);
+    CheckFence<OdeWallCrash>("ODE", false);
 }
