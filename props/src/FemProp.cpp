@@ -135,8 +135,11 @@ Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
 Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
                                std::vector<NodalImpulse>* outApplied)
 {
-    std::vector<Vec3> positions;
-    ReadPositions(positions);
+    // intent: the CPU solver's positions in place; the GPU's read back
+    std::vector<Vec3> read_back;
+    if (!mCpu)
+        ReadPositions(read_back);
+    const std::span<const Vec3> positions = mCpu ? std::span<const Vec3>(mCpu->GetPositions()) : std::span<const Vec3>(read_back);
     Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions);
     if (impulses.HasError())
         return impulses.GetError();

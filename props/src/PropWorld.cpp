@@ -46,7 +46,7 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     // prop's FEM must hear of each hit before the next step, so its collisions are dispatched every step
     if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
         (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
-    mProps.push_back({inBody, std::move(ioProp), {}, 0, ~std::uint64_t{0}, {}, {}, Vec3::Zero()});
+    mProps.push_back(Prop{.mBody = inBody, .mProp = std::move(ioProp)});
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
@@ -271,8 +271,12 @@ void PropWorld::UpdateContactVelocity(Prop& ioProp) const
     if (ioProp.mHits.empty())
         return;
     // intent: the struck nodes' mean velocity, each weighted by the size of the impulse it took (body frame)
-    std::vector<Vec3> velocities;
-    ioProp.mProp.ReadVelocities(velocities);
+    // intent: the CPU solver's velocities in place; the GPU's read back
+    std::vector<Vec3> read_back;
+    const fem::TetSolver* cpu = ioProp.mProp.GetCpuSolver();
+    if (cpu == nullptr)
+        ioProp.mProp.ReadVelocities(read_back);
+    const std::vector<Vec3>& velocities = cpu != nullptr ? cpu->GetVelocities() : read_back;
     Vec3 sum = Vec3::Zero();
     double weight = 0.0;
     for (const NodalImpulse& hit : ioProp.mHits)

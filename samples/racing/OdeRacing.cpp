@@ -52,10 +52,7 @@ struct OdeScene
         const int count = dCollide(inGeom1, inGeom2, static_cast<int>(contacts.size()), &contacts[0].geom, sizeof(dContact));
         if (count <= 0)
             return;
-        std::array<dContactGeom, 8> geoms{};
-        for (int i = 0; i < count; ++i)
-            geoms[static_cast<std::size_t>(i)] = contacts[static_cast<std::size_t>(i)].geom;
-        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span(geoms.data(), static_cast<std::size_t>(count))); // Crumple
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count))); // Crumple
         for (int i = 0; i < count; ++i)
         {
             dContact& contact = contacts[static_cast<std::size_t>(i)];

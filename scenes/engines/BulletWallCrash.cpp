@@ -206,13 +206,7 @@ void BulletWallCrash::Step()
 
 EngineCrashResult BulletWallCrash::Run()
 {
-    const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
-    for (int i = 0; i < steps; ++i)
-        Step();
-    mDamage.Flush();
-    if (mAdapter == nullptr)
-        return {};
-    return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
+    return RunEngineCrash(*this, mSettings, mAdapter != nullptr);
 }
 
 } // namespace crumple::common

@@ -6,6 +6,7 @@
 #include <crumple/plugin/DamageWorld.h>
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
@@ -109,6 +110,21 @@ public:
     int mLimitedDents = 0; ///< Dents a bound limited (ffd::DentReport::IsLimited), any object
     std::vector<plugin::Collision> mLog; ///< Every collision, in dispatch order
 };
+
+/// Steps inScene (BulletWallCrash, OdeWallCrash) for its settings' duration, flushes its damage world and
+/// settles the result from the scene's counter (an empty result for a bare scene: inAttached false).
+template <class Scene>
+EngineCrashResult RunEngineCrash(Scene& ioScene, const EngineCrashSettings& inSettings, bool inAttached)
+{
+    const int steps = static_cast<int>(std::lround(inSettings.mDuration / inSettings.mTimeStep));
+    for (int i = 0; i < steps; ++i)
+        ioScene.Step();
+    ioScene.GetDamage().Flush();
+    if (!inAttached)
+        return {};
+    return SummarizeCrash(ioScene.GetDamage(), ioScene.GetCarObject(), ioScene.GetCounter().mCollisions,
+                          ioScene.GetCounter().mTotalImpulse);
+}
 
 /// The car's render mesh and deformable-object settings shared by every engine scene.
 plugin::DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings);

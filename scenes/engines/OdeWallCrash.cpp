@@ -132,11 +132,8 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     if (count <= 0)
         return;
     // The one extra call a game adds to its near callback.
-    std::array<dContactGeom, 8> geoms{};
-    for (int i = 0; i < count; ++i)
-        geoms[static_cast<std::size_t>(i)] = contacts[static_cast<std::size_t>(i)].geom;
     if (scene->mAdapter != nullptr)
-        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span(geoms.data(), static_cast<std::size_t>(count)));
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count)));
 
     dBodyID b1 = dGeomGetBody(inGeom1), b2 = dGeomGetBody(inGeom2);
     for (int i = 0; i < count; ++i)
@@ -199,13 +196,7 @@ void OdeWallCrash::Step()
 
 EngineCrashResult OdeWallCrash::Run()
 {
-    const int steps = static_cast<int>(std::lround(mSettings.mDuration / mSettings.mTimeStep));
-    for (int i = 0; i < steps; ++i)
-        Step();
-    mDamage.Flush();
-    if (mAdapter == nullptr)
-        return {};
-    return SummarizeCrash(mDamage, mCarObject, mCounter.mCollisions, mCounter.mTotalImpulse);
+    return RunEngineCrash(*this, mSettings, mAdapter != nullptr);
 }
 
 } // namespace crumple::common

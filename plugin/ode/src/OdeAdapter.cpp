@@ -269,14 +269,27 @@ BodyId OdeAdapter::BodyOfGeom(dGeomID inGeom)
 
 void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts)
 {
-    if (inContacts.empty())
+    CollectContacts(inGeom1, inGeom2, inContacts.data(), inContacts.size(), sizeof(dContactGeom));
+}
+
+void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContact> inContacts)
+{
+    CollectContacts(inGeom1, inGeom2, inContacts.empty() ? nullptr : &inContacts.front().geom, inContacts.size(), sizeof(dContact));
+}
+
+void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContactGeom* inFirst, std::size_t inCount,
+                                 std::size_t inStride)
+{
+    if (inCount == 0)
         return;
     const BodyId a = BodyOfGeom(inGeom1);
     const BodyId b = BodyOfGeom(inGeom2);
     if (!a.IsValid() || !b.IsValid() || a == b)
         return;
-    for (const dContactGeom& contact : inContacts)
+    for (std::size_t i = 0; i < inCount; ++i)
     {
+        const dContactGeom& contact =
+            *reinterpret_cast<const dContactGeom*>(reinterpret_cast<const unsigned char*>(inFirst) + i * inStride);
         ContactEvent event;
         event.mBodyA = a;
         event.mBodyB = b;

@@ -287,14 +287,14 @@ int main(int argc, char** argv)
         slurm.mExecutable = std::filesystem::read_symlink("/proc/self/exe", self_error);
         if (self_error)
             slurm.mExecutable = std::filesystem::absolute(argv[0], self_error);
-        if (Status status = WriteSlurmSweep(scenario_path, sweep, sweep_spec.Get(), slurm, emit_slurm); status.HasError())
+        Result<std::size_t> tasks = WriteSlurmSweep(scenario_path, sweep, sweep_spec.Get(), slurm, emit_slurm);
+        if (tasks.HasError())
         {
-            std::fprintf(stderr, "crumple-crash: %s\n", status.GetError().mMessage.c_str());
+            std::fprintf(stderr, "crumple-crash: %s\n", tasks.GetError().mMessage.c_str());
             return cExitBadInput;
         }
         std::printf("crumple-crash: %zu cases as a Slurm array of %zu tasks; submit with %s\n", sweep_spec.Get().GetCaseCount(),
-                    (sweep_spec.Get().GetCaseCount() + slurm.mCasesPerTask - 1) / slurm.mCasesPerTask,
-                    (emit_slurm / "submit.sh").string().c_str());
+                    tasks.Get(), (emit_slurm / "submit.sh").string().c_str());
         return cExitPass;
     }
     if (out.empty())

@@ -72,19 +72,20 @@ Status ValidateSlurmSweepSettings(const SlurmSweepSettings& inSettings)
     return Status::Ok();
 }
 
-Status WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::string& inSweepText, const CrashSweepSpec& inSpec,
+Result<std::size_t> WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::string& inSweepText, const CrashSweepSpec& inSpec,
                        const SlurmSweepSettings& inSettings, const std::filesystem::path& inFolder)
 {
     if (Status valid = ValidateSlurmSweepSettings(inSettings); valid.HasError())
-        return valid;
+        return valid.GetError();
     const std::size_t total = inSpec.GetCaseCount();
     if (total == 0)
         return MakeError(EError::InvalidArgument, "the sweep has no cases");
+    std::error_code folder_error, scenario_error;
+    const std::filesystem::path folder = std::filesystem::absolute(inFolder, folder_error);
+    const std::filesystem::path scenario = std::filesystem::absolute(inScenarioFile, scenario_error);
+    if (folder_error || scenario_error)
+        return MakeError(EError::IoError, "cannot make the paths absolute: " + (folder_error ? folder_error : scenario_error).message());
     std::error_code error;
-    const std::filesystem::path folder = std::filesystem::absolute(inFolder, error);
-    const std::filesystem::path scenario = std::filesystem::absolute(inScenarioFile, error);
-    if (error)
-        return MakeError(EError::IoError, "cannot make the paths absolute: " + error.message());
     // intent: a fresh cases folder (a stale row must not enter the merge) and the logs folder
     std::filesystem::remove_all(folder / "cases", error);
     std::filesystem::create_directories(folder / "cases", error);
@@ -106,7 +107,7 @@ Status WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::s
     array += "exec " + command + " --sweep-task \"$SLURM_ARRAY_TASK_ID\" --cases-per-task " +
              std::to_string(inSettings.mCasesPerTask) + "\n";
     if (Status status = WriteScript(folder / "sweep_array.sbatch", array); status.HasError())
-        return status;
+        return status.GetError();
 
     std::string merge = header;
     merge += "#SBATCH --job-name=crumple-sweep-merge\n";
@@ -114,7 +115,7 @@ Status WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::s
     merge += CommonDirectives(inSettings);
     merge += "exec " + command + " --sweep-merge\n";
     if (Status status = WriteScript(folder / "sweep_merge.sbatch", merge); status.HasError())
-        return status;
+        return status.GetError();
 
     const std::string submit = "#!/bin/sh\n"
                                "# Submits the sweep's array job, then its merge once every task has ended (afterany: a\n"
@@ -125,7 +126,9 @@ Status WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::s
                                "merge=$(sbatch --parsable --dependency=afterany:\"$array\" " +
                                ShellQuote((folder / "sweep_merge.sbatch").string()) + ")\n"
                                "echo \"$array ${merge%%;*}\"\n";
-    return WriteScript(folder / "submit.sh", submit);
+    if (Status status = WriteScript(folder / "submit.sh", submit); status.HasError())
+        return status.GetError();
+    return tasks;
 }
 
 } // namespace crumple::crash

@@ -149,11 +149,11 @@ private:
     {
         plugin::BodyId mBody;
         FemProp mProp;
-        std::vector<std::uint8_t> mTaken; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
+        std::vector<std::uint8_t> mTaken{}; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
         std::uint64_t mPiecesTaken = 0;   ///< Pieces handed over
         std::uint64_t mShapeRevision = ~std::uint64_t{0}; ///< mPiecesTaken at the last TakeChangedShape
-        std::vector<Vec3> mShapePositions; ///< Node positions at the last TakeChangedShape
-        std::vector<NodalImpulse> mHits;   ///< Nodal impulses of the collisions since the last Step
+        std::vector<Vec3> mShapePositions{}; ///< Node positions at the last TakeChangedShape
+        std::vector<NodalImpulse> mHits{};   ///< Nodal impulses of the collisions since the last Step
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.

@@ -92,6 +92,9 @@ public:
     /// Takes the contacts dCollide returned for (inGeom1, inGeom2). Contacts involving an unregistered body
     /// are ignored. ODE's normal points from geom 2 into geom 1, which is Crumple's B-to-A convention.
     void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts);
+    /// The same for the dContact array a near callback gave dCollide (its geoms at stride sizeof(dContact)),
+    /// so the callback passes its contacts as they are, with no copy of their geoms.
+    void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContact> inContacts);
 
     /// Submits the step's contacts and dispatches closed collisions; call after dWorldStep/dWorldQuickStep.
     void AfterStep(double inTimeStep);
@@ -101,6 +104,8 @@ public:
     plugin::DamageWorld& GetDamageWorld() { return mDamage; }
 
 private:
+    // OnCollide's work: inCount contact geoms from inFirst, inStride bytes apart (as dCollide writes them).
+    void CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContactGeom* inFirst, std::size_t inCount, std::size_t inStride);
     OdeAdapter(plugin::DamageWorld& inDamage, plugin::BodyId inEnvironment) : mDamage(inDamage), mEnvironment(inEnvironment) {}
     plugin::BodyId BodyOfGeom(dGeomID inGeom);
 

@@ -37,7 +37,8 @@ Status ValidateSlurmSweepSettings(const SlurmSweepSettings& inSettings);
 /// Task logs go to logs/. The cases folder is emptied, so a stale row cannot enter the merge.
 /// @param[in] inScenarioFile the scenario file (made absolute)
 /// @param[in] inSweepText    the --sweep text, passed to every task as it is (inSpec is its parse)
-Status WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::string& inSweepText,
+/// @return the number of array tasks
+Result<std::size_t> WriteSlurmSweep(const std::filesystem::path& inScenarioFile, const std::string& inSweepText,
                        const CrashSweepSpec& inSpec, const SlurmSweepSettings& inSettings,
                        const std::filesystem::path& inFolder);
 
