@@ -60,6 +60,7 @@ set(crash_malformed
     "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
     "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
     "huge_speed|/impact/speed_km_h: must be in"
+    "negative_mesh_max_edge|/vehicle/mesh_max_edge_m: must be >= 0"
     "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"
     "preset_not_regular|not a regular file"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
