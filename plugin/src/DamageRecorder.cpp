@@ -67,10 +67,15 @@ void DamageRecorder::RecordNewObjects()
     }
 }
 
-void DamageRecorder::OnBeforeCollision(const Collision&)
+void DamageRecorder::OnBeforeCollision(const Collision& inCollision)
 {
-    if (mFile != nullptr)
-        RecordNewObjects();
+    if (mFile == nullptr)
+        return;
+    RecordNewObjects();
+    // The collision is final here (the world shared its crush energy before the call); recorded now rather
+    // than when its dents land, so deferred dents change nothing in the file (class comment).
+    Write(EncodeReplayRecord(EReplayRecord::Collision, EncodeCollision(inCollision)));
+    ++mCollisions;
 }
 
 Status DamageRecorder::WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload)
@@ -86,12 +91,8 @@ Status DamageRecorder::WriteExtension(std::uint32_t inTag, std::span<const std::
     return mStatus;
 }
 
-void DamageRecorder::OnCollision(const Collision& inCollision, std::span<const ObjectDent>)
+void DamageRecorder::OnCollision(const Collision&, std::span<const ObjectDent>)
 {
-    if (mFile == nullptr)
-        return;
-    Write(EncodeReplayRecord(EReplayRecord::Collision, EncodeCollision(inCollision)));
-    ++mCollisions;
 }
 
 Status DamageRecorder::Close()
@@ -100,7 +101,7 @@ Status DamageRecorder::Close()
         return mStatus;
     if (mWorld != nullptr)
     {
-        mWorld->LandDents(); // deferred dents in flight are collisions of this recording
+        mWorld->LandDents(); // the recorded collisions' deferred dents land before the recording ends
         mWorld->RemoveListener(this);
     }
     ByteWriter end;

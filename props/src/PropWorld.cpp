@@ -134,7 +134,7 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
             ++report.mStepped;
         report.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
         report.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
-        UpdateContactVelocity(mProps[index]);
+        UpdateContactVelocity(mProps[index], fem::HasEvent(events, fem::ETetStepEvent::Sleeping));
     }
     return report;
 }
@@ -265,12 +265,22 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces));
 }
 
-void PropWorld::UpdateContactVelocity(Prop& ioProp) const
+void PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping) const
 {
     ioProp.mContactVelocity = Vec3::Zero();
-    if (ioProp.mHits.empty())
+    // The latest hits stand until new ones arrive: collisions reach the prop when the world dispatches them,
+    // not at every engine step, and between them the struck material goes on moving (or is held back).
+    if (!ioProp.mHits.empty())
+    {
+        ioProp.mStruck.swap(ioProp.mHits);
+        ioProp.mHits.clear();
+    }
+    if (inSleeping)
+        ioProp.mStruck.clear();
+    if (ioProp.mStruck.empty())
         return;
-    // intent: the struck nodes' mean velocity, each weighted by the size of the impulse it took (body frame)
+    // intent: the struck nodes' mean velocity, each weighted by the size of the impulse it took (body frame),
+    // leaving out nodes of pieces handed over (fixed, they no longer move with the prop)
     // intent: the CPU solver's velocities in place; the GPU's read back
     std::vector<Vec3> read_back;
     const fem::TetSolver* cpu = ioProp.mProp.GetCpuSolver();
@@ -278,23 +288,33 @@ void PropWorld::UpdateContactVelocity(Prop& ioProp) const
         ioProp.mProp.ReadVelocities(read_back);
     const std::vector<Vec3>& velocities = cpu != nullptr ? cpu->GetVelocities() : read_back;
     Vec3 sum = Vec3::Zero();
+    Vec3 impulse = Vec3::Zero();
     double weight = 0.0;
-    for (const NodalImpulse& hit : ioProp.mHits)
+    for (const NodalImpulse& hit : ioProp.mStruck)
     {
+        const auto node = static_cast<std::size_t>(hit.mNode);
+        if (node < ioProp.mTaken.size() && ioProp.mTaken[node] != 0)
+            continue;
         const double share = hit.mImpulse.norm();
-        sum += share * velocities[static_cast<std::size_t>(hit.mNode)];
+        sum += share * velocities[node];
+        impulse += hit.mImpulse;
         weight += share;
     }
-    ioProp.mHits.clear();
     const plugin::BodyState* state = mWorld->GetBodyState(ioProp.mBody);
-    if (!(weight > 0.0) || state == nullptr)
+    if (!(weight > 0.0) || !(impulse.norm() > 0.0) || state == nullptr)
         return;
-    ioProp.mContactVelocity = state->mTransform.mRotation * (sum / weight);
+    // intent: only along the direction the material was struck. The held body stands for the whole prop: moved
+    // sideways or up with a timber flung so, it would carry the car with it.
+    const Vec3 direction = impulse.normalized();
+    ioProp.mContactVelocity = state->mTransform.mRotation * (direction.dot(sum / weight) * direction);
 }
 
-void PropWorld::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)
+void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::ObjectDent>)
 {
-    (void)inDents;
+}
+
+void PropWorld::OnBeforeCollision(const plugin::Collision& inCollision)
+{
     // Both bodies may carry a prop (a car hitting a fence carries none; two crates hitting each other two).
     for (const plugin::BodyId body : {inCollision.mBodyA, inCollision.mBodyB})
     {

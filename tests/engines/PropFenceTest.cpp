@@ -152,10 +152,8 @@ std::string Describe(const FenceRun& inRun)
            std::to_string(1200.0 * (inRun.mSpeedAfter - inRun.mSpeedBefore)) + " N s";
 }
 
-// inPiecesComeLoose: whether the hit sheds whole pieces within the run (Bullet's does; in ODE the fence
-// cracks but holds together: see the known limits in the README).
 template <class Scene>
-void CheckFence(const char* inEngine, bool inPiecesComeLoose)
+void CheckFence(const char* inEngine)
 {
     const double speed = 64.0 / 3.6;
     const FenceRun wood = DriveThrough<Scene>(speed, true);
@@ -174,15 +172,12 @@ void CheckFence(const char* inEngine, bool inPiecesComeLoose)
     // Wood cracks and sheds pieces that become engine bodies and leave its shape; the same fence that
     // cannot crack does neither.
     CHECK(wood.mBrokenLinks > 0);
-    if (inPiecesComeLoose)
-    {
-        CHECK(wood.mLoose > 0);
-        CHECK(wood.mBodiesMade > 0);
-    }
+    CHECK(wood.mLoose > 0);
+    CHECK(wood.mBodiesMade > 0);
     CHECK(unbreakable.mBrokenLinks == 0);
     CHECK(unbreakable.mLoose == 0);
     // Put back at rest after every step, the fence met the car afresh at every step and took far more from it
-    // (Bullet 13,100 against 2,470 N s, ODE 3,860 against 2,680): planks already moving at the car's speed
+    // (Bullet 13,090 against 2,830 N s, ODE 3,860 against 2,640): planks already moving at the car's speed
     // take no new impulse.
     const FenceRun at_rest = DriveThrough<Scene>(speed, true, false);
     INFO(inEngine << ", wood put back at rest: " << Describe(at_rest));
@@ -190,19 +185,20 @@ void CheckFence(const char* inEngine, bool inPiecesComeLoose)
     CHECK(wood.mSpeedAfter > at_rest.mSpeedAfter);
     // Not checked (README, known limits): how much of the car's speed each takes, and whether the engine
     // takes from the car what Crumple's impulses say. With the held body moving as fast as the planks the car
-    // struck (SetHeldVelocity, GetContactVelocity) Bullet's car loses 1.01 times what Crumple counts with the
-    // scene's friction 0.5 but 0.91 times without friction, ODE's 1.38 and 1.25 times: a check at either
-    // would pass by the friction's luck. The held body still has the whole prop's mass in each contact.
+    // struck, along the strike (SetHeldVelocity from the next step on, GetContactVelocity), Bullet's car ends
+    // at 15.39 m/s and loses 1.01 times what Crumple counts, ODE's at 15.49 m/s and 1.04 times; but the
+    // held body still has the whole prop's mass in each contact, and how close the engine comes depends on
+    // the scene's friction (Crumple's impulse is frictionless).
 }
 
 } // namespace
 
 TEST_CASE("Bullet: a car breaks through a held wooden fence, whose shape follows its FEM", "[bullet][props]")
 {
-    CheckFence<BulletWallCrash>("Bullet", true);
+    CheckFence<BulletWallCrash>("Bullet");
 }
 
 TEST_CASE("ODE: a car breaks through a held wooden fence, whose shape follows its FEM", "[ode][props]")
 {
-    CheckFence<OdeWallCrash>("ODE", false);
+    CheckFence<OdeWallCrash>("ODE");
 }

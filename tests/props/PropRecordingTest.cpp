@@ -3,6 +3,7 @@
 // Props in a damage recording: a run with a prop that cracks, replayed without an engine, ends bit for bit.
 #include "BrittlePanel.h"
 #include "ScratchDirectory.h"
+#include "ThreadJobSystem.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
@@ -108,4 +109,68 @@ TEST_CASE("Props in a recording: a prop that cannot be replayed exactly is refus
     bad.mTag = 0x12345678u;
     replay.mExtensions = {bad};
     CHECK(ReplayProps(replay).IsValid());
+}
+
+namespace
+{
+
+// What a run of PropRecordingTest's two hits, with the world updated every step, leaves: the prop's
+// positions and the recording's bytes.
+struct SteppedRun
+{
+    std::vector<Vec3> mPositions;
+    std::vector<std::byte> mRecording;
+    int mBrokenLinks = 0;
+};
+
+SteppedRun RunWithUpdates(const std::filesystem::path& inPath, bool inDeferDents)
+{
+    const common::ThreadJobSystem jobs(2);
+    DamageWorldSettings settings;
+    settings.mJobs = inDeferDents ? &jobs.Get() : nullptr;
+    settings.mDeferDents = inDeferDents;
+    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(inPath, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, BrittlePanel()).Get();
+    // A game's frame: contacts at the first and the 13th step, the world's Update, then the props' step.
+    const double dt = 1.0 / 120.0;
+    for (int step = 0; step < 24; ++step)
+    {
+        const double time = step * dt;
+        if (step == 0 || step == 12)
+        {
+            const int hit = step / 12;
+            REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0 + 5.0 * hit)));
+            REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
+                fixture.FrontContact(0.3 - 0.5 * hit, 0.2, time), fixture.FrontContact(-0.4, -0.1, time)}));
+        }
+        fixture.mWorld.Update(time);
+        REQUIRE(props->Step(dt).IsValid());
+    }
+    fixture.mWorld.Flush();
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    return {solver.GetPositions(), ReadFileBytes(inPath).Get(), solver.GetBrokenLinkCount()};
+}
+
+} // namespace
+
+TEST_CASE("Props in a recording: deferred dents hand the props the same hits at the same Update, and record the same bytes",
+          "[props][replay]")
+{
+    // A prop takes a collision when the world dispatches it, not when the car's dent lands an Update later;
+    // the recorder writes it then too. So a game that defers dents gets the same props and the same file.
+    const SteppedRun inline_run = RunWithUpdates(common::ScratchDirectory() / "props_inline.crumple", false);
+    const SteppedRun deferred = RunWithUpdates(common::ScratchDirectory() / "props_deferred.crumple", true);
+    REQUIRE(inline_run.mBrokenLinks > 0); // the hits reached the prop and cracked it
+    CHECK(deferred.mBrokenLinks == inline_run.mBrokenLinks);
+    CHECK(deferred.mPositions == inline_run.mPositions);
+    CHECK(deferred.mRecording == inline_run.mRecording);
+    // And the recording replays to the live prop.
+    const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(deferred.mRecording).Get()).Get();
+    REQUIRE(replayed.size() == 1u);
+    CHECK(replayed[0].mSolver.GetPositions() == deferred.mPositions);
 }

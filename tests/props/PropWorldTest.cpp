@@ -6,6 +6,7 @@
 #include "WorldFixture.h"
 
 #include <crumple/fem/TetGrid.h>
+#include <crumple/props/CollisionImpulses.h>
 #include <crumple/props/PropWorld.h>
 
 #include <catch2/catch.hpp>
@@ -119,6 +120,78 @@ TEST_CASE("PropWorld: a prop at rest falls asleep and then costs nothing per ste
     fixture.mWorld.Flush();
     CHECK(props->Step(1.0 / 60.0).Get().mStepped == 1);
     CHECK(solver.GetElementWorkCount() > work);
+}
+
+namespace
+{
+
+// The last collision a world dispatched.
+struct LastCollision : DamageListener
+{
+    Collision mCollision;
+    void OnCollision(const Collision& inCollision, std::span<const ObjectDent>) override { mCollision = inCollision; }
+};
+
+// The impulse-weighted mean velocity of the nodes inHits struck, along their total impulse (independently of
+// PropWorld's bookkeeping).
+Vec3 WeightedVelocity(const TetSolver& inSolver, const std::vector<NodalImpulse>& inHits)
+{
+    Vec3 sum = Vec3::Zero(), impulse = Vec3::Zero();
+    double weight = 0.0;
+    for (const NodalImpulse& hit : inHits)
+    {
+        sum += hit.mImpulse.norm() * inSolver.GetVelocities()[static_cast<std::size_t>(hit.mNode)];
+        impulse += hit.mImpulse;
+        weight += hit.mImpulse.norm();
+    }
+    const Vec3 direction = impulse.normalized();
+    return direction.dot(sum / weight) * direction;
+}
+
+} // namespace
+
+TEST_CASE("PropWorld: the contact velocity follows the struck material until new hits, and is zero asleep", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, Panel(true)).Get();
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    LastCollision last;
+    fixture.mWorld.AddListener(&last);
+    REQUIRE(props->Step(1.0 / 60.0).IsValid());
+    CHECK(props->GetContactVelocity(wall) == Vec3::Zero()); // nothing struck it yet
+
+    // A hit, then steps with no new one: the velocity is the struck nodes' weighted mean after every step
+    // (the wall body is unrotated, so its frame is the world's), the first pushed along the car's way.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.3, 0.2, 0.0),
+                                                                    fixture.FrontContact(-0.2, -0.1, 0.0)}));
+    const std::vector<NodalImpulse> hits =
+        [&] {
+            const TetSolver before = solver; // the nodal impulses of the connectivity the hit landed on
+            fixture.mWorld.Flush();
+            return CollisionNodalImpulses(last.mCollision, fixture.mWall, before.GetElementNodes(), before.GetPositions()).Get();
+        }();
+    REQUIRE(hits.size() == 8u);
+    std::vector<Vec3> seen;
+    for (int step = 0; step < 4; ++step)
+    {
+        REQUIRE(props->Step(1.0 / 60.0).IsValid());
+        const Vec3 expected = WeightedVelocity(solver, hits);
+        CHECK((props->GetContactVelocity(wall) - expected).norm() <= 1.0e-12 * (1.0 + expected.norm()));
+        seen.push_back(props->GetContactVelocity(wall));
+    }
+    CHECK(seen[0].x() > 0.0);
+    CHECK(seen[1] != seen[0]); // it follows the material, not the velocity of the hit's step
+    CHECK(seen[3] != Vec3::Zero());
+
+    // Once the panel sleeps, zero.
+    for (int step = 0; step < 600 && !solver.IsSleeping(); ++step)
+        REQUIRE(props->Step(1.0 / 60.0).IsValid());
+    REQUIRE(solver.IsSleeping());
+    REQUIRE(props->Step(1.0 / 60.0).IsValid());
+    CHECK(props->GetContactVelocity(wall) == Vec3::Zero());
+    fixture.mWorld.RemoveListener(&last);
 }
 
 TEST_CASE("PropWorld refuses an unknown body, a second prop on a body and a bad step, changing nothing", "[props]")

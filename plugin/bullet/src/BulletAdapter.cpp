@@ -214,6 +214,11 @@ Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
     if (Status valid = plugin::ValidateHeldVelocity(inVelocity); !valid)
         return valid;
     owned->mHeldVelocity = btVector3(btScalar(inVelocity.x()), btScalar(inVelocity.y()), btScalar(inVelocity.z()));
+    // Between steps the body stands at its pose (HoldProps ran at the end of the last one): moving it now
+    // makes the next step's contacts see it.
+    owned->mRigidBody->setLinearVelocity(owned->mHeldVelocity);
+    owned->mRigidBody->setInterpolationLinearVelocity(owned->mHeldVelocity);
+    (void)mDamage.ForgetImpacts(owned->mBody); // its velocity is set here, not by the contact solve
     if (!inVelocity.isZero(0.0))
         owned->mRigidBody->activate(true);
     return Status::Ok();

@@ -180,6 +180,10 @@ Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
     if (Status valid = plugin::ValidateHeldVelocity(inVelocity); !valid)
         return valid;
     owned->mHeldVelocity = inVelocity;
+    // Between steps the body stands at its pose (HoldProps ran after the last one): moving it now makes the
+    // next step's contacts see it.
+    dBodySetLinearVel(owned->mOdeBody, inVelocity.x(), inVelocity.y(), inVelocity.z());
+    (void)mDamage.ForgetImpacts(owned->mBody); // its velocity is set here, not by the contact solve
     if (!inVelocity.isZero(0.0))
         dBodyEnable(owned->mOdeBody);
     return Status::Ok();

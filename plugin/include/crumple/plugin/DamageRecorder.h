@@ -19,7 +19,10 @@ class DamageWorld;
 
 /// Records a damage world to a replay file as it runs (see ReplayFormat.h): each object's setup (mesh,
 /// material, zones, current damage) before the first collision that involves it, then every dispatched
-/// collision. Records are written and flushed one at a time; nothing is buffered for the whole run. The
+/// collision, written when the world dispatches it (OnBeforeCollision), so that with deferred dents
+/// (DamageWorldSettings::mDeferDents) the records come in the same order, and the file has the same bytes,
+/// as with dents on the caller's thread: a layer that records beside the collisions (crumple::props) sees
+/// them at the same Update either way. Records are written and flushed one at a time; nothing is buffered for the whole run. The
 /// file is written as "<path>.partial" and renamed to <path> by Close(), so an interrupted run never
 /// leaves a file that looks complete. A game replicates damage over a network the same way: send these
 /// records, not meshes.
@@ -33,7 +36,9 @@ public:
     /// Writes the end record, closes and renames the file, unregisters from the world. Idempotent.
     Status Close();
 
+    /// Records the objects of the collision's bodies not recorded yet (their damage before it), then it.
     void OnBeforeCollision(const Collision& inCollision) override;
+    /// Nothing: the collision was recorded when it was dispatched.
     void OnCollision(const Collision& inCollision, std::span<const ObjectDent> inDents) override;
 
     /// Writes a record of a layer above the core (EReplayRecord::Extension: inTag, then inPayload) now, after

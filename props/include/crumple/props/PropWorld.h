@@ -57,8 +57,9 @@ struct CRUMPLE_API LooseFragment
 ///
 /// The game keeps the bodies (static, kinematic or dynamic, in its engine and in the DamageWorld through the
 /// adapter); the prop is the deformable structure of one of them. A DamageListener of its world (registered
-/// by Create, removed by the destructor), so it sees collisions in the world's dispatch order after the
-/// dents. With a DamageRecorder (AttachRecorder) every prop and every step goes into the recording as
+/// by Create, removed by the destructor), so it takes collisions in the world's dispatch order, when they are
+/// dispatched (OnBeforeCollision: a prop needs no dent), so deferred dents (DamageWorldSettings::mDeferDents)
+/// change nothing for props: the same Update hands them the same hits either way. With a DamageRecorder (AttachRecorder) every prop and every step goes into the recording as
 /// extension records beside the world's collisions, and ReplayProps (PropRecording.h) reproduces the CPU
 /// props bit for bit without an engine.
 ///
@@ -124,12 +125,17 @@ public:
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mPiecesTaken : 0;
     }
-    /// How fast the prop's material that the last step's collisions struck is moving after the step (world
-    /// frame, m/s): the mean velocity of the nodes that took their impulses, weighted by each node's share;
-    /// zero when nothing struck it (or for an unknown prop). A held prop body stands for the whole prop but a
-    /// car meets only the members it touches: give this to the adapter's SetHeldVelocity after each Step, so
-    /// that the engine's next contact sees the struck planks moving as the FEM moves them (a plank already
-    /// pushed to the car's speed takes no new impulse; one its posts hold back takes what holds it back).
+    /// How fast the prop's material that the latest collisions struck is moving after the step, along the
+    /// direction it was struck (world frame, m/s): the mean velocity of the nodes that took the impulses of the
+    /// latest step that had any, weighted by each node's share (nodes of pieces handed over left out), projected
+    /// on the direction of their total impulse (the held body stands for the whole prop: moved sideways or up
+    /// with a timber flung so, it would carry the car with it); zero before anything struck it and while
+    /// it sleeps (or for an unknown prop). Collisions reach a prop when the world dispatches them, which may
+    /// be steps after the contact, so the latest hits stand until new ones arrive. A held prop body stands
+    /// for the whole prop but a car meets only the members it touches: give this to the adapter's
+    /// SetHeldVelocity after each Step, so that the engine's next contact sees the struck timbers moving as
+    /// the FEM moves them (a timber already pushed to the car's speed takes no new impulse; one its posts
+    /// hold back takes what holds it back).
     Vec3 GetContactVelocity(PropId inProp) const
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactVelocity : Vec3::Zero();
@@ -140,6 +146,9 @@ public:
     std::uint64_t GetRefusedCount() const { return mRefused; }
     const Status& GetFirstRefusal() const { return mFirstRefusal; }
 
+    /// Takes the collision's impulses onto the props of its bodies.
+    void OnBeforeCollision(const plugin::Collision& inCollision) override;
+    /// Nothing: the props took the collision when it was dispatched.
     void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
 
 private:
@@ -154,12 +163,13 @@ private:
         std::uint64_t mShapeRevision = ~std::uint64_t{0}; ///< mPiecesTaken at the last TakeChangedShape
         std::vector<Vec3> mShapePositions{}; ///< Node positions at the last TakeChangedShape
         std::vector<NodalImpulse> mHits{};   ///< Nodal impulses of the collisions since the last Step
+        std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
-    // mContactVelocity from the hits since the last step and the nodes' velocities now; clears the hits.
-    void UpdateContactVelocity(Prop& ioProp) const;
+    // mContactVelocity from the latest hits and the nodes' velocities now; moves new hits to mStruck.
+    void UpdateContactVelocity(Prop& ioProp, bool inSleeping) const;
     // GetCollisionPieces of inProp at inPositions.
     static std::vector<std::vector<Vec3>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;

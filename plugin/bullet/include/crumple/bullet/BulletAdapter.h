@@ -102,9 +102,11 @@ public:
     /// shape, so no contact with a piece that left survives. Mass and inertia stay. Refused, changing
     /// nothing, for a body that is not a prop body of this adapter or for invalid pieces.
     Status SetPropPieces(plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces);
-    /// Sets the velocity a held prop body gets when it is put back at its pose after each step (world frame,
-    /// m/s; zero until set): how fast the prop's struck material moves (props::PropWorld::GetContactVelocity),
-    /// so that the next step's contacts meet the members a car already pushes at their own speed, not at rest.
+    /// Sets the velocity of a held prop body now, at its pose, and the one it gets when it is put back at its
+    /// pose after each step (world frame, m/s; zero until set): how fast the prop's struck material moves
+    /// (props::PropWorld::GetContactVelocity), so that the very next step's contacts meet the members a car
+    /// already pushes at their own speed, not at rest (set only at the put-back, it would reach the contacts
+    /// a step late, and the car would meet the prop at rest every other step).
     /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a velocity that is
     /// not finite or beyond plugin::cMaxBodySpeed.
     Status SetHeldVelocity(plugin::BodyId inBody, const Vec3& inVelocity);
