@@ -10,7 +10,8 @@
 #include <crumple/base/Version.h>
 #include <crumple/plugin/ReplayDamage.h>
 #if defined(CRUMPLE_REPLAY_PROPS)
-#include <crumple/fem/TetBoundary.h>
+#include "TetSurface.h"
+
 #include <crumple/props/PropRecording.h>
 #endif
 
@@ -217,23 +218,9 @@ int main(int argc, char** argv)
     for (std::size_t index = 0; index < replayed_props.Get().size(); ++index)
     {
         const fem::TetSolver& solver = replayed_props.Get()[index].mSolver;
-        const std::vector<fem::TriangleIndices> boundary = fem::TetBoundary(solver.GetElementNodes());
-        std::vector<std::array<std::uint32_t, 3>> triangles;
-        std::vector<Vec3> normals(solver.GetPositions().size(), Vec3::Zero());
-        for (const fem::TriangleIndices& triangle : boundary)
-        {
-            const Vec3& a = solver.GetPositions()[static_cast<std::size_t>(triangle[0])];
-            const Vec3 area = (solver.GetPositions()[static_cast<std::size_t>(triangle[1])] - a)
-                                  .cross(solver.GetPositions()[static_cast<std::size_t>(triangle[2])] - a);
-            for (int corner : triangle)
-                normals[static_cast<std::size_t>(corner)] += area;
-            triangles.push_back({static_cast<std::uint32_t>(triangle[0]), static_cast<std::uint32_t>(triangle[1]),
-                                 static_cast<std::uint32_t>(triangle[2])});
-        }
-        for (Vec3& normal : normals)
-            normal = normal.norm() > 0.0 ? Vec3(normal.normalized()) : Vec3::UnitZ();
+        const common::TetSurface surface = common::MakeTetSurface(solver.GetPositions(), solver.GetElementNodes());
         const std::filesystem::path path = out / ("prop" + std::to_string(index) + ".obj");
-        if (Status written = meshes ? common::WriteObj(path, solver.GetPositions(), normals, triangles) : Status::Ok();
+        if (Status written = meshes ? common::WriteObj(path, solver.GetPositions(), surface.mNormals, surface.mTriangles) : Status::Ok();
             !written)
         {
             std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
