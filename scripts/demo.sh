@@ -2,7 +2,7 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # The main job: a scripted racing session in Bullet (and the same in ODE). A car with a deformable body
-# scrapes along barriers and hits a parked car; each run writes a replay file, the deformed meshes (OBJ)
+# scrapes along barriers, breaks through a wooden fence whose pieces fly, and hits a parked car; each run writes a replay file, the deformed meshes (OBJ)
 # and PNG pictures (before/after and a frame sequence, rendered headless on EGL). The Bullet recording is
 # then replayed with no engine at all, and its mesh compared with the live one.
 set -euo pipefail
@@ -38,12 +38,17 @@ if [ -x "$bin/crumple-racing-ode" ]; then
 fi
 echo; echo "== Headless replay of the Bullet recording (no physics engine)"
 "$replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
-if cmp -s "$out/racing-bullet/car.obj" "$out/replay/object0.obj"; then
-    echo "replayed car mesh is byte-identical to the live one"
-else
-    echo "replayed car mesh differs from the live one" >&2
-    exit 1
-fi
+for pair in "car.obj object0.obj car" "fence.obj prop0.obj fence (cracks and pieces)"; do
+    set -- $pair
+    live="$1" replayed="$2"
+    shift 2
+    if cmp -s "$out/racing-bullet/$live" "$out/replay/$replayed"; then
+        echo "replayed $* mesh is byte-identical to the live one"
+    else
+        echo "replayed $* mesh differs from the live one" >&2
+        exit 1
+    fi
+done
 
 echo
 echo "crumple demo: crash report: $out/crash-frontal-56/report.html (report.json, pictures, deformed.obj, replay.crumple beside it)"

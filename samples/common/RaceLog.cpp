@@ -16,6 +16,12 @@ std::string RaceLog::Name(plugin::BodyId inBody) const
 
 void RaceLog::OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents)
 {
+    ++mCount;
+    if ((mUnlisted.contains(inCollision.mBodyA) || mUnlisted.contains(inCollision.mBodyB)) && inDents.empty())
+    {
+        ++mUnlistedCount;
+        return;
+    }
     double approach = 0.0;
     for (const plugin::CollisionContact& c : inCollision.mContacts)
         approach = std::max(approach, c.mApproachSpeed);
@@ -25,7 +31,6 @@ void RaceLog::OnCollision(const plugin::Collision& inCollision, std::span<const 
     std::printf("t %6.3f s  %-12s x %-12s  %2zu contacts  impulse %8.1f N s  approach %5.2f m/s  %6u vertices dented\n",
                 inCollision.mStartTime, Name(inCollision.mBodyA).c_str(), Name(inCollision.mBodyB).c_str(),
                 inCollision.mContacts.size(), inCollision.TotalImpulse(), approach, moved);
-    ++mCount;
 }
 
 double RaceLog::DeepestDent(const plugin::DeformableObject& inObject)

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "RaceSession.h"
 #include "BoxMesh.h"
+#include "RaceFence.h"
 #include "CarMesh.h"
 #include "ObjWriter.h"
 #include "ThreadCpuTime.h"
@@ -34,6 +35,26 @@ std::vector<Transform> RaceCourse::Barriers()
 Transform RaceCourse::ParkedCar()
 {
     return {Mat3::Identity(), Vec3(60.0, 1.0, ParkedHalfExtents().z())};
+}
+
+fem::TetFenceSettings RaceCourse::FenceSettings()
+{
+    fem::TetFenceSettings fence;
+    fence.mLength = 4.0;
+    fence.mHeight = 1.2;
+    fence.mThickness = 0.1;
+    // Two cubes across each timber: fracture reads a cube's mean stress, and one cube across a bending rail
+    // reads none.
+    fence.mCellSize = 0.05;
+    fence.mPostSpacing = 4.0; // posts at the ends: the car meets the rails
+    return fence;
+}
+
+Transform RaceCourse::Fence()
+{
+    // A quarter turn about z: fence x -> world y (from -2 to 2 m), fence y (its thickness) -> world -x, so
+    // its face is at x = 45 m; 1 cm off the ground.
+    return {Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitZ()).toRotationMatrix(), Vec3(45.1, -2.0, 0.01)};
 }
 
 int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const char* inDescription, RaceOptions& outOptions)
@@ -111,7 +132,7 @@ Result<std::unique_ptr<RaceSession>> RaceSession::Create(const RaceOptions& inOp
     std::filesystem::create_directories(inOptions.mOut / "frames", error);
     if (error)
         return MakeError(EError::IoError, "cannot create " + inOptions.mOut.string() + ": " + error.message());
-    std::unique_ptr<RaceSession> session(new RaceSession(inOptions, std::move(inNames)));
+    std::unique_ptr<RaceSession> session(new RaceSession(inOptions, ioDamage, std::move(inNames)));
     Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(inOptions.mOut / "race.crumple", ioDamage);
     if (!recorder)
         return recorder.GetError();
@@ -145,7 +166,7 @@ void RaceSession::PaintCar(const DeformableObject& inCar, const std::string& inN
 }
 
 void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inCarPose, const DeformableObject& inParked,
-                             const Transform& inParkedPose)
+                             const Transform& inParkedPose, const RaceFence& inFence)
 {
     if (mPainter == nullptr)
         return;
@@ -158,6 +179,7 @@ void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inC
         const ffd::FfdDeformer& d = object->GetDeformer();
         mPainter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles, DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), *pose);
     }
+    inFence.Paint(*mPainter, *mDamage);
     // A chase camera behind, left and above the racing car.
     render::Camera camera;
     camera.mTarget = inCarPose.mTranslation + Vec3(4.0, 0.0, 0.0);
@@ -182,7 +204,8 @@ void RaceSession::EndFrame()
     mFrameCpuMs.push_back(common::ThreadCpuMs() - mFrameStartCpuMs);
 }
 
-Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked)
+Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked,
+                           const RaceFence& inFence)
 {
     ioDamage.Flush();
     ioDamage.RemoveListener(&mLog);
@@ -195,8 +218,13 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
         if (Status written = common::WriteObj(mOptions.mOut / name, d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles); !written)
             return written;
     }
-    std::printf("%d collisions; racing car deepest dent %.3f m, parked car %.3f m; %d frames\n", mLog.GetCount(),
-                RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    if (Status written = inFence.WriteObj(mOptions.mOut / "fence.obj"); !written)
+        return written;
+    std::printf("%d collisions (%d of them of the fence's pieces with the ground, the course or each other, not "
+                "listed); racing car deepest dent %.3f m, parked "
+                "car %.3f m; %d frames\n",
+                mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    std::printf("%s\n", inFence.Summary().c_str());
     // intent: the worst frame and where it was, then the distribution (engine step + Crumple)
     for (const auto& [times, what] : {std::pair{&mFrameWallMs, "wall"}, std::pair{&mFrameCpuMs, "game-thread CPU"}})
     {
@@ -213,7 +241,7 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
                     what, mOptions.mThreads, *worst, worst - times->begin(),
                     static_cast<double>(worst - times->begin()) / 60.0, at(0.99), at(0.5), times->size());
     }
-    std::printf("wrote %s: race.crumple (replay: crumple-replay %s --out DIR), car.obj, parked.obj%s\n",
+    std::printf("wrote %s: race.crumple (replay: crumple-replay %s --out DIR), car.obj, parked.obj, fence.obj%s\n",
                 mOptions.mOut.string().c_str(), (mOptions.mOut / "race.crumple").string().c_str(),
                 mPainter != nullptr ? ", before.png, after.png, frames/" : "");
     return Status::Ok();

@@ -5,6 +5,8 @@
 #include "RaceLog.h"
 #include "ScenePainter.h"
 
+#include <crumple/fem/TetFence.h>
+
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/DamageWorld.h>
 
@@ -13,6 +15,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,7 +33,13 @@ struct RaceCourse
     static Vec3 ParkedHalfExtents() { return {2.1, 0.9, 0.7}; }   ///< The parked car's box
     static Transform ParkedCar();                               ///< Its pose, resting on the ground
     static constexpr double cParkedMass = 1100.0;               ///< kg
+    /// A wooden fence across the road between the barriers and the parked car: 4 m of 10 cm timbers, a post at
+    /// each end, two rails (RaceFence)
+    static fem::TetFenceSettings FenceSettings();
+    static Transform Fence(); ///< Its frame: the fence's x along world y, its face at x = 45 m
 };
+
+class RaceFence;
 
 /// Command line of a racing sample.
 struct RaceOptions
@@ -59,23 +68,36 @@ public:
 
     /// The racing car alone, coloured by dent depth, from an iso view.
     void PaintCar(const plugin::DeformableObject& inCar, const std::string& inName);
-    /// A frame of the scene with a chase camera on the racing car.
+    /// A frame of the scene with a chase camera on the racing car: the course, both cars, the fence and its
+    /// flying pieces.
     void PaintFrame(const plugin::DeformableObject& inCar, const Transform& inCarPose, const plugin::DeformableObject& inParked,
-                    const Transform& inParkedPose);
-    /// Flushes, closes the recording, writes after.png, car.obj and parked.obj, prints the summary.
-    Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar, const plugin::DeformableObject& inParked);
+                    const Transform& inParkedPose, const RaceFence& inFence);
+    /// Flushes, closes the recording, writes after.png, car.obj, parked.obj and fence.obj, prints the summary.
+    Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar, const plugin::DeformableObject& inParked,
+                  const RaceFence& inFence);
 
-    /// Brackets one 60 Hz frame of physics (the engine's step with Crumple attached, no painting): Finish
+    /// The recording (for the props to record beside the collisions)
+    plugin::DamageRecorder& GetRecorder() { return *mRecorder; }
+    /// Names bodies made during the run (the fence's pieces) in the collision log, which counts their
+    /// collisions without a line each
+    void NamePieces(std::span<const plugin::BodyId> inBodies, const std::string& inName)
+    {
+        for (plugin::BodyId body : inBodies)
+            mLog.SetName(body, inName, false);
+    }
+
+    /// Brackets one 60 Hz frame of physics (the engine's step with Crumple attached, the props' step, no painting): Finish
     /// prints the worst frame, the 99th percentile and the median, in wall time (what the game's thread
     /// waited, workers included) and in the game thread's CPU time, so that a damage hitch shows.
     void BeginFrame();
     void EndFrame();
 
 private:
-    RaceSession(const RaceOptions& inOptions, std::map<plugin::BodyId, std::string> inNames)
-        : mOptions(inOptions), mLog(std::move(inNames)) {}
+    RaceSession(const RaceOptions& inOptions, const plugin::DamageWorld& inDamage, std::map<plugin::BodyId, std::string> inNames)
+        : mOptions(inOptions), mDamage(&inDamage), mLog(std::move(inNames)) {}
 
     RaceOptions mOptions;
+    const plugin::DamageWorld* mDamage = nullptr; ///< Where the painter finds bodies' poses
     RaceLog mLog;
     std::unique_ptr<plugin::DamageRecorder> mRecorder;
     std::unique_ptr<ScenePainter> mPainter;

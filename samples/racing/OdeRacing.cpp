@@ -4,6 +4,7 @@
 // (suspension and a rear-wheel motor), on the same course. The game adds one line to its near callback
 // (OdeAdapter::OnCollide) and one after dWorldQuickStep (OdeAdapter::AfterStep).
 #include "BoxMesh.h"
+#include "RaceFence.h"
 #include "RaceSession.h"
 #include "ThreadJobSystem.h"
 
@@ -12,6 +13,7 @@
 
 #include <ode/ode.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -41,6 +43,7 @@ struct OdeScene
     dSpaceID mSpace = nullptr;
     dJointGroupID mContacts = nullptr;
     ode::OdeAdapter* mAdapter = nullptr;
+    std::vector<dBodyID> mHeldBodies; ///< Held prop bodies (the fence), put back at their pose every step
 
     static void Near(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     {
@@ -62,7 +65,12 @@ struct OdeScene
             contact.surface.mu = tyre ? 1.2 : 0.3;
             // Stiff contacts: an impact is stopped within a step, as Crumple's per-step impulses assume
             // (soft contacts leave approach for later steps, which then counts again).
-            contact.surface.soft_erp = 0.2;
+            // A held prop body is put back where it stands after every step, over a car that pushed into it:
+            // error reduction would push the two apart with velocity no impulse accounts for. Its contacts
+            // resolve velocities only (as Bullet's split impulse does).
+            const bool held = std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b1) != scene->mHeldBodies.end() ||
+                              std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b2) != scene->mHeldBodies.end();
+            contact.surface.soft_erp = held ? 0.0 : 0.2;
             contact.surface.soft_cfm = 1.0e-5;
             dJointAttach(dJointCreateContact(scene->mWorld, scene->mContacts, &contact), b1, b2);
         }
@@ -76,7 +84,8 @@ int main(int argc, char** argv)
     RaceOptions options;
     options.mOut = "racing-ode-output";
     if (const int code = ParseRaceOptions(argc, argv, "crumple-racing-ode",
-                                          "An ODE car with a deformable body scrapes along barriers, then hits a parked car.",
+                                          "An ODE car with a deformable body scrapes along barriers, breaks through a fence, then "
+                                          "hits a parked car.",
                                           options);
         code >= 0)
         return code;
@@ -171,10 +180,35 @@ int main(int argc, char** argv)
     parked_object.mMesh = common::MakeBoxMesh(parked_half, {42, 18, 14});
     const DeformableObject& parked_deformable = *damage.GetObject(damage.CreateDeformableObject(parked_body, parked_object).Get());
 
+    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each frame.
+    ode::OdeAdapter& bodies = *adapter;
+    Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
+        damage, {.mMakePropBody =
+                     [&bodies, &scene](const PropBodySettings& inBody) {
+                         Result<BodyId> made = bodies.CreatePropBody(scene.mWorld, scene.mSpace, inBody);
+                         if (made && inBody.mHeld)
+                             scene.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
+                         return made;
+                     },
+                 .mMakePieceBody = [&bodies, &scene](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(scene.mWorld, scene.mSpace, inBody); },
+                 .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
+                 .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }});
+    if (!fence)
+    {
+        std::fprintf(stderr, "crumple-racing-ode: the fence: %s\n", fence.GetError().mMessage.c_str());
+        return 2;
+    }
+    names[fence.Get()->GetBody()] = "fence";
+
     Result<std::unique_ptr<RaceSession>> session = RaceSession::Create(options, damage, names);
     if (!session)
     {
         std::fprintf(stderr, "crumple-racing-ode: %s\n", session.GetError().mMessage.c_str());
+        return 2;
+    }
+    if (Status recorded = fence.Get()->AttachRecorder(&session.Get()->GetRecorder()); !recorded)
+    {
+        std::fprintf(stderr, "crumple-racing-ode: %s\n", recorded.GetError().mMessage.c_str());
         return 2;
     }
     session.Get()->PaintCar(car_deformable, "before.png");
@@ -182,7 +216,9 @@ int main(int argc, char** argv)
     // Drive: the rear motors spin the wheels up to the target speed; four ODE steps per 60 Hz frame.
     const double dt = 1.0 / 240.0;
     const int frames = static_cast<int>(std::lround(options.mDuration * 60.0));
-    for (int frame = 0; frame < frames; ++frame)
+    std::vector<BodyId> pieces;
+    Status finished = Status::Ok();
+    for (int frame = 0; frame < frames && finished; ++frame)
     {
         for (int i = 2; i < 4; ++i)
         {
@@ -196,12 +232,19 @@ int main(int argc, char** argv)
             dWorldQuickStep(scene.mWorld, dt);
             adapter->AfterStep(dt); // Crumple
             dJointGroupEmpty(scene.mContacts);
+            // The fence's FEM after each engine step: the held fence body takes the struck timbers' velocity.
+            finished = fence.Get()->Step(dt, pieces);
+            session.Get()->NamePieces(pieces, "fence piece");
+            pieces.clear();
+            if (!finished)
+                break;
         }
         session.Get()->EndFrame();
         if (frame % 6 == 0)
-            session.Get()->PaintFrame(car_deformable, PoseOf(chassis), parked_deformable, PoseOf(parked));
+            session.Get()->PaintFrame(car_deformable, PoseOf(chassis), parked_deformable, PoseOf(parked), *fence.Get());
     }
-    const Status finished = session.Get()->Finish(damage, car_deformable, parked_deformable);
+    if (finished)
+        finished = session.Get()->Finish(damage, car_deformable, parked_deformable, *fence.Get());
 
     adapter.reset();
     dJointGroupDestroy(scene.mContacts);

@@ -1,0 +1,191 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "RaceFence.h"
+#include "ObjWriter.h"
+#include "RaceSession.h"
+#include "TetSurface.h"
+#include "ThreadCpuTime.h"
+
+#include <crumple/fem/PropMaterialPreset.h>
+#include <crumple/fem/TetFence.h>
+#include <crumple/props/PropBody.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace crumple::samples
+{
+
+using namespace crumple::plugin;
+
+namespace
+{
+
+// The engine's shape of the fence: cubes of 0.25 m, so a rail is a few dozen convex pieces and a piece that
+// breaks away takes its part of the shape with it.
+constexpr double cShapeCell = 0.25;
+// The shape follows the FEM to a centimetre (a rail swinging away lets the car through).
+constexpr double cShapeTolerance = 0.01;
+// Splinters lighter than this leave the fence without a body (kg).
+constexpr double cMinPieceMass = 0.05;
+
+} // namespace
+
+Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, RacePropEngine inEngine)
+{
+    Result<fem::TetFence> fence = fem::MakeTetFence(RaceCourse::FenceSettings());
+    if (!fence)
+        return fence.GetError();
+    Result<fem::PropMaterialPreset> wood = fem::MakePropMaterialPreset(fem::EPropMaterial::Wood);
+    if (!wood)
+        return wood.GetError();
+    Result<props::PropBody> made = props::MakePropBody(fence.Get().mMesh, wood.Get().mMaterial.mDensity, RaceCourse::Fence(), true, cShapeCell);
+    if (!made)
+        return made.GetError();
+    std::unique_ptr<RaceFence> result(new RaceFence(ioDamage));
+    result->mEngine = std::move(inEngine);
+    Result<std::unique_ptr<props::PropWorld>> props = props::PropWorld::Create(ioDamage);
+    if (!props)
+        return props.GetError();
+    result->mProps = std::move(props).Get();
+    Result<BodyId> body = result->mEngine.mMakePropBody(made.Get().mBody);
+    if (!body)
+        return body.GetError();
+    result->mBody = body.Get();
+    result->mBodyPose = {made.Get().mBody.mOrientation, made.Get().mBody.mPosition};
+    // The held body stands for what holds the fence up (its posts' footings): no gravity in its FEM, so it
+    // sleeps until the car hits it. Loose pieces fall under the engine's gravity.
+    fem::TetSolverSettings solver;
+    solver.mGravity = Vec3::Zero();
+    Result<props::FemProp> prop = props::FemProp::Create(nullptr, made.Get().mMesh, wood.Get().mMaterial, solver, props::FemPropSettings{});
+    if (!prop)
+        return prop.GetError();
+    for (int node : fence.Get().mGroundNodes)
+        if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
+            return fixed.GetError();
+    Result<props::PropId> added = result->mProps->AddProp(result->mBody, std::move(prop).Get());
+    if (!added)
+        return added.GetError();
+    result->mProp = added.Get();
+    result->mLeftOut.assign(made.Get().mMesh.GetTets().size(), 0);
+    // The engine body was made with this shape already; the first call only sets the reference.
+    if (Result<std::optional<std::vector<std::vector<Vec3>>>> shape = result->mProps->TakeChangedShape(result->mProp, cShapeCell, cShapeTolerance); !shape)
+        return shape.GetError();
+    return result;
+}
+
+Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
+{
+    const double start_ms = common::ThreadCpuMs();
+    Result<props::PropStepReport> stepped = mProps->Step(inDeltaTime);
+    if (!stepped)
+        return stepped.GetError();
+    ++mSteps;
+    // The struck planks move as the FEM moves them: the engine's next contact sees the held body so (at rest
+    // again once nothing strikes it).
+    if (Status held = mEngine.mSetHeldVelocity(mBody, mProps->GetContactVelocity(mProp)); !held)
+        return held;
+    if (stepped.Get().mStepped > 0)
+    {
+        ++mAwakeSteps;
+        Result<std::vector<props::LooseFragment>> loose = mProps->TakeLooseFragments(cMinPieceMass);
+        if (!loose)
+            return loose.GetError();
+        for (const props::LooseFragment& piece : loose.Get())
+        {
+            ++mLoose;
+            for (int element : piece.mElements)
+                mLeftOut[static_cast<std::size_t>(element)] = 1;
+            if (piece.mDropped)
+                continue;
+            if (Status made = MakePiece(piece); !made)
+                return made;
+            outNewBodies.push_back(mPieces.back().mBody);
+        }
+        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = mProps->TakeChangedShape(mProp, cShapeCell, cShapeTolerance);
+        if (!shape)
+            return shape.GetError();
+        if (shape.Get())
+            if (Status set = mEngine.mSetPropPieces(mBody, *shape.Get()); !set)
+                return set;
+    }
+    const double step_ms = common::ThreadCpuMs() - start_ms;
+    mWorstStepMs = std::max(mWorstStepMs, step_ms);
+    mTotalStepMs += step_ms;
+    return Status::Ok();
+}
+
+Status RaceFence::MakePiece(const props::LooseFragment& inLoose)
+{
+    Result<BodyId> body = mEngine.mMakePieceBody(inLoose.mRigidBody.mBody);
+    if (!body)
+        return body.GetError();
+    // The piece's surface in its body's frame (centre of mass, principal axes) as it left: drawn where the
+    // engine moves the body.
+    const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
+    std::vector<fem::TetIndices> elements;
+    for (int element : inLoose.mElements)
+        elements.push_back(solver.GetElementNodes()[static_cast<std::size_t>(element)]);
+    const ConvexBodySettings& rigid = inLoose.mRigidBody.mBody;
+    Piece piece;
+    piece.mBody = body.Get();
+    piece.mPositions.reserve(solver.GetPositions().size());
+    for (const Vec3& node : solver.GetPositions())
+        piece.mPositions.push_back(rigid.mOrientation.transpose() * (mBodyPose.ToWorld(node) - rigid.mPosition));
+    const common::TetSurface surface = common::MakeTetSurface(piece.mPositions, elements);
+    // Keep only the piece's own nodes.
+    std::vector<std::uint32_t> index(piece.mPositions.size(), ~0u);
+    std::vector<Vec3> positions, normals;
+    for (std::array<std::uint32_t, 3> triangle : surface.mTriangles)
+    {
+        for (std::uint32_t& corner : triangle)
+        {
+            if (index[corner] == ~0u)
+            {
+                index[corner] = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(piece.mPositions[corner]);
+                normals.push_back(surface.mNormals[corner]);
+            }
+            corner = index[corner];
+        }
+        piece.mTriangles.push_back(triangle);
+    }
+    piece.mPositions = std::move(positions);
+    piece.mNormals = std::move(normals);
+    mPieces.push_back(std::move(piece));
+    return Status::Ok();
+}
+
+void RaceFence::Paint(ScenePainter& ioPainter, const DamageWorld& inDamage) const
+{
+    const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
+    const common::TetSurface surface = common::MakeTetSurface(solver.GetPositions(), solver.GetElementNodes(), mLeftOut);
+    // Coloured as the cars are, by how far each node moved from its rest position (a crack's two sides each
+    // from their own).
+    ioPainter.Add(solver.GetPositions(), surface.mNormals, surface.mTriangles, DentDepths(solver.GetPositions(), solver.GetNodeRestPositions()),
+                  mBodyPose);
+    for (const Piece& piece : mPieces)
+        if (const BodyState* state = inDamage.GetBodyState(piece.mBody); state != nullptr)
+            ioPainter.Add(piece.mPositions, piece.mNormals, piece.mTriangles, {}, state->mTransform);
+}
+
+Status RaceFence::WriteObj(const std::filesystem::path& inPath) const
+{
+    const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
+    const common::TetSurface surface = common::MakeTetSurface(solver.GetPositions(), solver.GetElementNodes());
+    return common::WriteObj(inPath, solver.GetPositions(), surface.mNormals, surface.mTriangles);
+}
+
+std::string RaceFence::Summary() const
+{
+    const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
+    char line[320];
+    std::snprintf(line, sizeof(line),
+                  "fence: %zu tetrahedra, %d links broken, %d pieces loose (%zu engine bodies); FEM awake %d of %d "
+                  "frames, worst frame %.2f ms, %.1f ms in all (game-thread CPU)",
+                  solver.GetElementNodes().size(), solver.GetBrokenLinkCount(), mLoose, mPieces.size(), mAwakeSteps, mSteps,
+                  mWorstStepMs, mTotalStepMs);
+    return line;
+}
+
+} // namespace crumple::samples
