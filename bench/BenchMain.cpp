@@ -24,7 +24,7 @@ int main(int argc, char** argv)
                         "  Times every benchmark (median of repetitions) and reports its error.\n"
                         "  --quick       few repetitions on small meshes (a smoke run)\n"
                         "  --only GROUP  one group: dent, impulse, adapter, frame_budget, fem, fem_vs_bullet, barrier,\n"
-                        "                crush or gpu\n"
+                        "                props, crush or gpu\n"
                         "  --csv FILE    also write rows benchmark,case,median_ms,error,error_unit,extra\n");
             return 0;
         }
@@ -51,7 +51,8 @@ int main(int argc, char** argv)
         {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
         {"frame_budget", RunFrameBudgetBenchmarks},
         {"fem", RunFemBenchmarks},   {"fem_vs_bullet", RunFemVsBulletBenchmarks},
-        {"barrier", RunBarrierBenchmarks}, {"crush", RunCrushBenchmarks}, {"gpu", RunGpuBenchmarks}};
+        {"barrier", RunBarrierBenchmarks}, {"props", RunPropBenchmarks}, {"crush", RunCrushBenchmarks},
+        {"gpu", RunGpuBenchmarks}};
     bool known = only.empty();
     for (const auto& [name, run] : groups)
         known = known || only == name;

@@ -42,6 +42,13 @@ void RunFemVsBulletBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions
 /// time per step against the crush's error relative to Campbell's line. Empty without crumple-crash.
 void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// A car at 64 km/h through a held wooden fence (a prop: FEM, fracture, pieces made engine bodies) in Bullet
+/// and ODE, interleaved with the same drive without the fence: CPU time per engine step of each, the fence's
+/// FEM per step (one prop), handing pieces over (finding them, their rigid bodies, the engine's bodies: in
+/// all and per body made) and its shape updates; error: the engine's change of the
+/// car's momentum against Crumple's impulses on it. Empty without crumple::props or an engine.
+void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 /// Full-width rigid-wall crashes of the box car and the shipped meshes in Bullet and ODE at 20-64 km/h with the
 /// default material: median run time of a 0.3 s crash against the worst crush error relative to Campbell's law
 /// for the body's mass and width (and, in extra, to the oracle's mid-size line). Empty without crumple-crash.

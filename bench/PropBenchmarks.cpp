@@ -1,0 +1,98 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "Benchmarks.h"
+
+#if defined(CRUMPLE_BENCH_PROPS)
+#include "FenceDriveThrough.h"
+#if defined(CRUMPLE_BENCH_BULLET)
+#include "BulletWallCrash.h"
+#endif
+#if defined(CRUMPLE_BENCH_ODE)
+#include "OdeWallCrash.h"
+#endif
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace crumple::bench
+{
+
+#if defined(CRUMPLE_BENCH_PROPS)
+namespace
+{
+
+double Median(std::vector<double> ioValues)
+{
+    std::sort(ioValues.begin(), ioValues.end());
+    return ioValues.empty() ? 0.0 : ioValues[ioValues.size() / 2];
+}
+
+// The drive alone and the drive through the fence, interleaved (A, B, A, B, ...), in one engine.
+template <class Scene>
+void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions& inOptions)
+{
+    const int repetitions = inOptions.mQuick ? 1 : 3;
+    common::FenceDriveSettings drive;
+    drive.mDuration = inOptions.mQuick ? 0.3 : 0.6;
+    common::FenceDriveSettings fence = drive;
+    drive.mFence = false;
+    std::vector<double> drive_ms, fence_ms, worst_ms, props_ms, pieces_ms, pieces_total_ms, shape_ms, wall_ms;
+    common::FenceRun last;
+    for (int rep = 0; rep < repetitions; ++rep)
+    {
+        const Result<common::FenceRun> alone = common::DriveThroughFence<Scene>(drive);
+        const Result<common::FenceRun> through = common::DriveThroughFence<Scene>(fence);
+        if (!alone || !through)
+        {
+            std::printf("fence_break/%s: %s\n", inEngine, (alone ? through : alone).GetError().mMessage.c_str());
+            return;
+        }
+        const common::FenceRun& run = through.Get();
+        drive_ms.push_back(alone.Get().mStepCpuMs / alone.Get().mSteps);
+        fence_ms.push_back(run.mStepCpuMs / run.mSteps);
+        worst_ms.push_back(run.mWorstStepCpuMs);
+        props_ms.push_back(run.mPropsCpuMs / run.mSteps);
+        pieces_ms.push_back(run.mBodiesMade > 0 ? run.mPiecesCpuMs / run.mBodiesMade : 0.0);
+        pieces_total_ms.push_back(run.mPiecesCpuMs);
+        shape_ms.push_back(run.mShapeCpuMs / run.mSteps);
+        wall_ms.push_back(run.mWallMs / run.mSteps);
+        last = run;
+    }
+    const std::string speed = std::to_string(static_cast<int>(std::lround(fence.mSpeed * 3.6))) + "kmh";
+    ioTable.Add({"fence_break", std::string(inEngine) + "/drive_only/" + speed, Median(drive_ms), 0.0, "baseline",
+                 "cpu_ms_per_step=" + FormatExtra(Median(drive_ms))});
+    // Error: how far the engine's change of the car's momentum is from Crumple's impulses on it.
+    const double engine_change = 1200.0 * (last.mSpeedAfter - last.mSpeedBefore);
+    ioTable.Add({"fence_break", std::string(inEngine) + "/wood_fence/" + speed, Median(fence_ms),
+                 last.mCarImpulse != 0.0 ? engine_change / last.mCarImpulse - 1.0 : 0.0, "rel_engine_vs_crumple_car_impulse",
+                 "cpu_ms_per_step=" + FormatExtra(Median(fence_ms)) + ";wall_ms_per_step=" + FormatExtra(Median(wall_ms)) +
+                     ";ratio_to_drive=" + FormatExtra(Median(fence_ms) / std::max(Median(drive_ms), 1e-9)) +
+                     ";worst_step_ms=" + FormatExtra(Median(worst_ms)) +
+                     ";fem_ms_per_step_per_prop=" + FormatExtra(Median(props_ms)) +
+                     ";pieces_ms_total=" + FormatExtra(Median(pieces_total_ms)) + ";pieces_ms_per_body=" + FormatExtra(Median(pieces_ms)) +
+                     ";shape_ms_per_step=" + FormatExtra(Median(shape_ms)) +
+                     ";tets=" + std::to_string(last.mFenceTets) + ";links_broken=" + std::to_string(last.mBrokenLinks) +
+                     ";pieces_loose=" + std::to_string(last.mLoose) + ";piece_bodies=" + std::to_string(last.mBodiesMade) +
+                     ";speed_after_m_s=" + FormatExtra(last.mSpeedAfter)});
+}
+
+} // namespace
+#endif
+
+void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+#if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_BULLET)
+    RunFenceBreak<common::BulletWallCrash>("bullet", ioTable, inOptions);
+#endif
+#if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_ODE)
+    RunFenceBreak<common::OdeWallCrash>("ode", ioTable, inOptions);
+#endif
+    (void)ioTable;
+    (void)inOptions;
+}
+
+} // namespace crumple::bench

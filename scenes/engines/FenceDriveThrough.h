@@ -1,0 +1,202 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "EngineCrash.h"
+#include "ThreadCpuTime.h"
+
+#include <crumple/fem/PropMaterialPreset.h>
+#include <crumple/fem/TetFence.h>
+#include <crumple/props/PropBody.h>
+#include <crumple/props/PropWorld.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace crumple::common
+{
+
+/// A car driven through a held wooden fence in an engine scene (BulletWallCrash, OdeWallCrash): the fence is a
+/// prop body the adapter makes and holds, its FEM takes the car's impulses, its loose pieces become engine
+/// bodies and its shape follows its FEM. Header-only (a template over the scene): whoever includes it links
+/// crumple::props. The fence test and crumple-bench's props group run it.
+struct FenceDriveSettings
+{
+    double mSpeed = 64.0 / 3.6;    ///< The car's speed (m/s)
+    bool mBreakable = true;        ///< false: the same wood that cannot crack
+    bool mMatchVelocity = true;    ///< The held body moves with the struck planks (false: put back at rest)
+    bool mFence = true;            ///< false: no fence (the drive alone, the baseline of a cost)
+    double mDuration = 0.6;        ///< Simulated time (s)
+};
+
+/// What a drive through the fence did, and what it cost.
+struct FenceRun
+{
+    double mSpeedBefore = 0.0, mSpeedAfter = 0.0; ///< The car's speed along x (m/s)
+    double mCarX = 0.0;
+    double mCarZ = 0.0;                          ///< The car's centre at the end (m)
+    double mFenceMoved = 0.0;                    ///< How far the held fence body ended from its pose (m)
+    double mFenceImpulse = 0.0;                  ///< Crumple's impulse on the fence body, along +x (N s)
+    double mFenceMass = 0.0;                     ///< kg
+    int mFenceTets = 0;
+    int mBrokenLinks = 0;
+    int mBodiesMade = 0;
+    std::uint64_t mRevision = 0;
+    std::size_t mPiecesBefore = 0, mPiecesAfter = 0;
+    bool mPiecesAccepted = true;
+    int mShapeChanges = 0;
+    int mLoose = 0;              ///< Pieces handed over, with or without a body
+    double mCarImpulse = 0.0;    ///< Crumple's impulses on the car over the run, along x (N s)
+    int mSteps = 0;
+    double mStepCpuMs = 0.0, mWorstStepCpuMs = 0.0; ///< Whole steps (engine, Crumple, props), game-thread CPU
+    double mPropsCpuMs = 0.0;    ///< Of it PropWorld::Step
+    double mPiecesCpuMs = 0.0;   ///< Of it handing pieces over and making their bodies
+    double mShapeCpuMs = 0.0;    ///< Of it the shape taken and given to the engine
+    double mWallMs = 0.0;        ///< Wall time of the steps
+};
+
+/// A 4 m wooden fence across the car's path: 5 cm planks in cubes of 2.5 cm (two across each plank: fracture
+/// reads a cube's mean stress, and one cube across a bent member reads none), posts at y = -1.95, 0 and 1.95,
+/// two rails 0.1 m tall at 0.4 and 0.8 m, its face at x = 0 (the fence runs along +x in its own frame: turned a
+/// quarter about z).
+inline fem::TetFenceSettings DriveThroughFenceSettings()
+{
+    fem::TetFenceSettings fence;
+    fence.mLength = 4.0;
+    fence.mHeight = 1.2;
+    fence.mThickness = 0.05;
+    fence.mCellSize = 0.025;
+    return fence;
+}
+
+inline Transform DriveThroughFencePose()
+{
+    Transform pose;
+    pose.mRotation = Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitZ()).toRotationMatrix(); // fence x -> world y
+    pose.mTranslation = Vec3(0.05, -2.0, 0.01); // fence y in [0, 0.05] -> world x in [0, 0.05]; just off the ground
+    return pose;
+}
+
+template <class Scene>
+Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
+{
+    constexpr double cShapeSize = 0.25;      // collision pieces: a few dozen cubes each
+    constexpr double cMinBodyMass = 0.05;    // kg: lighter splinters leave without a body
+    constexpr double cShapeTolerance = 0.01; // m: the engine's shape follows the FEM to a centimetre
+    EngineCrashSettings settings;
+    settings.mDriveOnly = true;
+    settings.mSpeed = inSettings.mSpeed;
+    settings.mDuration = inSettings.mDuration;
+    settings.mGap = 0.3;
+    settings.mTriangles = 2000;
+    Scene scene(settings);
+    Result<std::unique_ptr<props::PropWorld>> props_made = props::PropWorld::Create(scene.GetDamage());
+    if (!props_made)
+        return props_made.GetError();
+    props::PropWorld& props = *props_made.Get();
+
+    FenceRun run;
+    plugin::BodyId fence_body;
+    props::PropId fence_prop;
+    Vec3 fence_position = Vec3::Zero();
+    if (inSettings.mFence)
+    {
+        Result<fem::TetFence> fence = fem::MakeTetFence(DriveThroughFenceSettings());
+        Result<fem::PropMaterialPreset> wood = fem::MakePropMaterialPreset(fem::EPropMaterial::Wood);
+        if (!fence || !wood)
+            return fence ? wood.GetError() : fence.GetError();
+        if (!inSettings.mBreakable)
+            wood.Get().mMaterial.mTensileStrength = std::numeric_limits<double>::infinity();
+        Result<props::PropBody> made = props::MakePropBody(fence.Get().mMesh, wood.Get().mMaterial.mDensity, DriveThroughFencePose(), true, cShapeSize);
+        if (!made)
+            return made.GetError();
+        Result<plugin::BodyId> created = scene.MakePropBody(made.Get().mBody);
+        if (!created)
+            return created.GetError();
+        fence_body = created.Get();
+        fem::TetSolverSettings solver;
+        solver.mGravity = Vec3::Zero(); // the held body stands for what holds the fence up
+        Result<props::FemProp> prop = props::FemProp::Create(nullptr, made.Get().mMesh, wood.Get().mMaterial, solver, props::FemPropSettings{});
+        if (!prop)
+            return prop.GetError();
+        for (int node : fence.Get().mGroundNodes)
+            if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
+                return fixed.GetError();
+        Result<props::PropId> added = props.AddProp(fence_body, std::move(prop).Get());
+        if (!added)
+            return added.GetError();
+        fence_prop = added.Get();
+        if (Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance); !shape)
+            return shape.GetError(); // the first call gives the shape the body was made with
+        run.mFenceMass = made.Get().mBody.mMass;
+        run.mFenceTets = static_cast<int>(made.Get().mMesh.GetTets().size());
+        run.mPiecesBefore = made.Get().mBody.mPieces.size();
+        fence_position = made.Get().mBody.mPosition;
+    }
+
+    run.mSpeedBefore = scene.GetCarState().mLinearVelocity.x();
+    run.mSteps = static_cast<int>(std::lround(settings.mDuration / settings.mTimeStep));
+    const auto wall_start = std::chrono::steady_clock::now();
+    for (int i = 0; i < run.mSteps; ++i)
+    {
+        const double step_start = ThreadCpuMs();
+        scene.Step();
+        if (inSettings.mFence)
+        {
+            const double props_start = ThreadCpuMs();
+            if (Result<props::PropStepReport> stepped = props.Step(settings.mTimeStep); !stepped)
+                return stepped.GetError();
+            if (inSettings.mMatchVelocity)
+                if (Status held = scene.GetAdapter().SetHeldVelocity(fence_body, props.GetContactVelocity(fence_prop)); !held)
+                    return held.GetError();
+            const double pieces_start = ThreadCpuMs();
+            run.mPropsCpuMs += pieces_start - props_start;
+            Result<std::vector<props::LooseFragment>> loose = props.TakeLooseFragments(cMinBodyMass);
+            if (!loose)
+                return loose.GetError();
+            for (const props::LooseFragment& piece : loose.Get())
+            {
+                ++run.mLoose;
+                if (piece.mDropped)
+                    continue;
+                if (Result<plugin::BodyId> body = scene.MakeDebrisBody(piece.mRigidBody.mBody); !body)
+                    return body.GetError();
+                ++run.mBodiesMade;
+            }
+            const double shape_start = ThreadCpuMs();
+            run.mPiecesCpuMs += shape_start - pieces_start;
+            Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance);
+            if (!shape)
+                return shape.GetError();
+            if (shape.Get())
+            {
+                run.mPiecesAfter = shape.Get()->size();
+                ++run.mShapeChanges;
+                run.mPiecesAccepted = run.mPiecesAccepted && scene.GetAdapter().SetPropPieces(fence_body, *shape.Get()).IsValid();
+            }
+            run.mShapeCpuMs += ThreadCpuMs() - shape_start;
+        }
+        const double step_ms = ThreadCpuMs() - step_start;
+        run.mStepCpuMs += step_ms;
+        run.mWorstStepCpuMs = std::max(run.mWorstStepCpuMs, step_ms);
+    }
+    run.mWallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
+    scene.GetDamage().Flush();
+    const plugin::BodyState car = scene.GetCarState();
+    run.mSpeedAfter = car.mLinearVelocity.x();
+    run.mCarX = car.mCenterOfMass.x();
+    run.mCarZ = car.mCenterOfMass.z();
+    run.mCarImpulse = ImpulseOnBody(scene.GetCounter().mLog, scene.GetDamage().GetObjectBody(scene.GetCarObject())).x();
+    if (inSettings.mFence)
+    {
+        run.mFenceMoved = (scene.GetDamage().GetBodyState(fence_body)->mCenterOfMass - fence_position).norm();
+        run.mFenceImpulse = ImpulseOnBody(scene.GetCounter().mLog, fence_body).x();
+        run.mBrokenLinks = props.GetProp(fence_prop)->GetCpuSolver()->GetBrokenLinkCount();
+        run.mRevision = props.GetShapeRevision(fence_prop);
+    }
+    return run;
+}
+
+} // namespace crumple::common
