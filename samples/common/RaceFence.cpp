@@ -8,6 +8,7 @@
 
 #include <crumple/fem/PropMaterialPreset.h>
 #include <crumple/fem/TetFence.h>
+#include <crumple/props/HeldFemProp.h>
 #include <crumple/props/PropBody.h>
 
 #include <algorithm>
@@ -53,16 +54,10 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
         return body.GetError();
     result->mBody = body.Get();
     result->mBodyPose = {made.Get().mBody.mOrientation, made.Get().mBody.mPosition};
-    // The held body stands for what holds the fence up (its posts' footings): no gravity in its FEM, so it
-    // sleeps until the car hits it. Loose pieces fall under the engine's gravity.
-    fem::TetSolverSettings solver;
-    solver.mGravity = Vec3::Zero();
-    Result<props::FemProp> prop = props::FemProp::Create(nullptr, made.Get().mMesh, wood.Get().mMaterial, solver, props::FemPropSettings{});
+    // Its posts' footings anchored; it sleeps until the car hits it.
+    Result<props::FemProp> prop = props::MakeHeldFemProp(made.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes);
     if (!prop)
         return prop.GetError();
-    for (int node : fence.Get().mGroundNodes)
-        if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
-            return fixed.GetError();
     Result<props::PropId> added = result->mProps->AddProp(result->mBody, std::move(prop).Get());
     if (!added)
         return added.GetError();

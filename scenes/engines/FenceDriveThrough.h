@@ -7,6 +7,7 @@
 
 #include <crumple/fem/PropMaterialPreset.h>
 #include <crumple/fem/TetFence.h>
+#include <crumple/props/HeldFemProp.h>
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
 
@@ -116,14 +117,9 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         if (!created)
             return created.GetError();
         fence_body = created.Get();
-        fem::TetSolverSettings solver;
-        solver.mGravity = Vec3::Zero(); // the held body stands for what holds the fence up
-        Result<props::FemProp> prop = props::FemProp::Create(nullptr, made.Get().mMesh, wood.Get().mMaterial, solver, props::FemPropSettings{});
+        Result<props::FemProp> prop = props::MakeHeldFemProp(made.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes);
         if (!prop)
             return prop.GetError();
-        for (int node : fence.Get().mGroundNodes)
-            if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
-                return fixed.GetError();
         Result<props::PropId> added = props.AddProp(fence_body, std::move(prop).Get());
         if (!added)
             return added.GetError();

@@ -7,6 +7,7 @@
 
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetVolume.h>
+#include <crumple/props/HeldFemProp.h>
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
 
@@ -150,4 +151,35 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
     CHECK(left > 0);
     CHECK(after->size() <= first->size());
     CHECK(points < points_before);
+}
+
+TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until struck; a bad anchor is refused", "[props]")
+{
+    fem::TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.2, 1.0);
+    grid.mCellCount = {5, 1, 5};
+    const fem::TetMesh mesh = fem::TetGrid(grid).Get();
+    std::vector<int> footings;
+    for (int node = 0; node < mesh.GetNodeCount(); ++node)
+        if (mesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
+            footings.push_back(node);
+    props::FemProp prop = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings).Get();
+    const fem::TetSolver& solver = *prop.GetCpuSolver();
+    CHECK(solver.GetSettings().mGravity == Vec3::Zero());
+    for (int node = 0; node < solver.GetNodeCount(); ++node)
+        CHECK((solver.GetInverseMasses()[static_cast<std::size_t>(node)] == 0.0) ==
+              (std::find(footings.begin(), footings.end(), node) != footings.end()));
+    // Nothing pulls it: it stays where it stands (to round-off) and falls asleep.
+    for (int step = 0; step < 60 && !solver.IsSleeping(); ++step)
+        REQUIRE(prop.Step(1.0 / 60.0));
+    CHECK(solver.IsSleeping());
+    double moved = 0.0;
+    for (int node = 0; node < mesh.GetNodeCount(); ++node)
+        moved = std::max(moved, (solver.GetPositions()[static_cast<std::size_t>(node)] - mesh.GetRestPositions()[static_cast<std::size_t>(node)]).norm());
+    CHECK(moved < 1.0e-12);
+
+    const std::vector<int> bad{0, mesh.GetNodeCount()};
+    const Result<props::FemProp> refused = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, bad);
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mMessage.find("anchored node " + std::to_string(mesh.GetNodeCount())) != std::string::npos);
 }
