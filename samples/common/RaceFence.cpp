@@ -116,37 +116,29 @@ Status RaceFence::MakePiece(const props::LooseFragment& inLoose)
     if (!body)
         return body.GetError();
     // The piece's surface in its body's frame (centre of mass, principal axes) as it left: drawn where the
-    // engine moves the body.
+    // engine moves the body. Only its own nodes, renumbered in its node order.
     const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
-    std::vector<fem::TetIndices> elements;
-    for (int element : inLoose.mElements)
-        elements.push_back(solver.GetElementNodes()[static_cast<std::size_t>(element)]);
     const ConvexBodySettings& rigid = inLoose.mRigidBody.mBody;
+    std::vector<int> local(solver.GetPositions().size(), -1);
     Piece piece;
     piece.mBody = body.Get();
-    piece.mPositions.reserve(solver.GetPositions().size());
-    for (const Vec3& node : solver.GetPositions())
-        piece.mPositions.push_back(rigid.mOrientation.transpose() * (mBodyPose.ToWorld(node) - rigid.mPosition));
-    const common::TetSurface surface = common::MakeTetSurface(piece.mPositions, elements);
-    // Keep only the piece's own nodes.
-    std::vector<std::uint32_t> index(piece.mPositions.size(), ~0u);
-    std::vector<Vec3> positions, normals;
-    for (std::array<std::uint32_t, 3> triangle : surface.mTriangles)
+    for (int node : inLoose.mNodes)
     {
-        for (std::uint32_t& corner : triangle)
-        {
-            if (index[corner] == ~0u)
-            {
-                index[corner] = static_cast<std::uint32_t>(positions.size());
-                positions.push_back(piece.mPositions[corner]);
-                normals.push_back(surface.mNormals[corner]);
-            }
-            corner = index[corner];
-        }
-        piece.mTriangles.push_back(triangle);
+        local[static_cast<std::size_t>(node)] = static_cast<int>(piece.mPositions.size());
+        piece.mPositions.push_back(rigid.mOrientation.transpose() *
+                                   (mBodyPose.ToWorld(solver.GetPositions()[static_cast<std::size_t>(node)]) - rigid.mPosition));
     }
-    piece.mPositions = std::move(positions);
-    piece.mNormals = std::move(normals);
+    std::vector<fem::TetIndices> elements;
+    for (int element : inLoose.mElements)
+    {
+        fem::TetIndices corners = solver.GetElementNodes()[static_cast<std::size_t>(element)];
+        for (int& corner : corners)
+            corner = local[static_cast<std::size_t>(corner)];
+        elements.push_back(corners);
+    }
+    common::TetSurface surface = common::MakeTetSurface(piece.mPositions, elements);
+    piece.mNormals = std::move(surface.mNormals);
+    piece.mTriangles = std::move(surface.mTriangles);
     mPieces.push_back(std::move(piece));
     return Status::Ok();
 }
@@ -177,7 +169,7 @@ std::string RaceFence::Summary() const
     char line[320];
     std::snprintf(line, sizeof(line),
                   "fence: %zu tetrahedra, %d links broken, %d pieces loose (%zu engine bodies); FEM awake %d of %d "
-                  "frames, worst frame %.2f ms, %.1f ms in all (game-thread CPU)",
+                  "engine steps, worst step %.2f ms, %.1f ms in all (game-thread CPU)",
                   solver.GetElementNodes().size(), solver.GetBrokenLinkCount(), mLoose, mPieces.size(), mAwakeSteps, mSteps,
                   mWorstStepMs, mTotalStepMs);
     return line;
