@@ -47,6 +47,7 @@ struct FenceRun
     std::uint64_t mRevision = 0;
     std::size_t mPiecesBefore = 0, mPiecesAfter = 0;
     bool mPiecesAccepted = true;
+    bool mFirstShapeGiven = false; ///< The prop's first TakeChangedShape gave a shape
     int mShapeChanges = 0;
     int mLoose = 0;              ///< Pieces handed over, with or without a body
     double mCarImpulse = 0.0;    ///< Crumple's impulses on the car over the run, along x (N s)
@@ -124,8 +125,10 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         if (!added)
             return added.GetError();
         fence_prop = added.Get();
-        if (Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance); !shape)
-            return shape.GetError(); // the first call gives the shape the body was made with
+        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance);
+        if (!shape)
+            return shape.GetError();
+        run.mFirstShapeGiven = shape.Get().has_value(); // the first call gives the shape the body was made with
         run.mFenceMass = made.Get().mBody.mMass;
         run.mFenceTets = static_cast<int>(made.Get().mMesh.GetTets().size());
         run.mPiecesBefore = made.Get().mBody.mPieces.size();

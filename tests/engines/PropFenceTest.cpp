@@ -29,6 +29,7 @@ FenceRun DriveThrough(double inSpeed, bool inBreakable, bool inMatchVelocity = t
         DriveThroughFence<Scene>({.mSpeed = inSpeed, .mBreakable = inBreakable, .mMatchVelocity = inMatchVelocity});
     INFO((run ? std::string() : run.GetError().mMessage));
     REQUIRE(run);
+    REQUIRE(run.Get().mFirstShapeGiven); // the first TakeChangedShape always gives the shape
     return run.Get();
 }
 
