@@ -40,7 +40,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
     drive.mDuration = inOptions.mQuick ? 0.3 : 0.6;
     common::FenceDriveSettings fence = drive;
     drive.mFence = false;
-    std::vector<double> drive_ms, fence_ms, worst_ms, props_ms, pieces_ms, pieces_total_ms, shape_ms, wall_ms;
+    std::vector<double> drive_ms, drive_wall_ms, fence_ms, worst_ms, props_ms, pieces_ms, pieces_total_ms, shape_ms, wall_ms;
     common::FenceRun last;
     for (int rep = 0; rep < repetitions; ++rep)
     {
@@ -53,6 +53,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
         }
         const common::FenceRun& run = through.Get();
         drive_ms.push_back(alone.Get().mStepCpuMs / alone.Get().mSteps);
+        drive_wall_ms.push_back(alone.Get().mWallMs / alone.Get().mSteps);
         fence_ms.push_back(run.mStepCpuMs / run.mSteps);
         worst_ms.push_back(run.mWorstStepCpuMs);
         props_ms.push_back(run.mPropsCpuMs / run.mSteps);
@@ -64,7 +65,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
     }
     const std::string speed = std::to_string(static_cast<int>(std::lround(fence.mSpeed * 3.6))) + "kmh";
     ioTable.Add({"fence_break", std::string(inEngine) + "/drive_only/" + speed, Median(drive_ms), 0.0, "baseline",
-                 "cpu_ms_per_step=" + FormatExtra(Median(drive_ms))});
+                 "cpu_ms_per_step=" + FormatExtra(Median(drive_ms)) + ";wall_ms_per_step=" + FormatExtra(Median(drive_wall_ms))});
     // Error: how far the engine's change of the car's momentum is from Crumple's impulses on it.
     const double engine_change = 1200.0 * (last.mSpeedAfter - last.mSpeedBefore);
     ioTable.Add({"fence_break", std::string(inEngine) + "/wood_fence/" + speed, Median(fence_ms),
