@@ -55,14 +55,20 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
         {
             sum += inPositions[node];
             outer += inPositions[node] * inPositions[node].transpose();
-            fragment.mNodes.push_back(node);
         }
         fragment.mMass += mass;
         fragment.mCenterOfMass += 0.25 * mass * sum;
         second_moments[&fragment - fragments.data()] += mass / 20.0 * (outer + sum * sum.transpose());
     }
 
-    // Centre of mass, inertia about it, node lists, anchoring.
+    // Node lists in ascending order, in one pass over the nodes (a node belongs to its component's fragment;
+    // a node of no element has a component of its own, which no group named). Not sorted per fragment: the
+    // prop's main piece holds nearly every node, and a sort of it was most of this function's time.
+    for (std::size_t node = 0; node < inPositions.size(); ++node)
+        if (const int fragment = fragment_of_root[UnionFindRoot(parent, static_cast<int>(node))]; fragment >= 0)
+            fragments[fragment].mNodes.push_back(static_cast<int>(node));
+
+    // Centre of mass, inertia about it, anchoring.
     for (std::size_t index = 0; index < fragments.size(); ++index)
     {
         TetFragment& fragment = fragments[index];
@@ -71,8 +77,6 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
                              fragment.mMass * fragment.mCenterOfMass * fragment.mCenterOfMass.transpose();
         fragment.mInertia = central.trace() * Mat3::Identity() - central;
         fragment.mInertia = 0.5 * (fragment.mInertia + fragment.mInertia.transpose());
-        std::sort(fragment.mNodes.begin(), fragment.mNodes.end());
-        fragment.mNodes.erase(std::unique(fragment.mNodes.begin(), fragment.mNodes.end()), fragment.mNodes.end());
         fragment.mAnchored = std::any_of(fragment.mNodes.begin(), fragment.mNodes.end(),
                                          [&](int inNode) { return inInverseMasses[inNode] == 0.0; });
     }
