@@ -40,7 +40,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
     drive.mDuration = inOptions.mQuick ? 0.3 : 0.6;
     common::FenceDriveSettings fence = drive;
     drive.mFence = false;
-    std::vector<double> drive_ms, drive_wall_ms, fence_ms, worst_ms, props_ms, pieces_ms, pieces_total_ms, shape_ms, wall_ms;
+    std::vector<double> drive_ms, drive_wall_ms, fence_ms, worst_ms, props_ms, hand_over_ms, hand_over_total_ms, wall_ms;
     common::FenceRun last;
     for (int rep = 0; rep < repetitions; ++rep)
     {
@@ -57,9 +57,8 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
         fence_ms.push_back(run.mStepCpuMs / run.mSteps);
         worst_ms.push_back(run.mWorstStepCpuMs);
         props_ms.push_back(run.mPropsCpuMs / run.mSteps);
-        pieces_ms.push_back(run.mBodiesMade > 0 ? run.mPiecesCpuMs / run.mBodiesMade : 0.0);
-        pieces_total_ms.push_back(run.mPiecesCpuMs);
-        shape_ms.push_back(run.mShapeCpuMs / run.mSteps);
+        hand_over_ms.push_back(run.mHandOverCpuMs / run.mSteps);
+        hand_over_total_ms.push_back(run.mHandOverCpuMs);
         wall_ms.push_back(run.mWallMs / run.mSteps);
         last = run;
     }
@@ -74,8 +73,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
                      ";ratio_to_drive=" + FormatExtra(Median(fence_ms) / std::max(Median(drive_ms), 1e-9)) +
                      ";worst_step_ms=" + FormatExtra(Median(worst_ms)) +
                      ";fem_ms_per_step_per_prop=" + FormatExtra(Median(props_ms)) +
-                     ";pieces_ms_total=" + FormatExtra(Median(pieces_total_ms)) + ";pieces_ms_per_body=" + FormatExtra(Median(pieces_ms)) +
-                     ";shape_ms_per_step=" + FormatExtra(Median(shape_ms)) +
+                     ";hand_over_ms_per_step=" + FormatExtra(Median(hand_over_ms)) + ";hand_over_ms_total=" + FormatExtra(Median(hand_over_total_ms)) +
                      ";tets=" + std::to_string(last.mFenceTets) + ";links_broken=" + std::to_string(last.mBrokenLinks) +
                      ";pieces_loose=" + std::to_string(last.mLoose) + ";piece_bodies=" + std::to_string(last.mBodiesMade) +
                      ";speed_after_m_s=" + FormatExtra(last.mSpeedAfter)});

@@ -44,12 +44,17 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
     if (!made)
         return made.GetError();
     std::unique_ptr<RaceFence> result(new RaceFence(ioDamage));
-    result->mEngine = std::move(inEngine);
     Result<std::unique_ptr<props::PropWorld>> props = props::PropWorld::Create(ioDamage);
     if (!props)
         return props.GetError();
     result->mProps = std::move(props).Get();
-    Result<BodyId> body = result->mEngine.mMakePropBody(made.Get().mBody);
+    Result<props::HeldPropBodies> held = props::HeldPropBodies::Create(
+        *result->mProps, std::move(inEngine.mHeld),
+        {.mShapeCellSize = cShapeCell, .mShapeTolerance = cShapeTolerance, .mMinPieceMass = cMinPieceMass});
+    if (!held)
+        return held.GetError();
+    result->mHeld.emplace(std::move(held).Get());
+    Result<BodyId> body = inEngine.mMakePropBody(made.Get().mBody);
     if (!body)
         return body.GetError();
     result->mBody = body.Get();
@@ -63,9 +68,6 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
         return added.GetError();
     result->mProp = added.Get();
     result->mLeftOut.assign(made.Get().mMesh.GetTets().size(), 0);
-    // The engine body was made with this shape already; the first call only sets the reference.
-    if (Result<std::optional<std::vector<std::vector<Vec3>>>> shape = result->mProps->TakeChangedShape(result->mProp, cShapeCell, cShapeTolerance); !shape)
-        return shape.GetError();
     return result;
 }
 
@@ -76,52 +78,35 @@ Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
     if (!stepped)
         return stepped.GetError();
     ++mSteps;
-    // The struck planks move as the FEM moves them: the engine's next contact sees the held body so (at rest
-    // again once nothing strikes it).
-    if (Status held = mEngine.mSetHeldVelocity(mBody, mProps->GetContactVelocity(mProp)); !held)
-        return held;
-    if (stepped.Get().mStepped > 0)
+    mAwakeSteps += stepped.Get().mStepped > 0 ? 1 : 0;
+    props::HeldPropUpdate update;
+    const Status held = mHeld->Update(stepped.Get(), update);
+    for (const props::HeldPiece& piece : update.mPieces)
     {
-        ++mAwakeSteps;
-        Result<std::vector<props::LooseFragment>> loose = mProps->TakeLooseFragments(cMinPieceMass);
-        if (!loose)
-            return loose.GetError();
-        for (const props::LooseFragment& piece : loose.Get())
-        {
-            ++mLoose;
-            for (int element : piece.mElements)
-                mLeftOut[static_cast<std::size_t>(element)] = 1;
-            if (piece.mDropped)
-                continue;
-            if (Status made = MakePiece(piece); !made)
-                return made;
-            outNewBodies.push_back(mPieces.back().mBody);
-        }
-        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = mProps->TakeChangedShape(mProp, cShapeCell, cShapeTolerance);
-        if (!shape)
-            return shape.GetError();
-        if (shape.Get())
-            if (Status set = mEngine.mSetPropPieces(mBody, *shape.Get()); !set)
-                return set;
+        ++mLoose;
+        for (int element : piece.mPiece.mElements)
+            mLeftOut[static_cast<std::size_t>(element)] = 1;
+        if (!piece.mBody.IsValid())
+            continue;
+        MakePiece(piece);
+        outNewBodies.push_back(piece.mBody);
     }
     const double step_ms = common::ThreadCpuMs() - start_ms;
     mWorstStepMs = std::max(mWorstStepMs, step_ms);
     mTotalStepMs += step_ms;
-    return Status::Ok();
+    return held;
 }
 
-Status RaceFence::MakePiece(const props::LooseFragment& inLoose)
+void RaceFence::MakePiece(const props::HeldPiece& inPiece)
 {
-    Result<BodyId> body = mEngine.mMakePieceBody(inLoose.mRigidBody.mBody);
-    if (!body)
-        return body.GetError();
+    const props::LooseFragment& inLoose = inPiece.mPiece;
     // The piece's surface in its body's frame (centre of mass, principal axes) as it left: drawn where the
     // engine moves the body. Only its own nodes, renumbered in its node order.
     const fem::TetSolver& solver = *mProps->GetProp(mProp)->GetCpuSolver();
     const ConvexBodySettings& rigid = inLoose.mRigidBody.mBody;
     std::vector<int> local(solver.GetPositions().size(), -1);
     Piece piece;
-    piece.mBody = body.Get();
+    piece.mBody = inPiece.mBody;
     for (int node : inLoose.mNodes)
     {
         local[static_cast<std::size_t>(node)] = static_cast<int>(piece.mPositions.size());
@@ -140,7 +125,6 @@ Status RaceFence::MakePiece(const props::LooseFragment& inLoose)
     piece.mNormals = std::move(surface.mNormals);
     piece.mTriangles = std::move(surface.mTriangles);
     mPieces.push_back(std::move(piece));
-    return Status::Ok();
 }
 
 void RaceFence::Paint(ScenePainter& ioPainter, const DamageWorld& inDamage) const

@@ -8,11 +8,13 @@
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/PropBodySettings.h>
+#include <crumple/props/HeldPropBodies.h>
 #include <crumple/props/PropWorld.h>
 
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,16 +25,14 @@ namespace crumple::samples
 /// between Bullet and ODE (ODE's need the world and the space).
 struct RacePropEngine
 {
-    std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)> mMakePropBody;    ///< CreatePropBody
-    std::function<Result<plugin::BodyId>(const plugin::ConvexBodySettings&)> mMakePieceBody; ///< CreateConvexBody
-    std::function<Status(plugin::BodyId, const std::vector<std::vector<Vec3>>&)> mSetPropPieces; ///< SetPropPieces
-    std::function<Status(plugin::BodyId, const Vec3&)> mSetHeldVelocity;                        ///< SetHeldVelocity
+    std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)> mMakePropBody; ///< CreatePropBody
+    props::HeldPropEngine mHeld; ///< What props::HeldPropBodies calls after each step
 };
 
 /// The course's destructible fence (RaceCourse::Fence): a wooden fence of posts and two rails (MakeTetFence)
 /// across the road, a held prop body in the engine whose FEM (crumple::props) takes the car's impulses,
-/// cracks, and sheds pieces that become engine bodies of their own and fly. Everything a game does for a
-/// prop after each frame is in Step(); the rest is pictures and the summary.
+/// cracks, and sheds pieces that become engine bodies of their own and fly. What a game does for a prop
+/// after each engine step is props::HeldPropBodies's (Step()); the rest is pictures and the summary.
 class RaceFence
 {
 public:
@@ -70,11 +70,11 @@ private:
         std::vector<Vec3> mNormals;
         std::vector<std::array<std::uint32_t, 3>> mTriangles;
     };
-    Status MakePiece(const props::LooseFragment& inLoose);
+    void MakePiece(const props::HeldPiece& inPiece);
 
     plugin::DamageWorld* mDamage = nullptr;
-    RacePropEngine mEngine;
     std::unique_ptr<props::PropWorld> mProps;
+    std::optional<props::HeldPropBodies> mHeld;
     props::PropId mProp;
     plugin::BodyId mBody;
     Transform mBodyPose;                  ///< The held body's frame (the FEM's frame) in the world

@@ -157,9 +157,9 @@ int main(int argc, char** argv)
     bullet::BulletAdapter& bodies = *adapter;
     Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
         damage, {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
-                 .mMakePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
-                 .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                 .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }});
+                 .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
+                           .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}});
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-bullet: the fence: %s\n", fence.GetError().mMessage.c_str());

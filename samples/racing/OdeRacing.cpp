@@ -190,9 +190,9 @@ int main(int argc, char** argv)
                              scene.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
                          return made;
                      },
-                 .mMakePieceBody = [&bodies, &scene](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(scene.mWorld, scene.mSpace, inBody); },
-                 .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                 .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }});
+                 .mHeld = {.mCreatePieceBody = [&bodies, &scene](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(scene.mWorld, scene.mSpace, inBody); },
+                           .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}});
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-ode: the fence: %s\n", fence.GetError().mMessage.c_str());

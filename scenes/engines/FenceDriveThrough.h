@@ -8,6 +8,7 @@
 #include <crumple/fem/PropMaterialPreset.h>
 #include <crumple/fem/TetFence.h>
 #include <crumple/props/HeldFemProp.h>
+#include <crumple/props/HeldPropBodies.h>
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
 
@@ -46,16 +47,15 @@ struct FenceRun
     int mBodiesMade = 0;
     std::uint64_t mRevision = 0;
     std::size_t mPiecesBefore = 0, mPiecesAfter = 0;
-    bool mPiecesAccepted = true;
-    bool mFirstShapeGiven = false; ///< The prop's first TakeChangedShape gave a shape
-    int mShapeChanges = 0;
+    bool mPiecesAccepted = true;  ///< Every engine call of HeldPropBodies succeeded
+    bool mFirstShapeGiven = false; ///< The first HeldPropBodies::Update gave the prop's shape
+    int mShapeChanges = 0;        ///< Shapes given after the first
     int mLoose = 0;              ///< Pieces handed over, with or without a body
     double mCarImpulse = 0.0;    ///< Crumple's impulses on the car over the run, along x (N s)
     int mSteps = 0;
     double mStepCpuMs = 0.0, mWorstStepCpuMs = 0.0; ///< Whole steps (engine, Crumple, props), game-thread CPU
     double mPropsCpuMs = 0.0;    ///< Of it PropWorld::Step
-    double mPiecesCpuMs = 0.0;   ///< Of it handing pieces over and making their bodies
-    double mShapeCpuMs = 0.0;    ///< Of it the shape taken and given to the engine
+    double mHandOverCpuMs = 0.0; ///< Of it HeldPropBodies::Update: velocity, pieces and their bodies, shape
     double mWallMs = 0.0;        ///< Wall time of the steps
 };
 
@@ -103,6 +103,19 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     plugin::BodyId fence_body;
     props::PropId fence_prop;
     Vec3 fence_position = Vec3::Zero();
+    props::HeldPropEngine engine{
+        .mCreatePieceBody = [&](const plugin::ConvexBodySettings& inBody) { return scene.MakeDebrisBody(inBody); },
+        .mSetPropPieces = [&](plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) {
+            run.mPiecesAfter = inPieces.size();
+            return scene.GetAdapter().SetPropPieces(inBody, inPieces);
+        },
+        .mSetHeldVelocity = nullptr};
+    if (inSettings.mMatchVelocity)
+        engine.mSetHeldVelocity = [&](plugin::BodyId inBody, const Vec3& inVelocity) { return scene.GetAdapter().SetHeldVelocity(inBody, inVelocity); };
+    Result<props::HeldPropBodies> held = props::HeldPropBodies::Create(
+        props, std::move(engine), {.mShapeCellSize = cShapeSize, .mShapeTolerance = cShapeTolerance, .mMinPieceMass = cMinBodyMass});
+    if (!held)
+        return held.GetError();
     if (inSettings.mFence)
     {
         Result<fem::TetFence> fence = fem::MakeTetFence(DriveThroughFenceSettings());
@@ -125,10 +138,6 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         if (!added)
             return added.GetError();
         fence_prop = added.Get();
-        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance);
-        if (!shape)
-            return shape.GetError();
-        run.mFirstShapeGiven = shape.Get().has_value(); // the first call gives the shape the body was made with
         run.mFenceMass = made.Get().mBody.mMass;
         run.mFenceTets = static_cast<int>(made.Get().mMesh.GetTets().size());
         run.mPiecesBefore = made.Get().mBody.mPieces.size();
@@ -145,37 +154,21 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         if (inSettings.mFence)
         {
             const double props_start = ThreadCpuMs();
-            if (Result<props::PropStepReport> stepped = props.Step(settings.mTimeStep); !stepped)
+            Result<props::PropStepReport> stepped = props.Step(settings.mTimeStep);
+            if (!stepped)
                 return stepped.GetError();
-            if (inSettings.mMatchVelocity)
-                if (Status held = scene.GetAdapter().SetHeldVelocity(fence_body, props.GetContactVelocity(fence_prop)); !held)
-                    return held.GetError();
-            const double pieces_start = ThreadCpuMs();
-            run.mPropsCpuMs += pieces_start - props_start;
-            Result<std::vector<props::LooseFragment>> loose = props.TakeLooseFragments(cMinBodyMass);
-            if (!loose)
-                return loose.GetError();
-            for (const props::LooseFragment& piece : loose.Get())
+            const double hand_over_start = ThreadCpuMs();
+            run.mPropsCpuMs += hand_over_start - props_start;
+            props::HeldPropUpdate update;
+            run.mPiecesAccepted = held.Get().Update(stepped.Get(), update).IsValid() && run.mPiecesAccepted;
+            run.mHandOverCpuMs += ThreadCpuMs() - hand_over_start;
+            run.mFirstShapeGiven = run.mFirstShapeGiven || (i == 0 && update.mShapesGiven == 1);
+            run.mShapeChanges += i == 0 ? 0 : update.mShapesGiven;
+            for (const props::HeldPiece& piece : update.mPieces)
             {
                 ++run.mLoose;
-                if (piece.mDropped)
-                    continue;
-                if (Result<plugin::BodyId> body = scene.MakeDebrisBody(piece.mRigidBody.mBody); !body)
-                    return body.GetError();
-                ++run.mBodiesMade;
+                run.mBodiesMade += piece.mBody.IsValid() ? 1 : 0;
             }
-            const double shape_start = ThreadCpuMs();
-            run.mPiecesCpuMs += shape_start - pieces_start;
-            Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props.TakeChangedShape(fence_prop, cShapeSize, cShapeTolerance);
-            if (!shape)
-                return shape.GetError();
-            if (shape.Get())
-            {
-                run.mPiecesAfter = shape.Get()->size();
-                ++run.mShapeChanges;
-                run.mPiecesAccepted = run.mPiecesAccepted && scene.GetAdapter().SetPropPieces(fence_body, *shape.Get()).IsValid();
-            }
-            run.mShapeCpuMs += ThreadCpuMs() - shape_start;
         }
         const double step_ms = ThreadCpuMs() - step_start;
         run.mStepCpuMs += step_ms;

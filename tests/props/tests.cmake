@@ -6,6 +6,7 @@ crumple_add_test(props
     props/CollisionImpulsesTest.cpp
     props/FemPropTest.cpp
     props/FragmentBodyTest.cpp
+    props/HeldPropBodiesTest.cpp
     props/LooseFragmentsTest.cpp
     props/PropBodyTest.cpp
     props/PropRecordingTest.cpp

@@ -229,8 +229,11 @@ void BulletAdapter::HoldProps()
     const btVector3 zero(0, 0, 0);
     for (OwnedBody& owned : mOwned)
     {
-        if (!owned.mHeld || !owned.mRigidBody->isActive())
+        if (!owned.mHeld)
             continue;
+        // Put back asleep or not: Bullet deactivates a body at the end of a step in which it still moved, and
+        // a sleeping body left there would stand off its pose, with that step's velocity, when it wakes. Its
+        // velocity is never the contact solve's, so its remembered impacts go too.
         btRigidBody& body = *owned.mRigidBody;
         body.setWorldTransform(owned.mHome);
         body.setInterpolationWorldTransform(owned.mHome);
@@ -240,7 +243,7 @@ void BulletAdapter::HoldProps()
         body.setInterpolationLinearVelocity(owned.mHeldVelocity);
         body.setInterpolationAngularVelocity(zero);
         body.clearForces();
-        (void)mDamage.ForgetImpacts(owned.mBody); // its velocity was set here, not by the contact solve
+        (void)mDamage.ForgetImpacts(owned.mBody);
     }
 }
 

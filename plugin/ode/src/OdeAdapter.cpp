@@ -193,14 +193,17 @@ void OdeAdapter::HoldProps()
 {
     for (const OwnedBody& owned : mOwned)
     {
-        if (!owned.mHeld || !dBodyIsEnabled(owned.mOdeBody))
+        if (!owned.mHeld)
             continue;
+        // Put back asleep or not: ODE disables a body at the end of a step in which it still moved, and a
+        // disabled body left there would stand off its pose, with that step's velocity, when it wakes. Its
+        // velocity is never the contact solve's, so its remembered impacts go too.
         SetPose(owned.mOdeBody, owned.mHomePosition, owned.mHomeOrientation);
         dBodySetLinearVel(owned.mOdeBody, owned.mHeldVelocity.x(), owned.mHeldVelocity.y(), owned.mHeldVelocity.z());
         dBodySetAngularVel(owned.mOdeBody, 0.0, 0.0, 0.0);
         dBodySetForce(owned.mOdeBody, 0.0, 0.0, 0.0);
         dBodySetTorque(owned.mOdeBody, 0.0, 0.0, 0.0);
-        (void)mDamage.ForgetImpacts(owned.mBody); // its velocity was set here, not by the contact solve
+        (void)mDamage.ForgetImpacts(owned.mBody);
     }
 }
 

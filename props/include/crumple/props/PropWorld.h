@@ -86,6 +86,13 @@ public:
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);
     const FemProp* GetProp(PropId inProp) const;
+    /// The body inProp is bound to, or an invalid id for an unknown prop
+    plugin::BodyId GetBody(PropId inProp) const
+    {
+        return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mBody : plugin::BodyId();
+    }
+    /// The damage world the props are in
+    const plugin::DamageWorld& GetWorld() const { return *mWorld; }
     /// The prop bound to inBody, or an invalid id
     PropId FindProp(plugin::BodyId inBody) const;
     /// Number of props

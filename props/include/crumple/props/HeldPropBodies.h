@@ -1,0 +1,90 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Export.h>
+
+#include <crumple/base/Result.h>
+#include <crumple/plugin/ConvexBodySettings.h>
+#include <crumple/plugin/Ids.h>
+#include <crumple/props/PropWorld.h>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace crumple::props
+{
+
+/// The engine calls HeldPropBodies makes: an adapter's, bound by the game (ODE's need its world and space).
+struct CRUMPLE_API HeldPropEngine
+{
+    /// BulletAdapter / OdeAdapter::CreateConvexBody: a loose piece's rigid body. Required.
+    std::function<Result<plugin::BodyId>(const plugin::ConvexBodySettings&)> mCreatePieceBody;
+    /// SetPropPieces: a held body's new collision shape (body frame). Required.
+    std::function<Status(plugin::BodyId, const std::vector<std::vector<Vec3>>&)> mSetPropPieces;
+    /// SetHeldVelocity: how fast the struck members move (world frame, m/s). Empty: held bodies are put back at
+    /// rest after every step, and meet each contact with the whole prop's mass at rest (far too stiff for a
+    /// fence; for comparison only).
+    std::function<Status(plugin::BodyId, const Vec3&)> mSetHeldVelocity;
+};
+
+/// How HeldPropBodies keeps the engine's bodies in step with the props' FEM.
+struct CRUMPLE_API HeldPropSettings
+{
+    double mShapeCellSize = 0.25;  ///< Collision pieces' cell (m, > 0): PropWorld::GetCollisionPieces
+    double mShapeTolerance = 0.01; ///< A held body's shape follows its FEM to this (m, >= 0): TakeChangedShape
+    double mMinPieceMass = 0.05;   ///< Lighter loose pieces leave without a body (kg, >= 0): TakeLooseFragments
+};
+
+/// A piece HeldPropBodies handed over.
+struct CRUMPLE_API HeldPiece
+{
+    LooseFragment mPiece; ///< What left the prop (its elements: stop drawing them there)
+    plugin::BodyId mBody; ///< Its engine body; invalid when it left without one (mPiece.mDropped, or refused)
+};
+
+/// What one HeldPropBodies::Update did.
+struct CRUMPLE_API HeldPropUpdate
+{
+    std::vector<HeldPiece> mPieces; ///< Pieces handed over, PropWorld::TakeLooseFragments order
+    int mShapesGiven = 0;           ///< SetPropPieces calls
+    int mVelocitiesGiven = 0;       ///< SetHeldVelocity calls
+};
+
+/// Everything a game does for the held prop bodies of a PropWorld after each engine step, once, in the
+/// library: each prop's body is a held body of the engine (the adapter's CreatePropBody, with the shape of
+/// props::MakePropBody), its FEM takes the car's impulses (PropWorld), and after PropWorld::Step this
+///   1. gives each held body the velocity of the members its latest collisions struck (GetContactVelocity),
+///      so the engine's next contact meets them moving as the FEM moves them;
+///   2. makes the pieces that broke loose engine bodies of their own (TakeLooseFragments);
+///   3. hands the engine a prop's new collision shape when it changed (TakeChangedShape; the first Update
+///      gives every prop's shape, so a body made with another cell size is set right at once).
+/// A world whose props all sleep costs one comparison per prop: a velocity goes to the engine only when it
+/// changed, and pieces and shapes are looked at only after a step in which some prop moved (or a prop joined).
+///
+/// Threading: the game's thread, after PropWorld::Step (the engine must not be stepping).
+class CRUMPLE_API HeldPropBodies
+{
+public:
+    /// Keeps ioProps' held bodies (ioProps must outlive the object). Refused for a missing required engine
+    /// call, or a setting that is not finite or out of its range.
+    static Result<HeldPropBodies> Create(PropWorld& ioProps, HeldPropEngine inEngine, const HeldPropSettings& inSettings = {});
+
+    /// After PropWorld::Step (inStepped is its report): the three things above, in PropId order; outUpdate
+    /// says what was done. An engine call that fails does not stop the others (a piece already left its prop
+    /// and the engine holds what it made): the first failure is returned, its piece left without a body.
+    Status Update(const PropStepReport& inStepped, HeldPropUpdate& outUpdate);
+
+private:
+    HeldPropBodies(PropWorld& ioProps, HeldPropEngine inEngine, const HeldPropSettings& inSettings)
+        : mProps(&ioProps), mEngine(std::move(inEngine)), mSettings(inSettings) {}
+
+    PropWorld* mProps = nullptr;
+    HeldPropEngine mEngine;
+    HeldPropSettings mSettings;
+    std::vector<Vec3> mGivenVelocity; ///< Per prop: the last SetHeldVelocity (zero: at rest, as made)
+    std::size_t mPropsSeen = 0;       ///< Props whose first shape was given (they join in PropId order)
+};
+
+} // namespace crumple::props

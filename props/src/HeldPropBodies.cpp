@@ -1,0 +1,87 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/props/HeldPropBodies.h>
+
+#include <cmath>
+
+namespace crumple::props
+{
+
+Result<HeldPropBodies> HeldPropBodies::Create(PropWorld& ioProps, HeldPropEngine inEngine, const HeldPropSettings& inSettings)
+{
+    if (!inEngine.mCreatePieceBody || !inEngine.mSetPropPieces)
+        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: the engine's mCreatePieceBody and mSetPropPieces are required");
+    if (!std::isfinite(inSettings.mShapeCellSize) || !(inSettings.mShapeCellSize > 0.0))
+        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mShapeCellSize must be finite and > 0 m");
+    if (!std::isfinite(inSettings.mShapeTolerance) || !(inSettings.mShapeTolerance >= 0.0))
+        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mShapeTolerance must be finite and >= 0 m");
+    if (!std::isfinite(inSettings.mMinPieceMass) || !(inSettings.mMinPieceMass >= 0.0))
+        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mMinPieceMass must be finite and >= 0 kg");
+    return HeldPropBodies(ioProps, std::move(inEngine), inSettings);
+}
+
+Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& outUpdate)
+{
+    outUpdate = HeldPropUpdate();
+    Status first_failure = Status::Ok();
+    const auto keep = [&](const Status& inStatus) {
+        if (!inStatus && first_failure)
+            first_failure = inStatus;
+        return inStatus.IsValid();
+    };
+    const auto prop_count = static_cast<std::size_t>(mProps->GetPropCount());
+    mGivenVelocity.resize(prop_count, Vec3::Zero());
+    const bool new_props = mPropsSeen < prop_count;
+
+    // 1. The struck members' velocity. After a step in which props moved, to every held body (the adapter
+    // also forgets the body's remembered impact: its velocity is set here, not by the contact solve); while
+    // all sleep, only where it changed (a prop that fell asleep gives zero once), so a scene at rest makes no
+    // engine call.
+    if (mEngine.mSetHeldVelocity)
+        for (std::size_t index = 0; index < prop_count; ++index)
+        {
+            const PropId prop{static_cast<std::uint32_t>(index)};
+            const Vec3 velocity = mProps->GetContactVelocity(prop);
+            if (inStepped.mStepped == 0 && velocity == mGivenVelocity[index])
+                continue;
+            if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
+                continue; // its body left the world
+            if (keep(mEngine.mSetHeldVelocity(mProps->GetBody(prop), velocity)))
+                mGivenVelocity[index] = velocity;
+            ++outUpdate.mVelocitiesGiven;
+        }
+    if (inStepped.mStepped == 0 && !new_props)
+        return first_failure;
+
+    // 2. Loose pieces become bodies. TakeLooseFragments refuses only a bad minimum mass, checked by Create.
+    Result<std::vector<LooseFragment>> loose = mProps->TakeLooseFragments(mSettings.mMinPieceMass);
+    if (!loose)
+        return loose.GetError();
+    for (LooseFragment& piece : loose.Get())
+    {
+        HeldPiece held{std::move(piece), plugin::BodyId()};
+        if (!held.mPiece.mDropped)
+            if (Result<plugin::BodyId> body = mEngine.mCreatePieceBody(held.mPiece.mRigidBody.mBody); keep(body.IsValid() ? Status::Ok() : Status(body.GetError())))
+                held.mBody = body.Get();
+        outUpdate.mPieces.push_back(std::move(held));
+    }
+
+    // 3. New shapes: every prop's first, then those that changed.
+    for (std::size_t index = 0; index < prop_count; ++index)
+    {
+        const PropId prop{static_cast<std::uint32_t>(index)};
+        if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
+            continue;
+        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = mProps->TakeChangedShape(prop, mSettings.mShapeCellSize, mSettings.mShapeTolerance);
+        if (!shape)
+            return shape.GetError();
+        if (!shape.Get())
+            continue;
+        keep(mEngine.mSetPropPieces(mProps->GetBody(prop), *shape.Get()));
+        ++outUpdate.mShapesGiven;
+    }
+    mPropsSeen = prop_count;
+    return first_failure;
+}
+
+} // namespace crumple::props

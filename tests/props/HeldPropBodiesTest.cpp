@@ -1,0 +1,208 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// HeldPropBodies: what a game does for held prop bodies after each step (the struck members' velocity, loose
+// pieces as bodies, the shape that follows the FEM), against an engine that only counts the calls.
+#include "BrittlePanel.h"
+#include "WorldFixture.h"
+
+#include <crumple/props/HeldPropBodies.h>
+#include <crumple/props/PropWorld.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace crumple;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// The engine's side: every call counted and kept; piece bodies are numbered from 1000 (not world bodies: the
+// calls are what is tested). A body refused when mRefuseBodies.
+struct CountingEngine
+{
+    std::vector<ConvexBodySettings> mBodies;
+    std::vector<std::vector<std::vector<Vec3>>> mShapes;
+    std::vector<Vec3> mVelocities;
+    bool mRefuseBodies = false;
+
+    HeldPropEngine Calls()
+    {
+        return {.mCreatePieceBody =
+                    [this](const ConvexBodySettings& inBody) -> Result<BodyId> {
+                        if (mRefuseBodies)
+                            return MakeError(EError::InvalidArgument, "the engine refused the piece");
+                        mBodies.push_back(inBody);
+                        return BodyId{static_cast<std::uint32_t>(999 + mBodies.size()), 0};
+                    },
+                .mSetPropPieces =
+                    [this](BodyId, const std::vector<std::vector<Vec3>>& inPieces) {
+                        mShapes.push_back(inPieces);
+                        return Status::Ok();
+                    },
+                .mSetHeldVelocity =
+                    [this](BodyId, const Vec3& inVelocity) {
+                        mVelocities.push_back(inVelocity);
+                        return Status::Ok();
+                    }};
+    }
+    std::size_t CallCount() const { return mBodies.size() + mShapes.size() + mVelocities.size(); }
+};
+
+// A weak brittle panel (a tenth of the shared strength, 8 x 8 cells) that hard hits knock pieces out of.
+FemProp WeakPanel()
+{
+    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
+}
+
+// One hard hit of the car at (y, z) of the panel, dispatched at once.
+void Hit(common::WorldFixture& ioFixture, int inHit)
+{
+    REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(40.0)));
+    const double y = -0.6 + 0.4 * (inHit % 4), z = 0.6 - 0.4 * (inHit / 4);
+    REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{ioFixture.FrontContact(y, z, 0.2 * inHit),
+                                                                      ioFixture.FrontContact(y + 0.1, z - 0.1, 0.2 * inHit)}));
+    ioFixture.mWorld.Flush();
+}
+
+} // namespace
+
+TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies with their FEM mass, the shape "
+          "that follows, and no engine call for a prop at rest",
+          "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    CountingEngine engine;
+    HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = 0.5, .mShapeTolerance = 0.005, .mMinPieceMass = 0.0}).Get();
+
+    // The first update gives the prop's shape, whatever the step did.
+    HeldPropUpdate update;
+    REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    REQUIRE(engine.mShapes.size() == 1u);
+    CHECK(update.mShapesGiven == 1);
+    CHECK(engine.mShapes[0] == props->GetCollisionPieces(wall, 0.5).Get());
+
+    // Hard hits until pieces leave; after every step the engine learns what the FEM did.
+    int pieces = 0;
+    for (int hit = 0; hit < 12 && pieces == 0; ++hit)
+    {
+        Hit(fixture, hit);
+        for (int step = 0; step < 10; ++step)
+        {
+            const PropStepReport stepped = props->Step(1.0 / 120.0).Get();
+            const std::size_t shapes_before = engine.mShapes.size();
+            REQUIRE(held.Update(stepped, update).IsValid());
+            // The held body moves as the struck members do, given after every step the prop moved.
+            if (stepped.mStepped == 1)
+            {
+                REQUIRE(update.mVelocitiesGiven == 1);
+                CHECK(engine.mVelocities.back() == props->GetContactVelocity(wall));
+            }
+            const FemProp& prop = *props->GetProp(wall);
+            for (const HeldPiece& piece : update.mPieces)
+            {
+                ++pieces;
+                REQUIRE(piece.mBody.IsValid());
+                // The body has the piece's FEM mass: its nodes' lumped masses (no node is shared between pieces).
+                double mass = 0.0;
+                for (int node : piece.mPiece.mNodes)
+                    mass += prop.GetMasses()[static_cast<std::size_t>(node)];
+                const ConvexBodySettings& body = engine.mBodies[piece.mBody.mValue - 1000];
+                CHECK(body.mMass == Approx(mass).epsilon(1e-9));
+                CHECK(body.mMass == piece.mPiece.mRigidBody.mBody.mMass);
+            }
+            // Pieces that left change the shape: a new one goes to the engine in the same update.
+            if (!update.mPieces.empty())
+                CHECK(engine.mShapes.size() == shapes_before + 1);
+            CHECK(update.mShapesGiven == static_cast<int>(engine.mShapes.size() - shapes_before));
+        }
+    }
+    REQUIRE(pieces > 0); // the hits knocked pieces out: the checks above ran
+    // The engine's shape is the prop's without the pieces that left (its points follow to the tolerance).
+    CHECK(engine.mShapes.back().size() == props->GetCollisionPieces(wall, 0.5).Get().size());
+
+    // Left alone, the panel falls asleep (the update gives zero once), and from then on costs no engine call.
+    bool asleep = false;
+    for (int step = 0; step < 4000 && !asleep; ++step)
+    {
+        const PropStepReport stepped = props->Step(1.0 / 120.0).Get();
+        REQUIRE(held.Update(stepped, update).IsValid());
+        asleep = stepped.mStepped == 0;
+    }
+    REQUIRE(asleep);
+    CHECK(engine.mVelocities.back() == Vec3::Zero());
+    const std::size_t calls = engine.CallCount();
+    for (int step = 0; step < 100; ++step)
+    {
+        const PropStepReport stepped = props->Step(1.0 / 120.0).Get();
+        REQUIRE(stepped.mSleeping == 1);
+        REQUIRE(held.Update(stepped, update).IsValid());
+        CHECK(update.mPieces.empty());
+        CHECK(update.mShapesGiven + update.mVelocitiesGiven == 0);
+    }
+    CHECK(engine.CallCount() == calls);
+}
+
+TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engine that refuses a piece gets "
+          "the rest done and the refusal back",
+          "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    CountingEngine engine;
+
+    HeldPropEngine no_bodies = engine.Calls();
+    no_bodies.mCreatePieceBody = nullptr;
+    CHECK(HeldPropBodies::Create(*props, no_bodies).GetError().mCode == EError::InvalidArgument);
+    HeldPropEngine no_shapes = engine.Calls();
+    no_shapes.mSetPropPieces = nullptr;
+    CHECK(HeldPropBodies::Create(*props, no_shapes).GetError().mCode == EError::InvalidArgument);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = 0.0}).IsValid());
+    CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = nan}).IsValid());
+    CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mShapeTolerance = -0.01}).IsValid());
+    CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mMinPieceMass = -1.0}).IsValid());
+    CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mMinPieceMass = std::numeric_limits<double>::infinity()}).IsValid());
+    CHECK(engine.CallCount() == 0u);
+
+    // Without SetHeldVelocity the held body is put back at rest: no velocity is ever given.
+    HeldPropEngine at_rest = engine.Calls();
+    at_rest.mSetHeldVelocity = nullptr;
+    HeldPropBodies held = HeldPropBodies::Create(*props, at_rest, {.mMinPieceMass = 0.0}).Get();
+    engine.mRefuseBodies = true;
+    HeldPropUpdate update;
+    bool refused = false;
+    for (int hit = 0; hit < 12 && !refused; ++hit)
+    {
+        Hit(fixture, hit);
+        for (int step = 0; step < 10 && !refused; ++step)
+        {
+            const std::size_t shapes_before = engine.mShapes.size();
+            const Status status = held.Update(props->Step(1.0 / 120.0).Get(), update);
+            if (update.mPieces.empty())
+            {
+                REQUIRE(status.IsValid());
+                continue;
+            }
+            refused = true;
+            REQUIRE_FALSE(status.IsValid());
+            CHECK(status.GetError().mMessage == "the engine refused the piece");
+            for (const HeldPiece& piece : update.mPieces)
+                CHECK_FALSE(piece.mBody.IsValid());
+            // The pieces left the prop all the same (their nodes fixed), and the new shape went to the engine.
+            for (const HeldPiece& piece : update.mPieces)
+                for (int node : piece.mPiece.mNodes)
+                    CHECK(props->GetProp(wall)->GetCpuSolver()->GetInverseMasses()[static_cast<std::size_t>(node)] == 0.0);
+            CHECK(engine.mShapes.size() == shapes_before + 1);
+        }
+    }
+    REQUIRE(refused);
+    CHECK(engine.mVelocities.empty());
+    CHECK(engine.mBodies.empty());
+}
