@@ -33,4 +33,5 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/TetRestSystemBlocks.cpp
     src/TetSolver.cpp
     src/TetSolverWorkspace.cpp
+    src/TetStepper.cpp
     src/TetVolume.cpp)

@@ -303,8 +303,7 @@ int TetSolver::GetBrokenLinkCount() const
 
 void TetSolver::InputChanged()
 {
-    mSleeping = false;
-    mQuietSteps = 0;
+    mStepper.Wake();
     mReferenceValid = false;
 }
 
@@ -392,8 +391,7 @@ Status TetSolver::SetVelocities(std::span<const Vec3> inVelocities)
 
 void TetSolver::WakeUp()
 {
-    mSleeping = false;
-    mQuietSteps = 0;
+    mStepper.Wake();
 }
 
 void TetSolver::LoadForces(std::vector<Vec3>& outForces) const
@@ -693,146 +691,121 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-Result<TetStepResult> TetSolver::Step(double inDeltaTime)
+// The CPU side of TetStepper's policy: arrays in place, divergence as a non-finite state or an energy gain.
+class TetSolver::StepBackend final : public TetStepBackend
 {
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-    {
-        std::ostringstream message;
-        message << "TetSolver::Step: time step " << inDeltaTime << " s must be finite and > 0";
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
-                         message.str());
-    }
+public:
+    explicit StepBackend(TetSolver& ioSolver) : mSolver(ioSolver) {}
 
-    // Explicit sub-step count, refused before anything changes.
-    int sub_steps = 1;
-    if (mSettings.mIntegrator == EIntegrator::SymplecticEuler)
+    Result<int> SubStepsFor(double inDeltaTime) const override
     {
-        const double count = std::ceil(inDeltaTime / mStableTimeStep);
-        if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
+        if (!IsExplicit())
+            return 1;
+        const double count = std::ceil(inDeltaTime / mSolver.mStableTimeStep);
+        if (!(count <= static_cast<double>(mSolver.mSettings.mMaxSubSteps)))
         {
             std::ostringstream message;
-            message
-                << "TetSolver::Step: " << inDeltaTime << " s needs " << count
-                << " symplectic sub-steps of at most " << mStableTimeStep
-                << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps
-                << "; use a smaller step, a softer material, coarser elements or EIntegrator::ImplicitEuler";
+            message << "TetSolver::Step: " << inDeltaTime << " s needs " << count << " symplectic sub-steps of at most "
+                    << mSolver.mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSolver.mSettings.mMaxSubSteps
+                    << "; use a smaller step, a softer material, coarser elements or EIntegrator::ImplicitEuler";
             return MakeError(EError::InvalidArgument, message.str());
         }
-        sub_steps = std::max(1, static_cast<int>(count));
+        return std::max(1, static_cast<int>(count));
     }
 
-    TetStepResult result;
-    if (mSleeping)
-    {
-        result.mEvents = ETetStepEvent::Sleeping;
-        return result;
-    }
+    bool IsExplicit() const override { return mSolver.mSettings.mIntegrator == EIntegrator::SymplecticEuler; }
 
-    // Energy reference after the last input change, and a copy of the state to restore on divergence.
-    if (!mReferenceValid)
+    Status SaveStepStart() override
     {
-        const EnergyParts parts = MeasureEnergy();
-        mReferenceEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
-        mReferenceValid = true;
-    }
-    mSavedPositions = mPositions;
-    mSavedVelocities = mVelocities;
-    mSavedRotations = mRotations;
-    const bool changes_shape = mMaterial.IsPlastic() || mMaterial.IsBreakable();
-    if (changes_shape)
-        SaveShape(mSavedShape);
-
-    // Integrate; on divergence retry from the saved state with the step split into 2, 4, ... parts.
-    mPassEnergyValid = false;
-    bool diverged = true;
-    EnergyParts parts;
-    for (int split = 0; split <= mSettings.mMaxStepSplits && diverged; ++split)
-    {
-        const int pieces = 1 << split;
-        const bool symplectic = mSettings.mIntegrator == EIntegrator::SymplecticEuler;
-        if (symplectic && static_cast<long long>(sub_steps) * pieces > mSettings.mMaxSubSteps)
-            break; // no retry within the sub-step budget
-        mStepPlasticElements = 0;
-        mStepBrokenLinks = 0;
-        if (split > 0)
+        // Energy reference after the last input change, and a copy of the state to restore on divergence.
+        TetSolver& s = mSolver;
+        if (!s.mReferenceValid)
         {
-            result.mEvents = result.mEvents | ETetStepEvent::Split;
-            if (changes_shape)
-                RestoreShape(mSavedShape);
-            mPositions = mSavedPositions;
-            mVelocities = mSavedVelocities;
-            mRotations = mSavedRotations;
+            const EnergyParts parts = s.MeasureEnergy();
+            s.mReferenceEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
+            s.mReferenceValid = true;
         }
-        if (symplectic)
-        {
-            result.mSubSteps = sub_steps * pieces;
-            StepSymplectic(inDeltaTime, result.mSubSteps);
-        }
+        s.mSavedPositions = s.mPositions;
+        s.mSavedVelocities = s.mVelocities;
+        s.mSavedRotations = s.mRotations;
+        if (ChangesShape())
+            s.SaveShape(s.mSavedShape);
+        s.mPassEnergyValid = false;
+        return Status::Ok();
+    }
+
+    void RestoreStepStart() override
+    {
+        TetSolver& s = mSolver;
+        if (ChangesShape())
+            s.RestoreShape(s.mSavedShape);
+        s.mStepPlasticElements = 0;
+        s.mStepBrokenLinks = 0;
+        s.mPositions = s.mSavedPositions;
+        s.mVelocities = s.mSavedVelocities;
+        s.mRotations = s.mSavedRotations;
+    }
+
+    TetStepAttempt Attempt(double inDeltaTime, int inPieces, TetStepResult& ioResult) override
+    {
+        TetSolver& s = mSolver;
+        s.mStepPlasticElements = 0;
+        s.mStepBrokenLinks = 0;
+        if (IsExplicit())
+            s.StepSymplectic(inDeltaTime, inPieces);
         else
-        {
-            result.mSubSteps = pieces;
-            for (int piece = 0; piece < pieces; ++piece)
+            for (int piece = 0; piece < inPieces; ++piece)
             {
-                StepImplicit(inDeltaTime / pieces, result);
-                const int changed = mStepPlasticElements + mStepBrokenLinks;
-                AfterSubStep(inDeltaTime / pieces);
-                if (mStepPlasticElements + mStepBrokenLinks != changed)
-                    mPassEnergyValid = false; // plastic flow or a crack changed the energy of these positions
+                s.StepImplicit(inDeltaTime / inPieces, ioResult);
+                const int changed = s.mStepPlasticElements + s.mStepBrokenLinks;
+                s.AfterSubStep(inDeltaTime / inPieces);
+                if (s.mStepPlasticElements + s.mStepBrokenLinks != changed)
+                    s.mPassEnergyValid = false; // plastic flow or a crack changed the energy of these positions
             }
-        }
 
         // Divergence: non-finite state or energy gained beyond the bound (see mDivergenceEnergyRatio).
-        diverged = !AllFinite(mPositions) || !AllFinite(mVelocities);
-        if (!diverged)
+        TetStepAttempt attempt;
+        attempt.mDiverged = !AllFinite(s.mPositions) || !AllFinite(s.mVelocities);
+        if (!attempt.mDiverged)
         {
-            parts = MeasuredOrPassEnergy();
+            const EnergyParts parts = s.MeasuredOrPassEnergy();
             const double energy = parts.mKinetic + parts.mElastic + parts.mPotential;
             const double content = parts.mKinetic + parts.mElastic + parts.mPotentialMagnitude;
-            diverged = !std::isfinite(energy) ||
-                       energy - mReferenceEnergy >
-                           mSettings.mDivergenceEnergyRatio * std::max(content, cEnergyFloor);
+            attempt.mDiverged = !std::isfinite(energy) ||
+                                energy - s.mReferenceEnergy > s.mSettings.mDivergenceEnergyRatio * std::max(content, cEnergyFloor);
+            attempt.mKineticEnergy = parts.mKinetic;
+            attempt.mEnergy = energy;
         }
-    }
-    if (diverged)
-    {
-        if (changes_shape)
-            RestoreShape(mSavedShape);
-        mStepPlasticElements = 0;
-        mStepBrokenLinks = 0;
-        mPositions = mSavedPositions;
-        mVelocities = mSavedVelocities;
-        mRotations = mSavedRotations;
-        mQuietSteps = 0;
-        result.mEvents = result.mEvents | ETetStepEvent::Diverged;
-        result.mKineticEnergy = KineticEnergy();
-        result.mEnergy = mReferenceEnergy;
-        return result;
-    }
-    result.mKineticEnergy = parts.mKinetic;
-    result.mEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
-
-    result.mPlasticElements = mStepPlasticElements;
-    result.mBrokenLinks = mStepBrokenLinks;
-    if (mStepPlasticElements > 0)
-        result.mEvents = result.mEvents | ETetStepEvent::Yielded;
-    if (mStepBrokenLinks > 0)
-    {
-        result.mEvents = result.mEvents | ETetStepEvent::Fractured;
-        mQuietSteps = 0;
+        attempt.mPlasticElements = s.mStepPlasticElements;
+        attempt.mBrokenLinks = s.mStepBrokenLinks;
+        return attempt;
     }
 
-    // Sleep after mSleepStepCount quiet steps.
-    const double sleep_energy = 0.5 * mFreeMass * mSettings.mSleepSpeed * mSettings.mSleepSpeed;
-    mQuietSteps = parts.mKinetic < sleep_energy ? mQuietSteps + 1 : 0;
-    if (mQuietSteps >= mSettings.mSleepStepCount)
+    void DescribeRestored(TetStepResult& ioResult) const override
     {
-        for (Vec3& velocity : mVelocities)
+        ioResult.mKineticEnergy = mSolver.KineticEnergy();
+        ioResult.mEnergy = mSolver.mReferenceEnergy;
+    }
+
+    double FreeMass() const override { return mSolver.mFreeMass; }
+
+    void FallAsleep() override
+    {
+        for (Vec3& velocity : mSolver.mVelocities)
             velocity.setZero();
-        mSleeping = true;
-        mReferenceValid = false;
-        result.mEvents = result.mEvents | ETetStepEvent::FellAsleep;
+        mSolver.mReferenceValid = false;
     }
-    return result;
+
+private:
+    bool ChangesShape() const { return mSolver.mMaterial.IsPlastic() || mSolver.mMaterial.IsBreakable(); }
+
+    TetSolver& mSolver;
+};
+
+Result<TetStepResult> TetSolver::Step(double inDeltaTime)
+{
+    StepBackend backend(*this);
+    return mStepper.Step(backend, mSettings, inDeltaTime, "TetSolver");
 }
 
 // Static equilibrium f_elastic(x) + f_load = 0 by repeated linearisation: K(x_k) dx = f_elastic(x_k) +

@@ -16,4 +16,5 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetPatchTest.cpp
     fem/TetSleepTest.cpp
     fem/TetSolverTest.cpp
+    fem/TetStepperTest.cpp
     fem/TetStressTest.cpp)

@@ -356,8 +356,7 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
 
 void GpuTetSolver::InputChanged()
 {
-    mSleeping = false;
-    mQuietSteps = 0;
+    mStepper.Wake();
 }
 
 void GpuTetSolver::WakeUp()
@@ -518,110 +517,102 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLi
     return words[0] == 0 && std::isfinite(energy);
 }
 
-Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
+// The GPU side of fem::TetStepper's policy: the node state saved and restored by buffer copies on the device
+// (no readback), divergence detected as a non-finite state only.
+class GpuTetSolver::StepBackend final : public fem::TetStepBackend
 {
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-    {
-        std::ostringstream message;
-        message << "GpuTetSolver::Step: time step " << inDeltaTime << " s must be finite and > 0";
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite, message.str());
-    }
-    const double count = std::ceil(inDeltaTime / mStableTimeStep);
-    if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
-    {
-        std::ostringstream message;
-        message << "GpuTetSolver::Step: " << inDeltaTime << " s needs " << count << " sub-steps of at most "
-                << mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps;
-        return MakeError(EError::InvalidArgument, message.str());
-    }
-    fem::TetStepResult result;
-    if (mSleeping)
-    {
-        result.mEvents = fem::ETetStepEvent::Sleeping;
-        return result;
-    }
-    if (Status status = mDevice->MakeCurrent(); status.HasError())
-        return status.GetError();
-    const int sub_steps = std::max(1, static_cast<int>(count));
+public:
+    explicit StepBackend(GpuTetSolver& ioSolver) : mSolver(ioSolver) {}
 
-    // The start of the step, to restore on divergence: node state on the GPU (copies, no readback) and, for
-    // a breakable prop, the connectivity on the host.
-    auto save = [this](StorageBuffer& outCopy, const StorageBuffer& inSource)
+    Result<int> SubStepsFor(double inDeltaTime) const override
     {
-        if (outCopy.GetSize() != inSource.GetSize())
-            (void)Assign(outCopy, StorageBuffer::Create(mDevice, inSource.GetSize()));
-        outCopy.CopyFrom(inSource);
-    };
-    save(mSavedPositions, mPositions);
-    save(mSavedVelocities, mVelocities);
-    save(mSavedExternal, mExternal);
-    save(mSavedRotations, mRotations);
-    const std::vector<fem::TetIndices> saved_elements = mElementNodes;
-    const std::vector<std::uint8_t> saved_broken = mBroken;
-    const std::vector<double> saved_masses = mMasses, saved_inverse_masses = mInverseMasses;
-    auto restore = [&]()
+        const double count = std::ceil(inDeltaTime / mSolver.mStableTimeStep);
+        if (!(count <= static_cast<double>(mSolver.mSettings.mMaxSubSteps)))
+        {
+            std::ostringstream message;
+            message << "GpuTetSolver::Step: " << inDeltaTime << " s needs " << count << " sub-steps of at most "
+                    << mSolver.mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSolver.mSettings.mMaxSubSteps;
+            return MakeError(EError::InvalidArgument, message.str());
+        }
+        return std::max(1, static_cast<int>(count));
+    }
+
+    bool IsExplicit() const override { return true; }
+
+    Status SaveStepStart() override
     {
-        if (mElementNodes != saved_elements)
+        GpuTetSolver& s = mSolver;
+        if (Status status = s.mDevice->MakeCurrent(); status.HasError())
+            return status;
+        const auto save = [&](StorageBuffer& outCopy, const StorageBuffer& inSource) {
+            if (outCopy.GetSize() != inSource.GetSize())
+                (void)Assign(outCopy, StorageBuffer::Create(s.mDevice, inSource.GetSize()));
+            outCopy.CopyFrom(inSource);
+        };
+        save(s.mSavedPositions, s.mPositions);
+        save(s.mSavedVelocities, s.mVelocities);
+        save(s.mSavedExternal, s.mExternal);
+        save(s.mSavedRotations, s.mRotations);
+        s.mSavedElementNodes = s.mElementNodes;
+        s.mSavedBroken = s.mBroken;
+        s.mSavedMasses = s.mMasses;
+        s.mSavedInverseMasses = s.mInverseMasses;
+        return Status::Ok();
+    }
+
+    void RestoreStepStart() override
+    {
+        GpuTetSolver& s = mSolver;
+        if (s.mElementNodes != s.mSavedElementNodes)
         {
             // A crack opened during the attempt: put the connectivity back first (buffer sizes follow it).
-            std::vector<Float4> node_state(saved_masses.size());
-            (void)UploadTopology(saved_elements, node_state, node_state, node_state);
-            mBroken = saved_broken;
-            const std::vector<std::uint32_t> broken(saved_broken.begin(), saved_broken.end());
+            std::vector<Float4> node_state(s.mSavedMasses.size());
+            (void)s.UploadTopology(s.mSavedElementNodes, node_state, node_state, node_state);
+            s.mBroken = s.mSavedBroken;
+            const std::vector<std::uint32_t> broken(s.mSavedBroken.begin(), s.mSavedBroken.end());
             if (!broken.empty())
-                mBrokenBuffer.Upload(0, broken.size() * sizeof(std::uint32_t), broken.data());
-            mMasses = saved_masses;
-            mInverseMasses = saved_inverse_masses;
+                s.mBrokenBuffer.Upload(0, broken.size() * sizeof(std::uint32_t), broken.data());
+            s.mMasses = s.mSavedMasses;
+            s.mInverseMasses = s.mSavedInverseMasses;
         }
-        mPositions.CopyFrom(mSavedPositions);
-        mVelocities.CopyFrom(mSavedVelocities);
-        mExternal.CopyFrom(mSavedExternal);
-        mRotations.CopyFrom(mSavedRotations);
-    };
+        s.mPositions.CopyFrom(s.mSavedPositions);
+        s.mVelocities.CopyFrom(s.mSavedVelocities);
+        s.mExternal.CopyFrom(s.mSavedExternal);
+        s.mRotations.CopyFrom(s.mSavedRotations);
+    }
 
-    bool finite = false;
-    double kinetic = 0.0;
-    for (int split = 0; split <= mSettings.mMaxStepSplits && !finite; ++split)
+    fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult&) override
     {
-        const long long pieces = static_cast<long long>(sub_steps) << split;
-        if (pieces > mSettings.mMaxSubSteps)
-            break;
-        if (split > 0)
-        {
-            result.mEvents = result.mEvents | fem::ETetStepEvent::Split;
-            restore();
-        }
-        result.mSubSteps = static_cast<int>(pieces);
-        result.mBrokenLinks = 0;
-        finite = Integrate(inDeltaTime, result.mSubSteps, result.mBrokenLinks, kinetic);
+        fem::TetStepAttempt attempt;
+        attempt.mDiverged = !mSolver.Integrate(inDeltaTime, inPieces, attempt.mBrokenLinks, attempt.mKineticEnergy);
+        return attempt;
     }
-    if (!finite)
-    {
-        restore();
-        result.mBrokenLinks = 0;
-        result.mEvents = result.mEvents | fem::ETetStepEvent::Diverged;
-    }
-    if (result.mBrokenLinks > 0)
-        result.mEvents = result.mEvents | fem::ETetStepEvent::Fractured;
-    if (!finite)
-        return result;
 
-    // Sleep after mSleepStepCount quiet steps, as the CPU solver: velocities to zero, nothing dispatched until
-    // an input changes.
-    result.mKineticEnergy = kinetic;
-    double free_mass = 0.0;
-    for (std::size_t node = 0; node < mMasses.size(); ++node)
-        free_mass += mInverseMasses[node] > 0.0 ? mMasses[node] : 0.0;
-    const double sleep_energy = 0.5 * free_mass * mSettings.mSleepSpeed * mSettings.mSleepSpeed;
-    mQuietSteps = kinetic < sleep_energy && result.mBrokenLinks == 0 ? mQuietSteps + 1 : 0;
-    if (mQuietSteps >= mSettings.mSleepStepCount)
+    // The restored start's energies would need a readback: left 0.
+    void DescribeRestored(fem::TetStepResult&) const override {}
+
+    double FreeMass() const override
     {
-        const std::vector<Float4> zeros(mMasses.size(), Float4{});
-        mVelocities.Upload(0, zeros.size() * sizeof(Float4), zeros.data());
-        mSleeping = true;
-        result.mEvents = result.mEvents | fem::ETetStepEvent::FellAsleep;
+        double free_mass = 0.0;
+        for (std::size_t node = 0; node < mSolver.mMasses.size(); ++node)
+            free_mass += mSolver.mInverseMasses[node] > 0.0 ? mSolver.mMasses[node] : 0.0;
+        return free_mass;
     }
-    return result;
+
+    void FallAsleep() override
+    {
+        const std::vector<Float4> zeros(mSolver.mMasses.size(), Float4{});
+        mSolver.mVelocities.Upload(0, zeros.size() * sizeof(Float4), zeros.data());
+    }
+
+private:
+    GpuTetSolver& mSolver;
+};
+
+Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
+{
+    StepBackend backend(*this);
+    return mStepper.Step(backend, mSettings, inDeltaTime, "GpuTetSolver");
 }
 
 std::vector<fem::TetFragment> GpuTetSolver::ComputeFragments() const

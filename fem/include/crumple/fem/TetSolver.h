@@ -17,6 +17,7 @@
 #include <crumple/fem/TetSolverWorkspace.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/TetStepResult.h>
+#include <crumple/fem/TetStepper.h>
 
 #include <cstdint>
 #include <span>
@@ -148,7 +149,7 @@ public:
     /// The symplectic Euler sub-step (s) that Step() divides its time step by
     double GetStableTimeStep() const { return mStableTimeStep; }
     /// True while asleep
-    bool IsSleeping() const { return mSleeping; }
+    bool IsSleeping() const { return mStepper.IsSleeping(); }
     /// Element evaluations done by Step() and SolveStatic() so far (force, stiffness-product, diagonal and
     /// energy passes, one per element each): a cost counter that tests can compare instead of timing
     std::uint64_t GetElementWorkCount() const { return mElementWork; }
@@ -259,9 +260,10 @@ private:
     double mReferenceEnergy = 0.0;
     bool mReferenceValid = false;
 
-    // Sleep.
-    bool mSleeping = false;
-    int mQuietSteps = 0;
+    // The step policy (validation, split-retry, restore, sleep), shared with the GPU solver, and this
+    // solver's side of it (TetSolver.cpp).
+    TetStepper mStepper;
+    class StepBackend;
 
     std::uint64_t mElementWork = 0;
     int mFactorizationCount = 0;

@@ -10,6 +10,7 @@
 #include <crumple/fem/TetSolver.h>
 #include <crumple/fem/TetSolverSettings.h>
 #include <crumple/fem/TetStepResult.h>
+#include <crumple/fem/TetStepper.h>
 #include <crumple/fem/FractureLinks.h>
 #include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetFragment.h>
@@ -90,7 +91,7 @@ public:
     const std::vector<fem::TetIndices>& GetElementNodes() const { return mElementNodes; }
 
     /// True while asleep
-    bool IsSleeping() const { return mSleeping; }
+    bool IsSleeping() const { return mStepper.IsSleeping(); }
     /// Ends sleep without changing the state.
     void WakeUp();
 
@@ -157,8 +158,14 @@ private:
     double mStableTimeStep = 0.0;
     std::uint64_t mElementWork = 0;
 
-    bool mSleeping = false;
-    int mQuietSteps = 0;
+    // The step policy (validation, split-retry, restore, sleep), the CPU solver's, and this solver's side of
+    // it (GpuTetSolver.cpp): the start of a step is kept in the mSaved* buffers and, for a breakable prop, the
+    // host copies below.
+    fem::TetStepper mStepper;
+    class StepBackend;
+    std::vector<fem::TetIndices> mSavedElementNodes;
+    std::vector<std::uint8_t> mSavedBroken;
+    std::vector<double> mSavedMasses, mSavedInverseMasses;
     ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass;
     StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
         mIncident, mStatus;

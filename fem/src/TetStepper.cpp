@@ -1,0 +1,80 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/TetStepper.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace crumple::fem
+{
+
+Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolverSettings& inSettings, double inDeltaTime,
+                                       const char* inSolverName)
+{
+    // intent: every refusal before anything changes
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+    {
+        std::ostringstream message;
+        message << inSolverName << "::Step: time step " << inDeltaTime << " s must be finite and > 0";
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite, message.str());
+    }
+    Result<int> sub_steps = ioBackend.SubStepsFor(inDeltaTime);
+    if (!sub_steps)
+        return sub_steps.GetError();
+
+    TetStepResult result;
+    if (mSleeping)
+    {
+        result.mEvents = ETetStepEvent::Sleeping;
+        return result;
+    }
+    if (Status saved = ioBackend.SaveStepStart(); !saved)
+        return saved.GetError();
+
+    // Integrate; on divergence retry from the saved start with the step split into 2, 4, ... parts.
+    TetStepAttempt attempt;
+    attempt.mDiverged = true;
+    const bool explicit_steps = ioBackend.IsExplicit();
+    for (int split = 0; split <= inSettings.mMaxStepSplits && attempt.mDiverged; ++split)
+    {
+        const long long pieces = (explicit_steps ? static_cast<long long>(sub_steps.Get()) : 1LL) << split;
+        if (explicit_steps && pieces > inSettings.mMaxSubSteps)
+            break; // no retry within the sub-step budget
+        if (split > 0)
+        {
+            result.mEvents = result.mEvents | ETetStepEvent::Split;
+            ioBackend.RestoreStepStart();
+        }
+        result.mSubSteps = static_cast<int>(pieces);
+        attempt = ioBackend.Attempt(inDeltaTime, result.mSubSteps, result);
+    }
+    if (attempt.mDiverged)
+    {
+        ioBackend.RestoreStepStart();
+        mQuietSteps = 0;
+        result.mEvents = result.mEvents | ETetStepEvent::Diverged;
+        ioBackend.DescribeRestored(result);
+        return result;
+    }
+    result.mKineticEnergy = attempt.mKineticEnergy;
+    result.mEnergy = attempt.mEnergy;
+    result.mPlasticElements = attempt.mPlasticElements;
+    result.mBrokenLinks = attempt.mBrokenLinks;
+    if (attempt.mPlasticElements > 0)
+        result.mEvents = result.mEvents | ETetStepEvent::Yielded;
+    if (attempt.mBrokenLinks > 0)
+        result.mEvents = result.mEvents | ETetStepEvent::Fractured;
+
+    // Sleep after mSleepStepCount quiet steps.
+    const double sleep_energy = 0.5 * ioBackend.FreeMass() * inSettings.mSleepSpeed * inSettings.mSleepSpeed;
+    mQuietSteps = attempt.mKineticEnergy < sleep_energy ? mQuietSteps + 1 : 0;
+    if (mQuietSteps >= inSettings.mSleepStepCount)
+    {
+        ioBackend.FallAsleep();
+        mSleeping = true;
+        result.mEvents = result.mEvents | ETetStepEvent::FellAsleep;
+    }
+    return result;
+}
+
+} // namespace crumple::fem

@@ -1,0 +1,167 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// TetStepper: the step policy both tetrahedral backends share, driven through a scripted backend that records
+// what the policy asked of it.
+#include <crumple/fem/TetStepper.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace crumple;
+using namespace crumple::fem;
+
+namespace
+{
+
+// A backend whose attempts diverge while fewer than mPiecesNeeded pieces are asked for, with a scripted
+// kinetic energy; every call is logged.
+struct ScriptedBackend final : TetStepBackend
+{
+    int mSubSteps = 3;             // what SubStepsFor answers (explicit) or 1 (implicit)
+    bool mExplicit = true;
+    int mPiecesNeeded = 1;         // attempts with fewer pieces diverge
+    double mKinetic = 1.0;         // J after a successful attempt
+    int mBrokenLinks = 0, mPlastic = 0;
+    bool mRefuseSave = false;
+    std::vector<std::string> mCalls;
+    std::vector<int> mPieces;      // of each attempt
+
+    Result<int> SubStepsFor(double) const override { return mExplicit ? mSubSteps : 1; }
+    bool IsExplicit() const override { return mExplicit; }
+    Status SaveStepStart() override
+    {
+        mCalls.push_back("save");
+        if (mRefuseSave)
+            return MakeError(EError::InvalidArgument, "no device");
+        return Status::Ok();
+    }
+    void RestoreStepStart() override { mCalls.push_back("restore"); }
+    TetStepAttempt Attempt(double, int inPieces, TetStepResult& ioResult) override
+    {
+        mCalls.push_back("attempt");
+        mPieces.push_back(inPieces);
+        ++ioResult.mNewtonIterations; // statistics of every attempt count
+        TetStepAttempt attempt;
+        attempt.mDiverged = inPieces < mPiecesNeeded;
+        attempt.mKineticEnergy = mKinetic;
+        attempt.mEnergy = 2.0 * mKinetic;
+        attempt.mBrokenLinks = mBrokenLinks;
+        attempt.mPlasticElements = mPlastic;
+        return attempt;
+    }
+    void DescribeRestored(TetStepResult& ioResult) const override { ioResult.mEnergy = -1.0; }
+    double FreeMass() const override { return 2.0; } // sleep below 1/2 * 2 kg * (1e-3 m/s)^2 = 1e-6 J
+    void FallAsleep() override { mCalls.push_back("asleep"); }
+};
+
+TetSolverSettings Settings()
+{
+    TetSolverSettings settings;
+    settings.mMaxStepSplits = 3;
+    settings.mMaxSubSteps = 20;
+    settings.mSleepSpeed = 1.0e-3;
+    settings.mSleepStepCount = 3;
+    return settings;
+}
+
+} // namespace
+
+TEST_CASE("TetStepper refuses a bad step before its backend changes anything", "[fem]")
+{
+    TetStepper stepper;
+    ScriptedBackend backend;
+    for (const double bad : {0.0, -0.01, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+        const Result<TetStepResult> step = stepper.Step(backend, Settings(), bad, "Scripted");
+        REQUIRE_FALSE(step.IsValid());
+        CHECK(step.GetError().mMessage.rfind("Scripted::Step: time step", 0) == 0);
+    }
+    backend.mRefuseSave = true;
+    CHECK(stepper.Step(backend, Settings(), 0.01, "Scripted").GetError().mMessage == "no device");
+    CHECK(backend.mCalls == std::vector<std::string>{"save"});
+}
+
+TEST_CASE("TetStepper retries a diverged step in 2, 4, ... pieces from its saved start", "[fem]")
+{
+    SECTION("explicit: the sub-steps double, within the sub-step budget")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mPiecesNeeded = 12; // 3 and 6 diverge, 12 does not
+        const TetStepResult result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+        CHECK(backend.mPieces == std::vector<int>{3, 6, 12});
+        CHECK(backend.mCalls == std::vector<std::string>{"save", "attempt", "restore", "attempt", "restore", "attempt"});
+        CHECK(result.mSubSteps == 12);
+        CHECK(result.mNewtonIterations == 3);
+        CHECK(HasEvent(result.mEvents, ETetStepEvent::Split));
+        CHECK_FALSE(HasEvent(result.mEvents, ETetStepEvent::Diverged));
+        CHECK(result.mKineticEnergy == 1.0);
+        CHECK(result.mEnergy == 2.0);
+    }
+    SECTION("explicit: past the budget (24 > 20 sub-steps) the step is given up and restored")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mPiecesNeeded = 24;
+        backend.mBrokenLinks = 5;
+        const TetStepResult result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+        CHECK(backend.mPieces == std::vector<int>{3, 6, 12});
+        CHECK(backend.mCalls.back() == "restore");
+        CHECK(HasEvent(result.mEvents, ETetStepEvent::Diverged));
+        CHECK_FALSE(HasEvent(result.mEvents, ETetStepEvent::Fractured)); // a restored step broke nothing
+        CHECK(result.mBrokenLinks == 0);
+        CHECK(result.mEnergy == -1.0); // the restored start's, from the backend
+    }
+    SECTION("implicit: 1, 2, 4, 8 pieces (mMaxStepSplits 3), then given up")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mExplicit = false;
+        backend.mPiecesNeeded = 100;
+        const TetStepResult result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+        CHECK(backend.mPieces == std::vector<int>{1, 2, 4, 8});
+        CHECK(HasEvent(result.mEvents, ETetStepEvent::Diverged));
+        CHECK(HasEvent(result.mEvents, ETetStepEvent::Split));
+    }
+}
+
+TEST_CASE("TetStepper reports cracks and flow, and puts a quiet solver to sleep until it is woken", "[fem]")
+{
+    TetStepper stepper;
+    ScriptedBackend backend;
+    backend.mBrokenLinks = 2;
+    backend.mPlastic = 7;
+    const TetStepResult loud = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+    CHECK(HasEvent(loud.mEvents, ETetStepEvent::Fractured));
+    CHECK(HasEvent(loud.mEvents, ETetStepEvent::Yielded));
+    CHECK(loud.mBrokenLinks == 2);
+    CHECK(loud.mPlasticElements == 7);
+
+    // Three quiet steps (mSleepStepCount) put it to sleep; a loud one in between starts the count again.
+    backend.mBrokenLinks = backend.mPlastic = 0;
+    backend.mKinetic = 0.5e-6;
+    CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    backend.mKinetic = 2.0e-6;
+    CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    backend.mKinetic = 0.5e-6;
+    for (int step = 0; step < 2; ++step)
+        CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    CHECK(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    CHECK(stepper.IsSleeping());
+    CHECK(backend.mCalls.back() == "asleep");
+
+    // Asleep, a step asks nothing of the backend.
+    const std::size_t calls = backend.mCalls.size();
+    const TetStepResult asleep = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+    CHECK(asleep.mEvents == ETetStepEvent::Sleeping);
+    CHECK(backend.mCalls.size() == calls);
+    stepper.Wake();
+    CHECK_FALSE(stepper.IsSleeping());
+    CHECK(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents == ETetStepEvent::None);
+    CHECK(backend.mCalls.size() == calls + 2);
+}
