@@ -65,9 +65,10 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
     if (attempt.mBrokenLinks > 0)
         result.mEvents = result.mEvents | ETetStepEvent::Fractured;
 
-    // Sleep after mSleepStepCount quiet steps.
+    // Sleep after mSleepStepCount quiet steps: slow, and nothing cracked (a fresh crack may free a piece that
+    // has yet to move).
     const double sleep_energy = 0.5 * ioBackend.FreeMass() * inSettings.mSleepSpeed * inSettings.mSleepSpeed;
-    mQuietSteps = attempt.mKineticEnergy < sleep_energy ? mQuietSteps + 1 : 0;
+    mQuietSteps = attempt.mKineticEnergy < sleep_energy && attempt.mBrokenLinks == 0 ? mQuietSteps + 1 : 0;
     if (mQuietSteps >= inSettings.mSleepStepCount)
     {
         ioBackend.FallAsleep();

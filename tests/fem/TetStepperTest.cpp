@@ -141,7 +141,8 @@ TEST_CASE("TetStepper reports cracks and flow, and puts a quiet solver to sleep 
     CHECK(loud.mBrokenLinks == 2);
     CHECK(loud.mPlasticElements == 7);
 
-    // Three quiet steps (mSleepStepCount) put it to sleep; a loud one in between starts the count again.
+    // Three quiet steps (mSleepStepCount) put it to sleep; a fast or a cracking one in between starts the count
+    // again.
     backend.mBrokenLinks = backend.mPlastic = 0;
     backend.mKinetic = 0.5e-6;
     CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
@@ -149,6 +150,10 @@ TEST_CASE("TetStepper reports cracks and flow, and puts a quiet solver to sleep 
     backend.mKinetic = 2.0e-6;
     CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
     backend.mKinetic = 0.5e-6;
+    CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    backend.mBrokenLinks = 1; // slow, but cracking: not quiet
+    CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
+    backend.mBrokenLinks = 0;
     for (int step = 0; step < 2; ++step)
         CHECK_FALSE(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
     CHECK(HasEvent(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep));
