@@ -40,7 +40,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
     drive.mDuration = inOptions.mQuick ? 0.3 : 0.6;
     common::FenceDriveSettings fence = drive;
     drive.mFence = false;
-    std::vector<double> drive_ms, drive_wall_ms, fence_ms, worst_ms, props_ms, hand_over_ms, hand_over_total_ms, wall_ms;
+    std::vector<double> drive_ms, drive_wall_ms, fence_ms, worst_ms, props_ms, hand_over_ms, hand_over_total_ms, wall_ms, prepare_ms;
     common::FenceRun last;
     for (int rep = 0; rep < repetitions; ++rep)
     {
@@ -59,6 +59,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
         props_ms.push_back(run.mPropsCpuMs / run.mSteps);
         hand_over_ms.push_back(run.mHandOverCpuMs / run.mSteps);
         hand_over_total_ms.push_back(run.mHandOverCpuMs);
+        prepare_ms.push_back(run.mPrepareCpuMs);
         wall_ms.push_back(run.mWallMs / run.mSteps);
         last = run;
     }
@@ -71,7 +72,7 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
                  last.mCarImpulse != 0.0 ? engine_change / last.mCarImpulse - 1.0 : 0.0, "rel_engine_vs_crumple_car_impulse",
                  "cpu_ms_per_step=" + FormatExtra(Median(fence_ms)) + ";wall_ms_per_step=" + FormatExtra(Median(wall_ms)) +
                      ";ratio_to_drive=" + FormatExtra(Median(fence_ms) / std::max(Median(drive_ms), 1e-9)) +
-                     ";worst_step_ms=" + FormatExtra(Median(worst_ms)) +
+                     ";worst_step_ms=" + FormatExtra(Median(worst_ms)) + ";prepare_ms=" + FormatExtra(Median(prepare_ms)) +
                      ";fem_ms_per_step_per_prop=" + FormatExtra(Median(props_ms)) +
                      ";hand_over_ms_per_step=" + FormatExtra(Median(hand_over_ms)) + ";hand_over_ms_total=" + FormatExtra(Median(hand_over_total_ms)) +
                      ";tets=" + std::to_string(last.mFenceTets) + ";links_broken=" + std::to_string(last.mBrokenLinks) +

@@ -787,6 +787,25 @@ public:
         ioResult.mEnergy = mSolver.mReferenceEnergy;
     }
 
+    bool IsAtRestUnloaded() const override
+    {
+        // intent: exact comparisons, velocities first (a moving prop answers at its first moving node)
+        const TetSolver& s = mSolver;
+        for (const Vec3& velocity : s.mVelocities)
+            if (!(velocity.array() == 0.0).all())
+                return false;
+        if (!s.mSettings.mGravity.isZero(0.0) && s.mFreeMass > 0.0)
+            return false;
+        for (const Vec3& force : s.mExternalForces)
+            if (!(force.array() == 0.0).all())
+                return false;
+        for (const Mat3& plastic : s.mPlasticStrains)
+            if (!(plastic.array() == 0.0).all())
+                return false;
+        return std::equal(s.mPositions.begin(), s.mPositions.end(), s.mNodeRestPositions.begin(), s.mNodeRestPositions.end(),
+                          [](const Vec3& inA, const Vec3& inB) { return (inA.array() == inB.array()).all(); });
+    }
+
     double FreeMass() const override { return mSolver.mFreeMass; }
 
     void FallAsleep() override
@@ -801,6 +820,22 @@ private:
 
     TetSolver& mSolver;
 };
+
+Status TetSolver::Prepare(double inDeltaTime)
+{
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
+                         "TetSolver::Prepare: the time step must be finite and > 0 s");
+    mWorkspace.Get().Resize(mPositions.size());
+    if (mSettings.mIntegrator == EIntegrator::ImplicitEuler)
+    {
+        // The scales StepImplicit uses for a step of this length.
+        const FemMaterialSettings& material = mMaterial.GetSettings();
+        (void)FactoredRestSystem(ParallelPassInput(), 1.0 + inDeltaTime * material.mMassDamping,
+                                 inDeltaTime * inDeltaTime + inDeltaTime * material.mStiffnessDamping);
+    }
+    return Status::Ok();
+}
 
 Result<TetStepResult> TetSolver::Step(double inDeltaTime)
 {

@@ -28,6 +28,15 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
         result.mEvents = ETetStepEvent::Sleeping;
         return result;
     }
+    // Sleep is on (mSleepSpeed > 0) and nothing could move: asleep now, not after mSleepStepCount steps.
+    if (inSettings.mSleepSpeed > 0.0 && ioBackend.IsAtRestUnloaded())
+    {
+        ioBackend.FallAsleep();
+        mSleeping = true;
+        mQuietSteps = 0;
+        result.mEvents = ETetStepEvent::Sleeping | ETetStepEvent::FellAsleep;
+        return result;
+    }
     if (Status saved = ioBackend.SaveStepStart(); !saved)
         return saved.GetError();
 

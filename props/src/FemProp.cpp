@@ -9,6 +9,8 @@
 #include <crumple/gpu/GpuTetSolver.h>
 #endif
 
+#include <cmath>
+
 namespace crumple::props
 {
 
@@ -130,6 +132,16 @@ Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
 {
     CRUMPLE_PROPS_ON_GPU(Step(inDeltaTime))
     return mCpu->Step(inDeltaTime);
+}
+
+Status FemProp::Prepare(double inDeltaTime)
+{
+    if (mCpu)
+        return mCpu->Prepare(inDeltaTime);
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
+                         "FemProp::Prepare: the time step must be finite and > 0 s");
+    return Status::Ok();
 }
 
 Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,

@@ -139,6 +139,17 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
     return report;
 }
 
+Status PropWorld::Prepare(double inDeltaTime)
+{
+    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
+        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
+                         "PropWorld::Prepare: the time step must be finite and > 0 s");
+    for (Prop& prop : mProps)
+        if (Status prepared = prop.mProp.Prepare(inDeltaTime); !prepared)
+            return prepared; // cannot happen for a valid step: kept for a future backend's refusal
+    return Status::Ok();
+}
+
 Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMass)
 {
     if (!std::isfinite(inMinMass) || !(inMinMass >= 0.0))

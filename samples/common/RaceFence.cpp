@@ -32,7 +32,7 @@ constexpr double cMinPieceMass = 0.05;
 
 } // namespace
 
-Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, RacePropEngine inEngine)
+Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime)
 {
     Result<fem::TetFence> fence = fem::MakeTetFence(RaceCourse::FenceSettings());
     if (!fence)
@@ -68,6 +68,8 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
         return added.GetError();
     result->mProp = added.Get();
     result->mLeftOut.assign(made.Get().mMesh.GetTets().size(), 0);
+    if (Status prepared = result->mProps->Prepare(inStepTime); !prepared)
+        return prepared.GetError();
     return result;
 }
 
@@ -153,9 +155,9 @@ std::string RaceFence::Summary() const
     char line[320];
     std::snprintf(line, sizeof(line),
                   "fence: %zu tetrahedra, %d links broken, %d pieces loose (%zu engine bodies); FEM awake %d of %d "
-                  "engine steps, worst step %.2f ms, %.1f ms in all (game-thread CPU)",
+                  "engine steps, %d factorisations, worst step %.2f ms, %.1f ms in all (game-thread CPU)",
                   solver.GetElementNodes().size(), solver.GetBrokenLinkCount(), mLoose, mPieces.size(), mAwakeSteps, mSteps,
-                  mWorstStepMs, mTotalStepMs);
+                  solver.GetFactorizationCount(), mWorstStepMs, mTotalStepMs);
     return line;
 }
 

@@ -36,8 +36,9 @@ struct RacePropEngine
 class RaceFence
 {
 public:
-    /// Makes the fence's body in the engine and its prop in a PropWorld of ioDamage (which must outlive it).
-    static Result<std::unique_ptr<RaceFence>> Create(plugin::DamageWorld& ioDamage, RacePropEngine inEngine);
+    /// Makes the fence's body in the engine and its prop in a PropWorld of ioDamage (which must outlive it),
+    /// prepared for steps of inStepTime (s): the first hit does not factor its FEM in its frame.
+    static Result<std::unique_ptr<RaceFence>> Create(plugin::DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime);
 
     /// The fence's engine body
     plugin::BodyId GetBody() const { return mBody; }

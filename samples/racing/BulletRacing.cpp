@@ -153,13 +153,14 @@ int main(int argc, char** argv)
     parked_object.mMesh = common::MakeBoxMesh(RaceCourse::ParkedHalfExtents(), {42, 18, 14});
     const DeformableObject& parked_deformable = *damage.GetObject(damage.CreateDeformableObject(parked_body, parked_object).Get());
 
+    const double dt = 1.0 / 60.0; // a frame: four engine steps of 1/240 s
     // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each frame.
     bullet::BulletAdapter& bodies = *adapter;
     Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
         damage, {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
                  .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
                            .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}});
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}}, dt / 4.0);
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-bullet: the fence: %s\n", fence.GetError().mMessage.c_str());
@@ -181,7 +182,6 @@ int main(int argc, char** argv)
     session.Get()->PaintCar(car_deformable, "before.png");
 
     // Drive: full throttle to the target speed, then hold it; a frame every 0.1 s.
-    const double dt = 1.0 / 60.0;
     const int steps = static_cast<int>(std::lround(options.mDuration / dt));
     std::vector<BodyId> pieces;
     Status finished = Status::Ok();

@@ -180,6 +180,7 @@ int main(int argc, char** argv)
     parked_object.mMesh = common::MakeBoxMesh(parked_half, {42, 18, 14});
     const DeformableObject& parked_deformable = *damage.GetObject(damage.CreateDeformableObject(parked_body, parked_object).Get());
 
+    const double dt = 1.0 / 240.0;
     // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each frame.
     ode::OdeAdapter& bodies = *adapter;
     Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
@@ -192,7 +193,7 @@ int main(int argc, char** argv)
                      },
                  .mHeld = {.mCreatePieceBody = [&bodies, &scene](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(scene.mWorld, scene.mSpace, inBody); },
                            .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}});
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}}, dt);
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-ode: the fence: %s\n", fence.GetError().mMessage.c_str());
@@ -214,7 +215,6 @@ int main(int argc, char** argv)
     session.Get()->PaintCar(car_deformable, "before.png");
 
     // Drive: the rear motors spin the wheels up to the target speed; four ODE steps per 60 Hz frame.
-    const double dt = 1.0 / 240.0;
     const int frames = static_cast<int>(std::lround(options.mDuration * 60.0));
     std::vector<BodyId> pieces;
     Status finished = Status::Ok();

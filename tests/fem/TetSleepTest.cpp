@@ -103,3 +103,34 @@ TEST_CASE("Sleep: a free-falling body never sleeps; mSleepSpeed 0 disables sleep
     CHECK(!falling.IsSleeping());
     CHECK(!resting.IsSleeping());
 }
+
+TEST_CASE("Sleep: a solver that nothing could move sleeps from its first step, and wakes when something does",
+          "[fem]")
+{
+    // Without gravity, unstrained and still, a step would do nothing: no element work is spent on it.
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.1);
+    grid.mCellCount = {6, 2, 1};
+    TetSolverSettings weightless;
+    weightless.mGravity = Vec3::Zero();
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), weightless).Get();
+    REQUIRE(solver.SetNodeFixed(0, true).IsValid());
+    const TetStepResult first = solver.Step(1.0 / 60.0).Get();
+    CHECK(HasEvent(first.mEvents, ETetStepEvent::FellAsleep));
+    CHECK(HasEvent(first.mEvents, ETetStepEvent::Sleeping));
+    CHECK(solver.IsSleeping());
+    CHECK(solver.GetElementWorkCount() == 0u);
+    CHECK(solver.GetPositions() == TetGrid(grid).Get().GetRestPositions());
+
+    // An impulse moves it: awake, it integrates (and sleeps again only after mSleepStepCount quiet steps).
+    REQUIRE(solver.ApplyImpulse(20, Vec3(0.0, 0.0, 0.01)).IsValid());
+    const TetStepResult struck = solver.Step(1.0 / 60.0).Get();
+    CHECK_FALSE(HasEvent(struck.mEvents, ETetStepEvent::Sleeping));
+    CHECK(solver.GetElementWorkCount() > 0u);
+
+    // With gravity the same solver sags: it does not sleep at its first step.
+    TetSolver heavy = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), TetSolverSettings()).Get();
+    REQUIRE(heavy.SetNodeFixed(0, true).IsValid());
+    CHECK_FALSE(HasEvent(heavy.Step(1.0 / 60.0).Get().mEvents, ETetStepEvent::Sleeping));
+    CHECK(heavy.GetElementWorkCount() > 0u);
+}

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -27,6 +28,7 @@ struct ScriptedBackend final : TetStepBackend
     double mKinetic = 1.0;         // J after a successful attempt
     int mBrokenLinks = 0, mPlastic = 0;
     bool mRefuseSave = false;
+    bool mAtRest = false;
     std::vector<std::string> mCalls;
     std::vector<int> mPieces;      // of each attempt
 
@@ -54,6 +56,7 @@ struct ScriptedBackend final : TetStepBackend
         return attempt;
     }
     void DescribeRestored(TetStepResult& ioResult) const override { ioResult.mEnergy = -1.0; }
+    bool IsAtRestUnloaded() const override { return mAtRest; }
     double FreeMass() const override { return 2.0; } // sleep below 1/2 * 2 kg * (1e-3 m/s)^2 = 1e-6 J
     void FallAsleep() override { mCalls.push_back("asleep"); }
 };
@@ -169,4 +172,21 @@ TEST_CASE("TetStepper reports cracks and flow, and puts a quiet solver to sleep 
     CHECK_FALSE(stepper.IsSleeping());
     CHECK(stepper.Step(backend, Settings(), 0.01, "Scripted").Get().mEvents == ETetStepEvent::None);
     CHECK(backend.mCalls.size() == calls + 2);
+}
+
+TEST_CASE("TetStepper puts a solver that nothing could move to sleep at once, where sleep is on", "[fem]")
+{
+    TetStepper stepper;
+    ScriptedBackend backend;
+    backend.mAtRest = true;
+    TetSolverSettings no_sleep = Settings();
+    no_sleep.mSleepSpeed = 0.0;
+    CHECK(stepper.Step(backend, no_sleep, 0.01, "Scripted").Get().mEvents == ETetStepEvent::None);
+    CHECK_FALSE(stepper.IsSleeping());
+    const TetStepResult result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+    CHECK(result.mEvents == (ETetStepEvent::Sleeping | ETetStepEvent::FellAsleep));
+    CHECK(result.mSubSteps == 0);
+    CHECK(stepper.IsSleeping());
+    CHECK(backend.mCalls.back() == "asleep");
+    CHECK(std::count(backend.mCalls.begin(), backend.mCalls.end(), "attempt") == 1); // only the no-sleep step's
 }

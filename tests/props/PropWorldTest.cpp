@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -210,4 +211,25 @@ TEST_CASE("PropWorld refuses an unknown body, a second prop on a body and a bad 
     CHECK(props->Step(std::nan("")).HasError());
     CHECK(props->Step(-1.0).HasError());
     CHECK(props->GetProp(PropId{0})->GetCpuSolver()->GetPositions() == positions);
+}
+
+TEST_CASE("PropWorld::Prepare factors every implicit prop ahead of its first hit, and refuses a bad step", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, Panel(true)).Get();
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
+    CHECK(props->Prepare(0.0).GetError().mCode == EError::InvalidArgument);
+    CHECK(props->Prepare(std::numeric_limits<double>::infinity()).GetError().mCode == EError::NonFinite);
+    CHECK(solver.GetFactorizationCount() == 0);
+    REQUIRE(props->Prepare(1.0 / 60.0).IsValid());
+    CHECK(solver.GetFactorizationCount() == 1);
+    CHECK(solver.GetElementWorkCount() == 0u); // nothing stepped: the prop can still be recorded
+
+    // The first hit steps on the prepared factor.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.3, 0.2, 0.0)}));
+    fixture.mWorld.Flush();
+    REQUIRE(props->Step(1.0 / 60.0).Get().mStepped == 1);
+    CHECK(solver.GetFactorizationCount() == 1);
 }

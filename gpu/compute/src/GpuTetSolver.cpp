@@ -591,6 +591,9 @@ public:
     // The restored start's energies would need a readback: left 0.
     void DescribeRestored(fem::TetStepResult&) const override {}
 
+    // Knowing would need a readback of the node state every step: the GPU solver counts quiet steps instead.
+    bool IsAtRestUnloaded() const override { return false; }
+
     double FreeMass() const override
     {
         double free_mass = 0.0;

@@ -77,6 +77,12 @@ public:
     /// result reports ETetStepEvent::Diverged. A divergence is therefore not an error of the call, and a NaN
     /// never reaches the state.
     Result<TetStepResult> Step(double inDeltaTime);
+    /// Does now what the first Step(inDeltaTime) would do first: sizes the step's scratch and, for the implicit
+    /// integrator with EImplicitPreconditioner::RestFactorization, factors the rest system of this step length
+    /// (s, finite, > 0). For a game's level load: the first hit on a prop then does not pay the factorisation
+    /// in its frame (fracture, a change of anchors or another step length factor again). Changes no state,
+    /// so results are the same with and without it. Refused for a bad step length.
+    Status Prepare(double inDeltaTime);
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):
     /// repeated linearisations K(x) dx = f_elastic(x) + f_ext solved by conjugate gradient, until the

@@ -44,6 +44,9 @@ public:
     /// Kinetic and mechanical energy of the restored start, for a diverged step's result (0 where a backend
     /// would need a readback to know)
     virtual void DescribeRestored(TetStepResult& ioResult) const = 0;
+    /// True when a step could not move anything: no velocity, no load (external force, gravity on a free
+    /// node) and no strain, compared exactly (a backend that would need a readback to know answers false)
+    virtual bool IsAtRestUnloaded() const = 0;
     /// Mass of the free nodes (kg): the sleep threshold is 1/2 of it times the sleep speed squared
     virtual double FreeMass() const = 0;
     /// Sets every velocity to zero: the solver falls asleep
@@ -51,7 +54,8 @@ public:
 };
 
 /// The step policy both tetrahedral backends share: refuses a bad step before anything changes, does nothing
-/// while asleep, integrates, retries a diverged attempt from the saved start in 2, 4, ... pieces (up to
+/// while asleep, falls asleep at once where a step could move nothing (a prop made at rest without gravity:
+/// a held fence sleeps from its first step instead of integrating mSleepStepCount steps of nothing), integrates, retries a diverged attempt from the saved start in 2, 4, ... pieces (up to
 /// mMaxStepSplits, explicit ones within mMaxSubSteps), restores the start when every attempt diverged, reports
 /// the events, and puts the solver to sleep after mSleepStepCount quiet steps. Holds the sleep state.
 class CRUMPLE_API TetStepper

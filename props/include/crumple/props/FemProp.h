@@ -76,6 +76,8 @@ public:
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);
     Result<fem::TetStepResult> Step(double inDeltaTime);
+    /// fem::TetSolver::Prepare on the CPU (the GPU solver has nothing to prepare: it only checks the step)
+    Status Prepare(double inDeltaTime);
     /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses) to the prop whose body is
     /// inPropBody; all or nothing. outApplied (may be null) receives the nodal impulses applied (appended).
     Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,

@@ -102,6 +102,10 @@ public:
     /// that would need more sub-steps than allowed) is an error naming the prop; the props before it have
     /// stepped.
     Result<PropStepReport> Step(double inDeltaTime);
+    /// FemProp::Prepare for every prop (the props added so far): at level load, with the step the game will
+    /// use, so that the first hit does not factor a prop's implicit system in its frame. Changes no state.
+    /// Refused, preparing nothing, for a bad step length.
+    Status Prepare(double inDeltaTime);
 
     /// Hands over the pieces of the props that broke loose since the last call, each once, in PropId order
     /// and then fragment order: a piece with no fixed node, except, in a prop with no fixed node at all, the
