@@ -61,12 +61,28 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
         second_moments[&fragment - fragments.data()] += mass / 20.0 * (outer + sum * sum.transpose());
     }
 
-    // Node lists in ascending order, in one pass over the nodes (a node belongs to its component's fragment;
-    // a node of no element has a component of its own, which no group named). Not sorted per fragment: the
-    // prop's main piece holds nearly every node, and a sort of it was most of this function's time.
+    // Node lists, each ascending and without repeats: the nodes of a piece's elements, gathered node by node
+    // through each node's elements (linear; the sort of every element corner this replaces was most of this
+    // function's time, the prop's main piece holding nearly every node). Not by union-find root: a group
+    // whose elements share no node (a mesh may group them so) lies in two components, yet is one piece.
+    std::vector<int> incident_offsets(inPositions.size() + 1, 0);
+    for (const TetIndices& nodes : inElementNodes)
+        for (int node : nodes)
+            ++incident_offsets[static_cast<std::size_t>(node) + 1];
     for (std::size_t node = 0; node < inPositions.size(); ++node)
-        if (const int fragment = fragment_of_root[UnionFindRoot(parent, static_cast<int>(node))]; fragment >= 0)
-            fragments[fragment].mNodes.push_back(static_cast<int>(node));
+        incident_offsets[node + 1] += incident_offsets[node];
+    std::vector<int> incident(static_cast<std::size_t>(incident_offsets.back()));
+    std::vector<int> cursor(incident_offsets.begin(), incident_offsets.end() - 1);
+    for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
+        for (int node : inElementNodes[tet])
+            incident[static_cast<std::size_t>(cursor[static_cast<std::size_t>(node)]++)] = static_cast<int>(tet);
+    for (std::size_t node = 0; node < inPositions.size(); ++node)
+        for (int k = incident_offsets[node]; k < incident_offsets[node + 1]; ++k)
+        {
+            std::vector<int>& nodes = fragments[fragment_of_group[inLinks.mGroupOfElement[incident[static_cast<std::size_t>(k)]]]].mNodes;
+            if (nodes.empty() || nodes.back() != static_cast<int>(node))
+                nodes.push_back(static_cast<int>(node));
+        }
 
     // Centre of mass, inertia about it, anchoring.
     for (std::size_t index = 0; index < fragments.size(); ++index)

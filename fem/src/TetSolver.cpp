@@ -794,8 +794,8 @@ public:
         for (const Vec3& velocity : s.mVelocities)
             if (!(velocity.array() == 0.0).all())
                 return false;
-        if (!s.mSettings.mGravity.isZero(0.0) && s.mFreeMass > 0.0)
-            return false;
+        if (!s.mSettings.mGravity.isZero(0.0) && std::find(s.mFree.begin(), s.mFree.end(), std::uint8_t{1}) != s.mFree.end())
+            return false; // gravity pulls a free node
         for (const Vec3& force : s.mExternalForces)
             if (!(force.array() == 0.0).all())
                 return false;

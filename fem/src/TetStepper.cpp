@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace crumple::fem
 {
@@ -18,9 +19,18 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
         message << inSolverName << "::Step: time step " << inDeltaTime << " s must be finite and > 0";
         return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite, message.str());
     }
+    // The settings the solvers' Create validated, checked again here: this class is exported, and the
+    // retry's shifts and counts need them in range.
+    if (inSettings.mMaxStepSplits < 0 || inSettings.mMaxStepSplits > 16 || inSettings.mMaxSubSteps < 1 ||
+        inSettings.mSleepStepCount < 1 || !(inSettings.mSleepSpeed >= 0.0) || !std::isfinite(inSettings.mSleepSpeed))
+        return MakeError(EError::InvalidArgument, std::string(inSolverName) +
+                                                      "::Step: settings out of range (mMaxStepSplits in [0, 16], mMaxSubSteps "
+                                                      "and mSleepStepCount >= 1, mSleepSpeed finite and >= 0)");
     Result<int> sub_steps = ioBackend.SubStepsFor(inDeltaTime);
     if (!sub_steps)
         return sub_steps.GetError();
+    if (sub_steps.Get() < 1)
+        return MakeError(EError::InvalidArgument, std::string(inSolverName) + "::Step: the backend asked for no sub-step");
 
     TetStepResult result;
     if (mSleeping)

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/props/HeldPropBodies.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace crumple::props
@@ -50,7 +51,9 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
                 mGivenVelocity[index] = velocity;
             ++outUpdate.mVelocitiesGiven;
         }
-    if (inStepped.mStepped == 0 && !new_props)
+    const bool pending = std::find(mShapePending.begin(), mShapePending.end(), std::uint8_t{1}) != mShapePending.end();
+    mShapePending.resize(prop_count, 0);
+    if (inStepped.mStepped == 0 && !new_props && !pending)
         return first_failure;
 
     // 2. Loose pieces become bodies. TakeLooseFragments refuses only a bad minimum mass, checked by Create.
@@ -75,9 +78,17 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
         Result<std::optional<std::vector<std::vector<Vec3>>>> shape = mProps->TakeChangedShape(prop, mSettings.mShapeCellSize, mSettings.mShapeTolerance);
         if (!shape)
             return shape.GetError();
+        if (!shape.Get() && mShapePending[index] != 0)
+        {
+            // The engine refused the last shape: the prop's shape now, again (TakeChangedShape has moved on).
+            Result<std::vector<std::vector<Vec3>>> again = mProps->GetCollisionPieces(prop, mSettings.mShapeCellSize);
+            if (!again)
+                return again.GetError();
+            shape.Get().emplace(std::move(again).Get());
+        }
         if (!shape.Get())
             continue;
-        keep(mEngine.mSetPropPieces(mProps->GetBody(prop), *shape.Get()));
+        mShapePending[index] = keep(mEngine.mSetPropPieces(mProps->GetBody(prop), *shape.Get())) ? 0 : 1;
         ++outUpdate.mShapesGiven;
     }
     mPropsSeen = prop_count;

@@ -46,7 +46,7 @@ struct FenceRun
     int mBrokenLinks = 0;
     int mBodiesMade = 0;
     std::uint64_t mRevision = 0;
-    std::size_t mPiecesBefore = 0, mPiecesAfter = 0;
+    std::size_t mPiecesBefore = 0, mPiecesAfter = 0; ///< Collision pieces made, and in the last shape given
     bool mPiecesAccepted = true;  ///< Every engine call of HeldPropBodies succeeded
     bool mFirstShapeGiven = false; ///< The first HeldPropBodies::Update gave the prop's shape
     int mShapeChanges = 0;        ///< Shapes given after the first

@@ -107,3 +107,33 @@ TEST_CASE("TetFragments follows the current positions: a rotated piece has the r
     CHECK((fragments[0].mInertia - expected).norm() < 1e-11 * expected.norm());
     CHECK((fragments[0].mCenterOfMass - (rotation * (Vec3(0.3, -0.2, 1.0) + 0.5 * size) + shift)).norm() < 1e-12);
 }
+
+TEST_CASE("TetFragments keeps a group whose elements share no node one piece, with all their nodes", "[fem]")
+{
+    // Two separate tetrahedra that a mesh put in one group (nothing requires a group to be connected), and a
+    // third on its own; a node of the second tetrahedron is fixed. The group is one piece: every node of both
+    // its elements, anchored through the second.
+    std::vector<Vec3> positions;
+    std::vector<TetIndices> tets;
+    for (int t = 0; t < 3; ++t)
+    {
+        const Vec3 origin(2.0 * t, 0.0, 0.0);
+        for (const Vec3& corner : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
+            positions.push_back(origin + corner);
+        tets.push_back({4 * t, 4 * t + 1, 4 * t + 2, 4 * t + 3});
+    }
+    const TetMesh mesh = TetMesh::Create(positions, tets, {0, 1, 0}).Get();
+    const FractureLinks links = BuildFractureLinks(mesh);
+    std::vector<double> inverse_masses(positions.size(), 1.0);
+    inverse_masses[9] = 0.0; // a node of the third tetrahedron, which is in group 0 with the first
+    const std::vector<double> masses{1.0, 1.0, 1.0};
+    const std::vector<TetFragment> pieces = TetFragments(links, tets, masses, positions, inverse_masses);
+    REQUIRE(pieces.size() == 2u);
+    CHECK(pieces[0].mElements == std::vector<int>{0, 2});
+    CHECK(pieces[0].mNodes == std::vector<int>{0, 1, 2, 3, 8, 9, 10, 11});
+    CHECK(pieces[0].mAnchored);
+    CHECK(pieces[0].mMass == 2.0);
+    CHECK(pieces[1].mElements == std::vector<int>{1});
+    CHECK(pieces[1].mNodes == std::vector<int>{4, 5, 6, 7});
+    CHECK_FALSE(pieces[1].mAnchored);
+}

@@ -128,6 +128,17 @@ TEST_CASE("Sleep: a solver that nothing could move sleeps from its first step, a
     CHECK_FALSE(HasEvent(struck.mEvents, ETetStepEvent::Sleeping));
     CHECK(solver.GetElementWorkCount() > 0u);
 
+    // A load or a strain moves it too: neither sleeps at its first step.
+    TetSolver pushed = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), weightless).Get();
+    REQUIRE(pushed.SetNodeFixed(0, true).IsValid());
+    REQUIRE(pushed.SetExternalForce(20, Vec3(0.0, 0.0, 1.0)).IsValid());
+    CHECK_FALSE(HasEvent(pushed.Step(1.0 / 60.0).Get().mEvents, ETetStepEvent::Sleeping));
+    TetSolver stretched = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), weightless).Get();
+    std::vector<Vec3> moved = stretched.GetPositions();
+    moved[20].x() += 1.0e-3;
+    REQUIRE(stretched.SetPositions(moved).IsValid());
+    CHECK_FALSE(HasEvent(stretched.Step(1.0 / 60.0).Get().mEvents, ETetStepEvent::Sleeping));
+
     // With gravity the same solver sags: it does not sleep at its first step.
     TetSolver heavy = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), TetSolverSettings()).Get();
     REQUIRE(heavy.SetNodeFixed(0, true).IsValid());

@@ -83,6 +83,13 @@ TEST_CASE("TetStepper refuses a bad step before its backend changes anything", "
         REQUIRE_FALSE(step.IsValid());
         CHECK(step.GetError().mMessage.rfind("Scripted::Step: time step", 0) == 0);
     }
+    TetSolverSettings bad = Settings();
+    bad.mMaxStepSplits = 40; // 2^40 pieces: refused, not shifted past an int
+    CHECK(stepper.Step(backend, bad, 0.01, "Scripted").GetError().mCode == EError::InvalidArgument);
+    bad = Settings();
+    bad.mSleepStepCount = 0;
+    CHECK(stepper.Step(backend, bad, 0.01, "Scripted").GetError().mCode == EError::InvalidArgument);
+    CHECK(backend.mCalls.empty());
     backend.mRefuseSave = true;
     CHECK(stepper.Step(backend, Settings(), 0.01, "Scripted").GetError().mMessage == "no device");
     CHECK(backend.mCalls == std::vector<std::string>{"save"});

@@ -28,6 +28,7 @@ struct CountingEngine
     std::vector<std::vector<std::vector<Vec3>>> mShapes;
     std::vector<Vec3> mVelocities;
     bool mRefuseBodies = false;
+    bool mRefuseShapes = false;
 
     HeldPropEngine Calls()
     {
@@ -39,7 +40,9 @@ struct CountingEngine
                         return BodyId{static_cast<std::uint32_t>(999 + mBodies.size()), 0};
                     },
                 .mSetPropPieces =
-                    [this](BodyId, const std::vector<std::vector<Vec3>>& inPieces) {
+                    [this](BodyId, const std::vector<std::vector<Vec3>>& inPieces) -> Status {
+                        if (mRefuseShapes)
+                            return MakeError(EError::InvalidArgument, "the engine refused the shape");
                         mShapes.push_back(inPieces);
                         return Status::Ok();
                     },
@@ -205,4 +208,29 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engi
     REQUIRE(refused);
     CHECK(engine.mVelocities.empty());
     CHECK(engine.mBodies.empty());
+}
+
+TEST_CASE("HeldPropBodies gives a shape the engine refused again at the next update, even at rest", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    CountingEngine engine;
+    HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls()).Get();
+    engine.mRefuseShapes = true;
+    HeldPropUpdate update;
+    const PropStepReport first = props->Step(1.0 / 120.0).Get();
+    CHECK(first.mStepped == 0); // at rest without gravity: asleep from its first step
+    CHECK(held.Update(first, update).GetError().mMessage == "the engine refused the shape");
+    CHECK(engine.mShapes.empty());
+
+    // Nothing moved since, yet the refused shape goes again; once taken, it is not given again.
+    engine.mRefuseShapes = false;
+    REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    CHECK(update.mShapesGiven == 1);
+    REQUIRE(engine.mShapes.size() == 1u);
+    CHECK(engine.mShapes[0] == props->GetCollisionPieces(wall, HeldPropSettings{}.mShapeCellSize).Get());
+    REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    CHECK(update.mShapesGiven == 0);
+    CHECK(engine.mShapes.size() == 1u);
 }

@@ -79,9 +79,11 @@ public:
     Result<TetStepResult> Step(double inDeltaTime);
     /// Does now what the first Step(inDeltaTime) would do first: sizes the step's scratch and, for the implicit
     /// integrator with EImplicitPreconditioner::RestFactorization, factors the rest system of this step length
-    /// (s, finite, > 0). For a game's level load: the first hit on a prop then does not pay the factorisation
-    /// in its frame (fracture, a change of anchors or another step length factor again). Changes no state,
-    /// so results are the same with and without it. Refused for a bad step length.
+    /// (s, finite, > 0; counted by GetFactorizationCount). For a game's level load: the first hit on a prop
+    /// then does not pay the factorisation in its frame (fracture, a change of anchors or another step length
+    /// factor again). Changes no state, so results are the same with and without it. Refused for a step
+    /// length that is not finite and > 0; a symplectic step Step() would refuse (too many sub-steps) is
+    /// not checked here.
     Status Prepare(double inDeltaTime);
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):

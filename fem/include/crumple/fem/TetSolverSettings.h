@@ -53,9 +53,11 @@ struct CRUMPLE_API TetSolverSettings
     double mImplicitTolerance = 1.0e-3;
 
     /// Sleep: when the kinetic energy stays below 1/2 M_free mSleepSpeed^2 (M_free the mass of the free
-    /// nodes, so mSleepSpeed is a root-mean-square speed in m/s) for mSleepStepCount consecutive steps,
-    /// velocities are zeroed and Step() does nothing (no element work) until an input changes: an impulse, a
-    /// force, gravity, a fixed node, new positions or velocities, or WakeUp(). >= 0; 0 never sleeps.
+    /// nodes, so mSleepSpeed is a root-mean-square speed in m/s) for mSleepStepCount consecutive steps in
+    /// which no link broke, velocities are zeroed and Step() does nothing (no element work) until an input
+    /// changes: an impulse, a force, gravity, a fixed node, new positions or velocities, or WakeUp(). A
+    /// solver that nothing could move (no velocity, no load, no strain: a prop made at rest without gravity)
+    /// sleeps at once, in the step that finds it so. >= 0; 0 never sleeps.
     double mSleepSpeed = 1.0e-3;
     int mSleepStepCount = 30; ///< Consecutive quiet steps before sleeping, >= 1
 

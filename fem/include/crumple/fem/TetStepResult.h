@@ -21,7 +21,8 @@ enum class ETetStepEvent : std::uint32_t
     /// mImplicitMaxIterations above mImplicitTolerance; the step was kept. Raise the limits or accept a less
     /// accurate step.
     SolverNotConverged = 1u << 1,
-    /// Information: the solver was asleep and did nothing.
+    /// Information: the solver was asleep, or found that nothing could move it and fell asleep (then with
+    /// FellAsleep), and did nothing.
     Sleeping = 1u << 2,
     /// Information: this step put the solver to sleep; velocities are now zero.
     FellAsleep = 1u << 3,

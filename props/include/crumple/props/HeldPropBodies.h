@@ -10,6 +10,7 @@
 #include <crumple/props/PropWorld.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -71,9 +72,13 @@ public:
     /// call, or a setting that is not finite or out of its range.
     static Result<HeldPropBodies> Create(PropWorld& ioProps, HeldPropEngine inEngine, const HeldPropSettings& inSettings = {});
 
-    /// After PropWorld::Step (inStepped is its report): the three things above, in PropId order; outUpdate
-    /// says what was done. An engine call that fails does not stop the others (a piece already left its prop
-    /// and the engine holds what it made): the first failure is returned, its piece left without a body.
+    /// After each PropWorld::Step (inStepped is its report; once per step: pieces and shapes are looked at
+    /// only after a step in which a prop moved): the three things above, in PropId order; outUpdate says what
+    /// was done. An engine call that fails does not stop the others (a piece already left its prop and the
+    /// engine holds what it made): the first failure is returned, its piece left without a body; a refused
+    /// shape is given again at the next Update. Every prop of the world must be a held body of the engine
+    /// (a static or free prop body would have its calls refused at every step: keep such props in a
+    /// PropWorld of their own).
     Status Update(const PropStepReport& inStepped, HeldPropUpdate& outUpdate);
 
 private:
@@ -85,6 +90,7 @@ private:
     HeldPropSettings mSettings;
     std::vector<Vec3> mGivenVelocity; ///< Per prop: the last SetHeldVelocity (zero: at rest, as made)
     std::size_t mPropsSeen = 0;       ///< Props whose first shape was given (they join in PropId order)
+    std::vector<std::uint8_t> mShapePending; ///< Per prop: the engine refused its last shape (retried)
 };
 
 } // namespace crumple::props
