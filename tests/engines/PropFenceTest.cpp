@@ -79,7 +79,7 @@ void CheckFence(const char* inEngine)
     // Not checked (README, known limits): how much of the car's speed each takes, and whether the engine
     // takes from the car what Crumple's impulses say. With the held body moving as fast as the planks the car
     // struck, along the strike (SetHeldVelocity from the next step on, GetContactVelocity), Bullet's car ends
-    // at 15.39 m/s and loses 1.01 times what Crumple counts, ODE's at 15.49 m/s and 1.04 times; but the
+    // at 15.43 m/s and loses 0.99 times what Crumple counts, ODE's at 15.49 m/s and 1.04 times; but the
     // held body still has the whole prop's mass in each contact, and how close the engine comes depends on
     // the scene's friction (Crumple's impulse is frictionless).
 }
