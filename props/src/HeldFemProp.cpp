@@ -22,4 +22,25 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
     return prop;
 }
 
+Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
+                             std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
+                             const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody)
+{
+    if (!inMakeBody)
+        return MakeError(EError::InvalidArgument, "AddHeldProp: no function to make the engine body");
+    Result<PropBody> made = MakePropBody(inMesh, inMaterial.mDensity, inPose, true, inShapeCellSize);
+    if (!made)
+        return made.GetError();
+    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes);
+    if (!prop)
+        return prop.GetError();
+    Result<plugin::BodyId> body = inMakeBody(made.Get().mBody);
+    if (!body)
+        return body.GetError();
+    Result<PropId> added = ioProps.AddProp(body.Get(), std::move(prop).Get());
+    if (!added)
+        return added.GetError();
+    return HeldProp{body.Get(), added.Get(), std::move(made).Get()};
+}
+
 } // namespace crumple::props

@@ -40,9 +40,6 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
     Result<fem::PropMaterialPreset> wood = fem::MakePropMaterialPreset(fem::EPropMaterial::Wood);
     if (!wood)
         return wood.GetError();
-    Result<props::PropBody> made = props::MakePropBody(fence.Get().mMesh, wood.Get().mMaterial.mDensity, RaceCourse::Fence(), true, cShapeCell);
-    if (!made)
-        return made.GetError();
     std::unique_ptr<RaceFence> result(new RaceFence(ioDamage));
     Result<std::unique_ptr<props::PropWorld>> props = props::PropWorld::Create(ioDamage);
     if (!props)
@@ -54,20 +51,16 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
     if (!held)
         return held.GetError();
     result->mHeld.emplace(std::move(held).Get());
-    Result<BodyId> body = inEngine.mMakePropBody(made.Get().mBody);
-    if (!body)
-        return body.GetError();
-    result->mBody = body.Get();
-    result->mBodyPose = {made.Get().mBody.mOrientation, made.Get().mBody.mPosition};
     // Its posts' footings anchored; it sleeps until the car hits it.
-    Result<props::FemProp> prop = props::MakeHeldFemProp(made.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes);
-    if (!prop)
-        return prop.GetError();
-    Result<props::PropId> added = result->mProps->AddProp(result->mBody, std::move(prop).Get());
+    Result<props::HeldProp> added = props::AddHeldProp(*result->mProps, fence.Get().mMesh, wood.Get().mMaterial,
+                                                       fence.Get().mGroundNodes, RaceCourse::Fence(), cShapeCell, inEngine.mMakePropBody);
     if (!added)
         return added.GetError();
-    result->mProp = added.Get();
-    result->mLeftOut.assign(made.Get().mMesh.GetTets().size(), 0);
+    result->mBody = added.Get().mBody;
+    result->mProp = added.Get().mProp;
+    const plugin::PropBodySettings& body = added.Get().mMade.mBody;
+    result->mBodyPose = {body.mOrientation, body.mPosition};
+    result->mLeftOut.assign(added.Get().mMade.mMesh.GetTets().size(), 0);
     if (Status prepared = result->mProps->Prepare(inStepTime); !prepared)
         return prepared.GetError();
     return result;

@@ -154,7 +154,7 @@ int main(int argc, char** argv)
     const DeformableObject& parked_deformable = *damage.GetObject(damage.CreateDeformableObject(parked_body, parked_object).Get());
 
     const double dt = 1.0 / 60.0; // a frame: four engine steps of 1/240 s
-    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each frame.
+    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
     bullet::BulletAdapter& bodies = *adapter;
     Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
         damage, {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },

@@ -181,7 +181,7 @@ int main(int argc, char** argv)
     const DeformableObject& parked_deformable = *damage.GetObject(damage.CreateDeformableObject(parked_body, parked_object).Get());
 
     const double dt = 1.0 / 240.0;
-    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each frame.
+    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
     ode::OdeAdapter& bodies = *adapter;
     Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
         damage, {.mMakePropBody =

@@ -125,29 +125,23 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             return fence ? wood.GetError() : fence.GetError();
         if (!inSettings.mBreakable)
             wood.Get().mMaterial.mTensileStrength = std::numeric_limits<double>::infinity();
-        Result<props::PropBody> made = props::MakePropBody(fence.Get().mMesh, wood.Get().mMaterial.mDensity, DriveThroughFencePose(), true, cShapeSize);
-        if (!made)
-            return made.GetError();
-        Result<plugin::BodyId> created = scene.MakePropBody(made.Get().mBody);
-        if (!created)
-            return created.GetError();
-        fence_body = created.Get();
-        Result<props::FemProp> prop = props::MakeHeldFemProp(made.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes);
-        if (!prop)
-            return prop.GetError();
-        Result<props::PropId> added = props.AddProp(fence_body, std::move(prop).Get());
+        Result<props::HeldProp> added = props::AddHeldProp(
+            props, fence.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes, DriveThroughFencePose(), cShapeSize,
+            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); });
         if (!added)
             return added.GetError();
-        fence_prop = added.Get();
+        fence_body = added.Get().mBody;
+        fence_prop = added.Get().mProp;
+        const props::PropBody& made = added.Get().mMade;
         // At level load, as a game would: the first hit does not factor the fence's implicit system.
         const double prepare_start = ThreadCpuMs();
         if (Status prepared = props.Prepare(settings.mTimeStep); !prepared)
             return prepared.GetError();
         run.mPrepareCpuMs = ThreadCpuMs() - prepare_start;
-        run.mFenceMass = made.Get().mBody.mMass;
-        run.mFenceTets = static_cast<int>(made.Get().mMesh.GetTets().size());
-        run.mPiecesBefore = made.Get().mBody.mPieces.size();
-        fence_position = made.Get().mBody.mPosition;
+        run.mFenceMass = made.mBody.mMass;
+        run.mFenceTets = static_cast<int>(made.mMesh.GetTets().size());
+        run.mPiecesBefore = made.mBody.mPieces.size();
+        fence_position = made.mBody.mPosition;
     }
 
     run.mSpeedBefore = scene.GetCarState().mLinearVelocity.x();

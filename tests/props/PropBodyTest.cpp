@@ -183,3 +183,44 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
     REQUIRE(refused.HasError());
     CHECK(refused.GetError().mMessage.find("anchored node " + std::to_string(mesh.GetNodeCount())) != std::string::npos);
 }
+
+TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")
+{
+    fem::TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.2, 1.0);
+    grid.mCellCount = {5, 1, 5};
+    const fem::TetMesh mesh = fem::TetGrid(grid).Get();
+    std::vector<int> footings;
+    for (int node = 0; node < mesh.GetNodeCount(); ++node)
+        if (mesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
+            footings.push_back(node);
+    common::WorldFixture fixture;
+    std::unique_ptr<props::PropWorld> world = props::PropWorld::Create(fixture.mWorld).Get();
+    // The "engine" hands back the fixture's wall body and keeps what it was asked to make.
+    std::vector<plugin::PropBodySettings> asked;
+    const auto make_body = [&](const plugin::PropBodySettings& inBody) -> Result<plugin::BodyId> {
+        asked.push_back(inBody);
+        return fixture.mWall;
+    };
+
+    // Bad input: no body is asked for, no prop joins.
+    CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, std::vector<int>{mesh.GetNodeCount()}, Transform(), 0.25, make_body)
+              .GetError().mCode == EError::OutOfRange);
+    CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.0, make_body).IsValid() == false);
+    CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, nullptr).IsValid() == false);
+    CHECK(asked.empty());
+    CHECK(world->GetPropCount() == 0);
+
+    const props::HeldProp held = props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body).Get();
+    REQUIRE(asked.size() == 1u);
+    CHECK(asked[0].mHeld);
+    CHECK(asked[0].mMass == held.mMade.mBody.mMass);
+    CHECK(asked[0].mPieces == held.mMade.mBody.mPieces);
+    CHECK(held.mBody == fixture.mWall);
+    CHECK(world->GetBody(held.mProp) == fixture.mWall);
+    const fem::TetSolver& solver = *world->GetProp(held.mProp)->GetCpuSolver();
+    CHECK(solver.GetSettings().mGravity == Vec3::Zero());
+    CHECK(solver.GetPositions() == held.mMade.mMesh.GetRestPositions()); // the FEM works in the body frame
+    for (int node : footings)
+        CHECK(solver.GetInverseMasses()[static_cast<std::size_t>(node)] == 0.0);
+}

@@ -7,7 +7,10 @@
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterialSettings.h>
 #include <crumple/props/FemProp.h>
+#include <crumple/props/PropBody.h>
+#include <crumple/props/PropWorld.h>
 
+#include <functional>
 #include <span>
 
 namespace crumple::props
@@ -21,5 +24,22 @@ namespace crumple::props
 /// material FemProp::Create refuses or an anchored node out of range.
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes);
+
+/// A held prop that AddHeldProp put in a PropWorld.
+struct CRUMPLE_API HeldProp
+{
+    plugin::BodyId mBody; ///< Its engine body
+    PropId mProp;         ///< Its FEM in the PropWorld
+    PropBody mMade;       ///< MakePropBody's answer: the mesh in the body frame, the body's settings
+};
+
+/// Everything that puts a prop anchored to the ground into a game: MakePropBody (held, shape of cubes of
+/// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed), the
+/// engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The FEM is
+/// made before the engine body, so bad input (mesh, material, pose, anchors) creates nothing; a body that
+/// inMakeBody made stays the adapter's if PropWorld::AddProp refuses it (a recorder that cannot record it).
+CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
+                                         std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
+                                         const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody);
 
 } // namespace crumple::props
