@@ -47,6 +47,8 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
         (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
     mProps.push_back(Prop{.mBody = inBody, .mProp = std::move(ioProp)});
+    if (fem::TetSolver* cpu = mProps.back().mProp.GetCpuSolver(); cpu != nullptr)
+        cpu->SetJobSystem(mWorld->GetSettings().mJobs);
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 

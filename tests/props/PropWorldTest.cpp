@@ -9,8 +9,11 @@
 #include <crumple/props/CollisionImpulses.h>
 #include <crumple/props/PropWorld.h>
 
+#include <ThreadJobSystem.h>
+
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -23,13 +26,13 @@ namespace
 {
 
 // A 2 m x 0.2 m x 2 m wall panel, x in [0, 0.2], y and z in [-1, 1] (the wall body's frame), steel-like but
-// soft enough to ring, no gravity, no damping.
-FemProp Panel(bool inAnchored)
+// soft enough to ring, no gravity, no damping; inCells cubes (6 tetrahedra each) along x, y, z.
+FemProp Panel(bool inAnchored, std::array<int, 3> inCells = {1, 10, 10})
 {
     TetGridSettings grid;
     grid.mOrigin = Vec3(0.0, -1.0, -1.0);
     grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 10, 10};
+    grid.mCellCount = inCells;
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
     FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), FemMaterialSettings{}, settings, FemPropSettings{}).Get();
@@ -94,6 +97,68 @@ TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses; momentum 
     }
     CHECK((test::PropMomentum(solver) + car.mImpulse).norm() <= 1.0e-6 * impulse);
     CHECK(energy > 0.0);
+}
+
+namespace
+{
+
+// A host job system that counts the parallel fors it is given and runs them on a ThreadJobSystem.
+struct CountingJobs
+{
+    explicit CountingJobs(int inThreads) : mThreads(inThreads)
+    {
+        mJobs = mThreads.Get();
+        mJobs.mHost = this;
+        mJobs.mParallelFor = [](void* inHost, int inCount, void (*inTask)(void*, int), void* inContext)
+        {
+            auto* self = static_cast<CountingJobs*>(inHost);
+            ++self->mCalls;
+            const JobSystem& threads = self->mThreads.Get();
+            threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
+        };
+        mJobs.mStartTask = nullptr;
+        mJobs.mWaitTask = nullptr;
+    }
+    common::ThreadJobSystem mThreads;
+    JobSystem mJobs;
+    int mCalls = 0;
+};
+
+} // namespace
+
+TEST_CASE("PropWorld: a prop steps on the world's job system, bitwise the same for 1, 2 and 4 threads", "[props]")
+{
+    // 8,424 tetrahedra: enough for the element passes to split into pieces on 2 and on 4 threads.
+    std::vector<Vec3> one_thread;
+    for (int threads : {1, 2, 4})
+    {
+        CountingJobs jobs(threads);
+        DamageWorldSettings settings;
+        settings.mJobs = &jobs.mJobs;
+        common::WorldFixture fixture(4000, {8, 6, 6}, settings);
+        std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+        const PropId wall = props->AddProp(fixture.mWall, Panel(true, {2, 26, 27})).Get();
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0)));
+        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.3, 0.2, 0.0),
+                                                                        fixture.FrontContact(-0.4, -0.1, 0.0)}));
+        fixture.mWorld.Flush();
+        const int calls_before = jobs.mCalls;
+        for (int step = 0; step < 3; ++step)
+            REQUIRE(props->Step(1.0 / 60.0).Get().mStepped == 1);
+        CHECK((jobs.mCalls > calls_before) == (threads > 1)); // its passes went to the host's workers
+        const std::vector<Vec3>& positions = props->GetProp(wall)->GetCpuSolver()->GetPositions();
+        if (threads == 1)
+        {
+            one_thread = positions;
+            const std::vector<Vec3>& rest = props->GetProp(wall)->GetCpuSolver()->GetMesh().GetRestPositions();
+            double moved = 0.0;
+            for (std::size_t node = 0; node < rest.size(); ++node)
+                moved = std::max(moved, (positions[node] - rest[node]).norm());
+            CHECK(moved > 1.0e-4); // the hit moved it (m)
+        }
+        else
+            CHECK(positions == one_thread);
+    }
 }
 
 TEST_CASE("PropWorld: a prop at rest falls asleep and then costs nothing per step", "[props]")

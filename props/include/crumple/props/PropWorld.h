@@ -64,6 +64,9 @@ struct CRUMPLE_API LooseFragment
 /// props bit for bit without an engine.
 ///
 /// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
+/// A CPU prop's element passes (forces, stiffness products) are split over the world's job system
+/// (DamageWorldSettings::mJobs) when it has one, each piece writing only its own nodes' sums, so the props'
+/// results are bitwise the same for any number of workers (fem::TetSolver::SetJobSystem).
 class CRUMPLE_API PropWorld final : public plugin::DamageListener
 {
 public:
@@ -73,9 +76,9 @@ public:
     PropWorld(const PropWorld&) = delete;
     PropWorld& operator=(const PropWorld&) = delete;
 
-    /// Binds inProp to body inBody of the world (one prop per body). Refused, and inProp left as it was, when
-    /// the body does not exist or already has a prop, or, while recording, when the prop cannot be recorded
-    /// (a GPU prop, or one that has already stepped).
+    /// Binds inProp to body inBody of the world (one prop per body) and hands a CPU prop the world's job
+    /// system. Refused, and inProp left as it was, when the body does not exist or already has a prop, or,
+    /// while recording, when the prop cannot be recorded (a GPU prop, or one that has already stepped).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
 
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
