@@ -789,21 +789,10 @@ public:
 
     bool IsAtRestUnloaded() const override
     {
-        // intent: exact comparisons, velocities first (a moving prop answers at its first moving node)
         const TetSolver& s = mSolver;
-        for (const Vec3& velocity : s.mVelocities)
-            if (!(velocity.array() == 0.0).all())
-                return false;
-        if (!s.mSettings.mGravity.isZero(0.0) && std::find(s.mFree.begin(), s.mFree.end(), std::uint8_t{1}) != s.mFree.end())
-            return false; // gravity pulls a free node
-        for (const Vec3& force : s.mExternalForces)
-            if (!(force.array() == 0.0).all())
-                return false;
-        for (const Mat3& plastic : s.mPlasticStrains)
-            if (!(plastic.array() == 0.0).all())
-                return false;
-        return std::equal(s.mPositions.begin(), s.mPositions.end(), s.mNodeRestPositions.begin(), s.mNodeRestPositions.end(),
-                          [](const Vec3& inA, const Vec3& inB) { return (inA.array() == inB.array()).all(); });
+        const bool pulled = !s.mSettings.mGravity.isZero(0.0) &&
+                            std::find(s.mFree.begin(), s.mFree.end(), std::uint8_t{1}) != s.mFree.end();
+        return !pulled && s.IsStillAndUnstrained();
     }
 
     double FreeMass() const override { return mSolver.mFreeMass; }
@@ -835,6 +824,22 @@ Status TetSolver::Prepare(double inDeltaTime)
                                  inDeltaTime * inDeltaTime + inDeltaTime * material.mStiffnessDamping);
     }
     return Status::Ok();
+}
+
+bool TetSolver::IsStillAndUnstrained() const
+{
+    // intent: exact comparisons, velocities first (a moving prop answers at its first moving node)
+    for (const Vec3& velocity : mVelocities)
+        if (!(velocity.array() == 0.0).all())
+            return false;
+    for (const Vec3& force : mExternalForces)
+        if (!(force.array() == 0.0).all())
+            return false;
+    for (const Mat3& plastic : mPlasticStrains)
+        if (!(plastic.array() == 0.0).all())
+            return false;
+    return std::equal(mPositions.begin(), mPositions.end(), mNodeRestPositions.begin(), mNodeRestPositions.end(),
+                      [](const Vec3& inA, const Vec3& inB) { return (inA.array() == inB.array()).all(); });
 }
 
 Result<TetStepResult> TetSolver::Step(double inDeltaTime)

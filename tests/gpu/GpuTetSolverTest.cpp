@@ -224,6 +224,69 @@ TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothin
     CHECK(after == before);
 }
 
+TEST_CASE("GPU sleep: a prop made at rest, unloaded, sleeps at its first step without a readback", "[gpu]")
+{
+    // The held racing fence: made still, anchored, no gravity. Before, it integrated 30 quiet steps of
+    // nothing (the GPU cannot see its state without reading it back) before it fell asleep.
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.6, 0.2, 0.2);
+    grid.mCellCount = {6, 2, 2};
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mGravity = Vec3::Zero();
+    const FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
+    const auto anchored = [&](TetSolver& ioCpu)
+    {
+        for (int k = 0; k <= 2; ++k)
+            for (int j = 0; j <= 2; ++j)
+                REQUIRE(ioCpu.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    };
+
+    // Still: asleep at the first step, no element work.
+    TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+    anchored(cpu);
+    GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
+    const Result<TetStepResult> first = gpu.Step(1.0 / 60.0);
+    REQUIRE(first.IsValid());
+    CHECK(HasEvent(first.Get().mEvents, ETetStepEvent::FellAsleep));
+    CHECK(gpu.GetElementWorkCount() == 0u);
+    // A zero impulse or force keeps it so; a real one wakes it, and it moves.
+    REQUIRE(gpu.ApplyImpulse(cTipNode, Vec3::Zero()).IsValid());
+    REQUIRE(gpu.SetExternalForce(cTipNode, Vec3::Zero()).IsValid());
+    CHECK(HasEvent(gpu.Step(1.0 / 60.0).Get().mEvents, ETetStepEvent::FellAsleep));
+    CHECK(gpu.GetElementWorkCount() == 0u);
+    REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
+    const Result<TetStepResult> hit = gpu.Step(1.0 / 60.0);
+    REQUIRE(hit.IsValid());
+    CHECK_FALSE(HasEvent(hit.Get().mEvents, ETetStepEvent::Sleeping));
+    CHECK(gpu.GetElementWorkCount() > 0u);
+    CHECK(hit.Get().mKineticEnergy > 0.0);
+
+    // Gravity on a free node, a force, or a strained state made from the CPU: it steps.
+    for (int variant = 0; variant < 3; ++variant)
+    {
+        TetSolver loaded = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+        anchored(loaded);
+        if (variant == 2)
+        {
+            std::vector<Vec3> bent = loaded.GetPositions();
+            bent[cTipNode] += Vec3(0.0, 0.0, 1.0e-3);
+            REQUIRE(loaded.SetPositions(bent).IsValid());
+        }
+        GpuTetSolver moving = GpuTetSolver::CreateFrom(device, loaded).Get();
+        if (variant == 0)
+            REQUIRE(moving.SetGravity(Vec3(0.0, 0.0, -9.81)).IsValid());
+        if (variant == 1)
+            REQUIRE(moving.SetExternalForce(cTipNode, Vec3(0.0, 0.0, -10.0)).IsValid());
+        const Result<TetStepResult> step = moving.Step(1.0 / 60.0);
+        REQUIRE(step.IsValid());
+        INFO("variant " << variant);
+        CHECK_FALSE(HasEvent(step.Get().mEvents, ETetStepEvent::Sleeping));
+        CHECK(moving.GetElementWorkCount() > 0u);
+    }
+}
+
 TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();

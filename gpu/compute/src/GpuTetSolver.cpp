@@ -8,6 +8,7 @@
 
 #include "EmbeddedShaders.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -123,6 +124,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     solver.mInverseMasses = cpu.GetInverseMasses();
     solver.mElementCount = static_cast<std::uint32_t>(inMesh.GetTetCount());
     solver.mStableTimeStep = cpu.GetStableTimeStep();
+    solver.mKnownStill = cpu.IsStillAndUnstrained();
     solver.mBreakable = material.IsBreakable();
     if (solver.mBreakable)
     {
@@ -307,6 +309,7 @@ Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
     if (Status status = CheckNode(inNode, "ApplyImpulse"); status.HasError())
         return status;
     InputChanged();
+    mKnownStill = mKnownStill && (mInverseMasses[inNode] == 0.0 || (inImpulse.array() == 0.0).all());
     Float4 velocity;
     mVelocities.Download(inNode * sizeof(Float4), sizeof(Float4), &velocity);
     velocity = ToFloat4(ToVec3(velocity) + mInverseMasses[inNode] * inImpulse);
@@ -322,6 +325,7 @@ Status GpuTetSolver::SetExternalForce(int inNode, const Vec3& inForce)
     if (Status status = CheckNode(inNode, "SetExternalForce"); status.HasError())
         return status;
     InputChanged();
+    mKnownStill = mKnownStill && (inForce.array() == 0.0).all(); // a force set before had already cleared it
     const Float4 force = ToFloat4(inForce);
     mExternal.Upload(inNode * sizeof(Float4), sizeof(Float4), &force);
     return Status::Ok();
@@ -350,6 +354,7 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
     for (std::size_t node = 0; node < packed.size(); ++node)
         packed[node] = ToFloat4(inPositions[node], mInverseMasses[node]);
     mPositions.Upload(0, packed.size() * sizeof(Float4), packed.data());
+    mKnownStill = false; // new positions may be strained
     InputChanged();
     return Status::Ok();
 }
@@ -584,6 +589,7 @@ public:
     fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult&) override
     {
         fem::TetStepAttempt attempt;
+        mSolver.mKnownStill = false; // what the step leaves is not known without a readback
         attempt.mDiverged = !mSolver.Integrate(inDeltaTime, inPieces, attempt.mBrokenLinks, attempt.mKineticEnergy);
         return attempt;
     }
@@ -591,8 +597,17 @@ public:
     // The restored start's energies would need a readback: left 0.
     void DescribeRestored(fem::TetStepResult&) const override {}
 
-    // Knowing would need a readback of the node state every step: the GPU solver counts quiet steps instead.
-    bool IsAtRestUnloaded() const override { return false; }
+    // Known without a readback only while the state is the still one it was made with (mKnownStill); after a
+    // step, knowing would need a readback, and the GPU solver counts quiet steps instead.
+    bool IsAtRestUnloaded() const override
+    {
+        if (!mSolver.mKnownStill)
+            return false;
+        if (mSolver.mSettings.mGravity.isZero(0.0))
+            return true;
+        return std::none_of(mSolver.mInverseMasses.begin(), mSolver.mInverseMasses.end(),
+                            [](double inInverseMass) { return inInverseMass > 0.0; }); // gravity pulls no free node
+    }
 
     double FreeMass() const override
     {

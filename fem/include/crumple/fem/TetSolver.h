@@ -158,6 +158,11 @@ public:
     double GetStableTimeStep() const { return mStableTimeStep; }
     /// True while asleep
     bool IsSleeping() const { return mStepper.IsSleeping(); }
+    /// True when no node moves, no external force acts and nothing is strained (positions at the nodes' rest
+    /// positions, no plastic strain), compared exactly: with no gravity on a free node, a step could not move
+    /// anything (the solver then sleeps at its first step). A GPU solver made from this state knows it without
+    /// a readback.
+    bool IsStillAndUnstrained() const;
     /// Element evaluations done by Step() and SolveStatic() so far (force, stiffness-product, diagonal and
     /// energy passes, one per element each): a cost counter that tests can compare instead of timing
     std::uint64_t GetElementWorkCount() const { return mElementWork; }

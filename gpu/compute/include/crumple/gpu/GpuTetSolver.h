@@ -157,6 +157,9 @@ private:
     std::uint32_t mElementCount = 0;
     double mStableTimeStep = 0.0;
     std::uint64_t mElementWork = 0;
+    // The node state is known, without a readback, to be still, unforced and unstrained (made so, and no
+    // impulse, force, new positions or step since): with no gravity on a free node a step could not move it.
+    bool mKnownStill = false;
 
     // The step policy (validation, split-retry, restore, sleep), the CPU solver's, and this solver's side of
     // it (GpuTetSolver.cpp): the start of a step is kept in the mSaved* buffers and, for a breakable prop, the
