@@ -36,19 +36,34 @@ FemMaterialSettings Soft(EElasticModel inModel)
     return material;
 }
 
-TetSolver ClampedBar(EElasticModel inModel)
+TetSolver ClampedBar(const FemMaterialSettings& inMaterial, const TetSolverSettings& inSettings)
 {
     TetGridSettings grid;
     grid.mSize = Vec3(0.6, 0.2, 0.2);
     grid.mCellCount = {6, 2, 2};
-    TetSolverSettings settings;
-    settings.mIntegrator = EIntegrator::SymplecticEuler;
-    settings.mSleepSpeed = 0.0;
-    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), Soft(inModel), settings).Get();
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), inMaterial, inSettings).Get();
     for (int k = 0; k <= 2; ++k)
         for (int j = 0; j <= 2; ++j)
             REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
     return solver;
+}
+
+// Explicit, under gravity, sleep off.
+TetSolver ClampedBar(EElasticModel inModel)
+{
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mSleepSpeed = 0.0;
+    return ClampedBar(Soft(inModel), settings);
+}
+
+// Explicit, no gravity, sleep on: the sleep tests' bar.
+TetSolver ClampedBarWithoutGravity(const FemMaterialSettings& inMaterial)
+{
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mGravity = Vec3::Zero();
+    return ClampedBar(inMaterial, settings);
 }
 
 // The tip corner node and an impulse that bends and twists the bar (N s).
@@ -229,23 +244,10 @@ TEST_CASE("GPU sleep: a prop made at rest, unloaded, sleeps at its first step wi
     // The held racing fence: made still, anchored, no gravity. Before, it integrated 30 quiet steps of
     // nothing (the GPU cannot see its state without reading it back) before it fell asleep.
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.2, 0.2);
-    grid.mCellCount = {6, 2, 2};
-    TetSolverSettings settings;
-    settings.mIntegrator = EIntegrator::SymplecticEuler;
-    settings.mGravity = Vec3::Zero();
     const FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
-    const auto anchored = [&](TetSolver& ioCpu)
-    {
-        for (int k = 0; k <= 2; ++k)
-            for (int j = 0; j <= 2; ++j)
-                REQUIRE(ioCpu.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
-    };
 
     // Still: asleep at the first step, no element work.
-    TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
-    anchored(cpu);
+    const TetSolver cpu = ClampedBarWithoutGravity(material);
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
     const Result<TetStepResult> first = gpu.Step(1.0 / 60.0);
     REQUIRE(first.IsValid());
@@ -266,8 +268,7 @@ TEST_CASE("GPU sleep: a prop made at rest, unloaded, sleeps at its first step wi
     // Gravity on a free node, a force, or a strained state made from the CPU: it steps.
     for (int variant = 0; variant < 3; ++variant)
     {
-        TetSolver loaded = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
-        anchored(loaded);
+        TetSolver loaded = ClampedBarWithoutGravity(material);
         if (variant == 2)
         {
             std::vector<Vec3> bent = loaded.GetPositions();
@@ -292,16 +293,7 @@ TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it",
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
     material.mMassDamping = 20.0; // comes to rest within a second
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.2, 0.2);
-    grid.mCellCount = {6, 2, 2};
-    TetSolverSettings settings;
-    settings.mIntegrator = EIntegrator::SymplecticEuler;
-    settings.mGravity = Vec3::Zero();
-    TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
-    for (int k = 0; k <= 2; ++k)
-        for (int j = 0; j <= 2; ++j)
-            REQUIRE(cpu.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    const TetSolver cpu = ClampedBarWithoutGravity(material);
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
     REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
 
