@@ -33,6 +33,25 @@ fem::TetMesh Slab()
     return fem::TetGrid(grid).Get();
 }
 
+// A 1 m x 0.2 m x 1 m wall of 5 x 1 x 5 cubes standing on z = 0.
+fem::TetMesh StandingWall()
+{
+    fem::TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.2, 1.0);
+    grid.mCellCount = {5, 1, 5};
+    return fem::TetGrid(grid).Get();
+}
+
+// The nodes a mesh stands on (z = 0), ascending.
+std::vector<int> Footings(const fem::TetMesh& inMesh)
+{
+    std::vector<int> footings;
+    for (int node = 0; node < inMesh.GetNodeCount(); ++node)
+        if (inMesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
+            footings.push_back(node);
+    return footings;
+}
+
 Transform Pose()
 {
     Transform pose;
@@ -155,14 +174,8 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
 
 TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until struck; a bad anchor is refused", "[props]")
 {
-    fem::TetGridSettings grid;
-    grid.mSize = Vec3(1.0, 0.2, 1.0);
-    grid.mCellCount = {5, 1, 5};
-    const fem::TetMesh mesh = fem::TetGrid(grid).Get();
-    std::vector<int> footings;
-    for (int node = 0; node < mesh.GetNodeCount(); ++node)
-        if (mesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
-            footings.push_back(node);
+    const fem::TetMesh mesh = StandingWall();
+    const std::vector<int> footings = Footings(mesh);
     props::FemProp prop = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings).Get();
     const fem::TetSolver& solver = *prop.GetCpuSolver();
     CHECK(solver.GetSettings().mGravity == Vec3::Zero());
@@ -186,14 +199,8 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
 
 TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")
 {
-    fem::TetGridSettings grid;
-    grid.mSize = Vec3(1.0, 0.2, 1.0);
-    grid.mCellCount = {5, 1, 5};
-    const fem::TetMesh mesh = fem::TetGrid(grid).Get();
-    std::vector<int> footings;
-    for (int node = 0; node < mesh.GetNodeCount(); ++node)
-        if (mesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
-            footings.push_back(node);
+    const fem::TetMesh mesh = StandingWall();
+    const std::vector<int> footings = Footings(mesh);
     common::WorldFixture fixture;
     std::unique_ptr<props::PropWorld> world = props::PropWorld::Create(fixture.mWorld).Get();
     // The "engine" hands back the fixture's wall body and keeps what it was asked to make.
