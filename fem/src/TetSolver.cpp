@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/TimeStep.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
 #include <crumple/fem/OpenCracks.h>
@@ -812,9 +813,8 @@ private:
 
 Status TetSolver::Prepare(double inDeltaTime)
 {
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
-                         "TetSolver::Prepare: the time step must be finite and > 0 s");
+    if (Status valid = CheckTimeStep(inDeltaTime, "TetSolver::Prepare"); !valid)
+        return valid;
     mWorkspace.Get().Resize(mPositions.size());
     if (mSettings.mIntegrator == EIntegrator::ImplicitEuler)
     {

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem/TetStepper.h>
 
+#include <crumple/base/TimeStep.h>
+
 #include <cmath>
-#include <sstream>
 #include <string>
 
 namespace crumple::fem
@@ -13,12 +14,8 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
                                        const char* inSolverName)
 {
     // intent: every refusal before anything changes
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-    {
-        std::ostringstream message;
-        message << inSolverName << "::Step: time step " << inDeltaTime << " s must be finite and > 0";
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite, message.str());
-    }
+    if (Status valid = CheckTimeStep(inDeltaTime, std::string(inSolverName) + "::Step"); !valid)
+        return valid.GetError();
     // The settings the solvers' Create validated, checked again here: this class is exported, and the
     // retry's shifts and counts need them in range.
     if (inSettings.mMaxStepSplits < 0 || inSettings.mMaxStepSplits > 16 || inSettings.mMaxSubSteps < 1 ||

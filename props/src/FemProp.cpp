@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/props/FemProp.h>
 
+#include <crumple/base/TimeStep.h>
 #include <crumple/props/CollisionImpulses.h>
 
 #if defined(CRUMPLE_PROPS_WITH_GPU)
@@ -9,7 +10,6 @@
 #include <crumple/gpu/GpuTetSolver.h>
 #endif
 
-#include <cmath>
 
 namespace crumple::props
 {
@@ -138,10 +138,7 @@ Status FemProp::Prepare(double inDeltaTime)
 {
     if (mCpu)
         return mCpu->Prepare(inDeltaTime);
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
-                         "FemProp::Prepare: the time step must be finite and > 0 s");
-    return Status::Ok();
+    return CheckTimeStep(inDeltaTime, "FemProp::Prepare");
 }
 
 Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,

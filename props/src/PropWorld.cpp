@@ -4,6 +4,7 @@
 #include <crumple/props/PropWorld.h>
 
 #include <crumple/base/ByteWriter.h>
+#include <crumple/base/TimeStep.h>
 #include <crumple/props/PropRecording.h>
 
 #include <algorithm>
@@ -108,9 +109,8 @@ PropId PropWorld::FindProp(plugin::BodyId inBody) const
 
 Result<PropStepReport> PropWorld::Step(double inDeltaTime)
 {
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
-                         "PropWorld::Step: time step " + std::to_string(inDeltaTime) + " s must be finite and > 0");
+    if (Status valid = CheckTimeStep(inDeltaTime, "PropWorld::Step"); !valid)
+        return valid.GetError();
     if (mRecorder != nullptr)
     {
         ByteWriter step;
@@ -143,9 +143,8 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
 
 Status PropWorld::Prepare(double inDeltaTime)
 {
-    if (!std::isfinite(inDeltaTime) || !(inDeltaTime > 0.0))
-        return MakeError(std::isfinite(inDeltaTime) ? EError::InvalidArgument : EError::NonFinite,
-                         "PropWorld::Prepare: the time step must be finite and > 0 s");
+    if (Status valid = CheckTimeStep(inDeltaTime, "PropWorld::Prepare"); !valid)
+        return valid;
     for (Prop& prop : mProps)
         if (Status prepared = prop.mProp.Prepare(inDeltaTime); !prepared)
             return prepared; // cannot happen for a valid step: kept for a future backend's refusal
