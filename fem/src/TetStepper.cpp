@@ -4,6 +4,7 @@
 
 #include <crumple/base/TimeStep.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -41,6 +42,7 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
         ioBackend.FallAsleep();
         mSleeping = true;
         mQuietSteps = 0;
+        mSettledSteps = 0;
         result.mEvents = ETetStepEvent::Sleeping | ETetStepEvent::FellAsleep;
         return result;
     }
@@ -68,6 +70,7 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
     {
         ioBackend.RestoreStepStart();
         mQuietSteps = 0;
+        mSettledSteps = 0;
         result.mEvents = result.mEvents | ETetStepEvent::Diverged;
         ioBackend.DescribeRestored(result);
         return result;
@@ -85,7 +88,15 @@ Result<TetStepResult> TetStepper::Step(TetStepBackend& ioBackend, const TetSolve
     // has yet to move).
     const double sleep_energy = 0.5 * ioBackend.FreeMass() * inSettings.mSleepSpeed * inSettings.mSleepSpeed;
     mQuietSteps = attempt.mKineticEnergy < sleep_energy && attempt.mBrokenLinks == 0 ? mQuietSteps + 1 : 0;
-    if (mQuietSteps >= inSettings.mSleepStepCount)
+    // A settled body sleeps sooner: the quiet steps guard against the instant of an oscillation when its
+    // kinetic energy passes near zero, but kinetic energy that stays under cSettledEnergyFraction of the sleep
+    // energy for cSettledStepCount steps in a row is no such instant (an oscillation of the sleep energy would
+    // need a period of more than pi / sqrt(cSettledEnergyFraction) steps, 3e4 here); it is a body in
+    // equilibrium (strained against its anchors), whose velocities are round-off.
+    mSettledSteps = attempt.mKineticEnergy < cSettledEnergyFraction * sleep_energy && attempt.mBrokenLinks == 0
+                        ? mSettledSteps + 1
+                        : 0;
+    if (mQuietSteps >= inSettings.mSleepStepCount || mSettledSteps >= std::min(cSettledStepCount, inSettings.mSleepStepCount))
     {
         ioBackend.FallAsleep();
         mSleeping = true;

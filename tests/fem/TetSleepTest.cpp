@@ -12,20 +12,28 @@ namespace
 {
 
 // A 0.6 x 0.2 x 0.1 m plate of the default material (1 GPa), anchored along x = 0, sagging under gravity.
-TetSolver MakeShelf(EIntegrator inIntegrator, double inMassDamping)
+TetSolver MakeShelf(EIntegrator inIntegrator, double inMassDamping, TetSolverSettings inSettings = {})
 {
     TetGridSettings grid;
     grid.mSize = Vec3(0.6, 0.2, 0.1);
     grid.mCellCount = {6, 2, 1};
     FemMaterialSettings material;
     material.mMassDamping = inMassDamping;
-    TetSolverSettings settings;
-    settings.mIntegrator = inIntegrator;
-    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+    inSettings.mIntegrator = inIntegrator;
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), material, inSettings).Get();
     for (int k = 0; k <= 1; ++k)
         for (int j = 0; j <= 2; ++j)
             REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
     return solver;
+}
+
+// Mass of the free nodes (kg): the sleep energy is half of it times the sleep speed squared.
+double FreeMass(const TetSolver& inSolver)
+{
+    double mass = 0.0;
+    for (std::size_t node = 0; node < inSolver.GetMasses().size(); ++node)
+        mass += inSolver.GetInverseMasses()[node] > 0.0 ? inSolver.GetMasses()[node] : 0.0;
+    return mass;
 }
 
 } // namespace
@@ -81,6 +89,50 @@ TEST_CASE("Sleep: a settled solver does no element work until an impulse wakes i
         CHECK(!HasEvent(woken.Get().mEvents, ETetStepEvent::Sleeping));
         CHECK(solver.GetElementWorkCount() > work);
         CHECK(solver.GetPositions()[tip] != positions[tip]);
+    }
+}
+
+TEST_CASE("Sleep: a body settled in equilibrium sleeps three steps after it settles; an oscillation never does",
+          "[fem]")
+{
+    // mSleepStepCount out of reach: only the settled rule (kinetic energy under 1e-8 of the sleep energy
+    // three steps in a row) can put these to sleep.
+    TetSolverSettings patient;
+    patient.mSleepStepCount = 1000000;
+
+    // The shelf sags under gravity and comes to rest strained against its anchors: it sleeps in the third
+    // step in a row whose kinetic energy is round-off.
+    {
+        TetSolver shelf = MakeShelf(EIntegrator::ImplicitEuler, 0.0, patient);
+        const double sleep_energy = 0.5 * FreeMass(shelf) * patient.mSleepSpeed * patient.mSleepSpeed;
+        int settled = 0;
+        bool asleep = false;
+        int steps = 0;
+        for (; steps < 2000 && !asleep; ++steps)
+        {
+            const TetStepResult result = shelf.Step(1.0 / 60.0).Get();
+            asleep = HasEvent(result.mEvents, ETetStepEvent::FellAsleep);
+            settled = result.mKineticEnergy < 1.0e-8 * sleep_energy ? settled + 1 : 0;
+            if (!asleep)
+                CHECK(settled < 3);
+        }
+        WARN("settled shelf asleep after " << steps << " steps");
+        REQUIRE(asleep);
+        CHECK(settled == 3);
+        for (const Vec3& velocity : shelf.GetVelocities())
+            CHECK(velocity == Vec3::Zero());
+    }
+
+    // The same shelf plucked and undamped (symplectic Euler) swings with the same energy forever; its
+    // kinetic energy passes through zero twice a period but never stays there.
+    {
+        TetSolverSettings weightless = patient;
+        weightless.mGravity = Vec3::Zero();
+        TetSolver swinging = MakeShelf(EIntegrator::SymplecticEuler, 0.0, weightless);
+        REQUIRE(swinging.ApplyImpulse(swinging.GetMesh().GetNodeCount() - 1, Vec3(0.0, 0.0, 1.0e-3)).IsValid());
+        for (int step = 0; step < 600; ++step)
+            REQUIRE_FALSE(HasEvent(swinging.Step(1.0 / 240.0).Get().mEvents, ETetStepEvent::FellAsleep));
+        CHECK_FALSE(swinging.IsSleeping());
     }
 }
 

@@ -57,7 +57,9 @@ struct CRUMPLE_API TetSolverSettings
     /// which no link broke, velocities are zeroed and Step() does nothing (no element work) until an input
     /// changes: an impulse, a force, gravity, a fixed node, new positions or velocities, or WakeUp(). A
     /// solver that nothing could move (no velocity, no load, no strain: a prop made at rest without gravity)
-    /// sleeps at once, in the step that finds it so. >= 0; 0 never sleeps.
+    /// sleeps at once, in the step that finds it so; one that has settled (kinetic energy under 1e-8 of the
+    /// sleep energy for 3 steps in a row: round-off of a body in equilibrium, strained against its anchors)
+    /// sleeps then, without waiting for mSleepStepCount. >= 0; 0 never sleeps.
     double mSleepSpeed = 1.0e-3;
     int mSleepStepCount = 30; ///< Consecutive quiet steps before sleeping, >= 1
 

@@ -57,7 +57,8 @@ public:
 /// while asleep, falls asleep at once where a step could move nothing (a prop made at rest without gravity:
 /// a held fence sleeps from its first step instead of integrating mSleepStepCount steps of nothing), integrates, retries a diverged attempt from the saved start in 2, 4, ... pieces (up to
 /// mMaxStepSplits, explicit ones within mMaxSubSteps), restores the start when every attempt diverged, reports
-/// the events, and puts the solver to sleep after mSleepStepCount quiet steps. Holds the sleep state.
+/// the events, and puts the solver to sleep after mSleepStepCount quiet steps (after 3 once it has settled:
+/// kinetic energy under 1e-8 of the sleep energy, round-off of a body in equilibrium). Holds the sleep state.
 class CRUMPLE_API TetStepper
 {
 public:
@@ -69,12 +70,18 @@ public:
     {
         mSleeping = false;
         mQuietSteps = 0;
+        mSettledSteps = 0;
     }
     bool IsSleeping() const { return mSleeping; }
 
 private:
+    // Settled: kinetic energy under this fraction of the sleep energy for this many steps in a row
+    static constexpr double cSettledEnergyFraction = 1.0e-8;
+    static constexpr int cSettledStepCount = 3;
+
     bool mSleeping = false;
     int mQuietSteps = 0;
+    int mSettledSteps = 0; ///< Consecutive steps settled (see cSettledEnergyFraction)
 };
 
 } // namespace crumple::fem
