@@ -5,6 +5,8 @@
 #include <crumple/base/TimeStep.h>
 #include <crumple/props/CollisionImpulses.h>
 
+#include <algorithm>
+
 #if defined(CRUMPLE_PROPS_WITH_GPU)
 #include <crumple/gpu/ComputeDevice.h>
 #include <crumple/gpu/GpuTetSolver.h>
@@ -60,6 +62,12 @@ Result<FemProp> FemProp::Create(gpu::ComputeDeviceProvider* ioProvider, const fe
     Result<fem::TetSolver> cpu = fem::TetSolver::Create(inMesh, inMaterial, inSettings);
     if (cpu.HasError())
         return cpu.GetError();
+    return FromSolver(ioProvider, std::move(cpu.Get()), inPropSettings);
+}
+
+FemProp FemProp::FromSolver(gpu::ComputeDeviceProvider* ioProvider, fem::TetSolver&& ioSolver,
+                            const FemPropSettings& inPropSettings)
+{
     FemProp prop;
     if (inPropSettings.mBackend == EFemBackend::Gpu)
     {
@@ -72,7 +80,7 @@ Result<FemProp> FemProp::Create(gpu::ComputeDeviceProvider* ioProvider, const fe
                                         MakeError(EError::InvalidArgument, "no ComputeDeviceProvider given"));
         if (device.IsValid())
         {
-            Result<gpu::GpuTetSolver> gpu = gpu::GpuTetSolver::CreateFrom(device.Get(), cpu.Get());
+            Result<gpu::GpuTetSolver> gpu = gpu::GpuTetSolver::CreateFrom(device.Get(), ioSolver);
             if (gpu.IsValid())
             {
                 prop.mGpu.reset(new gpu::GpuTetSolver(std::move(gpu.Get())));
@@ -90,7 +98,7 @@ Result<FemProp> FemProp::Create(gpu::ComputeDeviceProvider* ioProvider, const fe
         if (inPropSettings.mLog)
             inPropSettings.mLog("FemProp: GPU requested, running on the CPU: " + prop.mFallbackReason);
     }
-    prop.mCpu.emplace(std::move(cpu.Get()));
+    prop.mCpu.emplace(std::move(ioSolver));
     return prop;
 }
 
@@ -202,6 +210,15 @@ const std::vector<fem::TetIndices>& FemProp::GetElementNodes() const
 {
     CRUMPLE_PROPS_ON_GPU(GetElementNodes())
     return mCpu->GetElementNodes();
+}
+
+int FemProp::GetBrokenLinkCount() const
+{
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    if (mGpu)
+        return static_cast<int>(std::count(mGpu->GetBrokenLinks().begin(), mGpu->GetBrokenLinks().end(), std::uint8_t{1}));
+#endif
+    return mCpu->GetBrokenLinkCount();
 }
 
 int FemProp::GetNodeCount() const

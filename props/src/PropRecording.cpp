@@ -6,6 +6,10 @@
 #include <crumple/base/ByteWriter.h>
 #include <crumple/props/CollisionImpulses.h>
 
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+#include <crumple/gpu/GpuTetSolver.h>
+#endif
+
 #include <cmath>
 #include <string>
 
@@ -113,6 +117,49 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, co
     return setup;
 }
 
+Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
+{
+    if (const fem::TetSolver* cpu = inProp.GetCpuSolver(); cpu != nullptr)
+        return MakePropSetup(inBody, EFemBackend::Cpu, *cpu);
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    const gpu::GpuTetSolver& solver = *inProp.GetGpuSolver();
+    if (solver.GetElementWorkCount() != 0)
+        return MakeError(EError::InvalidArgument,
+                         "MakePropSetup: the GPU prop has already stepped; record a prop before its first step (add it "
+                         "to a recording PropWorld when it is made)");
+    const fem::TetMesh& mesh = solver.GetMesh();
+    PropSetup setup;
+    setup.mBody = inBody;
+    setup.mBackend = EFemBackend::Gpu;
+    setup.mRestPositions = mesh.GetRestPositions();
+    setup.mTets = mesh.GetTets();
+    setup.mGroups = mesh.GetGroups();
+    setup.mMaterial = solver.GetMaterialSettings();
+    setup.mSettings = solver.GetSettings();
+    solver.ReadPositions(setup.mPositions);
+    solver.ReadVelocities(setup.mVelocities);
+    solver.ReadExternalForces(setup.mExternalForces);
+    // intent: positions still where the solver was made (the GPU got them as floats) are recorded as the
+    // double ones they came from, so the rebuilt CPU solver is the very one the live GPU solver was made from
+    // (unstrained: a prop made still sleeps at its first step in both)
+    Result<fem::TetSolver> made = fem::TetSolver::Create(mesh, setup.mMaterial, setup.mSettings);
+    if (made.HasError())
+        return made.GetError();
+    const std::vector<Vec3>& start = made.Get().GetPositions();
+    bool unmoved = start.size() == setup.mPositions.size();
+    for (std::size_t node = 0; unmoved && node < start.size(); ++node)
+        unmoved = setup.mPositions[node] == start[node].cast<float>().cast<double>();
+    if (unmoved)
+        setup.mPositions = start;
+    setup.mAnchored.resize(setup.mPositions.size());
+    for (std::size_t node = 0; node < setup.mAnchored.size(); ++node)
+        setup.mAnchored[node] = solver.GetInverseMasses()[node] == 0.0 ? 1 : 0;
+    return setup;
+#else
+    return MakeError(EError::InvalidArgument, "MakePropSetup: the prop has no solver");
+#endif
+}
+
 std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup)
 {
     ByteWriter writer;
@@ -209,7 +256,7 @@ Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup)
     return solver;
 }
 
-Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
+Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gpu::ComputeDeviceProvider* ioProvider)
 {
     std::vector<ReplayedProp> props;
     std::size_t next_collision = 0;
@@ -221,7 +268,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
             const plugin::Collision& collision = inReplay.mCollisions[next_collision];
             for (ReplayedProp& prop : props)
                 if (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB)
-                    if (Status status = ApplyCollision(prop.mSolver, collision, prop.mBody); status.HasError())
+                    if (Status status = prop.mProp.ApplyCollision(collision, prop.mBody); status.HasError())
                         return status;
         }
         return Status::Ok();
@@ -242,7 +289,10 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
             Result<fem::TetSolver> solver = RebuildProp(setup.Get());
             if (solver.HasError())
                 return MakeError(solver.GetError().mCode, where + solver.GetError().mMessage);
-            props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(solver).Get()});
+            FemPropSettings backend;
+            backend.mBackend = setup.Get().mBackend;
+            props.push_back({setup.Get().mBody, setup.Get().mBackend,
+                             FemProp::FromSolver(ioProvider, std::move(solver.Get()), backend)});
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step))
         {
@@ -251,7 +301,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
             if (reader.Failed() || reader.Remaining() != 0)
                 return MakeError(EError::CorruptData, where + "a step record of the wrong length");
             for (ReplayedProp& prop : props)
-                if (Result<fem::TetStepResult> result = prop.mSolver.Step(step); result.HasError())
+                if (Result<fem::TetStepResult> result = prop.mProp.Step(step); result.HasError())
                     return MakeError(result.GetError().mCode, where + result.GetError().mMessage);
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose))
@@ -261,7 +311,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay)
             const std::uint32_t count = reader.ReadU32();
             if (reader.Failed() || prop >= props.size() || reader.Remaining() != 4 * static_cast<std::size_t>(count))
                 return MakeError(EError::CorruptData, where + "a loose-piece record of no known prop or of the wrong length");
-            fem::TetSolver& solver = props[prop].mSolver;
+            FemProp& solver = props[prop].mProp;
             // intent: every node checked before any is fixed
             std::vector<int> nodes(count);
             for (int& node : nodes)

@@ -55,11 +55,7 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
 
 Result<std::vector<std::byte>> PropWorld::RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const
 {
-    const fem::TetSolver* solver = inProp.GetCpuSolver();
-    if (solver == nullptr)
-        return MakeError(EError::InvalidArgument,
-                         "PropWorld: a GPU prop cannot be recorded yet (its replay would run on the CPU)");
-    Result<PropSetup> setup = MakePropSetup(inBody, inProp.GetBackend(), *solver);
+    Result<PropSetup> setup = MakePropSetup(inBody, inProp);
     if (setup.HasError())
         return setup.GetError();
     return EncodePropSetup(setup.Get());

@@ -108,9 +108,9 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
     REQUIRE(recorder->Close().IsValid());
     const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
     REQUIRE(replayed.size() == 1u);
-    CHECK(replayed[0].mSolver.GetPositions() == solver.GetPositions());
-    CHECK(replayed[0].mSolver.GetVelocities() == solver.GetVelocities());
-    CHECK(replayed[0].mSolver.GetInverseMasses() == solver.GetInverseMasses());
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == solver.GetPositions());
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetVelocities() == solver.GetVelocities());
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetInverseMasses() == solver.GetInverseMasses());
 }
 
 TEST_CASE("Loose pieces lighter than the minimum mass are dropped without a body", "[props]")

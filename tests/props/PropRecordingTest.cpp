@@ -11,6 +11,11 @@
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
 
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#include <crumple/gpu/GpuTetSolver.h>
+#endif
+
 #include <catch2/catch.hpp>
 
 using namespace crumple;
@@ -60,7 +65,8 @@ TEST_CASE("Props in a recording: a cracking prop replays bit for bit without an 
     CHECK(replay.mExtensions.size() == 13u); // one prop, 12 steps
     const std::vector<ReplayedProp> replayed = ReplayProps(replay).Get();
     REQUIRE(replayed.size() == 1u);
-    const TetSolver& again = replayed[0].mSolver;
+    REQUIRE(replayed[0].mProp.GetCpuSolver() != nullptr);
+    const TetSolver& again = *replayed[0].mProp.GetCpuSolver();
     CHECK(replayed[0].mBody == fixture.mWall);
     CHECK(again.GetBrokenLinks() == live.GetBrokenLinks());
     CHECK(again.GetElementNodes() == live.GetElementNodes());
@@ -175,5 +181,83 @@ TEST_CASE("Props in a recording: deferred dents hand the props the same hits at 
     // And the recording replays to the live prop.
     const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(deferred.mRecording).Get()).Get();
     REQUIRE(replayed.size() == 1u);
-    CHECK(replayed[0].mSolver.GetPositions() == deferred.mPositions);
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == deferred.mPositions);
 }
+
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and on the CPU without one",
+          "[props][replay][gpu]")
+{
+    // The brittle panel on the GPU: symplectic Euler (the GPU's integrator), soft enough for a few sub-steps
+    // per step, weak enough that the car's hits crack it.
+    gpu::ComputeDeviceProvider devices;
+    fem::TetGridSettings grid;
+    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = {1, 6, 6};
+    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e8;
+    material.mPoissonRatio = 0.2;
+    material.mTensileStrength *= 0.05;
+    fem::TetSolverSettings settings;
+    settings.mIntegrator = fem::EIntegrator::SymplecticEuler;
+    settings.mGravity = Vec3::Zero();
+    FemPropSettings on_gpu;
+    on_gpu.mBackend = EFemBackend::Gpu;
+    FemProp panel = FemProp::Create(&devices, fem::TetGrid(grid).Get(), material, settings, on_gpu).Get();
+    if (panel.GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << panel.GetFallbackReason());
+        return;
+    }
+    for (int node = 0; node < panel.GetNodeCount(); ++node)
+        if (panel.GetGpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
+            REQUIRE(panel.SetNodeFixed(node, true).IsValid());
+
+    const std::filesystem::path path = common::ScratchDirectory() / "props_gpu.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
+    for (int hit = 0; hit < 2; ++hit)
+    {
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0 + 5.0 * hit)));
+        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
+            fixture.FrontContact(0.3 - 0.5 * hit, 0.2, 0.1 * hit), fixture.FrontContact(-0.4, -0.1, 0.1 * hit)}));
+        fixture.mWorld.Flush();
+        for (int step = 0; step < 6; ++step)
+            REQUIRE(props->Step(1.0 / 120.0).IsValid());
+    }
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const FemProp& live = *props->GetProp(wall);
+    std::vector<Vec3> live_positions;
+    live.ReadPositions(live_positions);
+    REQUIRE(live.GetBrokenLinkCount() > 0); // the run really cracked the prop
+
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    // On a device: the same floats, the same cracks, the same pieces.
+    {
+        const std::vector<ReplayedProp> replayed = ReplayProps(replay, &devices).Get();
+        REQUIRE(replayed.size() == 1u);
+        CHECK(replayed[0].mRecordedBackend == EFemBackend::Gpu);
+        REQUIRE(replayed[0].mProp.GetBackend() == EFemBackend::Gpu);
+        std::vector<Vec3> positions;
+        replayed[0].mProp.ReadPositions(positions);
+        CHECK(positions == live_positions);
+        CHECK(replayed[0].mProp.GetElementNodes() == live.GetElementNodes());
+        CHECK(replayed[0].mProp.GetGpuSolver()->GetBrokenLinks() == live.GetGpuSolver()->GetBrokenLinks());
+        CHECK(replayed[0].mProp.ComputeFragments().size() == live.ComputeFragments().size());
+    }
+    // Without one: on the CPU, saying why; the same hits crack it (double precision: close, not bitwise).
+    {
+        const std::vector<ReplayedProp> replayed = ReplayProps(replay, nullptr).Get();
+        REQUIRE(replayed.size() == 1u);
+        CHECK(replayed[0].mRecordedBackend == EFemBackend::Gpu);
+        CHECK(replayed[0].mProp.GetBackend() == EFemBackend::Cpu);
+        CHECK_FALSE(replayed[0].mProp.GetFallbackReason().empty());
+        CHECK(replayed[0].mProp.GetBrokenLinkCount() > 0);
+    }
+}
+#endif

@@ -13,6 +13,9 @@
 #include "TetSurface.h"
 
 #include <crumple/props/PropRecording.h>
+#if defined(CRUMPLE_REPLAY_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#endif
 #endif
 
 #include <algorithm>
@@ -211,7 +214,14 @@ int main(int argc, char** argv)
     // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
     // recorded; each one's boundary is written as it ended, cracks and all.
     const auto props_start = std::chrono::steady_clock::now();
-    Result<std::vector<props::ReplayedProp>> replayed_props = props::ReplayProps(replay.Get());
+    // intent: a GPU prop replays on a device of its own (the context is made only if a GPU prop asks)
+#if defined(CRUMPLE_REPLAY_GPU)
+    gpu::ComputeDeviceProvider devices;
+    gpu::ComputeDeviceProvider* const device_provider = &devices;
+#else
+    gpu::ComputeDeviceProvider* const device_provider = nullptr;
+#endif
+    Result<std::vector<props::ReplayedProp>> replayed_props = props::ReplayProps(replay.Get(), device_provider);
     props_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - props_start).count();
     if (!replayed_props)
     {
@@ -220,19 +230,25 @@ int main(int argc, char** argv)
     }
     for (std::size_t index = 0; index < replayed_props.Get().size(); ++index)
     {
-        const fem::TetSolver& solver = replayed_props.Get()[index].mSolver;
-        const common::TetSurface surface = common::MakeTetSurface(solver.GetPositions(), solver.GetElementNodes());
+        const props::ReplayedProp& prop = replayed_props.Get()[index];
+        if (prop.mRecordedBackend != prop.mProp.GetBackend())
+            std::printf("prop %zu ran on the %s live and replays on the %s (%s): close, not bitwise\n", index,
+                        props::ToString(prop.mRecordedBackend), props::ToString(prop.mProp.GetBackend()),
+                        prop.mProp.GetFallbackReason().c_str());
+        std::vector<Vec3> positions;
+        prop.mProp.ReadPositions(positions);
+        const common::TetSurface surface = common::MakeTetSurface(positions, prop.mProp.GetElementNodes());
         const std::filesystem::path path = out / ("prop" + std::to_string(index) + ".obj");
-        if (Status written = meshes ? common::WriteObj(path, solver.GetPositions(), surface.mNormals, surface.mTriangles) : Status::Ok();
+        if (Status written = meshes ? common::WriteObj(path, positions, surface.mNormals, surface.mTriangles) : Status::Ok();
             !written)
         {
             std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
             return 2;
         }
-        std::printf("prop %zu (body %u): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n", index,
-                    replayed_props.Get()[index].mBody.mValue, solver.GetNodeCount(), solver.GetBrokenLinkCount(),
-                    solver.ComputeFragments().size(),
-                    static_cast<unsigned long long>(common::HashPositions(solver.GetPositions())),
+        std::printf("prop %zu (body %u, %s): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n", index,
+                    prop.mBody.mValue, props::ToString(prop.mProp.GetBackend()), prop.mProp.GetNodeCount(),
+                    prop.mProp.GetBrokenLinkCount(), prop.mProp.ComputeFragments().size(),
+                    static_cast<unsigned long long>(common::HashPositions(positions)),
                     meshes ? path.string().c_str() : "(no mesh written)");
     }
 #endif

@@ -665,4 +665,14 @@ void GpuTetSolver::ReadVelocities(std::vector<Vec3>& outVelocities) const
         outVelocities[node] = ToVec3(packed[node]);
 }
 
+void GpuTetSolver::ReadExternalForces(std::vector<Vec3>& outForces) const
+{
+    std::vector<Float4> packed(mMasses.size());
+    if (mDevice->MakeCurrent().IsValid())
+        mExternal.Download(0, packed.size() * sizeof(Float4), packed.data());
+    outForces.resize(packed.size());
+    for (std::size_t node = 0; node < packed.size(); ++node)
+        outForces[node] = ToVec3(packed[node]);
+}
+
 } // namespace crumple::gpu

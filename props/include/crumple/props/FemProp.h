@@ -65,6 +65,12 @@ public:
                                   const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
                                   const FemPropSettings& inPropSettings);
 
+    /// A prop in the state of a CPU solver (positions, velocities, anchors, forces, gravity, cracks): on the
+    /// CPU as it is, or moved to the GPU (gpu::GpuTetSolver::CreateFrom) when inPropSettings ask for it and
+    /// the GPU can run it; otherwise on the CPU with the reason, as Create. How a recorded prop is rebuilt.
+    static FemProp FromSolver(gpu::ComputeDeviceProvider* ioProvider, fem::TetSolver&& ioSolver,
+                              const FemPropSettings& inPropSettings);
+
     /// The backend actually used
     EFemBackend GetBackend() const { return mGpu ? EFemBackend::Gpu : EFemBackend::Cpu; }
     /// Why a GPU request runs on the CPU; empty otherwise
@@ -99,6 +105,9 @@ public:
     const fem::TetSolver* GetCpuSolver() const { return mCpu ? &*mCpu : nullptr; }
     /// The GPU solver, or nullptr on the CPU backend
     gpu::GpuTetSolver* GetGpuSolver() { return mGpu.get(); }
+    const gpu::GpuTetSolver* GetGpuSolver() const { return mGpu.get(); }
+    /// Links broken so far (0 for an unbreakable material)
+    int GetBrokenLinkCount() const;
 
     FemProp(FemProp&& ioOther) noexcept;
     FemProp& operator=(FemProp&& ioOther) noexcept;

@@ -51,27 +51,35 @@ struct CRUMPLE_API PropSetup
 
 /// The setup of a CPU solver bound to inBody; refused once the solver has stepped or solved statics.
 CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, const fem::TetSolver& inSolver);
+/// The setup of a prop on either backend bound to inBody, refused once it has stepped. A GPU prop's state is
+/// read back as the GPU holds it (float); positions still at the rest mesh's (as floats) are recorded as the
+/// rest mesh's, so a rebuilt prop starts from exactly the same state (RebuildProp, then FemProp::FromSolver).
+CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp);
 
 /// Bytes of a PropSetup (little-endian) and back; decoding checks sizes and finite values, and the mesh,
 /// material and settings are validated again when the solver is rebuilt (RebuildProp).
 CRUMPLE_API std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup);
 CRUMPLE_API Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes);
 
-/// A CPU solver in the recorded state (a GPU prop is replayed on the CPU: close, not bitwise).
+/// A CPU solver in the recorded state (for a GPU prop, the state its GPU solver is made from).
 CRUMPLE_API Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup);
 
-/// A prop rebuilt from a recording and replayed: its final solver.
+/// A prop rebuilt from a recording and replayed: its final state.
 struct CRUMPLE_API ReplayedProp
 {
     plugin::BodyId mBody;
     EFemBackend mRecordedBackend = EFemBackend::Cpu;
-    fem::TetSolver mSolver;
+    /// On the backend it ran on live, where the replayer has it; a GPU prop without a device replays on the CPU
+    /// (mProp.GetBackend() and GetFallbackReason() say so): close, not bitwise
+    FemProp mProp;
 };
 
-/// Replays the props of a recording without an engine: each prop is rebuilt when it joined, takes the
-/// recorded collisions with its body (props::ApplyCollision) and the recorded steps, in the recorded order.
-/// CPU props end bitwise as they did live. Refused with a message naming the record on a corrupt or
-/// inconsistent prop record.
-CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay);
+/// Replays the props of a recording without an engine: each prop is rebuilt when it joined, on its recorded
+/// backend (a GPU prop on a device of ioProvider, which makes its context only then; null, or no device: on
+/// the CPU), takes the recorded collisions with its body (FemProp::ApplyCollision) and the recorded steps, in
+/// the recorded order. CPU props end bitwise as they did live, and GPU props on the same device and driver.
+/// Refused with a message naming the record on a corrupt or inconsistent prop record.
+CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
+                                                          gpu::ComputeDeviceProvider* ioProvider = nullptr);
 
 } // namespace crumple::props

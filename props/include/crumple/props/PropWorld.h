@@ -60,8 +60,8 @@ struct CRUMPLE_API LooseFragment
 /// by Create, removed by the destructor), so it takes collisions in the world's dispatch order, when they are
 /// dispatched (OnBeforeCollision: a prop needs no dent), so deferred dents (DamageWorldSettings::mDeferDents)
 /// change nothing for props: the same Update hands them the same hits either way. With a DamageRecorder (AttachRecorder) every prop and every step goes into the recording as
-/// extension records beside the world's collisions, and ReplayProps (PropRecording.h) reproduces the CPU
-/// props bit for bit without an engine.
+/// extension records beside the world's collisions, and ReplayProps (PropRecording.h) reproduces the
+/// props bit for bit without an engine (GPU props on a device with the same driver).
 ///
 /// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
 /// A CPU prop's element passes (forces, stiffness products) are split over the world's job system
@@ -78,13 +78,13 @@ public:
 
     /// Binds inProp to body inBody of the world (one prop per body) and hands a CPU prop the world's job
     /// system. Refused, and inProp left as it was, when the body does not exist or already has a prop, or,
-    /// while recording, when the prop cannot be recorded (a GPU prop, or one that has already stepped).
+    /// while recording, when the prop cannot be recorded (one that has already stepped).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
 
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
     /// which must be recording the same world and outlive this object or be detached (nullptr) first.
-    /// Refused, recording nothing, when a prop added so far cannot be recorded (a GPU prop, or one that has
-    /// stepped): attach the recorder before the first Step().
+    /// Refused, recording nothing, when a prop added so far cannot be recorded (one that has stepped): attach
+    /// the recorder before the first Step().
     Status AttachRecorder(plugin::DamageRecorder* ioRecorder);
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);

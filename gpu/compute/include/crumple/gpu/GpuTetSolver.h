@@ -99,6 +99,17 @@ public:
     void ReadPositions(std::vector<Vec3>& outPositions) const;
     /// Reads the node velocities back (m/s), #N.
     void ReadVelocities(std::vector<Vec3>& outVelocities) const;
+    /// Reads the external forces back (N), #N: as the GPU holds them (float)
+    void ReadExternalForces(std::vector<Vec3>& outForces) const;
+
+    /// The rest mesh
+    const fem::TetMesh& GetMesh() const { return mMesh; }
+    /// The material it was made with
+    const fem::FemMaterialSettings& GetMaterialSettings() const { return mMaterial; }
+    /// The solver settings, gravity as last set
+    const fem::TetSolverSettings& GetSettings() const { return mSettings; }
+    /// Inverse node masses (1/kg), #N, 0 where a node is anchored (host copy)
+    const std::vector<double>& GetInverseMasses() const { return mInverseMasses; }
 
     /// Number of nodes #N
     int GetNodeCount() const { return static_cast<int>(mInverseMasses.size()); }
