@@ -34,6 +34,10 @@ Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, con
     Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes);
     if (!prop)
         return prop.GetError();
+    // intent: what AddProp would refuse of the prop itself (a failed or closed recorder) is refused before the
+    // engine body exists, so bad state makes no body either
+    if (Status can_add = ioProps.CheckCanAdd(prop.Get()); !can_add)
+        return can_add.GetError();
     Result<plugin::BodyId> body = inMakeBody(made.Get().mBody);
     if (!body)
         return body.GetError();

@@ -53,6 +53,18 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
+Status PropWorld::CheckCanAdd(const FemProp& inProp) const
+{
+    if (mRecorder == nullptr)
+        return Status::Ok();
+    if (Status recorder = mRecorder->GetStatus(); recorder.HasError())
+        return recorder;
+    if (!mRecorder->IsOpen())
+        return MakeError(EError::InvalidArgument, "PropWorld: the recorder is closed");
+    Result<std::vector<std::byte>> setup = RecordedSetup(plugin::BodyId{}, inProp);
+    return setup.HasError() ? Status(setup.GetError()) : Status::Ok();
+}
+
 Result<std::vector<std::byte>> PropWorld::RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const
 {
     Result<PropSetup> setup = MakePropSetup(inBody, inProp);

@@ -3,13 +3,16 @@
 // A prop as an engine body: its exact mass frame, its mesh moved into it, and its collision pieces, which
 // lose what breaks loose and follow what its FEM does.
 #include "BrittlePanel.h"
+#include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetVolume.h>
+#include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/HeldFemProp.h>
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
+
 
 #include <catch2/catch.hpp>
 
@@ -217,6 +220,17 @@ TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in t
     CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, nullptr).IsValid() == false);
     CHECK(asked.empty());
     CHECK(world->GetPropCount() == 0);
+    // A recorder that can take no more records (closed): refused before the engine body is made.
+    {
+        std::unique_ptr<plugin::DamageRecorder> recorder =
+            std::move(plugin::DamageRecorder::Create(common::ScratchDirectory() / "held_closed.crumple", fixture.mWorld).Get());
+        REQUIRE(world->AttachRecorder(recorder.get()).IsValid());
+        REQUIRE(recorder->Close().IsValid());
+        CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body).HasError());
+        CHECK(asked.empty());
+        CHECK(world->GetPropCount() == 0);
+        REQUIRE(world->AttachRecorder(nullptr).IsValid());
+    }
 
     const props::HeldProp held = props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body).Get();
     REQUIRE(asked.size() == 1u);

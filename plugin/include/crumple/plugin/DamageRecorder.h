@@ -50,6 +50,8 @@ public:
     std::uint64_t GetCollisionCount() const { return mCollisions; }
     /// The first write error, if any (later records are dropped after one).
     const Status& GetStatus() const { return mStatus; }
+    /// False once Close() was called
+    bool IsOpen() const { return mFile != nullptr; }
 
 private:
     DamageRecorder(std::FILE* inFile, std::filesystem::path inPath, DamageWorld& inWorld)

@@ -36,8 +36,9 @@ struct CRUMPLE_API HeldProp
 /// Everything that puts a prop anchored to the ground into a game: MakePropBody (held, shape of cubes of
 /// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed), the
 /// engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The FEM is
-/// made before the engine body, so bad input (mesh, material, pose, anchors) creates nothing; a body that
-/// inMakeBody made stays the adapter's if PropWorld::AddProp refuses it (a recorder that cannot record it).
+/// made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine body, so
+/// bad input (mesh, material, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
+/// adapter's only if AddProp still refuses it (an adapter of another world, or a write error).
 CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
                                          std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
                                          const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody);

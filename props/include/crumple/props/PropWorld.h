@@ -80,6 +80,10 @@ public:
     /// system. Refused, and inProp left as it was, when the body does not exist or already has a prop, or,
     /// while recording, when the prop cannot be recorded (one that has already stepped).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
+    /// What AddProp would refuse of inProp itself, before its body exists: while recording, a prop that cannot
+    /// be recorded or a recorder that has failed or closed. (AddProp then refuses only a body that is not in
+    /// the world or already has a prop, and a write error.) Changes nothing.
+    Status CheckCanAdd(const FemProp& inProp) const;
 
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
     /// which must be recording the same world and outlive this object or be detached (nullptr) first.
