@@ -32,6 +32,27 @@ props::FemProp BrittlePanel()
     return test::BrittlePanel({1, 10, 10}, 1.0e10, 1.0);
 }
 
+// The car's two hits on the wall a few steps apart, the props stepping six steps of 1/120 s after each;
+// returns how many props fractured over the steps.
+int HitTwice(common::WorldFixture& ioFixture, PropWorld& ioProps)
+{
+    int fractured = 0;
+    for (int hit = 0; hit < 2; ++hit)
+    {
+        REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(15.0 + 5.0 * hit)));
+        REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
+            ioFixture.FrontContact(0.3 - 0.5 * hit, 0.2, 0.1 * hit), ioFixture.FrontContact(-0.4, -0.1, 0.1 * hit)}));
+        ioFixture.mWorld.Flush();
+        for (int step = 0; step < 6; ++step)
+        {
+            Result<PropStepReport> stepped = ioProps.Step(1.0 / 120.0);
+            REQUIRE(stepped.IsValid());
+            fractured += stepped.Get().mFractured;
+        }
+    }
+    return fractured;
+}
+
 } // namespace
 
 TEST_CASE("Props in a recording: a cracking prop replays bit for bit without an engine", "[props][replay]")
@@ -43,17 +64,7 @@ TEST_CASE("Props in a recording: a cracking prop replays bit for bit without an 
     REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
     const PropId wall = props->AddProp(fixture.mWall, BrittlePanel()).Get();
 
-    // Two hits a few steps apart, the props stepping in between.
-    int fractured = 0;
-    for (int hit = 0; hit < 2; ++hit)
-    {
-        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0 + 5.0 * hit)));
-        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
-            fixture.FrontContact(0.3 - 0.5 * hit, 0.2, 0.1 * hit), fixture.FrontContact(-0.4, -0.1, 0.1 * hit)}));
-        fixture.mWorld.Flush();
-        for (int step = 0; step < 6; ++step)
-            fractured += props->Step(1.0 / 120.0).Get().mFractured;
-    }
+    const int fractured = HitTwice(fixture, *props);
     REQUIRE(props->AttachRecorder(nullptr).IsValid());
     REQUIRE(recorder->Close().IsValid());
     const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();
@@ -220,15 +231,7 @@ TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
     REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
     const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
-    for (int hit = 0; hit < 2; ++hit)
-    {
-        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0 + 5.0 * hit)));
-        REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
-            fixture.FrontContact(0.3 - 0.5 * hit, 0.2, 0.1 * hit), fixture.FrontContact(-0.4, -0.1, 0.1 * hit)}));
-        fixture.mWorld.Flush();
-        for (int step = 0; step < 6; ++step)
-            REQUIRE(props->Step(1.0 / 120.0).IsValid());
-    }
+    HitTwice(fixture, *props);
     REQUIRE(props->AttachRecorder(nullptr).IsValid());
     REQUIRE(recorder->Close().IsValid());
     const FemProp& live = *props->GetProp(wall);

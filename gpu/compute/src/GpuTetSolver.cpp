@@ -645,34 +645,29 @@ std::vector<fem::TetFragment> GpuTetSolver::ComputeFragments() const
     return fem::TetFragments(fem::BuildFractureLinks(mMesh), mElementNodes, element_masses, positions, mInverseMasses);
 }
 
-void GpuTetSolver::ReadPositions(std::vector<Vec3>& outPositions) const
+void GpuTetSolver::ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const
 {
     std::vector<Float4> packed(mMasses.size());
     if (mDevice->MakeCurrent().IsValid())
-        mPositions.Download(0, packed.size() * sizeof(Float4), packed.data());
-    outPositions.resize(packed.size());
+        inBuffer.Download(0, packed.size() * sizeof(Float4), packed.data());
+    outValues.resize(packed.size());
     for (std::size_t node = 0; node < packed.size(); ++node)
-        outPositions[node] = ToVec3(packed[node]);
+        outValues[node] = ToVec3(packed[node]);
+}
+
+void GpuTetSolver::ReadPositions(std::vector<Vec3>& outPositions) const
+{
+    ReadNodeBuffer(mPositions, outPositions);
 }
 
 void GpuTetSolver::ReadVelocities(std::vector<Vec3>& outVelocities) const
 {
-    std::vector<Float4> packed(mMasses.size());
-    if (mDevice->MakeCurrent().IsValid())
-        mVelocities.Download(0, packed.size() * sizeof(Float4), packed.data());
-    outVelocities.resize(packed.size());
-    for (std::size_t node = 0; node < packed.size(); ++node)
-        outVelocities[node] = ToVec3(packed[node]);
+    ReadNodeBuffer(mVelocities, outVelocities);
 }
 
 void GpuTetSolver::ReadExternalForces(std::vector<Vec3>& outForces) const
 {
-    std::vector<Float4> packed(mMasses.size());
-    if (mDevice->MakeCurrent().IsValid())
-        mExternal.Download(0, packed.size() * sizeof(Float4), packed.data());
-    outForces.resize(packed.size());
-    for (std::size_t node = 0; node < packed.size(); ++node)
-        outForces[node] = ToVec3(packed[node]);
+    ReadNodeBuffer(mExternal, outForces);
 }
 
 } // namespace crumple::gpu

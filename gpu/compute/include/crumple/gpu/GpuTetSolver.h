@@ -151,6 +151,8 @@ private:
     // Binds every buffer to its binding point.
     void BindAll() const;
     Status CheckNode(int inNode, const char* inCaller) const;
+    // A node buffer (#N float4) read back as Vec3s (waits for the GPU)
+    void ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const;
 
     std::shared_ptr<ComputeDevice> mDevice;
     fem::TetMesh mMesh;
