@@ -139,18 +139,19 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
     solver.ReadPositions(setup.mPositions);
     solver.ReadVelocities(setup.mVelocities);
     solver.ReadExternalForces(setup.mExternalForces);
+    const std::size_t nodes = static_cast<std::size_t>(solver.GetNodeCount());
+    if (setup.mPositions.size() != nodes || setup.mVelocities.size() != nodes || setup.mExternalForces.size() != nodes)
+        return MakeError(EError::IoError,
+                         "MakePropSetup: the GPU prop's state could not be read back (its device could not be made current)");
     // intent: positions still where the solver was made (the GPU got them as floats) are recorded as the
     // double ones they came from, so the rebuilt CPU solver is the very one the live GPU solver was made from
-    // (unstrained: a prop made still sleeps at its first step in both)
-    Result<fem::TetSolver> made = fem::TetSolver::Create(mesh, setup.mMaterial, setup.mSettings);
-    if (made.HasError())
-        return made.GetError();
-    const std::vector<Vec3>& start = made.Get().GetPositions();
-    bool unmoved = start.size() == setup.mPositions.size();
-    for (std::size_t node = 0; unmoved && node < start.size(); ++node)
-        unmoved = setup.mPositions[node] == start[node].cast<float>().cast<double>();
+    // (both then answer IsStillAndUnstrained alike: a prop made still sleeps at its first step in both)
+    const std::vector<Vec3>& made = solver.GetMadeRestPositions();
+    bool unmoved = made.size() == nodes;
+    for (std::size_t node = 0; unmoved && node < nodes; ++node)
+        unmoved = setup.mPositions[node] == made[node].cast<float>().cast<double>();
     if (unmoved)
-        setup.mPositions = start;
+        setup.mPositions = made;
     setup.mAnchored.resize(setup.mPositions.size());
     for (std::size_t node = 0; node < setup.mAnchored.size(); ++node)
         setup.mAnchored[node] = solver.GetInverseMasses()[node] == 0.0 ? 1 : 0;

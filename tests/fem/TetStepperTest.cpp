@@ -197,3 +197,61 @@ TEST_CASE("TetStepper puts a solver that nothing could move to sleep at once, wh
     CHECK(backend.mCalls.back() == "asleep");
     CHECK(std::count(backend.mCalls.begin(), backend.mCalls.end(), "attempt") == 1); // only the no-sleep step's
 }
+
+TEST_CASE("TetStepper puts a settled solver to sleep after three settled steps, not mSleepStepCount; a crack, a "
+          "divergence or a wake-up starts the count again",
+          "[fem]")
+{
+    // Sleep energy 1e-6 J (Settings, FreeMass); settled below 1e-8 of it. mSleepStepCount 30, so only the
+    // settled rule can end these runs early.
+    TetSolverSettings settings = Settings();
+    settings.mSleepStepCount = 30;
+    const double settled = 0.5e-14, quiet = 0.5e-6;
+    const auto falls_asleep = [&](TetStepper& ioStepper, ScriptedBackend& ioBackend)
+    { return HasEvent(ioStepper.Step(ioBackend, settings, 0.01, "Scripted").Get().mEvents, ETetStepEvent::FellAsleep); };
+
+    SECTION("three settled steps; a crack, a quiet but unsettled step, or a divergence in between reset the count")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mKinetic = settled;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        backend.mBrokenLinks = 1;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        backend.mBrokenLinks = 0;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        backend.mKinetic = quiet; // quiet (under the sleep energy) is not settled
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        backend.mKinetic = settled;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        backend.mPiecesNeeded = 1000; // every split diverges: restored
+        CHECK(HasEvent(stepper.Step(backend, settings, 0.01, "Scripted").Get().mEvents, ETetStepEvent::Diverged));
+        backend.mPiecesNeeded = 1;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK(falls_asleep(stepper, backend));
+        CHECK(stepper.IsSleeping());
+    }
+    SECTION("a wake-up starts the count again")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mKinetic = settled;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        stepper.Wake();
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK(falls_asleep(stepper, backend));
+    }
+    SECTION("mSleepStepCount below three: the settled rule never waits longer than the quiet one")
+    {
+        TetStepper stepper;
+        ScriptedBackend backend;
+        backend.mKinetic = settled;
+        settings.mSleepStepCount = 2;
+        CHECK_FALSE(falls_asleep(stepper, backend));
+        CHECK(falls_asleep(stepper, backend));
+    }
+}

@@ -108,6 +108,7 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
     REQUIRE(recorder->Close().IsValid());
     const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
     REQUIRE(replayed.size() == 1u);
+    REQUIRE(replayed[0].mProp.GetCpuSolver() != nullptr);
     CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == solver.GetPositions());
     CHECK(replayed[0].mProp.GetCpuSolver()->GetVelocities() == solver.GetVelocities());
     CHECK(replayed[0].mProp.GetCpuSolver()->GetInverseMasses() == solver.GetInverseMasses());

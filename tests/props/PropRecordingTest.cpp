@@ -107,6 +107,7 @@ TEST_CASE("Props in a recording: a prop that cannot be replayed exactly is refus
     const PropId panel = props->AddProp(fixture.mWall, BrittlePanel()).Get();
     REQUIRE(props->GetProp(panel)->ApplyImpulse(props->GetProp(panel)->GetNodeCount() - 1, Vec3(0.1, 0.0, 0.0)).IsValid());
     REQUIRE(props->Step(1.0 / 60.0).IsValid());
+    REQUIRE(props->GetProp(panel)->GetCpuSolver() != nullptr);
     REQUIRE(props->GetProp(panel)->GetCpuSolver()->GetElementWorkCount() > 0u);
     CHECK(props->AttachRecorder(recorder.get()).HasError());
     REQUIRE(recorder->Close().IsValid());
@@ -262,5 +263,72 @@ TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and
         CHECK_FALSE(replayed[0].mProp.GetFallbackReason().empty());
         CHECK(replayed[0].mProp.GetBrokenLinkCount() > 0);
     }
+}
+
+TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so live and replay agree; a stepped "
+          "solver moved to the GPU is refused",
+          "[props][replay][gpu]")
+{
+    gpu::ComputeDeviceProvider devices;
+    FemPropSettings on_gpu;
+    on_gpu.mBackend = EFemBackend::Gpu;
+    fem::TetGridSettings grid;
+    grid.mSize = Vec3(0.2, 0.2, 1.0);
+    grid.mCellCount = {1, 1, 4};
+    fem::FemMaterialSettings material;
+    material.mYoungsModulus = 1.0e7;
+    fem::TetSolverSettings settings;
+    settings.mIntegrator = fem::EIntegrator::SymplecticEuler;
+    settings.mGravity = Vec3::Zero();
+    const fem::TetMesh mesh = fem::TetGrid(grid).Get();
+    FemProp post = FemProp::Create(&devices, mesh, material, settings, on_gpu).Get();
+    if (post.GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << post.GetFallbackReason());
+        return;
+    }
+
+    // A force set and cleared leaves the state exactly as made: still, as a prop rebuilt from its recorded
+    // state is (the flag this replaced only ever went from still to not, and the replay sleeps at once).
+    // Both sleep at the first step.
+    const int tip = post.GetNodeCount() - 1;
+    REQUIRE(post.SetExternalForce(tip, Vec3(5.0, 0.0, 0.0)).IsValid());
+    REQUIRE(post.SetExternalForce(tip, Vec3::Zero()).IsValid());
+    REQUIRE(post.GetGpuSolver()->IsStillAndUnstrained());
+    const PropSetup setup = MakePropSetup(BodyId{}, post).Get();
+    FemProp rebuilt = FemProp::FromSolver(&devices, RebuildProp(setup).Get(), on_gpu);
+    REQUIRE(rebuilt.GetBackend() == EFemBackend::Gpu);
+    const fem::TetStepResult live_step = post.Step(1.0 / 60.0).Get();
+    const fem::TetStepResult rebuilt_step = rebuilt.Step(1.0 / 60.0).Get();
+    CHECK(HasEvent(live_step.mEvents, fem::ETetStepEvent::FellAsleep));
+    CHECK(live_step.mEvents == rebuilt_step.mEvents);
+    CHECK(post.GetGpuSolver()->GetElementWorkCount() == 0u);
+
+    // A force left on: not still, so both integrate, to the same floats.
+    REQUIRE(post.SetExternalForce(tip, Vec3(5.0, 0.0, 0.0)).IsValid());
+    CHECK_FALSE(post.GetGpuSolver()->IsStillAndUnstrained());
+    const PropSetup forced = MakePropSetup(BodyId{}, post).Get();
+    FemProp forced_rebuilt = FemProp::FromSolver(&devices, RebuildProp(forced).Get(), on_gpu);
+    for (int step = 0; step < 3; ++step)
+    {
+        REQUIRE(post.Step(1.0 / 60.0).IsValid());
+        REQUIRE(forced_rebuilt.Step(1.0 / 60.0).IsValid());
+    }
+    std::vector<Vec3> live_positions, rebuilt_positions;
+    post.ReadPositions(live_positions);
+    forced_rebuilt.ReadPositions(rebuilt_positions);
+    CHECK(post.GetGpuSolver()->GetElementWorkCount() > 0u);
+    CHECK(live_positions == rebuilt_positions);
+    CHECK(live_positions != post.GetGpuSolver()->GetMadeRestPositions());
+
+    // A CPU solver that has stepped keeps its step count on the GPU, so a recording refuses it.
+    fem::TetSolver cpu = fem::TetSolver::Create(mesh, material, settings).Get();
+    REQUIRE(cpu.ApplyImpulse(tip, Vec3(0.1, 0.0, 0.0)).IsValid());
+    REQUIRE(cpu.Step(1.0 / 60.0).IsValid());
+    const std::uint64_t work = cpu.GetElementWorkCount();
+    FemProp moved = FemProp::FromSolver(&devices, std::move(cpu), on_gpu);
+    REQUIRE(moved.GetBackend() == EFemBackend::Gpu);
+    CHECK(moved.GetGpuSolver()->GetElementWorkCount() == work);
+    CHECK(MakePropSetup(BodyId{}, moved).HasError());
 }
 #endif

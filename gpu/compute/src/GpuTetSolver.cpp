@@ -124,7 +124,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     solver.mInverseMasses = cpu.GetInverseMasses();
     solver.mElementCount = static_cast<std::uint32_t>(inMesh.GetTetCount());
     solver.mStableTimeStep = cpu.GetStableTimeStep();
-    solver.mKnownStill = cpu.IsStillAndUnstrained();
+    solver.mMadeRestPositions = cpu.GetNodeRestPositions();
     solver.mBreakable = material.IsBreakable();
     if (solver.mBreakable)
     {
@@ -264,6 +264,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFrom(std::shared_ptr<ComputeDevice> inD
     if (Status status = solver.UploadTopology(inSolver.GetElementNodes(), positions, velocities, forces); status.HasError())
         return status.GetError();
     solver.mRotations.Upload(0, rotations.size() * sizeof(Float4), rotations.data());
+    solver.mElementWork = inSolver.GetElementWorkCount(); // a stepped prop stays one (recordings refuse it)
     if (solver.mBreakable)
     {
         solver.mBroken = inSolver.GetBrokenLinks();
@@ -309,7 +310,6 @@ Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
     if (Status status = CheckNode(inNode, "ApplyImpulse"); status.HasError())
         return status;
     InputChanged();
-    mKnownStill = mKnownStill && (mInverseMasses[inNode] == 0.0 || (inImpulse.array() == 0.0).all());
     Float4 velocity;
     mVelocities.Download(inNode * sizeof(Float4), sizeof(Float4), &velocity);
     velocity = ToFloat4(ToVec3(velocity) + mInverseMasses[inNode] * inImpulse);
@@ -325,7 +325,6 @@ Status GpuTetSolver::SetExternalForce(int inNode, const Vec3& inForce)
     if (Status status = CheckNode(inNode, "SetExternalForce"); status.HasError())
         return status;
     InputChanged();
-    mKnownStill = mKnownStill && (inForce.array() == 0.0).all(); // a force set before had already cleared it
     const Float4 force = ToFloat4(inForce);
     mExternal.Upload(inNode * sizeof(Float4), sizeof(Float4), &force);
     return Status::Ok();
@@ -354,7 +353,6 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
     for (std::size_t node = 0; node < packed.size(); ++node)
         packed[node] = ToFloat4(inPositions[node], mInverseMasses[node]);
     mPositions.Upload(0, packed.size() * sizeof(Float4), packed.data());
-    mKnownStill = false; // new positions may be strained
     InputChanged();
     return Status::Ok();
 }
@@ -589,7 +587,7 @@ public:
     fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult&) override
     {
         fem::TetStepAttempt attempt;
-        mSolver.mKnownStill = false; // what the step leaves is not known without a readback
+        mSolver.mIntegrated = true; // what the step leaves is not known without a readback
         attempt.mDiverged = !mSolver.Integrate(inDeltaTime, inPieces, attempt.mBrokenLinks, attempt.mKineticEnergy);
         return attempt;
     }
@@ -597,16 +595,16 @@ public:
     // The restored start's energies would need a readback: left 0.
     void DescribeRestored(fem::TetStepResult&) const override {}
 
-    // Known without a readback only while the state is the still one it was made with (mKnownStill); after a
-    // step, knowing would need a readback, and the GPU solver counts quiet steps instead.
+    // Before the first integration the state is read back and compared exactly (a rebuilt prop answers the
+    // same); after it, knowing would need a readback per step, and the GPU solver counts quiet steps instead.
     bool IsAtRestUnloaded() const override
     {
-        if (!mSolver.mKnownStill)
+        if (mSolver.mIntegrated)
             return false;
-        if (mSolver.mSettings.mGravity.isZero(0.0))
-            return true;
-        return std::none_of(mSolver.mInverseMasses.begin(), mSolver.mInverseMasses.end(),
-                            [](double inInverseMass) { return inInverseMass > 0.0; }); // gravity pulls no free node
+        const bool pulled = !mSolver.mSettings.mGravity.isZero(0.0) &&
+                            std::any_of(mSolver.mInverseMasses.begin(), mSolver.mInverseMasses.end(),
+                                        [](double inInverseMass) { return inInverseMass > 0.0; });
+        return !pulled && mSolver.IsStillAndUnstrained(); // the readback last
     }
 
     double FreeMass() const override
@@ -645,29 +643,49 @@ std::vector<fem::TetFragment> GpuTetSolver::ComputeFragments() const
     return fem::TetFragments(fem::BuildFractureLinks(mMesh), mElementNodes, element_masses, positions, mInverseMasses);
 }
 
-void GpuTetSolver::ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const
+Status GpuTetSolver::ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const
 {
+    outValues.clear();
+    if (Status status = mDevice->MakeCurrent(); status.HasError())
+        return status;
     std::vector<Float4> packed(mMasses.size());
-    if (mDevice->MakeCurrent().IsValid())
-        inBuffer.Download(0, packed.size() * sizeof(Float4), packed.data());
+    inBuffer.Download(0, packed.size() * sizeof(Float4), packed.data());
     outValues.resize(packed.size());
     for (std::size_t node = 0; node < packed.size(); ++node)
         outValues[node] = ToVec3(packed[node]);
+    return Status::Ok();
+}
+
+bool GpuTetSolver::IsStillAndUnstrained() const
+{
+    // intent: exact comparisons, as fem::TetSolver::IsStillAndUnstrained; velocities first
+    std::vector<Vec3> values;
+    const auto all_zero = [&values]
+    { return std::all_of(values.begin(), values.end(), [](const Vec3& inValue) { return (inValue.array() == 0.0).all(); }); };
+    if (ReadNodeBuffer(mVelocities, values).HasError() || !all_zero())
+        return false;
+    if (ReadNodeBuffer(mExternal, values).HasError() || !all_zero())
+        return false;
+    if (ReadNodeBuffer(mPositions, values).HasError())
+        return false;
+    return std::equal(values.begin(), values.end(), mMadeRestPositions.begin(), mMadeRestPositions.end(),
+                      [](const Vec3& inRead, const Vec3& inRest)
+                      { return (inRead.array() == inRest.cast<float>().cast<double>().array()).all(); });
 }
 
 void GpuTetSolver::ReadPositions(std::vector<Vec3>& outPositions) const
 {
-    ReadNodeBuffer(mPositions, outPositions);
+    (void)ReadNodeBuffer(mPositions, outPositions); // empty on failure, as documented
 }
 
 void GpuTetSolver::ReadVelocities(std::vector<Vec3>& outVelocities) const
 {
-    ReadNodeBuffer(mVelocities, outVelocities);
+    (void)ReadNodeBuffer(mVelocities, outVelocities);
 }
 
 void GpuTetSolver::ReadExternalForces(std::vector<Vec3>& outForces) const
 {
-    ReadNodeBuffer(mExternal, outForces);
+    (void)ReadNodeBuffer(mExternal, outForces);
 }
 
 } // namespace crumple::gpu

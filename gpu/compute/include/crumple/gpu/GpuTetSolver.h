@@ -62,8 +62,8 @@ public:
                                        const fem::TetSolverSettings& inSettings);
 
     /// A GPU solver in the state of a CPU one (positions, velocities, rotations, anchoring, external forces,
-    /// gravity): how a prop moves from the CPU to the GPU. Refused like Create, and for a CPU solver whose
-    /// prop has fractured.
+    /// gravity, cracks, and its element work count: a solver that has stepped stays one that has stepped):
+    /// how a prop moves from the CPU to the GPU. Refused like Create.
     static Result<GpuTetSolver> CreateFrom(std::shared_ptr<ComputeDevice> inDevice, const fem::TetSolver& inSolver);
 
     /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again.
@@ -95,12 +95,18 @@ public:
     /// Ends sleep without changing the state.
     void WakeUp();
 
-    /// Reads the node positions back (m), #N (waits for the GPU).
+    /// Reads the node positions back (m), #N (waits for the GPU); empty when the device could not be made
+    /// current (a lost context), never zeros in place of a state.
     void ReadPositions(std::vector<Vec3>& outPositions) const;
-    /// Reads the node velocities back (m/s), #N.
+    /// Reads the node velocities back (m/s), #N; empty as ReadPositions.
     void ReadVelocities(std::vector<Vec3>& outVelocities) const;
-    /// Reads the external forces back (N), #N: as the GPU holds them (float)
+    /// Reads the external forces back (N), #N, as the GPU holds them (float); empty as ReadPositions.
     void ReadExternalForces(std::vector<Vec3>& outForces) const;
+    /// True when the state on the GPU is exactly the one it was made at rest in: every velocity and external
+    /// force 0 and every position its node's rest position (as a float). The CPU's
+    /// fem::TetSolver::IsStillAndUnstrained applied to the float state, so a prop recorded from the GPU and
+    /// rebuilt answers the same. Reads the three node buffers back (false when that fails).
+    bool IsStillAndUnstrained() const;
 
     /// The rest mesh
     const fem::TetMesh& GetMesh() const { return mMesh; }
@@ -108,6 +114,10 @@ public:
     const fem::FemMaterialSettings& GetMaterialSettings() const { return mMaterial; }
     /// The solver settings, gravity as last set
     const fem::TetSolverSettings& GetSettings() const { return mSettings; }
+    /// Each node's rest position (m, double) as the solver was made: the CPU solver's, #N then (a breakable
+    /// mesh's split joints included; nodes that cracks add later are not). A state read back equal to these
+    /// as floats is the made one (MakePropSetup records these doubles for it).
+    const std::vector<Vec3>& GetMadeRestPositions() const { return mMadeRestPositions; }
     /// Inverse node masses (1/kg), #N, 0 where a node is anchored (host copy)
     const std::vector<double>& GetInverseMasses() const { return mInverseMasses; }
 
@@ -151,8 +161,9 @@ private:
     // Binds every buffer to its binding point.
     void BindAll() const;
     Status CheckNode(int inNode, const char* inCaller) const;
-    // A node buffer (#N float4) read back as Vec3s (waits for the GPU)
-    void ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const;
+    // A node buffer (#N float4) read back as Vec3s (waits for the GPU); empty and an error when the device
+    // could not be made current.
+    Status ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const;
 
     std::shared_ptr<ComputeDevice> mDevice;
     fem::TetMesh mMesh;
@@ -170,9 +181,11 @@ private:
     std::uint32_t mElementCount = 0;
     double mStableTimeStep = 0.0;
     std::uint64_t mElementWork = 0;
-    // The node state is known, without a readback, to be still, unforced and unstrained (made so, and no
-    // impulse, force, new positions or step since): with no gravity on a free node a step could not move it.
-    bool mKnownStill = false;
+    std::vector<Vec3> mMadeRestPositions; // GetMadeRestPositions
+    // Set by the first integration: from then on the state is not known without a readback per step, and the
+    // stepper's at-rest test answers no (a sleeping prop still sleeps by its quiet-step count). Before it, the
+    // test reads the state back once per wake-up, so it answers exactly as a rebuilt prop would.
+    bool mIntegrated = false;
 
     // The step policy (validation, split-retry, restore, sleep), the CPU solver's, and this solver's side of
     // it (GpuTetSolver.cpp): the start of a step is kept in the mSaved* buffers and, for a breakable prop, the
