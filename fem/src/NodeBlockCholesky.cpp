@@ -15,61 +15,89 @@ namespace crumple::fem
 namespace
 {
 
-// The lower triangle of P A P^T by rows: row k holds its strictly lower blocks (column, block), sorted by
-// column, and its diagonal block.
-struct PermutedRows
+// inVector resized to inSize, with half again as much capacity when it must grow: the next, slightly larger
+// factorisation of a cracking prop then fits (see the class comment).
+template <class T>
+void FitSize(std::vector<T>& ioVector, std::size_t inSize)
 {
-    std::vector<int> mStart;        // #n + 1
-    std::vector<int> mColumn;       // column of each strictly lower block
-    std::vector<Mat3> mBlock;       // A_kj, j < k
-    std::vector<Mat3> mDiagonal;    // #n A_kk
-};
+    if (ioVector.capacity() < inSize)
+        ioVector.reserve(inSize + inSize / 2);
+    ioVector.resize(inSize);
+}
 
-// Approximate minimum degree ordering of the node graph; returns new index of each old node.
-std::vector<int> MinimumDegreeOrder(int inNodeCount, std::span<const NodeBlock> inBlocks)
+// FitSize, every element set to inValue.
+template <class T>
+void FitAssign(std::vector<T>& ioVector, std::size_t inSize, const T& inValue)
 {
-    std::vector<Eigen::Triplet<int>> pattern;
-    pattern.reserve(2 * inBlocks.size());
+    FitSize(ioVector, inSize);
+    std::fill(ioVector.begin(), ioVector.end(), inValue);
+}
+
+} // namespace
+
+void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const NodeBlock> inBlocks)
+{
+    mGraphEntries.clear();
+    if (mGraphEntries.capacity() < 2 * inBlocks.size())
+        mGraphEntries.reserve(3 * inBlocks.size());
     for (const NodeBlock& block : inBlocks)
     {
-        pattern.emplace_back(block.mRow, block.mColumn, 1);
-        pattern.emplace_back(block.mColumn, block.mRow, 1);
+        mGraphEntries.emplace_back(block.mRow, block.mColumn, 1);
+        mGraphEntries.emplace_back(block.mColumn, block.mRow, 1);
     }
     Eigen::SparseMatrix<int> graph(inNodeCount, inNodeCount);
-    graph.setFromTriplets(pattern.begin(), pattern.end());
+    graph.setFromTriplets(mGraphEntries.begin(), mGraphEntries.end());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::AMDOrdering<int>()(graph, inverse);
     // AMD gives P^-1 (old index of each new row), as Eigen's simplicial solvers use it.
-    std::vector<int> new_of_old(inNodeCount);
+    FitSize(mNewOfOld, static_cast<std::size_t>(inNodeCount));
     for (int row = 0; row < inNodeCount; ++row)
-        new_of_old[inverse.indices()[row]] = row;
-    return new_of_old;
+        mNewOfOld[inverse.indices()[row]] = row;
 }
 
-// The blocks moved to their permuted places in the lower triangle, duplicates summed in input order.
-PermutedRows PermuteLower(int inNodeCount, std::span<const NodeBlock> inBlocks, const std::vector<int>& inNewOfOld)
+void NodeBlockCholesky::PermuteLower(int inNodeCount, std::span<const NodeBlock> inBlocks)
 {
-    struct Placed
-    {
-        int mRow;
-        int mColumn;
-        int mSource;
-        bool mTransposed;
-    };
-    std::vector<Placed> placed(inBlocks.size());
+    FitSize(mPlaced, inBlocks.size());
     for (std::size_t index = 0; index < inBlocks.size(); ++index)
     {
-        const int row = inNewOfOld[inBlocks[index].mRow];
-        const int column = inNewOfOld[inBlocks[index].mColumn];
-        placed[index] = row >= column ? Placed{row, column, static_cast<int>(index), false}
-                                      : Placed{column, row, static_cast<int>(index), true};
+        const int row = mNewOfOld[inBlocks[index].mRow];
+        const int column = mNewOfOld[inBlocks[index].mColumn];
+        mPlaced[index] = row >= column ? Placed{row, column, static_cast<int>(index), false}
+                                       : Placed{column, row, static_cast<int>(index), true};
     }
-    std::stable_sort(placed.begin(), placed.end(), [](const Placed& inA, const Placed& inB)
-                     { return inA.mRow != inB.mRow ? inA.mRow < inB.mRow : inA.mColumn < inB.mColumn; });
+    // intent: the order of a stable sort by (row, column), in linear time: a counting sort by row (stable),
+    // then each row's few blocks by column with an insertion sort (stable). Equal positions keep their input
+    // order, so their sums below are the same numbers whatever sort made the order.
+    FitAssign(mRowStart, static_cast<std::size_t>(inNodeCount) + 1, 0);
+    for (const Placed& block : mPlaced)
+        ++mRowStart[static_cast<std::size_t>(block.mRow) + 1];
+    std::partial_sum(mRowStart.begin(), mRowStart.end(), mRowStart.begin());
+    FitSize(mPlacedByRow, mPlaced.size());
+    FitSize(mRowFill, static_cast<std::size_t>(inNodeCount));
+    std::copy(mRowStart.begin(), mRowStart.end() - 1, mRowFill.begin());
+    for (const Placed& block : mPlaced)
+        mPlacedByRow[static_cast<std::size_t>(mRowFill[static_cast<std::size_t>(block.mRow)]++)] = block;
+    std::vector<Placed>& placed = mPlacedByRow;
+    for (int row = 0; row < inNodeCount; ++row)
+        for (int index = mRowStart[row] + 1; index < mRowStart[row + 1]; ++index)
+        {
+            const Placed moving = placed[index];
+            int slot = index;
+            for (; slot > mRowStart[row] && placed[slot - 1].mColumn > moving.mColumn; --slot)
+                placed[slot] = placed[slot - 1];
+            placed[slot] = moving;
+        }
 
-    PermutedRows rows;
-    rows.mStart.assign(inNodeCount + 1, 0);
-    rows.mDiagonal.assign(inNodeCount, Mat3::Zero());
+    PermutedRows& rows = mRows;
+    FitAssign(rows.mStart, static_cast<std::size_t>(inNodeCount) + 1, 0);
+    FitAssign(rows.mDiagonal, static_cast<std::size_t>(inNodeCount), Mat3(Mat3::Zero()));
+    rows.mColumn.clear();
+    rows.mBlock.clear();
+    if (rows.mBlock.capacity() < placed.size())
+    {
+        rows.mColumn.reserve(placed.size());
+        rows.mBlock.reserve(placed.size());
+    }
     for (std::size_t index = 0; index < placed.size();)
     {
         // Sum a run of equal positions.
@@ -91,10 +119,7 @@ PermutedRows PermuteLower(int inNodeCount, std::span<const NodeBlock> inBlocks, 
         }
     }
     std::partial_sum(rows.mStart.begin(), rows.mStart.end(), rows.mStart.begin());
-    return rows;
 }
-
-} // namespace
 
 bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlocks)
 {
@@ -102,11 +127,18 @@ bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlo
     const int n = inNodeCount;
     if (n <= 0)
         return false;
-    mNewOfOld = MinimumDegreeOrder(n, inBlocks);
-    const PermutedRows a = PermuteLower(n, inBlocks, mNewOfOld);
+    const std::size_t size = static_cast<std::size_t>(n);
+    OrderMinimumDegree(n, inBlocks);
+    PermuteLower(n, inBlocks);
+    const PermutedRows& a = mRows;
 
     // Symbolic: elimination tree and the number of blocks below the diagonal in each column of L.
-    std::vector<int> parent(n, -1), flag(n, -1), count(n, 0);
+    std::vector<int>& parent = mParent;
+    std::vector<int>& flag = mFlag;
+    std::vector<int>& count = mCount;
+    FitAssign(parent, size, -1);
+    FitAssign(flag, size, -1);
+    FitAssign(count, size, 0);
     for (int k = 0; k < n; ++k)
     {
         flag[k] = k;
@@ -119,17 +151,24 @@ bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlo
                 flag[i] = k;
             }
     }
-    mColumnStart.assign(n + 1, 0);
+    FitAssign(mColumnStart, size + 1, 0);
     std::partial_sum(count.begin(), count.end(), mColumnStart.begin() + 1);
-    mRowIndex.assign(mColumnStart[n], 0);
-    mLower.assign(mColumnStart[n], Mat3::Zero());
-    mDiagonalInverse.assign(n, Mat3::Zero());
+    const std::size_t lower_count = static_cast<std::size_t>(mColumnStart[n]);
+    FitAssign(mRowIndex, lower_count, 0);
+    FitAssign(mLower, lower_count, Mat3(Mat3::Zero()));
+    FitAssign(mDiagonalInverse, size, Mat3(Mat3::Zero()));
 
     // Numeric, up-looking: row k of L solves L(0:k, 0:k) y = A(0:k, k) over the reach of A's column k in the
     // elimination tree, visited in topological order; then L_kk = chol(A_kk - sum L_ki L_ki^T).
-    std::vector<int> next(mColumnStart.begin(), mColumnStart.end() - 1); // fill position of each column
-    std::vector<Mat3> x(n, Mat3::Zero());
-    std::vector<int> pattern(n), stack(n);
+    std::vector<int>& next = mNext; // fill position of each column
+    FitSize(next, size);
+    std::copy(mColumnStart.begin(), mColumnStart.end() - 1, next.begin());
+    std::vector<Mat3>& x = mColumnWork;
+    FitAssign(x, size, Mat3(Mat3::Zero()));
+    std::vector<int>& pattern = mPattern;
+    std::vector<int>& stack = mStack;
+    FitSize(pattern, size);
+    FitSize(stack, size);
     std::fill(flag.begin(), flag.end(), -1);
     for (int k = 0; k < n; ++k)
     {
@@ -169,7 +208,7 @@ bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlo
             return false;
         mDiagonalInverse[k] = lower.triangularView<Eigen::Lower>().solve(Mat3::Identity());
     }
-    mWork.assign(n, Vec3::Zero());
+    FitAssign(mWork, size, Vec3(Vec3::Zero()));
     mFactored = true;
     return true;
 }

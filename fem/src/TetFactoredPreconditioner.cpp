@@ -39,9 +39,8 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, s
         return false;
 
     // Factor; a non-positive pivot (a free rigid mode of the static stiffness) fails the factorisation.
-    const std::vector<NodeBlock> blocks =
-        TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale);
-    if (!mCholesky.Factor(free_count, blocks))
+    TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale, mBlocks);
+    if (!mCholesky.Factor(free_count, mBlocks))
         return false;
     mRhs.assign(free_count, Vec3::Zero());
     mNodeRotations.clear();

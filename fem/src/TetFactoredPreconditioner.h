@@ -76,6 +76,7 @@ private:
     double mStiffnessScale = 0.0;
 
     std::vector<int> mFreeIndex;    // #N, -1 for anchored nodes
+    std::vector<NodeBlock> mBlocks; // A0's blocks, kept for the next Precompute (no fresh pages)
     std::vector<Mat3> mNodeRotations; // #N, empty while all are identity
     std::vector<Eigen::Vector4d> mQuaternionSums; // #N scratch of SetNodeRotations
 

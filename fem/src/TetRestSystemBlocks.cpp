@@ -38,14 +38,17 @@ Eigen::Matrix<double, 6, 12> StrainDisplacement(const Mat3& inRestEdgeInverse)
 
 } // namespace
 
-std::vector<NodeBlock> TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                                           std::span<const int> inFreeIndex, double inMassScale,
-                                           double inStiffnessScale)
+void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                         std::span<const int> inFreeIndex, double inMassScale, double inStiffnessScale,
+                         std::vector<NodeBlock>& outBlocks)
 {
     // Per element the blocks between free corners in the lower triangle (each node pair once), then the
     // masses.
-    std::vector<NodeBlock> blocks;
-    blocks.reserve(inInput.mTets.size() * 10 + inMasses.size());
+    std::vector<NodeBlock>& blocks = outBlocks;
+    blocks.clear();
+    const std::size_t most = inInput.mTets.size() * 10 + inMasses.size();
+    if (blocks.capacity() < most)
+        blocks.reserve(most + most / 2); // room for the nodes cracks add
     const Matrix6& c = *inInput.mMaterialMatrix;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
@@ -69,7 +72,6 @@ std::vector<NodeBlock> TetRestSystemBlocks(const TetElementPassInput& inInput, s
     for (std::size_t node = 0; node < inMasses.size(); ++node)
         if (inFreeIndex[node] >= 0)
             blocks.push_back({inFreeIndex[node], inFreeIndex[node], (inMassScale * inMasses[node]) * Mat3::Identity()});
-    return blocks;
 }
 
 } // namespace crumple::fem

@@ -26,9 +26,10 @@ namespace crumple::fem
 /// @param[in] inFreeIndex  #N index of each free node among the free nodes, -1 for an anchored node
 /// @param[in] inMassScale       a (1)
 /// @param[in] inStiffnessScale  b (s^2 for the implicit system, 1 for the static one)
-/// @return blocks of a #free by #free block matrix, units of inMassScale x kg
-std::vector<NodeBlock> TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                                           std::span<const int> inFreeIndex, double inMassScale,
-                                           double inStiffnessScale);
+/// @param[out] outBlocks  blocks of a #free by #free block matrix, units of inMassScale x kg (its memory is
+///                         reused: a refactorisation after a crack touches no fresh page)
+void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                         std::span<const int> inFreeIndex, double inMassScale, double inStiffnessScale,
+                         std::vector<NodeBlock>& outBlocks);
 
 } // namespace crumple::fem
