@@ -64,6 +64,27 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     if (!(inSettings.mMaxControlGain >= 1.0))
         return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mMaxControlGain must be >= 1 (or infinity)");
 
+    {
+        // intent: every part non-empty, every index a vertex, no vertex in two parts, before anything is built
+        std::vector<std::uint8_t> in_part(inRestMesh.mPositions.size(), 0);
+        for (std::size_t part = 0; part < inSettings.mRigidParts.size(); ++part)
+        {
+            const std::string name = "FfdDeformerSettings.mRigidParts[" + std::to_string(part) + "]";
+            if (inSettings.mRigidParts[part].empty())
+                return MakeError(EError::InvalidArgument, name + " is empty");
+            for (std::uint32_t v : inSettings.mRigidParts[part])
+            {
+                if (v >= in_part.size())
+                    return MakeError(EError::OutOfRange, name + " names vertex " + std::to_string(v) + " of a mesh of " +
+                                                             std::to_string(in_part.size()));
+                if (in_part[v] != 0)
+                    return MakeError(EError::InvalidArgument, name + ": vertex " + std::to_string(v) +
+                                                                  " is in an earlier part, or twice in this one");
+                in_part[v] = 1;
+            }
+        }
+    }
+
     FfdDeformer deformer;
     for (std::size_t z = 0; z < inSettings.mZones.size(); ++z)
     {
@@ -98,6 +119,35 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
                 break;
             }
         }
+    // A rigid part's vertices all take the lattice location of its rest bounding box's centre: every use of a
+    // vertex's location (its displacement, its cell bucket, the surface index, the bounds) then moves the part
+    // as one, and a dent touches it exactly when it changes a control that reaches the centre.
+    for (const std::vector<std::uint32_t>& part : inSettings.mRigidParts)
+    {
+        Vec3 low = deformer.mRestMesh.mPositions[part.front()], high = low;
+        for (std::uint32_t v : part)
+        {
+            low = low.cwiseMin(deformer.mRestMesh.mPositions[v]);
+            high = high.cwiseMax(deformer.mRestMesh.mPositions[v]);
+        }
+        const Vec3 centre = 0.5 * (low + high);
+        int zone = -1;
+        LatticeLocation location{};
+        for (std::size_t z = 0; z < deformer.mZones.size() && zone < 0; ++z)
+        {
+            const Vec3 u = deformer.mZones[z].LatticeCoordinate(centre);
+            if (deformer.mZones[z].Contains(u, cBindMargin))
+            {
+                zone = static_cast<int>(z);
+                location = deformer.mZones[z].Locate(u);
+            }
+        }
+        for (std::uint32_t v : part)
+        {
+            deformer.mVertexZone[v] = zone;
+            deformer.mVertexLocation[v] = location;
+        }
+    }
 
     // Bucket vertices by cell per zone (counting sort keeps ascending vertex order inside a cell).
     deformer.mCellStart.resize(deformer.mZones.size());

@@ -41,7 +41,7 @@ bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& out
     return !ioReader.Failed() && static_cast<std::uint64_t>(outCount) * inBytesEach <= ioReader.Remaining();
 }
 
-Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload)
+Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload, std::uint32_t inVersion)
 {
     ByteReader reader(inPayload);
     RecordedObject object;
@@ -112,6 +112,23 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
         controls.resize(count);
         for (Vec3& d : controls)
             d = reader.ReadVec3();
+    }
+    if (inVersion >= 8)
+    {
+        // Rigid parts: their indices are checked by FfdDeformer::Create when the object is rebuilt.
+        std::uint32_t parts = 0;
+        if (!ReadCount(reader, 4, parts))
+            return MakeError(EError::CorruptData, "object record: rigid part count is corrupt");
+        settings.mDeformer.mRigidParts.resize(parts);
+        for (std::vector<std::uint32_t>& part : settings.mDeformer.mRigidParts)
+        {
+            std::uint32_t count = 0;
+            if (!ReadCount(reader, 4, count))
+                return MakeError(EError::CorruptData, "object record: rigid part size is corrupt");
+            part.resize(count);
+            for (std::uint32_t& vertex : part)
+                vertex = reader.ReadU32();
+        }
     }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "object record: length does not match its contents");
@@ -251,6 +268,13 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
         for (const Vec3& d : controls)
             writer.WriteVec3(d);
     }
+    writer.WriteU32(static_cast<std::uint32_t>(settings.mDeformer.mRigidParts.size()));
+    for (const std::vector<std::uint32_t>& part : settings.mDeformer.mRigidParts)
+    {
+        writer.WriteU32(static_cast<std::uint32_t>(part.size()));
+        for (std::uint32_t vertex : part)
+            writer.WriteU32(vertex);
+    }
     return writer.TakeBytes();
 }
 
@@ -293,9 +317,10 @@ Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
     const std::uint32_t version = reader.ReadU32();
     if (reader.Failed())
         return MakeError(EError::CorruptData, "replay file is truncated in its header");
-    if (version != cReplayVersion)
+    if (version < cOldestReplayVersion || version > cReplayVersion)
         return MakeError(EError::VersionMismatch, "replay file version " + std::to_string(version) +
-                                                      ", this library reads version " + std::to_string(cReplayVersion));
+                                                      ", this library reads versions " + std::to_string(cOldestReplayVersion) +
+                                                      " to " + std::to_string(cReplayVersion));
     Replay replay;
     for (std::size_t index = 0;; ++index)
     {
@@ -314,7 +339,7 @@ Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
         {
         case EReplayRecord::Object:
         {
-            Result<RecordedObject> object = DecodeRecordedObject(payload);
+            Result<RecordedObject> object = DecodeRecordedObject(payload, version);
             if (!object)
                 return MakeError(object.GetError().mCode, where + object.GetError().mMessage);
             replay.mObjects.push_back(std::move(object).Get());

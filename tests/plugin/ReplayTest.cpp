@@ -64,6 +64,7 @@ std::vector<Vec3> RecordCrash(const std::filesystem::path& inPath, bool inDentBe
     DeformableObjectSettings bumper;
     bumper.mMesh = MakeBoxMesh(Vec3(2.0, 0.8, 0.6), {8, 4, 4});
     bumper.mDeformer.mOneSidedDents = false; // a non-default deformer setting the replay must carry
+    bumper.mDeformer.mRigidParts = {{0, 1, 2}, {5}}; // and rigid parts (version 8)
     REQUIRE(scene.GetWorld().CreateDeformableObject(scene.GetCar(), bumper));
     // A second hit, on the same front, so the late object is dented too.
     BodyState again = scene.GetCarState();
@@ -111,6 +112,10 @@ TEST_CASE("A recorded run replayed without an engine gives bitwise identical mes
         // Version 6 carries the one-sided dents flag (the bumper, recorded last, has it off).
         CHECK(replay.Get().mObjects[0].mSettings.mDeformer.mOneSidedDents);
         CHECK_FALSE(replay.Get().mObjects[2].mSettings.mDeformer.mOneSidedDents);
+        // Version 8 carries the rigid parts.
+        CHECK(replay.Get().mObjects[0].mSettings.mDeformer.mRigidParts.empty());
+        CHECK(replay.Get().mObjects[2].mSettings.mDeformer.mRigidParts ==
+              std::vector<std::vector<std::uint32_t>>{{0, 1, 2}, {5}});
         Result<std::vector<ReplayedObject>> objects = ReplayDamage(replay.Get());
         REQUIRE(objects);
         REQUIRE(objects.Get().size() == 3);
@@ -150,10 +155,12 @@ TEST_CASE("A truncated, corrupt or foreign replay file is refused with a clear m
     CHECK(DecodeReplay(foreign).GetError().mCode == EError::CorruptData);
 }
 
-TEST_CASE("The replay fuzz regressions are in the current format, so they reach the decoder", "[plugin][replay]")
+TEST_CASE("The replay fuzz regressions are in a format this library reads, so they reach the decoder", "[plugin][replay]")
 {
-    // A version bump refuses an old file at its header: the regression would then pass without testing
-    // anything (the three files below sat at version 5 behind versions 6 and 7). Convert them when bumping.
+    // A version bump that refuses an old file at its header would make the regression pass without testing
+    // anything (the three files below sat at version 5 behind versions 6 and 7). They are at version 7, the
+    // oldest DecodeReplay reads (version 8 added rigid parts): they also show that an old recording replays.
+    // Convert them when the oldest version read moves past theirs.
     int files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(CRUMPLE_SOURCE_DIR) / "fuzz/regressions/replay"))
     {

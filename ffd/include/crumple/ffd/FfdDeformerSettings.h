@@ -7,6 +7,7 @@
 #include <crumple/ffd/DirectManipulation.h>
 #include <crumple/ffd/FfdLatticeSettings.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace crumple::ffd
@@ -56,6 +57,12 @@ struct CRUMPLE_API FfdDeformerSettings
     /// control moves against that way, so no vertex does: a crush never bulges the surface out beside the
     /// pushed patch. False commits the solve's controls as they are (a general FFD edit).
     bool mOneSidedDents = true;
+    /// Parts that keep their shape (wheels, tyres, rims; the game's choice): each a list of vertex indices
+    /// of the rest mesh, no vertex in two parts. A part is not dented: all of its vertices move by the
+    /// lattice's displacement at the centre of the part's rest bounding box, so it translates with the body
+    /// around it (a wheel pushed back by a crush stays round; it does not turn). A part whose centre lies in no
+    /// zone does not move. Empty (the default): every vertex follows the lattice where it is.
+    std::vector<std::vector<std::uint32_t>> mRigidParts;
 };
 
 } // namespace crumple::ffd

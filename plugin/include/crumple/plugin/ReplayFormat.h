@@ -50,7 +50,11 @@ struct CRUMPLE_API Replay
 /// 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up axis;
 /// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
 /// dents flag; extension records. 7: ids carry their generation (u32 after each object and body index).
-constexpr std::uint32_t cReplayVersion = 7;
+/// 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its u32
+/// vertices). Written: 8. Read: 8, and 7 (whose objects have no rigid parts, so its recordings still replay).
+constexpr std::uint32_t cReplayVersion = 8;
+/// The oldest version DecodeReplay still reads.
+constexpr std::uint32_t cOldestReplayVersion = 7;
 
 /// The replay file layout (little-endian, IEEE-754):
 ///   "CRUMPREC" magic, u32 version, then records: u8 type, u32 payload length, payload, u32 CRC-32 of the
