@@ -2,14 +2,19 @@
 // SPDX-License-Identifier: MIT
 #include "CarMesh.h"
 
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
 #include <crumple/base/IsolatedCall.h>
 #include <crumple/base/MeshBytes.h>
 
 #include <crumple/ffd/BoundingBox.h>
+#include <crumple/ffd/RefineLongEdges.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -72,9 +77,30 @@ std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody)
 namespace
 {
 
+// inText contains one of inNeedles, ignoring case (ASCII).
+bool ContainsAnyOf(std::string inText, const std::vector<std::string>& inNeedles)
+{
+    const auto lower = [](std::string ioText) {
+        std::transform(ioText.begin(), ioText.end(), ioText.begin(),
+                       [](unsigned char inChar) { return static_cast<char>(std::tolower(inChar)); });
+        return ioText;
+    };
+    inText = lower(std::move(inText));
+    return std::any_of(inNeedles.begin(), inNeedles.end(), [&](const std::string& inNeedle)
+                       { return !inNeedle.empty() && inText.find(lower(inNeedle)) != std::string::npos; });
+}
+
+// A rigid part as found in the file: a run of the mesh's vertices and the name that made it one.
+struct FoundPart
+{
+    std::uint32_t mBegin = 0;
+    std::uint32_t mEnd = 0;
+    std::string mName;
+};
+
 // The parse itself (assimp), in whatever process runs it: the wanted meshes' triangles, node transforms
-// applied, in the file's frame and unit.
-Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings)
+// applied, in the file's frame and unit, and the vertex runs of the meshes named as rigid parts.
+Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, std::vector<FoundPart>& outParts)
 {
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
@@ -96,6 +122,10 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings)
             if (!wanted)
                 continue;
             const auto base = static_cast<std::uint32_t>(mesh.mPositions.size());
+            const std::string node_name = inNode->mName.C_Str(), mesh_name = part->mName.C_Str();
+            if (part->mNumVertices > 0 && (ContainsAnyOf(node_name, inSettings.mRigidPartNames) ||
+                                           ContainsAnyOf(mesh_name, inSettings.mRigidPartNames)))
+                outParts.push_back({base, base + part->mNumVertices, node_name.empty() ? mesh_name : node_name});
             for (unsigned v = 0; v < part->mNumVertices; ++v)
             {
                 const aiVector3D p = transform * part->mVertices[v];
@@ -132,6 +162,39 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings)
 
 Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
 {
+    Result<CarBody> body = LoadCarBody(inSettings);
+    if (body.HasError())
+        return body.GetError();
+    return std::move(body.Get().mMesh);
+}
+
+std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<std::vector<std::uint32_t>>& inParts,
+                                                             const ffd::RefinedMesh& inRefined)
+{
+    // intent: each vertex's part (-1: none), the added ones from their parents in order (a parent may itself
+    // be an added vertex of a lower index)
+    const std::size_t vertices = inRefined.mMesh.mPositions.size();
+    const std::size_t first_added = vertices - inRefined.mMidpointParents.size();
+    std::vector<int> part_of(vertices, -1);
+    for (std::size_t part = 0; part < inParts.size(); ++part)
+        for (std::uint32_t v : inParts[part])
+            if (v < first_added)
+                part_of[v] = static_cast<int>(part);
+    for (std::size_t k = 0; k < inRefined.mMidpointParents.size(); ++k)
+    {
+        const auto& parents = inRefined.mMidpointParents[k];
+        if (part_of[parents[0]] >= 0 && part_of[parents[0]] == part_of[parents[1]])
+            part_of[first_added + k] = part_of[parents[0]];
+    }
+    std::vector<std::vector<std::uint32_t>> parts(inParts.size());
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (part_of[v] >= 0)
+            parts[static_cast<std::size_t>(part_of[v])].push_back(static_cast<std::uint32_t>(v));
+    return parts;
+}
+
+Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
+{
     if (!(std::isfinite(inSettings.mUnit) && inSettings.mUnit >= 0.0))
         return MakeError(EError::InvalidArgument, "CarMeshSettings.mUnit must be finite and >= 0 m per file unit");
     if (!(std::isfinite(inSettings.mLength) && inSettings.mLength > 0.0))
@@ -142,17 +205,54 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
     constexpr double cParseTimeout = 60.0;
     Result<std::vector<std::byte>> bytes = RunIsolated(
         [&]() -> Result<std::vector<std::byte>> {
-            Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings);
+            // The parts first (u32 count; per part u32 begin, end, name length, name bytes), then the mesh.
+            std::vector<FoundPart> parts;
+            Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings, parts);
             if (read.HasError())
                 return read.GetError();
-            return EncodeMeshBytes<std::uint32_t>(read.Get().mPositions, read.Get().mTriangles);
+            ByteWriter writer;
+            writer.WriteU32(static_cast<std::uint32_t>(parts.size()));
+            for (const FoundPart& part : parts)
+            {
+                writer.WriteU32(part.mBegin);
+                writer.WriteU32(part.mEnd);
+                writer.WriteU32(static_cast<std::uint32_t>(part.mName.size()));
+                writer.WriteBytes(std::as_bytes(std::span(part.mName)));
+            }
+            std::vector<std::byte> answer = writer.TakeBytes();
+            const std::vector<std::byte> mesh = EncodeMeshBytes<std::uint32_t>(read.Get().mPositions, read.Get().mTriangles);
+            answer.insert(answer.end(), mesh.begin(), mesh.end());
+            return answer;
         },
         cParseTimeout, inSettings.mPath.string());
     if (bytes.HasError())
         return bytes.GetError();
-    ffd::TriangleMesh mesh;
-    if (Status decoded = DecodeMeshBytes(bytes.Get(), inSettings.mPath.string(), mesh.mPositions, mesh.mTriangles); !decoded)
+    CarBody body;
+    ffd::TriangleMesh& mesh = body.mMesh;
+    ByteReader reader(bytes.Get());
+    const std::uint32_t part_count = reader.ReadU32();
+    for (std::uint32_t part = 0; part < part_count && !reader.Failed(); ++part)
+    {
+        const std::uint32_t begin = reader.ReadU32(), end = reader.ReadU32(), length = reader.ReadU32();
+        if (reader.Failed() || length > reader.Remaining() || begin > end)
+            return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
+        std::string name(length, '\0');
+        for (char& c : name)
+            c = static_cast<char>(reader.ReadU8());
+        std::vector<std::uint32_t> vertices(end - begin);
+        for (std::uint32_t v = begin; v < end; ++v)
+            vertices[v - begin] = v;
+        body.mRigidParts.push_back(std::move(vertices));
+        body.mRigidPartNames.push_back(std::move(name));
+    }
+    if (reader.Failed())
+        return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
+    const std::span<const std::byte> mesh_bytes = std::span<const std::byte>(bytes.Get()).subspan(bytes.Get().size() - reader.Remaining());
+    if (Status decoded = DecodeMeshBytes(mesh_bytes, inSettings.mPath.string(), mesh.mPositions, mesh.mTriangles); !decoded)
         return decoded.GetError();
+    for (const std::vector<std::uint32_t>& part : body.mRigidParts)
+        if (!part.empty() && part.back() >= mesh.mPositions.size())
+            return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles");
 
@@ -165,7 +265,7 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
         p = scale * (p - centre);
     if (Status valid = ffd::ValidateTriangleMesh(mesh); !valid)
         return valid.GetError();
-    return mesh;
+    return body;
 }
 
 } // namespace crumple::samples

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Result.h>
+#include <crumple/ffd/RefineLongEdges.h>
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace crumple::samples
 {
@@ -41,6 +43,18 @@ struct CarMeshSettings
     Mat3 mFileToBody = Mat3::Identity(); ///< Rotation from the file's axes to x forward, z up
     double mLength = 4.2;         ///< Scaled so the body is this long along x (m), unless mUnit is set
     double mUnit = 0.0;           ///< Metres per file unit (0.0254 for inches), > 0; 0: scale to mLength instead
+    /// Meshes whose node or mesh name contains one of these (any case) are rigid parts of the body
+    /// (ffd::FfdDeformerSettings::mRigidParts), one per mesh: wheels keep their shape when a crush reaches them.
+    /// Empty: none.
+    std::vector<std::string> mRigidPartNames{"wheel", "tire", "tyre"};
+};
+
+/// A loaded car body: its mesh, and the vertices of each rigid part (CarMeshSettings::mRigidPartNames).
+struct CarBody
+{
+    ffd::TriangleMesh mMesh;
+    std::vector<std::vector<std::uint32_t>> mRigidParts; ///< Vertex indices of each part, in file order
+    std::vector<std::string> mRigidPartNames;            ///< The node (or mesh) name of each part
 };
 
 /// Empty when the body's x extent (the stated forward axis) is its longest horizontal one; otherwise why a
@@ -50,10 +64,17 @@ std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody);
 /// The shipped Khronos Toy Car (CC0) as a 4.2 m car: its "ToyCar" body mesh, Y up and Z forward in the file.
 CarMeshSettings ToyCarMesh(const std::filesystem::path& inSharedData);
 
-/// Loads, transforms and welds a car body mesh with assimp, centred on its bounding box, scaled by mUnit or
-/// to mLength. A missing or unreadable file, one without the named mesh, or a bad mUnit or mLength is an
-/// error with the reason.
+/// Loads and transforms a car body mesh with assimp (each mesh's identical vertices joined), centred on its
+/// bounding box, scaled by mUnit or to mLength, with the vertices of its rigid parts. A missing or unreadable
+/// file, one without the named mesh, or a bad mUnit or mLength is an error with the reason.
+Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings);
+/// LoadCarBody's mesh alone.
 Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings);
+
+/// inParts' vertex lists after ffd::RefineLongEdges: a vertex added at the midpoint of two vertices of one
+/// part joins that part (a part's edges join its own vertices only, so nothing else changes).
+std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<std::vector<std::uint32_t>>& inParts,
+                                                             const ffd::RefinedMesh& inRefined);
 
 /// Where the project's shared data folder is: CRUMPLE_SHARED_DATA if set, else ../shared/data beside the
 /// source tree.

@@ -68,6 +68,8 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
     object.mFittedControlSpacing = inSettings.mControlSpacing;
     object.mFittedMaxTotalDeformation = inSettings.mMaxTotalDeformation;
     object.mDeformer.mZones = inSettings.mZones;
+    if (inSettings.mCarMesh)
+        object.mDeformer.mRigidParts = inSettings.mCarRigidParts;
     return object;
 }
 

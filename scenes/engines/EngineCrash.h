@@ -57,6 +57,8 @@ struct EngineCrashSettings
     /// The car's render mesh in its body frame (x forward, z up, centred on the box); empty: a box mesh of
     /// mHalfExtents with about mTriangles triangles. The collision shape is always the box.
     std::optional<ffd::TriangleMesh> mCarMesh;
+    /// Vertex lists of mCarMesh's rigid parts (ffd::FfdDeformerSettings::mRigidParts): its wheels
+    std::vector<std::vector<std::uint32_t>> mCarRigidParts;
     std::optional<Vec3> mInertia;      ///< Principal moments of inertia (kg m^2); empty: those of the box
     double mWallAngleDegrees = 0.0;    ///< The wall turned about the vertical through the origin (degrees)
     double mOffset = 0.0;              ///< The car's start y, sideways from the wall's centre line (m)

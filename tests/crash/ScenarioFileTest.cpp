@@ -186,6 +186,15 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
     CHECK(scenario.mImpact.mOffset == 0.0);
     CHECK(scenario.mExpectations.empty());
     CHECK(scenario.mPictures);
+    CHECK(scenario.mVehicle.mMeshRigidParts == std::vector<std::string>{"wheel", "tire", "tyre"});
+
+    // Rigid parts named, or none
+    const Result<CrashScenario> hubs = ParseCrashScenario(Minimal(R"("mass_kg": 900, "mesh_rigid_parts": ["Hub", "rim"])"), {});
+    REQUIRE(hubs.IsValid());
+    CHECK(hubs.Get().mVehicle.mMeshRigidParts == std::vector<std::string>{"Hub", "rim"});
+    const Result<CrashScenario> none = ParseCrashScenario(Minimal(R"("mass_kg": 900, "mesh_rigid_parts": [])"), {});
+    REQUIRE(none.IsValid());
+    CHECK(none.Get().mVehicle.mMeshRigidParts.empty());
 
     // A material with some keys keeps the defaults of the others
     const Result<CrashScenario> partial =
@@ -229,7 +238,7 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         // Unknown keys, with the known ones and unit hints
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
          "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, mesh_unit_m, "
-         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, box_size_m, mass_kg, "
+         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, mesh_rigid_parts, box_size_m, mass_kg, "
          "inertia_kg_m2, inertia_from, control_count, control_spacing_m, zones, material)"},
         {Minimal(R"("mass_kg": 1200, "zones": [{"min_m": [0, 0, 0], "max_m": [1, 0, 1]}])"), EError::InvalidArgument,
          "/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m on every axis"},
@@ -255,6 +264,10 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/duration_s: must be a number, got string"},
         {Minimal(mass, speed, R"("time_step_s": null)"), EError::InvalidArgument,
          "/time_step_s: must be a number, got null"},
+        {Minimal(R"("mass_kg": 1200, "mesh_rigid_parts": "wheel")"), EError::InvalidArgument,
+         "/vehicle/mesh_rigid_parts: must be an array of strings (name fragments), got string"},
+        {Minimal(R"("mass_kg": 1200, "mesh_rigid_parts": ["wheel", ""])"), EError::InvalidArgument,
+         "/vehicle/mesh_rigid_parts/1: must be a non-empty string, got string"},
         {Minimal(R"("mass_kg": 1200, "box_size_m": [4, 2])"), EError::InvalidArgument,
          "/vehicle/box_size_m: must be an array of 3 numbers, got an array of 2"},
         {Minimal(R"("mass_kg": 1200, "control_count": [10, 6.5, 6])"), EError::InvalidArgument,

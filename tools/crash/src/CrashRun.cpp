@@ -109,6 +109,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         mesh.mMeshName = vehicle.mMeshName;
         mesh.mLength = vehicle.mMeshLength;
         mesh.mUnit = vehicle.mMeshUnit;
+        mesh.mRigidPartNames = vehicle.mMeshRigidParts;
         const std::string extension = vehicle.mMesh.extension().string();
         const bool gltf = extension == ".gltf" || extension == ".glb";
         const auto forward = vehicle.mMeshForwardAxis >= 0 ? static_cast<samples::EMeshAxis>(vehicle.mMeshForwardAxis)
@@ -119,9 +120,11 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         if (rotation.HasError())
             return rotation.GetError();
         mesh.mFileToBody = rotation.Get();
-        Result<ffd::TriangleMesh> loaded = samples::LoadCarMesh(mesh);
-        if (loaded.HasError())
-            return loaded.GetError();
+        Result<samples::CarBody> body = samples::LoadCarBody(mesh);
+        if (body.HasError())
+            return body.GetError();
+        Result<ffd::TriangleMesh> loaded = std::move(body.Get().mMesh);
+        std::vector<std::vector<std::uint32_t>> rigid_parts = std::move(body.Get().mRigidParts);
         if (const std::string warning = samples::ForwardAxisWarning(loaded.Get()); !warning.empty())
         {
             const std::string text = vehicle.mMesh.filename().string() + ": " + warning + " (forward " +
@@ -139,6 +142,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(loaded.Get(), vehicle.mMeshMaxEdge);
             if (refined.HasError())
                 return refined.GetError();
+            rigid_parts = samples::PartsAfterRefinement(rigid_parts, refined.Get());
             loaded.Get() = std::move(refined.Get().mMesh);
             if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
                 return flipped.GetError();
@@ -149,6 +153,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         if (vehicle.mInertiaFromMesh)
             settings.mInertia = ShellInertia(loaded.Get(), 0.5 * (bounds.mMin + bounds.mMax), vehicle.mMass);
         settings.mCarMesh = std::move(loaded.Get());
+        settings.mCarRigidParts = std::move(rigid_parts);
     }
     return settings;
 }

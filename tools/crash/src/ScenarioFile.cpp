@@ -453,7 +453,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
-                         "mesh_max_edge_m",                          "box_size_m", "mass_kg", "inertia_kg_m2",
+                         "mesh_max_edge_m", "mesh_rigid_parts",      "box_size_m", "mass_kg", "inertia_kg_m2",
                          "inertia_from", "control_count", "control_spacing_m", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
@@ -486,6 +486,21 @@ class ScenarioReader
             if (!name->is_string())
                 return FailType(Child(inPointer, "mesh_name"), "a string", *name);
             ioVehicle.mMeshName = name->get<std::string>();
+        }
+        // Rigid parts: an array of name fragments ([] for none)
+        if (const auto parts = inVehicle.find("mesh_rigid_parts"); parts != inVehicle.end())
+        {
+            const std::string pointer = Child(inPointer, "mesh_rigid_parts");
+            if (!parts->is_array())
+                return FailType(pointer, "an array of strings (name fragments)", *parts);
+            ioVehicle.mMeshRigidParts.clear();
+            for (std::size_t index = 0; index < parts->size(); ++index)
+            {
+                const Json& part = (*parts)[index];
+                if (!part.is_string() || part.get<std::string>().empty())
+                    return FailType(pointer + "/" + std::to_string(index), "a non-empty string", part);
+                ioVehicle.mMeshRigidParts.push_back(part.get<std::string>());
+            }
         }
 
         if (inVehicle.contains("mesh_unit_m") && inVehicle.contains("mesh_length_m"))

@@ -62,6 +62,9 @@ struct VehicleSpec
     /// dent folds nothing (ffd::RefineLongEdges); the default is the default control spacing, so that no
     /// triangle spans more than a lattice cell, the scale the dent field varies on.
     double mMeshMaxEdge = 0.15;
+    /// The file's meshes whose node or mesh name contains one of these (any case) keep their shape and move
+    /// with the body around their centre (samples::CarMeshSettings::mRigidPartNames): wheels stay round.
+    std::vector<std::string> mMeshRigidParts{"wheel", "tire", "tyre"};
     Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box (m); a mesh's collision box is its
                                        ///< bounding box
     double mMass = 1200.0;             ///< kg, > 0
