@@ -47,6 +47,8 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
                 continue;
             if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
                 continue; // its body left the world
+            if (mEngine.mIsHeld && !mEngine.mIsHeld(mProps->GetBody(prop)))
+                continue; // a free or static prop body: the engine moves it
             if (keep(mEngine.mSetHeldVelocity(mProps->GetBody(prop), velocity)))
                 mGivenVelocity[index] = velocity;
             ++outUpdate.mVelocitiesGiven;

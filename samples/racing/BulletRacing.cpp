@@ -160,7 +160,8 @@ int main(int argc, char** argv)
         damage, {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
                  .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
                            .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}}, dt / 4.0);
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                           .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}}, dt / 4.0);
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-bullet: the fence: %s\n", fence.GetError().mMessage.c_str());

@@ -193,7 +193,8 @@ int main(int argc, char** argv)
                      },
                  .mHeld = {.mCreatePieceBody = [&bodies, &scene](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(scene.mWorld, scene.mSpace, inBody); },
                            .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); }}}, dt);
+                           .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                           .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}}, dt);
     if (!fence)
     {
         std::fprintf(stderr, "crumple-racing-ode: the fence: %s\n", fence.GetError().mMessage.c_str());

@@ -110,7 +110,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             run.mPiecesAfter = inPieces.size();
             return scene.GetAdapter().SetPropPieces(inBody, inPieces);
         },
-        .mSetHeldVelocity = nullptr};
+        .mSetHeldVelocity = nullptr,
+        .mIsHeld = [&](plugin::BodyId inBody) { return scene.GetAdapter().IsHeldPropBody(inBody); }};
     if (inSettings.mMatchVelocity)
         engine.mSetHeldVelocity = [&](plugin::BodyId inBody, const Vec3& inVelocity) { return scene.GetAdapter().SetHeldVelocity(inBody, inVelocity); };
     Result<props::HeldPropBodies> held = props::HeldPropBodies::Create(

@@ -456,6 +456,9 @@ TEST_CASE("Bullet: a held prop body stays at its pose without gravity, and its p
 
     // A free prop body falls.
     const BodyId free = adapter->CreatePropBody(TurnedSlab(false)).Get();
+    CHECK(adapter->IsHeldPropBody(id)); // what props::HeldPropEngine::mIsHeld asks
+    CHECK_FALSE(adapter->IsHeldPropBody(free));
+    CHECK_FALSE(adapter->IsHeldPropBody(BodyId{}));
     for (int step = 0; step < 10; ++step)
         world.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
     CHECK(adapter->GetConvexBody(free)->getLinearVelocity().z() < -1.0f);

@@ -323,6 +323,9 @@ TEST_CASE("ODE: a held prop body stays at its pose without gravity, and its piec
 
         // A free prop body falls; the adapter's destructor destroys what it made.
         const BodyId free = adapter->CreatePropBody(world, space, TurnedSlab(false)).Get();
+        CHECK(adapter->IsHeldPropBody(id)); // what props::HeldPropEngine::mIsHeld asks
+        CHECK_FALSE(adapter->IsHeldPropBody(free));
+        CHECK_FALSE(adapter->IsHeldPropBody(BodyId{}));
         for (int step = 0; step < 10; ++step)
         {
             dWorldStep(world, 1.0 / 60.0);

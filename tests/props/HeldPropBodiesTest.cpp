@@ -27,6 +27,7 @@ struct CountingEngine
     std::vector<ConvexBodySettings> mBodies;
     std::vector<std::vector<std::vector<Vec3>>> mShapes;
     std::vector<Vec3> mVelocities;
+    std::vector<BodyId> mVelocityBodies; // the body of each velocity given
     bool mRefuseBodies = false;
     bool mRefuseShapes = false;
 
@@ -47,10 +48,12 @@ struct CountingEngine
                         return Status::Ok();
                     },
                 .mSetHeldVelocity =
-                    [this](BodyId, const Vec3& inVelocity) {
+                    [this](BodyId inBody, const Vec3& inVelocity) {
                         mVelocities.push_back(inVelocity);
+                        mVelocityBodies.push_back(inBody);
                         return Status::Ok();
-                    }};
+                    },
+                .mIsHeld = nullptr};
     }
     std::size_t CallCount() const { return mBodies.size() + mShapes.size() + mVelocities.size(); }
 };
@@ -233,4 +236,30 @@ TEST_CASE("HeldPropBodies gives a shape the engine refused again at the next upd
     REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
     CHECK(update.mShapesGiven == 0);
     CHECK(engine.mShapes.size() == 1u);
+}
+
+TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), and shapes to every prop", "[props]")
+{
+    // The wall's prop is held; a second prop on the floor body stands for a free crate the engine moves.
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId crate = props->AddProp(fixture.mFloor, WeakPanel()).Get();
+    CountingEngine engine;
+    HeldPropEngine calls = engine.Calls();
+    calls.mIsHeld = [&](BodyId inBody) { return inBody == fixture.mWall; };
+    HeldPropBodies held = HeldPropBodies::Create(*props, std::move(calls), {.mShapeCellSize = 0.5}).Get();
+
+    HeldPropUpdate update;
+    REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    CHECK(update.mShapesGiven == 2); // both props' first shapes
+    // Both struck: only the held wall's body takes the struck members' velocity.
+    REQUIRE(props->GetProp(crate)->ApplyImpulse(0, Vec3(0.0, 0.0, 0.5)).IsValid());
+    Hit(fixture, 5);
+    for (int step = 0; step < 5; ++step)
+        REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    REQUIRE_FALSE(engine.mVelocityBodies.empty());
+    for (const BodyId& body : engine.mVelocityBodies)
+        CHECK(body == fixture.mWall);
+    CHECK(engine.mVelocities.back() == props->GetContactVelocity(wall));
 }

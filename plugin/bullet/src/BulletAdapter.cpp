@@ -206,6 +206,11 @@ Status BulletAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector
     return Status::Ok();
 }
 
+bool BulletAdapter::IsHeldPropBody(BodyId inBody) const
+{
+    return std::any_of(mOwned.begin(), mOwned.end(), [&](const OwnedBody& inOwned) { return inOwned.mBody == inBody && inOwned.mHeld; });
+}
+
 Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 {
     const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });

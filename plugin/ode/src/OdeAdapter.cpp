@@ -172,6 +172,11 @@ Status OdeAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector<Ve
     return Status::Ok();
 }
 
+bool OdeAdapter::IsHeldPropBody(BodyId inBody) const
+{
+    return std::any_of(mOwned.begin(), mOwned.end(), [&](const OwnedBody& inOwned) { return inOwned.mBody == inBody && inOwned.mHeld; });
+}
+
 Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 {
     const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });

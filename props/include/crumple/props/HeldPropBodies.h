@@ -28,6 +28,10 @@ struct CRUMPLE_API HeldPropEngine
     /// rest after every step, and meet each contact with the whole prop's mass at rest (far too stiff for a
     /// fence; for comparison only).
     std::function<Status(plugin::BodyId, const Vec3&)> mSetHeldVelocity;
+    /// BulletAdapter / OdeAdapter::IsHeldPropBody: which props' bodies are held. Empty: every prop's. A prop
+    /// whose body is not held (a free crate, a static sign) gets no held velocity; its pieces and its shape
+    /// are handled as a held prop's.
+    std::function<bool(plugin::BodyId)> mIsHeld;
 };
 
 /// How HeldPropBodies keeps the engine's bodies in step with the props' FEM.
@@ -76,9 +80,9 @@ public:
     /// only after a step in which a prop moved): the three things above, in PropId order; outUpdate says what
     /// was done. An engine call that fails does not stop the others (a piece already left its prop and the
     /// engine holds what it made): the first failure is returned, its piece left without a body; a refused
-    /// shape is given again at the next Update. Every prop of the world must be a held body of the engine
-    /// (a static or free prop body would have its calls refused at every step: keep such props in a
-    /// PropWorld of their own).
+    /// shape is given again at the next Update. Every prop of the world must be a prop body of the engine; one
+    /// that is not held (a free or static prop body) must be named by HeldPropEngine::mIsHeld, or the engine
+    /// refuses its held velocity at every step.
     Status Update(const PropStepReport& inStepped, HeldPropUpdate& outUpdate);
 
 private:

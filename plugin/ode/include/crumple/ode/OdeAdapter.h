@@ -83,6 +83,9 @@ public:
     /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a velocity that is
     /// not finite or beyond plugin::cMaxBodySpeed.
     Status SetHeldVelocity(plugin::BodyId inBody, const Vec3& inVelocity);
+    /// True for a held prop body this adapter made (CreatePropBody with mHeld): what SetHeldVelocity takes,
+    /// and props::HeldPropEngine::mIsHeld asks.
+    bool IsHeldPropBody(plugin::BodyId inBody) const;
     ~OdeAdapter();
     OdeAdapter(const OdeAdapter&) = delete;
     OdeAdapter& operator=(const OdeAdapter&) = delete;
