@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <tuple>
 
 namespace crumple::samples
 {
@@ -97,6 +98,65 @@ struct FoundPart
     std::uint32_t mEnd = 0;
     std::string mName;
 };
+
+// Each part split into its connected pieces (vertices joined by the part's triangles, or at the same position:
+// files keep a vertex per face where normals or texture coordinates differ), in order of their first vertex:
+// a file's mesh that holds both rear wheels gives two parts, each moving with the body at its own centre,
+// not one centred between them. A vertex nothing joins is a piece of its own.
+void SplitPartsIntoPieces(const ffd::TriangleMesh& inMesh, std::vector<std::vector<std::uint32_t>>& ioParts,
+                          std::vector<std::string>& ioNames)
+{
+    std::vector<int> part_of(inMesh.mPositions.size(), -1);
+    for (std::size_t part = 0; part < ioParts.size(); ++part)
+        for (std::uint32_t v : ioParts[part])
+            part_of[v] = static_cast<int>(part);
+    std::vector<std::uint32_t> root(inMesh.mPositions.size());
+    for (std::uint32_t v = 0; v < root.size(); ++v)
+        root[v] = v;
+    const auto find = [&root](std::uint32_t inVertex) {
+        while (root[inVertex] != inVertex)
+            inVertex = root[inVertex] = root[root[inVertex]];
+        return inVertex;
+    };
+    const auto join = [&](std::uint32_t inA, std::uint32_t inB) {
+        const std::uint32_t a = find(inA), b = find(inB);
+        root[std::max(a, b)] = std::min(a, b); // the smaller index roots: pieces in first-vertex order
+    };
+    for (const auto& triangle : inMesh.mTriangles)
+        for (int corner = 1; corner < 3; ++corner)
+            if (part_of[triangle[0]] >= 0 && part_of[triangle[0]] == part_of[triangle[static_cast<std::size_t>(corner)]])
+                join(triangle[0], triangle[static_cast<std::size_t>(corner)]);
+    for (const std::vector<std::uint32_t>& part : ioParts)
+    {
+        std::vector<std::uint32_t> by_position = part;
+        const auto less = [&](std::uint32_t inA, std::uint32_t inB) {
+            const Vec3& a = inMesh.mPositions[inA];
+            const Vec3& b = inMesh.mPositions[inB];
+            return std::tie(a.x(), a.y(), a.z(), inA) < std::tie(b.x(), b.y(), b.z(), inB);
+        };
+        std::sort(by_position.begin(), by_position.end(), less);
+        for (std::size_t i = 1; i < by_position.size(); ++i)
+            if (inMesh.mPositions[by_position[i]] == inMesh.mPositions[by_position[i - 1]])
+                join(by_position[i], by_position[i - 1]);
+    }
+    std::vector<std::vector<std::uint32_t>> pieces;
+    std::vector<std::string> names;
+    std::vector<int> piece_of_root(inMesh.mPositions.size(), -1);
+    for (std::size_t part = 0; part < ioParts.size(); ++part)
+        for (std::uint32_t v : ioParts[part]) // ascending: a piece's root comes first
+        {
+            int& piece = piece_of_root[find(v)];
+            if (piece < 0)
+            {
+                piece = static_cast<int>(pieces.size());
+                pieces.emplace_back();
+                names.push_back(ioNames[part]);
+            }
+            pieces[static_cast<std::size_t>(piece)].push_back(v);
+        }
+    ioParts = std::move(pieces);
+    ioNames = std::move(names);
+}
 
 // The parse itself (assimp), in whatever process runs it: the wanted meshes' triangles, node transforms
 // applied, in the file's frame and unit, and the vertex runs of the meshes named as rigid parts.
@@ -234,7 +294,9 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     for (std::uint32_t part = 0; part < part_count && !reader.Failed(); ++part)
     {
         const std::uint32_t begin = reader.ReadU32(), end = reader.ReadU32(), length = reader.ReadU32();
-        if (reader.Failed() || length > reader.Remaining() || begin > end)
+        // intent: a part no larger than the vertices the answer can still hold (24 bytes each), before any
+        // allocation
+        if (reader.Failed() || length > reader.Remaining() || begin > end || end - begin > reader.Remaining() / 24)
             return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
         std::string name(length, '\0');
         for (char& c : name)
@@ -253,6 +315,7 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     for (const std::vector<std::uint32_t>& part : body.mRigidParts)
         if (!part.empty() && part.back() >= mesh.mPositions.size())
             return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
+    SplitPartsIntoPieces(mesh, body.mRigidParts, body.mRigidPartNames);
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles");
 

@@ -44,8 +44,9 @@ struct CarMeshSettings
     double mLength = 4.2;         ///< Scaled so the body is this long along x (m), unless mUnit is set
     double mUnit = 0.0;           ///< Metres per file unit (0.0254 for inches), > 0; 0: scale to mLength instead
     /// Meshes whose node or mesh name contains one of these (any case) are rigid parts of the body
-    /// (ffd::FfdDeformerSettings::mRigidParts), one per mesh: wheels keep their shape when a crush reaches them.
-    /// Empty: none.
+    /// (ffd::FfdDeformerSettings::mRigidParts), one per connected piece of such a mesh (a mesh of both rear
+    /// wheels gives two): wheels keep their shape when a crush reaches them. A fragment also matches longer
+    /// names ("WheelArch"): name such meshes out with a longer fragment list. Empty: none.
     std::vector<std::string> mRigidPartNames{"wheel", "tire", "tyre"};
 };
 

@@ -136,13 +136,9 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
     setup.mGroups = mesh.GetGroups();
     setup.mMaterial = solver.GetMaterialSettings();
     setup.mSettings = solver.GetSettings();
-    solver.ReadPositions(setup.mPositions);
-    solver.ReadVelocities(setup.mVelocities);
-    solver.ReadExternalForces(setup.mExternalForces);
+    if (Status read = solver.ReadNodeState(setup.mPositions, setup.mVelocities, setup.mExternalForces); read.HasError())
+        return MakeError(EError::IoError, "MakePropSetup: the GPU prop's state could not be read back: " + read.GetError().mMessage);
     const std::size_t nodes = static_cast<std::size_t>(solver.GetNodeCount());
-    if (setup.mPositions.size() != nodes || setup.mVelocities.size() != nodes || setup.mExternalForces.size() != nodes)
-        return MakeError(EError::IoError,
-                         "MakePropSetup: the GPU prop's state could not be read back (its device could not be made current)");
     // intent: positions still where the solver was made (the GPU got them as floats) are recorded as the
     // double ones they came from, so the rebuilt CPU solver is the very one the live GPU solver was made from
     // (both then answer IsStillAndUnstrained alike: a prop made still sleeps at its first step in both)

@@ -675,17 +675,37 @@ bool GpuTetSolver::IsStillAndUnstrained() const
 
 void GpuTetSolver::ReadPositions(std::vector<Vec3>& outPositions) const
 {
-    (void)ReadNodeBuffer(mPositions, outPositions); // empty on failure, as documented
+    if (ReadNodeBuffer(mPositions, outPositions).HasError())
+        outPositions.assign(mMasses.size(), Vec3::Zero()); // as documented: callers index by node
 }
 
 void GpuTetSolver::ReadVelocities(std::vector<Vec3>& outVelocities) const
 {
-    (void)ReadNodeBuffer(mVelocities, outVelocities);
+    if (ReadNodeBuffer(mVelocities, outVelocities).HasError())
+        outVelocities.assign(mMasses.size(), Vec3::Zero());
 }
 
 void GpuTetSolver::ReadExternalForces(std::vector<Vec3>& outForces) const
 {
-    (void)ReadNodeBuffer(mExternal, outForces);
+    if (ReadNodeBuffer(mExternal, outForces).HasError())
+        outForces.assign(mMasses.size(), Vec3::Zero());
+}
+
+Status GpuTetSolver::ReadNodeState(std::vector<Vec3>& outPositions, std::vector<Vec3>& outVelocities,
+                                   std::vector<Vec3>& outForces) const
+{
+    Status status = ReadNodeBuffer(mPositions, outPositions);
+    if (status.IsValid())
+        status = ReadNodeBuffer(mVelocities, outVelocities);
+    if (status.IsValid())
+        status = ReadNodeBuffer(mExternal, outForces);
+    if (status.HasError())
+    {
+        outPositions.clear();
+        outVelocities.clear();
+        outForces.clear();
+    }
+    return status;
 }
 
 } // namespace crumple::gpu

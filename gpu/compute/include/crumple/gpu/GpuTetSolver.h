@@ -95,13 +95,17 @@ public:
     /// Ends sleep without changing the state.
     void WakeUp();
 
-    /// Reads the node positions back (m), #N (waits for the GPU); empty when the device could not be made
-    /// current (a lost context), never zeros in place of a state.
+    /// Reads the node positions back (m), #N (waits for the GPU); #N zeros when the device could not be made
+    /// current (a lost context, or one current on another thread): callers index by node. ReadNodeState says
+    /// whether the read succeeded.
     void ReadPositions(std::vector<Vec3>& outPositions) const;
-    /// Reads the node velocities back (m/s), #N; empty as ReadPositions.
+    /// Reads the node velocities back (m/s), #N; zeros as ReadPositions.
     void ReadVelocities(std::vector<Vec3>& outVelocities) const;
-    /// Reads the external forces back (N), #N, as the GPU holds them (float); empty as ReadPositions.
+    /// Reads the external forces back (N), #N, as the GPU holds them (float); zeros as ReadPositions.
     void ReadExternalForces(std::vector<Vec3>& outForces) const;
+    /// The three reads above, or the device's error (the outputs then empty): for a caller that must not take
+    /// zeros for a state (a recording).
+    Status ReadNodeState(std::vector<Vec3>& outPositions, std::vector<Vec3>& outVelocities, std::vector<Vec3>& outForces) const;
     /// True when the state on the GPU is exactly the one it was made at rest in: every velocity and external
     /// force 0 and every position its node's rest position (as a float). The CPU's
     /// fem::TetSolver::IsStillAndUnstrained applied to the float state, so a prop recorded from the GPU and
