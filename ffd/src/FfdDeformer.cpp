@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/ffd/OneSidedControls.h>
 #include <crumple/ffd/FoldGuard.h>
@@ -106,42 +107,34 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
 
     // Bind each vertex to the first zone holding its rest position (a hair of tolerance for box faces).
     constexpr double cBindMargin = 1.0e-9;
+    const auto bind = [&deformer](const Vec3& inRestPoint, int& outZone, LatticeLocation& outLocation) {
+        for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+        {
+            const Vec3 u = deformer.mZones[z].LatticeCoordinate(inRestPoint);
+            if (deformer.mZones[z].Contains(u, cBindMargin))
+            {
+                outZone = static_cast<int>(z);
+                outLocation = deformer.mZones[z].Locate(u);
+                return;
+            }
+        }
+    };
     deformer.mVertexZone.assign(vertex_count, -1);
     deformer.mVertexLocation.assign(vertex_count, LatticeLocation{});
     for (std::uint32_t v = 0; v < vertex_count; ++v)
-        for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
-        {
-            const Vec3 u = deformer.mZones[z].LatticeCoordinate(deformer.mRestMesh.mPositions[v]);
-            if (deformer.mZones[z].Contains(u, cBindMargin))
-            {
-                deformer.mVertexZone[v] = static_cast<int>(z);
-                deformer.mVertexLocation[v] = deformer.mZones[z].Locate(u);
-                break;
-            }
-        }
+        bind(deformer.mRestMesh.mPositions[v], deformer.mVertexZone[v], deformer.mVertexLocation[v]);
     // A rigid part's vertices all take the lattice location of its rest bounding box's centre: every use of a
     // vertex's location (its displacement, its cell bucket, the surface index, the bounds) then moves the part
     // as one, and a dent touches it exactly when it changes a control that reaches the centre.
     for (const std::vector<std::uint32_t>& part : inSettings.mRigidParts)
     {
-        Vec3 low = deformer.mRestMesh.mPositions[part.front()], high = low;
-        for (std::uint32_t v : part)
-        {
-            low = low.cwiseMin(deformer.mRestMesh.mPositions[v]);
-            high = high.cwiseMax(deformer.mRestMesh.mPositions[v]);
-        }
-        const Vec3 centre = 0.5 * (low + high);
+        std::vector<Vec3> rest(part.size());
+        for (std::size_t i = 0; i < part.size(); ++i)
+            rest[i] = deformer.mRestMesh.mPositions[part[i]];
+        const AlignedBox box = BoundingBox(rest);
         int zone = -1;
         LatticeLocation location{};
-        for (std::size_t z = 0; z < deformer.mZones.size() && zone < 0; ++z)
-        {
-            const Vec3 u = deformer.mZones[z].LatticeCoordinate(centre);
-            if (deformer.mZones[z].Contains(u, cBindMargin))
-            {
-                zone = static_cast<int>(z);
-                location = deformer.mZones[z].Locate(u);
-            }
-        }
+        bind(0.5 * (box.mMin + box.mMax), zone, location);
         for (std::uint32_t v : part)
         {
             deformer.mVertexZone[v] = zone;
