@@ -78,13 +78,19 @@ void DamageWorld::Land()
                 target.mDeformable->GetDeformer().Publish();
                 published.push_back(target.mDeformable);
             }
+    bool moved = false;
     for (std::size_t i = 0; i < collisions.size(); ++i)
         for (const ObjectDent& dent : dents[i])
         {
             mLanded.mVerticesMoved += dent.mReport.mVerticesMoved;
             if (dent.mReport.mVerticesMoved > 0)
+            {
                 ++mLanded.mObjectsDented;
+                moved = true;
+            }
         }
+    if (moved)
+        ++mShapeRevision;
     const std::vector<DamageListener*> listeners = mListeners;
     for (std::size_t i = 0; i < collisions.size(); ++i)
         for (DamageListener* listener : listeners)
@@ -516,6 +522,8 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
             if (IsListening(listener))
                 listener->OnCollision(collision, dents);
     }
+    if (report.mObjectsDented > 0)
+        ++mShapeRevision;
     return report;
 }
 
@@ -542,6 +550,7 @@ void DamageWorld::ResetDamage()
     for (ObjectSlot& slot : mObjects)
         if (!slot.mObject.empty())
             slot.mObject.front().GetDeformer().Reset();
+    ++mShapeRevision;
 }
 
 DamageState DamageWorld::GetDamageState() const
@@ -590,6 +599,7 @@ Status DamageWorld::SetDamageState(const DamageState& inState)
         CRUMPLE_ASSERT(applied.IsValid(), "validated damage state was refused");
         (void)applied;
     }
+    ++mShapeRevision;
     return Status::Ok();
 }
 

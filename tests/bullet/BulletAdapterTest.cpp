@@ -246,6 +246,58 @@ TEST_CASE("Bullet: a following hull takes the dented shape", "[bullet]")
     CHECK(crash.GetAdapter().CreateFollowingHull(ObjectId{99}).HasError());
 }
 
+TEST_CASE("Bullet: a following hull inside a compound moves the compound's bounds, and follows a reset and a loaded state",
+          "[bullet]")
+{
+    // The car's shape is a compound (a game's chassis): the hull and a small sphere at the centre. Declared
+    // before the crash, so it outlives the car that uses it.
+    btCompoundShape compound;
+    btSphereShape centre(0.1f);
+    EngineCrashSettings settings;
+    BulletWallCrash crash(settings);
+    btConvexHullShape* hull = crash.GetAdapter().CreateFollowingHull(crash.GetCarObject(), 200).Get();
+    compound.addChildShape(btTransform::getIdentity(), hull);
+    compound.addChildShape(btTransform::getIdentity(), &centre);
+    crash.GetCar().setCollisionShape(&compound);
+    // The pairs cached for the box the car had would run the box's collision algorithm on the compound.
+    crash.GetWorld().getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(crash.GetCar().getBroadphaseHandle(),
+                                                                                     crash.GetWorld().getDispatcher());
+    const auto front = [&](const btCollisionShape& inShape) {
+        btVector3 low, high;
+        inShape.getAabb(btTransform::getIdentity(), low, high);
+        return static_cast<double>(high.x());
+    };
+    const double rest_front = front(*hull);
+    REQUIRE(front(compound) == rest_front);
+
+    crash.Run();
+    const double dented_front = front(*hull);
+    REQUIRE(dented_front < rest_front - 0.05); // the hull followed the dent
+    // The compound's cached bounds followed it (they kept the undented front before)
+    CHECK(front(compound) == dented_front);
+    const std::vector<std::byte> saved = crash.GetDamage().SaveDamage();
+
+    // Away from the wall and at rest, so that no new contact dents the car again.
+    btRigidBody& car = crash.GetCar();
+    btTransform away = car.getWorldTransform();
+    away.setOrigin(away.getOrigin() - btVector3(20, 0, 0));
+    car.setWorldTransform(away);
+    if (car.getMotionState() != nullptr)
+        car.getMotionState()->setWorldTransform(away);
+    car.setLinearVelocity(btVector3(0, 0, 0));
+    car.setAngularVelocity(btVector3(0, 0, 0));
+
+    // A reset reaches the hull and the compound at the next step, and so does a loaded state.
+    crash.GetDamage().ResetDamage();
+    crash.Step();
+    CHECK(front(*hull) == rest_front);
+    CHECK(front(compound) == rest_front);
+    REQUIRE(crash.GetDamage().LoadDamage(saved));
+    crash.Step();
+    CHECK(front(*hull) == dented_front);
+    CHECK(front(compound) == dented_front);
+}
+
 TEST_CASE("Bullet: the same crash twice gives bitwise identical meshes", "[bullet][determinism]")
 {
     EngineCrashSettings settings;

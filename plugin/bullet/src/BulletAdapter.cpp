@@ -350,13 +350,14 @@ void BulletAdapter::PostTick(double inTimeStep)
     if (!mEvents.empty() && !mDamage.SubmitContacts(mEvents, inTimeStep))
         mLastStats.mContactsRefused = static_cast<int>(mEvents.size());
     mLastStats.mUpdate = mDamage.Update(mTime);
-    if (mLastStats.mUpdate.mObjectsDented > 0)
+    if (!mHulls.empty() && mDamage.GetShapeRevision() != mHullRevision)
         UpdateHulls();
     HoldProps();
 }
 
 void BulletAdapter::UpdateHulls()
 {
+    mHullRevision = mDamage.GetShapeRevision();
     for (FollowingHull& hull : mHulls)
     {
         const DeformableObject* object = mDamage.GetObject(hull.mObject);
@@ -370,6 +371,14 @@ void BulletAdapter::UpdateHulls()
             points[i] = btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z()));
         }
         hull.mShape->recalcLocalAabb();
+        // intent: a compound caches its children's bounds (its AABB tree and its own box): refresh the hull's
+        if (btCollisionShape* shape = hull.mOwner->getCollisionShape(); shape != nullptr && shape->isCompound())
+        {
+            auto* compound = static_cast<btCompoundShape*>(shape);
+            for (int child = 0; child < compound->getNumChildShapes(); ++child)
+                if (compound->getChildShape(child) == hull.mShape.get())
+                    compound->updateChildTransform(child, compound->getChildTransform(child), true);
+        }
         mWorld.updateSingleAabb(hull.mOwner);
     }
 }

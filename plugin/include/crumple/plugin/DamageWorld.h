@@ -131,6 +131,11 @@ public:
     const DamageWorldSettings& GetSettings() const { return mSettings; }
     /// Collisions still waiting for their window to close.
     std::size_t GetOpenCollisionCount() const { return mGrouper.GetOpenCount(); }
+    /// Counts the changes of the objects' deformed shapes: each dispatch (or, with deferred dents, each
+    /// landing) in which a dent moved vertices, each ResetDamage and each accepted SetDamageState/LoadDamage.
+    /// An engine shape that follows the dents (BulletAdapter::CreateFollowingHull) compares it with the count it
+    /// last saw, so that it follows a reset or a loaded state as well as a dent.
+    std::uint64_t GetShapeRevision() const { return mShapeRevision; }
 
 private:
     // The object for the world's own changes (dispatch, reset, load), or nullptr.
@@ -215,6 +220,7 @@ private:
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
     std::unique_ptr<InFlight> mInFlight;        ///< Deferred dents (stable address for the task)
     UpdateReport mLanded;                       ///< Deferred dents landed and not reported yet
+    std::uint64_t mShapeRevision = 0;           ///< GetShapeRevision
 };
 
 } // namespace crumple::plugin

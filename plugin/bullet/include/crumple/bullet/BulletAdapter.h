@@ -74,8 +74,10 @@ public:
 
     /// Makes the physical shape follow a deformable object's dents: returns a convex hull over (up to
     /// inMaxPoints) vertices of the object's mesh, in the body frame, owned by the adapter. Use it as the
-    /// body's collision shape or as a child of its compound; after each dent the adapter moves its points
-    /// to the deformed vertices, refreshes its bounds and the body's broadphase entry.
+    /// body's collision shape or as a direct child of its btCompoundShape; after each step in which the
+    /// objects' shapes changed (a dent landed, DamageWorld::ResetDamage, an accepted LoadDamage or
+    /// SetDamageState: DamageWorld::GetShapeRevision) the adapter moves its points to the deformed vertices
+    /// and refreshes its bounds, the compound's (its child bounds and its own) and the body's broadphase entry.
     Result<btConvexHullShape*> CreateFollowingHull(plugin::ObjectId inObject, int inMaxPoints = 256);
 
     /// Creates a rigid body for Crumple (debris: a prop's loose fragment, props::FragmentBody) and registers it
@@ -146,6 +148,7 @@ private:
     std::vector<MappedBody> mBodies; ///< In registration order: deterministic snapshot order
     std::unordered_map<const btCollisionObject*, plugin::BodyId> mLookup; ///< Lookup only, never iterated
     std::vector<FollowingHull> mHulls;
+    std::uint64_t mHullRevision = 0; ///< DamageWorld::GetShapeRevision the hulls were last moved at
     struct OwnedBody
     {
         plugin::BodyId mBody;
