@@ -330,7 +330,11 @@ Status TetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
     if (!IsFinite(inImpulse))
         return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: impulse on node " +
                                                 std::to_string(inNode) + " must be finite");
-    mVelocities[inNode] += mInverseMasses[inNode] * inImpulse;
+    const Vec3 velocity = mVelocities[inNode] + mInverseMasses[inNode] * inImpulse;
+    if (!IsFinite(velocity))
+        return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: the impulse on node " + std::to_string(inNode) +
+                                                " would leave it moving at an infinite speed");
+    mVelocities[inNode] = velocity;
     InputChanged();
     return Status::Ok();
 }
@@ -702,16 +706,7 @@ public:
     {
         if (!IsExplicit())
             return 1;
-        const double count = std::ceil(inDeltaTime / mSolver.mStableTimeStep);
-        if (!(count <= static_cast<double>(mSolver.mSettings.mMaxSubSteps)))
-        {
-            std::ostringstream message;
-            message << "TetSolver::Step: " << inDeltaTime << " s needs " << count << " symplectic sub-steps of at most "
-                    << mSolver.mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSolver.mSettings.mMaxSubSteps
-                    << "; use a smaller step, a softer material, coarser elements or EIntegrator::ImplicitEuler";
-            return MakeError(EError::InvalidArgument, message.str());
-        }
-        return std::max(1, static_cast<int>(count));
+        return mSolver.SymplecticSubSteps(inDeltaTime);
     }
 
     bool IsExplicit() const override { return mSolver.mSettings.mIntegrator == EIntegrator::SymplecticEuler; }
@@ -824,6 +819,30 @@ Status TetSolver::Prepare(double inDeltaTime)
                                  inDeltaTime * inDeltaTime + inDeltaTime * material.mStiffnessDamping);
     }
     return Status::Ok();
+}
+
+Result<int> TetSolver::SymplecticSubSteps(double inDeltaTime) const
+{
+    const double count = std::ceil(inDeltaTime / mStableTimeStep);
+    if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
+    {
+        std::ostringstream message;
+        message << "TetSolver::Step: " << inDeltaTime << " s needs " << count << " symplectic sub-steps of at most "
+                << mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps
+                << "; use a smaller step, a softer material, coarser elements or EIntegrator::ImplicitEuler";
+        return MakeError(EError::InvalidArgument, message.str());
+    }
+    return std::max(1, static_cast<int>(count));
+}
+
+Status TetSolver::CheckStep(double inDeltaTime) const
+{
+    if (Status valid = CheckTimeStep(inDeltaTime, "TetSolver::Step"); !valid)
+        return valid;
+    if (mSettings.mIntegrator != EIntegrator::SymplecticEuler)
+        return Status::Ok();
+    Result<int> count = SymplecticSubSteps(inDeltaTime);
+    return count.HasError() ? Status(count.GetError()) : Status::Ok();
 }
 
 bool TetSolver::IsStillAndUnstrained() const

@@ -25,10 +25,14 @@ bool Within(const Vec3& inValue, double inBound)
 Status ValidateRigidBody(const std::string& inName, double inMass, const Vec3& inInertia, const Vec3& inPosition,
                          const Mat3& inOrientation, const Vec3& inLinearVelocity, const Vec3& inAngularVelocity)
 {
-    if (!(inMass > 0.0 && inMass <= cMaxBodyMass))
-        return MakeError(EError::InvalidArgument, inName + ".mMass must be in (0, 1e12] kg");
-    if (!IsFinite(inInertia) || !(inInertia.minCoeff() > 0.0))
-        return MakeError(EError::InvalidArgument, inName + ".mPrincipalInertia must be finite and > 0 kg m^2");
+    // intent: an engine in single precision (Bullet's default build) turns a mass below about 1e-38 kg into 0 (a
+    // static body) and an inertia that small into an infinite one: the bounds keep the inverses within
+    // cMaxInverseInertia, and the largest inertia within a body of cMaxBodyMass spanning cMaxBodyPosition.
+    if (!(inMass >= 1.0 / cMaxInverseInertia && inMass <= cMaxBodyMass))
+        return MakeError(EError::InvalidArgument, inName + ".mMass must be in [1e-12, 1e12] kg");
+    if (!IsFinite(inInertia) || !(inInertia.minCoeff() >= 1.0 / cMaxInverseInertia) ||
+        !(inInertia.maxCoeff() <= cMaxBodyMass * cMaxBodyPosition * cMaxBodyPosition))
+        return MakeError(EError::InvalidArgument, inName + ".mPrincipalInertia must be in [1e-12, 1e30] kg m^2");
     for (int axis = 0; axis < 3; ++axis)
         if (!(inInertia[axis] <= (inInertia.sum() - inInertia[axis]) * (1.0 + 1.0e-9)))
             return MakeError(EError::InvalidArgument, inName + ".mPrincipalInertia: no mass distribution has one "

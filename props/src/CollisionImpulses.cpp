@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <string>
 
 namespace crumple::props
 {
@@ -28,6 +31,11 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                                                       " is not one of the collision's bodies");
     if (inElementNodes.empty() || inPositions.empty())
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the prop has no element");
+    for (std::size_t tet = 0; tet < inElementNodes.size(); ++tet)
+        for (int node : inElementNodes[tet])
+            if (node < 0 || static_cast<std::size_t>(node) >= inPositions.size())
+                return MakeError(EError::OutOfRange, "CollisionNodalImpulses: element " + std::to_string(tet) + " names node " +
+                                                         std::to_string(node) + " of " + std::to_string(inPositions.size()));
 
     // Invert every element's edge matrix once for all contacts.
     const BarycentricSearch search(inElementNodes, inPositions);
@@ -62,14 +70,38 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
     return impulses;
 }
 
+Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<const Vec3> inVelocities,
+                          std::span<const double> inInverseMasses, double inLimit)
+{
+    // intent: each struck node's velocity after all its impulses, in the order they would be added
+    std::map<int, Vec3> after;
+    for (const NodalImpulse& impulse : inImpulses)
+    {
+        const auto node = static_cast<std::size_t>(impulse.mNode);
+        if (impulse.mNode < 0 || node >= inVelocities.size() || node >= inInverseMasses.size())
+            return MakeError(EError::OutOfRange, "CheckNodalImpulses: no node " + std::to_string(impulse.mNode));
+        const auto [entry, inserted] = after.try_emplace(impulse.mNode, inVelocities[node]);
+        entry->second += inInverseMasses[node] * impulse.mImpulse;
+    }
+    for (const auto& [node, velocity] : after)
+        if (!IsFinite(velocity) || !(velocity.cwiseAbs().maxCoeff() <= inLimit))
+            return MakeError(EError::NonFinite, "CheckNodalImpulses: the impulses would leave node " + std::to_string(node) +
+                                                    " moving faster than its solver holds");
+    return Status::Ok();
+}
+
 Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision, plugin::BodyId inPropBody)
 {
     Result<std::vector<NodalImpulse>> impulses =
         CollisionNodalImpulses(inCollision, inPropBody, ioSolver.GetElementNodes(), ioSolver.GetPositions());
     if (impulses.HasError())
         return impulses.GetError();
-    // Every node index comes from the solver's own connectivity and every impulse is finite: nothing below can
-    // be refused, so the collision applies in full.
+    if (Status fits = CheckNodalImpulses(impulses.Get(), ioSolver.GetVelocities(), ioSolver.GetInverseMasses(),
+                                         std::numeric_limits<double>::max());
+        fits.HasError())
+        return fits;
+    // Every node index comes from the solver's own connectivity and every velocity stays finite: nothing below
+    // can be refused, so the collision applies in full.
     for (const NodalImpulse& impulse : impulses.Get())
         if (Status status = ioSolver.ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
             return status;

@@ -6,6 +6,7 @@
 #include <crumple/props/CollisionImpulses.h>
 
 #include <algorithm>
+#include <limits>
 
 #if defined(CRUMPLE_PROPS_WITH_GPU)
 #include <crumple/gpu/ComputeDevice.h>
@@ -142,6 +143,12 @@ Result<fem::TetStepResult> FemProp::Step(double inDeltaTime)
     return mCpu->Step(inDeltaTime);
 }
 
+Status FemProp::CheckStep(double inDeltaTime) const
+{
+    CRUMPLE_PROPS_ON_GPU(CheckStep(inDeltaTime))
+    return mCpu->CheckStep(inDeltaTime);
+}
+
 Status FemProp::Prepare(double inDeltaTime)
 {
     if (mCpu)
@@ -160,8 +167,20 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions);
     if (impulses.HasError())
         return impulses.GetError();
-    // Node indices come from the solver's own connectivity and impulses are finite: none can be refused, so
-    // the collision applies in full.
+    // intent: all or nothing: every struck node's velocity checked before any impulse lands (the GPU's floats)
+    std::vector<Vec3> velocities;
+    ReadVelocities(velocities);
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    const std::vector<double>& inverse_masses = mGpu ? mGpu->GetInverseMasses() : mCpu->GetInverseMasses();
+    const double limit = mGpu ? static_cast<double>(std::numeric_limits<float>::max()) : std::numeric_limits<double>::max();
+#else
+    const std::vector<double>& inverse_masses = mCpu->GetInverseMasses();
+    const double limit = std::numeric_limits<double>::max();
+#endif
+    if (Status fits = CheckNodalImpulses(impulses.Get(), velocities, inverse_masses, limit); fits.HasError())
+        return fits;
+    // Node indices come from the solver's own connectivity and every velocity stays in range: none can be
+    // refused, so the collision applies in full.
     for (const NodalImpulse& impulse : impulses.Get())
         if (Status status = ApplyImpulse(impulse.mNode, impulse.mImpulse); status.HasError())
             return status;

@@ -15,9 +15,28 @@
 namespace crumple::props
 {
 
-std::vector<std::vector<Vec3>> PropCollisionPieces(std::span<const Vec3> inPositions, std::span<const fem::TetIndices> inElements,
-                                                   std::span<const std::uint8_t> inLeftOut, double inCellSize)
+Result<std::vector<std::vector<Vec3>>> PropCollisionPieces(std::span<const Vec3> inPositions,
+                                                           std::span<const fem::TetIndices> inElements,
+                                                           std::span<const std::uint8_t> inLeftOut, double inCellSize)
 {
+    if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
+        return MakeError(std::isfinite(inCellSize) ? EError::InvalidArgument : EError::NonFinite,
+                         "PropCollisionPieces: the cell size must be finite and > 0 m");
+    // intent: everything checked before any cube is made; cube indices are exact integers below 2^52 cells
+    constexpr double cMaxCubeIndex = 4503599627370496.0; // 2^52
+    for (std::size_t element = 0; element < inElements.size(); ++element)
+        for (int node : inElements[element])
+            if (node < 0 || static_cast<std::size_t>(node) >= inPositions.size())
+                return MakeError(EError::OutOfRange, "PropCollisionPieces: element " + std::to_string(element) + " names node " +
+                                                         std::to_string(node) + " of " + std::to_string(inPositions.size()));
+    for (const Vec3& position : inPositions)
+    {
+        if (!IsFinite(position))
+            return MakeError(EError::NonFinite, "PropCollisionPieces: a node position is not finite");
+        if (!(position.cwiseAbs().maxCoeff() / inCellSize < cMaxCubeIndex))
+            return MakeError(EError::InvalidArgument, "PropCollisionPieces: the cell size is too small for the positions "
+                                                      "(more than 2^52 cubes from the origin)");
+    }
     // intent: each cube's nodes, cubes ordered (z, y, x) so that the pieces come out the same every time
     std::map<std::array<std::int64_t, 3>, std::vector<int>> cubes;
     for (std::size_t element = 0; element < inElements.size(); ++element)
@@ -97,7 +116,10 @@ Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, cons
     body.mPosition = inPose.ToWorld(centre);
     body.mOrientation = inPose.mRotation * axes;
     body.mHeld = inHeld;
-    body.mPieces = PropCollisionPieces(moved, inMesh.GetTets(), {}, inCellSize);
+    Result<std::vector<std::vector<Vec3>>> pieces = PropCollisionPieces(moved, inMesh.GetTets(), {}, inCellSize);
+    if (pieces.HasError())
+        return MakeError(pieces.GetError().mCode, "MakePropBody: " + pieces.GetError().mMessage);
+    body.mPieces = std::move(pieces).Get();
     if (Status valid = plugin::ValidatePropBodySettings(body); !valid)
         return MakeError(valid.GetError().mCode, "MakePropBody: " + valid.GetError().mMessage);
     Result<fem::TetMesh> mesh = fem::TetMesh::Create(std::move(moved), inMesh.GetTets(), inMesh.GetGroups());

@@ -157,8 +157,24 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
 #endif
 }
 
-std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup)
+Status ValidatePropSetupSizes(const PropSetup& inSetup)
 {
+    const std::size_t nodes = inSetup.mPositions.size();
+    if (inSetup.mVelocities.size() != nodes || inSetup.mAnchored.size() != nodes || inSetup.mExternalForces.size() != nodes)
+        return MakeError(EError::InvalidArgument, "PropSetup: " + std::to_string(nodes) + " positions but " +
+                                                      std::to_string(inSetup.mVelocities.size()) + " velocities, " +
+                                                      std::to_string(inSetup.mAnchored.size()) + " anchor flags and " +
+                                                      std::to_string(inSetup.mExternalForces.size()) + " external forces");
+    if (!inSetup.mGroups.empty() && inSetup.mGroups.size() != inSetup.mTets.size())
+        return MakeError(EError::InvalidArgument, "PropSetup: " + std::to_string(inSetup.mGroups.size()) + " groups for " +
+                                                      std::to_string(inSetup.mTets.size()) + " elements (none, or one each)");
+    return Status::Ok();
+}
+
+Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
+{
+    if (Status valid = ValidatePropSetupSizes(inSetup); valid.HasError())
+        return valid.GetError();
     ByteWriter writer;
     writer.WriteU32(inSetup.mBody.mValue);
     writer.WriteU32(inSetup.mBody.mGeneration);
@@ -229,6 +245,8 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
 Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup)
 {
     // The mesh, material and settings are validated by their own Create; the state by the setters.
+    if (Status valid = ValidatePropSetupSizes(inSetup); valid.HasError())
+        return valid.GetError();
     Result<fem::TetMesh> mesh = fem::TetMesh::Create(inSetup.mRestPositions, inSetup.mTets, inSetup.mGroups);
     if (mesh.HasError())
         return mesh.GetError();
@@ -276,6 +294,8 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
         const std::string where = "prop record " + std::to_string(index) + ": ";
         if (extension.mAfterCollisions > inReplay.mCollisions.size())
             return MakeError(EError::CorruptData, where + "placed after more collisions than the file has");
+        if (extension.mAfterCollisions < next_collision)
+            return MakeError(EError::CorruptData, where + "placed before collisions an earlier record follows");
         if (Status status = apply_collisions_until(static_cast<std::size_t>(extension.mAfterCollisions)); status.HasError())
             return MakeError(status.GetError().mCode, where + status.GetError().mMessage);
         if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added))
@@ -283,6 +303,8 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             Result<PropSetup> setup = DecodePropSetup(extension.mPayload);
             if (setup.HasError())
                 return MakeError(setup.GetError().mCode, where + setup.GetError().mMessage);
+            if (std::any_of(props.begin(), props.end(), [&](const ReplayedProp& p) { return p.mBody == setup.Get().mBody; }))
+                return MakeError(EError::CorruptData, where + "a second prop for the same body");
             Result<fem::TetSolver> solver = RebuildProp(setup.Get());
             if (solver.HasError())
                 return MakeError(solver.GetError().mCode, where + solver.GetError().mMessage);

@@ -80,6 +80,13 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
         mRecorder = nullptr;
         return Status::Ok();
     }
+    // intent: a second attach would write every prop's setup again (a replay would make two of each)
+    if (mRecorder != nullptr)
+        return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: a recorder is attached; detach it (nullptr) first");
+    if (Status recorder = ioRecorder->GetStatus(); recorder.HasError())
+        return recorder;
+    if (!ioRecorder->IsOpen())
+        return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: the recorder is closed");
     // Every prop so far must be recordable before any is written.
     std::vector<std::vector<std::byte>> setups;
     for (const Prop& prop : mProps)
@@ -119,6 +126,14 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
 {
     if (Status valid = CheckTimeStep(inDeltaTime, "PropWorld::Step"); !valid)
         return valid.GetError();
+    // intent: a step some prop refuses is refused before any prop steps or the recording takes it
+    for (std::size_t index = 0; index < mProps.size(); ++index)
+        if (Status valid = mProps[index].mProp.CheckStep(inDeltaTime); valid.HasError())
+        {
+            Error error = valid.GetError();
+            error.mMessage = "PropWorld::Step: prop " + std::to_string(index) + ": " + error.mMessage;
+            return error;
+        }
     if (mRecorder != nullptr)
     {
         ByteWriter step;
@@ -231,7 +246,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     return loose;
 }
 
-std::vector<std::vector<Vec3>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
+Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
 {
     const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
     // An element of a piece handed over has all its nodes taken: its first one tells.
@@ -279,10 +294,12 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
         changed = (positions[node] - prop.mShapePositions[node]).squaredNorm() > inTolerance * inTolerance;
     if (!changed)
         return std::optional<std::vector<std::vector<Vec3>>>();
-    std::vector<std::vector<Vec3>> pieces = PiecesOf(prop, positions, inCellSize);
+    Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(prop, positions, inCellSize);
+    if (pieces.HasError())
+        return MakeError(pieces.GetError().mCode, "PropWorld::TakeChangedShape: " + pieces.GetError().mMessage);
     prop.mShapeRevision = prop.mPiecesTaken;
     prop.mShapePositions = std::move(positions);
-    return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces));
+    return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces).Get());
 }
 
 void PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping) const

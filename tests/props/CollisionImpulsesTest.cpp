@@ -23,7 +23,7 @@ namespace
 {
 
 // A free 2 m x 0.2 m x 2 m wall panel, x in [0, 0.2], y and z in [-1, 1] (the prop's body frame).
-TetSolver Panel()
+TetSolver Panel(double inDensity = FemMaterialSettings{}.mDensity)
 {
     TetGridSettings grid;
     grid.mOrigin = Vec3(0.0, -1.0, -1.0);
@@ -31,7 +31,9 @@ TetSolver Panel()
     grid.mCellCount = {1, 10, 10};
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
-    return TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings{}, settings).Get();
+    FemMaterialSettings material;
+    material.mDensity = inDensity;
+    return TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
 }
 
 Collision TwoContacts(BodyId inA, BodyId inB)
@@ -98,6 +100,31 @@ TEST_CASE("ApplyCollision refuses a collision the prop is not in, or a NaN conta
     const Status nan = ApplyCollision(panel, broken, BodyId{3});
     REQUIRE(nan.HasError());
     CHECK(nan.GetError().mMessage.find("contact 1") != std::string::npos);
+    CHECK(panel.GetVelocities() == velocities);
+}
+
+TEST_CASE("Nodal impulses refuse an element naming a node that is not there, and an impulse no velocity holds, "
+          "changing nothing",
+          "[props]")
+{
+    TetSolver panel = Panel();
+    const std::vector<Vec3> velocities = panel.GetVelocities();
+    std::vector<TetIndices> elements = panel.GetElementNodes();
+    elements[3][2] = 100000000;
+    const Result<std::vector<NodalImpulse>> outside =
+        CollisionNodalImpulses(TwoContacts(BodyId{3}, BodyId{7}), BodyId{3}, elements, panel.GetPositions());
+    REQUIRE(outside.HasError());
+    CHECK(outside.GetError().mCode == EError::OutOfRange);
+
+    // Finite impulses that overflow a light node's velocity (grams at 1 kg/m^3): refused whole, before any lands.
+    panel = Panel(1.0);
+    Collision huge = TwoContacts(BodyId{3}, BodyId{7});
+    huge.mContacts[1].mImpulse = 1.0e308;
+    const Status refused = ApplyCollision(panel, huge, BodyId{3});
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mCode == EError::NonFinite);
+    CHECK(panel.GetVelocities() == velocities);
+    CHECK(panel.ApplyImpulse(0, Vec3(1.0e308, 0.0, 0.0)).GetError().mCode == EError::NonFinite);
     CHECK(panel.GetVelocities() == velocities);
 }
 

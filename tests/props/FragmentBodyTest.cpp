@@ -131,4 +131,18 @@ TEST_CASE("ConvexBodySettings refuses what no rigid body can be", "[props]")
     bad = settings;
     bad.mAngularVelocity.y() = std::numeric_limits<double>::infinity();
     CHECK_FALSE(plugin::ValidateConvexBodySettings(bad));
+    // Masses and inertias a single-precision engine would turn into a static body or an infinite inertia
+    bad = settings;
+    bad.mMass = 1.0e-50;
+    CHECK_FALSE(plugin::ValidateConvexBodySettings(bad));
+    bad = settings;
+    bad.mPrincipalInertia = Vec3(1.0e-50, 1.0e-50, 1.0e-50);
+    CHECK_FALSE(plugin::ValidateConvexBodySettings(bad));
+    bad = settings;
+    bad.mPrincipalInertia = Vec3(1.0e35, 1.0e35, 1.0e35);
+    CHECK_FALSE(plugin::ValidateConvexBodySettings(bad));
+    bad = settings;
+    bad.mMass = 1.0e-12; // the least accepted
+    bad.mPrincipalInertia = Vec3(1.0e-12, 1.0e-12, 1.0e-12);
+    CHECK(plugin::ValidateConvexBodySettings(bad));
 }

@@ -98,7 +98,7 @@ TEST_CASE("MakePropBody: the exact mass, centre and principal inertia of a slab,
     const Transform body{made.mBody.mOrientation, made.mBody.mPosition};
     CHECK((body.ToWorld(made.mMesh.GetRestPositions()[7]) - Pose().ToWorld(slab.GetRestPositions()[7])).norm() <= 1.0e-12);
     // The pieces are those of the moved mesh (cubes of the body frame's grid), and hold every node.
-    CHECK(made.mBody.mPieces == PropCollisionPieces(made.mMesh.GetRestPositions(), made.mMesh.GetTets(), {}, 0.25));
+    CHECK(made.mBody.mPieces == PropCollisionPieces(made.mMesh.GetRestPositions(), made.mMesh.GetTets(), {}, 0.25).Get());
     std::size_t held = 0;
     for (const Vec3& node : made.mMesh.GetRestPositions())
         held += std::any_of(made.mBody.mPieces.begin(), made.mBody.mPieces.end(), [&](const std::vector<Vec3>& inPiece) {
@@ -119,15 +119,27 @@ TEST_CASE("MakePropBody and PropCollisionPieces refuse bad input and leave out w
     // In the slab's own frame its cubes are the grid's: one piece per cube, its eight corners. Leaving out the
     // first cube's five tetrahedra removes its piece, and only that one.
     std::vector<std::uint8_t> left_out(slab.GetTets().size(), 0);
-    const std::vector<std::vector<Vec3>> all = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), {}, 0.25);
+    const std::vector<std::vector<Vec3>> all = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), {}, 0.25).Get();
     for (std::size_t element = 0; element < 5; ++element)
         left_out[element] = 1;
-    const std::vector<std::vector<Vec3>> rest = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), left_out, 0.25);
+    const std::vector<std::vector<Vec3>> rest = PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), left_out, 0.25).Get();
     REQUIRE(all.size() == 8);
     for (const std::vector<Vec3>& piece : all)
         CHECK(piece.size() == 8);
     CHECK(rest.size() == 7);
     CHECK(std::find(rest.begin(), rest.end(), all[0]) == rest.end());
+
+    // A cell size that is not finite and > 0, or so small that the cubes' indices would not be exact, and an
+    // element naming a node that is not there.
+    for (double cell : {std::numeric_limits<double>::quiet_NaN(), 0.0, -1.0, 1.0e-300})
+    {
+        INFO("cell " << cell);
+        CHECK(PropCollisionPieces(slab.GetRestPositions(), slab.GetTets(), {}, cell).HasError());
+        CHECK(MakePropBody(slab, 500.0, Pose(), true, cell).HasError());
+    }
+    std::vector<fem::TetIndices> elements = slab.GetTets();
+    elements.back()[1] = static_cast<int>(slab.GetRestPositions().size());
+    CHECK(PropCollisionPieces(slab.GetRestPositions(), elements, {}, 0.25).GetError().mCode == EError::OutOfRange);
 }
 
 TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed over", "[props]")

@@ -334,3 +334,60 @@ TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so l
     CHECK(MakePropSetup(BodyId{}, moved).HasError());
 }
 #endif
+
+TEST_CASE("Props in a recording: a setup of mismatched sizes, a second recorder, a second prop for a body and records "
+          "that go back are refused",
+          "[props][replay]")
+{
+    common::WorldFixture fixture;
+    FemProp panel = BrittlePanel();
+    const PropSetup setup = MakePropSetup(fixture.mWall, panel).Get();
+    for (int field = 0; field < 4; ++field)
+    {
+        PropSetup bad = setup;
+        switch (field)
+        {
+        case 0: bad.mVelocities.clear(); break;
+        case 1: bad.mAnchored.pop_back(); break;
+        case 2: bad.mExternalForces.push_back(Vec3::Zero()); break;
+        case 3: bad.mGroups.resize(1); break;
+        }
+        INFO("field " << field);
+        CHECK(ValidatePropSetupSizes(bad).GetError().mCode == EError::InvalidArgument);
+        CHECK(EncodePropSetup(bad).HasError());
+        CHECK(RebuildProp(bad).HasError());
+    }
+    REQUIRE(ValidatePropSetupSizes(setup).IsValid());
+
+    // A second recorder (or the same one again) would write every prop twice.
+    const std::filesystem::path path = common::ScratchDirectory() / "props_twice.crumple";
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AddProp(fixture.mWall, std::move(panel)).IsValid());
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    CHECK(props->AttachRecorder(recorder.get()).GetError().mCode == EError::InvalidArgument);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    // A closed recorder is refused too, and writes nothing.
+    CHECK(props->AttachRecorder(recorder.get()).HasError());
+    const Replay recorded = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    REQUIRE(recorded.mExtensions.size() == 1);
+    REQUIRE(ReplayProps(recorded).Get().size() == 1);
+
+    Replay twice = recorded;
+    twice.mExtensions.push_back(recorded.mExtensions.front());
+    const Result<std::vector<ReplayedProp>> second = ReplayProps(twice);
+    REQUIRE(second.HasError());
+    CHECK(second.GetError().mMessage.find("prop record 1") != std::string::npos);
+
+    // A record placed after fewer collisions than the one before it.
+    Replay back = recorded;
+    back.mCollisions.resize(2);
+    back.mExtensions.front().mAfterCollisions = 2;
+    RecordedExtension step;
+    step.mTag = static_cast<std::uint32_t>(EPropRecord::Step);
+    step.mPayload = std::vector<std::byte>(8, std::byte{0});
+    step.mAfterCollisions = 1;
+    back.mExtensions.push_back(step);
+    CHECK(ReplayProps(back).GetError().mCode == EError::CorruptData);
+}

@@ -3,10 +3,14 @@
 // Props in the damage flow: a FEM prop bound to a DamageWorld body takes the opposite of the impulses the
 // world gave the body that hit it.
 #include "PropMomentum.h"
+#include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
+#include <crumple/base/FileBytes.h>
 #include <crumple/fem/TetGrid.h>
+#include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/CollisionImpulses.h>
+#include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
 
 #include <ThreadJobSystem.h>
@@ -297,4 +301,37 @@ TEST_CASE("PropWorld::Prepare factors every implicit prop ahead of its first hit
     fixture.mWorld.Flush();
     REQUIRE(props->Step(1.0 / 60.0).Get().mStepped == 1);
     CHECK(solver.GetFactorizationCount() == 1);
+}
+
+TEST_CASE("PropWorld::Step refuses a step one prop cannot take before any prop steps or a recording takes it", "[props]")
+{
+    common::WorldFixture fixture;
+    const std::filesystem::path path = common::ScratchDirectory() / "props_step_refused.crumple";
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    // Prop 0 would step (struck); prop 1 is symplectic with room for one sub-step only.
+    const PropId wall = props->AddProp(fixture.mWall, Panel(true)).Get();
+    REQUIRE(props->GetProp(wall)->ApplyImpulse(props->GetProp(wall)->GetNodeCount() - 1, Vec3(0.1, 0.0, 0.0)).IsValid());
+    TetGridSettings grid;
+    grid.mCellCount = {2, 2, 2};
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    settings.mMaxSubSteps = 1;
+    FemProp explicit_prop = FemProp::Create(nullptr, TetGrid(grid).Get(), FemMaterialSettings{}, settings, FemPropSettings{}).Get();
+    REQUIRE(explicit_prop.CheckStep(1.0 / 60.0).HasError());
+    REQUIRE(props->AddProp(fixture.mFloor, std::move(explicit_prop)).IsValid());
+
+    const std::vector<Vec3> positions = props->GetProp(wall)->GetCpuSolver()->GetPositions();
+    const Result<PropStepReport> refused = props->Step(1.0 / 60.0);
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mMessage.find("prop 1") != std::string::npos);
+    CHECK(props->GetProp(wall)->GetCpuSolver()->GetElementWorkCount() == 0u);
+    CHECK(props->GetProp(wall)->GetCpuSolver()->GetPositions() == positions);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    // The recording holds the two props and no step: it replays to the state the live world has.
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    CHECK(replay.mExtensions.size() == 2);
+    CHECK(ReplayProps(replay).IsValid());
 }

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/TimeStep.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
 #include <crumple/fem/OpenCracks.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -79,6 +81,12 @@ Status Compile(const std::shared_ptr<ComputeDevice>& inDevice, ComputeProgram& o
         return program.GetError();
     outProgram = std::move(program.Get());
     return Status::Ok();
+}
+
+// Finite once stored as a float (the shaders' type): a double beyond FLT_MAX would become infinite there.
+bool IsFiniteAsFloat(const Vec3& inValue)
+{
+    return IsFinite(inValue) && inValue.cwiseAbs().maxCoeff() <= static_cast<double>(std::numeric_limits<float>::max());
 }
 
 } // namespace
@@ -309,19 +317,23 @@ Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
                                                 " must be finite");
     if (Status status = CheckNode(inNode, "ApplyImpulse"); status.HasError())
         return status;
-    InputChanged();
     Float4 velocity;
     mVelocities.Download(inNode * sizeof(Float4), sizeof(Float4), &velocity);
-    velocity = ToFloat4(ToVec3(velocity) + mInverseMasses[inNode] * inImpulse);
+    const Vec3 changed = ToVec3(velocity) + mInverseMasses[inNode] * inImpulse;
+    if (!IsFiniteAsFloat(changed))
+        return MakeError(EError::NonFinite, "GpuTetSolver::ApplyImpulse: the impulse on node " + std::to_string(inNode) +
+                                                " would leave it moving faster than a float holds");
+    InputChanged();
+    velocity = ToFloat4(changed);
     mVelocities.Upload(inNode * sizeof(Float4), sizeof(Float4), &velocity);
     return Status::Ok();
 }
 
 Status GpuTetSolver::SetExternalForce(int inNode, const Vec3& inForce)
 {
-    if (!IsFinite(inForce))
+    if (!IsFiniteAsFloat(inForce))
         return MakeError(EError::NonFinite, "GpuTetSolver::SetExternalForce: force on node " +
-                                                std::to_string(inNode) + " must be finite");
+                                                std::to_string(inNode) + " must be finite (as a float)");
     if (Status status = CheckNode(inNode, "SetExternalForce"); status.HasError())
         return status;
     InputChanged();
@@ -332,8 +344,8 @@ Status GpuTetSolver::SetExternalForce(int inNode, const Vec3& inForce)
 
 Status GpuTetSolver::SetGravity(const Vec3& inGravity)
 {
-    if (!IsFinite(inGravity))
-        return MakeError(EError::NonFinite, "GpuTetSolver::SetGravity: gravity must be finite");
+    if (!IsFiniteAsFloat(inGravity))
+        return MakeError(EError::NonFinite, "GpuTetSolver::SetGravity: gravity must be finite (as a float)");
     mSettings.mGravity = inGravity;
     InputChanged();
     return Status::Ok();
@@ -345,8 +357,8 @@ Status GpuTetSolver::SetPositions(std::span<const Vec3> inPositions)
         return MakeError(EError::InvalidArgument, "GpuTetSolver::SetPositions: " + std::to_string(inPositions.size()) +
                                                       " positions for " + std::to_string(mMasses.size()) + " nodes");
     for (const Vec3& position : inPositions)
-        if (!IsFinite(position))
-            return MakeError(EError::NonFinite, "GpuTetSolver::SetPositions: positions must be finite");
+        if (!IsFiniteAsFloat(position))
+            return MakeError(EError::NonFinite, "GpuTetSolver::SetPositions: positions must be finite (as floats)");
     if (Status status = mDevice->MakeCurrent(); status.HasError())
         return status;
     std::vector<Float4> packed(inPositions.size());
@@ -527,18 +539,7 @@ class GpuTetSolver::StepBackend final : public fem::TetStepBackend
 public:
     explicit StepBackend(GpuTetSolver& ioSolver) : mSolver(ioSolver) {}
 
-    Result<int> SubStepsFor(double inDeltaTime) const override
-    {
-        const double count = std::ceil(inDeltaTime / mSolver.mStableTimeStep);
-        if (!(count <= static_cast<double>(mSolver.mSettings.mMaxSubSteps)))
-        {
-            std::ostringstream message;
-            message << "GpuTetSolver::Step: " << inDeltaTime << " s needs " << count << " sub-steps of at most "
-                    << mSolver.mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSolver.mSettings.mMaxSubSteps;
-            return MakeError(EError::InvalidArgument, message.str());
-        }
-        return std::max(1, static_cast<int>(count));
-    }
+    Result<int> SubStepsFor(double inDeltaTime) const override { return mSolver.SubStepCount(inDeltaTime); }
 
     bool IsExplicit() const override { return true; }
 
@@ -624,6 +625,27 @@ public:
 private:
     GpuTetSolver& mSolver;
 };
+
+Result<int> GpuTetSolver::SubStepCount(double inDeltaTime) const
+{
+    const double count = std::ceil(inDeltaTime / mStableTimeStep);
+    if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
+    {
+        std::ostringstream message;
+        message << "GpuTetSolver::Step: " << inDeltaTime << " s needs " << count << " sub-steps of at most "
+                << mStableTimeStep << " s, more than TetSolverSettings.mMaxSubSteps = " << mSettings.mMaxSubSteps;
+        return MakeError(EError::InvalidArgument, message.str());
+    }
+    return std::max(1, static_cast<int>(count));
+}
+
+Status GpuTetSolver::CheckStep(double inDeltaTime) const
+{
+    if (Status valid = CheckTimeStep(inDeltaTime, "GpuTetSolver::Step"); !valid)
+        return valid;
+    Result<int> count = SubStepCount(inDeltaTime);
+    return count.HasError() ? Status(count.GetError()) : Status::Ok();
+}
 
 Result<fem::TetStepResult> GpuTetSolver::Step(double inDeltaTime)
 {

@@ -49,7 +49,8 @@ public:
     /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again (inverse mass 1 / mass).
     Status SetNodeFixed(int inNode, bool inFixed);
     /// Adds an impulse inImpulse (N s, world) to node inNode: dv = inImpulse / m. An anchored node absorbs
-    /// it.
+    /// it. Refused, changing nothing, for an impulse that is not finite or would leave the node's velocity
+    /// infinite.
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     /// Sets the constant external force (N, world) on node inNode until changed; forces on anchored nodes do
     /// nothing.
@@ -85,6 +86,10 @@ public:
     /// length that is not finite and > 0; a symplectic step Step() would refuse (too many sub-steps) is
     /// not checked here.
     Status Prepare(double inDeltaTime);
+    /// What Step(inDeltaTime) would refuse before doing anything: a step length (s) that is not finite and
+    /// > 0, or a symplectic step that needs more sub-steps than TetSolverSettings::mMaxSubSteps. Changes
+    /// nothing; lets a caller that steps several solvers (props::PropWorld) refuse a step before any moved.
+    Status CheckStep(double inDeltaTime) const;
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):
     /// repeated linearisations K(x) dx = f_elastic(x) + f_ext solved by conjugate gradient, until the
@@ -172,6 +177,8 @@ public:
     int GetFactorizationCount() const { return mFactorizationCount; }
 
 private:
+    // Sub-steps of a symplectic step of inDeltaTime, refused beyond mMaxSubSteps.
+    Result<int> SymplecticSubSteps(double inDeltaTime) const;
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
 
     // Element pass input with the current connectivity and plastic strains.

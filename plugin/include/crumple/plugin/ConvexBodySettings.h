@@ -18,9 +18,10 @@ namespace crumple::plugin
 /// engines need (ODE requires the centre of mass at the body origin, Bullet a diagonal local inertia).
 struct CRUMPLE_API ConvexBodySettings
 {
-    double mMass = 1.0;                    ///< kg, in (0, cMaxBodyMass]
-    Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), > 0 each, and
-                                           ///< each at most the sum of the other two (as every real mass distribution)
+    double mMass = 1.0;                    ///< kg, in [1e-12, cMaxBodyMass] (a float engine's range)
+    Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), each in
+                                           ///< [1e-12, 1e30] and at most the sum of the other two (as every real
+                                           ///< mass distribution)
     Vec3 mPosition = Vec3::Zero();         ///< Centre of mass, world frame (m)
     Mat3 mOrientation = Mat3::Identity();  ///< Body axes in world coordinates (columns): a rotation
     Vec3 mLinearVelocity = Vec3::Zero();   ///< Of the centre of mass, world frame (m/s)

@@ -30,9 +30,10 @@ namespace crumple::plugin
 /// The body frame sits at the centre of mass along the principal axes of inertia (what engines need).
 struct CRUMPLE_API PropBodySettings
 {
-    double mMass = 1.0;                    ///< kg, in (0, cMaxBodyMass]
-    Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), > 0 each,
-                                           ///< each at most the sum of the other two
+    double mMass = 1.0;                    ///< kg, in [1e-12, cMaxBodyMass] (a float engine's range)
+    Vec3 mPrincipalInertia = Vec3::Ones(); ///< About the centre of mass along the body axes (kg m^2), each in
+                                           ///< [1e-12, 1e30] and at most the sum of the other two (as every real
+                                           ///< mass distribution)
     Vec3 mPosition = Vec3::Zero();         ///< Centre of mass, world frame (m)
     Mat3 mOrientation = Mat3::Identity();  ///< Body axes in world coordinates (columns): a rotation
     /// The collision shape, body frame (m): the union of each piece's convex hull (Bullet) or bounding box

@@ -34,11 +34,17 @@ struct CRUMPLE_API NodalImpulse
 /// @param[in] inElementNodes  #T current connectivity (TetSolver::GetElementNodes())
 /// @param[in] inPositions     #N current node positions (m, body frame)
 /// @return impulses in contact order, four per contact; refused when the prop is not in the collision, the
-///         mesh is empty, or a contact is not finite
+///         mesh is empty, an element names a node that is not in inPositions, or a contact is not finite
 CRUMPLE_API Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
                                                          std::span<const fem::TetIndices> inElementNodes,
                                                          std::span<const Vec3> inPositions);
+
+/// Whether nodal impulses can all be applied: refused, naming the node, when one would leave a node's velocity
+/// (inVelocities + inInverseMasses x the node's impulses) not finite or, in any component, beyond inLimit (m/s;
+/// a GPU solver's float range). Lets an application be all or nothing.
+CRUMPLE_API Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<const Vec3> inVelocities,
+                                      std::span<const double> inInverseMasses, double inLimit);
 
 /// Applies CollisionNodalImpulses() to a solver (waking it). All or nothing: a refused collision changes
 /// nothing.

@@ -82,6 +82,8 @@ public:
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);
     Result<fem::TetStepResult> Step(double inDeltaTime);
+    /// What Step(inDeltaTime) would refuse before doing anything (fem::TetSolver::CheckStep). Changes nothing.
+    Status CheckStep(double inDeltaTime) const;
     /// fem::TetSolver::Prepare on the CPU (the GPU solver has nothing to prepare: it only checks the step)
     Status Prepare(double inDeltaTime);
     /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses) to the prop whose body is

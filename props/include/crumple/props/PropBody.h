@@ -50,7 +50,11 @@ CRUMPLE_API Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inD
 /// @param[in] inElements   #T elements' node indices
 /// @param[in] inLeftOut    #T flags, or empty
 /// @param[in] inCellSize   cube edge (m), finite and > 0
-CRUMPLE_API std::vector<std::vector<Vec3>> PropCollisionPieces(std::span<const Vec3> inPositions, std::span<const fem::TetIndices> inElements,
-                                                   std::span<const std::uint8_t> inLeftOut, double inCellSize);
+/// @return refused for a cell size that is not finite and > 0, an element naming a node that is not in
+///         inPositions, a position that is not finite, or a cell size so small against the positions that a
+///         cube's index would not be exact (|x| / inCellSize beyond 2^52)
+CRUMPLE_API Result<std::vector<std::vector<Vec3>>> PropCollisionPieces(std::span<const Vec3> inPositions,
+                                                                       std::span<const fem::TetIndices> inElements,
+                                                                       std::span<const std::uint8_t> inLeftOut, double inCellSize);
 
 } // namespace crumple::props

@@ -56,12 +56,17 @@ CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend i
 /// rest mesh's, so a rebuilt prop starts from exactly the same state (RebuildProp, then FemProp::FromSolver).
 CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp);
 
-/// Bytes of a PropSetup (little-endian) and back; decoding checks sizes and finite values, and the mesh,
-/// material and settings are validated again when the solver is rebuilt (RebuildProp).
-CRUMPLE_API std::vector<std::byte> EncodePropSetup(const PropSetup& inSetup);
+/// Refused when the per-node arrays (positions, velocities, anchors, external forces) differ in size, or the
+/// groups are neither empty nor one per element. Changes nothing.
+CRUMPLE_API Status ValidatePropSetupSizes(const PropSetup& inSetup);
+/// Bytes of a PropSetup (little-endian) and back; encoding refuses what ValidatePropSetupSizes refuses,
+/// decoding checks sizes and finite values, and the mesh, material and settings are validated again when the
+/// solver is rebuilt (RebuildProp).
+CRUMPLE_API Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup);
 CRUMPLE_API Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes);
 
-/// A CPU solver in the recorded state (for a GPU prop, the state its GPU solver is made from).
+/// A CPU solver in the recorded state (for a GPU prop, the state its GPU solver is made from). Refused for
+/// what ValidatePropSetupSizes refuses, and for a mesh, material, settings or state its solver refuses.
 CRUMPLE_API Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup);
 
 /// A prop rebuilt from a recording and replayed: its final state.
@@ -78,7 +83,8 @@ struct CRUMPLE_API ReplayedProp
 /// backend (a GPU prop on a device of ioProvider, which makes its context only then; null, or no device: on
 /// the CPU), takes the recorded collisions with its body (FemProp::ApplyCollision) and the recorded steps, in
 /// the recorded order. CPU props end bitwise as they did live, and GPU props on the same device and driver.
-/// Refused with a message naming the record on a corrupt or inconsistent prop record.
+/// Refused with a message naming the record on a corrupt or inconsistent prop record (among them a second
+/// prop for the same body, or records whose collision counts go back).
 CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
                                                           gpu::ComputeDeviceProvider* ioProvider = nullptr);
 

@@ -87,8 +87,9 @@ public:
 
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
     /// which must be recording the same world and outlive this object or be detached (nullptr) first.
-    /// Refused, recording nothing, when a prop added so far cannot be recorded (one that has stepped): attach
-    /// the recorder before the first Step().
+    /// Refused, recording nothing, when a recorder is attached already (detach it first), the recorder has
+    /// failed or is closed, or a prop added so far cannot be recorded (one that has stepped): attach the
+    /// recorder before the first Step().
     Status AttachRecorder(plugin::DamageRecorder* ioRecorder);
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);
@@ -105,9 +106,9 @@ public:
     /// Number of props
     int GetPropCount() const { return static_cast<int>(mProps.size()); }
 
-    /// Steps every prop by inDeltaTime (s, finite, > 0), in PropId order. A refused step (a symplectic prop
-    /// that would need more sub-steps than allowed) is an error naming the prop; the props before it have
-    /// stepped.
+    /// Steps every prop by inDeltaTime (s, finite, > 0), in PropId order. A step some prop would refuse (a
+    /// symplectic prop that would need more sub-steps than allowed: FemProp::CheckStep) is an error naming the
+    /// prop, and no prop steps and nothing is recorded.
     Result<PropStepReport> Step(double inDeltaTime);
     /// FemProp::Prepare for every prop (the props added so far): at level load, with the step the game will
     /// use, so that the first hit does not factor a prop's implicit system in its frame. Changes no state.
@@ -128,8 +129,8 @@ public:
     Result<std::vector<LooseFragment>> TakeLooseFragments(double inMinMass = 0.0);
     /// The collision shape of what is left of a prop (props::PropCollisionPieces of its current node positions,
     /// without the elements of the pieces TakeLooseFragments handed over), body frame: for the adapter's
-    /// SetPropPieces once pieces have left (GetShapeRevision). Refused for an unknown prop or a cell size that
-    /// is not finite and > 0.
+    /// SetPropPieces once pieces have left (GetShapeRevision). Refused for an unknown prop, or as
+    /// PropCollisionPieces refuses (a cell size that is not finite and > 0, or too small for the prop's extent).
     Result<std::vector<std::vector<Vec3>>> GetCollisionPieces(PropId inProp, double inCellSize) const;
     /// The prop's collision shape (GetCollisionPieces) when it changed since the last call: pieces were handed
     /// over, or a node moved more than inTolerance (m, finite, >= 0) from where it was at the last shape taken
@@ -189,7 +190,7 @@ private:
     // mContactVelocity from the latest hits and the nodes' velocities now; moves new hits to mStruck.
     void UpdateContactVelocity(Prop& ioProp, bool inSleeping) const;
     // GetCollisionPieces of inProp at inPositions.
-    static std::vector<std::vector<Vec3>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
+    static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;
 
     plugin::DamageWorld* mWorld = nullptr;

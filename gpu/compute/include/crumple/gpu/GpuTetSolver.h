@@ -82,6 +82,9 @@ public:
     /// (up to 2^mMaxStepSplits within mMaxSubSteps); if all fail the state is restored to the start of the
     /// step and ETetStepEvent::Diverged is reported.
     Result<fem::TetStepResult> Step(double inDeltaTime);
+    /// What Step(inDeltaTime) would refuse before doing anything (a step length that is not finite and > 0, or
+    /// more than mMaxSubSteps sub-steps), as fem::TetSolver::CheckStep. Changes nothing.
+    Status CheckStep(double inDeltaTime) const;
 
     /// The pieces now, as fem::TetSolver::ComputeFragments (reads positions back).
     std::vector<fem::TetFragment> ComputeFragments() const;
@@ -137,6 +140,8 @@ public:
     const ComputeDevice& GetDevice() const { return *mDevice; }
 
 private:
+    // Sub-steps of a step of inDeltaTime, refused beyond mMaxSubSteps.
+    Result<int> SubStepCount(double inDeltaTime) const;
     explicit GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
 
     // Create() on a CPU solver already validated for this mesh, material and settings (its rest data, masses,
