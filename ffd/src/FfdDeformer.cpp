@@ -86,6 +86,24 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         }
     }
 
+    {
+        // intent: the lattices' size refused before any is built (a zone of 256^3 controls alone holds 400 MB);
+        // counted in double, exact far past the bound, so no product of counts can overflow. A count below 4
+        // is FfdLattice::Create's to refuse.
+        double cells_in_zones = 0.0;
+        for (const FfdZoneSettings& zone : inSettings.mZones)
+        {
+            double cells = 1.0;
+            for (int count : zone.mLattice.mControlCount)
+                cells *= std::max(static_cast<double>(count) - 3.0, 0.0);
+            cells_in_zones += cells;
+        }
+        if (cells_in_zones > static_cast<double>(cMaxCellsInZones))
+            return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mZones: " + std::to_string(static_cast<std::int64_t>(cells_in_zones)) +
+                                                          " cells in all, more than the " + std::to_string(cMaxCellsInZones) +
+                                                          " a deformer indexes");
+    }
+
     FfdDeformer deformer;
     for (std::size_t z = 0; z < inSettings.mZones.size(); ++z)
     {
@@ -176,13 +194,6 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     }
 
     // Cells numbered across zones, and each vertex's, for the surface index (about 70 bytes per cell).
-    std::int64_t cells_in_zones = 0;
-    for (const FfdLattice& zone : deformer.mZones)
-        cells_in_zones += zone.GetCellTotal();
-    if (cells_in_zones > cMaxCellsInZones)
-        return MakeError(EError::InvalidArgument, "FfdDeformerSettings.mZones: " + std::to_string(cells_in_zones) +
-                                                      " cells in all, more than the " + std::to_string(cMaxCellsInZones) +
-                                                      " a deformer indexes");
     int cell_total = 0;
     for (const FfdLattice& zone : deformer.mZones)
     {
@@ -304,8 +315,13 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
 {
     // Refuse the whole dent before touching anything.
     for (std::size_t i = 0; i < inPoints.size(); ++i)
+    {
         if (!IsFinite(inPoints[i].mPoint) || !IsFinite(inPoints[i].mDisplacement))
             return MakeError(EError::NonFinite, "ApplyDent: point " + std::to_string(i) + " is not finite");
+        // intent: a displacement beyond any mesh's extent would overflow the solve in one zone and not another
+        if (!(inPoints[i].mDisplacement.cwiseAbs().maxCoeff() <= cMaxMeshCoordinate))
+            return MakeError(EError::OutOfRange, "ApplyDent: point " + std::to_string(i) + " moves further than 1e6 m");
+    }
     if (!(inMaxStep >= 0.0))
         return MakeError(EError::InvalidArgument, "ApplyDent: the maximum step must be >= 0 m");
 

@@ -25,6 +25,9 @@ Result<FfdLattice> FfdLattice::Create(const FfdLatticeSettings& inSettings)
     // Refuse anything that would make a lattice coordinate non-finite or a control index wrong.
     if (!IsFinite(inSettings.mOrigin) || !IsFinite(inSettings.mSize) || !IsFinite(inSettings.mAxes))
         return MakeError(EError::NonFinite, "FfdLatticeSettings: origin, axes and size must be finite");
+    if (!(inSettings.mOrigin.cwiseAbs().maxCoeff() <= FfdLatticeSettings::cMaxExtent) ||
+        !(inSettings.mSize.maxCoeff() <= FfdLatticeSettings::cMaxExtent))
+        return MakeError(EError::OutOfRange, "FfdLatticeSettings: origin coordinates and size must be within 1e7 m");
     if (!IsRotation(inSettings.mAxes, 1.0e-6))
         return MakeError(EError::DegenerateGeometry,
                          "FfdLatticeSettings.mAxes must be orthonormal with determinant +1");

@@ -146,6 +146,8 @@ double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec
 
 double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, double inEnergy)
 {
+    if (!ValidateDamageMaterial(inMaterial) || !(std::isfinite(inWidth) && inWidth > 0.0))
+        return 0.0;
     const double excess = inEnergy / inWidth - inMaterial.mCrushG;
     if (!(excess > 0.0))
         return 0.0;
@@ -159,7 +161,7 @@ double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, doub
 
 double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth)
 {
-    if (!(inDepth > 0.0))
+    if (!(inDepth > 0.0) || !ValidateDamageMaterial(inMaterial) || !(std::isfinite(inWidth) && inWidth > 0.0))
         return 0.0;
     return inWidth * (inMaterial.mCrushA * inDepth + 0.5 * inMaterial.mCrushB * inDepth * inDepth + inMaterial.mCrushG);
 }
@@ -168,7 +170,8 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
 {
     const double energy = ioCollision.AbsorbedEnergy();
     auto stiffness = [&](const CrushSide& inSide, ECollisionSide inWhich) {
-        if (inSide.mMaterial == nullptr)
+        // intent: a side whose material is not valid (a direct caller's) crushes nothing, as a rigid one
+        if (inSide.mMaterial == nullptr || !ValidateDamageMaterial(*inSide.mMaterial))
             return std::numeric_limits<double>::infinity();
         return inSide.mMaterial->mCrushB * CrushWidth(ioCollision, inWhich, inSide.mUp, inSide.mMaterial->mMinCrushWidth);
     };
@@ -193,7 +196,7 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
                                            const ffd::FfdDeformer& inDeformer)
 {
-    if (!(inEnergy > 0.0))
+    if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inMaterial))
         return std::nullopt;
     const std::optional<ffd::SurfaceProbe> footprint = FootprintOf(inCollision, inSide, inUp, inMaterial.mMinCrushWidth);
     if (!footprint)

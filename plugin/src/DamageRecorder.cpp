@@ -7,6 +7,9 @@
 #include <crumple/base/ByteWriter.h>
 #include <crumple/base/FileBytes.h>
 
+#include <limits>
+#include <string>
+
 namespace crumple::plugin
 {
 
@@ -84,6 +87,10 @@ Status DamageRecorder::WriteExtension(std::uint32_t inTag, std::span<const std::
         return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: the recorder is closed");
     if (mStatus.HasError())
         return mStatus;
+    // intent: a record's length field is 32 bits; a longer payload would be cut and the file lost
+    if (inPayload.size() > std::numeric_limits<std::uint32_t>::max() - sizeof(std::uint32_t))
+        return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: a payload of " + std::to_string(inPayload.size()) +
+                                                      " bytes is longer than a record holds (4 GiB)");
     ByteWriter writer;
     writer.WriteU32(inTag);
     writer.WriteBytes(inPayload);

@@ -160,12 +160,17 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     collision.mSequence = reader.ReadU64();
     collision.mCrushEnergyA = reader.ReadDouble();
     collision.mCrushEnergyB = reader.ReadDouble();
-    // Any finite, non-negative energy and impulse is what a writer can produce; what follows from them is
-    // bounded where it is used (a crush depth clamps to the material's maximum).
-    constexpr double cMaxEnergy = std::numeric_limits<double>::max();
+    // What a writer can produce: bodies within BodyState's ranges give impulses of at most about 1e28 N s and
+    // energies of about 1e44 J. The bounds leave room above those, and keep sums over a record's contacts
+    // finite; what follows from them is bounded where it is used (a crush depth clamps to the material's
+    // maximum).
+    constexpr double cMaxEnergy = 1.0e50;  // J
+    constexpr double cMaxImpulse = 1.0e30; // N s
     if (!(collision.mCrushEnergyA >= 0.0 && collision.mCrushEnergyA <= cMaxEnergy) ||
         !(collision.mCrushEnergyB >= 0.0 && collision.mCrushEnergyB <= cMaxEnergy))
-        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite or negative");
+        return MakeError(EError::CorruptData, "collision record: a crush energy is not finite, negative or beyond 1e50 J");
+    if (!std::isfinite(collision.mStartTime) || !std::isfinite(collision.mEndTime))
+        return MakeError(EError::CorruptData, "collision record: a time is not finite");
     std::uint32_t contacts = 0;
     if (!ReadCount(reader, 26 * 8, contacts))
         return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
@@ -185,7 +190,9 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mAbsorbedEnergy = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
-            !IsFinite(c.mLocalNormalOnB) || !std::isfinite(c.mImpulse) || c.mImpulse < 0.0 ||
+            !IsFinite(c.mLocalNormalOnB) || !(c.mImpulse >= 0.0 && c.mImpulse <= cMaxImpulse) || !IsFinite(c.mPointOnA) ||
+            !IsFinite(c.mPointOnB) || !IsFinite(c.mNormal) || !std::isfinite(c.mPenetrationDepth) ||
+            !std::isfinite(c.mApproachSpeed) || !std::isfinite(c.mTime) ||
             !(c.mAbsorbedEnergy >= 0.0 && c.mAbsorbedEnergy <= cMaxEnergy) ||
             std::abs(c.mLocalNormalOnA.norm() - 1.0) > 1.0e-6 || std::abs(c.mLocalNormalOnB.norm() - 1.0) > 1.0e-6)
             return MakeError(EError::CorruptData, "collision record: a contact is not finite, not unit or out of range");

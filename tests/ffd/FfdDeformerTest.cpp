@@ -292,6 +292,17 @@ TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
         REQUIRE(deformer.HasError());
         CHECK(deformer.GetError().mCode == EError::OutOfRange);
     }
+    SECTION("lattices too large, refused before any is built")
+    {
+        // Twenty zones of 256^3 controls would hold 8 GB of controls and cells: refused up front.
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        FfdDeformerSettings settings;
+        for (int zone = 0; zone < 20; ++zone)
+            settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {256, 256, 256}, 0.1));
+        Result<FfdDeformer> deformer = FfdDeformer::Create(mesh, settings);
+        REQUIRE(deformer.HasError());
+        CHECK(deformer.GetError().mMessage.find("cells in all") != std::string::npos);
+    }
     SECTION("an empty mesh")
     {
         FfdDeformerSettings settings;
@@ -477,12 +488,23 @@ TEST_CASE("Dents are bitwise identical on 1, 2 and 4 worker threads", "[ffd]")
     }
 }
 
-TEST_CASE("Dents past the double range cannot bypass the bounds", "[ffd]")
+TEST_CASE("Dents past any mesh's extent are refused whole, and the largest accepted cannot bypass the bounds", "[ffd]")
 {
-    // A dent of 1e200 m (finite, but its square overflows) with the default, unbounded step: the total
-    // bound must still hold; it is refused (scaled to nothing) rather than let through.
+    // Displacements beyond 1e6 m (the meshes' bound; 1e200 m and up overflow their squares) are refused before
+    // anything changes: one zone solving and another overflowing would otherwise apply half a dent.
+    for (double depth : {1.0e6 * 1.0001, 1.0e200, 1.0e300, 1.7e308})
+    {
+        INFO("depth " << depth);
+        FfdDeformer deformer = MakeDeformer();
+        const std::vector<Vec3> positions = deformer.GetPositions();
+        Result<DentReport> report = deformer.ApplyDent(FrontDent(depth));
+        REQUIRE(report.HasError());
+        CHECK(report.GetError().mCode == EError::OutOfRange);
+        CHECK(SameBytes(deformer.GetPositions(), positions));
+    }
+    // The deepest accepted dent with the default, unbounded step: the total bound still holds.
     const double max_total = 0.5;
-    for (double depth : {1.0e200, 1.0e300, 1.7e308})
+    for (double depth : {1.0e6})
     {
         INFO("depth " << depth);
         FfdDeformer deformer = MakeDeformer({8, 6, 6}, max_total);

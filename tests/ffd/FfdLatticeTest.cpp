@@ -54,6 +54,21 @@ TEST_CASE("FfdLattice refuses bad settings with a clear error", "[ffd]")
         settings.mSize.z() = std::numeric_limits<double>::infinity();
         CHECK(FfdLattice::Create(settings).GetError().mCode == EError::NonFinite);
     }
+    SECTION("an origin or a size beyond 1e7 m")
+    {
+        // A lattice 1e308 m across loses the precision of its coordinates: a dent at one end moved the other.
+        FfdLatticeSettings settings;
+        settings.mOrigin.x() = -1.7e308;
+        settings.mSize.x() = 1.7e308;
+        CHECK(FfdLattice::Create(settings).GetError().mCode == EError::OutOfRange);
+        settings = {};
+        settings.mSize.y() = 2.0e7;
+        CHECK(FfdLattice::Create(settings).GetError().mCode == EError::OutOfRange);
+        settings = {};
+        settings.mOrigin = Vec3(-1.0e7, 0.0, 1.0e7);
+        settings.mSize = Vec3(1.0e7, 1.0, 1.0);
+        CHECK(FfdLattice::Create(settings).IsValid());
+    }
     SECTION("axes that are not a rotation")
     {
         FfdLatticeSettings settings;

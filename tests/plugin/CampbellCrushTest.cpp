@@ -301,6 +301,33 @@ TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]"
     bad.mUpAxis = Vec3(0.0, 0.0, 2.0);
     refused(bad, "mUpAxis");
     CHECK(world.GetObjectIds().empty());
+
+    // The public helpers crush nothing with a material Create refuses, or across no width: a 1 J hit with a
+    // zero minimum width planned a 1.5 m crush, and two sides of zero stiffness shared NaN energies.
+    DamageMaterial zero_width = CampbellMaterial();
+    zero_width.mMinCrushWidth = 0.0;
+    CHECK(ValidateDamageMaterial(zero_width).HasError());
+    CHECK(ValidateDamageMaterial(CampbellMaterial()).IsValid());
+    CHECK(CampbellCrushDepth(zero_width, 1.0, 1.0e5) == 0.0);
+    CHECK(CampbellCrushDepth(CampbellMaterial(), 0.0, 1.0e5) == 0.0);
+    CHECK(CampbellCrushDepth(CampbellMaterial(), std::nan(""), 1.0e5) == 0.0);
+    CHECK(CampbellCrushEnergy(zero_width, 1.0, 0.3) == 0.0);
+    CHECK(CampbellCrushDepth(CampbellMaterial(), 1.0, 1.0e5) > 0.0);
+    DamageMaterial soft = CampbellMaterial();
+    soft.mCrushB = 0.0;
+    Collision collision;
+    CollisionContact contact;
+    contact.mLocalNormalOnA = Vec3::UnitX();
+    contact.mLocalNormalOnB = -Vec3::UnitX();
+    contact.mImpulse = 100.0;
+    contact.mAbsorbedEnergy = 500.0;
+    collision.mContacts.push_back(contact);
+    ShareCrushEnergy(collision, {&soft, Vec3::UnitZ()}, {&soft, Vec3::UnitZ()});
+    CHECK(collision.mCrushEnergyA == 0.0);
+    CHECK(collision.mCrushEnergyB == 0.0);
+    ShareCrushEnergy(collision, {&soft, Vec3::UnitZ()}, {nullptr, Vec3::UnitZ()});
+    CHECK(collision.mCrushEnergyA == 0.0); // the refused side crushes nothing
+    CHECK(collision.mCrushEnergyB == 0.0);
 }
 
 TEST_CASE("A crush plan changes exactly the controls its field reaches, as a scan of every control would", "[plugin]")

@@ -160,15 +160,26 @@ TEST_CASE("The replay fuzz regressions are in a format this library reads, so th
     // A version bump that refuses an old file at its header would make the regression pass without testing
     // anything (the three files below sat at version 5 behind versions 6 and 7). They are at version 7, the
     // oldest DecodeReplay reads (version 8 added rigid parts): they also show that an old recording replays.
-    // Convert them when the oldest version read moves past theirs.
+    // Convert them when the oldest version read moves past theirs. A file the decoder now refuses by its
+    // contents (replay_huge_impulse: an impulse past what bodies produce) must be refused at that record, past
+    // the header.
     int files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(CRUMPLE_SOURCE_DIR) / "fuzz/regressions/replay"))
     {
         const Result<Replay> replay = DecodeReplay(ReadFileBytes(entry.path()).Get());
-        INFO(entry.path().filename().string());
-        REQUIRE(replay);
-        CHECK_FALSE(replay.Get().mObjects.empty());
-        CHECK_FALSE(replay.Get().mCollisions.empty());
+        INFO(entry.path().filename().string() << ": " << (replay ? std::string("read") : replay.GetError().mMessage));
+        if (entry.path().filename() == "replay_huge_impulse")
+        {
+            REQUIRE(replay.HasError());
+            CHECK(replay.GetError().mCode == EError::CorruptData);
+            CHECK(replay.GetError().mMessage.find("collision record") != std::string::npos);
+        }
+        else
+        {
+            REQUIRE(replay);
+            CHECK_FALSE(replay.Get().mObjects.empty());
+            CHECK_FALSE(replay.Get().mCollisions.empty());
+        }
         ++files;
     }
     CHECK(files >= 3);
@@ -190,4 +201,55 @@ TEST_CASE("An interrupted recording never looks complete", "[plugin][replay]")
     CHECK(std::filesystem::exists(path)); // the destructor closes it properly
     CHECK(DecodeReplay(ReadFileBytes(path).Get()));
     CHECK(DamageRecorder::Create("/nonexistent-dir/x.crumple", fixture.mWorld).GetError().mCode == EError::IoError);
+}
+
+TEST_CASE("A recorded collision beyond what bodies can produce is refused, and a hand-made one dents finitely", "[plugin][replay]")
+{
+    // A file of one collision (no object) and its end record.
+    const auto file_of = [](const Collision& inCollision) {
+        std::vector<std::byte> bytes = EncodeReplayHeader();
+        const std::vector<std::byte> record = EncodeReplayRecord(EReplayRecord::Collision, EncodeCollision(inCollision));
+        bytes.insert(bytes.end(), record.begin(), record.end());
+        ByteWriter end;
+        end.WriteU32(0);
+        end.WriteU64(1);
+        const std::vector<std::byte> closing = EncodeReplayRecord(EReplayRecord::End, end.GetBytes());
+        bytes.insert(bytes.end(), closing.begin(), closing.end());
+        return bytes;
+    };
+    Collision collision;
+    CollisionContact contact;
+    contact.mLocalPointOnA = contact.mLocalPointOnB = Vec3(2.0, 0.0, 0.0);
+    contact.mLocalNormalOnA = Vec3::UnitX();
+    contact.mLocalNormalOnB = -Vec3::UnitX();
+    contact.mNormal = Vec3::UnitX();
+    contact.mImpulse = 1.0e3;
+    collision.mContacts = {contact, contact};
+    REQUIRE(DecodeReplay(file_of(collision)).IsValid());
+
+    Collision huge = collision;
+    huge.mContacts[1].mImpulse = 1.0e308; // finite, far past the 1e28 N s bodies can produce
+    CHECK(DecodeReplay(file_of(huge)).GetError().mCode == EError::CorruptData);
+    Collision timeless = collision;
+    timeless.mContacts[0].mTime = std::numeric_limits<double>::infinity();
+    CHECK(DecodeReplay(file_of(timeless)).GetError().mCode == EError::CorruptData);
+    Collision pointless = collision;
+    pointless.mContacts[0].mPointOnB.y() = std::nan("");
+    CHECK(DecodeReplay(file_of(pointless)).GetError().mCode == EError::CorruptData);
+
+    // Handed straight to an object (impulse-factor dents), impulses whose weighted sum overflows still make a
+    // finite dent of the material's maximum depth along their common normal.
+    DeformableObjectSettings settings;
+    settings.mMesh = MakeBoxMesh(Vec3(2.0, 0.8, 0.6), {8, 4, 4});
+    settings.mMaterial.mModel = ECrushModel::ImpulseFactor;
+    DeformableObject object = DeformableObject::Create(settings).Get();
+    huge.mContacts[0].mImpulse = 1.0e308;
+    const std::vector<ffd::PointDisplacement> dent = object.DentFor(huge, ECollisionSide::A);
+    REQUIRE(dent.size() == 2);
+    for (const ffd::PointDisplacement& point : dent)
+        CHECK(point.mDisplacement == settings.mMaterial.mMaxInstantDeformation * contact.mLocalNormalOnA);
+    const ffd::DentReport report = object.ApplyCollision(huge, ECollisionSide::A);
+    CHECK(report.mVerticesMoved > 0);
+    for (const Vec3& position : object.GetDeformer().GetPositions())
+        CHECK(IsFinite(position));
 }

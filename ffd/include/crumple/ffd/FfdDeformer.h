@@ -49,7 +49,8 @@ public:
     /// that respects both on every vertex. Then, unless mMinControlSpacing is 0, the fold guard (FoldGuard.h)
     /// pushes along any control that the scaled dent would push closer than that to its neighbour on a
     /// lattice line, and the bounds are checked again on the guarded dent, so the surface cannot fold.
-    /// A NaN/Inf anywhere refuses the whole dent and changes nothing.
+    /// A NaN/Inf anywhere, or a displacement beyond cMaxMeshCoordinate, refuses the whole dent and changes
+    /// nothing.
     /// A dent whose displacements are all zero changes no byte.
     /// @param[in] inMaxStep  bound on how far this dent may move any vertex (m), >= 0
     Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,

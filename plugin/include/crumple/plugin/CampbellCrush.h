@@ -51,9 +51,11 @@ struct CRUMPLE_API CrushPlan
 CRUMPLE_API double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
 
 /// Depth C (m) at which a structure of width inWidth has absorbed inEnergy by Campbell's law
-/// E / w = A C + B C^2 / 2 + G: 0 while E / w <= G.
+/// E / w = A C + B C^2 / 2 + G: 0 while E / w <= G, and 0 for a material ValidateDamageMaterial refuses or a
+/// width that is not finite and > 0.
 CRUMPLE_API double CampbellCrushDepth(const DamageMaterial& inMaterial, double inWidth, double inEnergy);
-/// Energy (J) a structure of width inWidth absorbs to reach crush inDepth (0 at 0 crush): the inverse.
+/// Energy (J) a structure of width inWidth absorbs to reach crush inDepth (0 at 0 crush): the inverse (0 for
+/// a refused material or width, as CampbellCrushDepth).
 CRUMPLE_API double CampbellCrushEnergy(const DamageMaterial& inMaterial, double inWidth, double inDepth);
 
 /// One side of a collision, for the split of its energy: the material of its Campbell object (null: the side
@@ -66,12 +68,13 @@ struct CRUMPLE_API CrushSide
 
 /// Sets the collision's mCrushEnergyA and mCrushEnergyB: its absorbed energy split between the sides in
 /// inverse proportion to their crush stiffness B w (two structures in series carry the same force, and each
-/// stores about F^2 / (2 k)). A side that does not crush takes none and the other all of it.
+/// stores about F^2 / (2 k)). A side that does not crush (no material, or one ValidateDamageMaterial refuses)
+/// takes none and the other all of it.
 CRUMPLE_API void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushSide& inB);
 
 /// The crush a collision with inEnergy (J) for this side makes on a body whose deformer is inDeformer; empty
 /// when there is nothing to crush (no closing contact, the energy below G, no vertex in the footprint,
-/// or a depth under the material's minimum).
+/// or a depth under the material's minimum) or the material is one ValidateDamageMaterial refuses.
 CRUMPLE_API std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
                                            const ffd::FfdDeformer& inDeformer);

@@ -4,6 +4,8 @@
 
 #include <crumple/base/Export.h>
 
+#include <crumple/base/Result.h>
+
 #include <cstdint>
 
 namespace crumple::plugin
@@ -57,5 +59,10 @@ struct CRUMPLE_API DamageMaterial
     /// depth behind the impactor's final face (sheet-metal crush tubes fold to about a quarter of their length).
     double mCrushedLengthFraction = 0.25;
 };
+
+/// Checks a material at the API boundary: every field finite and within the range its comment gives, and a
+/// known model. The message names the offending field. DeformableObject::Create refuses what this refuses;
+/// the Campbell helpers (CampbellCrush.h) crush nothing with such a material.
+CRUMPLE_API Status ValidateDamageMaterial(const DamageMaterial& inMaterial);
 
 } // namespace crumple::plugin

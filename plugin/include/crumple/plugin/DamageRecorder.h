@@ -43,7 +43,7 @@ public:
 
     /// Writes a record of a layer above the core (EReplayRecord::Extension: inTag, then inPayload) now, after
     /// the collisions recorded so far; DecodeReplay hands it back in Replay::mExtensions. Refused after
-    /// Close() or a write error.
+    /// Close() or a write error, and for a payload longer than a record holds (2^32 - 5 bytes), writing nothing.
     Status WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload);
 
     /// Records written so far.

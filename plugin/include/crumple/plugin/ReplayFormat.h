@@ -76,7 +76,9 @@ CRUMPLE_API std::vector<std::byte> EncodeRecordedObject(const RecordedObject& in
 CRUMPLE_API std::vector<std::byte> EncodeCollision(const Collision& inCollision);
 
 /// Parses and checks a whole replay file: magic, version, every record's CRC and length, the end record's
-/// counts, finite values, valid meshes. Refused with a message naming the record on any problem.
+/// counts, and each collision's values (finite, unit normals, impulses and energies within their bounds).
+/// Refused with a message naming the record on any problem. The objects' meshes, materials and lattices are
+/// checked when they are built (CreateReplayedObjects, by DeformableObject::Create), not here.
 CRUMPLE_API Result<Replay> DecodeReplay(std::span<const std::byte> inBytes);
 
 } // namespace crumple::plugin
