@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/CubicBSplineWeights.h>
+#include <crumple/base/Assert.h>
 #include <crumple/ffd/FfdLattice.h>
 
 #include <algorithm>
@@ -109,6 +110,10 @@ Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation, std::span<const
     const int nx = mSettings.mControlCount[0];
     const int nxy = nx * mSettings.mControlCount[1];
     const int base = ControlIndex(inLocation.mCell[0], inLocation.mCell[1], inLocation.mCell[2]);
+    CRUMPLE_ASSERT(inControls.size() == static_cast<std::size_t>(GetControlCount()) && inLocation.mCell[0] >= 0 &&
+                       inLocation.mCell[1] >= 0 && inLocation.mCell[2] >= 0 && inLocation.mCell[0] < mCellCount[0] &&
+                       inLocation.mCell[1] < mCellCount[1] && inLocation.mCell[2] < mCellCount[2],
+                   "FfdLattice::Displacement: a location outside the lattice or controls of another lattice");
 
     // Fixed summation order (c, b, a) so the result is bitwise reproducible.
     Vec3 sum = Vec3::Zero();

@@ -13,6 +13,8 @@ Status ValidateTriangleMesh(const TriangleMesh& inMesh)
         return MakeError(EError::DegenerateGeometry, "TriangleMesh is empty: it needs vertices and triangles");
     if (inMesh.mPositions.size() > 0xFFFFFFFEu)
         return MakeError(EError::InvalidArgument, "TriangleMesh has more than 2^32 - 2 vertices");
+    if (inMesh.mTriangles.size() > 0xFFFFFFFFu / 3)
+        return MakeError(EError::InvalidArgument, "TriangleMesh has more than (2^32 - 1) / 3 triangles");
     for (std::size_t v = 0; v < inMesh.mPositions.size(); ++v)
     {
         if (!IsFinite(inMesh.mPositions[v]))

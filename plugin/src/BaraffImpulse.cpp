@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/plugin/BaraffImpulse.h>
 
 #include <Eigen/QR>
@@ -34,6 +35,8 @@ double RelativeNormalVelocity(const BodyState& inA, const BodyState& inB, const 
 double BaraffImpulse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal,
                      double inRestitution)
 {
+    CRUMPLE_ASSERT(inRestitution >= 0.0 && inRestitution <= 1.0 && std::abs(inNormal.norm() - 1.0) <= 1.0e-6,
+                   "BaraffImpulse: restitution outside [0, 1] or a normal that is not unit");
     const double v_rel = RelativeNormalVelocity(inA, inB, inPoint, inNormal);
     if (!(v_rel < 0.0))
         return 0.0;
@@ -48,6 +51,8 @@ std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& 
                                          std::span<const ImpulseContact> inContacts, double inRestitution,
                                          double inClosingSpeed)
 {
+    CRUMPLE_ASSERT(inRestitution >= 0.0 && inRestitution <= 1.0 && inClosingSpeed >= 0.0,
+                   "SimultaneousImpulses: restitution outside [0, 1] or a negative closing speed");
     const std::size_t n = inContacts.size();
     std::vector<double> impulses(n, 0.0);
     std::vector<double> v_rel(n);

@@ -26,6 +26,18 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
             return MakeError(EError::OutOfRange, "FragmentBody: fragment node " + std::to_string(node) + " is not a node");
     if (Status state = plugin::ValidateBodyState(inPropBody); !state)
         return state.GetError();
+    // intent: the nodes' lumped masses are the fragment's mass shared out (the body's momentum is theirs)
+    double fragment_nodes_mass = 0.0;
+    for (int node : inFragment.mNodes)
+    {
+        const double m = inMasses[static_cast<std::size_t>(node)];
+        if (!(std::isfinite(m) && m >= 0.0))
+            return MakeError(EError::InvalidArgument, "FragmentBody: node " + std::to_string(node) + "'s mass is not finite and >= 0 kg");
+        fragment_nodes_mass += m;
+    }
+    if (!(std::abs(fragment_nodes_mass - inFragment.mMass) <= 1.0e-9 * inFragment.mMass))
+        return MakeError(EError::InvalidArgument, "FragmentBody: the nodes' masses (" + std::to_string(fragment_nodes_mass) +
+                                                      " kg) are not the fragment's (" + std::to_string(inFragment.mMass) + " kg)");
 
     // intent: the principal frame of the fragment's inertia, right-handed, moments ascending
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inFragment.mInertia);

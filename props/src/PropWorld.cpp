@@ -264,7 +264,8 @@ Status PropWorld::ValidateShapeQuery(PropId inProp, double inCellSize, const cha
     if (inProp.mValue >= mProps.size())
         return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": no prop " + std::to_string(inProp.mValue));
     if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
-        return MakeError(EError::InvalidArgument, std::string("PropWorld::") + inWhat + ": the cell size must be finite and > 0 m");
+        return MakeError(std::isfinite(inCellSize) ? EError::InvalidArgument : EError::NonFinite,
+                         std::string("PropWorld::") + inWhat + ": the cell size must be finite and > 0 m");
     return Status::Ok();
 }
 

@@ -65,7 +65,9 @@ public:
 
     /// Displacement (m, body frame) of a point at inLocation: the tensor-product sum over its 64 controls.
     Vec3 Displacement(const LatticeLocation& inLocation) const { return Displacement(inLocation, mControlDisplacements); }
-    /// The same sum over another set of control displacements (#controls, ControlIndex order).
+    /// The same sum over another set of control displacements (#controls, ControlIndex order). Preconditions
+    /// (checked by assertion only: it runs per vertex): inControls holds GetControlCount() entries and
+    /// inLocation comes from Locate() of this lattice.
     Vec3 Displacement(const LatticeLocation& inLocation, std::span<const Vec3> inControls) const;
 
     /// Control displacements, body frame (m), indexed by ControlIndex.

@@ -25,8 +25,9 @@ struct CRUMPLE_API TriangleMesh
 /// inside the double range that edge cross products (normals, areas) and dents cannot overflow.
 constexpr double cMaxMeshCoordinate = 1.0e6;
 
-/// Checks a mesh at the API boundary: at least one triangle, finite positions within cMaxMeshCoordinate of
-/// the origin, indices in range.
+/// Checks a mesh at the API boundary: at least one triangle, at most 2^32 - 2 vertices and (2^32 - 1) / 3
+/// triangles (a deformer indexes corners in 32 bits), finite positions within cMaxMeshCoordinate of the
+/// origin, indices in range.
 CRUMPLE_API Status ValidateTriangleMesh(const TriangleMesh& inMesh);
 
 } // namespace crumple::ffd

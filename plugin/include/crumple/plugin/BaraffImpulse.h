@@ -25,6 +25,9 @@ CRUMPLE_API double RelativeNormalVelocity(const BodyState& inA, const BodyState&
 /// @param[in] inPoint          contact point, world frame (m)
 /// @param[in] inNormal         unit normal from B to A, world frame
 /// @param[in] inRestitution    coefficient of restitution e in [0, 1]
+/// These are the solver's kernels, without an error channel: their inputs are validated where they enter the
+/// library (DamageWorld::SubmitContacts, DamageWorldSettings), and a direct caller must keep to the ranges
+/// above (a debug build asserts them).
 CRUMPLE_API double BaraffImpulse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal,
                      double inRestitution);
 
