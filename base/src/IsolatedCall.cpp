@@ -73,8 +73,9 @@ Result<std::vector<std::byte>> DecodeAnswer(std::span<const std::byte> inBytes, 
 Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
                                            double inTimeout, const std::string& inWhat)
 {
-    if (!(inTimeout > 0.0) || !std::isfinite(inTimeout))
-        return MakeError(EError::InvalidArgument, inWhat + ": the isolated reader's timeout must be finite and > 0 s");
+    // intent: bounded so that the CPU limit's integer seconds hold it (1e20 s became a limit of 1 s)
+    if (!(inTimeout > 0.0 && inTimeout <= cMaxIsolatedTimeout))
+        return MakeError(EError::InvalidArgument, inWhat + ": the isolated reader's timeout must be in (0, 1e6] s");
 #if defined(__unix__) || defined(__APPLE__)
     int channel[2];
     if (pipe(channel) != 0)

@@ -43,12 +43,20 @@ Result<FemMaterial> FemMaterial::Create(const FemMaterialSettings& inSettings)
     if (!(inSettings.mYoungsModulus > 0.0))
         return FieldError(EError::InvalidArgument, "mYoungsModulus", inSettings.mYoungsModulus, "Pa",
                           "must be > 0");
+    if (!(inSettings.mYoungsModulus <= FemMaterialSettings::cMaxYoungsModulus))
+        return FieldError(EError::OutOfRange, "mYoungsModulus", inSettings.mYoungsModulus, "Pa", "must be at most 1e15");
     if (!(inSettings.mPoissonRatio > -1.0 &&
           inSettings.mPoissonRatio <= FemMaterialSettings::cMaxPoissonRatio))
         return FieldError(EError::InvalidArgument, "mPoissonRatio", inSettings.mPoissonRatio, "",
                           "must lie in (-1, 0.495]; 0.5 (incompressible) makes lambda infinite");
     if (!(inSettings.mDensity > 0.0))
         return FieldError(EError::InvalidArgument, "mDensity", inSettings.mDensity, "kg/m^3", "must be > 0");
+    if (!(inSettings.mDensity >= FemMaterialSettings::cMinDensity && inSettings.mDensity <= FemMaterialSettings::cMaxDensity))
+        return FieldError(EError::OutOfRange, "mDensity", inSettings.mDensity, "kg/m^3", "must lie in [1e-6, 1e8]");
+    if (!(inSettings.mMassDamping <= FemMaterialSettings::cMaxMassDamping))
+        return FieldError(EError::OutOfRange, "mMassDamping", inSettings.mMassDamping, "1/s", "must be at most 1e9");
+    if (!(inSettings.mStiffnessDamping <= FemMaterialSettings::cMaxStiffnessDamping))
+        return FieldError(EError::OutOfRange, "mStiffnessDamping", inSettings.mStiffnessDamping, "s", "must be at most 1e3");
     if (!(inSettings.mMassDamping >= 0.0))
         return FieldError(EError::InvalidArgument, "mMassDamping", inSettings.mMassDamping, "1/s",
                           "must be >= 0 (negative damping adds energy)");

@@ -33,17 +33,37 @@ Status ReadNodeList(ByteReader& ioReader, std::uint32_t inCount, std::uint32_t i
     return Status::Ok();
 }
 
+// A node list DecodeHexCompliance would take: indices in [0, inNodeCount), none twice.
+bool IsNodeList(const std::vector<int>& inNodes, int inNodeCount)
+{
+    std::vector<char> seen(static_cast<std::size_t>(inNodeCount), 0);
+    for (int node : inNodes)
+    {
+        if (node < 0 || node >= inNodeCount || seen[static_cast<std::size_t>(node)] != 0)
+            return false;
+        seen[static_cast<std::size_t>(node)] = 1;
+    }
+    return true;
+}
+
 } // namespace
 
 Result<std::vector<std::byte>> EncodeHexCompliance(const HexCompliance& inCompliance)
 {
-    // Only a consistent compliance can be decoded again.
+    // Only what DecodeHexCompliance takes is written: a file Save writes over a good one must load again.
     const Eigen::Index rows = 3 * static_cast<Eigen::Index>(inCompliance.mOutputNodes.size());
     const Eigen::Index cols = 3 * static_cast<Eigen::Index>(inCompliance.mLoadNodes.size());
     if (cols == 0 || rows == 0 || inCompliance.mMatrix.rows() != rows || inCompliance.mMatrix.cols() != cols ||
-        inCompliance.mNodeCount <= 0)
+        inCompliance.mNodeCount <= 0 || inCompliance.mNodeCount > HexMesh::cMaxNodeCount)
         return MakeError(EError::InvalidArgument,
-                         "EncodeHexCompliance: the compliance is empty or its matrix does not match its node lists");
+                         "EncodeHexCompliance: the compliance is empty, has too many nodes, or its matrix does not match "
+                         "its node lists");
+    if (!IsNodeList(inCompliance.mLoadNodes, inCompliance.mNodeCount) ||
+        !IsNodeList(inCompliance.mOutputNodes, inCompliance.mNodeCount))
+        return MakeError(EError::InvalidArgument,
+                         "EncodeHexCompliance: a load or output node is out of range or repeated");
+    if (!IsFinite(inCompliance.mMatrix))
+        return MakeError(EError::NonFinite, "EncodeHexCompliance: the matrix holds a non-finite entry");
 
     ByteWriter writer;
     writer.WriteTag(cHexComplianceMagic);

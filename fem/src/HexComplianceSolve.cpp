@@ -27,6 +27,11 @@ Result<Eigen::VectorXd> HexComplianceSolve(const HexCompliance& inCompliance, co
 
     // One dense product.
     Eigen::VectorXd displacements = inCompliance.mMatrix * inLoadForces;
+    // intent: a non-finite entry of a hand-made matrix, or forces whose product overflows, show here (checking the
+    // displacements costs O(#output), the matrix O(#output #load))
+    if (!IsFinite(displacements))
+        return MakeError(EError::NonFinite, "HexComplianceSolve: the displacements are not finite (a non-finite compliance "
+                                            "entry, or forces too large for it)");
     return displacements;
 }
 

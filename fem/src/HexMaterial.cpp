@@ -3,6 +3,7 @@
 #include "HexFormat.h"
 
 #include <crumple/base/Math.h>
+#include <crumple/fem/FemMaterialSettings.h>
 #include <crumple/fem/HexMaterial.h>
 
 namespace crumple::fem
@@ -18,6 +19,10 @@ Result<HexMaterial> HexMaterial::Create(const HexMaterialSettings& inSettings)
     if (!(inSettings.mYoungsModulus > 0.0))
         return MakeError(EError::InvalidArgument, "HexMaterialSettings.mYoungsModulus = " +
                                                       HexFormat(inSettings.mYoungsModulus) + " Pa must be > 0");
+    // intent: the elasticity matrix's largest entry, about 33 E at the highest Poisson ratio, stays finite
+    if (!(inSettings.mYoungsModulus <= FemMaterialSettings::cMaxYoungsModulus))
+        return MakeError(EError::OutOfRange, "HexMaterialSettings.mYoungsModulus = " + HexFormat(inSettings.mYoungsModulus) +
+                                                 " Pa must be at most 1e15 (FemMaterialSettings::cMaxYoungsModulus)");
     if (!(inSettings.mPoissonRatio > -1.0 && inSettings.mPoissonRatio < 0.5))
         return MakeError(EError::InvalidArgument, "HexMaterialSettings.mPoissonRatio = " +
                                                       HexFormat(inSettings.mPoissonRatio) +

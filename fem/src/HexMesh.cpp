@@ -56,6 +56,10 @@ Result<HexMesh> HexMesh::Create(const HexMeshSettings& inSettings)
                 for (int axis = 0; axis < 3; ++axis)
                     nodes(index, axis) = inSettings.mOrigin[axis] + inSettings.mSize[axis] * ijk[axis] / n[axis];
             }
+    // intent: a finite size near the double range overflows size * i before the division
+    if (!nodes.allFinite())
+        return MakeError(EError::NonFinite, "HexMeshSettings: origin + size * i / n is not finite for every node "
+                                            "(a size near the double range)");
 
     // Cells: corner c sits at grid offset ((c + 1) / 2 % 2, c / 2 % 2, c / 4), matching cHexCornerSigns.
     HexElementMatrix elements(n[0] * n[1] * n[2], 8);

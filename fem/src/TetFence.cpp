@@ -61,6 +61,12 @@ Result<TetFence> MakeTetFence(const TetFenceSettings& inSettings)
     grid.mSplit = inSettings.mSplit;
     const std::array<int, 3>& n = grid.mCellCount;
     const double dx = inSettings.mLength / n[0], dz = inSettings.mHeight / n[2];
+    // intent: no more posts or rails than cells to hold them (INT_MAX rails overflowed, a 2e-9 m spacing looped
+    // for seconds, and 1e-9 m was cut to one interval by the integer conversion)
+    if (!(inSettings.mLength / inSettings.mPostSpacing <= static_cast<double>(n[0])))
+        return FieldError("mPostSpacing", inSettings.mPostSpacing, "makes more posts than the fence has cells along its length");
+    if (inSettings.mRailCount > n[2])
+        return FieldError("mRailCount", inSettings.mRailCount, "is more than the fence has cells up its height");
 
     // Posts and rails snapped to whole cells: round(w / d) cells (at least one) starting at the cell nearest
     // to c - w/2. A relative bias of 1e-9 breaks the tie of a centre exactly on a cell boundary towards +,

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/fem/TetFragment.h>
 
 #include "UnionFindRoot.h"
@@ -14,6 +15,14 @@ std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<co
                                       std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
                                       std::span<const double> inInverseMasses)
 {
+    CRUMPLE_ASSERT(inElementMasses.size() == inElementNodes.size() && inInverseMasses.size() == inPositions.size() &&
+                       std::all_of(inElementNodes.begin(), inElementNodes.end(),
+                                   [&](const TetIndices& inNodes) {
+                                       return std::all_of(inNodes.begin(), inNodes.end(), [&](int inNode) {
+                                           return inNode >= 0 && static_cast<std::size_t>(inNode) < inPositions.size();
+                                       });
+                                   }),
+                   "TetFragments: arrays of different sizes, or a node that is not there");
     // Elements joined through shared current nodes (fracture has duplicated the nodes of open cracks).
     std::vector<int> parent(inPositions.size());
     std::iota(parent.begin(), parent.end(), 0);

@@ -69,11 +69,11 @@ Result<TetMesh> TetGridCells(const TetGridSettings& inSettings, std::span<const 
             return MakeError(EError::InvalidArgument,
                              "TetGridSettings.mCellCount[" + std::to_string(axis) +
                                  "] = " + std::to_string(inSettings.mCellCount[axis]) + " must be >= 1");
+        // intent: checked as it grows (each factor is at most 2^22, so no product overflows before the check)
         cells *= inSettings.mCellCount[axis];
+        if (cells > TetGridSettings::cMaxCells)
+            return MakeError(EError::InvalidArgument, "TetGridSettings.mCellCount: more than the 2^22 cells allowed");
     }
-    if (cells > TetGridSettings::cMaxCells)
-        return MakeError(EError::InvalidArgument, "TetGridSettings.mCellCount: " + std::to_string(cells) +
-                                                      " cells is more than the 2^22 allowed");
     if (inSettings.mSplit != ECubeSplit::Five && inSettings.mSplit != ECubeSplit::Six)
         return MakeError(EError::InvalidArgument, "TetGridSettings.mSplit is not an ECubeSplit");
     if (!inKeepCells.empty() && static_cast<long long>(inKeepCells.size()) != cells)

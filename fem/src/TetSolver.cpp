@@ -23,6 +23,18 @@ namespace crumple::fem
 namespace
 {
 
+// Within TetSolver::cMaxStateMagnitude in every coordinate (and so finite): squares, energies and their sums
+// over the nodes stay finite.
+bool WithinStateBound(const Vec3& inValue)
+{
+    return IsFinite(inValue) && inValue.cwiseAbs().maxCoeff() <= TetSolver::cMaxStateMagnitude;
+}
+
+bool AllWithinStateBound(std::span<const Vec3> inValues)
+{
+    return std::all_of(inValues.begin(), inValues.end(), [](const Vec3& inValue) { return WithinStateBound(inValue); });
+}
+
 // "TetSolverSettings.mX = v: reason", the message of every refused setting.
 Error SettingError(const char* inField, double inValue, const char* inReason)
 {
@@ -331,9 +343,10 @@ Status TetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
         return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: impulse on node " +
                                                 std::to_string(inNode) + " must be finite");
     const Vec3 velocity = mVelocities[inNode] + mInverseMasses[inNode] * inImpulse;
-    if (!IsFinite(velocity))
-        return MakeError(EError::NonFinite, "TetSolver::ApplyImpulse: the impulse on node " + std::to_string(inNode) +
-                                                " would leave it moving at an infinite speed");
+    if (!WithinStateBound(velocity))
+        return MakeError(IsFinite(velocity) ? EError::OutOfRange : EError::NonFinite,
+                         "TetSolver::ApplyImpulse: the impulse on node " + std::to_string(inNode) +
+                             " would leave it moving faster than 1e100 m/s (cMaxStateMagnitude)");
     mVelocities[inNode] = velocity;
     InputChanged();
     return Status::Ok();
@@ -346,6 +359,9 @@ Status TetSolver::SetExternalForce(int inNode, const Vec3& inForce)
     if (!IsFinite(inForce))
         return MakeError(EError::NonFinite, "TetSolver::SetExternalForce: force on node " +
                                                 std::to_string(inNode) + " must be finite");
+    if (!WithinStateBound(inForce))
+        return MakeError(EError::OutOfRange, "TetSolver::SetExternalForce: force on node " + std::to_string(inNode) +
+                                                 " beyond 1e100 N (cMaxStateMagnitude)");
     mExternalForces[inNode] = inForce;
     InputChanged();
     return Status::Ok();
@@ -362,6 +378,8 @@ Status TetSolver::SetGravity(const Vec3& inGravity)
 {
     if (!IsFinite(inGravity))
         return MakeError(EError::NonFinite, "TetSolver::SetGravity: gravity must be finite");
+    if (!WithinStateBound(inGravity))
+        return MakeError(EError::OutOfRange, "TetSolver::SetGravity: gravity beyond 1e100 m/s^2 (cMaxStateMagnitude)");
     mSettings.mGravity = inGravity;
     InputChanged();
     return Status::Ok();
@@ -375,6 +393,8 @@ Status TetSolver::SetPositions(std::span<const Vec3> inPositions)
                              " positions for " + std::to_string(mPositions.size()) + " nodes");
     if (!AllFinite(inPositions))
         return MakeError(EError::NonFinite, "TetSolver::SetPositions: positions must be finite");
+    if (!AllWithinStateBound(inPositions))
+        return MakeError(EError::OutOfRange, "TetSolver::SetPositions: a position beyond 1e100 m (cMaxStateMagnitude)");
     std::copy(inPositions.begin(), inPositions.end(), mPositions.begin());
     InputChanged();
     return Status::Ok();
@@ -388,6 +408,8 @@ Status TetSolver::SetVelocities(std::span<const Vec3> inVelocities)
                              " velocities for " + std::to_string(mVelocities.size()) + " nodes");
     if (!AllFinite(inVelocities))
         return MakeError(EError::NonFinite, "TetSolver::SetVelocities: velocities must be finite");
+    if (!AllWithinStateBound(inVelocities))
+        return MakeError(EError::OutOfRange, "TetSolver::SetVelocities: a velocity beyond 1e100 m/s (cMaxStateMagnitude)");
     for (std::size_t node = 0; node < mVelocities.size(); ++node)
         mVelocities[node] = mInverseMasses[node] > 0.0 ? inVelocities[node] : Vec3::Zero();
     InputChanged();
@@ -895,9 +917,12 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
         load_norm += force.squaredNorm();
     load_norm = std::sqrt(load_norm);
 
-    // Keep the state to restore when the iteration fails.
+    // Keep the state to restore when the iteration fails (with the last step's force pass, which the next
+    // step takes as its first when the nodes have not moved).
     mSavedPositions = mPositions;
     mSavedRotations = mRotations;
+    std::vector<Vec3> saved_forces = mForces;
+    std::vector<TetLinearization> saved_linearization = mLinearization;
 
     const TetElementPassInput input = ParallelPassInput();
     TetStaticResult result;
@@ -978,9 +1003,11 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
             mPositions[node] += delta_x[node];
     }
 
-    // Not converged: put everything back.
+    // Not converged: put everything back, the force pass the next step may take as its first included.
     mPositions = mSavedPositions;
     mRotations = mSavedRotations;
+    mForces = std::move(saved_forces);
+    mLinearization = std::move(saved_linearization);
     std::ostringstream message;
     message << "TetSolver::SolveStatic: no equilibrium after " << result.mIterations << " linearisations and "
             << result.mSolverIterations << " CG iterations (relative residual " << result.mRelativeResidual

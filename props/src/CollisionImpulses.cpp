@@ -85,8 +85,9 @@ Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<co
     }
     for (const auto& [node, velocity] : after)
         if (!IsFinite(velocity) || !(velocity.cwiseAbs().maxCoeff() <= inLimit))
-            return MakeError(EError::NonFinite, "CheckNodalImpulses: the impulses would leave node " + std::to_string(node) +
-                                                    " moving faster than its solver holds");
+            return MakeError(IsFinite(velocity) ? EError::OutOfRange : EError::NonFinite,
+                             "CheckNodalImpulses: the impulses would leave node " + std::to_string(node) +
+                                 " moving faster than its solver holds");
     return Status::Ok();
 }
 
@@ -97,7 +98,7 @@ Status ApplyCollision(TetSolver& ioSolver, const plugin::Collision& inCollision,
     if (impulses.HasError())
         return impulses.GetError();
     if (Status fits = CheckNodalImpulses(impulses.Get(), ioSolver.GetVelocities(), ioSolver.GetInverseMasses(),
-                                         std::numeric_limits<double>::max());
+                                         TetSolver::cMaxStateMagnitude);
         fits.HasError())
         return fits;
     // Every node index comes from the solver's own connectivity and every velocity stays finite: nothing below

@@ -172,10 +172,10 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     ReadVelocities(velocities);
 #if defined(CRUMPLE_PROPS_WITH_GPU)
     const std::vector<double>& inverse_masses = mGpu ? mGpu->GetInverseMasses() : mCpu->GetInverseMasses();
-    const double limit = mGpu ? static_cast<double>(std::numeric_limits<float>::max()) : std::numeric_limits<double>::max();
+    const double limit = mGpu ? static_cast<double>(std::numeric_limits<float>::max()) : fem::TetSolver::cMaxStateMagnitude;
 #else
     const std::vector<double>& inverse_masses = mCpu->GetInverseMasses();
-    const double limit = std::numeric_limits<double>::max();
+    const double limit = fem::TetSolver::cMaxStateMagnitude;
 #endif
     if (Status fits = CheckNodalImpulses(impulses.Get(), velocities, inverse_masses, limit); fits.HasError())
         return fits;

@@ -95,9 +95,16 @@ TEST_CASE("Explicit Euler beyond the limit blows up (the paper's instability); t
         const double dt = 3.0 * solver.GetStableTimeStep() / settings.mStabilitySafetyFactor;
         std::vector<Vec3> x = solver.GetPositions(), v = solver.GetVelocities(), forces;
         TetSolver probe = solver;
-        for (int step = 0; step < 200; ++step)
+        bool beyond_bound = false; // past what a solver takes (TetSolver::cMaxStateMagnitude): blown up
+        for (int step = 0; step < 200 && !beyond_bound; ++step)
         {
-            REQUIRE(probe.SetPositions(x).IsValid());
+            if (const Status set = probe.SetPositions(x); set.HasError())
+            {
+                REQUIRE((set.GetError().mCode == EError::OutOfRange || set.GetError().mCode == EError::NonFinite));
+                WARN("fixed-step explicit Euler at 3x the bound: positions past 1e100 m after " << step << " steps");
+                beyond_bound = true;
+                break;
+            }
             probe.ElasticForces(forces);
             for (std::size_t node = 0; node < x.size(); ++node)
             {
@@ -105,12 +112,15 @@ TEST_CASE("Explicit Euler beyond the limit blows up (the paper's instability); t
                 x[node] += dt * v[node];
             }
         }
-        REQUIRE(probe.SetPositions(x).IsValid());
-        REQUIRE(probe.SetVelocities(v).IsValid());
-        const double energy = probe.TotalEnergy();
-        WARN("fixed-step explicit Euler at 3x the bound: energy " << solver.TotalEnergy() << " J -> "
-                                                                  << energy << " J after 200 steps");
-        CHECK(!(energy < 1.0e3 * solver.TotalEnergy())); // blown up (or already non-finite)
+        if (!beyond_bound)
+        {
+            REQUIRE(probe.SetPositions(x).IsValid());
+            REQUIRE(probe.SetVelocities(v).IsValid());
+            const double energy = probe.TotalEnergy();
+            WARN("fixed-step explicit Euler at 3x the bound: energy " << solver.TotalEnergy() << " J -> "
+                                                                      << energy << " J after 200 steps");
+            CHECK(!(energy < 1.0e3 * solver.TotalEnergy())); // blown up (or already non-finite)
+        }
     }
 
     // The solver at any requested step: sub-stepped, energy conserved to a few percent, never diverged.

@@ -210,7 +210,9 @@ TEST_CASE("Open and corrupt input is refused without running tetgen", "[fem][imp
         bad.mMaxRadiusEdgeRatio = ratio;
         CHECK(Tetrahedralize(closed, bad).GetError().mCode == EError::InvalidArgument);
     }
-    for (const double volume : {-1.0, std::numeric_limits<double>::infinity()})
+    // A volume bound asking for more elements than a TetMesh holds (the unit sphere's 4 m^3 in pieces of
+    // 1e-9 m^3), and the negative and infinite ones.
+    for (const double volume : {-1.0, std::numeric_limits<double>::infinity(), 1.0e-9})
     {
         TetgenSettings bad = settings;
         bad.mMaxVolume = volume;

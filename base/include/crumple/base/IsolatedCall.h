@@ -14,6 +14,9 @@
 namespace crumple
 {
 
+/// The longest timeout RunIsolated takes (s): eleven days, and an integer CPU limit holds it exactly.
+constexpr double cMaxIsolatedTimeout = 1.0e6;
+
 /// Runs inWork in a child process and returns the bytes it produced, or its error: a third-party parser
 /// that crashes, aborts or hangs on an untrusted file (assimp does, on some malformed OBJ, PLY, OFF and glTF
 /// files: scripts/fuzz.sh found them) then fails the call with a message instead of taking the caller down.
@@ -27,11 +30,11 @@ namespace crumple
 /// hold (glibc's malloc is safe). Costs a fork (page tables of the caller's memory: about 1 ms per GB).
 /// Elsewhere than POSIX inWork runs in the caller, unprotected.
 /// @param[in] inWork    what to run; its bytes or error come back
-/// @param[in] inTimeout seconds before the child is killed, > 0
+/// @param[in] inTimeout seconds before the child is killed, in (0, cMaxIsolatedTimeout]
 /// @param[in] inWhat    names the work in messages (e.g. the file's path)
 /// @return inWork's bytes or error; EError::CorruptData when the child died by a signal or took longer than
 ///         inTimeout; EError::IoError when no child could be started; EError::InvalidArgument (nothing run) for a
-///         timeout that is not finite and > 0
+///         timeout outside (0, cMaxIsolatedTimeout]
 CRUMPLE_API Result<std::vector<std::byte>> RunIsolated(const std::function<Result<std::vector<std::byte>>()>& inWork,
                                            double inTimeout, const std::string& inWhat);
 

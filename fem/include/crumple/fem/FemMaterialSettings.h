@@ -27,14 +27,14 @@ namespace crumple::fem
 /// to rest without either, while symplectic Euler needs some damping to ever fall asleep.
 struct CRUMPLE_API FemMaterialSettings
 {
-    /// Young's modulus E (Pa), > 0 (steel 2e11, aluminium 7e10, wood ~1e10, rubber ~1e6)
+    /// Young's modulus E (Pa), in (0, cMaxYoungsModulus] (steel 2e11, aluminium 7e10, wood ~1e10, rubber ~1e6)
     double mYoungsModulus = 1.0e9;
     /// Poisson's ratio nu, in (-1, cMaxPoissonRatio]; 0.5 is incompressible and makes the Lame parameter
     /// lambda infinite, so it is refused
     double mPoissonRatio = 0.3;
-    double mDensity = 1000.0;       ///< Mass density rho (kg/m^3), > 0 (steel 7850)
-    double mMassDamping = 0.0;      ///< Rayleigh mass-proportional damping alpha (1/s), >= 0; 0 is undamped
-    double mStiffnessDamping = 0.0; ///< Rayleigh stiffness-proportional damping beta (s), >= 0; 0 is undamped
+    double mDensity = 1000.0;       ///< Mass density rho (kg/m^3), in [cMinDensity, cMaxDensity] (steel 7850)
+    double mMassDamping = 0.0;      ///< Rayleigh mass-proportional damping alpha (1/s), in [0, cMaxMassDamping]; 0 is undamped
+    double mStiffnessDamping = 0.0; ///< Rayleigh stiffness-proportional damping beta (s), in [0, cMaxStiffnessDamping]; 0 is undamped
     EElasticModel mModel = EElasticModel::CorotatedLinear; ///< Strain measure and stress law
 
     /// Plasticity (von Mises, associative, perfectly plastic up to a cap), applied to each element after
@@ -57,6 +57,13 @@ struct CRUMPLE_API FemMaterialSettings
 
     /// Largest accepted Poisson's ratio: above it lambda / mu > 99 and linear tetrahedra lock in volume
     static constexpr double cMaxPoissonRatio = 0.495;
+    /// Bounds far beyond any solid (diamond's E is 1.2e12 Pa, osmium's density 22,600 kg/m^3), inside which the
+    /// derived quantities (lambda + 2 mu, inverse nodal masses, the stable step's damping terms) stay finite
+    static constexpr double cMaxYoungsModulus = 1.0e15;   ///< Pa
+    static constexpr double cMinDensity = 1.0e-6;         ///< kg/m^3
+    static constexpr double cMaxDensity = 1.0e8;          ///< kg/m^3
+    static constexpr double cMaxMassDamping = 1.0e9;      ///< 1/s
+    static constexpr double cMaxStiffnessDamping = 1.0e3; ///< s
 };
 
 } // namespace crumple::fem

@@ -20,7 +20,8 @@ namespace crumple::fem
 /// @param[in] inCompliance  from HexCompliancePrecompute or LoadHexCompliance
 /// @param[in] inLoadForces  3 #load forces (N), entry 3 l + a = mLoadNodes[l] along axis a, body frame
 /// @return 3 #output displacements (m), entry 3 o + b = mOutputNodes[o] along axis b; EError::InvalidArgument
-///         for a wrong length or an inconsistent inCompliance, EError::NonFinite for a NaN or Inf force
+///         for a wrong length or an inconsistent inCompliance, EError::NonFinite for a NaN or Inf force or
+///         displacements that are not finite (a non-finite compliance entry, or an overflow)
 CRUMPLE_API Result<Eigen::VectorXd> HexComplianceSolve(const HexCompliance& inCompliance, const Eigen::VectorXd& inLoadForces);
 
 } // namespace crumple::fem

@@ -27,7 +27,7 @@ enum class EHexFormulation
 /// An isotropic linear-elastic material for hexahedral meshes. HexMaterial::Create validates it.
 struct CRUMPLE_API HexMaterialSettings
 {
-    double mYoungsModulus = 200.0e9; ///< Young's modulus E (Pa), finite and > 0; default structural steel
+    double mYoungsModulus = 200.0e9; ///< Young's modulus E (Pa), in (0, 1e15]; default structural steel
     double mPoissonRatio = 0.3;      ///< Poisson ratio nu (dimensionless), in the open interval (-1, 0.5)
     EHexFormulation mFormulation = EHexFormulation::IncompatibleModes; ///< Element formulation
 };

@@ -21,9 +21,9 @@ struct CRUMPLE_API TetFenceSettings
     double mHeight = 1.2;        ///< Along z (m), > 0
     double mThickness = 0.1;     ///< Along y (m), > 0: posts and rails are this thick
     double mCellSize = 0.1;      ///< Target cube edge (m), > 0; each axis is divided evenly, at least 1 cell
-    double mPostSpacing = 2.0;   ///< Between post centres (m), > 0; a post stands at each end
+    double mPostSpacing = 2.0;   ///< Between post centres (m), > 0, at least mLength / (cells along x); a post stands at each end
     double mPostWidth = 0.1;     ///< Along x (m), > 0; at least one cell
-    int mRailCount = 2;          ///< Rails, >= 1, centred at heights H (r + 1) / (mRailCount + 1) ...
+    int mRailCount = 2;          ///< Rails, in [1, cells up the height], centred at heights H (r + 1) / (mRailCount + 1) ...
     double mRailHeight = 0.1;    ///< ... each this tall (m), > 0; at least one cell
     ECubeSplit mSplit = ECubeSplit::Five; ///< Tetrahedra per cube
 };

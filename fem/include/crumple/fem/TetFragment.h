@@ -36,6 +36,9 @@ struct CRUMPLE_API TetFragment
 /// @param[in] inElementMasses  #T element masses (kg): density x rest volume
 /// @param[in] inPositions      #N current node positions (m)
 /// @param[in] inInverseMasses  #N (1/kg), 0 = anchored
+/// A kernel without an error channel: the solvers' ComputeFragments pass their own consistent arrays; a direct
+/// caller must pass #T element masses and #N inverse masses for #N positions, and connectivity within #N (a
+/// debug build asserts it).
 CRUMPLE_API std::vector<TetFragment> TetFragments(const FractureLinks& inLinks, std::span<const TetIndices> inElementNodes,
                                       std::span<const double> inElementMasses, std::span<const Vec3> inPositions,
                                       std::span<const double> inInverseMasses);

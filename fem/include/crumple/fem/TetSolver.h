@@ -48,9 +48,14 @@ public:
 
     /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again (inverse mass 1 / mass).
     Status SetNodeFixed(int inNode, bool inFixed);
+    /// Bound on every coordinate of what the setters take (positions m, velocities m/s, forces N, gravity
+    /// m/s^2, and the velocity an impulse leaves): far beyond any simulation, and small enough that squares,
+    /// energies and their sums over the nodes stay finite (1e300 m/s made every later step "diverged")
+    static constexpr double cMaxStateMagnitude = 1.0e100;
+
     /// Adds an impulse inImpulse (N s, world) to node inNode: dv = inImpulse / m. An anchored node absorbs
     /// it. Refused, changing nothing, for an impulse that is not finite or would leave the node's velocity
-    /// infinite.
+    /// beyond cMaxStateMagnitude (NonFinite when it would be infinite, else OutOfRange).
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     /// Sets the constant external force (N, world) on node inNode until changed; forces on anchored nodes do
     /// nothing.

@@ -33,7 +33,7 @@ namespace crumple::fem
 /// than"). Measured: the isolation adds the cost of a fork and of sending the mesh back through a pipe
 /// (docs/fuzzing.md).
 /// @param[in] inPath    the file
-/// @param[in] inTimeout seconds the parse may take before it is stopped, > 0
+/// @param[in] inTimeout seconds the parse may take before it is stopped, in (0, 1e6] (crumple::cMaxIsolatedTimeout)
 /// @return #V joined vertex positions (m) and #F triangles (winding as in the file)
 CRUMPLE_API Result<SurfaceMesh> LoadSurfaceMesh(const std::filesystem::path& inPath, double inTimeout = 30.0);
 

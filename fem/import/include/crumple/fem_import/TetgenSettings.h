@@ -32,7 +32,8 @@ struct CRUMPLE_API TetgenSettings
     /// refinement: a constrained Delaunay tetrahedralization of the surface vertices alone, which may hold
     /// slivers that TetMesh refuses. Dimensionless.
     double mMaxRadiusEdgeRatio = 1.5;
-    /// Element volume bound (tetgen -a), m^3, >= 0; 0 = no limit. Smaller gives more, smaller elements. Like
+    /// Element volume bound (tetgen -a), m^3, >= 0; 0 = no limit; Tetrahedralize refuses one that would take
+    /// more than TetMesh::cMaxCount elements to fill the surface. Smaller gives more, smaller elements. Like
     /// mMaxRadiusEdgeRatio it is a target tetgen refines toward, not a guarantee: TetGen 1.5 skips a
     /// refinement point that would crowd the surface, so a few elements may stay above it (an icosphere of
     /// 162 vertices and 0.15 m radius with a 2e-5 m^3 bound: 1 of 2654 elements at 2.06e-5 m^3).
