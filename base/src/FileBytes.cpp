@@ -14,6 +14,11 @@ namespace crumple
 
 Result<std::vector<std::byte>> ReadFileBytes(const std::filesystem::path& inPath)
 {
+    // intent: a folder sized itself from tellg (bad_alloc) and a FIFO blocked the open: files only, checked
+    // before opening
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(inPath, error))
+        return MakeError(EError::IoError, "cannot read " + inPath.string() + ": not a regular file");
     std::ifstream in(inPath, std::ios::binary);
     if (!in)
         return MakeError(EError::IoError, "cannot read " + inPath.string());

@@ -49,7 +49,7 @@ add_test(NAME "crash: a failing expectation exits 1 and names it"
             -DOUT=${crash_out}/failing -DEXPECT_EXIT=1 "-DEXPECT_TEXT=FAIL residual_crush_m\\(roof\\)" -P ${crash_script})
 set(crash_malformed
     "unknown_key|/vehicle/mass_lb: unknown key"
-    "negative_mass|/vehicle/mass_kg: must be > 0"
+    "negative_mass|/vehicle/mass_kg: must be in "
     "wrong_unit|/impact/speed_mph"
     "wrong_type|/duration_s: must be a number"
     "missing_mesh|/vehicle/mesh: file not found"

@@ -20,6 +20,8 @@
 #include "OdeWallCrash.h"
 #endif
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -110,7 +112,10 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         mesh.mLength = vehicle.mMeshLength;
         mesh.mUnit = vehicle.mMeshUnit;
         mesh.mRigidPartNames = vehicle.mMeshRigidParts;
-        const std::string extension = vehicle.mMesh.extension().string();
+        // intent: the glTF axes go by the extension in any case (TRUCK.GLB was read as +x forward, z up)
+        std::string extension = vehicle.mMesh.extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(),
+                       [](unsigned char inChar) { return static_cast<char>(std::tolower(inChar)); });
         const bool gltf = extension == ".gltf" || extension == ".glb";
         const auto forward = vehicle.mMeshForwardAxis >= 0 ? static_cast<samples::EMeshAxis>(vehicle.mMeshForwardAxis)
                                                            : (gltf ? samples::EMeshAxis::PlusZ : samples::EMeshAxis::PlusX);

@@ -61,8 +61,15 @@ CrashScenario CaseScenario(const CrashScenario& inScenario, const CrashSweepSpec
     outAngle = inSpec.mAngles[inCase / (speeds * offsets)];
     CrashScenario scenario = inScenario;
     scenario.mImpact.mSpeed = outSpeed;
-    scenario.mImpact.mOffset = outOffset;
-    scenario.mTarget.mAngleDegrees = outAngle;
+    // intent: a list not given leaves the scenario's own value (a 30-degree wall stays at 30 degrees)
+    if (inSpec.mSweepOffsets)
+        scenario.mImpact.mOffset = outOffset;
+    else
+        outOffset = scenario.mImpact.mOffset;
+    if (inSpec.mSweepAngles)
+        scenario.mTarget.mAngleDegrees = outAngle;
+    else
+        outAngle = scenario.mTarget.mAngleDegrees;
     scenario.mPictures = false;
     return scenario;
 }
@@ -126,6 +133,15 @@ void DrawProgress(std::FILE* inStream, std::size_t inDone, std::size_t inTotal)
     std::fflush(inStream);
 }
 
+// Only a rigid wall turns: on other targets every angle would be the same case, labelled apart.
+Status CheckSweepFitsScenario(const CrashScenario& inScenario, const CrashSweepSpec& inSpec)
+{
+    const bool turned = std::any_of(inSpec.mAngles.begin(), inSpec.mAngles.end(), [](double inAngle) { return inAngle != 0.0; });
+    if (inSpec.mSweepAngles && turned && inScenario.mTarget.mType != ETarget::RigidWall)
+        return MakeError(EError::InvalidArgument, "--sweep: angles_deg other than 0 turn a rigid_wall target only");
+    return Status::Ok();
+}
+
 } // namespace
 
 Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
@@ -142,10 +158,12 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
             return MakeError(EError::InvalidArgument, "--sweep: '" + part + "' is not name=v1,v2,...");
         if (name == "speeds_km_h")
         {
+            // intent: the scenario file's ranges (a speed of 1e300 km/h killed the worker, and its row said so
+            // for every case)
             for (double& value : values)
             {
-                if (!(value > 0.0))
-                    return MakeError(EError::InvalidArgument, "--sweep: speeds_km_h must be > 0");
+                if (!(value > 0.0 && value <= 3600.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: speeds_km_h must lie in (0, 3600]");
                 value /= cKmhPerMs;
             }
             spec.mSpeeds = values;
@@ -153,8 +171,8 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
         else if (name == "speeds_m_s")
         {
             for (double value : values)
-                if (!(value > 0.0))
-                    return MakeError(EError::InvalidArgument, "--sweep: speeds_m_s must be > 0");
+                if (!(value > 0.0 && value <= 1000.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: speeds_m_s must lie in (0, 1000]");
             spec.mSpeeds = values;
         }
         else if (name == "angles_deg")
@@ -163,9 +181,16 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
                 if (!(value > -90.0 && value < 90.0))
                     return MakeError(EError::InvalidArgument, "--sweep: angles_deg must lie in (-90, 90)");
             spec.mAngles = values;
+            spec.mSweepAngles = true;
         }
         else if (name == "offsets_m")
+        {
+            for (double value : values)
+                if (!(value > -1000.0 && value < 1000.0))
+                    return MakeError(EError::InvalidArgument, "--sweep: offsets_m must lie in (-1000, 1000)");
             spec.mOffsets = values;
+            spec.mSweepOffsets = true;
+        }
         else
             return MakeError(EError::InvalidArgument, "--sweep: unknown list '" + name +
                                                           "' (known: speeds_km_h, speeds_m_s, angles_deg, offsets_m)");
@@ -178,6 +203,8 @@ Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
 Status RunCrashSweepCases(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std::size_t inFirst,
                           std::size_t inCount, const std::filesystem::path& inFolder)
 {
+    if (Status fits = CheckSweepFitsScenario(inScenario, inSpec); fits.HasError())
+        return fits;
     const std::filesystem::path cases = inFolder / "cases";
     std::error_code error;
     std::filesystem::create_directories(cases, error);
@@ -194,6 +221,8 @@ Result<int> RunCrashSweep(const CrashScenario& inScenario, const CrashSweepSpec&
 {
     if (inWorkers < 1)
         return MakeError(EError::InvalidArgument, "--workers must be >= 1");
+    if (Status fits = CheckSweepFitsScenario(inScenario, inSpec); fits.HasError())
+        return fits.GetError();
     const std::filesystem::path cases = inFolder / "cases";
     std::error_code error;
     std::filesystem::remove_all(cases, error);

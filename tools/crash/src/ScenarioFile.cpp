@@ -4,6 +4,7 @@
 
 #include <crumple/base/FileBytes.h>
 #include <crumple/ffd/FfdLatticeSettings.h>
+#include <crumple/plugin/BodyState.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
 
 #include <nlohmann/json.hpp>
@@ -125,6 +126,15 @@ struct NumberRange
         return "finite";
     }
 };
+
+// Bounds past which a value is no crash test but an overflow in the engines or the core (BodyState's ranges):
+// refused with the key's name rather than met by an abort in the scene.
+constexpr double cMaxDuration = 3600.0; // s
+constexpr double cMinTimeStep = 1.0e-6; // s
+constexpr double cMaxSteps = 1.0e7;
+NumberRange BodyMass() { return {0.0, true, plugin::cMaxBodyMass, false}; }  // kg
+NumberRange BodySize() { return {0.0, true, 1000.0, false}; }                // m, each side
+NumberRange Heading() { return {-360.0, false, 360.0, false}; }              // degrees
 
 /// A hint for an unknown key that carries a unit we do not accept: a key starting with mStem + "_" (or equal
 /// to mStem) gets mHint, e.g. "speed_mph" -> "speeds are speed_km_h or speed_m_s".
@@ -411,11 +421,14 @@ class ScenarioReader
         ioScenario.mEngine = static_cast<EEngine>(engine);
 
         // Duration, then a step that fits in it
-        if (!ReadNumber(inRoot, pointer, "duration_s", NumberRange::Positive(), false,
+        if (!ReadNumber(inRoot, pointer, "duration_s", NumberRange{0.0, true, cMaxDuration, false}, false,
                         ioScenario.mDuration) ||
-            !ReadNumber(inRoot, pointer, "time_step_s", NumberRange{0.0, true, 0.05, false}, false,
+            !ReadNumber(inRoot, pointer, "time_step_s", NumberRange{cMinTimeStep, false, 0.05, false}, false,
                         ioScenario.mTimeStep))
             return false;
+        // intent: the run's step count fits an int and its memory (1e9 s of 0.05 s steps aborted in a reserve)
+        if (ioScenario.mDuration / ioScenario.mTimeStep > cMaxSteps)
+            return Fail(EError::InvalidArgument, "/duration_s", "takes more than 1e7 steps of time_step_s");
         if (ioScenario.mTimeStep > ioScenario.mDuration)
             return Fail(EError::InvalidArgument, "/time_step_s",
                         "must be <= duration_s (" + FormatNumber(ioScenario.mDuration) + "), got " +
@@ -527,8 +540,8 @@ class ScenarioReader
                         ioVehicle.mMeshLength) ||
             !ReadNumber(inVehicle, inPointer, "mesh_max_edge_m", NumberRange::NonNegative(), false,
                         ioVehicle.mMeshMaxEdge) ||
-            !ReadVec3(inVehicle, inPointer, "box_size_m", NumberRange::Positive(), ioVehicle.mBoxSize) ||
-            !ReadNumber(inVehicle, inPointer, "mass_kg", NumberRange::Positive(), true, ioVehicle.mMass))
+            !ReadVec3(inVehicle, inPointer, "box_size_m", BodySize(), ioVehicle.mBoxSize) ||
+            !ReadNumber(inVehicle, inPointer, "mass_kg", BodyMass(), true, ioVehicle.mMass))
             return false;
 
         // Inertia: principal moments, each > 0, and each at most the sum of the other two (a real body)
@@ -722,9 +735,9 @@ class ScenarioReader
                         material.mImpulseThreshold) ||
             !ReadNumber(inMaterial, inPointer, "max_total_deformation_m", NumberRange::NonNegative(), false,
                         ioVehicle.mMaxTotalDeformation) ||
-            !ReadNumber(inMaterial, inPointer, "crush_A_N_per_m", NumberRange::NonNegative(), false, material.mCrushA) ||
-            !ReadNumber(inMaterial, inPointer, "crush_B_N_per_m2", NumberRange::Positive(), false, material.mCrushB) ||
-            !ReadNumber(inMaterial, inPointer, "crush_G_J_per_m", NumberRange::NonNegative(), false, material.mCrushG) ||
+            !ReadNumber(inMaterial, inPointer, "crush_A_N_per_m", NumberRange{0.0, false, 1.0e12, false}, false, material.mCrushA) ||
+            !ReadNumber(inMaterial, inPointer, "crush_B_N_per_m2", NumberRange{0.0, true, 1.0e12, false}, false, material.mCrushB) ||
+            !ReadNumber(inMaterial, inPointer, "crush_G_J_per_m", NumberRange{0.0, false, 1.0e12, false}, false, material.mCrushG) ||
             !ReadNumber(inMaterial, inPointer, "min_crush_width_m", NumberRange::Positive(), false,
                         material.mMinCrushWidth) ||
             !ReadNumber(inMaterial, inPointer, "crushed_length_fraction", NumberRange{0.0, false, 1.0, true}, false,
@@ -763,12 +776,12 @@ class ScenarioReader
             !ReadNumber(inTarget, inPointer, "cell_m", NumberRange::Positive(), false, ioTarget.mBarrierCell) ||
             !ReadNumber(inTarget, inPointer, "angle_deg", NumberRange{-90.0, true, 90.0, true}, false,
                         ioTarget.mAngleDegrees) ||
-            !ReadNumber(inTarget, inPointer, "radius_m", NumberRange::Positive(), false, ioTarget.mPoleRadius) ||
+            !ReadNumber(inTarget, inPointer, "radius_m", NumberRange{0.0, true, 100.0, false}, false, ioTarget.mPoleRadius) ||
             !ReadNumber(inTarget, inPointer, "overlap_percent", NumberRange{0.0, true, 100.0, false}, false,
                         ioTarget.mOverlapPercent) ||
-            !ReadNumber(inTarget, inPointer, "mass_kg", NumberRange::Positive(), false, ioTarget.mVehicleMass) ||
-            !ReadVec3(inTarget, inPointer, "box_size_m", NumberRange::Positive(), ioTarget.mVehicleSize) ||
-            !ReadNumber(inTarget, inPointer, "heading_deg", NumberRange::Any(), false, ioTarget.mVehicleHeadingDegrees) ||
+            !ReadNumber(inTarget, inPointer, "mass_kg", BodyMass(), false, ioTarget.mVehicleMass) ||
+            !ReadVec3(inTarget, inPointer, "box_size_m", BodySize(), ioTarget.mVehicleSize) ||
+            !ReadNumber(inTarget, inPointer, "heading_deg", Heading(), false, ioTarget.mVehicleHeadingDegrees) ||
             !ReadNumber(inTarget, inPointer, "speed_km_h", NumberRange{0.0, false, 3600.0, false}, false, speed_km_h) ||
             !ReadNumber(inTarget, inPointer, "offset_m", NumberRange{-1000.0, false, 1000.0, false}, false,
                         ioTarget.mVehicleOffset))
@@ -830,7 +843,7 @@ class ScenarioReader
             return false;
         ioImpact.mSpeed = has_km_h ? KilometresPerHourToMetresPerSecond(speed) : speed;
 
-        return ReadNumber(inImpact, inPointer, "heading_deg", NumberRange::Any(), false,
+        return ReadNumber(inImpact, inPointer, "heading_deg", Heading(), false,
                           ioImpact.mHeadingDegrees) &&
                ReadNumber(inImpact, inPointer, "offset_m", NumberRange{-1000.0, false, 1000.0, false}, false,
                           ioImpact.mOffset);

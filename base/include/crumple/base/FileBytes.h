@@ -15,7 +15,8 @@
 namespace crumple
 {
 
-/// Reads a whole file (damage states, replays). A missing or unreadable file is EError::IoError.
+/// Reads a whole file (damage states, replays). A missing or unreadable file, or a path that is not a regular
+/// file (a folder, a FIFO, a device), is EError::IoError.
 CRUMPLE_API Result<std::vector<std::byte>> ReadFileBytes(const std::filesystem::path& inPath);
 
 /// The name a file is written under until it is complete: "<inPath>.partial", beside inPath (same folder, so

@@ -17,16 +17,18 @@ namespace crumple::crash
 struct CrashSweepSpec
 {
     std::vector<double> mSpeeds;        ///< m/s
-    std::vector<double> mAngles{0.0};   ///< Wall angle (deg)
-    std::vector<double> mOffsets{0.0};  ///< Sideways offset (m)
+    std::vector<double> mAngles{0.0};   ///< Wall angle (deg); used only when mSweepAngles
+    std::vector<double> mOffsets{0.0};  ///< Sideways offset (m); used only when mSweepOffsets
+    bool mSweepAngles = false;          ///< angles_deg was given: else every case keeps the scenario's angle_deg
+    bool mSweepOffsets = false;         ///< offsets_m was given: else every case keeps the scenario's offset_m
 
     /// Number of cases
     std::size_t GetCaseCount() const { return mSpeeds.size() * mAngles.size() * mOffsets.size(); }
 };
 
-/// Parses "speeds_km_h=20,30,40;angles_deg=0,30;offsets_m=0,0.5" (speeds required; the others default to a
-/// single 0). Refuses unknown names, non-numbers and values out of range (speed > 0, angle in (-90, 90)),
-/// naming the item.
+/// Parses "speeds_km_h=20,30,40;angles_deg=0,30;offsets_m=0,0.5" (speeds required; without angles or offsets
+/// every case keeps the scenario's). Refuses unknown names, non-numbers and values out of range (speed in
+/// (0, 3600] km/h or (0, 1000] m/s, angle in (-90, 90), offset in (-1000, 1000) m), naming the item.
 Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText);
 
 /// Runs every case of inSpec on inScenario in inWorkers worker processes (fork; case i runs in worker
