@@ -189,12 +189,18 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
     CHECK(scenario.mVehicle.mMeshRigidParts == std::vector<std::string>{"wheel", "tire", "tyre"});
 
     // Rigid parts named, or none
-    const Result<CrashScenario> hubs = ParseCrashScenario(Minimal(R"("mass_kg": 900, "mesh_rigid_parts": ["Hub", "rim"])"), {});
+    const std::filesystem::path body = WriteText(TestFolder("rigid-parts") / "body.obj", "v 0 0 0\n");
+    const std::string with_mesh = R"("mass_kg": 900, "mesh": )" + JsonString(body.string()) + ", ";
+    const Result<CrashScenario> hubs = ParseCrashScenario(Minimal(with_mesh + R"("mesh_rigid_parts": ["Hub", "rim"])"), {});
     REQUIRE(hubs.IsValid());
     CHECK(hubs.Get().mVehicle.mMeshRigidParts == std::vector<std::string>{"Hub", "rim"});
-    const Result<CrashScenario> none = ParseCrashScenario(Minimal(R"("mass_kg": 900, "mesh_rigid_parts": [])"), {});
+    const Result<CrashScenario> none = ParseCrashScenario(Minimal(with_mesh + R"("mesh_rigid_parts": [])"), {});
     REQUIRE(none.IsValid());
     CHECK(none.Get().mVehicle.mMeshRigidParts.empty());
+    // Without a mesh, a mesh key would be ignored: refused, named
+    const Result<CrashScenario> orphan = ParseCrashScenario(Minimal(R"("mass_kg": 900, "mesh_rigid_parts": ["Hub"])"), {});
+    REQUIRE(orphan.HasError());
+    CHECK(orphan.GetError().mMessage == "/vehicle/mesh_rigid_parts: needs a mesh (the procedural box has none)");
 
     // A material with some keys keeps the defaults of the others
     const Result<CrashScenario> partial =

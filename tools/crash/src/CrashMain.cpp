@@ -109,7 +109,9 @@ int RunCampbell(const CrashScenario& inScenario, const CampbellLine& inLine, boo
     {
         std::printf("  %10.1f  %7.3f  %11.3f  %+5.1f %%\n", point.mSpeed * 3.6, point.mModel, point.mCrush,
                     100.0 * (point.mCrush - point.mModel) / point.mModel);
-        worst = std::max(worst, point.RelativeError());
+        // intent: a point the line gives no crush for (or a non-finite error) fails the check, never passes it
+        const double error = point.RelativeError();
+        worst = std::isfinite(error) && point.mModel > 0.0 ? std::max(worst, error) : std::numeric_limits<double>::infinity();
     }
     (void)WriteCampbellCsv(inOut / "calibration.csv", points);
     if (Status status = WriteCampbellPlot(inOut / "calibration.png", inLine, points); status.HasError())
@@ -260,9 +262,13 @@ int main(int argc, char** argv)
     }
     if (!std::isnan(impulse_tolerance))
         scenario.Get().mImpulseTolerance = impulse_tolerance;
-    if ((calibrate || campbell_check) && !(line.mNoDamageSpeed >= 0.0 && line.mSlope > 0.0))
+    // intent: bounds of real cars' lines (b0 2-5 m/s, b1 15-40 1/s) with wide margins: a b0 given in km/h gave no
+    // model crush at all (every error NaN, reported as 0 % and passed), a b1 of 1e-300 hung the plot
+    if ((calibrate || campbell_check) &&
+        !(line.mNoDamageSpeed >= 0.0 && line.mNoDamageSpeed <= 10.0 && line.mSlope >= 1.0 && line.mSlope <= 1000.0))
     {
-        std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 >= 0 (m/s) and --b1 > 0 (1/s)\n");
+        std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 in [0, 10] m/s and --b1 in "
+                             "[1, 1000] 1/s (Campbell's line: crush = (v - b0) / b1)\n");
         return cExitBadInput;
     }
     Result<CrashSweepSpec> sweep_spec = CrashSweepSpec{};

@@ -493,6 +493,7 @@ class ScenarioReader
                 return Fail(EError::IoError, pointer, "cannot read: " + resolved.string());
             ioVehicle.mMesh = resolved;
         }
+
         // Mesh name: only the file's meshes whose name contains it
         if (const auto name = inVehicle.find("mesh_name"); name != inVehicle.end())
         {
@@ -622,6 +623,13 @@ class ScenarioReader
         for (ffd::FfdZoneSettings& zone : ioVehicle.mZones)
             if (zone.mMaxTotalDeformation < 0.0)
                 zone.mMaxTotalDeformation = ioVehicle.mMaxTotalDeformation;
+        // intent: a well-formed mesh key without a mesh would be ignored without a word (target keys for
+        // another target type are refused likewise); checked last, so a malformed one is named for its form
+        if (!inVehicle.contains("mesh"))
+            for (const char* key : {"mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
+                                    "mesh_max_edge_m", "mesh_rigid_parts"})
+                if (inVehicle.contains(key))
+                    return Fail(EError::InvalidArgument, Child(inPointer, key), "needs a mesh (the procedural box has none)");
         return true;
     }
 
