@@ -63,6 +63,7 @@ set(crash_malformed
     "negative_mesh_max_edge|/vehicle/mesh_max_edge_m: must be >= 0"
     "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"
     "preset_not_regular|not a regular file"
+    "preset_duplicate_key|crush_A_N_per_m: duplicate key"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
     "mesh_face_index_beyond|mIndices\\[2\\] is out of range")
 foreach(entry IN LISTS crash_malformed)

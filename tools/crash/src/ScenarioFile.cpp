@@ -649,19 +649,32 @@ class ScenarioReader
         if (!stream)
             return Fail(EError::IoError, inPointer, "cannot read: " + resolved.string());
         Json preset;
+        // intent: a preset is held to the scenario's rules: a key given twice is refused (the last one won)
+        DuplicateKeyFinder duplicates;
         try
         {
-            preset = Json::parse(stream, nullptr, true, false);
+            preset = Json::parse(
+                stream, [&duplicates](int, Json::parse_event_t inEvent, Json& inParsed) { return duplicates.OnEvent(inEvent, inParsed); },
+                true, false);
         }
         catch (const Json::exception& inError)
         {
             return Fail(EError::CorruptData, inPointer, resolved.string() + ": " + inError.what());
         }
         const std::string pointer = inPointer + "(" + resolved.filename().string() + ")";
+        if (duplicates.GetDuplicate())
+            return Fail(EError::InvalidArgument, pointer + *duplicates.GetDuplicate(), "duplicate key");
         if (!ExpectObject(preset, pointer) ||
             !CheckKeys(preset, pointer,
                        {{"preset", "source", "campbell_b0_m_s", "campbell_b1_per_s", "mass_kg", "material"}, {}}))
             return false;
+        // The informative keys are not read, but must have their types
+        for (const char* key : {"preset", "source"})
+            if (const auto it = preset.find(key); it != preset.end() && !it->is_string())
+                return FailType(Child(pointer, key), "a string", *it);
+        for (const char* key : {"campbell_b0_m_s", "campbell_b1_per_s", "mass_kg"})
+            if (const auto it = preset.find(key); it != preset.end() && !it->is_number())
+                return FailType(Child(pointer, key), "a number", *it);
         const auto material = preset.find("material");
         if (material == preset.end())
             return Fail(EError::InvalidArgument, pointer + "/material", "required");
