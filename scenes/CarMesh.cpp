@@ -322,6 +322,11 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     // Centre on the bounding box and scale by the unit or to the wanted length.
     const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);
     const Vec3 lo = bounds.mMin, hi = bounds.mMax;
+    // intent: a mesh flat along its forward axis cannot be scaled to a length (it divided by zero and was then
+    // refused as "not finite")
+    if (!(inSettings.mUnit > 0.0) && !(hi.x() - lo.x() > 0.0))
+        return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() +
+                                                         " has no extent along its forward axis: it cannot be scaled to a length");
     const double scale = inSettings.mUnit > 0.0 ? inSettings.mUnit : inSettings.mLength / (hi.x() - lo.x());
     const Vec3 centre = 0.5 * (lo + hi);
     for (Vec3& p : mesh.mPositions)
