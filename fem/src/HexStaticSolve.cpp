@@ -43,6 +43,10 @@ Result<Eigen::VectorXd> HexStaticSolve(const HexStaticData& inData, const Eigen:
 
     // Two triangular solves, then scatter back to all nodes.
     const Eigen::VectorXd free_displacements = inData.mFactorization->solve(rhs);
+    // intent: a very soft material under a large force overflows: refused, not handed on as infinite
+    if (!IsFinite(free_displacements))
+        return MakeError(EError::NonFinite, "HexStaticSolve: the displacements are not finite (forces too large for "
+                                            "the material's stiffness)");
     Eigen::VectorXd displacements(dof_count);
     for (int i = 0; i < free_count; ++i)
         displacements[inData.mFreeDofs[i]] = free_displacements[i];

@@ -177,6 +177,17 @@ TEST_CASE("HexStaticPrecompute and HexStaticSolve refuse bad input", "[fem][hex]
         CHECK(data.GetError().mMessage.find("fixed node 20") != std::string::npos);
         CHECK(HexStaticPrecompute(mesh, steel, std::vector<int>{-1}).GetError().mCode == EError::OutOfRange);
     }
+    SECTION("forces a soft material cannot take: displacements that overflow are refused")
+    {
+        HexMaterialSettings soft;
+        soft.mYoungsModulus = 1.0e-300;
+        const HexStaticData data = HexStaticPrecompute(mesh, HexMaterial::Create(soft).Get(), clamp).Get();
+        Eigen::VectorXd forces = Eigen::VectorXd::Zero(3 * mesh.GetNodeCount());
+        forces[3 * (mesh.GetNodeCount() - 1) + 2] = 1.0e300;
+        CHECK(HexStaticSolve(data, forces).GetError().mCode == EError::NonFinite);
+        forces[3 * (mesh.GetNodeCount() - 1) + 2] = 1.0e-300;
+        CHECK(HexStaticSolve(data, forces));
+    }
     SECTION("every node fixed")
     {
         std::vector<int> all(mesh.GetNodeCount());

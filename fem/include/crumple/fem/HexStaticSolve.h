@@ -17,7 +17,7 @@ namespace crumple::fem
 /// @param[in] inData    from HexStaticPrecompute
 /// @param[in] inForces  3 #nodes nodal forces (N), entry 3 n + a = node n along axis a, body frame
 /// @return 3 #nodes displacements (m), same layout; EError::InvalidArgument for an empty inData or a wrong
-///         length, EError::NonFinite for a NaN or Inf force
+///         length, EError::NonFinite for a NaN or Inf force or displacements that overflow
 CRUMPLE_API Result<Eigen::VectorXd> HexStaticSolve(const HexStaticData& inData, const Eigen::VectorXd& inForces);
 
 /// The same with prescribed displacements of the fixed nodes: U_f = K_ff^-1 (F_f - K_fb U_b), U_b given.
