@@ -256,8 +256,8 @@ int main(int argc, char** argv)
     Result<CrashScenario> scenario = LoadCrashScenario(scenario_path);
     if (scenario.HasError())
     {
-        std::fprintf(stderr, "crumple-crash: %s: %s\n", scenario_path.string().c_str(),
-                     scenario.GetError().mMessage.c_str());
+        // LoadCrashScenario's messages name the file already
+        std::fprintf(stderr, "crumple-crash: %s\n", scenario.GetError().mMessage.c_str());
         return cExitBadInput;
     }
     if (!std::isnan(impulse_tolerance))
