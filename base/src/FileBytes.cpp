@@ -17,7 +17,10 @@ Result<std::vector<std::byte>> ReadFileBytes(const std::filesystem::path& inPath
     // intent: a folder sized itself from tellg (bad_alloc) and a FIFO blocked the open: files only, checked
     // before opening
     std::error_code error;
-    if (!std::filesystem::is_regular_file(inPath, error))
+    const std::filesystem::file_status status = std::filesystem::status(inPath, error);
+    if (!std::filesystem::exists(status))
+        return MakeError(EError::IoError, "cannot read " + inPath.string() + ": no such file");
+    if (!std::filesystem::is_regular_file(status))
         return MakeError(EError::IoError, "cannot read " + inPath.string() + ": not a regular file");
     std::ifstream in(inPath, std::ios::binary);
     if (!in)

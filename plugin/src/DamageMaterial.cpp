@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/DamageMaterial.h>
 
+#include <crumple/ffd/TriangleMesh.h>
+
 #include <cmath>
 
 namespace crumple::plugin
@@ -14,9 +16,12 @@ Status ValidateDamageMaterial(const DamageMaterial& inMaterial)
         return MakeError(EError::InvalidArgument, "DamageMaterial.mDeformationFactor must be finite and >= 0 m/(N s)");
     if (!(std::isfinite(material.mMinDeformation) && material.mMinDeformation >= 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinDeformation must be finite and >= 0 m");
-    if (!(std::isfinite(material.mMaxInstantDeformation) && material.mMaxInstantDeformation >= material.mMinDeformation))
+    // intent: at most what FfdDeformer::ApplyDent takes (ffd::cMaxMeshCoordinate), so a dent the material allows
+    // is never refused there
+    if (!(std::isfinite(material.mMaxInstantDeformation) && material.mMaxInstantDeformation >= material.mMinDeformation &&
+          material.mMaxInstantDeformation <= ffd::cMaxMeshCoordinate))
         return MakeError(EError::InvalidArgument,
-                         "DamageMaterial.mMaxInstantDeformation must be finite and >= mMinDeformation (m)");
+                         "DamageMaterial.mMaxInstantDeformation must be finite, >= mMinDeformation and <= 1e6 m");
     if (!(std::isfinite(material.mImpulseThreshold) && material.mImpulseThreshold >= 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mImpulseThreshold must be finite and >= 0 N s");
     if (material.mModel != ECrushModel::ImpulseFactor && material.mModel != ECrushModel::Campbell)

@@ -35,9 +35,11 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
             return MakeError(EError::InvalidArgument, "FragmentBody: node " + std::to_string(node) + "'s mass is not finite and >= 0 kg");
         fragment_nodes_mass += m;
     }
-    if (!(std::abs(fragment_nodes_mass - inFragment.mMass) <= 1.0e-9 * inFragment.mMass))
+    // intent: each element lumps its mass onto its own nodes, so they hold at least the fragment's mass; they may
+    // hold more where a node is shared with another fragment's elements (a group of separate components)
+    if (!(fragment_nodes_mass >= inFragment.mMass * (1.0 - 1.0e-9)))
         return MakeError(EError::InvalidArgument, "FragmentBody: the nodes' masses (" + std::to_string(fragment_nodes_mass) +
-                                                      " kg) are not the fragment's (" + std::to_string(inFragment.mMass) + " kg)");
+                                                      " kg) are less than the fragment's (" + std::to_string(inFragment.mMass) + " kg)");
 
     // intent: the principal frame of the fragment's inertia, right-handed, moments ascending
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inFragment.mInertia);

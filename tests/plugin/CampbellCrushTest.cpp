@@ -308,6 +308,10 @@ TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]"
     zero_width.mMinCrushWidth = 0.0;
     CHECK(ValidateDamageMaterial(zero_width).HasError());
     CHECK(ValidateDamageMaterial(CampbellMaterial()).IsValid());
+    // A maximum dent ApplyDent would refuse (beyond 1e6 m) is refused with the material
+    DamageMaterial unbounded = CampbellMaterial();
+    unbounded.mMaxInstantDeformation = 1.0e7;
+    CHECK(ValidateDamageMaterial(unbounded).HasError());
     CHECK(CampbellCrushDepth(zero_width, 1.0, 1.0e5) == 0.0);
     CHECK(CampbellCrushDepth(CampbellMaterial(), 0.0, 1.0e5) == 0.0);
     CHECK(CampbellCrushDepth(CampbellMaterial(), std::nan(""), 1.0e5) == 0.0);

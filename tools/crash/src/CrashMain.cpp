@@ -265,10 +265,10 @@ int main(int argc, char** argv)
     // intent: bounds of real cars' lines (b0 2-5 m/s, b1 15-40 1/s) with wide margins: a b0 given in km/h gave no
     // model crush at all (every error NaN, reported as 0 % and passed), a b1 of 1e-300 hung the plot
     if ((calibrate || campbell_check) &&
-        !(line.mNoDamageSpeed >= 0.0 && line.mNoDamageSpeed <= 10.0 && line.mSlope >= 1.0 && line.mSlope <= 1000.0))
+        !(line.mNoDamageSpeed >= 0.0 && line.mNoDamageSpeed < 5.5 && line.mSlope >= 1.0 && line.mSlope <= 1000.0))
     {
-        std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 in [0, 10] m/s and --b1 in "
-                             "[1, 1000] 1/s (Campbell's line: crush = (v - b0) / b1)\n");
+        std::fprintf(stderr, "crumple-crash: --calibrate and --campbell-check need --b0 in [0, 5.5) m/s (below the "
+                             "lowest speed they run, 20 km/h) and --b1 in [1, 1000] 1/s (Campbell's line: crush = (v - b0) / b1)\n");
         return cExitBadInput;
     }
     Result<CrashSweepSpec> sweep_spec = CrashSweepSpec{};
@@ -278,6 +278,11 @@ int main(int argc, char** argv)
         if (sweep_spec.HasError())
         {
             std::fprintf(stderr, "crumple-crash: %s\n", sweep_spec.GetError().mMessage.c_str());
+            return cExitBadInput;
+        }
+        if (Status fits = CheckSweepFitsScenario(scenario.Get(), sweep_spec.Get()); fits.HasError())
+        {
+            std::fprintf(stderr, "crumple-crash: %s\n", fits.GetError().mMessage.c_str());
             return cExitBadInput;
         }
     }

@@ -133,16 +133,16 @@ void DrawProgress(std::FILE* inStream, std::size_t inDone, std::size_t inTotal)
     std::fflush(inStream);
 }
 
-// Only a rigid wall turns: on other targets every angle would be the same case, labelled apart.
+} // namespace
+
 Status CheckSweepFitsScenario(const CrashScenario& inScenario, const CrashSweepSpec& inSpec)
 {
+    // intent: only a rigid wall turns: on other targets every angle would be the same case, labelled apart
     const bool turned = std::any_of(inSpec.mAngles.begin(), inSpec.mAngles.end(), [](double inAngle) { return inAngle != 0.0; });
     if (inSpec.mSweepAngles && turned && inScenario.mTarget.mType != ETarget::RigidWall)
         return MakeError(EError::InvalidArgument, "--sweep: angles_deg other than 0 turn a rigid_wall target only");
     return Status::Ok();
 }
-
-} // namespace
 
 Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText)
 {

@@ -29,7 +29,8 @@ constexpr std::string_view cHexComplianceMagic = "CRUMPHEX";
 /// order (column 3 l + a after column 3 l + a - 1), and a CRC-32 of everything before it.
 /// Size: 28 + 4 (#load + #output) + 72 #load #output bytes.
 /// @param[in] inCompliance  a consistent compliance (matrix size matching the node lists)
-/// @return the bytes; EError::InvalidArgument for an inconsistent compliance
+/// @return the bytes; EError::InvalidArgument for an inconsistent compliance (sizes, node indices out of range
+///         or repeated: what DecodeHexCompliance refuses), EError::NonFinite for a non-finite entry
 CRUMPLE_API Result<std::vector<std::byte>> EncodeHexCompliance(const HexCompliance& inCompliance);
 
 /// Decodes and checks a compliance: magic, version (EError::VersionMismatch), checksum, counts against the length,
@@ -38,7 +39,8 @@ CRUMPLE_API Result<std::vector<std::byte>> EncodeHexCompliance(const HexComplian
 CRUMPLE_API Result<HexCompliance> DecodeHexCompliance(std::span<const std::byte> inBytes);
 
 /// Writes EncodeHexCompliance to a file through a temporary beside it and a rename, so that a failed write leaves
-/// any existing file as it was (EError::IoError).
+/// any existing file as it was (EError::IoError); a compliance EncodeHexCompliance refuses writes nothing (its
+/// error).
 CRUMPLE_API Status SaveHexCompliance(const std::filesystem::path& inPath, const HexCompliance& inCompliance);
 
 /// Reads and decodes a file written by SaveHexCompliance (EError::IoError when unreadable; decode errors as above,

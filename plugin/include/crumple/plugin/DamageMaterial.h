@@ -35,7 +35,7 @@ struct CRUMPLE_API DamageMaterial
     double mDeformationFactor = 2.0e-5;   ///< Dent depth per unit impulse (m/(N s)), >= 0: depth = factor |J|,
                                           ///< like a spring turning force into displacement
     double mMinDeformation = 1.0e-3;      ///< Dents shallower than this are dropped (m), >= 0
-    double mMaxInstantDeformation = 1.5;  ///< Deepest dent one collision can make at a contact (m), >= min: a
+    double mMaxInstantDeformation = 1.5;  ///< Deepest dent one collision can make at a contact (m), in [min, 1e6]: a
                                           ///< bound against runaway input, above the crush of a 64 km/h pole hit
     /// The part of a collision's impulse that leaves no permanent dent (N s), >= 0: the depth is
     /// factor (|J| - threshold) when |J| exceeds it. Campbell's linear crush model (SAE 740565) has a

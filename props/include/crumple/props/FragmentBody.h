@@ -42,7 +42,7 @@ struct CRUMPLE_API FragmentRigidBody
 /// @param[in] inPositions  #N node positions, prop frame (m)
 /// @param[in] inVelocities #N node velocities, prop frame (m/s)
 /// @param[in] inMasses     #N lumped node masses (kg), finite and >= 0; the fragment's nodes' must add up to
-///                         its mass (to 1e-9), as the lumped masses of its elements do
+///                         at least its mass (to 1e-9), as the lumped masses of its elements do
 /// @param[in] inPropBody   the prop body's state (its transform; its velocities unless static)
 CRUMPLE_API Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::span<const Vec3> inPositions,
                                        std::span<const Vec3> inVelocities, std::span<const double> inMasses,

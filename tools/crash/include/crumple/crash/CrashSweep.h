@@ -30,6 +30,9 @@ struct CrashSweepSpec
 /// every case keeps the scenario's). Refuses unknown names, non-numbers and values out of range (speed in
 /// (0, 3600] km/h or (0, 1000] m/s, angle in (-90, 90), offset in (-1000, 1000) m), naming the item.
 Result<CrashSweepSpec> ParseCrashSweep(std::string_view inText);
+/// Refuses a sweep the scenario cannot take (angles other than 0 for a target that is not a rigid wall); the
+/// local sweep, its cases and crumple-crash's --emit-slurm check it before running anything.
+Status CheckSweepFitsScenario(const CrashScenario& inScenario, const CrashSweepSpec& inSpec);
 
 /// Runs every case of inSpec on inScenario in inWorkers worker processes (fork; case i runs in worker
 /// i mod inWorkers), each writing its row to inFolder/cases/; shows a progress bar on inProgress; then
