@@ -626,9 +626,8 @@ class ScenarioReader
         // intent: a well-formed mesh key without a mesh would be ignored without a word (target keys for
         // another target type are refused likewise); checked last, so a malformed one is named for its form
         if (!inVehicle.contains("mesh"))
-            for (const char* key : {"mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
-                                    "mesh_max_edge_m", "mesh_rigid_parts"})
-                if (inVehicle.contains(key))
+            for (const auto& [key, value] : inVehicle.items())
+                if (key.starts_with("mesh_"))
                     return Fail(EError::InvalidArgument, Child(inPointer, key), "needs a mesh (the procedural box has none)");
         return true;
     }
@@ -1010,9 +1009,7 @@ Result<CrashScenario> LoadCrashScenario(const std::filesystem::path& inPath)
 {
     try
     {
-        std::error_code error;
-        if (std::filesystem::is_directory(inPath, error))
-            return MakeError(EError::IoError, "cannot read " + inPath.string() + ": is a folder");
+        // ReadFileBytes refuses a folder, a FIFO or a missing path itself
         Result<std::vector<std::byte>> bytes = ReadFileBytes(inPath);
         if (bytes.HasError())
             return bytes.GetError();
