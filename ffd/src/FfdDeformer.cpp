@@ -6,6 +6,7 @@
 #include <crumple/ffd/FoldGuard.h>
 
 #include "CellSurfaceIndex.h"
+#include "ZonePoints.h"
 
 #include <algorithm>
 #include <array>
@@ -31,14 +32,6 @@ std::span<const std::uint32_t> PieceOf(std::span<const std::uint32_t> inItems, i
     const std::size_t end = inItems.size() * static_cast<std::size_t>(inPiece + 1) / static_cast<std::size_t>(inPieces);
     return inItems.subspan(begin, end - begin);
 }
-
-// A constrained point after zone assignment and merging.
-struct ZonePoint
-{
-    Vec3 mLattice;      // rest lattice coordinate
-    Vec3 mDisplacement; // wanted displacement (m), averaged over merged points
-    int mMergedCount = 1;
-};
 
 } // namespace
 
@@ -333,7 +326,7 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
 
     // Assign each point to the first zone that holds it (within the capture distance), then merge
     // near-coincident points of a zone by averaging their displacements.
-    std::vector<std::vector<ZonePoint>> zone_points(mZones.size());
+    std::vector<ZonePointSet> zone_points(mZones.size(), ZonePointSet(mSettings.mMergeDistance));
     for (const PointDisplacement& point : inPoints)
     {
         report.mMaxWanted = std::max(report.mMaxWanted, point.mDisplacement.norm());
@@ -351,26 +344,17 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         const FfdLattice& zone = mZones[static_cast<std::size_t>(zone_index)];
         Vec3 u = RestLatticeCoordinate(zone_index, point.mPoint);
         u = u.cwiseMax(Vec3::Zero()).cwiseMin(Vec3(zone.GetCellCount()[0], zone.GetCellCount()[1], zone.GetCellCount()[2]));
-        std::vector<ZonePoint>& points = zone_points[static_cast<std::size_t>(zone_index)];
-        auto near = std::find_if(points.begin(), points.end(), [&](const ZonePoint& p) {
-            return (p.mLattice - u).cwiseAbs().maxCoeff() < mSettings.mMergeDistance;
-        });
-        if (near != points.end())
-        {
-            // Running mean (a sum of two displacements near the double range would overflow).
-            ++near->mMergedCount;
-            near->mDisplacement += (point.mDisplacement - near->mDisplacement) / near->mMergedCount;
+        if (zone_points[static_cast<std::size_t>(zone_index)].Add(u, point.mDisplacement))
             ++report.mPointsMerged;
-        }
-        else
-            points.push_back({u, point.mDisplacement, 1});
     }
 
     for (std::size_t z = 0; z < mZones.size(); ++z)
     {
-        std::vector<ZonePoint>& points = zone_points[z];
+        std::vector<ZonePoint>& points = zone_points[z].GetPoints();
         if (points.empty())
             continue;
+        // intent: the solve's cost grows with the square of the points and more (cMaxZonePoints)
+        report.mPointsMerged += ThinZonePoints(points);
         FfdLattice& zone = mZones[z];
         std::vector<LatticeLocation> locations;
         Eigen::MatrixX3d wanted(static_cast<Eigen::Index>(points.size()), 3);

@@ -13,7 +13,8 @@ namespace crumple::ffd
 struct CRUMPLE_API DentReport
 {
     int mPointsApplied = 0;        ///< Constrained points that reached a zone (after merging)
-    int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance
+    int mPointsMerged = 0;         ///< Points merged into a neighbour closer than the merge distance, or on
+                                   ///< the coarser grid of a zone with more than 1,024 points
     int mPointsIgnored = 0;        ///< Points outside every zone (beyond the capture distance)
     int mControlsChanged = 0;      ///< Controls whose displacement changed
     int mControlsPushed = 0;       ///< Of those, controls the fold guard moved because a neighbour was pushed
