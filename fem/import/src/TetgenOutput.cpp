@@ -3,6 +3,7 @@
 #include <crumple/fem_import/TetgenOutput.h>
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -82,6 +83,9 @@ Status ReadNodes(const TetgenFile& inFile, std::vector<Vec3>& outNodes, long lon
             outBase = index;
         if (index != outBase + static_cast<long long>(node) || (outBase != 0 && outBase != 1))
             return inFile.Corrupt("node numbers do not count up from 0 or 1");
+        // intent: from_chars reads "nan" and "inf" as numbers; a mesh refuses them later, but this names the line
+        if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+            return inFile.Corrupt("node " + std::to_string(node) + " is not finite");
         outNodes[node] = Vec3(xyz[0], xyz[1], xyz[2]);
     }
     return Status::Ok();

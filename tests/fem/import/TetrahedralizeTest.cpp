@@ -8,6 +8,7 @@
 #include <crumple/fem_import/ImportTetMesh.h>
 #include <crumple/fem_import/LoadSurfaceMesh.h>
 #include <crumple/fem_import/Tetrahedralize.h>
+#include <crumple/fem_import/TetgenOutput.h>
 
 #include <catch2/catch.hpp>
 
@@ -287,4 +288,19 @@ TEST_CASE("Tetrahedralize reports tetgen's own failure on a self-intersecting su
     REQUIRE(two.IsValid());
     CheckFills(two.Get(), apart);
     CHECK(IsEmptyFolder(temporary));
+}
+
+TEST_CASE("ParseTetgenOutput refuses a coordinate that is not finite, naming the node", "[fem][import]")
+{
+    const std::string elements = "1 4 0\n0 0 1 2 3\n";
+    const std::string good = "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n";
+    REQUIRE(ParseTetgenOutput(good, elements).IsValid());
+    for (const char* bad : {"nan", "inf", "-inf", "1e400"})
+    {
+        const std::string nodes = "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 " + std::string(bad) + " 0\n3 0 0 1\n";
+        const Result<TetgenOutput> parsed = ParseTetgenOutput(nodes, elements);
+        INFO(bad << ": " << (parsed.HasError() ? parsed.GetError().mMessage : std::string("accepted")));
+        REQUIRE(parsed.HasError());
+        CHECK(parsed.GetError().mCode == EError::CorruptData);
+    }
 }

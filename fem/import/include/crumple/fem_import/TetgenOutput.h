@@ -23,7 +23,7 @@ struct CRUMPLE_API TetgenOutput
 /// Reads tetgen's output pair, the text of <name>.1.node ("count 3 #attributes #markers", then "index x y z
 /// ...") and <name>.1.ele ("count 4 #attributes", then "index n0 n1 n2 n3 ..."), numbered from 0 or 1; "#"
 /// starts a comment. Refused with EError::CorruptData naming the file and the line: a bad header, too few
-/// lines, a malformed number, indices that do not count up, a node out of range, more than
+/// lines, a malformed number, a coordinate that is not finite, indices that do not count up, a node out of range, more than
 /// TetMesh::cMaxCount entries. Tetrahedralize reads tetgen's files with it.
 CRUMPLE_API Result<TetgenOutput> ParseTetgenOutput(std::string_view inNodeText, std::string_view inElementText);
 
