@@ -183,9 +183,12 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, 
                 continue;
             const auto base = static_cast<std::uint32_t>(mesh.mPositions.size());
             const std::string node_name = inNode->mName.C_Str(), mesh_name = part->mName.C_Str();
-            if (part->mNumVertices > 0 && (ContainsAnyOf(node_name, inSettings.mRigidPartNames) ||
-                                           ContainsAnyOf(mesh_name, inSettings.mRigidPartNames)))
-                outParts.push_back({base, base + part->mNumVertices, node_name.empty() ? mesh_name : node_name});
+            // intent: the part keeps the name that matched (the node's first), so UnmatchedRigidPartNames can tell
+            // which fragments found a part
+            if (part->mNumVertices > 0 && ContainsAnyOf(node_name, inSettings.mRigidPartNames))
+                outParts.push_back({base, base + part->mNumVertices, node_name});
+            else if (part->mNumVertices > 0 && ContainsAnyOf(mesh_name, inSettings.mRigidPartNames))
+                outParts.push_back({base, base + part->mNumVertices, mesh_name});
             for (unsigned v = 0; v < part->mNumVertices; ++v)
             {
                 const aiVector3D p = transform * part->mVertices[v];
@@ -226,6 +229,16 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
     if (body.HasError())
         return body.GetError();
     return std::move(body.Get().mMesh);
+}
+
+std::vector<std::string> UnmatchedRigidPartNames(const std::vector<std::string>& inFragments, const CarBody& inBody)
+{
+    std::vector<std::string> unmatched;
+    for (const std::string& fragment : inFragments)
+        if (std::none_of(inBody.mRigidPartNames.begin(), inBody.mRigidPartNames.end(),
+                         [&](const std::string& inName) { return ContainsAnyOf(inName, {fragment}); }))
+            unmatched.push_back(fragment);
+    return unmatched;
 }
 
 std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<std::vector<std::uint32_t>>& inParts,

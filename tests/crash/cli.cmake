@@ -91,8 +91,21 @@ add_test(NAME "crash: --strict refuses a sideways mesh"
 add_test(NAME "crash: a mesh with its axes and unit stated runs clean under --strict"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stated_mesh_axes.json
             -DOUT=${crash_out}/stated-axes -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING -P ${crash_script})
+# A rigid-part name fragment that finds no part (a typo) runs with a warning that lists the parts found;
+# --strict refuses it.
+add_test(NAME "crash: a rigid-part name that matches nothing runs with a warning"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/unmatched_rigid_parts.json
+            -DOUT=${crash_out}/unmatched-parts -DEXPECT_EXIT=0
+            "-DEXPECT_TEXT=WARNING vehicle-truck-red.glb: mesh_rigid_parts \"wheeel\" names no node or mesh of the file \\(parts found: wheel-back-left"
+            -P ${crash_script})
+add_test(NAME "crash: --strict refuses a rigid-part name that matches nothing"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/unmatched_rigid_parts.json
+            -DOUT=${crash_out}/unmatched-parts-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=wheeel.*refused by --strict"
+            -P ${crash_script})
 set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
-    "crash: a mesh with its axes and unit stated runs clean under --strict" PROPERTIES LABELS crash)
+    "crash: a mesh with its axes and unit stated runs clean under --strict"
+    "crash: a rigid-part name that matches nothing runs with a warning"
+    "crash: --strict refuses a rigid-part name that matches nothing" PROPERTIES LABELS crash)
 
 # Calibration: fitting reaches Campbell's line within 10 % over 20-64 km/h, and the shipped mid-size preset,
 # read back from its file, reproduces it (exit 0 within 10 %, 1 otherwise).

@@ -128,6 +128,20 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         Result<samples::CarBody> body = samples::LoadCarBody(mesh);
         if (body.HasError())
             return body.GetError();
+        if (const std::vector<std::string> unmatched = samples::UnmatchedRigidPartNames(vehicle.mMeshRigidParts, body.Get());
+            vehicle.mMeshRigidPartsGiven && !unmatched.empty())
+        {
+            std::string text = vehicle.mMesh.filename().string() + ": mesh_rigid_parts";
+            for (std::size_t i = 0; i < unmatched.size(); ++i)
+                text += (i == 0 ? " \"" : ", \"") + unmatched[i] + "\"";
+            text += " name" + std::string(unmatched.size() == 1 ? "s" : "") + " no node or mesh of the file (parts found:";
+            for (const std::string& name : body.Get().mRigidPartNames)
+                text += " " + name;
+            text += body.Get().mRigidPartNames.empty() ? " none)" : ")";
+            if (inOptions.mStrictMesh)
+                return MakeError(EError::InvalidArgument, text + "; refused by --strict");
+            outWarnings.push_back(text);
+        }
         Result<ffd::TriangleMesh> loaded = std::move(body.Get().mMesh);
         std::vector<std::vector<std::uint32_t>> rigid_parts = std::move(body.Get().mRigidParts);
         if (const std::string warning = samples::ForwardAxisWarning(loaded.Get()); !warning.empty())

@@ -508,6 +508,7 @@ class ScenarioReader
             if (!parts->is_array())
                 return FailType(pointer, "an array of strings (name fragments)", *parts);
             ioVehicle.mMeshRigidParts.clear();
+            ioVehicle.mMeshRigidPartsGiven = true;
             for (std::size_t index = 0; index < parts->size(); ++index)
             {
                 const Json& part = (*parts)[index];

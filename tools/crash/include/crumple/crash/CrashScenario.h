@@ -65,6 +65,9 @@ struct VehicleSpec
     /// The file's meshes whose node or mesh name contains one of these (any case) keep their shape and move
     /// with the body around their centre (samples::CarMeshSettings::mRigidPartNames): wheels stay round.
     std::vector<std::string> mMeshRigidParts{"wheel", "tire", "tyre"};
+    /// The scenario gave mMeshRigidParts: a fragment that finds no part is then a warning (a refusal with
+    /// --strict); the default list finds what a mesh has and warns of nothing
+    bool mMeshRigidPartsGiven = false;
     Vec3 mBoxSize{4.2, 1.8, 1.4};      ///< Size of the procedural box (m); a mesh's collision box is its
                                        ///< bounding box
     double mMass = 1200.0;             ///< kg, > 0
