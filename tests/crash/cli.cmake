@@ -59,6 +59,8 @@ set(crash_malformed
     "corrupt_mesh|cannot read"
     "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
     "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
+    "mesh_unit_too_large|hatchback.obj measures 1.58e\\+03 m across once scaled \\(mesh_unit_m 10\\): a car body must measure 0.1-1000 m"
+    "mesh_length_too_small|/vehicle/mesh_length_m: must be in \\[0.1, 1000\\]"
     "huge_speed|/impact/speed_km_h: must be in"
     "negative_mesh_max_edge|/vehicle/mesh_max_edge_m: must be >= 0"
     "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"

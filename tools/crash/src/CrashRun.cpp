@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -128,6 +129,16 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         Result<samples::CarBody> body = samples::LoadCarBody(mesh);
         if (body.HasError())
             return body.GetError();
+        // intent: a unit off by a thousand gives a 4 mm or a 4 km car that runs and fails its sanity checks
+        // with no word of the cause
+        if (const ffd::AlignedBox box = ffd::BoundingBox(body.Get().mMesh.mPositions);
+            !((box.mMax - box.mMin).maxCoeff() >= cMinMeshLength && (box.mMax - box.mMin).maxCoeff() <= cMaxMeshLength))
+        {
+            char text[256];
+            std::snprintf(text, sizeof(text), "%s measures %.3g m across once scaled (mesh_unit_m %g): a car body must measure %g-%g m; is the unit right?",
+                          vehicle.mMesh.filename().string().c_str(), (box.mMax - box.mMin).maxCoeff(), vehicle.mMeshUnit, cMinMeshLength, cMaxMeshLength);
+            return MakeError(EError::OutOfRange, text);
+        }
         if (const std::vector<std::string> unmatched = samples::UnmatchedRigidPartNames(vehicle.mMeshRigidParts, body.Get());
             vehicle.mMeshRigidPartsGiven && !unmatched.empty())
         {

@@ -134,6 +134,7 @@ constexpr double cMinTimeStep = 1.0e-6; // s
 constexpr double cMaxSteps = 1.0e7;
 NumberRange BodyMass() { return {0.0, true, plugin::cMaxBodyMass, false}; }  // kg
 NumberRange BodySize() { return {0.0, true, 1000.0, false}; }                // m, each side
+NumberRange MeshLength() { return {cMinMeshLength, false, cMaxMeshLength, false}; } // m, a car body's length
 NumberRange Heading() { return {-360.0, false, 360.0, false}; }              // degrees
 
 /// A hint for an unknown key that carries a unit we do not accept: a key starting with mStem + "_" (or equal
@@ -538,7 +539,7 @@ class ScenarioReader
             return Fail(EError::InvalidArgument, Child(inPointer, "mesh_up_axis"),
                         "must be another axis than mesh_forward_axis");
         if (!ReadNumber(inVehicle, inPointer, "mesh_unit_m", NumberRange::Positive(), false, ioVehicle.mMeshUnit) ||
-            !ReadNumber(inVehicle, inPointer, "mesh_length_m", NumberRange::Positive(), false,
+            !ReadNumber(inVehicle, inPointer, "mesh_length_m", MeshLength(), false,
                         ioVehicle.mMeshLength) ||
             !ReadNumber(inVehicle, inPointer, "mesh_max_edge_m", NumberRange::NonNegative(), false,
                         ioVehicle.mMeshMaxEdge) ||

@@ -43,6 +43,11 @@ enum class ETarget : std::uint8_t
     FemBarrier,
 };
 
+/// Bounds on a car mesh's length once scaled (m): mesh_length_m, and the longest side of a mesh scaled by
+/// mesh_unit_m. Outside them the unit is wrong (a file in millimetres read as metres, or the reverse).
+inline constexpr double cMinMeshLength = 0.1;
+inline constexpr double cMaxMeshLength = 1000.0;
+
 /// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
 /// the body frame is x forward, y left, z up, centred on the body's bounding box.
 struct VehicleSpec
