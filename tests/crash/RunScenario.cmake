@@ -1,11 +1,15 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # cmake -DCRASH=<crumple-crash> -DSCENARIO=<file> -DOUT=<dir> -DEXPECT_EXIT=<0|1|2> [-DEXPECT_TEXT=<regex>]
-#       [-DREJECT_TEXT=<regex>] [-DARGS=<extra arguments, ;-separated>] [-DREPLAY=<crumple-replay>] -P RunScenario.cmake
+#       [-DREJECT_TEXT=<regex>] [-DARGS=<extra arguments, ;-separated>] [-DREPLAY=<crumple-replay>]
+#       [-DNO_FOLDER=<a parent of OUT that a refused run must not leave behind>] -P RunScenario.cmake
 # Runs one scenario and checks the exit status, the message, and what was (or was not) written; with REPLAY,
 # also that replaying the run's recording headless gives a byte-identical deformed mesh (of a run that failed
 # an expectation or a sanity check too: it still recorded what it did).
 file(REMOVE_RECURSE ${OUT})
+if(DEFINED NO_FOLDER)
+    file(REMOVE_RECURSE ${NO_FOLDER})
+endif()
 execute_process(COMMAND ${CRASH} ${SCENARIO} --out ${OUT} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}${err}")
 if(NOT code EQUAL EXPECT_EXIT)
@@ -20,6 +24,9 @@ endif()
 if(EXPECT_EXIT EQUAL 2)
     if(EXISTS ${OUT})
         message(FATAL_ERROR "a refused scenario wrote ${OUT}")
+    endif()
+    if(DEFINED NO_FOLDER AND EXISTS ${NO_FOLDER})
+        message(FATAL_ERROR "a refused scenario left ${NO_FOLDER} behind")
     endif()
 else()
     foreach(file report.json report.html deformed.obj timeseries.csv replay.crumple)

@@ -68,6 +68,12 @@ set(crash_malformed
     "preset_duplicate_key|crush_A_N_per_m: duplicate key"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
     "mesh_face_index_beyond|mIndices\\[2\\] is out of range")
+# A refused scenario whose --out names folders that do not exist yet leaves none of them behind.
+add_test(NAME "crash: a refused scenario leaves no parent folder of --out that it made"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/malformed/corrupt_mesh.json
+            -DOUT=${crash_out}/nested-refused/a/b -DNO_FOLDER=${crash_out}/nested-refused -DEXPECT_EXIT=2
+            "-DEXPECT_TEXT=cannot read" -P ${crash_script})
+set_tests_properties("crash: a refused scenario leaves no parent folder of --out that it made" PROPERTIES LABELS crash)
 foreach(entry IN LISTS crash_malformed)
     string(REPLACE "|" ";" parts "${entry}")
     list(GET parts 0 name)

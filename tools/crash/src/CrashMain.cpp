@@ -340,18 +340,28 @@ int main(int argc, char** argv)
         return failed.Get() == 0 ? cExitPass : cExitFail;
     }
     std::error_code error;
-    const bool made_folder = !std::filesystem::exists(out, error);
+    // The outermost folder this run makes: the output folder, or the first of its parents that does not exist
+    // yet (--out a/b/c in an empty folder makes a).
+    std::filesystem::path made_folder;
+    for (std::filesystem::path folder = std::filesystem::absolute(out, error).lexically_normal();
+         !error && !folder.empty() && !std::filesystem::exists(folder, error); folder = folder.parent_path())
+    {
+        made_folder = folder;
+        if (folder == folder.parent_path())
+            break;
+    }
     std::filesystem::create_directories(out, error);
     if (error)
     {
         std::fprintf(stderr, "crumple-crash: cannot create %s: %s\n", out.string().c_str(), error.message().c_str());
         return cExitBadInput;
     }
-    // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing.
+    // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing,
+    // not even the parent folders it made.
     const int status = Run(scenario.Get(), sweep, sweep_spec.Get(), workers, calibrate || campbell_check, calibrate,
                            line, preset_name, source, pictures, colour_max, strict, out);
-    if (status == cExitBadInput && made_folder)
-        std::filesystem::remove_all(out, error);
+    if (status == cExitBadInput && !made_folder.empty())
+        std::filesystem::remove_all(made_folder, error);
     return status;
 }
 
