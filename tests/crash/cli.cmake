@@ -59,6 +59,7 @@ set(crash_malformed
     "corrupt_mesh|cannot read"
     "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
     "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
+    "control_count_and_spacing|/vehicle/control_spacing_m: give control_count"
     "mesh_unit_too_large|hatchback.obj measures 1.58e\\+03 m across once scaled \\(mesh_unit_m 10\\): a car body must measure 0.1-1000 m"
     "mesh_length_too_small|/vehicle/mesh_length_m: must be in \\[0.1, 1000\\]"
     "huge_speed|/impact/speed_km_h: must be in"
@@ -68,6 +69,17 @@ set(crash_malformed
     "preset_duplicate_key|crush_A_N_per_m: duplicate key"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
     "mesh_face_index_beyond|mIndices\\[2\\] is out of range")
+# Campbell's line comes from full-frontal rigid-wall tests: --calibrate refuses a pole scenario, and a sweep.
+add_test(NAME "crash: --calibrate refuses a scenario that is not a full-frontal rigid wall"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/pole_frontal_32kmh.json
+            -DOUT=${crash_out}/calibrate-pole -DEXPECT_EXIT=2 "-DARGS=--calibrate;--b0;2.173;--b1;24.07"
+            "-DEXPECT_TEXT=--calibrate needs a full-frontal rigid-wall scenario" -P ${crash_script})
+add_test(NAME "crash: --calibrate refuses --sweep"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/calibration/mid_size_frontal.json
+            -DOUT=${crash_out}/calibrate-sweep -DEXPECT_EXIT=2 "-DARGS=--calibrate;--b0;2.173;--b1;24.07;--sweep;speed=10:20:2"
+            "-DEXPECT_TEXT=cannot be combined with --sweep" -P ${crash_script})
+set_tests_properties("crash: --calibrate refuses a scenario that is not a full-frontal rigid wall"
+    "crash: --calibrate refuses --sweep" PROPERTIES LABELS crash)
 # A refused scenario whose --out names folders that do not exist yet leaves none of them behind.
 add_test(NAME "crash: a refused scenario leaves no parent folder of --out that it made"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/malformed/corrupt_mesh.json

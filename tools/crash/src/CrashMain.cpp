@@ -271,6 +271,30 @@ int main(int argc, char** argv)
                              "lowest speed they run, 20 km/h) and --b1 in [1, 1000] 1/s (Campbell's line: crush = (v - b0) / b1)\n");
         return cExitBadInput;
     }
+    // intent: Campbell's line is measured in full-width rigid-barrier tests; fitted to another hit it would
+    // make a preset that crushes the wrong amount everywhere, and with --sweep it was ignored unsaid
+    if (calibrate || campbell_check)
+    {
+        const TargetSpec& target = scenario.Get().mTarget;
+        const ImpactSpec& impact = scenario.Get().mImpact;
+        const char* mode = calibrate ? "--calibrate" : "--campbell-check";
+        if (calibrate && campbell_check)
+        {
+            std::fprintf(stderr, "crumple-crash: give --calibrate or --campbell-check, not both\n");
+            return cExitBadInput;
+        }
+        if (!sweep.empty())
+        {
+            std::fprintf(stderr, "crumple-crash: %s runs its own speeds: it cannot be combined with --sweep\n", mode);
+            return cExitBadInput;
+        }
+        if (target.mType != ETarget::RigidWall || target.mAngleDegrees != 0.0 || impact.mOffset != 0.0 || impact.mHeadingDegrees != 0.0)
+        {
+            std::fprintf(stderr, "crumple-crash: %s needs a full-frontal rigid-wall scenario (target rigid_wall at 0 degrees, no "
+                                 "offset, no heading): Campbell's line comes from such tests\n", mode);
+            return cExitBadInput;
+        }
+    }
     Result<CrashSweepSpec> sweep_spec = CrashSweepSpec{};
     if (!sweep.empty())
     {

@@ -576,6 +576,10 @@ class ScenarioReader
                             "give inertia_kg_m2 or inertia_from, not both");
             ioVehicle.mInertiaFromMesh = choice == 1;
         }
+        // intent: with a control count every zone has its controls, and the spacing would be ignored unsaid
+        if (inVehicle.contains("control_count") && inVehicle.contains("control_spacing_m"))
+            return Fail(EError::InvalidArgument, Child(inPointer, "control_spacing_m"),
+                        "give control_count (controls per axis) or control_spacing_m (a spacing for them), not both");
         if (!ReadControlCount(inVehicle, inPointer, ioVehicle.mControlCount) ||
             !ReadNumber(inVehicle, inPointer, "control_spacing_m", NumberRange::Positive(), false,
                         ioVehicle.mControlSpacing))
