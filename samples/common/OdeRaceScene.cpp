@@ -1,0 +1,245 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "OdeRaceScene.h"
+#include "BoxMesh.h"
+#include "RaceFence.h"
+#include "RaceSession.h"
+
+#include <crumple/ffd/BoundingBox.h>
+#include <crumple/ode/OdeAdapter.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace crumple::samples
+{
+
+using namespace crumple::plugin;
+
+namespace
+{
+
+constexpr double cStep = 1.0 / 240.0; // four engine steps per 60 Hz frame
+constexpr double cWheelRadius = 0.35;
+
+Transform PoseOf(dBodyID inBody)
+{
+    const dReal* r = dBodyGetRotation(inBody);
+    const dReal* p = dBodyGetPosition(inBody);
+    Mat3 rotation;
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col)
+            rotation(row, col) = r[row * 4 + col];
+    return {Quat(rotation).normalized().toRotationMatrix(), Vec3(p[0], p[1], p[2])};
+}
+
+} // namespace
+
+OdeRaceScene::OdeRaceScene(const RaceSceneSettings& inSettings) : RaceScene(inSettings)
+{
+    dInitODE2(0); // reference counted by ODE; paired with dCloseODE in the destructor
+}
+
+OdeRaceScene::~OdeRaceScene()
+{
+    // The Crumple side first (the adapter's bodies are in the world), then the engine's.
+    mFence.reset();
+    mAdapter.reset();
+    if (mContacts != nullptr)
+        dJointGroupDestroy(mContacts);
+    if (mSpace != nullptr)
+        dSpaceDestroy(mSpace);
+    if (mWorld != nullptr)
+        dWorldDestroy(mWorld);
+    dCloseODE();
+}
+
+void OdeRaceScene::Near(void* inData, dGeomID inGeom1, dGeomID inGeom2)
+{
+    auto* scene = static_cast<OdeRaceScene*>(inData);
+    dBodyID b1 = dGeomGetBody(inGeom1), b2 = dGeomGetBody(inGeom2);
+    if (b1 != nullptr && b2 != nullptr && dAreConnected(b1, b2) != 0)
+        return; // the chassis and its own wheels
+    std::array<dContact, 8> contacts{};
+    const int count = dCollide(inGeom1, inGeom2, static_cast<int>(contacts.size()), &contacts[0].geom, sizeof(dContact));
+    if (count <= 0)
+        return;
+    if (scene->mAdapter != nullptr)
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count))); // Crumple
+    for (int i = 0; i < count; ++i)
+    {
+        dContact& contact = contacts[static_cast<std::size_t>(i)];
+        contact.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+        // Tyres grip; bodywork slides along barriers and other cars.
+        const bool tyre = dGeomGetClass(inGeom1) == dSphereClass || dGeomGetClass(inGeom2) == dSphereClass;
+        contact.surface.mu = tyre ? 1.2 : 0.3;
+        // Stiff contacts: an impact is stopped within a step, as Crumple's per-step impulses assume
+        // (soft contacts leave approach for later steps, which then counts again).
+        // A held prop body is put back where it stands after every step, over a car that pushed into it:
+        // error reduction would push the two apart with velocity no impulse accounts for. Its contacts
+        // resolve velocities only (as Bullet's split impulse does).
+        const bool held = std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b1) != scene->mHeldBodies.end() ||
+                          std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b2) != scene->mHeldBodies.end();
+        contact.surface.soft_erp = held ? 0.0 : 0.2;
+        contact.surface.soft_cfm = 1.0e-5;
+        dJointAttach(dJointCreateContact(scene->mWorld, scene->mContacts, &contact), b1, b2);
+    }
+}
+
+Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettings& inSettings)
+{
+    std::unique_ptr<OdeRaceScene> scene(new OdeRaceScene(inSettings));
+    OdeRaceScene& s = *scene;
+    const ffd::TriangleMesh car_mesh = RaceCarMesh();
+    const ffd::AlignedBox bounds = ffd::BoundingBox(car_mesh.mPositions);
+    const Vec3 half = 0.5 * (bounds.mMax - bounds.mMin);
+
+    s.mWorld = dWorldCreate();
+    dWorldSetGravity(s.mWorld, 0, 0, -9.81);
+    dWorldSetQuickStepNumIterations(s.mWorld, 50);
+    s.mSpace = dHashSpaceCreate(nullptr);
+    s.mContacts = dJointGroupCreate(0);
+    if (inSettings.mAttach)
+    {
+        if (Status created = s.CreateDamageWorld(); !created)
+            return created.GetError();
+        Result<std::unique_ptr<ode::OdeAdapter>> adapter = ode::OdeAdapter::Create(*s.mDamage);
+        if (!adapter)
+            return adapter.GetError();
+        s.mAdapter = std::move(adapter).Get();
+        s.mNames[s.mAdapter->GetEnvironment()] = "ground";
+    }
+
+    dCreatePlane(s.mSpace, 0, 0, 1, 0);
+    const Vec3 barrier_half = RaceCourse::BarrierHalfExtents();
+    for (const Transform& pose : RaceCourse::Barriers())
+    {
+        dGeomID barrier = dCreateBox(s.mSpace, 2 * barrier_half.x(), 2 * barrier_half.y(), 2 * barrier_half.z());
+        dGeomSetPosition(barrier, pose.mTranslation.x(), pose.mTranslation.y(), pose.mTranslation.z());
+        dMatrix3 rotation;
+        dRFromAxisAndAngle(rotation, 0, 0, 1, RaceCourse::cBarrierYaw);
+        dGeomSetRotation(barrier, rotation);
+        if (s.mAdapter == nullptr)
+            continue;
+        Result<BodyId> added = s.mAdapter->AddStaticGeom(barrier);
+        if (!added)
+            return added.GetError();
+        s.mNames[added.Get()] = "barrier " + std::to_string(s.mNames.size());
+    }
+
+    // The car: chassis box around the body mesh, wheels of 0.35 m (inside its footprint, so the body, not a
+    // wheel, meets the barriers) on hinge-2 joints (axis 1 steering, locked; axis 2 the axle, motorized at
+    // the rear), the joint's suspension ERP/CFM giving the springs.
+    const double mass = 1200.0;
+    const double ride_height = cWheelRadius + 0.3 * half.z() + 0.3; // wheels just touching the ground
+    s.mChassis = dBodyCreate(s.mWorld);
+    dMass chassis_mass;
+    dMassSetBoxTotal(&chassis_mass, mass, 2 * half.x(), 2 * half.y(), 1.6 * half.z());
+    dBodySetMass(s.mChassis, &chassis_mass);
+    dBodySetPosition(s.mChassis, 0, 0, ride_height);
+    dBodySetAutoDisableFlag(s.mChassis, 0);
+    dGeomSetBody(dCreateBox(s.mSpace, 2 * half.x(), 2 * half.y(), 1.6 * half.z()), s.mChassis);
+    for (int i = 0; i < 4; ++i)
+    {
+        const bool front = i < 2;
+        const Vec3 at((front ? 0.7 : -0.7) * half.x(), (i % 2 == 0 ? 0.6 : -0.6) * half.y(), ride_height - 0.3 * half.z() - 0.3);
+        dBodyID wheel = dBodyCreate(s.mWorld);
+        dMass wheel_mass;
+        dMassSetSphereTotal(&wheel_mass, 40.0, cWheelRadius);
+        dBodySetMass(wheel, &wheel_mass);
+        dBodySetPosition(wheel, at.x(), at.y(), at.z());
+        dGeomSetBody(dCreateSphere(s.mSpace, cWheelRadius), wheel);
+        dJointID hinge = dJointCreateHinge2(s.mWorld, nullptr);
+        dJointAttach(hinge, s.mChassis, wheel);
+        dJointSetHinge2Anchor(hinge, at.x(), at.y(), at.z());
+        const dReal axis1[3] = {0, 0, 1}, axis2[3] = {0, 1, 0};
+        dJointSetHinge2Axes(hinge, axis1, axis2);
+        dJointSetHinge2Param(hinge, dParamSuspensionERP, 0.4);
+        dJointSetHinge2Param(hinge, dParamSuspensionCFM, 2.0e-5);
+        dJointSetHinge2Param(hinge, dParamLoStop, 0);
+        dJointSetHinge2Param(hinge, dParamHiStop, 0);
+        s.mHinges[static_cast<std::size_t>(i)] = hinge;
+    }
+    if (s.mAdapter != nullptr)
+    {
+        Result<BodyId> car_body = s.mAdapter->AddBody(s.mChassis);
+        if (!car_body)
+            return car_body.GetError();
+        s.mNames[car_body.Get()] = "racing car";
+        if (Status created = s.CreateCarObject(car_body.Get(), false, car_mesh); !created)
+            return created.GetError();
+    }
+
+    // The parked car.
+    const Vec3 parked_half = RaceCourse::ParkedHalfExtents();
+    const Transform parked_pose = RaceCourse::ParkedCar();
+    s.mParked = dBodyCreate(s.mWorld);
+    dMass parked_mass;
+    dMassSetBoxTotal(&parked_mass, RaceCourse::cParkedMass, 2 * parked_half.x(), 2 * parked_half.y(), 2 * parked_half.z());
+    dBodySetMass(s.mParked, &parked_mass);
+    dBodySetPosition(s.mParked, parked_pose.mTranslation.x(), parked_pose.mTranslation.y(), parked_pose.mTranslation.z());
+    dGeomSetBody(dCreateBox(s.mSpace, 2 * parked_half.x(), 2 * parked_half.y(), 2 * parked_half.z()), s.mParked);
+    if (s.mAdapter == nullptr)
+        return scene;
+    Result<BodyId> parked_body = s.mAdapter->AddBody(s.mParked);
+    if (!parked_body)
+        return parked_body.GetError();
+    s.mNames[parked_body.Get()] = "parked car";
+    if (Status created = s.CreateCarObject(parked_body.Get(), true, common::MakeBoxMesh(parked_half, {42, 18, 14})); !created)
+        return created.GetError();
+
+    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
+    ode::OdeAdapter& bodies = *s.mAdapter;
+    Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
+        *s.mDamage, {.mMakePropBody =
+                         [&bodies, &s](const PropBodySettings& inBody) {
+                             Result<BodyId> made = bodies.CreatePropBody(s.mWorld, s.mSpace, inBody);
+                             if (made && inBody.mHeld)
+                                 s.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
+                             return made;
+                         },
+                     .mHeld = {.mCreatePieceBody = [&bodies, &s](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); },
+                               .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
+                               .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                               .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
+        cStep);
+    if (!fence)
+        return MakeError(fence.GetError().mCode, "the fence: " + fence.GetError().mMessage);
+    s.mFence = std::move(fence).Get();
+    s.mNames[s.mFence->GetBody()] = "fence";
+    return scene;
+}
+
+Status OdeRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
+{
+    // Drive: the rear motors spin the wheels up to the target speed.
+    for (int i = 2; i < 4; ++i)
+    {
+        dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamVel2, -mSettings.mSpeed / cWheelRadius);
+        dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamFMax2, 1500.0);
+    }
+    for (int sub = 0; sub < 4; ++sub)
+    {
+        dSpaceCollide(mSpace, this, &OdeRaceScene::Near);
+        dWorldQuickStep(mWorld, cStep);
+        if (mAdapter != nullptr)
+            mAdapter->AfterStep(cStep); // Crumple
+        dJointGroupEmpty(mContacts);
+        // The fence's FEM after each engine step: the held fence body takes the struck timbers' velocity.
+        if (Status stepped = StepFence(cStep, inNewBodies); !stepped)
+            return stepped;
+    }
+    return Status::Ok();
+}
+
+Transform OdeRaceScene::GetCarPose() const
+{
+    return PoseOf(mChassis);
+}
+
+Transform OdeRaceScene::GetParkedPose() const
+{
+    return PoseOf(mParked);
+}
+
+} // namespace crumple::samples

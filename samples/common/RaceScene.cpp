@@ -1,0 +1,53 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "RaceScene.h"
+#include "RaceFence.h"
+#include "ThreadJobSystem.h"
+
+namespace crumple::samples
+{
+
+using namespace crumple::plugin;
+
+RaceScene::RaceScene(const RaceSceneSettings& inSettings) : mSettings(inSettings)
+{
+}
+
+RaceScene::~RaceScene() = default;
+
+Status RaceScene::CreateDamageWorld()
+{
+    mJobs = std::make_unique<common::ThreadJobSystem>(mSettings.mThreads);
+    DamageWorldSettings damage;
+    damage.mJobs = mSettings.mThreads > 1 || mSettings.mDeferDents ? &mJobs->Get() : nullptr;
+    damage.mDeferDents = mSettings.mDeferDents;
+    Result<std::unique_ptr<DamageWorld>> world = DamageWorld::Create(damage);
+    if (!world)
+        return world.GetError();
+    mDamage = std::move(world).Get();
+    return Status::Ok();
+}
+
+Status RaceScene::CreateCarObject(BodyId inBody, bool inParked, const ffd::TriangleMesh& inMesh)
+{
+    DeformableObjectSettings settings;
+    settings.mMesh = inMesh;
+    Result<ObjectId> object = mDamage->CreateDeformableObject(inBody, settings);
+    if (!object)
+        return object.GetError();
+    (inParked ? mParkedObject : mCarObject) = mDamage->GetObject(object.Get());
+    return Status::Ok();
+}
+
+Status RaceScene::StepFence(double inStep, const RaceNewBodies& inNewBodies)
+{
+    if (mFence == nullptr)
+        return Status::Ok();
+    mPieces.clear();
+    const Status stepped = mFence->Step(inStep, mPieces);
+    if (inNewBodies && !mPieces.empty())
+        inNewBodies(mPieces);
+    return stepped;
+}
+
+} // namespace crumple::samples

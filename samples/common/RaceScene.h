@@ -1,0 +1,88 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/plugin/DamageWorld.h>
+
+#include <crumple/ffd/TriangleMesh.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace crumple::common
+{
+class ThreadJobSystem;
+}
+
+namespace crumple::samples
+{
+
+class RaceFence;
+
+/// How a racing scene (BulletRaceScene, OdeRaceScene) is made.
+struct RaceSceneSettings
+{
+    double mSpeed = 20.0;     ///< The car's target speed (m/s)
+    int mThreads = 1;         ///< Threads of the game's job system handed to Crumple
+    bool mDeferDents = false; ///< DamageWorldSettings::mDeferDents
+    /// False: the engine alone, with the same course and cars but no Crumple (no damage world, adapter,
+    /// deformable objects or fence): the bare side of a frame budget (crumple-bench frame_budget)
+    bool mAttach = true;
+};
+
+/// Told the engine bodies a frame's engine steps made (the fence's pieces), after each step that made some.
+using RaceNewBodies = std::function<void(std::span<const plugin::BodyId>)>;
+
+/// A racing scene, whatever the engine: what the racing samples and the frame-budget benchmark step and
+/// read. The engine's scene (BulletRaceScene, OdeRaceScene) builds the course; this part holds Crumple's side.
+class RaceScene
+{
+public:
+    virtual ~RaceScene();
+    RaceScene(const RaceScene&) = delete;
+    RaceScene& operator=(const RaceScene&) = delete;
+
+    /// One 60 Hz frame: the driver's throttle, then four engine steps of 1/240 s, the fence's FEM after each
+    /// (the held fence body takes the struck timbers' velocity at every step: a frame's worth of steps
+    /// against a fence at rest would take from the car what four fences would).
+    virtual Status StepFrame(const RaceNewBodies& inNewBodies) = 0;
+    /// Where the engine has the two cars now
+    virtual Transform GetCarPose() const = 0;
+    virtual Transform GetParkedPose() const = 0;
+
+    /// The damage world, the cars' deformable objects and the fence (null without Crumple attached)
+    plugin::DamageWorld* GetDamage() { return mDamage.get(); }
+    const plugin::DeformableObject* GetCar() const { return mCarObject; }
+    const plugin::DeformableObject* GetParked() const { return mParkedObject; }
+    RaceFence* GetFence() { return mFence.get(); }
+    /// The bodies' names for the collision log
+    const std::map<plugin::BodyId, std::string>& GetNames() const { return mNames; }
+
+protected:
+    explicit RaceScene(const RaceSceneSettings& inSettings);
+    /// With mAttach: the game's job system (threads started per parallel for, handed to Crumple for dents)
+    /// and the damage world, before the engine's adapter is made.
+    Status CreateDamageWorld();
+    /// A car's deformable object on its body (inParked: the parked car's box, else the racing car's mesh).
+    Status CreateCarObject(plugin::BodyId inBody, bool inParked, const ffd::TriangleMesh& inMesh);
+    /// After one engine step of inStep seconds: the fence's FEM, and the bodies its pieces became.
+    Status StepFence(double inStep, const RaceNewBodies& inNewBodies);
+
+    RaceSceneSettings mSettings;
+    std::unique_ptr<common::ThreadJobSystem> mJobs;
+    std::unique_ptr<plugin::DamageWorld> mDamage;
+    std::unique_ptr<RaceFence> mFence; ///< Reset by the engine's scene before its adapter goes
+    const plugin::DeformableObject* mCarObject = nullptr;
+    const plugin::DeformableObject* mParkedObject = nullptr;
+    std::map<plugin::BodyId, std::string> mNames;
+
+private:
+    std::vector<plugin::BodyId> mPieces; // scratch: the bodies one engine step made
+};
+
+} // namespace crumple::samples

@@ -1,0 +1,53 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "RunRaceSession.h"
+#include "RaceFence.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace crumple::samples
+{
+
+int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const MakeRaceScene& inMakeScene)
+{
+    const auto fail = [inProgram](const Error& inError)
+    {
+        std::fprintf(stderr, "%s: %s\n", inProgram, inError.mMessage.c_str());
+        return 2;
+    };
+    Result<std::unique_ptr<RaceScene>> made = inMakeScene(
+        {.mSpeed = inOptions.mSpeed, .mThreads = inOptions.mThreads, .mDeferDents = inOptions.mDeferDents, .mAttach = true});
+    if (!made)
+        return fail(made.GetError());
+    RaceScene& scene = *made.Get();
+    plugin::DamageWorld& damage = *scene.GetDamage();
+    RaceFence& fence = *scene.GetFence();
+    Result<std::unique_ptr<RaceSession>> created = RaceSession::Create(inOptions, damage, scene.GetNames());
+    if (!created)
+        return fail(created.GetError());
+    RaceSession& session = *created.Get();
+    if (Status recorded = fence.AttachRecorder(&session.GetRecorder()); !recorded)
+        return fail(recorded.GetError());
+    session.PaintCar(*scene.GetCar(), "before.png");
+
+    // A frame every 1/60 s, a picture every 0.1 s.
+    const int frames = static_cast<int>(std::lround(inOptions.mDuration * 60.0));
+    const RaceNewBodies name_pieces = [&session](std::span<const plugin::BodyId> inBodies) { session.NamePieces(inBodies, "fence piece"); };
+    Status finished = Status::Ok();
+    for (int frame = 0; frame < frames && finished; ++frame)
+    {
+        session.BeginFrame();
+        finished = scene.StepFrame(name_pieces);
+        session.EndFrame();
+        if (finished && frame % 6 == 0)
+            session.PaintFrame(*scene.GetCar(), scene.GetCarPose(), *scene.GetParked(), scene.GetParkedPose(), fence);
+    }
+    if (finished)
+        finished = session.Finish(damage, *scene.GetCar(), *scene.GetParked(), fence);
+    if (!finished)
+        return fail(finished.GetError());
+    return 0;
+}
+
+} // namespace crumple::samples
