@@ -89,13 +89,6 @@ void EngineCases(BenchTable& ioTable, const std::string& inEngine, int inRepetit
     OverheadCase<Scene>(ioTable, inEngine, "wall_crash_15m_s", crash, inRepetitions);
 }
 
-// The value below which inQuantile of the values lie (nearest rank).
-double Quantile(std::vector<double> inValues, double inQuantile)
-{
-    std::sort(inValues.begin(), inValues.end());
-    return inValues[static_cast<std::size_t>(inQuantile * static_cast<double>(inValues.size() - 1))];
-}
-
 // A crash at game frames: a bare scene and the same scene with Crumple attached stepped in lockstep (bare
 // frame, attached frame, ...), each frame timed in wall and thread CPU time. The attached scene's worst
 // frame is the hitch a game sees when the car hits; the bare scene's is the engine's own.
@@ -165,6 +158,7 @@ void RunFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions
 #if defined(CRUMPLE_BENCH_ODE)
     FrameBudgetCases<common::OdeWallCrash>(ioTable, "ode", inOptions.mQuick);
 #endif
+    RunRaceFrameBudgetBenchmarks(ioTable, inOptions);
     (void)ioTable;
     (void)inOptions;
 }

@@ -54,6 +54,12 @@ std::string FormatExtra(double inValue)
     return text;
 }
 
+double Quantile(std::vector<double> inValues, double inQuantile)
+{
+    std::sort(inValues.begin(), inValues.end());
+    return inValues[static_cast<std::size_t>(inQuantile * static_cast<double>(inValues.size() - 1))];
+}
+
 namespace
 {
 

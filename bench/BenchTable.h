@@ -45,6 +45,9 @@ double ElapsedMs(std::chrono::steady_clock::time_point inStart);
 /// A number for the extra column: 4 significant digits, never a comma.
 std::string FormatExtra(double inValue);
 
+/// The value below which inQuantile (in [0, 1]) of inValues lie, nearest rank; inValues not empty.
+double Quantile(std::vector<double> inValues, double inQuantile);
+
 /// Wall and thread CPU time of one repetition (ms).
 struct Timing
 {

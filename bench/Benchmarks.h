@@ -24,6 +24,9 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 void RunAdapterBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// Worst, 99th-percentile and median frame of a crash at 60 Hz, bare engine and Crumple attached, in lockstep.
 void RunFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+/// The racing samples' course (BulletRaceScene, OdeRaceScene) at 60 Hz, bare engine and Crumple attached in
+/// lockstep: worst and 99th-percentile frame of each side (part of the frame_budget group).
+void RunRaceFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// The steel cantilever of the FEM issue on meshes of about 1k, 10k and 100k tetrahedra: time of one 1/60 s
 /// Step() against the error of the tip deflection (Timoshenko) for explicit and implicit Euler and the linear

@@ -59,6 +59,8 @@ public:
     Status WriteObj(const std::filesystem::path& inPath) const;
     /// One line: links broken, pieces loose, bodies made, the FEM's steps and its worst step time.
     std::string Summary() const;
+    /// The longest Step() so far, in the game thread's CPU time (ms)
+    double GetWorstStepMs() const { return mWorstStepMs; }
 
 private:
     explicit RaceFence(plugin::DamageWorld& ioDamage) : mDamage(&ioDamage) {}

@@ -1,0 +1,105 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// The racing samples' scene at game frames (frame_budget group): the course with Crumple attached, and the
+// same course bare (the engine alone), stepped in lockstep, frame by frame.
+#include "Benchmarks.h"
+
+#if defined(CRUMPLE_BENCH_RACING_BULLET)
+#include "BulletRaceScene.h"
+#endif
+#if defined(CRUMPLE_BENCH_RACING_ODE)
+#include "OdeRaceScene.h"
+#endif
+#if defined(CRUMPLE_BENCH_RACING_BULLET) || defined(CRUMPLE_BENCH_RACING_ODE)
+#include "RaceFence.h"
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace crumple::bench
+{
+
+namespace
+{
+
+#if defined(CRUMPLE_BENCH_RACING_BULLET) || defined(CRUMPLE_BENCH_RACING_ODE)
+
+// inFrames 60 Hz frames of the bare scene and the attached one, alternating (bare frame, attached frame, ...),
+// each frame timed in wall and thread CPU time: the worst and the 99th percentile of each side, and where the
+// attached side's worst frame fell (the fence hit and the parked car are the candidates).
+template <class Scene>
+void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::string& inCase,
+              const samples::RaceSceneSettings& inAttached, int inFrames)
+{
+    samples::RaceSceneSettings bare_settings = inAttached;
+    bare_settings.mAttach = false;
+    Result<std::unique_ptr<Scene>> bare = Scene::Create(bare_settings);
+    Result<std::unique_ptr<Scene>> attached = Scene::Create(inAttached);
+    if (!bare || !attached)
+    {
+        std::printf("  frame_budget %s/%s: not run: %s\n", inEngine.c_str(), inCase.c_str(),
+                    (!bare ? bare.GetError() : attached.GetError()).mMessage.c_str());
+        return;
+    }
+    std::vector<double> wall[2], cpu[2];
+    Status stepped = Status::Ok();
+    for (int frame = 0; frame < inFrames && stepped; ++frame)
+        for (int side = 0; side < 2 && stepped; ++side)
+        {
+            Scene& scene = side == 0 ? *bare.Get() : *attached.Get();
+            const double cpu_start = ThreadCpuMs();
+            const auto start = std::chrono::steady_clock::now();
+            stepped = scene.StepFrame(nullptr);
+            wall[side].push_back(ElapsedMs(start));
+            cpu[side].push_back(ThreadCpuMs() - cpu_start);
+        }
+    if (!stepped)
+    {
+        std::printf("  frame_budget %s/%s: stopped: %s\n", inEngine.c_str(), inCase.c_str(), stepped.GetError().mMessage.c_str());
+        return;
+    }
+    attached.Get()->GetDamage()->Flush();
+    const auto worst_at = [](const std::vector<double>& inValues)
+    { return static_cast<int>(std::max_element(inValues.begin(), inValues.end()) - inValues.begin()); };
+    const int worst = worst_at(cpu[1]);
+    const samples::RaceFence& fence = *attached.Get()->GetFence();
+    ioTable.Add({"frame_budget", inEngine + "/" + inCase, Quantile(wall[1], 0.5), 0.0, "none",
+                 "worst_cpu_ms=" + FormatExtra(cpu[1][static_cast<std::size_t>(worst)]) + ";worst_at_s=" + FormatExtra(worst / 60.0) +
+                     ";worst_wall_ms=" + FormatExtra(*std::max_element(wall[1].begin(), wall[1].end())) +
+                     ";p99_cpu_ms=" + FormatExtra(Quantile(cpu[1], 0.99)) + ";p99_wall_ms=" + FormatExtra(Quantile(wall[1], 0.99)) +
+                     ";median_cpu_ms=" + FormatExtra(Quantile(cpu[1], 0.5)) +
+                     ";bare_worst_cpu_ms=" + FormatExtra(*std::max_element(cpu[0].begin(), cpu[0].end())) +
+                     ";bare_p99_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.99)) + ";bare_median_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.5)) +
+                     ";fence_worst_step_ms=" + FormatExtra(fence.GetWorstStepMs()) + ";frames=" + std::to_string(inFrames)});
+}
+
+template <class Scene>
+void RaceCases(BenchTable& ioTable, const std::string& inEngine, bool inQuick)
+{
+    // The samples' 6 s session (the fence at 3.15 s, the parked car at 3.8 s); --quick stops before them.
+    const int frames = inQuick ? 30 : 360;
+    RaceCase<Scene>(ioTable, inEngine, "racing/inline", {}, frames);
+    if (!inQuick)
+        RaceCase<Scene>(ioTable, inEngine, "racing/deferred_2_threads", {.mThreads = 2, .mDeferDents = true}, frames);
+}
+
+#endif
+
+} // namespace
+
+void RunRaceFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+#if defined(CRUMPLE_BENCH_RACING_BULLET)
+    RaceCases<samples::BulletRaceScene>(ioTable, "bullet", inOptions.mQuick);
+#endif
+#if defined(CRUMPLE_BENCH_RACING_ODE)
+    RaceCases<samples::OdeRaceScene>(ioTable, "ode", inOptions.mQuick);
+#endif
+    (void)ioTable;
+    (void)inOptions;
+}
+
+} // namespace crumple::bench
