@@ -5,27 +5,40 @@
 #include <crumple/fem/EdgeMatrix.h>
 
 #include <algorithm>
+#include <limits>
+#include <string>
 
 namespace crumple::fem
 {
 
-BarycentricSearch::BarycentricSearch(std::span<const TetIndices> inElementNodes,
-                                     std::span<const Vec3> inPositions)
+Result<BarycentricSearch> BarycentricSearch::Create(std::span<const TetIndices> inElementNodes,
+                                                    std::span<const Vec3> inPositions)
 {
     // Invert every element's edge matrix once for all points.
-    mMaps.resize(inElementNodes.size());
+    BarycentricSearch search;
+    search.mMaps.resize(inElementNodes.size());
     for (std::size_t element = 0; element < inElementNodes.size(); ++element)
     {
         const TetIndices& corners = inElementNodes[element];
+        for (int node : corners)
+            if (node < 0 || static_cast<std::size_t>(node) >= inPositions.size())
+                return MakeError(EError::OutOfRange, "BarycentricSearch: element " + std::to_string(element) + " names node " +
+                                                         std::to_string(node) + " of " + std::to_string(inPositions.size()));
         const Vec3& origin = inPositions[corners[0]];
-        mMaps[element] = {origin, EdgeMatrix(origin, inPositions[corners[1]], inPositions[corners[2]],
-                                             inPositions[corners[3]])
-                                      .inverse()};
+        search.mMaps[element] = {origin, EdgeMatrix(origin, inPositions[corners[1]], inPositions[corners[2]],
+                                                    inPositions[corners[3]])
+                                             .inverse()};
     }
+    return search;
 }
 
 std::array<double, 4> BarycentricSearch::Weights(int inElement, const Vec3& inPoint) const
 {
+    if (inElement < 0 || static_cast<std::size_t>(inElement) >= mMaps.size())
+    {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        return {{nan, nan, nan, nan}};
+    }
     // l = D^-1 (x - p0), w = (1 - l1 - l2 - l3, l1, l2, l3).
     const ElementMap& map = mMaps[inElement];
     const Vec3 local = map.mInverseEdges * (inPoint - map.mOrigin);

@@ -57,7 +57,10 @@ Result<EmbeddedMesh> EmbeddedMesh::Create(const TetMesh& inMesh, std::span<const
         sorted_elements[entry] = by_group[entry].second;
 
     // Inverse edge matrices of the rest mesh; its elements are non-degenerate (TetMesh::Create checked it).
-    const BarycentricSearch search(inMesh.GetTets(), inMesh.GetRestPositions());
+    Result<BarycentricSearch> made = BarycentricSearch::Create(inMesh.GetTets(), inMesh.GetRestPositions());
+    if (!made)
+        return made.GetError(); // cannot happen for a TetMesh: its indices were checked when it was made
+    const BarycentricSearch& search = made.Get();
 
     EmbeddedMesh mesh;
     mesh.mVertices.resize(inRestPositions.size());

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <tuple>
 
 namespace crumple::fem
@@ -143,6 +144,62 @@ FractureLinks BuildFractureLinks(const TetMesh& inMesh)
         links.mNodeLinks.insert(links.mNodeLinks.end(), node_links[node].begin(), node_links[node].end());
     }
     return links;
+}
+
+namespace
+{
+
+// An offset table of inRows + 1 entries, from 0, ascending, ending at inSize.
+bool ValidOffsets(const std::vector<int>& inOffsets, std::size_t inRows, std::size_t inSize)
+{
+    if (inOffsets.size() != inRows + 1 || inOffsets.front() != 0 || static_cast<std::size_t>(inOffsets.back()) != inSize)
+        return false;
+    for (std::size_t row = 0; row < inRows; ++row)
+        if (inOffsets[row] > inOffsets[row + 1])
+            return false;
+    return true;
+}
+
+// Every value in [0, inCount).
+bool InRange(const std::vector<int>& inValues, int inCount)
+{
+    return std::all_of(inValues.begin(), inValues.end(), [inCount](int inValue) { return inValue >= 0 && inValue < inCount; });
+}
+
+} // namespace
+
+Status ValidateFractureLinks(const FractureLinks& inLinks, int inElementCount, int inNodeCount)
+{
+    const auto bad = [](const std::string& inWhat) { return MakeError(EError::InvalidArgument, "FractureLinks: " + inWhat); };
+    if (inElementCount < 0 || inNodeCount < 0)
+        return bad("negative element or node count");
+    const int groups = inLinks.GetGroupCount(), links = inLinks.GetLinkCount();
+    const auto elements = static_cast<std::size_t>(inElementCount), nodes = static_cast<std::size_t>(inNodeCount);
+    if (inLinks.mGroupOfElement.size() != elements || !InRange(inLinks.mGroupOfElement, groups))
+        return bad("mGroupOfElement must give each of the " + std::to_string(inElementCount) + " elements a group in [0, " +
+                   std::to_string(groups) + ")");
+    if (!ValidOffsets(inLinks.mGroupElementOffsets, static_cast<std::size_t>(groups), inLinks.mGroupElements.size()) ||
+        !InRange(inLinks.mGroupElements, inElementCount))
+        return bad("mGroupElementOffsets / mGroupElements do not list elements by group");
+    for (const std::array<int, 2>& pair : inLinks.mLinkGroups)
+        if (pair[0] < 0 || pair[0] >= groups || pair[1] < 0 || pair[1] >= groups)
+            return bad("mLinkGroups names a group outside [0, " + std::to_string(groups) + ")");
+    if (inLinks.mLinkRestNormals.size() != static_cast<std::size_t>(links))
+        return bad("mLinkRestNormals must have one normal per link");
+    if (!ValidOffsets(inLinks.mLinkFaceOffsets, static_cast<std::size_t>(links), inLinks.mLinkFaces.size()))
+        return bad("mLinkFaceOffsets do not index mLinkFaces");
+    for (const FractureLinkFace& face : inLinks.mLinkFaces)
+        if (face.mElement < 0 || face.mElement >= inElementCount || face.mCorners[0] > 3 || face.mCorners[1] > 3 ||
+            face.mCorners[2] > 3)
+            return bad("mLinkFaces names an element or corner slot out of range");
+    if (!ValidOffsets(inLinks.mLinkNodeOffsets, static_cast<std::size_t>(links), inLinks.mLinkNodes.size()) ||
+        !InRange(inLinks.mLinkNodes, inNodeCount))
+        return bad("mLinkNodeOffsets / mLinkNodes do not list rest nodes by link");
+    if (!ValidOffsets(inLinks.mNodeGroupOffsets, nodes, inLinks.mNodeGroups.size()) || !InRange(inLinks.mNodeGroups, groups))
+        return bad("mNodeGroupOffsets / mNodeGroups do not list groups by node for " + std::to_string(inNodeCount) + " nodes");
+    if (!ValidOffsets(inLinks.mNodeLinkOffsets, nodes, inLinks.mNodeLinks.size()) || !InRange(inLinks.mNodeLinks, links))
+        return bad("mNodeLinkOffsets / mNodeLinks do not list links by node for " + std::to_string(inNodeCount) + " nodes");
+    return Status::Ok();
 }
 
 } // namespace crumple::fem

@@ -6,14 +6,24 @@
 
 #include <algorithm>
 #include <numeric>
+#include <string>
 
 namespace crumple::fem
 {
 
-FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
-                                      std::span<const std::uint8_t> inBroken)
+Result<FractureConnectivity> FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
+                                              std::span<const std::uint8_t> inBroken)
 {
     const int node_count = inMesh.GetNodeCount();
+    if (Status valid = ValidateFractureLinks(inLinks, static_cast<int>(inMesh.GetTets().size()), node_count); !valid)
+        return MakeError(valid.GetError().mCode, "FractureTopology: " + valid.GetError().mMessage);
+    if (inBroken.size() != static_cast<std::size_t>(inLinks.GetLinkCount()))
+        return MakeError(EError::InvalidArgument, "FractureTopology: " + std::to_string(inBroken.size()) +
+                                                      " broken flags for " + std::to_string(inLinks.GetLinkCount()) + " links");
+    // intent: links that fit the arrays but not this mesh (a group missing from a node it touches) are refused
+    // where they are read, before an index past a node's groups is used
+    const auto not_of_mesh = [](const std::string& inWhere)
+    { return MakeError(EError::InvalidArgument, "FractureTopology: the links are not this mesh's (" + inWhere + ")"); };
     FractureConnectivity result;
     result.mNodeOrigin.resize(node_count);
     std::iota(result.mNodeOrigin.begin(), result.mNodeOrigin.end(), 0);
@@ -37,6 +47,8 @@ FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks
                 continue;
             const auto a = std::lower_bound(groups.begin(), groups.end(), inLinks.mLinkGroups[link][0]);
             const auto b = std::lower_bound(groups.begin(), groups.end(), inLinks.mLinkGroups[link][1]);
+            if (a == groups.end() || *a != inLinks.mLinkGroups[link][0] || b == groups.end() || *b != inLinks.mLinkGroups[link][1])
+                return not_of_mesh("link " + std::to_string(link) + " at node " + std::to_string(node));
             const int root_a = UnionFindRoot(parent, static_cast<int>(a - groups.begin()));
             const int root_b = UnionFindRoot(parent, static_cast<int>(b - groups.begin()));
             // Keep the lower position as root, so a cluster's root is its lowest group.
@@ -74,7 +86,10 @@ FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks
             const int begin = inLinks.mNodeGroupOffsets[node];
             const auto first = inLinks.mNodeGroups.begin() + begin;
             const auto last = inLinks.mNodeGroups.begin() + inLinks.mNodeGroupOffsets[node + 1];
-            result.mElementNodes[tet][corner] = group_node[begin + (std::lower_bound(first, last, group) - first)];
+            const auto found = std::lower_bound(first, last, group);
+            if (found == last || *found != group)
+                return not_of_mesh("element " + std::to_string(tet) + " at node " + std::to_string(node));
+            result.mElementNodes[tet][corner] = group_node[begin + (found - first)];
         }
     }
     return result;

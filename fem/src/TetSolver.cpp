@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/base/TimeStep.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
@@ -118,7 +119,10 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
     mElementNodes = mMesh.GetTets();
     mNodeRestPositions = mMesh.GetRestPositions();
     mRest = TetRestData(mMesh);
-    mMasses = LumpedNodeMass(mElementNodes, mRest, mMesh.GetNodeCount(), mMaterial.GetSettings().mDensity);
+    // intent: a valid mesh and material cannot be refused (Create checked both)
+    Result<std::vector<double>> masses = LumpedNodeMass(mElementNodes, mRest, mMesh.GetNodeCount(), mMaterial.GetSettings().mDensity);
+    CRUMPLE_ASSERT(masses.IsValid(), "the mesh's own masses were refused");
+    mMasses = masses.IsValid() ? std::move(masses).Get() : std::vector<double>(static_cast<std::size_t>(mMesh.GetNodeCount()), 1.0);
     mInverseMasses.resize(mMasses.size());
     mFree.assign(mMasses.size(), 1);
     for (std::size_t node = 0; node < mMasses.size(); ++node)
@@ -147,9 +151,10 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
         mPrincipal.resize(mLinks.GetGroupCount());
         // Groups that touch only along an edge or at a corner have no face to judge a crack by, and such a
         // joint carries no stress: they are separate pieces from the start.
-        FractureConnectivity intact = FractureTopology(mMesh, mLinks, mBroken);
-        if (intact.mNodeOrigin.size() != mPositions.size())
-            Reconnect(intact);
+        Result<FractureConnectivity> intact = FractureTopology(mMesh, mLinks, mBroken);
+        CRUMPLE_ASSERT(intact.IsValid(), "the mesh's own links were refused");
+        if (intact.IsValid() && intact.Get().mNodeOrigin.size() != mPositions.size())
+            Reconnect(intact.Get());
     }
 }
 
@@ -247,13 +252,23 @@ int TetSolver::Fracture()
     const TetElementPassInput input = PassInput();
     TetCauchyStress(input, mPositions, mRotations, mElementStress);
     mElementWork += mRest.size();
-    GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
+    const Status judged = GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
+    CRUMPLE_ASSERT(judged.IsValid(), "the solver's own groups were refused");
+    if (!judged.IsValid())
+        return 0;
     const FemMaterialSettings& material = mMaterial.GetSettings();
-    const int opened = OpenCracks(mLinks, mPrincipal, mElementNodes, mPositions, material.mTensileStrength,
-                                  material.mFractureMode, mBroken);
-    if (opened > 0)
-        Reconnect(FractureTopology(mMesh, mLinks, mBroken));
-    return opened;
+    // intent: the solver's own links, stresses and connectivity always fit (the checks cost a fraction of the
+    // stress pass above)
+    const Result<int> opened = OpenCracks(mLinks, mPrincipal, mElementNodes, mPositions, material.mTensileStrength,
+                                          material.mFractureMode, mBroken);
+    CRUMPLE_ASSERT(opened.IsValid(), "the solver's own crack inputs were refused");
+    if (!opened.IsValid() || opened.Get() == 0)
+        return 0;
+    const Result<FractureConnectivity> cracked = FractureTopology(mMesh, mLinks, mBroken);
+    CRUMPLE_ASSERT(cracked.IsValid(), "the solver's own links were refused");
+    if (cracked.IsValid())
+        Reconnect(cracked.Get());
+    return opened.Get();
 }
 
 // Moves the node state onto a new connectivity. Breaking only splits nodes, so every new node is a copy of
@@ -267,8 +282,12 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
         for (int corner = 0; corner < 4; ++corner)
             old_of_new[inConnectivity.mElementNodes[tet][corner]] = mElementNodes[tet][corner];
 
-    std::vector<double> masses = LumpedNodeMass(inConnectivity.mElementNodes, mRest, static_cast<int>(new_count),
-                                                mMaterial.GetSettings().mDensity);
+    Result<std::vector<double>> lumped = LumpedNodeMass(inConnectivity.mElementNodes, mRest, static_cast<int>(new_count),
+                                                        mMaterial.GetSettings().mDensity);
+    CRUMPLE_ASSERT(lumped.IsValid(), "FractureTopology's connectivity was refused");
+    if (!lumped.IsValid())
+        return; // cannot happen: FractureTopology numbers every node below its count
+    std::vector<double> masses = std::move(lumped).Get();
 
     std::vector<Vec3> positions(new_count), velocities(new_count), forces(new_count), rest(new_count);
     std::vector<double> inverse_masses(new_count);

@@ -38,7 +38,10 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                                                          std::to_string(node) + " of " + std::to_string(inPositions.size()));
 
     // Invert every element's edge matrix once for all contacts.
-    const BarycentricSearch search(inElementNodes, inPositions);
+    Result<BarycentricSearch> made = BarycentricSearch::Create(inElementNodes, inPositions);
+    if (!made)
+        return MakeError(made.GetError().mCode, "CollisionNodalImpulses: " + made.GetError().mMessage);
+    const BarycentricSearch& search = made.Get();
 
     std::vector<NodalImpulse> impulses;
     impulses.reserve(4 * inCollision.mContacts.size());

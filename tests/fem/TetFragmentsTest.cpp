@@ -65,7 +65,7 @@ TEST_CASE("TetFragments of a box broken everywhere: one cube each, anchored wher
     const Vec3 size(2.0, 0.5, 1.0);
     const Block block = MakeBlock(size, {4, 1, 2});
     const std::vector<std::uint8_t> broken(block.mLinks.GetLinkCount(), 1);
-    const FractureConnectivity connectivity = FractureTopology(block.mMesh, block.mLinks, broken);
+    const FractureConnectivity connectivity = FractureTopology(block.mMesh, block.mLinks, broken).Get();
     std::vector<Vec3> positions;
     for (int origin : connectivity.mNodeOrigin)
         positions.push_back(block.mMesh.GetRestPositions()[origin]);

@@ -129,7 +129,7 @@ TEST_CASE("LumpedNodeMass gives each corner a quarter of every element's mass", 
     TetGridSettings settings;
     const TetMesh cube = TetGrid(settings).Get();
     const double density = 7850.0;
-    const std::vector<double> masses = LumpedNodeMass(cube, density);
+    const std::vector<double> masses = LumpedNodeMass(cube, density).Get();
     for (int node = 0; node < 8; ++node)
     {
         const int parity = (node & 1) + ((node >> 1) & 1) + ((node >> 2) & 1);
@@ -140,7 +140,7 @@ TEST_CASE("LumpedNodeMass gives each corner a quarter of every element's mass", 
     settings.mSize = Vec3(1.0, 0.1, 0.1);
     settings.mCellCount = {20, 2, 2};
     const TetMesh beam = TetGrid(settings).Get();
-    const std::vector<double> beam_masses = LumpedNodeMass(beam, density);
+    const std::vector<double> beam_masses = LumpedNodeMass(beam, density).Get();
     CHECK(std::accumulate(beam_masses.begin(), beam_masses.end(), 0.0) ==
           Approx(density * 0.01).epsilon(1e-12));
     CHECK(*std::min_element(beam_masses.begin(), beam_masses.end()) > 0.0);

@@ -4,6 +4,7 @@
 set(CRUMPLE_FEM_FRACTURE_TESTS
     fem/FractureLinksTest.cpp
     fem/FractureTopologyTest.cpp
+    fem/FractureInputChecksTest.cpp
     fem/PlasticFlowTest.cpp
     fem/TetFractureTest.cpp
     fem/TetFragmentsTest.cpp

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/base/TimeStep.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
@@ -449,7 +450,11 @@ void GpuTetSolver::Reconnect()
     mBrokenBuffer.Download(0, broken.size() * sizeof(std::uint32_t), broken.data());
     for (std::size_t link = 0; link < broken.size(); ++link)
         mBroken[link] = broken[link] != 0 ? 1 : 0;
-    const fem::FractureConnectivity connectivity = fem::FractureTopology(mMesh, mLinks, mBroken);
+    const Result<fem::FractureConnectivity> cracked = fem::FractureTopology(mMesh, mLinks, mBroken);
+    CRUMPLE_ASSERT(cracked.IsValid(), "the solver's own links were refused");
+    if (!cracked.IsValid())
+        return; // cannot happen: the links are the mesh's own, the flags one per link
+    const fem::FractureConnectivity& connectivity = cracked.Get();
 
     const std::size_t old_count = mMasses.size(), new_count = connectivity.mNodeOrigin.size();
     std::vector<Float4> positions(old_count), velocities(old_count), forces(old_count);
@@ -460,8 +465,12 @@ void GpuTetSolver::Reconnect()
     for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
         for (int corner = 0; corner < 4; ++corner)
             old_of_new[connectivity.mElementNodes[tet][corner]] = mElementNodes[tet][corner];
-    const std::vector<double> masses =
+    Result<std::vector<double>> lumped =
         fem::LumpedNodeMass(connectivity.mElementNodes, mRest, static_cast<int>(new_count), mMaterial.mDensity);
+    CRUMPLE_ASSERT(lumped.IsValid(), "FractureTopology's connectivity was refused");
+    if (!lumped.IsValid())
+        return; // cannot happen: FractureTopology numbers every node below its count
+    const std::vector<double> masses = std::move(lumped).Get();
     std::vector<double> inverse_masses(new_count);
     std::vector<Float4> new_positions(new_count), new_velocities(new_count), new_forces(new_count);
     for (std::size_t node = 0; node < new_count; ++node)

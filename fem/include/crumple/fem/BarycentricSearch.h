@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/Result.h>
 
 #include <crumple/base/Math.h>
 #include <crumple/fem/TetMesh.h>
@@ -33,20 +34,24 @@ class CRUMPLE_API BarycentricSearch
   public:
     /// Inverts the edge matrix of every element of inElementNodes (#T corner node indices into inPositions,
     /// #N, m). A degenerate element gets a non-finite inverse, so its weights are NaN and it never wins.
-    BarycentricSearch(std::span<const TetIndices> inElementNodes, std::span<const Vec3> inPositions);
+    /// Refused, with the element named, when a corner index is outside [0, #N).
+    static Result<BarycentricSearch> Create(std::span<const TetIndices> inElementNodes, std::span<const Vec3> inPositions);
 
-    /// Barycentric weights of inPoint (m, same frame as the positions) in inElement; negative outside it.
+    /// Barycentric weights of inPoint (m, same frame as the positions) in inElement; negative outside it, NaN
+    /// for an element index outside [0, #T).
     std::array<double, 4> Weights(int inElement, const Vec3& inPoint) const;
 
     /// The element of inCandidates (element indices, searched in the given order) with the largest minimum
     /// weight at inPoint. The comparison is strict, so the first of equal candidates wins and NaN never does;
-    /// mElement is -1 when no candidate won (empty list, or all degenerate).
+    /// mElement is -1 when no candidate won (empty list, all degenerate or out of range).
     BarycentricHit FindBest(std::span<const int> inCandidates, const Vec3& inPoint) const;
 
     /// As FindBest above, over every element in index order.
     BarycentricHit FindBest(const Vec3& inPoint) const;
 
   private:
+    BarycentricSearch() = default;
+
     /// Keeps inElement in ioBest if its minimum weight at inPoint beats ioBest's.
     void Consider(int inElement, const Vec3& inPoint, BarycentricHit& ioBest) const;
 

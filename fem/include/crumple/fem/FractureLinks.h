@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/Result.h>
 
 #include <crumple/fem/TetMesh.h>
 
@@ -54,5 +55,12 @@ struct CRUMPLE_API FractureLinks
 /// Builds the links of a mesh: deterministic (every list is sorted), O(#T log #T).
 /// @param[in] inMesh  a valid mesh; its group ids say which elements break away together
 CRUMPLE_API FractureLinks BuildFractureLinks(const TetMesh& inMesh);
+
+/// Checks that inLinks can describe a mesh of inElementCount elements and inNodeCount rest nodes: every
+/// array's size, every offset table ascending and ending at its array's size, every group, link, element,
+/// node and corner index in range (O(size of the links)). It does not check that they are the mesh's own
+/// (BuildFractureLinks makes those), only that reading them cannot leave the arrays. FractureTopology and
+/// OpenCracks refuse links that fail it.
+CRUMPLE_API Status ValidateFractureLinks(const FractureLinks& inLinks, int inElementCount, int inNodeCount);
 
 } // namespace crumple::fem

@@ -30,7 +30,9 @@ struct CRUMPLE_API FractureConnectivity
 /// @param[in] inMesh    the rest mesh the links were built from
 /// @param[in] inLinks   BuildFractureLinks(inMesh)
 /// @param[in] inBroken  #L, nonzero where a link is broken
-CRUMPLE_API FractureConnectivity FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
-                                      std::span<const std::uint8_t> inBroken);
+/// Refused when the links fail ValidateFractureLinks for the mesh or are not its own where they are read (a
+/// group missing from a node it touches), or inBroken's size is not #L.
+CRUMPLE_API Result<FractureConnectivity> FractureTopology(const TetMesh& inMesh, const FractureLinks& inLinks,
+                                                          std::span<const std::uint8_t> inBroken);
 
 } // namespace crumple::fem

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/Result.h>
 
 #include <crumple/fem/FractureLinks.h>
 #include <crumple/fem/TetElementRest.h>
@@ -26,7 +27,9 @@ struct CRUMPLE_API PrincipalStress
 /// @param[in]  inElementStress  #T Cauchy stresses (Pa), symmetric 3 by 3
 /// @param[in]  inRest           #T element rest data (its rest volume weighs the mean)
 /// @param[out] outPrincipal     #G, overwritten
-CRUMPLE_API void GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
+/// Refused, writing nothing, when the sizes do not fit the links, a group has no element or the links name
+/// an element outside [0, #T).
+CRUMPLE_API Status GroupPrincipalStress(const FractureLinks& inLinks, std::span<const Mat3> inElementStress,
                           std::span<const TetElementRest> inRest, std::span<PrincipalStress> outPrincipal);
 
 } // namespace crumple::fem

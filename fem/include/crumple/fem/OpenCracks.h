@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/Result.h>
 
 #include <crumple/fem/EFractureMode.h>
 #include <crumple/fem/GroupPrincipalStress.h>
@@ -28,8 +29,9 @@ inline constexpr double cCrackFaceCosine = 0.573576436351046; // cos(55 deg)
 /// @param[in]     inTensileStrength sigma_t (Pa), > 0
 /// @param[in]     inMode            which faces open
 /// @param[in,out] ioBroken          #L, set to 1 where a link breaks
-/// @return number of links broken by this call
-CRUMPLE_API int OpenCracks(const FractureLinks& inLinks, std::span<const PrincipalStress> inPrincipal,
+/// @return number of links broken by this call; refused, breaking nothing, when the sizes do not fit the
+/// links (#G stresses, #L flags) or a link face, element or node index is out of range
+CRUMPLE_API Result<int> OpenCracks(const FractureLinks& inLinks, std::span<const PrincipalStress> inPrincipal,
                std::span<const TetIndices> inElementNodes, std::span<const Vec3> inPositions,
                double inTensileStrength, EFractureMode inMode, std::span<std::uint8_t> ioBroken);
 
