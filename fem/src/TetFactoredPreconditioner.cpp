@@ -19,7 +19,7 @@ bool TetFactoredPreconditioner::Matches(std::span<const TetIndices> inTets, std:
 
 bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
                                            std::span<const std::uint8_t> inFree, double inMassScale,
-                                           double inStiffnessScale)
+                                           double inStiffnessScale, bool inKeepElementStiffness)
 {
     // Forget the old factor first: a failure leaves none.
     mFactored = false;
@@ -39,7 +39,10 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, s
         return false;
 
     // Factor; a non-positive pivot (a free rigid mode of the static stiffness) fails the factorisation.
-    TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale, mBlocks);
+    if (!inKeepElementStiffness)
+        mElementStiffness = TetRestStiffnessCache{};
+    TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale, mBlocks,
+                        inKeepElementStiffness ? &mElementStiffness : nullptr);
     if (!mCholesky.Factor(free_count, mBlocks))
         return false;
     mRhs.assign(free_count, Vec3::Zero());

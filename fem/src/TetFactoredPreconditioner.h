@@ -4,6 +4,7 @@
 
 #include "ConjugateGradient.h"
 #include "NodeBlockCholesky.h"
+#include "TetRestSystemBlocks.h"
 #include "TetElementPass.h"
 
 
@@ -43,8 +44,11 @@ public:
     /// @param[in] inFree            #N 1 for free nodes, 0 for anchored ones
     /// @param[in] inMassScale       a (1 + h alpha, or 0 for statics)
     /// @param[in] inStiffnessScale  b (h^2 + h beta (s^2), or 1 for statics)
+    /// @param[in] inKeepElementStiffness  keep each element's rest stiffness for the next Precompute (a solver
+    ///                                    that refactors after cracks: TetRestStiffnessCache); false drops it
     bool Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                    std::span<const std::uint8_t> inFree, double inMassScale, double inStiffnessScale);
+                    std::span<const std::uint8_t> inFree, double inMassScale, double inStiffnessScale,
+                    bool inKeepElementStiffness = false);
 
     /// True after a successful Precompute()
     bool IsFactored() const { return mFactored; }
@@ -77,6 +81,7 @@ private:
 
     std::vector<int> mFreeIndex;    // #N, -1 for anchored nodes
     std::vector<NodeBlock> mBlocks; // A0's blocks, kept for the next Precompute (no fresh pages)
+    TetRestStiffnessCache mElementStiffness; // empty unless Precompute was asked to keep it
     std::vector<Mat3> mNodeRotations; // #N, empty while all are identity
     std::vector<Eigen::Vector4d> mQuaternionSums; // #N scratch of SetNodeRotations
 

@@ -3,6 +3,7 @@
 #include "TetRestSystemBlocks.h"
 
 #include <array>
+#include <limits>
 
 namespace crumple::fem
 {
@@ -38,9 +39,29 @@ Eigen::Matrix<double, 6, 12> StrainDisplacement(const Mat3& inRestEdgeInverse)
 
 } // namespace
 
+namespace
+{
+
+// The ten corner blocks (row >= column, row-major) of B^T C B + its transpose: symmetrised, as B^T C B in
+// floating point is symmetric only to round-off.
+std::array<Mat3, 10> ElementBlocks(const Mat3& inRestEdgeInverse, const Matrix6& inMaterial)
+{
+    const Eigen::Matrix<double, 6, 12> b = StrainDisplacement(inRestEdgeInverse);
+    const Eigen::Matrix<double, 12, 12> bcb = b.transpose() * inMaterial * b;
+    const Eigen::Matrix<double, 12, 12> sum = bcb + bcb.transpose();
+    std::array<Mat3, 10> blocks;
+    int pair = 0;
+    for (int row_corner = 0; row_corner < 4; ++row_corner)
+        for (int col_corner = 0; col_corner <= row_corner; ++col_corner)
+            blocks[static_cast<std::size_t>(pair++)] = sum.block<3, 3>(3 * row_corner, 3 * col_corner);
+    return blocks;
+}
+
+} // namespace
+
 void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
                          std::span<const int> inFreeIndex, double inMassScale, double inStiffnessScale,
-                         std::vector<NodeBlock>& outBlocks)
+                         std::vector<NodeBlock>& outBlocks, TetRestStiffnessCache* ioCache)
 {
     // Per element the blocks between free corners in the lower triangle (each node pair once), then the
     // masses.
@@ -50,23 +71,50 @@ void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const dou
     if (blocks.capacity() < most)
         blocks.reserve(most + most / 2); // room for the nodes cracks add
     const Matrix6& c = *inInput.mMaterialMatrix;
+    if (ioCache != nullptr && (ioCache->mBlocks.size() != inInput.mTets.size() || ioCache->mMaterial != c))
+    {
+        // intent: a new material or element count makes every entry stale; an impossible edge inverse (NaN)
+        // marks them so
+        ioCache->mBlocks.resize(inInput.mTets.size());
+        ioCache->mEdgeInverse.assign(inInput.mTets.size(), Mat3::Constant(std::numeric_limits<double>::quiet_NaN()));
+        ioCache->mMaterial = c;
+    }
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        // Symmetrised: B^T C B in floating point is symmetric only to round-off.
-        const TetElementRest& rest = inInput.mRest[tet];
-        const Eigen::Matrix<double, 6, 12> b = StrainDisplacement(rest.mRestEdgeInverse);
-        const Eigen::Matrix<double, 12, 12> bcb = b.transpose() * c * b;
-        const Eigen::Matrix<double, 12, 12> k =
-            (0.5 * inStiffnessScale * rest.mRestVolume) * (bcb + bcb.transpose());
         const TetIndices& nodes = inInput.mTets[tet];
-        for (int row_corner = 0; row_corner < 4; ++row_corner)
-            for (int col_corner = 0; col_corner < 4; ++col_corner)
+        // intent: an element with no free corner adds no block (pieces that left the prop are anchored whole)
+        if (inFreeIndex[nodes[0]] < 0 && inFreeIndex[nodes[1]] < 0 && inFreeIndex[nodes[2]] < 0 && inFreeIndex[nodes[3]] < 0)
+            continue;
+        const TetElementRest& rest = inInput.mRest[tet];
+        std::array<Mat3, 10> fresh;
+        const std::array<Mat3, 10>* element = &fresh;
+        if (ioCache == nullptr)
+            fresh = ElementBlocks(rest.mRestEdgeInverse, c);
+        else
+        {
+            // Exact comparison: NaN never equals, so a stale mark is always recomputed.
+            if (!(ioCache->mEdgeInverse[tet].array() == rest.mRestEdgeInverse.array()).all())
             {
+                ioCache->mBlocks[tet] = ElementBlocks(rest.mRestEdgeInverse, c);
+                ioCache->mEdgeInverse[tet] = rest.mRestEdgeInverse;
+            }
+            element = &ioCache->mBlocks[tet];
+        }
+        const double scale = 0.5 * inStiffnessScale * rest.mRestVolume;
+        int pair = 0;
+        for (int row_corner = 0; row_corner < 4; ++row_corner)
+            for (int col_corner = 0; col_corner <= row_corner; ++col_corner, ++pair)
+            {
+                // Each node pair once, in the lower triangle of the free numbering: a block and its transpose.
                 const int row = inFreeIndex[nodes[row_corner]];
                 const int column = inFreeIndex[nodes[col_corner]];
-                if (row < 0 || column < 0 || row < column || (row == column && row_corner != col_corner))
+                if (row < 0 || column < 0)
                     continue;
-                blocks.push_back({row, column, k.block<3, 3>(3 * row_corner, 3 * col_corner)});
+                const Mat3 k = scale * (*element)[static_cast<std::size_t>(pair)];
+                if (row > column || (row == column && row_corner == col_corner))
+                    blocks.push_back({row, column, k});
+                else if (row < column)
+                    blocks.push_back({column, row, Mat3(k.transpose())});
             }
     }
     for (std::size_t node = 0; node < inMasses.size(); ++node)

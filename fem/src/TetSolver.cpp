@@ -731,7 +731,8 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     TetFactoredPreconditioner& factor = mWorkspace.Get().mFactor;
     if (!factor.Matches(mElementNodes, mFree, inMassScale, inStiffnessScale))
     {
-        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale);
+        // intent: a breakable solver refactors after every crack; its elements' rest stiffness is kept
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable());
         ++mFactorizationCount;
     }
     return factor.IsFactored() ? &factor : nullptr;
