@@ -160,8 +160,11 @@ void SplitPartsIntoPieces(const ffd::TriangleMesh& inMesh, std::vector<std::vect
 
 // The parse itself (assimp), in whatever process runs it: the wanted meshes' triangles, node transforms
 // applied, in the file's frame and unit, and the vertex runs of the meshes named as rigid parts.
-Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, std::vector<FoundPart>& outParts)
+Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, std::vector<FoundPart>& outParts,
+                                             std::vector<std::string>& outUnmatched)
 {
+    // Which fragments named a part (by its node's name or its mesh's).
+    std::vector<std::uint8_t> matched(inSettings.mRigidPartNames.size(), 0);
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                                                               aiProcess_JoinIdenticalVertices);
@@ -183,12 +186,18 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, 
                 continue;
             const auto base = static_cast<std::uint32_t>(mesh.mPositions.size());
             const std::string node_name = inNode->mName.C_Str(), mesh_name = part->mName.C_Str();
-            // intent: the part keeps the name that matched (the node's first), so UnmatchedRigidPartNames can tell
-            // which fragments found a part
-            if (part->mNumVertices > 0 && ContainsAnyOf(node_name, inSettings.mRigidPartNames))
-                outParts.push_back({base, base + part->mNumVertices, node_name});
-            else if (part->mNumVertices > 0 && ContainsAnyOf(mesh_name, inSettings.mRigidPartNames))
-                outParts.push_back({base, base + part->mNumVertices, mesh_name});
+            // intent: the part keeps the name that matched (the node's first); every fragment that matched either
+            // name counts as found
+            const bool by_node = ContainsAnyOf(node_name, inSettings.mRigidPartNames);
+            const bool by_mesh = ContainsAnyOf(mesh_name, inSettings.mRigidPartNames);
+            if (part->mNumVertices > 0 && (by_node || by_mesh))
+            {
+                outParts.push_back({base, base + part->mNumVertices, by_node ? node_name : mesh_name});
+                for (std::size_t f = 0; f < matched.size(); ++f)
+                    if (ContainsAnyOf(node_name, {inSettings.mRigidPartNames[f]}) ||
+                        ContainsAnyOf(mesh_name, {inSettings.mRigidPartNames[f]}))
+                        matched[f] = 1;
+            }
             for (unsigned v = 0; v < part->mNumVertices; ++v)
             {
                 const aiVector3D p = transform * part->mVertices[v];
@@ -213,6 +222,9 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, 
             visit(inNode->mChildren[c], transform);
     };
     visit(scene->mRootNode, aiMatrix4x4());
+    for (std::size_t f = 0; f < matched.size(); ++f)
+        if (matched[f] == 0)
+            outUnmatched.push_back(inSettings.mRigidPartNames[f]);
     if (bad_index)
         return MakeError(EError::CorruptData, inSettings.mPath.string() + ": a face names a vertex its mesh does not have");
     if (mesh.mTriangles.empty())
@@ -229,16 +241,6 @@ Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings)
     if (body.HasError())
         return body.GetError();
     return std::move(body.Get().mMesh);
-}
-
-std::vector<std::string> UnmatchedRigidPartNames(const std::vector<std::string>& inFragments, const CarBody& inBody)
-{
-    std::vector<std::string> unmatched;
-    for (const std::string& fragment : inFragments)
-        if (std::none_of(inBody.mRigidPartNames.begin(), inBody.mRigidPartNames.end(),
-                         [&](const std::string& inName) { return ContainsAnyOf(inName, {fragment}); }))
-            unmatched.push_back(fragment);
-    return unmatched;
 }
 
 std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<std::vector<std::uint32_t>>& inParts,
@@ -278,9 +280,11 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     constexpr double cParseTimeout = 60.0;
     Result<std::vector<std::byte>> bytes = RunIsolated(
         [&]() -> Result<std::vector<std::byte>> {
-            // The parts first (u32 count; per part u32 begin, end, name length, name bytes), then the mesh.
+            // The parts first (u32 count; per part u32 begin, end, name length, name bytes), then the fragments
+            // that found no part (u32 count; per fragment its length and bytes), then the mesh.
             std::vector<FoundPart> parts;
-            Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings, parts);
+            std::vector<std::string> unmatched;
+            Result<ffd::TriangleMesh> read = ReadSceneTriangles(inSettings, parts, unmatched);
             if (read.HasError())
                 return read.GetError();
             ByteWriter writer;
@@ -291,6 +295,12 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
                 writer.WriteU32(part.mEnd);
                 writer.WriteU32(static_cast<std::uint32_t>(part.mName.size()));
                 writer.WriteBytes(std::as_bytes(std::span(part.mName)));
+            }
+            writer.WriteU32(static_cast<std::uint32_t>(unmatched.size()));
+            for (const std::string& fragment : unmatched)
+            {
+                writer.WriteU32(static_cast<std::uint32_t>(fragment.size()));
+                writer.WriteBytes(std::as_bytes(std::span(fragment)));
             }
             std::vector<std::byte> answer = writer.TakeBytes();
             const std::vector<std::byte> mesh = EncodeMeshBytes<std::uint32_t>(read.Get().mPositions, read.Get().mTriangles);
@@ -319,6 +329,20 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
             vertices[v - begin] = v;
         body.mRigidParts.push_back(std::move(vertices));
         body.mRigidPartNames.push_back(std::move(name));
+    }
+    const std::uint32_t unmatched_count = reader.ReadU32();
+    // intent: at most the fragments asked about (each names itself), before any allocation
+    if (!reader.Failed() && unmatched_count > inSettings.mRigidPartNames.size())
+        return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
+    for (std::uint32_t f = 0; f < unmatched_count && !reader.Failed(); ++f)
+    {
+        const std::uint32_t length = reader.ReadU32();
+        if (reader.Failed() || length > reader.Remaining())
+            return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");
+        std::string fragment(length, '\0');
+        for (char& c : fragment)
+            c = static_cast<char>(reader.ReadU8());
+        body.mUnmatchedRigidPartNames.push_back(std::move(fragment));
     }
     if (reader.Failed())
         return MakeError(EError::CorruptData, inSettings.mPath.string() + ": the parser's answer is corrupt");

@@ -56,11 +56,10 @@ struct CarBody
     ffd::TriangleMesh mMesh;
     std::vector<std::vector<std::uint32_t>> mRigidParts; ///< Vertex indices of each part, in file order
     std::vector<std::string> mRigidPartNames;            ///< The node (or mesh) name of each part that matched
+    /// The fragments of CarMeshSettings::mRigidPartNames that no node's or mesh's name (of the wanted meshes,
+    /// with vertices) contains: a typo in a scenario's list, or a mesh without such parts
+    std::vector<std::string> mUnmatchedRigidPartNames;
 };
-
-/// The fragments of inFragments (CarMeshSettings::mRigidPartNames) that no rigid part of inBody was found by:
-/// a typo in a scenario's list, or a mesh without such parts.
-std::vector<std::string> UnmatchedRigidPartNames(const std::vector<std::string>& inFragments, const CarBody& inBody);
 
 /// Empty when the body's x extent (the stated forward axis) is its longest horizontal one; otherwise why a
 /// car loaded so is probably sideways (a y-forward file read as x-forward), with both extents.

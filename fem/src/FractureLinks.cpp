@@ -166,6 +166,16 @@ bool InRange(const std::vector<int>& inValues, int inCount)
     return std::all_of(inValues.begin(), inValues.end(), [inCount](int inValue) { return inValue >= 0 && inValue < inCount; });
 }
 
+// Each row's values strictly ascending (what FractureTopology's binary searches need).
+bool RowsAscending(const std::vector<int>& inOffsets, const std::vector<int>& inValues)
+{
+    for (std::size_t row = 0; row + 1 < inOffsets.size(); ++row)
+        for (int entry = inOffsets[row] + 1; entry < inOffsets[row + 1]; ++entry)
+            if (!(inValues[static_cast<std::size_t>(entry) - 1] < inValues[static_cast<std::size_t>(entry)]))
+                return false;
+    return true;
+}
+
 } // namespace
 
 Status ValidateFractureLinks(const FractureLinks& inLinks, int inElementCount, int inNodeCount)
@@ -195,8 +205,10 @@ Status ValidateFractureLinks(const FractureLinks& inLinks, int inElementCount, i
     if (!ValidOffsets(inLinks.mLinkNodeOffsets, static_cast<std::size_t>(links), inLinks.mLinkNodes.size()) ||
         !InRange(inLinks.mLinkNodes, inNodeCount))
         return bad("mLinkNodeOffsets / mLinkNodes do not list rest nodes by link");
-    if (!ValidOffsets(inLinks.mNodeGroupOffsets, nodes, inLinks.mNodeGroups.size()) || !InRange(inLinks.mNodeGroups, groups))
-        return bad("mNodeGroupOffsets / mNodeGroups do not list groups by node for " + std::to_string(inNodeCount) + " nodes");
+    if (!ValidOffsets(inLinks.mNodeGroupOffsets, nodes, inLinks.mNodeGroups.size()) || !InRange(inLinks.mNodeGroups, groups) ||
+        !RowsAscending(inLinks.mNodeGroupOffsets, inLinks.mNodeGroups))
+        return bad("mNodeGroupOffsets / mNodeGroups do not list groups by node, ascending, for " + std::to_string(inNodeCount) +
+                   " nodes");
     if (!ValidOffsets(inLinks.mNodeLinkOffsets, nodes, inLinks.mNodeLinks.size()) || !InRange(inLinks.mNodeLinks, links))
         return bad("mNodeLinkOffsets / mNodeLinks do not list links by node for " + std::to_string(inNodeCount) + " nodes");
     return Status::Ok();

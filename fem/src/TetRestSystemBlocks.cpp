@@ -3,6 +3,7 @@
 #include "TetRestSystemBlocks.h"
 
 #include <array>
+#include <cstring>
 #include <limits>
 
 namespace crumple::fem
@@ -71,7 +72,8 @@ void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const dou
     if (blocks.capacity() < most)
         blocks.reserve(most + most / 2); // room for the nodes cracks add
     const Matrix6& c = *inInput.mMaterialMatrix;
-    if (ioCache != nullptr && (ioCache->mBlocks.size() != inInput.mTets.size() || ioCache->mMaterial != c))
+    if (ioCache != nullptr &&
+        (ioCache->mBlocks.size() != inInput.mTets.size() || std::memcmp(ioCache->mMaterial.data(), c.data(), sizeof(Matrix6)) != 0))
     {
         // intent: a new material or element count makes every entry stale; an impossible edge inverse (NaN)
         // marks them so
@@ -92,8 +94,8 @@ void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const dou
             fresh = ElementBlocks(rest.mRestEdgeInverse, c);
         else
         {
-            // Exact comparison: NaN never equals, so a stale mark is always recomputed.
-            if (!(ioCache->mEdgeInverse[tet].array() == rest.mRestEdgeInverse.array()).all())
+            // Byte comparison: the sign of a zero counts too, and the NaN stale mark never matches a real one.
+            if (std::memcmp(ioCache->mEdgeInverse[tet].data(), rest.mRestEdgeInverse.data(), sizeof(Mat3)) != 0)
             {
                 ioCache->mBlocks[tet] = ElementBlocks(rest.mRestEdgeInverse, c);
                 ioCache->mEdgeInverse[tet] = rest.mRestEdgeInverse;

@@ -97,10 +97,11 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
         auto barrier = std::make_unique<btCollisionObject>();
         barrier->setCollisionShape(s.mBarrierShape.get());
         barrier->setWorldTransform(ToBullet(pose));
+        // intent: held by the scene before anything can fail, so that its destructor takes it out of the world
         s.mWorld->addCollisionObject(barrier.get());
-        if (Result<BodyId> added = add(*barrier, "barrier " + std::to_string(s.mBarriers.size() + 1)); !added)
-            return added.GetError();
         s.mBarriers.push_back(std::move(barrier));
+        if (Result<BodyId> added = add(*s.mBarriers.back(), "barrier " + std::to_string(s.mBarriers.size())); !added)
+            return added.GetError();
     }
 
     // The racing car: a chassis box around the body mesh on four raycast wheels.

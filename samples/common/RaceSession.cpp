@@ -138,6 +138,7 @@ Result<std::unique_ptr<RaceSession>> RaceSession::Create(const RaceOptions& inOp
         return recorder.GetError();
     session->mRecorder = std::move(recorder).Get();
     ioDamage.AddListener(&session->mLog);
+    session->mListening = true;
     // The EGL context exists only when pictures are wanted.
     if (inOptions.mPictures)
     {
@@ -192,6 +193,12 @@ void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inC
         std::printf("note: %s\n", painted.GetError().mMessage.c_str());
 }
 
+RaceSession::~RaceSession()
+{
+    if (mListening)
+        mDamage->RemoveListener(&mLog);
+}
+
 void RaceSession::BeginFrame()
 {
     mFrameStartCpuMs = common::ThreadCpuMs();
@@ -209,6 +216,7 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
 {
     ioDamage.Flush();
     ioDamage.RemoveListener(&mLog);
+    mListening = false;
     if (Status closed = mRecorder->Close(); !closed)
         return closed;
     PaintCar(inCar, "after.png");

@@ -78,6 +78,9 @@ public:
 
     /// The recording (for the props to record beside the collisions)
     plugin::DamageRecorder& GetRecorder() { return *mRecorder; }
+    /// Stops the log listening to the world when Finish was not reached (a frame failed): the world, which
+    /// outlives the session, would call it later (a deferred dent landing as the scene is torn down).
+    ~RaceSession();
     /// Names bodies made during the run (the fence's pieces) in the collision log, which counts their
     /// collisions without a line each
     void NamePieces(std::span<const plugin::BodyId> inBodies, const std::string& inName)
@@ -93,11 +96,12 @@ public:
     void EndFrame();
 
 private:
-    RaceSession(const RaceOptions& inOptions, const plugin::DamageWorld& inDamage, std::map<plugin::BodyId, std::string> inNames)
-        : mOptions(inOptions), mDamage(&inDamage), mLog(std::move(inNames)) {}
+    RaceSession(const RaceOptions& inOptions, plugin::DamageWorld& ioDamage, std::map<plugin::BodyId, std::string> inNames)
+        : mOptions(inOptions), mDamage(&ioDamage), mLog(std::move(inNames)) {}
 
     RaceOptions mOptions;
-    const plugin::DamageWorld* mDamage = nullptr; ///< Where the painter finds bodies' poses
+    plugin::DamageWorld* mDamage = nullptr; ///< Where the painter finds bodies' poses; the log listens to it
+    bool mListening = false;                ///< The log is the world's listener (until Finish or the destructor)
     RaceLog mLog;
     std::unique_ptr<plugin::DamageRecorder> mRecorder;
     std::unique_ptr<ScenePainter> mPainter;

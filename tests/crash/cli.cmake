@@ -60,6 +60,7 @@ set(crash_malformed
     "mesh_axes_parallel|/vehicle/mesh_up_axis: must be another axis"
     "mesh_unit_and_length|/vehicle/mesh_unit_m: give either"
     "control_count_and_spacing|/vehicle/control_spacing_m: give control_count"
+    "spacing_unused_by_zones|/vehicle/control_spacing_m: every zone gives its own control_count"
     "mesh_unit_too_large|hatchback.obj measures 1.58e\\+03 m across once scaled \\(mesh_unit_m 10\\): a car body must measure 0.1-1000 m"
     "mesh_length_too_small|/vehicle/mesh_length_m: must be in \\[0.1, 1000\\]"
     "huge_speed|/impact/speed_km_h: must be in"

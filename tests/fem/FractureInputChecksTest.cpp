@@ -67,15 +67,20 @@ TEST_CASE("FractureTopology refuses another mesh's links, tampered links and a w
     past = links;
     past.mLinkFaces.back().mCorners[2] = 4;
     CHECK(ValidateFractureLinks(past, mesh.GetTetCount(), mesh.GetNodeCount()).HasError());
-    // In range but not this mesh's: a node's first group list names another group, so a link through it
-    // finds its group missing.
-    FractureLinks foreign = links;
+    // Not ascending: refused by the check.
+    FractureLinks unsorted = links;
     const int node = links.mLinkNodes.front();
     const int first = links.mNodeGroupOffsets[static_cast<std::size_t>(node)];
     const int count = links.mNodeGroupOffsets[static_cast<std::size_t>(node) + 1] - first;
     REQUIRE(count >= 2);
-    for (int entry = first; entry < first + count; ++entry)
-        foreign.mNodeGroups[static_cast<std::size_t>(entry)] = links.GetGroupCount() - 1; // every entry the same group
+    std::swap(unsorted.mNodeGroups[static_cast<std::size_t>(first)], unsorted.mNodeGroups[static_cast<std::size_t>(first) + 1]);
+    CHECK(ValidateFractureLinks(unsorted, mesh.GetTetCount(), mesh.GetNodeCount()).HasError());
+    // In range and ascending but not this mesh's: a node shared by groups 0 and 1 is said to touch the last
+    // groups instead, so a link through it finds its groups missing.
+    FractureLinks foreign = links;
+    REQUIRE(links.mNodeGroups[static_cast<std::size_t>(first)] < links.GetGroupCount() - count);
+    for (int entry = 0; entry < count; ++entry)
+        foreign.mNodeGroups[static_cast<std::size_t>(first + entry)] = links.GetGroupCount() - count + entry;
     REQUIRE(ValidateFractureLinks(foreign, mesh.GetTetCount(), mesh.GetNodeCount()).IsValid());
     const Result<FractureConnectivity> refused = FractureTopology(mesh, foreign, none);
     REQUIRE(refused.HasError());

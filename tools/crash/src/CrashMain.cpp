@@ -367,7 +367,8 @@ int main(int argc, char** argv)
     // The outermost folder this run makes: the output folder, or the first of its parents that does not exist
     // yet (--out a/b/c in an empty folder makes a).
     std::filesystem::path made_folder;
-    for (std::filesystem::path folder = std::filesystem::absolute(out, error).lexically_normal();
+    // intent: weakly_canonical resolves the links in the part that exists, as create_directories will
+    for (std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(out, error), error);
          !error && !folder.empty() && !std::filesystem::exists(folder, error); folder = folder.parent_path())
     {
         made_folder = folder;

@@ -134,12 +134,17 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         if (const ffd::AlignedBox box = ffd::BoundingBox(body.Get().mMesh.mPositions);
             !((box.mMax - box.mMin).maxCoeff() >= cMinMeshLength && (box.mMax - box.mMin).maxCoeff() <= cMaxMeshLength))
         {
-            char text[256];
-            std::snprintf(text, sizeof(text), "%s measures %.3g m across once scaled (mesh_unit_m %g): a car body must measure %g-%g m; is the unit right?",
-                          vehicle.mMesh.filename().string().c_str(), (box.mMax - box.mMin).maxCoeff(), vehicle.mMeshUnit, cMinMeshLength, cMaxMeshLength);
+            char scaled[64];
+            if (vehicle.mMeshUnit > 0.0)
+                std::snprintf(scaled, sizeof(scaled), "mesh_unit_m %g", vehicle.mMeshUnit);
+            else
+                std::snprintf(scaled, sizeof(scaled), "scaled to mesh_length_m %g along x", vehicle.mMeshLength);
+            char text[320];
+            std::snprintf(text, sizeof(text), "%s measures %.3g m across once scaled (%s): a car body must measure %g-%g m; is the unit right?",
+                          vehicle.mMesh.filename().string().c_str(), (box.mMax - box.mMin).maxCoeff(), scaled, cMinMeshLength, cMaxMeshLength);
             return MakeError(EError::OutOfRange, text);
         }
-        if (const std::vector<std::string> unmatched = samples::UnmatchedRigidPartNames(vehicle.mMeshRigidParts, body.Get());
+        if (const std::vector<std::string>& unmatched = body.Get().mUnmatchedRigidPartNames;
             vehicle.mMeshRigidPartsGiven && !unmatched.empty())
         {
             std::string text = vehicle.mMesh.filename().string() + ": mesh_rigid_parts";

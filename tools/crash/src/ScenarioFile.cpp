@@ -587,6 +587,8 @@ class ScenarioReader
         // Zones: [{"min_m": [x, y, z], "max_m": [x, y, z], "control_count": [...], "max_total_deformation_m": d}]
         if (const auto zones = inVehicle.find("zones"); zones != inVehicle.end())
         {
+            // intent: a spacing that no zone falls back to would be ignored unsaid
+            bool spacing_used = false;
             const std::string pointer = Child(inPointer, "zones");
             if (!zones->is_array() || zones->empty())
                 return Fail(EError::InvalidArgument, pointer, "must be a non-empty array of zone objects");
@@ -618,10 +620,16 @@ class ScenarioReader
                 settings.mLattice.mOrigin = low;
                 settings.mLattice.mSize = high - low;
                 if (settings.mLattice.mControlCount == std::array<int, 3>{0, 0, 0})
+                {
                     settings.mLattice.mControlCount = plugin::ControlCountForSpacing(settings.mLattice.mSize,
                                                                                      ioVehicle.mControlSpacing);
+                    spacing_used = true;
+                }
                 ioVehicle.mZones.push_back(settings);
             }
+            if (inVehicle.contains("control_spacing_m") && !spacing_used)
+                return Fail(EError::InvalidArgument, Child(inPointer, "control_spacing_m"),
+                            "every zone gives its own control_count, so no zone uses the spacing: drop one or the other");
         }
         if (const auto material = inVehicle.find("material"); material != inVehicle.end())
             if (!ReadMaterial(*material, Child(inPointer, "material"), ioVehicle, true))

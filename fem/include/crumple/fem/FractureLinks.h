@@ -58,7 +58,7 @@ CRUMPLE_API FractureLinks BuildFractureLinks(const TetMesh& inMesh);
 
 /// Checks that inLinks can describe a mesh of inElementCount elements and inNodeCount rest nodes: every
 /// array's size, every offset table ascending and ending at its array's size, every group, link, element,
-/// node and corner index in range (O(size of the links)). It does not check that they are the mesh's own
+/// node and corner index in range, each node's groups strictly ascending (O(size of the links)). It does not check that they are the mesh's own
 /// (BuildFractureLinks makes those), only that reading them cannot leave the arrays. FractureTopology and
 /// OpenCracks refuse links that fail it.
 CRUMPLE_API Status ValidateFractureLinks(const FractureLinks& inLinks, int inElementCount, int inNodeCount);
