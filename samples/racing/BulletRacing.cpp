@@ -3,7 +3,7 @@
 // A scripted racing session in Bullet: a btRaycastVehicle with a deformable body (the Khronos Toy Car from
 // ../shared/data when present, else a procedural box) accelerates down a straight, scrapes along concrete
 // barriers angled into the road, breaks through a wooden fence whose pieces fly (a destructible prop: FEM,
-// fracture, pieces made engine bodies) and hits a parked car (samples/common/RaceSession.h has the course,
+// fracture, pieces made engine bodies) and hits a parked car (scenes/racing/RaceSession.h has the course,
 // BulletRaceScene.cpp the scene). Prints one line per collision; writes a replay file, the deformed meshes
 // (OBJ) and PNG pictures.
 #include "BulletRaceScene.h"

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // The racing session of BulletRacing.cpp in ODE: a chassis on four sphere wheels held by hinge-2 joints
-// (suspension and a rear-wheel motor), on the same course (samples/common/OdeRaceScene.cpp has the scene).
+// (suspension and a rear-wheel motor), on the same course (scenes/racing/OdeRaceScene.cpp has the scene).
 #include "OdeRaceScene.h"
 #include "RunRaceSession.h"
 
