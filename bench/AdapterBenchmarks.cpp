@@ -100,18 +100,13 @@ void FrameBudgetCase(BenchTable& ioTable, const std::string& inEngine, const std
     Scene bare(inSettings);
     inSettings.mAttach = true;
     Scene attached(inSettings);
-    std::vector<double> wall[2], cpu[2];
     const int frames = static_cast<int>(inSettings.mDuration / inSettings.mTimeStep);
-    for (int frame = 0; frame < frames; ++frame)
-        for (int side = 0; side < 2; ++side)
-        {
-            Scene& scene = side == 0 ? bare : attached;
-            const double cpu_start = ThreadCpuMs();
-            const auto start = std::chrono::steady_clock::now();
-            scene.Step();
-            wall[side].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-            cpu[side].push_back(ThreadCpuMs() - cpu_start);
-        }
+    const LockstepFrames timed = TimeLockstep(frames, [&](int inSide) {
+        (inSide == 0 ? bare : attached).Step();
+        return true;
+    });
+    const std::vector<double>(&wall)[2] = timed.mWallMs;
+    const std::vector<double>(&cpu)[2] = timed.mCpuMs;
     attached.GetDamage().Flush();
     const auto worst = [](const std::vector<double>& inValues) { return *std::max_element(inValues.begin(), inValues.end()); };
     ioTable.Add({"frame_budget", inEngine + "/" + inCase, Quantile(wall[1], 0.5), 0.0, "none",

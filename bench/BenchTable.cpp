@@ -60,6 +60,23 @@ double Quantile(std::vector<double> inValues, double inQuantile)
     return inValues[static_cast<std::size_t>(inQuantile * static_cast<double>(inValues.size() - 1))];
 }
 
+LockstepFrames TimeLockstep(int inFrames, const std::function<bool(int inSide)>& inStep)
+{
+    LockstepFrames frames;
+    for (int frame = 0; frame < inFrames; ++frame)
+        for (int side = 0; side < 2; ++side)
+        {
+            const double cpu_start = ThreadCpuMs();
+            const auto start = std::chrono::steady_clock::now();
+            const bool stepped = inStep(side);
+            frames.mWallMs[side].push_back(ElapsedMs(start));
+            frames.mCpuMs[side].push_back(ThreadCpuMs() - cpu_start);
+            if (!stepped)
+                return frames;
+        }
+    return frames;
+}
+
 namespace
 {
 

@@ -48,6 +48,18 @@ std::string FormatExtra(double inValue);
 /// The value below which inQuantile (in [0, 1]) of inValues lie, nearest rank; inValues not empty.
 double Quantile(std::vector<double> inValues, double inQuantile);
 
+/// Each frame's wall and thread CPU time (ms) of two sides stepped in lockstep: side 0 (bare) and side 1
+/// (attached).
+struct LockstepFrames
+{
+    std::vector<double> mWallMs[2];
+    std::vector<double> mCpuMs[2];
+};
+
+/// Steps inFrames frames of two sides alternating (side 0 frame, side 1 frame, ...), so that both see the same
+/// machine load, timing each step; stops after the first step for which inStep(side) returns false.
+LockstepFrames TimeLockstep(int inFrames, const std::function<bool(int inSide)>& inStep);
+
 /// Wall and thread CPU time of one repetition (ms).
 struct Timing
 {

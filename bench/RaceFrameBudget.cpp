@@ -15,7 +15,6 @@
 #endif
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -44,18 +43,13 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
                     (!bare ? bare.GetError() : attached.GetError()).mMessage.c_str());
         return;
     }
-    std::vector<double> wall[2], cpu[2];
     Status stepped = Status::Ok();
-    for (int frame = 0; frame < inFrames && stepped; ++frame)
-        for (int side = 0; side < 2 && stepped; ++side)
-        {
-            Scene& scene = side == 0 ? *bare.Get() : *attached.Get();
-            const double cpu_start = ThreadCpuMs();
-            const auto start = std::chrono::steady_clock::now();
-            stepped = scene.StepFrame(nullptr);
-            wall[side].push_back(ElapsedMs(start));
-            cpu[side].push_back(ThreadCpuMs() - cpu_start);
-        }
+    const LockstepFrames timed = TimeLockstep(inFrames, [&](int inSide) {
+        stepped = (inSide == 0 ? *bare.Get() : *attached.Get()).StepFrame(nullptr);
+        return stepped.IsValid();
+    });
+    const std::vector<double>(&wall)[2] = timed.mWallMs;
+    const std::vector<double>(&cpu)[2] = timed.mCpuMs;
     if (!stepped)
     {
         std::printf("  frame_budget %s/%s: stopped: %s\n", inEngine.c_str(), inCase.c_str(), stepped.GetError().mMessage.c_str());

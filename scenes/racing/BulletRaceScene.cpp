@@ -138,8 +138,12 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     if (!car_body)
         return car_body.GetError();
     if (s.mDamage != nullptr)
-        if (Status created = s.CreateCarObject(car_body.Get(), false, car_mesh); !created)
-            return created.GetError();
+    {
+        Result<const DeformableObject*> car = s.CreateCarObject(car_body.Get(), car_mesh);
+        if (!car)
+            return car.GetError();
+        s.mCarObject = car.Get();
+    }
 
     // The parked car.
     s.mParkedShape = std::make_unique<btBoxShape>(ToBullet(RaceCourse::ParkedHalfExtents()));
@@ -156,9 +160,10 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
         return parked_body.GetError();
     if (s.mDamage == nullptr)
         return scene;
-    if (Status created = s.CreateCarObject(parked_body.Get(), true, common::MakeBoxMesh(RaceCourse::ParkedHalfExtents(), {42, 18, 14}));
-        !created)
-        return created.GetError();
+    Result<const DeformableObject*> parked = s.CreateCarObject(parked_body.Get(), common::MakeBoxMesh(RaceCourse::ParkedHalfExtents(), {42, 18, 14}));
+    if (!parked)
+        return parked.GetError();
+    s.mParkedObject = parked.Get();
 
     // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
     bullet::BulletAdapter& bodies = *s.mAdapter;

@@ -166,8 +166,10 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
         if (!car_body)
             return car_body.GetError();
         s.mNames[car_body.Get()] = "racing car";
-        if (Status created = s.CreateCarObject(car_body.Get(), false, car_mesh); !created)
-            return created.GetError();
+        Result<const DeformableObject*> car = s.CreateCarObject(car_body.Get(), car_mesh);
+        if (!car)
+            return car.GetError();
+        s.mCarObject = car.Get();
     }
 
     // The parked car.
@@ -185,8 +187,10 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
     if (!parked_body)
         return parked_body.GetError();
     s.mNames[parked_body.Get()] = "parked car";
-    if (Status created = s.CreateCarObject(parked_body.Get(), true, common::MakeBoxMesh(parked_half, {42, 18, 14})); !created)
-        return created.GetError();
+    Result<const DeformableObject*> parked = s.CreateCarObject(parked_body.Get(), common::MakeBoxMesh(parked_half, {42, 18, 14}));
+    if (!parked)
+        return parked.GetError();
+    s.mParkedObject = parked.Get();
 
     // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
     ode::OdeAdapter& bodies = *s.mAdapter;

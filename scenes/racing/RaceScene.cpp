@@ -28,15 +28,14 @@ Status RaceScene::CreateDamageWorld()
     return Status::Ok();
 }
 
-Status RaceScene::CreateCarObject(BodyId inBody, bool inParked, const ffd::TriangleMesh& inMesh)
+Result<const DeformableObject*> RaceScene::CreateCarObject(BodyId inBody, const ffd::TriangleMesh& inMesh)
 {
     DeformableObjectSettings settings;
     settings.mMesh = inMesh;
     Result<ObjectId> object = mDamage->CreateDeformableObject(inBody, settings);
     if (!object)
         return object.GetError();
-    (inParked ? mParkedObject : mCarObject) = mDamage->GetObject(object.Get());
-    return Status::Ok();
+    return mDamage->GetObject(object.Get());
 }
 
 Status RaceScene::StepFence(double inStep, const RaceNewBodies& inNewBodies)

@@ -68,8 +68,8 @@ protected:
     /// With mAttach: the game's job system (threads started per parallel for, handed to Crumple for dents)
     /// and the damage world, before the engine's adapter is made.
     Status CreateDamageWorld();
-    /// A car's deformable object on its body (inParked: the parked car's box, else the racing car's mesh).
-    Status CreateCarObject(plugin::BodyId inBody, bool inParked, const ffd::TriangleMesh& inMesh);
+    /// A car's deformable object on its body, with inMesh as its body mesh.
+    Result<const plugin::DeformableObject*> CreateCarObject(plugin::BodyId inBody, const ffd::TriangleMesh& inMesh);
     /// After one engine step of inStep seconds: the fence's FEM, and the bodies its pieces became.
     Status StepFence(double inStep, const RaceNewBodies& inNewBodies);
 
