@@ -35,7 +35,6 @@ public:
     bool Add(const Vec3& inLattice, const Vec3& inDisplacement);
     /// The points, in the order they were first added
     std::vector<ZonePoint>& GetPoints() { return mPoints; }
-    bool IsEmpty() const { return mPoints.empty(); }
 
 private:
     using Key = std::array<std::int64_t, 3>;
