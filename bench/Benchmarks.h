@@ -36,6 +36,13 @@ void RunRaceFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOpt
 /// block Jacobi, interleaved, against a solve converged to round-off. Empty without crumple::fem.
 void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// The factored preconditioner refreshed at the element frames (TetSolverSettings::mFactorRefreshIterations =
+/// 3) against the rest factor alone, on a soft rail (about 800 and 6,400 tetrahedra; --quick the first)
+/// pushed in its middle for six 1/240 s steps and swinging for 18 more, the two stepped alternately: time per
+/// step and conjugate-gradient iterations of each, error: the largest distance of a node from a solve
+/// converged to round-off, over the largest displacement. Empty without crumple::fem.
+void RunFemRefreshBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 /// Crumple's implicit FEM against Bullet's implicit deformable solver on the identical cantilever, 1k, 10k
 /// and 100k tets (--quick: 1k): runs crumple-bench-fem-vs-bullet beside this program (it links Bullet's
 /// double build) and takes its rows. Empty, with a note, where that program is not built.

@@ -81,25 +81,30 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
         mNewOfOld[inverse.indices()[row]] = row;
 }
 
-void NodeBlockCholesky::PermuteLower(int inNodeCount, std::span<const NodeBlock> inBlocks)
+void NodeBlockCholesky::Analyze(int inNodeCount, std::span<const NodeBlock> inBlocks)
 {
+    mAnalyzed = false;
+    const std::size_t size = static_cast<std::size_t>(inNodeCount);
+    OrderMinimumDegree(inNodeCount, inBlocks);
     FitSize(mPlaced, inBlocks.size());
+    FitSize(mAnalyzedPattern, inBlocks.size());
     for (std::size_t index = 0; index < inBlocks.size(); ++index)
     {
         const int row = mNewOfOld[inBlocks[index].mRow];
         const int column = mNewOfOld[inBlocks[index].mColumn];
         mPlaced[index] = row >= column ? Placed{row, column, static_cast<int>(index), false}
                                        : Placed{column, row, static_cast<int>(index), true};
+        mAnalyzedPattern[index] = {inBlocks[index].mRow, inBlocks[index].mColumn};
     }
     // intent: the order of a stable sort by (row, column), in linear time: a counting sort by row (stable),
     // then each row's few blocks by column with an insertion sort (stable). Equal positions keep their input
-    // order, so their sums below are the same numbers whatever sort made the order.
-    FitAssign(mRowStart, static_cast<std::size_t>(inNodeCount) + 1, 0);
+    // order, so their sums in FactorNumeric are the same numbers whatever sort made the order.
+    FitAssign(mRowStart, size + 1, 0);
     for (const Placed& block : mPlaced)
         ++mRowStart[static_cast<std::size_t>(block.mRow) + 1];
     std::partial_sum(mRowStart.begin(), mRowStart.end(), mRowStart.begin());
     FitSize(mPlacedByRow, mPlaced.size());
-    FitSize(mRowFill, static_cast<std::size_t>(inNodeCount));
+    FitSize(mRowFill, size);
     std::copy(mRowStart.begin(), mRowStart.end() - 1, mRowFill.begin());
     for (const Placed& block : mPlaced)
         mPlacedByRow[static_cast<std::size_t>(mRowFill[static_cast<std::size_t>(block.mRow)]++)] = block;
@@ -114,9 +119,70 @@ void NodeBlockCholesky::PermuteLower(int inNodeCount, std::span<const NodeBlock>
             placed[slot] = moving;
         }
 
+    // Symbolic: elimination tree and the number of blocks below the diagonal in each column of L, from the
+    // distinct strictly lower positions of each permuted row.
+    std::vector<int>& parent = mParent;
+    std::vector<int>& flag = mFlag;
+    std::vector<int>& count = mCount;
+    FitAssign(parent, size, -1);
+    FitAssign(flag, size, -1);
+    FitAssign(count, size, 0);
+    for (int k = 0, index = 0; k < inNodeCount; ++k)
+    {
+        flag[k] = k;
+        for (; index < mRowStart[k + 1]; ++index)
+            for (int i = placed[index].mColumn; flag[i] != k; i = parent[i])
+            {
+                if (parent[i] == -1)
+                    parent[i] = k;
+                ++count[i];
+                flag[i] = k;
+            }
+    }
+    FitAssign(mColumnStart, size + 1, 0);
+    std::partial_sum(count.begin(), count.end(), mColumnStart.begin() + 1);
+    mAnalyzedNodeCount = inNodeCount;
+    mAnalyzed = true;
+}
+
+bool NodeBlockCholesky::IsAnalyzedPattern(int inNodeCount, std::span<const NodeBlock> inBlocks) const
+{
+    if (!mAnalyzed || inNodeCount != mAnalyzedNodeCount || inBlocks.size() != mAnalyzedPattern.size())
+        return false;
+    for (std::size_t index = 0; index < inBlocks.size(); ++index)
+        if (inBlocks[index].mRow != mAnalyzedPattern[index].first || inBlocks[index].mColumn != mAnalyzedPattern[index].second)
+            return false;
+    return true;
+}
+
+bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlocks)
+{
+    mFactored = false;
+    mAnalyzed = false;
+    if (inNodeCount <= 0)
+        return false;
+    Analyze(inNodeCount, inBlocks);
+    return FactorNumeric(inNodeCount, inBlocks);
+}
+
+bool NodeBlockCholesky::Refactor(int inNodeCount, std::span<const NodeBlock> inBlocks)
+{
+    if (!IsAnalyzedPattern(inNodeCount, inBlocks))
+        return Factor(inNodeCount, inBlocks);
+    mFactored = false;
+    return FactorNumeric(inNodeCount, inBlocks);
+}
+
+bool NodeBlockCholesky::FactorNumeric(int inNodeCount, std::span<const NodeBlock> inBlocks)
+{
+    const int n = inNodeCount;
+    const std::size_t size = static_cast<std::size_t>(n);
+
+    // The lower triangle of P A P^T by rows, each run of equal positions summed in input order.
+    const std::vector<Placed>& placed = mPlacedByRow;
     PermutedRows& rows = mRows;
-    FitAssign(rows.mStart, static_cast<std::size_t>(inNodeCount) + 1, 0);
-    FitAssign(rows.mDiagonal, static_cast<std::size_t>(inNodeCount), Mat3(Mat3::Zero()));
+    FitAssign(rows.mStart, size + 1, 0);
+    FitAssign(rows.mDiagonal, size, Mat3(Mat3::Zero()));
     rows.mColumn.clear();
     rows.mBlock.clear();
     if (rows.mBlock.capacity() < placed.size())
@@ -126,7 +192,6 @@ void NodeBlockCholesky::PermuteLower(int inNodeCount, std::span<const NodeBlock>
     }
     for (std::size_t index = 0; index < placed.size();)
     {
-        // Sum a run of equal positions.
         const Placed& first = placed[index];
         Mat3 sum = Mat3::Zero();
         for (; index < placed.size() && placed[index].mRow == first.mRow && placed[index].mColumn == first.mColumn;
@@ -145,40 +210,10 @@ void NodeBlockCholesky::PermuteLower(int inNodeCount, std::span<const NodeBlock>
         }
     }
     std::partial_sum(rows.mStart.begin(), rows.mStart.end(), rows.mStart.begin());
-}
-
-bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlocks)
-{
-    mFactored = false;
-    const int n = inNodeCount;
-    if (n <= 0)
-        return false;
-    const std::size_t size = static_cast<std::size_t>(n);
-    OrderMinimumDegree(n, inBlocks);
-    PermuteLower(n, inBlocks);
     const PermutedRows& a = mRows;
 
-    // Symbolic: elimination tree and the number of blocks below the diagonal in each column of L.
-    std::vector<int>& parent = mParent;
+    const std::vector<int>& parent = mParent;
     std::vector<int>& flag = mFlag;
-    std::vector<int>& count = mCount;
-    FitAssign(parent, size, -1);
-    FitAssign(flag, size, -1);
-    FitAssign(count, size, 0);
-    for (int k = 0; k < n; ++k)
-    {
-        flag[k] = k;
-        for (int entry = a.mStart[k]; entry < a.mStart[k + 1]; ++entry)
-            for (int i = a.mColumn[entry]; flag[i] != k; i = parent[i])
-            {
-                if (parent[i] == -1)
-                    parent[i] = k;
-                ++count[i];
-                flag[i] = k;
-            }
-    }
-    FitAssign(mColumnStart, size + 1, 0);
-    std::partial_sum(count.begin(), count.end(), mColumnStart.begin() + 1);
     const std::size_t lower_count = static_cast<std::size_t>(mColumnStart[n]);
     FitAssign(mRowIndex, lower_count, 0);
     FitAssign(mLower, lower_count, Mat3(Mat3::Zero()));
@@ -195,7 +230,7 @@ bool NodeBlockCholesky::Factor(int inNodeCount, std::span<const NodeBlock> inBlo
     std::vector<int>& stack = mStack;
     FitSize(pattern, size);
     FitSize(stack, size);
-    std::fill(flag.begin(), flag.end(), -1);
+    FitAssign(flag, size, -1);
     for (int k = 0; k < n; ++k)
     {
         int top = n;

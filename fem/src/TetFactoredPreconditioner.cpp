@@ -19,7 +19,8 @@ bool TetFactoredPreconditioner::Matches(std::span<const TetIndices> inTets, std:
 
 bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
                                            std::span<const std::uint8_t> inFree, double inMassScale,
-                                           double inStiffnessScale, bool inKeepElementStiffness)
+                                           double inStiffnessScale, bool inKeepElementStiffness,
+                                           std::span<const Quat> inFrames)
 {
     // Forget the old factor first: a failure leaves none.
     mFactored = false;
@@ -41,11 +42,30 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, s
     // Factor; a non-positive pivot (a free rigid mode of the static stiffness) fails the factorisation.
     if (!inKeepElementStiffness)
         mElementStiffness = TetRestStiffnessCache{};
+    mKeepElementStiffness = inKeepElementStiffness;
+    mFrames.assign(inFrames.begin(), inFrames.end());
     TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale, mBlocks,
-                        inKeepElementStiffness ? &mElementStiffness : nullptr);
+                        inKeepElementStiffness ? &mElementStiffness : nullptr, mFrames);
     if (!mCholesky.Factor(free_count, mBlocks))
         return false;
     mRhs.assign(free_count, Vec3::Zero());
+    mNodeRotations.clear();
+    mFactored = true;
+    return true;
+}
+
+bool TetFactoredPreconditioner::Refresh(const TetElementPassInput& inInput, std::span<const double> inMasses,
+                                        std::span<const Quat> inFrames)
+{
+    if (!mFactored || inFrames.size() != mTets.size())
+        return false;
+    mFactored = false;
+    mFrames.assign(inFrames.begin(), inFrames.end());
+    TetRestSystemBlocks(inInput, inMasses, mFreeIndex, mMassScale, mStiffnessScale, mBlocks,
+                        mKeepElementStiffness ? &mElementStiffness : nullptr, mFrames);
+    // intent: the same connectivity and anchors give the same block sequence, so the analysis is reused
+    if (!mCholesky.Refactor(static_cast<int>(mRhs.size()), mBlocks))
+        return false;
     mNodeRotations.clear();
     mFactored = true;
     return true;
@@ -64,9 +84,12 @@ void TetFactoredPreconditioner::SetNodeRotations(std::span<const TetIndices> inT
     // same rotation), in element order: deterministic.
     const std::size_t node_count = mFreeIndex.size();
     mQuaternionSums.assign(node_count, Eigen::Vector4d::Zero());
+    const bool framed = !mFrames.empty() && mFrames.size() == inTets.size();
     for (std::size_t tet = 0; tet < inTets.size(); ++tet)
     {
-        const Eigen::Vector4d q = inRotations[tet].coeffs();
+        // The turn from the factored frame to the current one (the current frame itself at rest).
+        const Eigen::Vector4d q = framed ? (inRotations[tet] * mFrames[tet].conjugate()).coeffs()
+                                         : inRotations[tet].coeffs();
         for (int corner = 0; corner < 4; ++corner)
         {
             Eigen::Vector4d& sum = mQuaternionSums[inTets[tet][corner]];

@@ -15,19 +15,27 @@
 namespace crumple::fem
 {
 
-/// Precompute/solve pair of the rest system A0 = a M + b K0 (TetRestSystemBlocks), used as the preconditioner
-/// of the implicit and static solves: P r = R A0^-1 R^T r, R the block diagonal of node rotations (the mean of
-/// the corotated frames of the elements around each node; identity for St. Venant-Kirchhoff).
+/// Precompute/solve pair of the implicit system at fixed element frames, A_F = a M + b sum_e F_e K0_e F_e^T
+/// (TetRestSystemBlocks; F_e = identity at rest), used as the preconditioner of the implicit and static
+/// solves: P r = R A_F^-1 R^T r, R the block diagonal of node rotations (the mean, around each node, of the
+/// rotation of each element's current corotated frame away from its frame F_e; identity for St.
+/// Venant-Kirchhoff).
 ///
-/// Why: the implicit system is A = a M + b R K0 R^T for the corotated model. A0 is constant while the
+/// Why: the implicit system is A = a M + b R K0 R^T for the corotated model. A_F is constant while the
 /// connectivity, the anchors and the time step are (the per-step cost is then two sparse triangular solves,
-/// no factorisation), and R A0^-1 R^T inverts A exactly for a rigidly rotated body, so conjugate gradient
-/// only has to resolve how far the element frames differ from their nodes' mean: a few iterations instead of
-/// the hundreds block Jacobi needs for a stiff material (the "stiffness warping" of Mueller et al. 2002 used
-/// as a preconditioner, with the prefactorised constant matrix of projective dynamics, Bouaziz et al. 2014).
-/// Fracture, SetNodeFixed and a new time step change A0; the owner calls Matches() and Precompute() again.
+/// no factorisation), and R A_F^-1 R^T inverts A exactly for a body rigidly rotated since the frames F, so
+/// conjugate gradient only has to resolve how far the element frames differ from their nodes' mean: a few
+/// iterations instead of the hundreds block Jacobi needs for a stiff material (the "stiffness warping" of
+/// Mueller et al. 2002 used as a preconditioner, with the prefactorised constant matrix of projective
+/// dynamics, Bouaziz et al. 2014). Where a body bends or is crushed, neighbouring elements turn apart and no
+/// node rotation fits them all: Refresh() then refactors at the current frames (the sparsity, ordering and
+/// symbolic analysis kept), after which the preconditioner is exact again (Hecht et al. 2012 refactor a
+/// corotated stiffness when its frames have drifted in the same way).
+/// Fracture, SetNodeFixed and a new time step change A_F's pattern; the owner calls Matches() and
+/// Precompute() again.
 ///
-/// Memory: the Cholesky factor (NodeBlockCholesky): GetFactorBlockCount() blocks of 9 doubles and an index.
+/// Memory: the Cholesky factor (NodeBlockCholesky): GetFactorBlockCount() blocks of 9 doubles and an index;
+/// with frames, one quaternion per element.
 /// Not thread-safe: Apply() uses scratch held here.
 class TetFactoredPreconditioner
 {
@@ -37,7 +45,7 @@ public:
     bool Matches(std::span<const TetIndices> inTets, std::span<const std::uint8_t> inFree, double inMassScale,
                  double inStiffnessScale) const;
 
-    /// Assembles and factors A0. Returns false, and holds no factor, when A0 is not positive definite (a
+    /// Assembles and factors A_F. Returns false, and holds no factor, when A_F is not positive definite (a
     /// static system whose anchors leave a rigid mode free) or has no free node.
     /// @param[in] inInput           connectivity, rest data and material
     /// @param[in] inMasses          #N lumped masses (kg)
@@ -46,17 +54,34 @@ public:
     /// @param[in] inStiffnessScale  b (h^2 + h beta (s^2), or 1 for statics)
     /// @param[in] inKeepElementStiffness  keep each element's rest stiffness for the next Precompute (a solver
     ///                                    that refactors after cracks: TetRestStiffnessCache); false drops it
+    /// @param[in] inFrames          #T element frames F_e (unit quaternions), or empty for the rest frames
     bool Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
                     std::span<const std::uint8_t> inFree, double inMassScale, double inStiffnessScale,
-                    bool inKeepElementStiffness = false);
+                    bool inKeepElementStiffness = false, std::span<const Quat> inFrames = {});
+
+    /// Refactors A_F at new element frames inFrames (#T), with the connectivity, anchors, scales and element
+    /// stiffness of the last Precompute(): the numeric factorisation only (NodeBlockCholesky::Refactor). The
+    /// node rotations become identity until the next SetNodeRotations(). Returns false, and holds no factor,
+    /// when there is no factor to refresh or A_F is not positive definite.
+    /// @param[in] inInput   the connectivity and rest data of the last Precompute()
+    /// @param[in] inMasses  #N lumped masses (kg), as in the last Precompute()
+    bool Refresh(const TetElementPassInput& inInput, std::span<const double> inMasses, std::span<const Quat> inFrames);
+
+    /// Forgets the factor: the next Matches() is false, so the owner precomputes again.
+    void Invalidate()
+    {
+        mAttempted = false;
+        mFactored = false;
+    }
 
     /// True after a successful Precompute()
     bool IsFactored() const { return mFactored; }
     /// 3 x 3 blocks of the Cholesky factor L (0 without one)
     std::int64_t GetFactorBlockCount() const { return mCholesky.GetBlockCount(); }
 
-    /// Sets the node rotations R from the element frames: the sign-aligned mean quaternion of the elements
-    /// around each node. Call after the elements' rotations change (each Newton iteration).
+    /// Sets the node rotations R from the element frames: the sign-aligned mean, over the elements around each
+    /// node, of the quaternion that turns the element's factored frame F_e into its current frame. Call after
+    /// the elements' rotations change (each Newton iteration).
     /// @param[in] inTets       #T element -> node indices (as in Precompute())
     /// @param[in] inRotations  #T element rotations, unit quaternions
     /// @param[in] inWarp       false: R = identity (St. Venant-Kirchhoff keeps no frames)
@@ -72,6 +97,7 @@ private:
     NodeBlockCholesky mCholesky;
     bool mFactored = false;
     bool mAttempted = false;
+    bool mKeepElementStiffness = false;
 
     // What the factor was built for.
     std::vector<TetIndices> mTets;
@@ -82,6 +108,7 @@ private:
     std::vector<int> mFreeIndex;    // #N, -1 for anchored nodes
     std::vector<NodeBlock> mBlocks; // A0's blocks, kept for the next Precompute (no fresh pages)
     TetRestStiffnessCache mElementStiffness; // empty unless Precompute was asked to keep it
+    std::vector<Quat> mFrames;        // #T, the frames F_e the factor was made at; empty at rest
     std::vector<Mat3> mNodeRotations; // #N, empty while all are identity
     std::vector<Eigen::Vector4d> mQuaternionSums; // #N scratch of SetNodeRotations
 

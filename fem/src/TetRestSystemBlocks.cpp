@@ -62,7 +62,8 @@ std::array<Mat3, 10> ElementBlocks(const Mat3& inRestEdgeInverse, const Matrix6&
 
 void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
                          std::span<const int> inFreeIndex, double inMassScale, double inStiffnessScale,
-                         std::vector<NodeBlock>& outBlocks, TetRestStiffnessCache* ioCache)
+                         std::vector<NodeBlock>& outBlocks, TetRestStiffnessCache* ioCache,
+                         std::span<const Quat> inFrames)
 {
     // Per element the blocks between free corners in the lower triangle (each node pair once), then the
     // masses.
@@ -103,6 +104,8 @@ void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const dou
             element = &ioCache->mBlocks[tet];
         }
         const double scale = 0.5 * inStiffnessScale * rest.mRestVolume;
+        const bool rotated = !inFrames.empty();
+        const Mat3 frame = rotated ? Mat3(inFrames[tet].toRotationMatrix()) : Mat3(Mat3::Identity());
         int pair = 0;
         for (int row_corner = 0; row_corner < 4; ++row_corner)
             for (int col_corner = 0; col_corner <= row_corner; ++col_corner, ++pair)
@@ -112,7 +115,8 @@ void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const dou
                 const int column = inFreeIndex[nodes[col_corner]];
                 if (row < 0 || column < 0)
                     continue;
-                const Mat3 k = scale * (*element)[static_cast<std::size_t>(pair)];
+                const Mat3 rest_block = scale * (*element)[static_cast<std::size_t>(pair)];
+                const Mat3 k = rotated ? Mat3(frame * rest_block * frame.transpose()) : rest_block;
                 if (row > column || (row == column && row_corner == col_corner))
                     blocks.push_back({row, column, k});
                 else if (row < column)

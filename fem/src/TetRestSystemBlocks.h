@@ -32,9 +32,13 @@ struct TetRestStiffnessCache
 /// the linear tetrahedron, engineering shear as in C). K0 is the tangent of both elastic models at rest and
 /// the corotated model's tangent is R K0 R^T for a rigidly rotated element, so A0 is the implicit Euler
 /// system of a body near rest (a = 1 + h alpha, b = h^2 + h beta) or the static stiffness (a = 0, b = 1).
+/// With element frames R_e (inFrames) each element's stiffness is rotated into its frame, R_e K0_e R_e^T:
+/// the corotated model's implicit system at those frames, exactly.
 /// Block rows and columns are the free nodes' indices inFreeIndex[n]; anchored nodes (inFreeIndex -1) and
 /// their couplings are left out. The blocks of the lower triangle, one per element and node pair plus one per
-/// free node's mass, in element order (NodeBlockCholesky sums them).
+/// free node's mass, in element order (NodeBlockCholesky sums them). The (row, column) sequence depends on
+/// the connectivity and the free nodes only, not on the frames: NodeBlockCholesky::Refactor reuses its
+/// analysis.
 /// @param[in] inInput      connectivity, rest data and material
 /// @param[in] inMasses     #N lumped node masses (kg)
 /// @param[in] inFreeIndex  #N index of each free node among the free nodes, -1 for an anchored node
@@ -43,8 +47,10 @@ struct TetRestStiffnessCache
 /// @param[out] outBlocks  blocks of a #free by #free block matrix, units of inMassScale x kg (its memory is
 ///                         reused: a refactorisation after a crack touches no fresh page)
 /// @param[in,out] ioCache  each element's B^T C B kept between calls (null: none kept); see TetRestStiffnessCache
+/// @param[in] inFrames     #T element frames (unit quaternions), or empty for the rest frames (identity)
 void TetRestSystemBlocks(const TetElementPassInput& inInput, std::span<const double> inMasses,
                          std::span<const int> inFreeIndex, double inMassScale, double inStiffnessScale,
-                         std::vector<NodeBlock>& outBlocks, TetRestStiffnessCache* ioCache = nullptr);
+                         std::vector<NodeBlock>& outBlocks, TetRestStiffnessCache* ioCache = nullptr,
+                         std::span<const Quat> inFrames = {});
 
 } // namespace crumple::fem

@@ -61,6 +61,8 @@ Status ValidateSettings(const TetSolverSettings& inSettings)
         return SettingError("mCgRelativeTolerance", inSettings.mCgRelativeTolerance, "must lie in (0, 1)");
     if (inSettings.mCgMaxIterations < 1)
         return SettingError("mCgMaxIterations", inSettings.mCgMaxIterations, "must be >= 1");
+    if (inSettings.mFactorRefreshIterations < 0)
+        return SettingError("mFactorRefreshIterations", inSettings.mFactorRefreshIterations, "must be >= 0");
     if (inSettings.mImplicitMaxIterations < 1)
         return SettingError("mImplicitMaxIterations", inSettings.mImplicitMaxIterations, "must be >= 1");
     if (!(inSettings.mImplicitTolerance > 0.0 && inSettings.mImplicitTolerance < 1.0))
@@ -598,7 +600,11 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
 
     // The factored rest system when it applies (built on the first step, after fracture, anchoring or a new
     // step length), else block Jacobi rebuilt per Newton iteration.
-    TetFactoredPreconditioner* factored = FactoredRestSystem(input, mass_scale, stiffness_scale);
+    // intent: a refreshing solver factors at the frames of its last refresh, also after a crack (the frames
+    // of a hit are closer to the next step's than the rest frames are)
+    const bool refreshing = material.mModel == EElasticModel::CorotatedLinear && mSettings.mFactorRefreshIterations > 0;
+    TetFactoredPreconditioner* factored =
+        FactoredRestSystem(input, mass_scale, stiffness_scale, refreshing ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
     TetPreconditioner& jacobi = scratch.mJacobi;
     const LinearOperator3 preconditioner = factored != nullptr ? factored->AsOperator() : jacobi.AsOperator();
 
@@ -696,11 +702,22 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             jacobi.Build(system, scratch.mBlocks, mPositions, mFree);
         }
 
-        // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes.
+        // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes. A solve the factor's frames no
+        // longer fit stops after mFactorRefreshIterations, refreshes the factor at this linearisation's
+        // frames and goes on from where it stopped.
         std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
-        const ConjugateGradientResult cg =
-            ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
-                              mSettings.mCgMaxIterations, scratch.mDeltaV, scratch.mCg);
+        const int budget = mSettings.mCgMaxIterations;
+        const int first_budget = refreshing && factored != nullptr ? std::min(budget, mSettings.mFactorRefreshIterations) : budget;
+        ConjugateGradientResult cg = ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
+                                                       first_budget, scratch.mDeltaV, scratch.mCg);
+        if (!cg.mConverged && cg.mIterations == first_budget && first_budget < budget)
+        {
+            RefreshFactor(*factored, input, mass_scale, stiffness_scale);
+            const ConjugateGradientResult rest =
+                ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
+                                  budget - cg.mIterations, scratch.mDeltaV, scratch.mCg);
+            cg = {cg.mIterations + rest.mIterations, rest.mRelativeResidual, rest.mConverged};
+        }
         ioResult.mSolverIterations += cg.mIterations;
         ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, cg.mRelativeResidual);
         if (!cg.mConverged)
@@ -724,7 +741,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
 }
 
 TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
-                                                         double inStiffnessScale)
+                                                         double inStiffnessScale, std::span<const Quat> inFrames)
 {
     if (mSettings.mPreconditioner != EImplicitPreconditioner::RestFactorization)
         return nullptr;
@@ -732,10 +749,30 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     if (!factor.Matches(mElementNodes, mFree, inMassScale, inStiffnessScale))
     {
         // intent: a breakable solver refactors after every crack; its elements' rest stiffness is kept
-        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable());
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable(), inFrames);
         ++mFactorizationCount;
     }
     return factor.IsFactored() ? &factor : nullptr;
+}
+
+void TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
+                              double inStiffnessScale)
+{
+    ++mFactorRefreshCount;
+    if (!mFactorFramesSaved)
+    {
+        mSavedFactorFrames = mFactorFrames;
+        mFactorFramesSaved = true;
+    }
+    mFactorFrames = mRotations;
+    if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
+        return;
+    // intent: a system that was positive definite at its old frames is so at any (congruent blocks plus the
+    // masses); should round-off still fail it, the rest factor, which factored before, takes over
+    mFactorFrames.clear();
+    ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable());
+    ioFactor.SetNodeRotations(mElementNodes, mRotations, true);
+    ++mFactorizationCount;
 }
 
 // The CPU side of TetStepper's policy: arrays in place, divergence as a non-finite state or an energy gain.
@@ -766,6 +803,7 @@ public:
         s.mSavedPositions = s.mPositions;
         s.mSavedVelocities = s.mVelocities;
         s.mSavedRotations = s.mRotations;
+        s.mFactorFramesSaved = false;
         if (ChangesShape())
             s.SaveShape(s.mSavedShape);
         s.mPassEnergyValid = false;
@@ -782,6 +820,14 @@ public:
         s.mPositions = s.mSavedPositions;
         s.mVelocities = s.mSavedVelocities;
         s.mRotations = s.mSavedRotations;
+        if (s.mFactorFramesSaved)
+        {
+            // intent: the factor goes back to the step's start frames too, so the next attempt or step
+            // repeats this one bit for bit
+            s.mFactorFrames.swap(s.mSavedFactorFrames);
+            s.mFactorFramesSaved = false;
+            s.mWorkspace.Get().mFactor.Invalidate();
+        }
     }
 
     TetStepAttempt Attempt(double inDeltaTime, int inPieces, TetStepResult& ioResult) override

@@ -199,6 +199,8 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
             writer.WriteU32(static_cast<std::uint32_t>(corner));
         writer.WriteU32(static_cast<std::uint32_t>(inSetup.mGroups.empty() ? static_cast<int>(tet) : inSetup.mGroups[tet]));
     }
+    // Settings added after the first recordings, at the end: a record without them is an older one.
+    writer.WriteU32(static_cast<std::uint32_t>(inSetup.mSettings.mFactorRefreshIterations));
     return writer.TakeBytes();
 }
 
@@ -235,6 +237,11 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         setup.mTets.push_back(corners);
         setup.mGroups.push_back(static_cast<int>(reader.ReadU32()));
     }
+    // intent: a record that ends here was written before mFactorRefreshIterations existed, when the factor
+    // was never refreshed; 0 replays it as it ran
+    setup.mSettings.mFactorRefreshIterations = 0;
+    if (!reader.Failed() && reader.Remaining() == 4)
+        setup.mSettings.mFactorRefreshIterations = static_cast<int>(reader.ReadU32());
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "prop record: wrong length");
     if (setup.mBackend != EFemBackend::Cpu && setup.mBackend != EFemBackend::Gpu)

@@ -148,9 +148,9 @@ std::string RaceFence::Summary() const
     char line[320];
     std::snprintf(line, sizeof(line),
                   "fence: %zu tetrahedra, %d links broken, %d pieces loose (%zu engine bodies); FEM awake %d of %d "
-                  "engine steps, %d factorisations, worst step %.2f ms, %.1f ms in all (game-thread CPU)",
+                  "engine steps, %d factorisations and %d refreshes, worst step %.2f ms, %.1f ms in all (game-thread CPU)",
                   solver.GetElementNodes().size(), solver.GetBrokenLinkCount(), mLoose, mPieces.size(), mAwakeSteps, mSteps,
-                  solver.GetFactorizationCount(), mWorstStepMs, mTotalStepMs);
+                  solver.GetFactorizationCount(), solver.GetFactorRefreshCount(), mWorstStepMs, mTotalStepMs);
     return line;
 }
 

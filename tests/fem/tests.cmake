@@ -12,11 +12,11 @@ if(CRUMPLE_FEM_TESTS)
     crumple_add_test(fem ${CRUMPLE_FEM_TESTS} LINK crumple::fem crumple_scenes_fem)
     # White-box tests of the solver's private kernels (STYLE rule 19: the test links the static target).
     target_include_directories(test_fem PRIVATE ${PROJECT_SOURCE_DIR}/fem/src)
-    # White-box tests of private kernels (TetFactoredSolveTest): a shared build hides their symbols behind
+    # White-box tests of private kernels (TetFactoredSolveTest, TetFactorRefreshTest): a shared build hides their symbols behind
     # the library's interface (CRUMPLE_API), so there the test compiles its own copy.
     if(BUILD_SHARED_LIBS)
         target_sources(test_fem PRIVATE ${PROJECT_SOURCE_DIR}/fem/src/NodeBlockCholesky.cpp
             ${PROJECT_SOURCE_DIR}/fem/src/TetElementPass.cpp ${PROJECT_SOURCE_DIR}/fem/src/TetPassParallel.cpp
-            ${PROJECT_SOURCE_DIR}/fem/src/TetRestSystemBlocks.cpp)
+            ${PROJECT_SOURCE_DIR}/fem/src/TetRestSystemBlocks.cpp ${PROJECT_SOURCE_DIR}/fem/src/TetFactoredPreconditioner.cpp)
     endif()
 endif()

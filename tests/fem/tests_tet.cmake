@@ -9,6 +9,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/StableTimeStepTest.cpp
     fem/TetCantileverTest.cpp
     fem/TetFactoredSolveTest.cpp
+    fem/TetFactorRefreshTest.cpp
     fem/TetEnergyTest.cpp
     fem/TetFenceTest.cpp
     fem/TetGridTest.cpp

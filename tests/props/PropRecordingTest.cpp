@@ -391,3 +391,24 @@ TEST_CASE("Props in a recording: a setup of mismatched sizes, a second recorder,
     back.mExtensions.push_back(step);
     CHECK(ReplayProps(back).GetError().mCode == EError::CorruptData);
 }
+
+TEST_CASE("Props in a recording: the factor refresh setting is recorded; a record written before it replays without refreshes",
+          "[props][replay]")
+{
+    common::WorldFixture fixture;
+    FemProp panel = BrittlePanel();
+    PropSetup setup = MakePropSetup(fixture.mWall, panel).Get();
+    for (int refresh : {0, 1, 7})
+    {
+        setup.mSettings.mFactorRefreshIterations = refresh;
+        const std::vector<std::byte> bytes = EncodePropSetup(setup).Get();
+        CHECK(DecodePropSetup(bytes).Get().mSettings.mFactorRefreshIterations == refresh);
+        // Older records end before the setting: the solver then never refreshed, and replays so.
+        const std::vector<std::byte> older(bytes.begin(), bytes.end() - 4);
+        CHECK(DecodePropSetup(older).Get().mSettings.mFactorRefreshIterations == 0);
+        // Anything else at the end is a corrupt record.
+        std::vector<std::byte> longer = bytes;
+        longer.push_back(std::byte{0});
+        CHECK(DecodePropSetup(longer).GetError().mCode == EError::CorruptData);
+    }
+}

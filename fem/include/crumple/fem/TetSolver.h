@@ -180,6 +180,10 @@ public:
     /// first implicit step or static solve, one more after each change of connectivity (fracture), anchors
     /// or step length; a cost counter like GetElementWorkCount()
     int GetFactorizationCount() const { return mFactorizationCount; }
+    /// Refreshes of the factor at the current element frames (TetSolverSettings::mFactorRefreshIterations):
+    /// numeric refactorisations within a solve whose frames had drifted; a cost counter like
+    /// GetFactorizationCount()
+    int GetFactorRefreshCount() const { return mFactorRefreshCount; }
 
 private:
     // Sub-steps of a symplectic step of inDeltaTime, refused beyond mMaxSubSteps.
@@ -224,11 +228,14 @@ private:
     void StepSymplectic(double inDeltaTime, int inSubSteps);
     // One implicit Euler step; fills the solver statistics of ioResult.
     void StepImplicit(double inDeltaTime, TetStepResult& ioResult);
-    // The factored rest system inMassScale M + inStiffnessScale K0 for the current connectivity and anchors,
-    // factored again when they or the scales changed; null when the settings ask for block Jacobi or the
-    // system cannot be factored.
+    // The factored system inMassScale M + inStiffnessScale K for the current connectivity and anchors,
+    // factored again (K at the element frames inFrames, or the rest stiffness K0 when empty) when they or the
+    // scales changed; null when the settings ask for block Jacobi or the system cannot be factored.
     TetFactoredPreconditioner* FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
-                                                  double inStiffnessScale);
+                                                  double inStiffnessScale, std::span<const Quat> inFrames = {});
+    // ioFactor refactored at the current element frames mRotations (the rest factor should that fail).
+    void RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
+                       double inStiffnessScale);
     // Gravity plus external force on each free node, zero on anchored ones (N).
     void LoadForces(std::vector<Vec3>& outForces) const;
     // Kinetic, elastic and external-potential energy and the content C at the current state; updates the
@@ -292,6 +299,7 @@ private:
 
     std::uint64_t mElementWork = 0;
     int mFactorizationCount = 0;
+    int mFactorRefreshCount = 0;
     const JobSystem* mJobs = nullptr; // the host's, not owned
 
     // Scratch reused across steps (no allocation per step once sized).
@@ -300,6 +308,12 @@ private:
     std::vector<Vec3> mSavedPositions;
     std::vector<Vec3> mSavedVelocities;
     std::vector<Quat> mSavedRotations;
+    // The element frames the factored system was last refreshed at (empty: the rest frames). Solver state,
+    // not workspace: a copy, or a factor rebuilt after a static solve, factors at the same frames and so
+    // continues bit for bit. Saved (once per step, when a refresh first changes them) for a restore.
+    std::vector<Quat> mFactorFrames;
+    std::vector<Quat> mSavedFactorFrames;
+    bool mFactorFramesSaved = false;
     std::vector<Vec3> mStartPositions;
     std::vector<Vec3> mStartVelocities;
     TetSolverWorkspace mWorkspace; // linear-solve scratch and the factored rest system

@@ -40,6 +40,22 @@ struct CRUMPLE_API TetSolverSettings
     /// the step is kept (the truncated solution of an SPD system is still a descent step) and
     /// ETetStepEvent::SolverNotConverged is set.
     int mCgMaxIterations = 1000;
+    /// Implicit Euler with RestFactorization, corotated model: when a conjugate-gradient solve has not
+    /// converged after this many iterations, the factor is refreshed at the current element frames (a
+    /// numeric refactorisation, the ordering kept) and the solve goes on from where it stopped, with a
+    /// preconditioner that is exact for the current linearisation. The factor then stays at those frames
+    /// for the later solves and steps (solver state: copies and replays continue bit for bit). A bent or
+    /// crushed prop otherwise costs 5 to 20 iterations per solve (neighbouring elements turned apart, which
+    /// the per-node rotation cannot follow). Whether it pays depends on what a refresh costs against an
+    /// iteration, which varies with the mesh and the motion. Measured at 3: the Bullet racing fence (4,000
+    /// tetrahedra, 5 refreshes) spent 63-76 instead of 72-80 ms in its FEM over the session, ODE's (28
+    /// refreshes, 4x fewer iterations in a traced build) 390-496 instead of 376-475 ms; a soft rail of 6,400
+    /// tetrahedra took a third of the iterations but 19 instead of 14 ms per step (crumple-bench --only
+    /// fem_refresh), its refresh costing about 13 iterations. 0 (the
+    /// default) never refreshes: results stay those of earlier versions bit for bit, which a cracking prop
+    /// needs for now (where it cracks depends on round-off at the solver's tolerance; see the README's
+    /// known limits). >= 0.
+    int mFactorRefreshIterations = 0;
     /// Implicit Euler: at most this many Newton iterations (linear solves) per step, >= 1. The first is the
     /// classic one-solve linearised step; further ones re-evaluate forces and rotations at the new positions,
     /// which a rotating body needs (one solve stretches it by ~(omega h)^2 / 2 per step). Reaching the limit
