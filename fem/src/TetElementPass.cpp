@@ -73,6 +73,8 @@ double RunElementPass(const TetElementPassInput& inInput, std::span<Vec3> outVal
             value.setZero();
         for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
         {
+            if (!inInput.IsActive(tet))
+                continue;
             double element_energy = 0.0;
             const std::array<Vec3, 4> corners = inKernel(tet, element_energy);
             const TetIndices& nodes = inInput.mTets[tet];
@@ -87,7 +89,17 @@ double RunElementPass(const TetElementPassInput& inInput, std::span<Vec3> outVal
                        [&](std::size_t inFirst, std::size_t inLast)
                        {
                            for (std::size_t tet = inFirst; tet < inLast; ++tet)
-                               parallel.mCorners[tet] = inKernel(tet, parallel.mElementEnergy[tet]);
+                           {
+                               // intent: a skipped element's slots hold zeros, and x + 0 is x for every sum
+                               // that starts at +0: the gather adds what the serial scatter adds
+                               if (inInput.IsActive(tet))
+                                   parallel.mCorners[tet] = inKernel(tet, parallel.mElementEnergy[tet]);
+                               else
+                               {
+                                   parallel.mCorners[tet].fill(Vec3::Zero());
+                                   parallel.mElementEnergy[tet] = 0.0;
+                               }
+                           }
                        });
     parallel.Gather(outValues);
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
@@ -255,6 +267,8 @@ void TetStiffnessDiagonal(const TetElementPassInput& inInput,
     const Matrix6& c = *inInput.mMaterialMatrix;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        if (!inInput.IsActive(tet))
+            continue;
         // Shape-function gradients g_a: rows of D_m^-1 for corners 1..3, minus their sum for corner 0.
         const TetIndices& n = inInput.mTets[tet];
         const TetElementRest& rest = inInput.mRest[tet];
@@ -283,6 +297,8 @@ double TetElasticEnergy(const TetElementPassInput& inInput, std::span<const Vec3
     double energy = 0.0;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        if (!inInput.IsActive(tet))
+            continue;
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         energy += inInput.mRest[tet].mRestVolume * StrainEnergyDensity(inInput.mModel, f, r, c, inInput.PlasticStrain(tet));
     }
@@ -296,6 +312,8 @@ int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inP
     int flowed = 0;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        if (!inInput.IsActive(tet))
+            continue;
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         const Mat3 updated = PlasticFlow(ModelStrain(inInput.mModel, f, r), ioPlasticStrains[tet], inShearModulus,
                                          inMaterial, inDeltaTime);
@@ -315,6 +333,11 @@ void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> i
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        if (!inInput.IsActive(tet))
+        {
+            outStress[tet].setZero();
+            continue;
+        }
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         if (corotated)
         {

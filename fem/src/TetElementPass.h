@@ -8,6 +8,7 @@
 #include <crumple/fem/TetElementRest.h>
 #include <crumple/fem/TetLinearization.h>
 
+#include <cstdint>
 #include <span>
 
 namespace crumple::fem
@@ -30,6 +31,14 @@ struct TetElementPassInput
     /// The host's jobs and the gather scratch for the force and stiffness-product passes, or null to run them
     /// serially; either way the results are bitwise the same (TetPassParallel)
     TetPassParallel* mParallel = nullptr;
+
+    /// #T flags, 1 for an element with a free corner, or empty when every element has one. The passes skip
+    /// the others (every corner anchored: a piece handed to the engine, fixed in place), which then add
+    /// nothing to any node, have no energy and keep their frames; their stress (TetCauchyStress) is zero.
+    std::span<const std::uint8_t> mElementActive;
+
+    /// True when the passes evaluate element inTet
+    bool IsActive(std::size_t inTet) const { return mElementActive.empty() || mElementActive[inTet] != 0; }
 
     /// Plastic strain of element inTet (zero without plasticity)
     Mat3 PlasticStrain(std::size_t inTet) const

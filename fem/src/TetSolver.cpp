@@ -162,6 +162,32 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
 
 TetElementPassInput TetSolver::PassInput() const
 {
+    TetElementPassInput input = EveryElementInput();
+    if (!mElementActiveValid)
+    {
+        // Elements with a free corner; the flags stay empty while that is every element (no test per
+        // element in the passes then).
+        mElementActive.assign(mElementNodes.size(), 0);
+        bool every = true;
+        for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
+        {
+            const TetIndices& nodes = mElementNodes[tet];
+            mElementActive[tet] = mFree[nodes[0]] | mFree[nodes[1]] | mFree[nodes[2]] | mFree[nodes[3]];
+            every = every && mElementActive[tet] != 0;
+        }
+        if (every)
+            mElementActive.clear();
+        mActiveElementCount = 0;
+        for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
+            mActiveElementCount += mElementActive.empty() || mElementActive[tet] != 0 ? 1 : 0;
+        mElementActiveValid = true;
+    }
+    input.mElementActive = mElementActive;
+    return input;
+}
+
+TetElementPassInput TetSolver::EveryElementInput() const
+{
     return TetElementPassInput{mElementNodes,
                                mRest,
                                &mMaterial.GetMaterialMatrix(),
@@ -222,6 +248,7 @@ void TetSolver::RestoreShape(const ShapeState& inShape)
     mMasses = inShape.mMasses;
     mInverseMasses = inShape.mInverseMasses;
     mFree = inShape.mFree;
+    mElementActiveValid = false;
     mExternalForces = inShape.mExternalForces;
     mPlasticStrains = inShape.mPlasticStrains;
     mBroken = inShape.mBroken;
@@ -242,7 +269,7 @@ int TetSolver::FlowPlastically(double inDeltaTime)
 {
     const int flowed = TetPlasticFlow(PassInput(), mPositions, mRotations, mMaterial.GetShearModulus(),
                                       mMaterial.GetSettings(), inDeltaTime, mPlasticStrains);
-    mElementWork += mRest.size();
+    mElementWork += mActiveElementCount;
     if (flowed > 0)
         mForcesCached = false; // the rest shape changed: the forces at these positions did too
     return flowed;
@@ -253,7 +280,7 @@ int TetSolver::Fracture()
     // Rankine's criterion on every group's mean stress, then node duplication along the opened links.
     const TetElementPassInput input = PassInput();
     TetCauchyStress(input, mPositions, mRotations, mElementStress);
-    mElementWork += mRest.size();
+    mElementWork += mActiveElementCount;
     const Status judged = GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
     CRUMPLE_ASSERT(judged.IsValid(), "the solver's own groups were refused");
     if (!judged.IsValid())
@@ -315,6 +342,7 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
     mMasses = std::move(masses);
     mInverseMasses = std::move(inverse_masses);
     mFree = std::move(free);
+    mElementActiveValid = false;
     mForces.resize(new_count);
     mReferenceValid = false; // the energy bookkeeping restarts on the new topology
 }
@@ -350,6 +378,7 @@ Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
         mFreeMass += inFixed ? -mMasses[inNode] : mMasses[inNode];
     mInverseMasses[inNode] = inFixed ? 0.0 : 1.0 / mMasses[inNode];
     mFree[inNode] = inFixed ? 0 : 1;
+    mElementActiveValid = false;
     if (inFixed)
         mVelocities[inNode].setZero();
     InputChanged();
@@ -455,7 +484,7 @@ void TetSolver::ElasticForces(std::vector<Vec3>& outForces) const
 {
     outForces.resize(mPositions.size());
     std::vector<Quat> rotations = mRotations;
-    const TetElementPassInput input = PassInput();
+    const TetElementPassInput input = EveryElementInput();
     TetElasticForces(input, mPositions, {}, 0.0, rotations, {}, outForces);
 }
 
@@ -470,7 +499,7 @@ double TetSolver::KineticEnergy() const
 double TetSolver::ElasticEnergy() const
 {
     std::vector<Quat> rotations = mRotations;
-    const TetElementPassInput input = PassInput();
+    const TetElementPassInput input = EveryElementInput();
     return TetElasticEnergy(input, mPositions, rotations);
 }
 
@@ -515,7 +544,7 @@ TetSolver::EnergyParts TetSolver::MeasureEnergy()
     parts.mKinetic = KineticEnergy();
     const TetElementPassInput input = PassInput();
     parts.mElastic = TetElasticEnergy(input, mPositions, mRotations);
-    mElementWork += mRest.size();
+    mElementWork += mActiveElementCount;
     ExternalPotential(parts.mPotential, parts.mPotentialMagnitude);
     return parts;
 }
@@ -533,7 +562,7 @@ void TetSolver::StepSymplectic(double inDeltaTime, int inSubSteps)
         TetElasticForces(input, mPositions,
                          viscous ? std::span<const Vec3>(mVelocities) : std::span<const Vec3>(),
                          material.mStiffnessDamping, mRotations, {}, mForces);
-        mElementWork += mRest.size();
+        mElementWork += mActiveElementCount;
 
         // Node pass (the paper's order): v += dt a, mass damping applied implicitly, x += dt v.
         for (std::size_t node = 0; node < mPositions.size(); ++node)
@@ -644,13 +673,13 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         if (!cached)
         {
             TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy);
-            mElementWork += mRest.size();
+            mElementWork += mActiveElementCount;
         }
         mPassEnergyValid = true;
         if (first || material.mStiffnessDamping > 0.0)
         {
             TetStiffnessProduct(input, mLinearization, mVelocities, scratch.mKv);
-            mElementWork += mRest.size();
+            mElementWork += mActiveElementCount;
         }
 
         // Residual r(v) on the free nodes; on the first pass linearised at x0 (the extra -h K v0 term).
@@ -695,7 +724,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         if (factored == nullptr)
         {
             TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
-            mElementWork += mRest.size();
+            mElementWork += mActiveElementCount;
             for (std::size_t node = 0; node < node_count; ++node)
                 scratch.mBlocks[node] =
                     mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
@@ -731,7 +760,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             }
         ++ioResult.mNewtonIterations;
     }
-    mElementWork += products * mRest.size();
+    mElementWork += products * mActiveElementCount;
     if (!converged)
         ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
 
@@ -1023,7 +1052,7 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
     {
         // Residual force on the free nodes at the current linearisation point.
         TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces);
-        mElementWork += mRest.size();
+        mElementWork += mActiveElementCount;
         double residual_norm = 0.0;
         for (std::size_t node = 0; node < node_count; ++node)
         {
@@ -1056,14 +1085,14 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
         else
         {
             TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
-            mElementWork += mRest.size();
+            mElementWork += mActiveElementCount;
             scratch.mJacobi.Build(stiffness, scratch.mBlocks, mPositions, mFree);
         }
         std::fill(delta_x.begin(), delta_x.end(), Vec3::Zero());
         const ConjugateGradientResult cg = ConjugateGradient(stiffness, preconditioner, residual,
                                                              0.5 * inRelativeTolerance, inMaxCgIterations,
                                                              delta_x, scratch.mCg);
-        mElementWork += context.mProducts * mRest.size();
+        mElementWork += context.mProducts * mActiveElementCount;
         result.mSolverIterations += cg.mIterations;
         for (std::size_t node = 0; node < node_count; ++node)
             mPositions[node] += delta_x[node];

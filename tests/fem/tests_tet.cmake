@@ -6,6 +6,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/FemInputBoundsTest.cpp
     fem/FemMaterialTest.cpp
     fem/PolarRotationTest.cpp
+    fem/TetAnchoredElementsTest.cpp
     fem/StableTimeStepTest.cpp
     fem/TetCantileverTest.cpp
     fem/TetFactoredSolveTest.cpp

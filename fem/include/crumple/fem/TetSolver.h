@@ -174,7 +174,8 @@ public:
     /// a readback.
     bool IsStillAndUnstrained() const;
     /// Element evaluations done by Step() and SolveStatic() so far (force, stiffness-product, diagonal and
-    /// energy passes, one per element each): a cost counter that tests can compare instead of timing
+    /// energy passes, one per element each; elements whose corners are all anchored are skipped and not
+    /// counted): a cost counter that tests can compare instead of timing
     std::uint64_t GetElementWorkCount() const { return mElementWork; }
     /// Factorisations of the rest system done so far (EImplicitPreconditioner::RestFactorization): one on the
     /// first implicit step or static solve, one more after each change of connectivity (fracture), anchors
@@ -190,8 +191,11 @@ private:
     Result<int> SymplecticSubSteps(double inDeltaTime) const;
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
 
-    // Element pass input with the current connectivity and plastic strains.
+    // Element pass input with the current connectivity and plastic strains, skipping the elements with no
+    // free corner (they cannot move: a piece handed to the engine costs no element work).
     TetElementPassInput PassInput() const;
+    // The same over every element: the public ElasticForces() and ElasticEnergy() (reactions at anchors).
+    TetElementPassInput EveryElementInput() const;
     // PassInput() with the host's jobs and the gather scratch prepared for the current connectivity, when a
     // job system with more than one worker is set.
     TetElementPassInput ParallelPassInput();
@@ -314,6 +318,12 @@ private:
     std::vector<Quat> mFactorFrames;
     std::vector<Quat> mSavedFactorFrames;
     bool mFactorFramesSaved = false;
+    // #T, 1 for an element with a free corner (the passes skip the others: TetElementPassInput::
+    // mElementActive), empty while every element has one; rebuilt by PassInput() after anchors or the
+    // connectivity change. mActiveElementCount counts the evaluated ones (GetElementWorkCount()).
+    mutable std::vector<std::uint8_t> mElementActive;
+    mutable std::size_t mActiveElementCount = 0;
+    mutable bool mElementActiveValid = false;
     std::vector<Vec3> mStartPositions;
     std::vector<Vec3> mStartVelocities;
     TetSolverWorkspace mWorkspace; // linear-solve scratch and the factored rest system
