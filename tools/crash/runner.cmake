@@ -12,7 +12,7 @@ if(NOT TARGET crumple_scenes_pictures OR NOT TARGET crumple_fem OR NOT (TARGET c
 endif()
 add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashRun.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/CrashReport.cpp ${CMAKE_CURRENT_LIST_DIR}/src/CrashSweep.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/src/SlurmSweep.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/SlurmSweep.cpp ${CMAKE_CURRENT_LIST_DIR}/src/OutputFolders.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp ${CMAKE_CURRENT_LIST_DIR}/src/FloatingBarrierCrash.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp
@@ -47,7 +47,8 @@ if(CRUMPLE_BUILD_TESTS)
     include(Catch)
     add_executable(test_crash_run ${PROJECT_SOURCE_DIR}/tests/TestMain.cpp ${PROJECT_SOURCE_DIR}/tests/crash/FemBarrierCouplingTest.cpp
         ${PROJECT_SOURCE_DIR}/tests/crash/CrushModelTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/TimeHistoryTest.cpp
-        ${PROJECT_SOURCE_DIR}/tests/crash/ChartsTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/RigidWheelsTest.cpp)
+        ${PROJECT_SOURCE_DIR}/tests/crash/ChartsTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/RigidWheelsTest.cpp
+        ${PROJECT_SOURCE_DIR}/tests/crash/OutputFoldersTest.cpp)
     target_compile_definitions(test_crash_run PRIVATE CRUMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
     target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)

@@ -13,6 +13,7 @@
 #include <crumple/crash/ScenarioFile.h>
 
 #include "ObjWriter.h"
+#include "OutputFolders.h"
 
 #include <cmath>
 #include <cstdio>
@@ -364,17 +365,9 @@ int main(int argc, char** argv)
         return failed.Get() == 0 ? cExitPass : cExitFail;
     }
     std::error_code error;
-    // The outermost folder this run makes: the output folder, or the first of its parents that does not exist
-    // yet (--out a/b/c in an empty folder makes a).
-    std::filesystem::path made_folder;
-    // intent: weakly_canonical resolves the links in the part that exists, as create_directories will
-    for (std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(out, error), error);
-         !error && !folder.empty() && !std::filesystem::exists(folder, error); folder = folder.parent_path())
-    {
-        made_folder = folder;
-        if (folder == folder.parent_path())
-            break;
-    }
+    // The folders this run makes: the output folder and the parents of it that do not exist yet (--out a/b/c
+    // in an empty folder makes a, a/b and a/b/c).
+    const std::vector<std::filesystem::path> made_folders = FoldersToMake(out);
     std::filesystem::create_directories(out, error);
     if (error)
     {
@@ -385,8 +378,8 @@ int main(int argc, char** argv)
     // not even the parent folders it made.
     const int status = Run(scenario.Get(), sweep, sweep_spec.Get(), workers, calibrate || campbell_check, calibrate,
                            line, preset_name, source, pictures, colour_max, strict, out);
-    if (status == cExitBadInput && !made_folder.empty())
-        std::filesystem::remove_all(made_folder, error);
+    if (status == cExitBadInput)
+        RemoveMadeFolders(made_folders);
     return status;
 }
 
