@@ -56,7 +56,9 @@ void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// and ODE, interleaved with the same drive without the fence: CPU time per engine step of each, the fence's
 /// FEM per step (one prop), handing pieces over (finding them, their rigid bodies, the engine's bodies: in
 /// all and per body made) and its shape updates; error: the engine's change of the
-/// car's momentum against Crumple's impulses on it. Empty without crumple::props or an engine.
+/// car's momentum against Crumple's impulses on it. And fence_spread (not with --quick): the same hit with
+/// the conjugate-gradient tolerance at 1e-6, 1e-7 and 1e-8 and with the factor refresh, links broken and the
+/// car's loss of speed of each; error: the spread of that loss. Empty without crumple::props or an engine.
 void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// Full-width rigid-wall crashes of the box car and the shipped meshes in Bullet and ODE at 20-64 km/h with the

@@ -7,12 +7,22 @@
 namespace crumple::props
 {
 
-Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
-                                std::span<const int> inAnchoredNodes)
+fem::TetSolverSettings HeldPropSolverSettings()
 {
     fem::TetSolverSettings solver;
     solver.mGravity = Vec3::Zero();
-    Result<FemProp> prop = FemProp::Create(nullptr, inBodyMesh, inMaterial, solver, FemPropSettings{});
+    return solver;
+}
+
+Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
+                                std::span<const int> inAnchoredNodes, const fem::TetSolverSettings& inSolver)
+{
+    // intent: refused, not overridden: a game that set a gravity meant something the held body cannot do
+    if (!(inSolver.mGravity.array() == 0.0).all())
+        return MakeError(EError::InvalidArgument,
+                         "MakeHeldFemProp: a held prop's FEM has no gravity (its held body stands for what holds it "
+                         "up; loose pieces fall in the engine); start from HeldPropSolverSettings()");
+    Result<FemProp> prop = FemProp::Create(nullptr, inBodyMesh, inMaterial, inSolver, FemPropSettings{});
     if (!prop)
         return prop;
     for (int node : inAnchoredNodes)
@@ -24,14 +34,15 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
 
 Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
                              std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
-                             const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody)
+                             const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
+                             const fem::TetSolverSettings& inSolver)
 {
     if (!inMakeBody)
         return MakeError(EError::InvalidArgument, "AddHeldProp: no function to make the engine body");
     Result<PropBody> made = MakePropBody(inMesh, inMaterial.mDensity, inPose, true, inShapeCellSize);
     if (!made)
         return made.GetError();
-    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes);
+    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver);
     if (!prop)
         return prop.GetError();
     // intent: what AddProp would refuse of the prop itself (a failed or closed recorder) is refused before the

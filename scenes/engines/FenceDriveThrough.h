@@ -31,6 +31,7 @@ struct FenceDriveSettings
     bool mMatchVelocity = true;    ///< The held body moves with the struck planks (false: put back at rest)
     bool mFence = true;            ///< false: no fence (the drive alone, the baseline of a cost)
     double mDuration = 0.6;        ///< Simulated time (s)
+    fem::TetSolverSettings mSolver = props::HeldPropSolverSettings(); ///< The fence FEM's solver
 };
 
 /// What a drive through the fence did, and what it cost.
@@ -128,7 +129,7 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             wood.Get().mMaterial.mTensileStrength = std::numeric_limits<double>::infinity();
         Result<props::HeldProp> added = props::AddHeldProp(
             props, fence.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes, DriveThroughFencePose(), cShapeSize,
-            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); });
+            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); }, inSettings.mSolver);
         if (!added)
             return added.GetError();
         fence_body = added.Get().mBody;

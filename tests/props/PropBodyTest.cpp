@@ -187,7 +187,7 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
     CHECK(points < points_before);
 }
 
-TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until struck; a bad anchor is refused", "[props]")
+TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until struck; a bad anchor or a gravity is refused", "[props]")
 {
     const fem::TetMesh mesh = StandingWall();
     const std::vector<int> footings = Footings(mesh);
@@ -210,6 +210,20 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
     const Result<props::FemProp> refused = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, bad);
     REQUIRE(refused.HasError());
     CHECK(refused.GetError().mMessage.find("anchored node " + std::to_string(mesh.GetNodeCount())) != std::string::npos);
+
+    // The game's own solver settings are used; a gravity (the default TetSolverSettings has one) and settings
+    // the solver refuses are refused.
+    fem::TetSolverSettings own = props::HeldPropSolverSettings();
+    own.mFactorRefreshIterations = 3;
+    own.mCgRelativeTolerance = 1.0e-8;
+    const props::FemProp tuned = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).Get();
+    CHECK(tuned.GetCpuSolver()->GetSettings().mFactorRefreshIterations == 3);
+    CHECK(tuned.GetCpuSolver()->GetSettings().mCgRelativeTolerance == 1.0e-8);
+    const Result<props::FemProp> pulled = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, fem::TetSolverSettings{});
+    REQUIRE(pulled.HasError());
+    CHECK(pulled.GetError().mMessage.find("no gravity") != std::string::npos);
+    own.mFactorRefreshIterations = -1;
+    CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).HasError());
 }
 
 TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")

@@ -6,6 +6,7 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterialSettings.h>
+#include <crumple/fem/TetSolverSettings.h>
 #include <crumple/props/FemProp.h>
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
@@ -16,14 +17,19 @@
 namespace crumple::props
 {
 
+/// The solver settings of a held prop's FEM unless the game gives its own: the default implicit solver with
+/// no gravity (the held body stands for what holds the prop up, so it sleeps until something strikes it;
+/// pieces that break loose fall under the engine's gravity).
+CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
+
 /// The FEM of a prop whose engine body is held (PropBodySettings::mHeld, a fence or a barrier anchored to the
-/// ground): a CPU prop on inBodyMesh (MakePropBody's mMesh, the body frame) with the default implicit
-/// solver, no gravity in its FEM (the held body stands for what holds the prop up, so it sleeps until
-/// something strikes it; pieces that break loose fall under the engine's gravity) and the nodes of
-/// inAnchoredNodes fixed (its footings: TetFence::mGroundNodes). Refused with the first reason for a mesh or
-/// material FemProp::Create refuses or an anchored node out of range.
+/// ground): a CPU prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
+/// zero, as in HeldPropSolverSettings()) and the nodes of inAnchoredNodes fixed (its footings:
+/// TetFence::mGroundNodes). Refused with the first reason for a mesh, material or solver settings
+/// FemProp::Create refuses, a gravity that is not zero, or an anchored node out of range.
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
-                                            std::span<const int> inAnchoredNodes);
+                                            std::span<const int> inAnchoredNodes,
+                                            const fem::TetSolverSettings& inSolver = HeldPropSolverSettings());
 
 /// A held prop that AddHeldProp put in a PropWorld.
 struct CRUMPLE_API HeldProp
@@ -39,8 +45,10 @@ struct CRUMPLE_API HeldProp
 /// made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine body, so
 /// bad input (mesh, material, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
 /// adapter's only if AddProp still refuses it (an adapter of another world, or a write error).
+/// inSolver: the FEM's solver settings, as for MakeHeldFemProp.
 CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
                                          std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
-                                         const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody);
+                                         const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
+                                         const fem::TetSolverSettings& inSolver = HeldPropSolverSettings());
 
 } // namespace crumple::props
