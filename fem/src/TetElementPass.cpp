@@ -331,13 +331,10 @@ void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> i
 {
     const Matrix6& c = *inInput.mMaterialMatrix;
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
+    // intent: every element, skipped ones too: a group's mean stress, which fracture judges, weighs all its
+    // elements (once per step, for breakable materials only)
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
-        if (!inInput.IsActive(tet))
-        {
-            outStress[tet].setZero();
-            continue;
-        }
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         if (corotated)
         {

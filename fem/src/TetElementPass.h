@@ -32,9 +32,10 @@ struct TetElementPassInput
     /// serially; either way the results are bitwise the same (TetPassParallel)
     TetPassParallel* mParallel = nullptr;
 
-    /// #T flags, 1 for an element with a free corner, or empty when every element has one. The passes skip
-    /// the others (every corner anchored: a piece handed to the engine, fixed in place), which then add
-    /// nothing to any node, have no energy and keep their frames; their stress (TetCauchyStress) is zero.
+    /// #T flags, 1 for an element with a free corner, or empty when every element has one. The force,
+    /// stiffness, energy and plastic-flow passes skip the others (every corner anchored: a piece handed to the
+    /// engine, fixed in place), which then add nothing to any node, have no energy, do not flow and keep their
+    /// frames. TetCauchyStress evaluates every element (a group's mean stress weighs all of its elements).
     std::span<const std::uint8_t> mElementActive;
 
     /// True when the passes evaluate element inTet

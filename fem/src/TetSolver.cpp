@@ -280,7 +280,7 @@ int TetSolver::Fracture()
     // Rankine's criterion on every group's mean stress, then node duplication along the opened links.
     const TetElementPassInput input = PassInput();
     TetCauchyStress(input, mPositions, mRotations, mElementStress);
-    mElementWork += mActiveElementCount;
+    mElementWork += mRest.size(); // every element: see TetCauchyStress
     const Status judged = GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
     CRUMPLE_ASSERT(judged.IsValid(), "the solver's own groups were refused");
     if (!judged.IsValid())
@@ -631,11 +631,23 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     // step length), else block Jacobi rebuilt per Newton iteration.
     // intent: a refreshing solver factors at the frames of its last refresh, also after a crack (the frames
     // of a hit are closer to the next step's than the rest frames are)
-    const bool refreshing = material.mModel == EElasticModel::CorotatedLinear && mSettings.mFactorRefreshIterations > 0;
-    TetFactoredPreconditioner* factored =
-        FactoredRestSystem(input, mass_scale, stiffness_scale, refreshing ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
+    const bool refreshing = RefreshesFactor();
+    TetFactoredPreconditioner* factored = FactoredRestSystem(input, mass_scale, stiffness_scale);
     TetPreconditioner& jacobi = scratch.mJacobi;
-    const LinearOperator3 preconditioner = factored != nullptr ? factored->AsOperator() : jacobi.AsOperator();
+    // intent: chosen at each application, so that a factor lost in a failed refresh hands over to block
+    // Jacobi for the rest of the step (one captured pointer: std::function keeps it without allocating)
+    struct PreconditionerChoice
+    {
+        TetFactoredPreconditioner** mFactored;
+        const TetPreconditioner* mJacobi;
+    } choice{&factored, &jacobi};
+    const LinearOperator3 preconditioner = [ctx = &choice](std::span<const Vec3> inR, std::span<Vec3> outZ)
+    {
+        if (*ctx->mFactored != nullptr)
+            (*ctx->mFactored)->Apply(inR, outZ);
+        else
+            ctx->mJacobi->Apply(inR, outZ);
+    };
 
     // Energy scale of the step (J): kinetic energy at the start, relative to the free centre of mass when
     // nothing is anchored (a translation must not loosen the test), plus that of the load's impulse over the
@@ -741,7 +753,17 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                                                        first_budget, scratch.mDeltaV, scratch.mCg);
         if (!cg.mConverged && cg.mIterations == first_budget && first_budget < budget)
         {
-            RefreshFactor(*factored, input, mass_scale, stiffness_scale);
+            if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale))
+            {
+                // Round-off failed both factorisations: block Jacobi at this linearisation from here on.
+                factored = nullptr;
+                TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
+                mElementWork += mActiveElementCount;
+                for (std::size_t node = 0; node < node_count; ++node)
+                    scratch.mBlocks[node] =
+                        mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
+                jacobi.Build(system, scratch.mBlocks, mPositions, mFree);
+            }
             const ConjugateGradientResult rest =
                 ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
                                   budget - cg.mIterations, scratch.mDeltaV, scratch.mCg);
@@ -769,25 +791,35 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     mForcesCached = true;
 }
 
+bool TetSolver::RefreshesFactor() const
+{
+    return mMaterial.GetSettings().mModel == EElasticModel::CorotatedLinear && mSettings.mFactorRefreshIterations > 0 &&
+           mSettings.mPreconditioner == EImplicitPreconditioner::RestFactorization;
+}
+
 TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
-                                                         double inStiffnessScale, std::span<const Quat> inFrames)
+                                                         double inStiffnessScale)
 {
     if (mSettings.mPreconditioner != EImplicitPreconditioner::RestFactorization)
         return nullptr;
     TetFactoredPreconditioner& factor = mWorkspace.Get().mFactor;
     if (!factor.Matches(mElementNodes, mFree, inMassScale, inStiffnessScale))
     {
-        // intent: a breakable solver refactors after every crack; its elements' rest stiffness is kept
-        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable(), inFrames);
+        // intent: the implicit system of a refreshing solver is factored at the frames of its last refresh
+        // (solver state: Prepare, a copy and a replay factor alike), also after a crack; the static one
+        // (mass scale 0) at rest. A breakable solver refactors after every crack and a refreshing one at
+        // every refresh: both keep their elements' rest stiffness.
+        const bool framed = inMassScale > 0.0 && RefreshesFactor();
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable() || RefreshesFactor(),
+                          framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
         ++mFactorizationCount;
     }
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-void TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
+bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
                               double inStiffnessScale)
 {
-    ++mFactorRefreshCount;
     if (!mFactorFramesSaved)
     {
         mSavedFactorFrames = mFactorFrames;
@@ -795,13 +827,18 @@ void TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElem
     }
     mFactorFrames = mRotations;
     if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
-        return;
+    {
+        ++mFactorRefreshCount;
+        return true;
+    }
     // intent: a system that was positive definite at its old frames is so at any (congruent blocks plus the
     // masses); should round-off still fail it, the rest factor, which factored before, takes over
     mFactorFrames.clear();
-    ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable());
-    ioFactor.SetNodeRotations(mElementNodes, mRotations, true);
     ++mFactorizationCount;
+    if (!ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, true))
+        return false;
+    ioFactor.SetNodeRotations(mElementNodes, mRotations, true);
+    return true;
 }
 
 // The CPU side of TetStepper's policy: arrays in place, divergence as a non-finite state or an energy gain.

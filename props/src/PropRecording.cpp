@@ -11,6 +11,7 @@
 #endif
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace crumple::props
@@ -18,6 +19,11 @@ namespace crumple::props
 
 namespace
 {
+
+// Marks the settings written after the first recordings ("RFSH"), so that a record cut short or padded is
+// not read as an older one.
+constexpr std::uint32_t cRefreshSettingsTag = 0x48534652u;
+
 
 // Refuses a count that the remaining bytes cannot hold at inBytesEach bytes per item.
 bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& outCount)
@@ -199,7 +205,9 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
             writer.WriteU32(static_cast<std::uint32_t>(corner));
         writer.WriteU32(static_cast<std::uint32_t>(inSetup.mGroups.empty() ? static_cast<int>(tet) : inSetup.mGroups[tet]));
     }
-    // Settings added after the first recordings, at the end: a record without them is an older one.
+    // Settings added after the first recordings, at the end behind a tag: a record without them is an older
+    // one.
+    writer.WriteU32(cRefreshSettingsTag);
     writer.WriteU32(static_cast<std::uint32_t>(inSetup.mSettings.mFactorRefreshIterations));
     return writer.TakeBytes();
 }
@@ -240,8 +248,15 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     // intent: a record that ends here was written before mFactorRefreshIterations existed, when the factor
     // was never refreshed; 0 replays it as it ran
     setup.mSettings.mFactorRefreshIterations = 0;
-    if (!reader.Failed() && reader.Remaining() == 4)
-        setup.mSettings.mFactorRefreshIterations = static_cast<int>(reader.ReadU32());
+    if (!reader.Failed() && reader.Remaining() == 8)
+    {
+        if (reader.ReadU32() != cRefreshSettingsTag)
+            return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
+        const std::uint32_t refresh = reader.ReadU32();
+        if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
+            return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
+        setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
+    }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "prop record: wrong length");
     if (setup.mBackend != EFemBackend::Cpu && setup.mBackend != EFemBackend::Gpu)

@@ -403,12 +403,20 @@ TEST_CASE("Props in a recording: the factor refresh setting is recorded; a recor
         setup.mSettings.mFactorRefreshIterations = refresh;
         const std::vector<std::byte> bytes = EncodePropSetup(setup).Get();
         CHECK(DecodePropSetup(bytes).Get().mSettings.mFactorRefreshIterations == refresh);
-        // Older records end before the setting: the solver then never refreshed, and replays so.
-        const std::vector<std::byte> older(bytes.begin(), bytes.end() - 4);
+        // Older records end before the setting (and its tag): the solver then never refreshed, and replays so.
+        const std::vector<std::byte> older(bytes.begin(), bytes.end() - 8);
         CHECK(DecodePropSetup(older).Get().mSettings.mFactorRefreshIterations == 0);
-        // Anything else at the end is a corrupt record.
+        // Anything else at the end is a corrupt record: a byte more or less, another tag, a count beyond int.
         std::vector<std::byte> longer = bytes;
         longer.push_back(std::byte{0});
         CHECK(DecodePropSetup(longer).GetError().mCode == EError::CorruptData);
+        const std::vector<std::byte> shorter(bytes.begin(), bytes.end() - 4);
+        CHECK(DecodePropSetup(shorter).GetError().mCode == EError::CorruptData);
+        std::vector<std::byte> other_tag = bytes;
+        other_tag[other_tag.size() - 8] ^= std::byte{1};
+        CHECK(DecodePropSetup(other_tag).GetError().mCode == EError::CorruptData);
+        std::vector<std::byte> huge = bytes;
+        huge[huge.size() - 1] = std::byte{0xFF};
+        CHECK(DecodePropSetup(huge).GetError().mCode == EError::CorruptData);
     }
 }

@@ -372,6 +372,7 @@ int main(int argc, char** argv)
     if (error)
     {
         std::fprintf(stderr, "crumple-crash: cannot create %s: %s\n", out.string().c_str(), error.message().c_str());
+        RemoveMadeFolders(made_folders); // the parents it made before it failed
         return cExitBadInput;
     }
     // A run that fails (a mesh that assimp cannot read, a recording that cannot be written) leaves nothing,

@@ -179,10 +179,11 @@ public:
     std::uint64_t GetElementWorkCount() const { return mElementWork; }
     /// Factorisations of the rest system done so far (EImplicitPreconditioner::RestFactorization): one on the
     /// first implicit step or static solve, one more after each change of connectivity (fracture), anchors
-    /// or step length; a cost counter like GetElementWorkCount()
+    /// or step length (and after a step that refreshed the factor and was restored, or a refresh that
+    /// failed); a cost counter like GetElementWorkCount()
     int GetFactorizationCount() const { return mFactorizationCount; }
     /// Refreshes of the factor at the current element frames (TetSolverSettings::mFactorRefreshIterations):
-    /// numeric refactorisations within a solve whose frames had drifted; a cost counter like
+    /// successful numeric refactorisations within a solve whose frames had drifted; a cost counter like
     /// GetFactorizationCount()
     int GetFactorRefreshCount() const { return mFactorRefreshCount; }
 
@@ -233,12 +234,16 @@ private:
     // One implicit Euler step; fills the solver statistics of ioResult.
     void StepImplicit(double inDeltaTime, TetStepResult& ioResult);
     // The factored system inMassScale M + inStiffnessScale K for the current connectivity and anchors,
-    // factored again (K at the element frames inFrames, or the rest stiffness K0 when empty) when they or the
-    // scales changed; null when the settings ask for block Jacobi or the system cannot be factored.
+    // factored again when they or the scales changed (K at the frames of the last refresh, mFactorFrames, for
+    // a refreshing solver's implicit system; the rest stiffness K0 otherwise); null when the settings ask for
+    // block Jacobi or the system cannot be factored.
     TetFactoredPreconditioner* FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
-                                                  double inStiffnessScale, std::span<const Quat> inFrames = {});
-    // ioFactor refactored at the current element frames mRotations (the rest factor should that fail).
-    void RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
+                                                  double inStiffnessScale);
+    // True when the implicit solves refresh the factor (mFactorRefreshIterations > 0, corotated, factored).
+    bool RefreshesFactor() const;
+    // ioFactor refactored at the current element frames mRotations (the rest factor should that fail); false
+    // when both failed and ioFactor holds no factor.
+    bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
                        double inStiffnessScale);
     // Gravity plus external force on each free node, zero on anchored ones (N).
     void LoadForces(std::vector<Vec3>& outForces) const;

@@ -65,7 +65,9 @@ struct CRUMPLE_API TetStepResult
     int mSolverIterations = 0;    ///< Conjugate-gradient iterations, all solves together (implicit Euler)
     double mSolverResidual = 0.0; ///< Largest final relative CG residual |r| / |b| (implicit Euler)
     double mKineticEnergy = 0.0;  ///< Kinetic energy after the step (J)
-    double mEnergy = 0.0;         ///< Mechanical energy H after the step (J), see mDivergenceEnergyRatio
+    double mEnergy = 0.0;         ///< Mechanical energy H after the step (J), see mDivergenceEnergyRatio;
+                                  ///< leaves out the (constant) elastic energy of elements whose corners
+                                  ///< are all anchored, which TetSolver::ElasticEnergy() includes
     int mPlasticElements = 0;     ///< Plastic flow events: elements that flowed, summed over the sub-steps
     int mBrokenLinks = 0;         ///< Links broken during the step
 };

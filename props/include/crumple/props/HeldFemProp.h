@@ -25,8 +25,8 @@ CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
 /// The FEM of a prop whose engine body is held (PropBodySettings::mHeld, a fence or a barrier anchored to the
 /// ground): a CPU prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
 /// zero, as in HeldPropSolverSettings()) and the nodes of inAnchoredNodes fixed (its footings:
-/// TetFence::mGroundNodes). Refused with the first reason for a mesh, material or solver settings
-/// FemProp::Create refuses, a gravity that is not zero, or an anchored node out of range.
+/// TetFence::mGroundNodes). Refused, in this order: a gravity that is not zero; the first reason for a mesh,
+/// material or solver settings FemProp::Create refuses; an anchored node out of range.
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes,
                                             const fem::TetSolverSettings& inSolver = HeldPropSolverSettings());
@@ -43,7 +43,7 @@ struct CRUMPLE_API HeldProp
 /// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed), the
 /// engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The FEM is
 /// made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine body, so
-/// bad input (mesh, material, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
+/// bad input (mesh, material, solver settings, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
 /// adapter's only if AddProp still refuses it (an adapter of another world, or a write error).
 /// inSolver: the FEM's solver settings, as for MakeHeldFemProp.
 CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
