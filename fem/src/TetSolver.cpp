@@ -733,7 +733,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             break;
 
         // Block Jacobi at this linearisation: its diagonal blocks plus the rigid coarse space.
-        if (factored == nullptr)
+        const auto build_jacobi = [&]
         {
             TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
             mElementWork += mActiveElementCount;
@@ -741,7 +741,9 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                 scratch.mBlocks[node] =
                     mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
             jacobi.Build(system, scratch.mBlocks, mPositions, mFree);
-        }
+        };
+        if (factored == nullptr)
+            build_jacobi();
 
         // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes. A solve the factor's frames no
         // longer fit stops after mFactorRefreshIterations, refreshes the factor at this linearisation's
@@ -757,12 +759,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             {
                 // Round-off failed both factorisations: block Jacobi at this linearisation from here on.
                 factored = nullptr;
-                TetStiffnessDiagonal(input, mLinearization, scratch.mBlocks);
-                mElementWork += mActiveElementCount;
-                for (std::size_t node = 0; node < node_count; ++node)
-                    scratch.mBlocks[node] =
-                        mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
-                jacobi.Build(system, scratch.mBlocks, mPositions, mFree);
+                build_jacobi();
             }
             const ConjugateGradientResult rest =
                 ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,

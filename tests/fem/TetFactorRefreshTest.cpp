@@ -100,6 +100,34 @@ bool Push(TetSolver& ioRail, int inStep)
     return applied;
 }
 
+// The rail refreshing after 3 iterations, pushed for three steps: it has refreshed its factor.
+TetSolver RefreshedRail()
+{
+    TetSolverSettings settings;
+    settings.mFactorRefreshIterations = 3;
+    TetSolver rail = StruckRail(settings);
+    for (int step = 0; step < 3; ++step)
+    {
+        REQUIRE(Push(rail, step));
+        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
+    }
+    REQUIRE(rail.GetFactorRefreshCount() > 0);
+    return rail;
+}
+
+// Both solvers pushed and stepped alike for five more steps: true when they end bit for bit the same.
+bool ContinueAlike(TetSolver& ioA, TetSolver& ioB)
+{
+    for (int step = 3; step < 8; ++step)
+    {
+        REQUIRE(Push(ioA, step));
+        REQUIRE(Push(ioB, step));
+        REQUIRE(ioA.Step(1.0 / 240.0).IsValid());
+        REQUIRE(ioB.Step(1.0 / 240.0).IsValid());
+    }
+    return SameBits(ioA.GetPositions(), ioB.GetPositions()) && SameBits(ioA.GetVelocities(), ioB.GetVelocities());
+}
+
 double MaxDifference(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 {
     double largest = 0.0;
@@ -388,51 +416,19 @@ TEST_CASE("Factor refresh: a negative iteration count is refused", "[fem]")
 TEST_CASE("Factor refresh: a copy of a refreshing solver continues bit for bit", "[fem]")
 {
     // The frames of the last refresh are the solver's state: the copy factors at them, not at its own.
-    TetSolverSettings settings;
-    settings.mFactorRefreshIterations = 3;
-    TetSolver rail = StruckRail(settings);
-    for (int step = 0; step < 3; ++step)
-    {
-        REQUIRE(Push(rail, step));
-        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
-    }
-    REQUIRE(rail.GetFactorRefreshCount() > 0);
+    TetSolver rail = RefreshedRail();
     TetSolver copy = rail;
-    for (int step = 3; step < 8; ++step)
-    {
-        REQUIRE(Push(rail, step));
-        REQUIRE(Push(copy, step));
-        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
-        REQUIRE(copy.Step(1.0 / 240.0).IsValid());
-    }
-    CHECK(SameBits(copy.GetPositions(), rail.GetPositions()));
-    CHECK(SameBits(copy.GetVelocities(), rail.GetVelocities()));
+    CHECK(ContinueAlike(rail, copy));
 }
 
 TEST_CASE("Factor refresh: Prepare after a refresh factors at the refreshed frames, as a copy that never prepares does",
           "[fem]")
 {
-    TetSolverSettings settings;
-    settings.mFactorRefreshIterations = 3;
-    TetSolver rail = StruckRail(settings);
-    for (int step = 0; step < 3; ++step)
-    {
-        REQUIRE(Push(rail, step));
-        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
-    }
-    REQUIRE(rail.GetFactorRefreshCount() > 0);
+    TetSolver rail = RefreshedRail();
     TetSolver copy = rail;
     // New anchors on both make the factor stale: the rail prepares (as a game at a hand-over), the copy not.
     for (TetSolver* solver : {&rail, &copy})
         REQUIRE(solver->SetNodeFixed(TetGridNode({40, 2, 2}, 10, 1, 1), true).IsValid());
     REQUIRE(rail.Prepare(1.0 / 240.0).IsValid());
-    for (int step = 3; step < 8; ++step)
-    {
-        REQUIRE(Push(rail, step));
-        REQUIRE(Push(copy, step));
-        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
-        REQUIRE(copy.Step(1.0 / 240.0).IsValid());
-    }
-    CHECK(SameBits(copy.GetPositions(), rail.GetPositions()));
-    CHECK(SameBits(copy.GetVelocities(), rail.GetVelocities()));
+    CHECK(ContinueAlike(rail, copy));
 }
