@@ -21,12 +21,6 @@ namespace crumple::bench
 namespace
 {
 
-double Median(std::vector<double> inValues)
-{
-    std::nth_element(inValues.begin(), inValues.begin() + static_cast<std::ptrdiff_t>(inValues.size() / 2), inValues.end());
-    return inValues[inValues.size() / 2];
-}
-
 // Steps a bare scene and the same scene with Crumple attached alternately (same run, same machine state)
 // and reports the attached step's median time and its ratio to the bare one.
 template <class Scene>

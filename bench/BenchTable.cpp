@@ -77,16 +77,11 @@ LockstepFrames TimeLockstep(int inFrames, const std::function<bool(int inSide)>&
     return frames;
 }
 
-namespace
-{
-
 double Median(std::vector<double> inValues)
 {
     std::nth_element(inValues.begin(), inValues.begin() + static_cast<std::ptrdiff_t>(inValues.size() / 2), inValues.end());
     return inValues[inValues.size() / 2];
 }
-
-} // namespace
 
 std::vector<Timing> InterleavedMedians(int inRepetitions,
                                        const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides)

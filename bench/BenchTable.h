@@ -48,6 +48,9 @@ std::string FormatExtra(double inValue);
 /// The value below which inQuantile (in [0, 1]) of inValues lie, nearest rank; inValues not empty.
 double Quantile(std::vector<double> inValues, double inQuantile);
 
+/// The middle value of inValues (the upper one of an even count); inValues not empty.
+double Median(std::vector<double> inValues);
+
 /// Each frame's wall and thread CPU time (ms) of two sides stepped in lockstep: side 0 (bare) and side 1
 /// (attached).
 struct LockstepFrames

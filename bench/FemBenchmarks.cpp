@@ -41,13 +41,6 @@ struct BeamMesh
     int mSectionCells;
 };
 
-double Median(std::vector<double> inValues)
-{
-    std::nth_element(inValues.begin(), inValues.begin() + static_cast<std::ptrdiff_t>(inValues.size() / 2),
-                     inValues.end());
-    return inValues[inValues.size() / 2];
-}
-
 const char* IntegratorLabel(EIntegrator inIntegrator)
 {
     return inIntegrator == EIntegrator::SymplecticEuler ? "explicit" : "implicit";

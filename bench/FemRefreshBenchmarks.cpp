@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -68,12 +69,6 @@ void Push(const RailMesh& inMesh, TetSolver& ioRail)
         (void)ioRail.ApplyImpulse(TetGridNode(grid.mCellCount, inMesh.mLengthCells / 2, 0, k), Vec3(0.0, per_node, 0.0));
 }
 
-double Median(std::vector<double> inValues)
-{
-    std::nth_element(inValues.begin(), inValues.begin() + static_cast<std::ptrdiff_t>(inValues.size() / 2), inValues.end());
-    return inValues[inValues.size() / 2];
-}
-
 void RefreshCase(BenchTable& ioTable, const RailMesh& inMesh)
 {
     // Side 0 never refreshes, side 1 refreshes after 3 iterations; both stepped alternately, step by step.
@@ -126,12 +121,8 @@ void RefreshCase(BenchTable& ioTable, const RailMesh& inMesh)
         const TetSolver& rail = rails[static_cast<std::size_t>(side)];
         ioTable.Add({"fem_refresh", "pushed_rail/" + mesh + (side == 0 ? "/rest_factor" : "/refresh_after_3"),
                      Median(wall[side]), failed ? -1.0 : worst_error[side] / largest_displacement, "max_node_error_over_max_displacement",
-                     "cpu_ms=" + FormatExtra(Median(cpu[side])) + ";total_cpu_ms=" + FormatExtra([&] {
-                         double sum = 0.0;
-                         for (double value : cpu[side])
-                             sum += value;
-                         return sum;
-                     }()) + ";cg_iterations=" + std::to_string(iterations[side]) +
+                     "cpu_ms=" + FormatExtra(Median(cpu[side])) +
+                         ";total_cpu_ms=" + FormatExtra(std::accumulate(cpu[side].begin(), cpu[side].end(), 0.0)) + ";cg_iterations=" + std::to_string(iterations[side]) +
                          ";refreshes=" + std::to_string(rail.GetFactorRefreshCount()) +
                          ";factorizations=" + std::to_string(rail.GetFactorizationCount()) + ";steps=" + std::to_string(cSteps) +
                          ";max_displacement_m=" + FormatExtra(largest_displacement) + (failed ? ";error=step_failed" : "")});

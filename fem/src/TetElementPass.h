@@ -36,7 +36,7 @@ struct TetElementPassInput
     /// stiffness, energy and plastic-flow passes skip the others (every corner anchored: a piece handed to the
     /// engine, fixed in place), which then add nothing to any node, have no energy, do not flow and keep their
     /// frames. TetCauchyStress evaluates every element (a group's mean stress weighs all of its elements).
-    std::span<const std::uint8_t> mElementActive;
+    std::span<const std::uint8_t> mElementActive = {};
 
     /// True when the passes evaluate element inTet
     bool IsActive(std::size_t inTet) const { return mElementActive.empty() || mElementActive[inTet] != 0; }

@@ -168,18 +168,15 @@ TetElementPassInput TetSolver::PassInput() const
         // Elements with a free corner; the flags stay empty while that is every element (no test per
         // element in the passes then).
         mElementActive.assign(mElementNodes.size(), 0);
-        bool every = true;
+        mActiveElementCount = 0;
         for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
         {
             const TetIndices& nodes = mElementNodes[tet];
             mElementActive[tet] = mFree[nodes[0]] | mFree[nodes[1]] | mFree[nodes[2]] | mFree[nodes[3]];
-            every = every && mElementActive[tet] != 0;
+            mActiveElementCount += mElementActive[tet];
         }
-        if (every)
+        if (mActiveElementCount == mElementNodes.size())
             mElementActive.clear();
-        mActiveElementCount = 0;
-        for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
-            mActiveElementCount += mElementActive.empty() || mElementActive[tet] != 0 ? 1 : 0;
         mElementActiveValid = true;
     }
     input.mElementActive = mElementActive;
@@ -628,9 +625,8 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     };
 
     // The factored rest system when it applies (built on the first step, after fracture, anchoring or a new
-    // step length), else block Jacobi rebuilt per Newton iteration.
-    // intent: a refreshing solver factors at the frames of its last refresh, also after a crack (the frames
-    // of a hit are closer to the next step's than the rest frames are)
+    // step length; at the frames of its last refresh for a refreshing solver), else block Jacobi rebuilt per
+    // Newton iteration.
     const bool refreshing = RefreshesFactor();
     TetFactoredPreconditioner* factored = FactoredRestSystem(input, mass_scale, stiffness_scale);
     TetPreconditioner& jacobi = scratch.mJacobi;
