@@ -25,12 +25,6 @@ namespace crumple::bench
 namespace
 {
 
-double Median(std::vector<double> ioValues)
-{
-    std::sort(ioValues.begin(), ioValues.end());
-    return ioValues.empty() ? 0.0 : ioValues[ioValues.size() / 2];
-}
-
 // The drive alone and the drive through the fence, interleaved (A, B, A, B, ...), in one engine.
 template <class Scene>
 void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions& inOptions)
@@ -95,9 +89,8 @@ void RunFenceSpread(const char* inEngine, BenchTable& ioTable)
         int mRefresh;
     };
     const Variant variants[] = {{"cg_1e-6", 1.0e-6, 0}, {"cg_1e-7", 1.0e-7, 0}, {"cg_1e-8", 1.0e-8, 0}, {"refresh_3", 1.0e-6, 3}};
-    std::vector<double> losses;
+    std::vector<double> losses, wall_ms;
     std::string extra;
-    double wall_ms = 0.0;
     for (const Variant& variant : variants)
     {
         common::FenceDriveSettings settings;
@@ -110,13 +103,13 @@ void RunFenceSpread(const char* inEngine, BenchTable& ioTable)
             return;
         }
         losses.push_back(run.Get().mSpeedBefore - run.Get().mSpeedAfter);
-        wall_ms += run.Get().mWallMs;
+        wall_ms.push_back(run.Get().mWallMs);
         extra += std::string(extra.empty() ? "" : ";") + variant.mName + "_links=" + std::to_string(run.Get().mBrokenLinks) + ";" +
                  variant.mName + "_bodies=" + std::to_string(run.Get().mBodiesMade) + ";" + variant.mName +
                  "_loss_m_s=" + FormatExtra(losses.back());
     }
     const auto [low, high] = std::minmax_element(losses.begin(), losses.end());
-    ioTable.Add({"fence_spread", std::string(inEngine) + "/wood_fence/64kmh", wall_ms / static_cast<double>(losses.size()),
+    ioTable.Add({"fence_spread", std::string(inEngine) + "/wood_fence/64kmh", Median(wall_ms),
                  (*high - *low) / std::max(Median(losses), 1e-9), "rel_spread_of_car_loss", extra});
 }
 
