@@ -63,6 +63,19 @@ std::vector<NodeBlock> RandomSystem(int inNodes, std::uint32_t inPatternSeed, st
     return blocks;
 }
 
+// The symmetric matrix of inFreeCount block rows whose lower triangle inBlocks holds (repeats summed).
+Eigen::MatrixXd DenseSymmetric(const std::vector<NodeBlock>& inBlocks, int inFreeCount)
+{
+    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * inFreeCount, 3 * inFreeCount);
+    for (const NodeBlock& block : inBlocks)
+    {
+        system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
+        if (block.mRow != block.mColumn)
+            system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
+    }
+    return system;
+}
+
 bool SameBits(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 {
     return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
@@ -221,17 +234,13 @@ TEST_CASE("Rest system at element frames: the assembled blocks apply the corotat
     TetRestSystemBlocks(input, masses, free_index, a, b, blocks, nullptr, rotations);
     TetRestSystemBlocks(input, masses, free_index, a, b, rest_blocks);
     REQUIRE(blocks.size() == rest_blocks.size());
-    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * free_count, 3 * free_count);
     for (std::size_t index = 0; index < blocks.size(); ++index)
     {
-        const NodeBlock& block = blocks[index];
         // The pattern is the rest system's: a refresh reuses its analysis.
-        CHECK(block.mRow == rest_blocks[index].mRow);
-        CHECK(block.mColumn == rest_blocks[index].mColumn);
-        system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
-        if (block.mRow != block.mColumn)
-            system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
+        CHECK(blocks[index].mRow == rest_blocks[index].mRow);
+        CHECK(blocks[index].mColumn == rest_blocks[index].mColumn);
     }
+    const Eigen::MatrixXd system = DenseSymmetric(blocks, free_count);
     for (int trial = 0; trial < 5; ++trial)
     {
         std::vector<Vec3> direction(static_cast<std::size_t>(node_count), Vec3::Zero());
@@ -296,13 +305,7 @@ TEST_CASE("Factored preconditioner: a factor at frames F inverts the system at f
 
     std::vector<NodeBlock> blocks;
     TetRestSystemBlocks(input, masses, free_index, a, b, blocks, nullptr, turned);
-    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * free_count, 3 * free_count);
-    for (const NodeBlock& block : blocks)
-    {
-        system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
-        if (block.mRow != block.mColumn)
-            system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
-    }
+    const Eigen::MatrixXd system = DenseSymmetric(blocks, free_count);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::VectorXd x(3 * free_count);
     for (int entry = 0; entry < 3 * free_count; ++entry)
