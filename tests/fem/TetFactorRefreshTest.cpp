@@ -5,6 +5,7 @@
 // operator, the node rotations relative to the frames, and a struck slab's solves against a fully converged
 // one.
 #include "AllocationCounter.h"
+#include "AssembledSystemCheck.h"
 #include "NodeBlockCholesky.h"
 #include "TetElementPass.h"
 #include "TetFactoredPreconditioner.h"
@@ -61,19 +62,6 @@ std::vector<NodeBlock> RandomSystem(int inNodes, std::uint32_t inPatternSeed, st
     for (int node = 0; node < inNodes; ++node)
         blocks.push_back({node, node, (row_sums[static_cast<std::size_t>(node)] + 1.0) * Mat3::Identity()});
     return blocks;
-}
-
-// The symmetric matrix of inFreeCount block rows whose lower triangle inBlocks holds (repeats summed).
-Eigen::MatrixXd DenseSymmetric(const std::vector<NodeBlock>& inBlocks, int inFreeCount)
-{
-    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * inFreeCount, 3 * inFreeCount);
-    for (const NodeBlock& block : inBlocks)
-    {
-        system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
-        if (block.mRow != block.mColumn)
-            system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
-    }
-    return system;
 }
 
 bool SameBits(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
@@ -240,30 +228,12 @@ TEST_CASE("Rest system at element frames: the assembled blocks apply the corotat
         CHECK(blocks[index].mRow == rest_blocks[index].mRow);
         CHECK(blocks[index].mColumn == rest_blocks[index].mColumn);
     }
-    const Eigen::MatrixXd system = DenseSymmetric(blocks, free_count);
+    const Eigen::MatrixXd system = test::DenseSymmetric(blocks, free_count);
     for (int trial = 0; trial < 5; ++trial)
     {
-        std::vector<Vec3> direction(static_cast<std::size_t>(node_count), Vec3::Zero());
-        Eigen::VectorXd gathered(3 * free_count);
-        for (int node = 0; node < node_count; ++node)
-            if (const int index = free_index[static_cast<std::size_t>(node)]; index >= 0)
-            {
-                direction[static_cast<std::size_t>(node)] = Vec3(unit(random), unit(random), unit(random));
-                gathered.segment<3>(3 * index) = direction[static_cast<std::size_t>(node)];
-            }
-        std::vector<Vec3> product(static_cast<std::size_t>(node_count));
-        TetStiffnessProduct(input, linearization, direction, product);
-        const Eigen::VectorXd assembled = system * gathered;
-        double scale = 0.0, difference = 0.0;
-        for (int node = 0; node < node_count; ++node)
-            if (const int index = free_index[static_cast<std::size_t>(node)]; index >= 0)
-            {
-                const Vec3 matrix_free = a * masses[static_cast<std::size_t>(node)] * direction[static_cast<std::size_t>(node)] +
-                                         b * product[static_cast<std::size_t>(node)];
-                scale = std::max(scale, matrix_free.cwiseAbs().maxCoeff());
-                difference = std::max(difference, (matrix_free - Vec3(assembled.segment<3>(3 * index))).cwiseAbs().maxCoeff());
-            }
-        CHECK(difference <= 1.0e-12 * scale);
+        const test::OperatorDifference check =
+            test::AssembledAgainstMatrixFree(input, linearization, system, masses, free_index, a, b, random);
+        CHECK(check.mDifference <= 1.0e-12 * check.mScale);
     }
 }
 
@@ -305,7 +275,7 @@ TEST_CASE("Factored preconditioner: a factor at frames F inverts the system at f
 
     std::vector<NodeBlock> blocks;
     TetRestSystemBlocks(input, masses, free_index, a, b, blocks, nullptr, turned);
-    const Eigen::MatrixXd system = DenseSymmetric(blocks, free_count);
+    const Eigen::MatrixXd system = test::DenseSymmetric(blocks, free_count);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::VectorXd x(3 * free_count);
     for (int entry = 0; entry < 3 * free_count; ++entry)

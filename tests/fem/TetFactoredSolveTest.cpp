@@ -3,6 +3,7 @@
 // The implicit solve preconditioned by the factored rest system (EImplicitPreconditioner::RestFactorization)
 // against the matrix-free operator, block Jacobi, a fully converged solve and SolveStatic.
 #include "AllocationCounter.h"
+#include "AssembledSystemCheck.h"
 #include "CantileverScene.h"
 #include "TetElementPass.h"
 #include "NodeBlockCholesky.h"
@@ -128,43 +129,19 @@ TEST_CASE("Rest system: the assembled a M + b K0 blocks apply exactly the matrix
             free_index[node] = node % 5 == 0 ? -1 : free_count++;
         }
         const double a = 1.25, b = 3.0e-4;
-        Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * free_count, 3 * free_count);
         std::vector<NodeBlock> blocks;
         TetRestSystemBlocks(input, masses, free_index, a, b, blocks);
         for (const NodeBlock& block : blocks)
-        {
             REQUIRE(block.mRow >= block.mColumn);
-            system.block<3, 3>(3 * block.mRow, 3 * block.mColumn) += block.mBlock;
-            if (block.mRow != block.mColumn)
-                system.block<3, 3>(3 * block.mColumn, 3 * block.mRow) += block.mBlock.transpose();
-        }
+        const Eigen::MatrixXd system = test::DenseSymmetric(blocks, free_count);
         CHECK((system - system.transpose()).cwiseAbs().maxCoeff() <= 1.0e-15 * system.cwiseAbs().maxCoeff());
 
         // Random directions on the free nodes, zero on anchored ones.
         for (int trial = 0; trial < 5; ++trial)
         {
-            std::vector<Vec3> direction(node_count, Vec3::Zero());
-            Eigen::VectorXd gathered(3 * free_count);
-            for (int node = 0; node < node_count; ++node)
-                if (free_index[node] >= 0)
-                {
-                    direction[node] = Vec3(unit(random), unit(random), unit(random));
-                    gathered.segment<3>(3 * free_index[node]) = direction[node];
-                }
-            std::vector<Vec3> product(node_count);
-            TetStiffnessProduct(input, linearization, direction, product);
-            const Eigen::VectorXd assembled = system * gathered;
-            double scale = 0.0, difference = 0.0;
-            for (int node = 0; node < node_count; ++node)
-                if (free_index[node] >= 0)
-                {
-                    const Vec3 matrix_free = a * masses[node] * direction[node] + b * product[node];
-                    scale = std::max(scale, matrix_free.cwiseAbs().maxCoeff());
-                    difference = std::max(
-                        difference,
-                        (matrix_free - Vec3(assembled.segment<3>(3 * free_index[node]))).cwiseAbs().maxCoeff());
-                }
-            CHECK(difference <= 1.0e-12 * scale);
+            const test::OperatorDifference check =
+                test::AssembledAgainstMatrixFree(input, linearization, system, masses, free_index, a, b, random);
+            CHECK(check.mDifference <= 1.0e-12 * check.mScale);
         }
     }
 }
