@@ -24,6 +24,51 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                                                          std::span<const TetIndices> inElementNodes,
                                                          std::span<const Vec3> inPositions)
 {
+    return CollisionNodalImpulses(inCollision, inPropBody, inElementNodes, inPositions, ContactSpread{});
+}
+
+namespace
+{
+
+// Shares of a contact at inPoint over the free nodes within inSpread.mRadius: mass x (1 - d^2/r^2)^2,
+// normalised; empty when no free node is that close.
+std::vector<std::pair<int, double>> FootprintShares(const Vec3& inPoint, std::span<const Vec3> inPositions,
+                                                    const ContactSpread& inSpread)
+{
+    std::vector<std::pair<int, double>> shares;
+    const double inverse_square = 1.0 / (inSpread.mRadius * inSpread.mRadius);
+    double total = 0.0;
+    for (std::size_t node = 0; node < inPositions.size(); ++node)
+    {
+        const double reach = (inPositions[node] - inPoint).squaredNorm() * inverse_square;
+        if (reach >= 1.0 || !(inSpread.mInverseMasses[node] > 0.0))
+            continue;
+        const double falloff = 1.0 - reach;
+        const double weight = inSpread.mMasses[node] * falloff * falloff;
+        shares.emplace_back(static_cast<int>(node), weight);
+        total += weight;
+    }
+    if (!(total > 0.0))
+        return {};
+    for (auto& share : shares)
+        share.second /= total;
+    return shares;
+}
+
+} // namespace
+
+Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
+                                                         plugin::BodyId inPropBody,
+                                                         std::span<const TetIndices> inElementNodes,
+                                                         std::span<const Vec3> inPositions,
+                                                         const ContactSpread& inSpread)
+{
+    if (!std::isfinite(inSpread.mRadius) || inSpread.mRadius < 0.0)
+        return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the contact spread radius must be finite and >= 0 m, not " +
+                                                      std::to_string(inSpread.mRadius));
+    const bool spreads = inSpread.mRadius > 0.0;
+    if (spreads && (inSpread.mMasses.size() != inPositions.size() || inSpread.mInverseMasses.size() != inPositions.size()))
+        return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: a contact spread needs one mass and one inverse mass per node");
     const bool is_a = inCollision.mBodyA == inPropBody;
     if (!is_a && inCollision.mBodyB != inPropBody)
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: body " +
@@ -44,7 +89,7 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
     const BarycentricSearch& search = made.Get();
 
     std::vector<NodalImpulse> impulses;
-    impulses.reserve(4 * inCollision.mContacts.size());
+    impulses.reserve(4 * inCollision.mContacts.size()); // more when spread
     for (std::size_t index = 0; index < inCollision.mContacts.size(); ++index)
     {
         // The contact in the prop's body frame: +j n on A, -j n on B.
@@ -55,6 +100,15 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
         if (!IsFinite(point) || !IsFinite(impulse))
             return MakeError(EError::NonFinite,
                              "CollisionNodalImpulses: contact " + std::to_string(index) + " is not finite");
+
+        if (spreads)
+        {
+            const std::vector<std::pair<int, double>> shares = FootprintShares(point, inPositions, inSpread);
+            for (const auto& [node, share] : shares)
+                impulses.push_back({node, share * impulse});
+            if (!shares.empty())
+                continue;
+        }
 
         // The element whose smallest barycentric weight is largest: the containing one if any.
         const BarycentricHit hit = search.FindBest(point);

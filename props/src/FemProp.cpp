@@ -6,7 +6,9 @@
 #include <crumple/props/CollisionImpulses.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <string>
 
 #if defined(CRUMPLE_PROPS_WITH_GPU)
 #include <crumple/gpu/ComputeDevice.h>
@@ -156,6 +158,15 @@ Status FemProp::Prepare(double inDeltaTime)
     return CheckTimeStep(inDeltaTime, "FemProp::Prepare");
 }
 
+Status FemProp::SetContactSpread(double inRadius)
+{
+    if (!std::isfinite(inRadius) || inRadius < 0.0)
+        return MakeError(EError::InvalidArgument,
+                         "FemProp::SetContactSpread: the radius must be finite and >= 0 m, not " + std::to_string(inRadius));
+    mContactSpread = inRadius;
+    return Status::Ok();
+}
+
 Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
                                std::vector<NodalImpulse>* outApplied)
 {
@@ -164,12 +175,6 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     if (!mCpu)
         ReadPositions(read_back);
     const std::span<const Vec3> positions = mCpu ? std::span<const Vec3>(mCpu->GetPositions()) : std::span<const Vec3>(read_back);
-    Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions);
-    if (impulses.HasError())
-        return impulses.GetError();
-    // intent: all or nothing: every struck node's velocity checked before any impulse lands (the GPU's floats)
-    std::vector<Vec3> velocities;
-    ReadVelocities(velocities);
 #if defined(CRUMPLE_PROPS_WITH_GPU)
     const std::vector<double>& inverse_masses = mGpu ? mGpu->GetInverseMasses() : mCpu->GetInverseMasses();
     const double limit = mGpu ? static_cast<double>(std::numeric_limits<float>::max()) : fem::TetSolver::cMaxStateMagnitude;
@@ -177,6 +182,13 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     const std::vector<double>& inverse_masses = mCpu->GetInverseMasses();
     const double limit = fem::TetSolver::cMaxStateMagnitude;
 #endif
+    const ContactSpread spread{.mRadius = mContactSpread, .mMasses = GetMasses(), .mInverseMasses = inverse_masses};
+    Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions, spread);
+    if (impulses.HasError())
+        return impulses.GetError();
+    // intent: all or nothing: every struck node's velocity checked before any impulse lands (the GPU's floats)
+    std::vector<Vec3> velocities;
+    ReadVelocities(velocities);
     if (Status fits = CheckNodalImpulses(impulses.Get(), velocities, inverse_masses, limit); fits.HasError())
         return fits;
     // Node indices come from the solver's own connectivity and every velocity stays in range: none can be

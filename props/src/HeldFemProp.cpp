@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/props/HeldFemProp.h>
 
+#include <cmath>
 #include <string>
 
 namespace crumple::props
@@ -15,16 +16,21 @@ fem::TetSolverSettings HeldPropSolverSettings()
 }
 
 Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
-                                std::span<const int> inAnchoredNodes, const fem::TetSolverSettings& inSolver)
+                                std::span<const int> inAnchoredNodes, const fem::TetSolverSettings& inSolver,
+                                double inContactSpread)
 {
     // intent: refused, not overridden: a game that set a gravity meant something the held body cannot do
     if (!(inSolver.mGravity.array() == 0.0).all())
         return MakeError(EError::InvalidArgument,
                          "MakeHeldFemProp: a held prop's FEM has no gravity (its held body stands for what holds it "
                          "up; loose pieces fall in the engine); start from HeldPropSolverSettings()");
+    if (!std::isfinite(inContactSpread) || inContactSpread < 0.0)
+        return MakeError(EError::InvalidArgument, "MakeHeldFemProp: the contact spread radius must be finite and >= 0 m, not " +
+                                                      std::to_string(inContactSpread));
     Result<FemProp> prop = FemProp::Create(nullptr, inBodyMesh, inMaterial, inSolver, FemPropSettings{});
     if (!prop)
         return prop;
+    (void)prop.Get().SetContactSpread(inContactSpread); // checked above
     for (int node : inAnchoredNodes)
         if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
             return MakeError(fixed.GetError().mCode, "MakeHeldFemProp: anchored node " + std::to_string(node) + ": " +
@@ -35,14 +41,14 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
 Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
                              std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
                              const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
-                             const fem::TetSolverSettings& inSolver)
+                             const fem::TetSolverSettings& inSolver, double inContactSpread)
 {
     if (!inMakeBody)
         return MakeError(EError::InvalidArgument, "AddHeldProp: no function to make the engine body");
     Result<PropBody> made = MakePropBody(inMesh, inMaterial.mDensity, inPose, true, inShapeCellSize);
     if (!made)
         return made.GetError();
-    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver);
+    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver, inContactSpread);
     if (!prop)
         return prop.GetError();
     // intent: what AddProp would refuse of the prop itself (a failed or closed recorder) is refused before the

@@ -23,6 +23,9 @@ namespace
 // Marks the settings written after the first recordings ("RFSH"), so that a record cut short or padded is
 // not read as an older one.
 constexpr std::uint32_t cRefreshSettingsTag = 0x48534652u;
+// Marks a contact spread radius (FemProp::SetContactSpread, "SPRD"), written after the refresh settings only
+// when it is not 0, so that a prop that does not spread records the same bytes as before it existed.
+constexpr std::uint32_t cContactSpreadTag = 0x44525053u;
 
 
 // Refuses a count that the remaining bytes cannot hold at inBytesEach bytes per item.
@@ -126,7 +129,12 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, co
 Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
 {
     if (const fem::TetSolver* cpu = inProp.GetCpuSolver(); cpu != nullptr)
-        return MakePropSetup(inBody, EFemBackend::Cpu, *cpu);
+    {
+        Result<PropSetup> setup = MakePropSetup(inBody, EFemBackend::Cpu, *cpu);
+        if (setup.IsValid())
+            setup.Get().mContactSpread = inProp.GetContactSpread();
+        return setup;
+    }
 #if defined(CRUMPLE_PROPS_WITH_GPU)
     const gpu::GpuTetSolver& solver = *inProp.GetGpuSolver();
     if (solver.GetElementWorkCount() != 0)
@@ -157,6 +165,7 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
     setup.mAnchored.resize(setup.mPositions.size());
     for (std::size_t node = 0; node < setup.mAnchored.size(); ++node)
         setup.mAnchored[node] = solver.GetInverseMasses()[node] == 0.0 ? 1 : 0;
+    setup.mContactSpread = inProp.GetContactSpread();
     return setup;
 #else
     return MakeError(EError::InvalidArgument, "MakePropSetup: the prop has no solver");
@@ -181,6 +190,8 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
 {
     if (Status valid = ValidatePropSetupSizes(inSetup); valid.HasError())
         return valid.GetError();
+    if (!std::isfinite(inSetup.mContactSpread) || inSetup.mContactSpread < 0.0)
+        return MakeError(EError::InvalidArgument, "PropSetup: the contact spread radius must be finite and >= 0 m");
     ByteWriter writer;
     writer.WriteU32(inSetup.mBody.mValue);
     writer.WriteU32(inSetup.mBody.mGeneration);
@@ -209,6 +220,11 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
     // one.
     writer.WriteU32(cRefreshSettingsTag);
     writer.WriteU32(static_cast<std::uint32_t>(inSetup.mSettings.mFactorRefreshIterations));
+    if (inSetup.mContactSpread != 0.0)
+    {
+        writer.WriteU32(cContactSpreadTag);
+        writer.WriteDouble(inSetup.mContactSpread);
+    }
     return writer.TakeBytes();
 }
 
@@ -248,7 +264,7 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     // intent: a record that ends here was written before mFactorRefreshIterations existed, when the factor
     // was never refreshed; 0 replays it as it ran
     setup.mSettings.mFactorRefreshIterations = 0;
-    if (!reader.Failed() && reader.Remaining() == 8)
+    if (!reader.Failed() && (reader.Remaining() == 8 || reader.Remaining() == 8 + 12))
     {
         if (reader.ReadU32() != cRefreshSettingsTag)
             return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
@@ -256,6 +272,14 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
             return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
         setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
+        if (reader.Remaining() == 12)
+        {
+            if (reader.ReadU32() != cContactSpreadTag)
+                return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
+            setup.mContactSpread = reader.ReadDouble();
+            if (!std::isfinite(setup.mContactSpread) || setup.mContactSpread <= 0.0)
+                return MakeError(EError::CorruptData, "prop record: contact spread radius out of range");
+        }
     }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "prop record: wrong length");
@@ -332,8 +356,10 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                 return MakeError(solver.GetError().mCode, where + solver.GetError().mMessage);
             FemPropSettings backend;
             backend.mBackend = setup.Get().mBackend;
-            props.push_back({setup.Get().mBody, setup.Get().mBackend,
-                             FemProp::FromSolver(ioProvider, std::move(solver.Get()), backend)});
+            FemProp prop = FemProp::FromSolver(ioProvider, std::move(solver.Get()), backend);
+            if (Status spread = prop.SetContactSpread(setup.Get().mContactSpread); spread.HasError())
+                return MakeError(EError::CorruptData, where + spread.GetError().mMessage);
+            props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop)});
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step))
         {

@@ -32,6 +32,7 @@ struct FenceDriveSettings
     bool mFence = true;            ///< false: no fence (the drive alone, the baseline of a cost)
     double mDuration = 0.6;        ///< Simulated time (s)
     fem::TetSolverSettings mSolver = props::HeldPropSolverSettings(); ///< The fence FEM's solver
+    double mContactSpread = 0.0;   ///< The fence FEM's contact spread radius (m; FemProp::SetContactSpread)
 };
 
 /// What a drive through the fence did, and what it cost.
@@ -129,7 +130,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             wood.Get().mMaterial.mTensileStrength = std::numeric_limits<double>::infinity();
         Result<props::HeldProp> added = props::AddHeldProp(
             props, fence.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes, DriveThroughFencePose(), cShapeSize,
-            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); }, inSettings.mSolver);
+            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); }, inSettings.mSolver,
+            inSettings.mContactSpread);
         if (!added)
             return added.GetError();
         fence_body = added.Get().mBody;

@@ -4,6 +4,7 @@
 # and run on llvmpipe where no GPU exists).
 crumple_add_test(props
     props/CollisionImpulsesTest.cpp
+    props/ContactSpreadTest.cpp
     props/FemPropTest.cpp
     props/FragmentBodyTest.cpp
     props/HeldPropBodiesTest.cpp

@@ -86,8 +86,14 @@ public:
     Status CheckStep(double inDeltaTime) const;
     /// fem::TetSolver::Prepare on the CPU (the GPU solver has nothing to prepare: it only checks the step)
     Status Prepare(double inDeltaTime);
-    /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses) to the prop whose body is
-    /// inPropBody; all or nothing. outApplied (may be null) receives the nodal impulses applied (appended).
+    /// How far each contact's impulse spreads over the prop's nodes (ContactSpread::mRadius, m, finite, >= 0;
+    /// 0, the default: the containing element's four nodes). Set it before the prop joins a PropWorld: the
+    /// recording holds the radius it had then. Refused, changing nothing, for a bad radius.
+    Status SetContactSpread(double inRadius);
+    double GetContactSpread() const { return mContactSpread; }
+    /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses, spread by GetContactSpread())
+    /// to the prop whose body is inPropBody; all or nothing. outApplied (may be null) receives the nodal
+    /// impulses applied (appended).
     Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
                           std::vector<NodalImpulse>* outApplied = nullptr);
     /// The pieces now (fem::TetFragment), as the CPU solver reports them
@@ -127,6 +133,7 @@ private:
     std::optional<fem::TetSolver> mCpu;
     std::unique_ptr<gpu::GpuTetSolver, GpuSolverDeleter> mGpu; // incomplete here: a CPU-only build never defines it
     std::string mFallbackReason;
+    double mContactSpread = 0.0; // m, SetContactSpread
 };
 
 } // namespace crumple::props

@@ -25,11 +25,14 @@ CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
 /// The FEM of a prop whose engine body is held (PropBodySettings::mHeld, a fence or a barrier anchored to the
 /// ground): a CPU prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
 /// zero, as in HeldPropSolverSettings()) and the nodes of inAnchoredNodes fixed (its footings:
-/// TetFence::mGroundNodes). Refused, in this order: a gravity that is not zero; the first reason for a mesh,
-/// material or solver settings FemProp::Create refuses; an anchored node out of range.
+/// TetFence::mGroundNodes), spreading each contact's impulse over inContactSpread (FemProp::SetContactSpread,
+/// m; 0: the containing element's nodes). Refused, in this order: a gravity that is not zero; a spread radius
+/// that is not finite and >= 0; the first reason for a mesh, material or solver settings FemProp::Create
+/// refuses; an anchored node out of range.
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes,
-                                            const fem::TetSolverSettings& inSolver = HeldPropSolverSettings());
+                                            const fem::TetSolverSettings& inSolver = HeldPropSolverSettings(),
+                                            double inContactSpread = 0.0);
 
 /// A held prop that AddHeldProp put in a PropWorld.
 struct CRUMPLE_API HeldProp
@@ -45,10 +48,11 @@ struct CRUMPLE_API HeldProp
 /// made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine body, so
 /// bad input (mesh, material, solver settings, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
 /// adapter's only if AddProp still refuses it (an adapter of another world, or a write error).
-/// inSolver: the FEM's solver settings, as for MakeHeldFemProp.
+/// inSolver and inContactSpread: the FEM's solver settings and contact spread radius, as for MakeHeldFemProp.
 CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
                                          std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
                                          const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
-                                         const fem::TetSolverSettings& inSolver = HeldPropSolverSettings());
+                                         const fem::TetSolverSettings& inSolver = HeldPropSolverSettings(),
+                                         double inContactSpread = 0.0);
 
 } // namespace crumple::props

@@ -47,6 +47,7 @@ struct CRUMPLE_API PropSetup
     std::vector<Vec3> mVelocities;         ///< #N (m/s)
     std::vector<std::uint8_t> mAnchored;   ///< #N, 1 where the node is fixed
     std::vector<Vec3> mExternalForces;     ///< #N (N)
+    double mContactSpread = 0.0;           ///< FemProp::GetContactSpread (m; written only when not 0)
 };
 
 /// The setup of a CPU solver bound to inBody; refused once the solver has stepped or solved statics.
@@ -59,7 +60,8 @@ CRUMPLE_API Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp
 /// Refused when the per-node arrays (positions, velocities, anchors, external forces) differ in size, or the
 /// groups are neither empty nor one per element. Changes nothing.
 CRUMPLE_API Status ValidatePropSetupSizes(const PropSetup& inSetup);
-/// Bytes of a PropSetup (little-endian) and back; encoding refuses what ValidatePropSetupSizes refuses,
+/// Bytes of a PropSetup (little-endian) and back; encoding refuses what ValidatePropSetupSizes refuses and a
+/// contact spread radius that is not finite and >= 0,
 /// decoding checks sizes and finite values, and the mesh, material and settings are validated again when the
 /// solver is rebuilt (RebuildProp).
 CRUMPLE_API Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup);
