@@ -77,7 +77,8 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
 // How much the fence's outcome depends on solver settings that should not matter: the same 64 km/h hit with
 // the conjugate-gradient tolerance at 1e-6 (the default), 1e-7 and 1e-8, and with the factor refreshed after 3
 // iterations. A converged answer would not move; today the links broken move by a factor of 4 (README, known
-// limits: the contact coupling puts km/s velocities on a few light nodes). Error: the spread of the car's
+// limits: the contact coupling puts km/s velocities on a few light nodes); the same with the impulses spread
+// over 0.1 m footprints (FemProp::SetContactSpread). Error: the spread of the car's
 // loss of speed, (max - min) / median, over the settings. inContactSpread: the fence FEM's contact spread
 // radius (FemProp::SetContactSpread, m; 0: each contact's impulse on its element's four nodes).
 template <class Scene>
