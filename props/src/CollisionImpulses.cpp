@@ -69,6 +69,13 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
     const bool spreads = inSpread.mRadius > 0.0;
     if (spreads && (inSpread.mMasses.size() != inPositions.size() || inSpread.mInverseMasses.size() != inPositions.size()))
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: a contact spread needs one mass and one inverse mass per node");
+    // intent: a NaN mass would silently drop a contact back to its element, a negative one give negative shares
+    for (std::size_t node = 0; spreads && node < inPositions.size(); ++node)
+        if (!(std::isfinite(inSpread.mMasses[node]) && inSpread.mMasses[node] > 0.0) ||
+            !(std::isfinite(inSpread.mInverseMasses[node]) && inSpread.mInverseMasses[node] >= 0.0))
+            return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: node " + std::to_string(node) +
+                                                          " has a mass or inverse mass a contact spread cannot weigh by "
+                                                          "(masses finite and > 0, inverse masses finite and >= 0)");
     const bool is_a = inCollision.mBodyA == inPropBody;
     if (!is_a && inCollision.mBodyB != inPropBody)
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: body " +

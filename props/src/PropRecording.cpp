@@ -272,6 +272,8 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
             return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
         setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
+        // A record cut by exactly the 12 bytes of a spread reads as one without; the replay file's CRC per
+        // record is what catches such a cut.
         if (reader.Remaining() == 12)
         {
             if (reader.ReadU32() != cContactSpreadTag)

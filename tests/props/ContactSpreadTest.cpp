@@ -8,6 +8,9 @@
 #include <crumple/fem/TetSolver.h>
 #include <crumple/props/CollisionImpulses.h>
 #include <crumple/props/FemProp.h>
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#endif
 
 #include <catch2/catch.hpp>
 
@@ -148,6 +151,27 @@ TEST_CASE("A contact spread of 0, or with no free node in reach, is the containi
     }
 }
 
+TEST_CASE("A contact whose footprint holds only fixed nodes falls back to its element", "[props]")
+{
+    TetSolver panel = Panel();
+    const Vec3 point(0.0, 0.13, -0.07);
+    const double radius = 0.25;
+    for (std::size_t node = 0; node < panel.GetPositions().size(); ++node)
+        if ((panel.GetPositions()[node] - point).norm() < radius)
+            REQUIRE(panel.SetNodeFixed(static_cast<int>(node), true));
+    const Collision collision = OneContact(point);
+    const std::vector<NodalImpulse> element =
+        CollisionNodalImpulses(collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions()).Get();
+    const std::vector<NodalImpulse> spread =
+        CollisionNodalImpulses(collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions(), SpreadOf(panel, radius)).Get();
+    REQUIRE(spread.size() == element.size());
+    for (std::size_t index = 0; index < spread.size(); ++index)
+    {
+        CHECK(spread[index].mNode == element[index].mNode);
+        CHECK(spread[index].mImpulse == element[index].mImpulse);
+    }
+}
+
 TEST_CASE("A bad contact spread is refused and changes nothing", "[props]")
 {
     const TetSolver panel = Panel();
@@ -165,12 +189,32 @@ TEST_CASE("A bad contact spread is refused and changes nothing", "[props]")
         collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions(),
         ContactSpread{.mRadius = 0.2, .mMasses = short_masses, .mInverseMasses = panel.GetInverseMasses()});
     CHECK(no_masses.HasError());
+    const std::vector<double> short_inverse(3, 1.0);
+    CHECK(CollisionNodalImpulses(collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions(),
+                                 ContactSpread{.mRadius = 0.2, .mMasses = panel.GetMasses(), .mInverseMasses = short_inverse})
+              .HasError());
+    // A mass a spread cannot weigh by, even far from the contact: refused, not a silent fallback or a negative share.
+    for (double bad : {std::numeric_limits<double>::quiet_NaN(), -1.0, 0.0})
+    {
+        std::vector<double> masses = panel.GetMasses();
+        masses.back() = bad;
+        const Result<std::vector<NodalImpulse>> refused =
+            CollisionNodalImpulses(collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions(),
+                                   ContactSpread{.mRadius = 0.2, .mMasses = masses, .mInverseMasses = panel.GetInverseMasses()});
+        REQUIRE(refused.HasError());
+        CHECK(refused.GetError().mMessage.find("node " + std::to_string(masses.size() - 1)) != std::string::npos);
+    }
+    std::vector<double> inverse = panel.GetInverseMasses();
+    inverse.front() = -1.0;
+    CHECK(CollisionNodalImpulses(collision, BodyId{3}, panel.GetElementNodes(), panel.GetPositions(),
+                                 ContactSpread{.mRadius = 0.2, .mMasses = panel.GetMasses(), .mInverseMasses = inverse})
+              .HasError());
 
     Result<FemProp> prop = FemProp::Create(nullptr, PanelMesh(), FemMaterialSettings{}, TetSolverSettings{}, FemPropSettings{});
     REQUIRE(prop.IsValid());
     CHECK(prop.Get().GetContactSpread() == 0.0);
     REQUIRE(prop.Get().SetContactSpread(0.3).IsValid());
-    for (double radius : {-1.0, std::numeric_limits<double>::quiet_NaN()})
+    for (double radius : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     {
         CHECK(prop.Get().SetContactSpread(radius).HasError());
         CHECK(prop.Get().GetContactSpread() == 0.3);
@@ -201,5 +245,45 @@ TEST_CASE("A prop with a contact spread applies a collision over its footprint",
     {
         CHECK(applied[index].mNode == expected[index].mNode);
         CHECK(applied[index].mImpulse == expected[index].mImpulse);
+    }
+}
+
+TEST_CASE("A contact spread lands alike on either backend", "[props][gpu]")
+{
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+    gpu::ComputeDeviceProvider provider;
+    gpu::ComputeDeviceProvider* devices = &provider;
+#else
+    gpu::ComputeDeviceProvider* devices = nullptr;
+#endif
+    TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    settings.mIntegrator = EIntegrator::SymplecticEuler; // what the GPU solver runs
+    const Collision collision = OneContact(Vec3(0.0, 0.13, -0.07));
+    std::vector<std::vector<NodalImpulse>> applied;
+    for (EFemBackend backend : {EFemBackend::Cpu, EFemBackend::Gpu})
+    {
+        FemPropSettings prop_settings;
+        prop_settings.mBackend = backend;
+        Result<FemProp> prop = FemProp::Create(devices, PanelMesh(), FemMaterialSettings{}, settings, prop_settings);
+        REQUIRE(prop.IsValid());
+        if (prop.Get().GetBackend() != backend)
+        {
+            WARN("GPU case skipped: " << prop.Get().GetFallbackReason());
+            break;
+        }
+        REQUIRE(prop.Get().SetContactSpread(0.45).IsValid());
+        applied.emplace_back();
+        REQUIRE(prop.Get().ApplyCollision(collision, BodyId{3}, &applied.back()).IsValid());
+        CHECK(applied.back().size() > 8u); // a footprint, not an element
+    }
+    if (applied.size() < 2)
+        return;
+    // The GPU prop's positions are floats: the same nodes, shares equal to float precision.
+    REQUIRE(applied[1].size() == applied[0].size());
+    for (std::size_t index = 0; index < applied[0].size(); ++index)
+    {
+        CHECK(applied[1][index].mNode == applied[0][index].mNode);
+        CHECK((applied[1][index].mImpulse - applied[0][index].mImpulse).norm() <= 1e-5 * 400.0);
     }
 }

@@ -224,6 +224,20 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
     CHECK(pulled.GetError().mMessage.find("no gravity") != std::string::npos);
     own.mFactorRefreshIterations = -1;
     CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).HasError());
+
+    // The contact spread is the prop's; a bad one is refused, after a gravity and before the solver's reasons.
+    CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, props::HeldPropSolverSettings(), 0.3)
+              .Get()
+              .GetContactSpread() == 0.3);
+    for (double radius : {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+        const Result<props::FemProp> spread = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own, radius);
+        REQUIRE(spread.HasError());
+        CHECK(spread.GetError().mMessage.find("contact spread") != std::string::npos);
+        const Result<props::FemProp> pulled_too =
+            props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, fem::TetSolverSettings{}, radius);
+        CHECK(pulled_too.GetError().mMessage.find("no gravity") != std::string::npos);
+    }
 }
 
 TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")
@@ -244,6 +258,9 @@ TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in t
               .GetError().mCode == EError::OutOfRange);
     CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.0, make_body).IsValid() == false);
     CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, nullptr).IsValid() == false);
+    CHECK(props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body,
+                             props::HeldPropSolverSettings(), -1.0)
+              .IsValid() == false);
     CHECK(asked.empty());
     CHECK(world->GetPropCount() == 0);
     // A recorder that can take no more records (closed): refused before the engine body is made.
@@ -258,7 +275,10 @@ TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in t
         REQUIRE(world->AttachRecorder(nullptr).IsValid());
     }
 
-    const props::HeldProp held = props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body).Get();
+    const props::HeldProp held = props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, Transform(), 0.25, make_body,
+                                                    props::HeldPropSolverSettings(), 0.2)
+                                     .Get();
+    CHECK(world->GetProp(held.mProp)->GetContactSpread() == 0.2);
     REQUIRE(asked.size() == 1u);
     CHECK(asked[0].mHeld);
     CHECK(asked[0].mMass == held.mMade.mBody.mMass);

@@ -433,10 +433,18 @@ TEST_CASE("Props in a recording: a contact spread is recorded and replays bit fo
     FemProp panel = BrittlePanel();
     REQUIRE(panel.SetContactSpread(0.35).IsValid());
     const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
-    HitTwice(fixture, *props);
+    REQUIRE(HitTwice(fixture, *props) > 0); // it cracked
     REQUIRE(props->AttachRecorder(nullptr).IsValid());
     REQUIRE(recorder->Close().IsValid());
     const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();
+    // The spread changed the run: the same hits without it end elsewhere.
+    {
+        common::WorldFixture plain_fixture;
+        std::unique_ptr<PropWorld> plain = PropWorld::Create(plain_fixture.mWorld).Get();
+        const PropId plain_wall = plain->AddProp(plain_fixture.mWall, BrittlePanel()).Get();
+        HitTwice(plain_fixture, *plain);
+        CHECK(plain->GetProp(plain_wall)->GetCpuSolver()->GetPositions() != live.GetPositions());
+    }
 
     const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
     REQUIRE(replayed.size() == 1u);

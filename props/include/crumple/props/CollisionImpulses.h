@@ -53,12 +53,15 @@ struct CRUMPLE_API ContactSpread
 };
 
 /// CollisionNodalImpulses with each contact's impulse spread over its footprint (ContactSpread). The total
-/// impulse is kept exactly; the moment about the contact point only as far as the footprint's nodes are
-/// balanced around it (on a surface they lie on one side, mostly along the normal, where the moment arm is
-/// harmless). A contact with no free node within the radius (a mesh coarser than the footprint) falls back to
-/// its element's four nodes. With a radius of 0 the result is CollisionNodalImpulses' bit for bit. O(#T) to
-/// prepare, then O(#N) per contact. Refused as CollisionNodalImpulses, and for a radius that is not finite
-/// and >= 0, or masses that are not one per node when the radius is above 0.
+/// impulse is kept exactly; its moment about the contact point only as far as the footprint's nodes balance
+/// around the point. On a flat face struck square on they lie behind it along the normal and the error is
+/// small; it grows with the normal's tilt and near edges and rims (a thin rail, a post), up to about
+/// radius x impulse. A contact with no free node within the radius (a mesh coarser than the footprint, or
+/// only fixed nodes in reach) falls back to its element's four nodes. With a radius of 0 the result is
+/// CollisionNodalImpulses' bit for bit. O(#T) to prepare (the element search, for the fallback), then O(#N)
+/// per spread contact and O(#T) per contact that falls back. Refused as CollisionNodalImpulses, and for a
+/// radius that is not finite and >= 0 or, when the radius is above 0, for masses and inverse masses that are
+/// not one per node, a mass that is not finite and > 0, or an inverse mass that is not finite and >= 0.
 CRUMPLE_API Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
                                                          std::span<const fem::TetIndices> inElementNodes,

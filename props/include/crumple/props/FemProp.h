@@ -87,8 +87,11 @@ public:
     /// fem::TetSolver::Prepare on the CPU (the GPU solver has nothing to prepare: it only checks the step)
     Status Prepare(double inDeltaTime);
     /// How far each contact's impulse spreads over the prop's nodes (ContactSpread::mRadius, m, finite, >= 0;
-    /// 0, the default: the containing element's four nodes). Set it before the prop joins a PropWorld: the
-    /// recording holds the radius it had then. Refused, changing nothing, for a bad radius.
+    /// 0, the default: the containing element's four nodes). Set it before the prop is recorded (PropWorld::
+    /// AddProp with a recorder attached, or AttachRecorder): the recording holds the radius it had then, and a
+    /// later change (through PropWorld::GetProp) is not recorded, so a replay would differ. A prop rebuilt from
+    /// a PropSetup by hand (RebuildProp, FromSolver) starts at 0: set PropSetup::mContactSpread again.
+    /// Refused, changing nothing, for a bad radius.
     Status SetContactSpread(double inRadius);
     double GetContactSpread() const { return mContactSpread; }
     /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses, spread by GetContactSpread())
