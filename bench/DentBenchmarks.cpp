@@ -206,6 +206,38 @@ void ThreadsCase(BenchTable& ioTable, int inTriangles, int inControls, int inCon
                      ";game_thread_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";vertices_updated=" + std::to_string(report.mVerticesMoved)});
 }
 
+// Whether a dent's cost follows the vertices it updates, not the body's size: the same 64-contact crush
+// (Campbell, default lattice) on a body of inSmall and of inLarge triangles, the two interleaved. Error: how
+// far the time per updated vertex of the large body is from the small one's, (large / small) - 1; linear
+// scaling is 0. Both bodies are the same box, so the large one updates about inLarge / inSmall times the
+// vertices.
+void ScalingCase(BenchTable& ioTable, int inSmall, int inLarge, int inRepetitions)
+{
+    const Collision collision = MakeFrontCollision(64);
+    const DeformableObject small_pristine = MakeCar(inSmall, 1, 0, ECrushModel::Campbell);
+    const DeformableObject large_pristine = MakeCar(inLarge, 1, 0, ECrushModel::Campbell);
+    DeformableObject small = small_pristine, large = large_pristine;
+    ffd::DentReport small_report, large_report;
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions,
+        {{[&] { small = small_pristine; }, [&] { small_report = small.ApplyCollision(collision, ECollisionSide::B); }},
+         {[&] { large = large_pristine; }, [&] { large_report = large.ApplyCollision(collision, ECollisionSide::B); }}});
+    if (small_report.mVerticesMoved == 0 || large_report.mVerticesMoved == 0)
+        throw std::runtime_error("dent_scaling: the collision moved no vertex");
+    const double small_per_vertex = timing[0].mCpuMs / small_report.mVerticesMoved;
+    const double large_per_vertex = timing[1].mCpuMs / large_report.mVerticesMoved;
+    const auto triangles = [](const DeformableObject& inObject) {
+        return std::to_string(inObject.GetDeformer().GetRestMesh().mTriangles.size() / 1000) + "k";
+    };
+    ioTable.Add({"dent_scaling", triangles(large_pristine) + "_vs_" + triangles(small_pristine) + "_tris/campbell/64_contacts",
+                 timing[1].mWallMs, large_per_vertex / small_per_vertex - 1.0, "rel_change_of_cpu_ms_per_updated_vertex",
+                 "small_ms=" + FormatExtra(timing[0].mWallMs) + ";small_cpu_ms=" + FormatExtra(timing[0].mCpuMs) +
+                     ";large_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";small_vertices_updated=" +
+                     std::to_string(small_report.mVerticesMoved) + ";large_vertices_updated=" +
+                     std::to_string(large_report.mVerticesMoved) + ";small_us_per_vertex=" +
+                     FormatExtra(1000.0 * small_per_vertex) + ";large_us_per_vertex=" + FormatExtra(1000.0 * large_per_vertex)});
+}
+
 } // namespace
 
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -234,6 +266,9 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     // written from the footprint.
     for (int controls : {8, 16, 0})
         ApplyCase(ioTable, "apply_collision", triangles, 1, controls, 64, repetitions, ECrushModel::Campbell);
+
+    // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
+    ScalingCase(ioTable, triangles, 4 * triangles, repetitions);
 }
 
 } // namespace crumple::bench
