@@ -117,3 +117,37 @@ TEST_CASE("Bullet and ODE: the same fence hit takes the same from the car", "[bu
     CHECK(bullet.mBrokenLinks > 0);
     CHECK(ode.mBrokenLinks > 0);
 }
+
+TEST_CASE("With the Newton test converged, the fence's cracks do not depend on the linear solver's tolerance",
+          "[bullet][ode][props]")
+{
+    // The shipped Newton test is loose during a hit (README, known limits), and at it the conjugate gradient's
+    // tolerance alone moves Bullet's fence from 1,017 to 4,536 broken links. Converged (1e-7 of the step's
+    // energy scale) the answer is the solve's, not the iteration's: measured at CG 1e-6 and 1e-8, Bullet 224
+    // and 224 links with the car losing 2.716 and 2.746 m/s, ODE 178 and 178 with 2.283 and 2.284 m/s. A
+    // crack is a threshold, so a link whose stress lies within the solves' difference may still flip: the
+    // bounds are 5 % of the links and 2 % of the car's loss.
+    const double speed = 64.0 / 3.6;
+    const auto run = [&]<class Scene>(double inCgTolerance) {
+        common::FenceDriveSettings settings;
+        settings.mSpeed = speed;
+        settings.mSolver.mImplicitTolerance = 1.0e-7;
+        settings.mSolver.mCgRelativeTolerance = inCgTolerance;
+        const Result<FenceRun> result = DriveThroughFence<Scene>(settings);
+        INFO((result ? std::string() : result.GetError().mMessage));
+        REQUIRE(result);
+        return result.Get();
+    };
+    const auto check = [&](const char* inEngine, const FenceRun& inLoose, const FenceRun& inTight) {
+        INFO(inEngine << ", CG 1e-6: " << Describe(inLoose));
+        INFO(inEngine << ", CG 1e-8: " << Describe(inTight));
+        REQUIRE(inLoose.mBrokenLinks > 0);
+        REQUIRE(inTight.mBrokenLinks > 0);
+        CHECK(std::abs(inLoose.mBrokenLinks - inTight.mBrokenLinks) <= 0.05 * std::max(inLoose.mBrokenLinks, inTight.mBrokenLinks));
+        const double loose_loss = inLoose.mSpeedBefore - inLoose.mSpeedAfter;
+        const double tight_loss = inTight.mSpeedBefore - inTight.mSpeedAfter;
+        CHECK(std::abs(loose_loss - tight_loss) <= 0.02 * std::max(loose_loss, tight_loss));
+    };
+    check("Bullet", run.template operator()<BulletWallCrash>(1.0e-6), run.template operator()<BulletWallCrash>(1.0e-8));
+    check("ODE", run.template operator()<OdeWallCrash>(1.0e-6), run.template operator()<OdeWallCrash>(1.0e-8));
+}
