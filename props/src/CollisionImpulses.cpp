@@ -57,15 +57,22 @@ std::vector<std::pair<int, double>> FootprintShares(const Vec3& inPoint, std::sp
 
 } // namespace
 
+Status CheckContactSpreadRadius(double inRadius, const char* inWho)
+{
+    if (!std::isfinite(inRadius) || inRadius < 0.0)
+        return MakeError(EError::InvalidArgument,
+                         std::string(inWho) + ": the contact spread radius must be finite and >= 0 m, not " + std::to_string(inRadius));
+    return Status::Ok();
+}
+
 Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision& inCollision,
                                                          plugin::BodyId inPropBody,
                                                          std::span<const TetIndices> inElementNodes,
                                                          std::span<const Vec3> inPositions,
                                                          const ContactSpread& inSpread)
 {
-    if (!std::isfinite(inSpread.mRadius) || inSpread.mRadius < 0.0)
-        return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: the contact spread radius must be finite and >= 0 m, not " +
-                                                      std::to_string(inSpread.mRadius));
+    if (Status radius = CheckContactSpreadRadius(inSpread.mRadius, "CollisionNodalImpulses"); radius.HasError())
+        return radius.GetError();
     const bool spreads = inSpread.mRadius > 0.0;
     if (spreads && (inSpread.mMasses.size() != inPositions.size() || inSpread.mInverseMasses.size() != inPositions.size()))
         return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: a contact spread needs one mass and one inverse mass per node");

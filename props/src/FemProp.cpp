@@ -6,9 +6,7 @@
 #include <crumple/props/CollisionImpulses.h>
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
-#include <string>
 
 #if defined(CRUMPLE_PROPS_WITH_GPU)
 #include <crumple/gpu/ComputeDevice.h>
@@ -160,9 +158,8 @@ Status FemProp::Prepare(double inDeltaTime)
 
 Status FemProp::SetContactSpread(double inRadius)
 {
-    if (!std::isfinite(inRadius) || inRadius < 0.0)
-        return MakeError(EError::InvalidArgument,
-                         "FemProp::SetContactSpread: the radius must be finite and >= 0 m, not " + std::to_string(inRadius));
+    if (Status radius = CheckContactSpreadRadius(inRadius, "FemProp::SetContactSpread"); radius.HasError())
+        return radius;
     mContactSpread = inRadius;
     return Status::Ok();
 }

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/props/HeldFemProp.h>
 
-#include <cmath>
+#include <crumple/props/CollisionImpulses.h>
+
 #include <string>
 
 namespace crumple::props
@@ -24,9 +25,8 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
         return MakeError(EError::InvalidArgument,
                          "MakeHeldFemProp: a held prop's FEM has no gravity (its held body stands for what holds it "
                          "up; loose pieces fall in the engine); start from HeldPropSolverSettings()");
-    if (!std::isfinite(inContactSpread) || inContactSpread < 0.0)
-        return MakeError(EError::InvalidArgument, "MakeHeldFemProp: the contact spread radius must be finite and >= 0 m, not " +
-                                                      std::to_string(inContactSpread));
+    if (Status radius = CheckContactSpreadRadius(inContactSpread, "MakeHeldFemProp"); radius.HasError())
+        return radius.GetError();
     Result<FemProp> prop = FemProp::Create(nullptr, inBodyMesh, inMaterial, inSolver, FemPropSettings{});
     if (!prop)
         return prop;

@@ -190,8 +190,8 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
 {
     if (Status valid = ValidatePropSetupSizes(inSetup); valid.HasError())
         return valid.GetError();
-    if (!std::isfinite(inSetup.mContactSpread) || inSetup.mContactSpread < 0.0)
-        return MakeError(EError::InvalidArgument, "PropSetup: the contact spread radius must be finite and >= 0 m");
+    if (Status radius = CheckContactSpreadRadius(inSetup.mContactSpread, "PropSetup"); radius.HasError())
+        return radius.GetError();
     ByteWriter writer;
     writer.WriteU32(inSetup.mBody.mValue);
     writer.WriteU32(inSetup.mBody.mGeneration);

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <crumple/fem/TetGrid.h>
+#include "WallPanelMesh.h"
+
 #include <crumple/props/FemProp.h>
 
 #include <BrittleMaterial.h>
@@ -21,17 +22,13 @@ namespace crumple::test
 /// @param[in] inStrengthFactor  times the shared brittle material's tensile strength
 inline props::FemProp BrittlePanel(const std::array<int, 3>& inCells, double inYoungsModulus, double inStrengthFactor)
 {
-    fem::TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = inCells;
     fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
     material.mYoungsModulus = inYoungsModulus;
     material.mPoissonRatio = 0.2;
     material.mTensileStrength *= inStrengthFactor;
     fem::TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
-    props::FemProp prop = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material, settings, props::FemPropSettings{}).Get();
+    props::FemProp prop = props::FemProp::Create(nullptr, WallPanelMesh(inCells), material, settings, props::FemPropSettings{}).Get();
     for (int node = 0; node < prop.GetNodeCount(); ++node)
         if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
             REQUIRE(prop.SetNodeFixed(node, true).IsValid());

@@ -3,10 +3,10 @@
 // Collision -> nodal impulses: the total impulse and its moment are kept, the prop's side of the collision
 // decides the sign, bad collisions change nothing, and a collision dispatched by a DamageWorld reaches a prop.
 #include "PropMomentum.h"
+#include "WallPanelMesh.h"
 #include "WorldFixture.h"
 
 #include <crumple/props/CollisionImpulses.h>
-#include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
 #include <catch2/catch.hpp>
@@ -25,15 +25,11 @@ namespace
 // A free 2 m x 0.2 m x 2 m wall panel, x in [0, 0.2], y and z in [-1, 1] (the prop's body frame).
 TetSolver Panel(double inDensity = FemMaterialSettings{}.mDensity)
 {
-    TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 10, 10};
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
     FemMaterialSettings material;
     material.mDensity = inDensity;
-    return TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
+    return TetSolver::Create(test::WallPanelMesh({1, 10, 10}), material, settings).Get();
 }
 
 Collision TwoContacts(BodyId inA, BodyId inB)

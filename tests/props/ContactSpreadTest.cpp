@@ -4,7 +4,8 @@
 // kept, only free nodes within the radius take a share, their velocity change follows the kernel, a radius of
 // 0 (or one no node lies within) is the containing element's four nodes bit for bit, and bad radii are
 // refused, changing nothing.
-#include <crumple/fem/TetGrid.h>
+#include "WallPanelMesh.h"
+
 #include <crumple/fem/TetSolver.h>
 #include <crumple/props/CollisionImpulses.h>
 #include <crumple/props/FemProp.h>
@@ -26,14 +27,10 @@ using namespace crumple::props;
 namespace
 {
 
-// A 2 m x 0.2 m x 2 m panel, x in [0, 0.2], y and z in [-1, 1], 0.2 m cells (the prop's body frame).
+// The wall panel in 0.2 m cells (the prop's body frame).
 TetMesh PanelMesh()
 {
-    TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 10, 10};
-    return TetGrid(grid).Get();
+    return test::WallPanelMesh({1, 10, 10});
 }
 
 TetSolver Panel()

@@ -4,6 +4,7 @@
 #include "BrittlePanel.h"
 #include "ScratchDirectory.h"
 #include "ThreadJobSystem.h"
+#include "WallPanelMesh.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
@@ -203,10 +204,6 @@ TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and
     // The brittle panel on the GPU: symplectic Euler (the GPU's integrator), soft enough for a few sub-steps
     // per step, weak enough that the car's hits crack it.
     gpu::ComputeDeviceProvider devices;
-    fem::TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = {1, 6, 6};
     fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
     material.mYoungsModulus = 1.0e8;
     material.mPoissonRatio = 0.2;
@@ -216,7 +213,7 @@ TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and
     settings.mGravity = Vec3::Zero();
     FemPropSettings on_gpu;
     on_gpu.mBackend = EFemBackend::Gpu;
-    FemProp panel = FemProp::Create(&devices, fem::TetGrid(grid).Get(), material, settings, on_gpu).Get();
+    FemProp panel = FemProp::Create(&devices, test::WallPanelMesh({1, 6, 6}), material, settings, on_gpu).Get();
     if (panel.GetBackend() != EFemBackend::Gpu)
     {
         WARN("skipped: no compute device: " << panel.GetFallbackReason());

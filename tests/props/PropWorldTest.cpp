@@ -4,6 +4,7 @@
 // world gave the body that hit it.
 #include "PropMomentum.h"
 #include "ScratchDirectory.h"
+#include "WallPanelMesh.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
@@ -33,13 +34,9 @@ namespace
 // soft enough to ring, no gravity, no damping; inCells cubes (6 tetrahedra each) along x, y, z.
 FemProp Panel(bool inAnchored, std::array<int, 3> inCells = {1, 10, 10})
 {
-    TetGridSettings grid;
-    grid.mOrigin = Vec3(0.0, -1.0, -1.0);
-    grid.mSize = Vec3(0.2, 2.0, 2.0);
-    grid.mCellCount = inCells;
     TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
-    FemProp prop = FemProp::Create(nullptr, TetGrid(grid).Get(), FemMaterialSettings{}, settings, FemPropSettings{}).Get();
+    FemProp prop = FemProp::Create(nullptr, test::WallPanelMesh(inCells), FemMaterialSettings{}, settings, FemPropSettings{}).Get();
     if (inAnchored)
         for (int node = 0; node < prop.GetNodeCount(); ++node)
             if (prop.GetCpuSolver()->GetMesh().GetRestPositions()[node].z() < -0.99)

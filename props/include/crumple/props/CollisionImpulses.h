@@ -52,6 +52,9 @@ struct CRUMPLE_API ContactSpread
     std::span<const double> mInverseMasses; ///< #N, 0 for a fixed node (which takes no share)
 };
 
+/// A contact spread radius (m) is finite and >= 0; refused with a message naming inWho otherwise.
+CRUMPLE_API Status CheckContactSpreadRadius(double inRadius, const char* inWho);
+
 /// CollisionNodalImpulses with each contact's impulse spread over its footprint (ContactSpread). The total
 /// impulse is kept exactly; its moment about the contact point only as far as the footprint's nodes balance
 /// around the point. On a flat face struck square on they lie behind it along the normal and the error is
