@@ -322,20 +322,26 @@ Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup)
 Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gpu::ComputeDeviceProvider* ioProvider)
 {
     std::vector<ReplayedProp> props;
+    std::vector<std::size_t> added_after; // per prop: the collisions recorded before it joined
     std::size_t next_collision = 0;
-    // The collisions before an extension record reach the props that exist then, in dispatch order.
+    // The collisions before an extension record reach the props that existed when they were dispatched, in
+    // dispatch order.
     const auto apply_collisions_until = [&](std::size_t inEnd) -> Status
     {
         for (; next_collision < inEnd; ++next_collision)
         {
             const plugin::Collision& collision = inReplay.mCollisions[next_collision];
-            for (ReplayedProp& prop : props)
-                if (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB)
+            for (std::size_t index = 0; index < props.size(); ++index)
+                if (ReplayedProp& prop = props[index]; added_after[index] <= next_collision &&
+                                                       (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB))
                     if (Status status = prop.mProp.ApplyCollision(collision, prop.mBody); status.HasError())
                         return status;
         }
         return Status::Ok();
     };
+    // Stepped off the game's thread (a Queued record): collisions reach the props at the next step.
+    bool queued = false;
+    bool any_prop_record = false;
     for (std::size_t index = 0; index < inReplay.mExtensions.size(); ++index)
     {
         const plugin::RecordedExtension& extension = inReplay.mExtensions[index];
@@ -344,8 +350,20 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             return MakeError(EError::CorruptData, where + "placed after more collisions than the file has");
         if (extension.mAfterCollisions < next_collision)
             return MakeError(EError::CorruptData, where + "placed before collisions an earlier record follows");
-        if (Status status = apply_collisions_until(static_cast<std::size_t>(extension.mAfterCollisions)); status.HasError())
-            return MakeError(status.GetError().mCode, where + status.GetError().mMessage);
+        const bool step_record = extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step);
+        if (!queued || step_record)
+            if (Status status = apply_collisions_until(static_cast<std::size_t>(extension.mAfterCollisions)); status.HasError())
+                return MakeError(status.GetError().mCode, where + status.GetError().mMessage);
+        if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Queued))
+        {
+            if (!extension.mPayload.empty() || any_prop_record)
+                return MakeError(EError::CorruptData, where + "a queued-collisions record with a payload or after other prop records");
+            queued = true;
+            continue;
+        }
+        const bool prop_record = extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added) || step_record ||
+                                 extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose);
+        any_prop_record = any_prop_record || prop_record;
         if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added))
         {
             Result<PropSetup> setup = DecodePropSetup(extension.mPayload);
@@ -362,6 +380,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             if (Status spread = prop.SetContactSpread(setup.Get().mContactSpread); spread.HasError())
                 return MakeError(EError::CorruptData, where + spread.GetError().mMessage);
             props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop)});
+            added_after.push_back(static_cast<std::size_t>(extension.mAfterCollisions));
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step))
         {
@@ -396,8 +415,9 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
         }
         // Other tags belong to other layers.
     }
-    if (Status status = apply_collisions_until(inReplay.mCollisions.size()); status.HasError())
-        return status.GetError();
+    if (!queued)
+        if (Status status = apply_collisions_until(inReplay.mCollisions.size()); status.HasError())
+            return status.GetError();
     return props;
 }
 

@@ -9,25 +9,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace crumple::props
 {
 
-Result<std::unique_ptr<PropWorld>> PropWorld::Create(plugin::DamageWorld& ioWorld)
+Result<std::unique_ptr<PropWorld>> PropWorld::Create(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings)
 {
-    std::unique_ptr<PropWorld> world(new PropWorld(ioWorld));
+    std::unique_ptr<PropWorld> world(new PropWorld(ioWorld, inSettings));
     ioWorld.AddListener(world.get());
     return world;
 }
 
 PropWorld::~PropWorld()
 {
+    WaitForStep();
     mWorld->RemoveListener(this);
+}
+
+void PropWorld::WaitForStep() const
+{
+    if (!HasStepInFlight() || mInFlight->mWaited)
+        return;
+    if (mInFlight->mOnJobs)
+        mWorld->GetSettings().mJobs->mWaitTask(mWorld->GetSettings().mJobs->mHost, mInFlight->mTicket);
+    mInFlight->mWaited = true;
 }
 
 Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
 {
+    WaitForStep(); // intent: the list of props may grow (move) only while no task steps them
     if (mWorld->GetBodyState(inBody) == nullptr)
         return MakeError(EError::InvalidArgument,
                          "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " is not in the world");
@@ -48,13 +60,15 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     if (mWorld->GetBodyState(inBody)->mMotionType != plugin::EMotionType::Static)
         (void)mWorld->SetDispatchEachStep(inBody, true); // the body exists: checked above
     mProps.push_back(Prop{.mBody = inBody, .mProp = std::move(ioProp)});
+    // intent: a prop stepped on a task splits nothing over the job system (a task must not call back into it)
     if (fem::TetSolver* cpu = mProps.back().mProp.GetCpuSolver(); cpu != nullptr)
-        cpu->SetJobSystem(mWorld->GetSettings().mJobs);
+        cpu->SetJobSystem(mSettings.mStepOffThread ? nullptr : mWorld->GetSettings().mJobs);
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
 Status PropWorld::CheckCanAdd(const FemProp& inProp) const
 {
+    WaitForStep();
     if (mRecorder == nullptr)
         return Status::Ok();
     if (Status recorder = mRecorder->GetStatus(); recorder.HasError())
@@ -87,6 +101,12 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
         return recorder;
     if (!ioRecorder->IsOpen())
         return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: the recorder is closed");
+    // intent: collisions dispatched before the recording reach the props at the next step; a replay would
+    // not have them
+    if (!mQueued.empty())
+        return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: " + std::to_string(mQueued.size()) +
+                                                      " collisions wait for the next step; attach the recorder before the first hit");
+    WaitForStep();
     // Every prop so far must be recordable before any is written.
     std::vector<std::vector<std::byte>> setups;
     for (const Prop& prop : mProps)
@@ -96,6 +116,10 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
             return setup.GetError();
         setups.push_back(std::move(setup).Get());
     }
+    // intent: a replay must know before the first collision that collisions reach the props at the steps
+    if (mSettings.mStepOffThread)
+        if (Status status = ioRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Queued), {}); status.HasError())
+            return status;
     for (const std::vector<std::byte>& setup : setups)
         if (Status status = ioRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Added), setup);
             status.HasError())
@@ -106,11 +130,13 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
 
 FemProp* PropWorld::GetProp(PropId inProp)
 {
+    WaitForStep();
     return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
 }
 
 const FemProp* PropWorld::GetProp(PropId inProp) const
 {
+    WaitForStep();
     return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
 }
 
@@ -124,8 +150,17 @@ PropId PropWorld::FindProp(plugin::BodyId inBody) const
 
 Result<PropStepReport> PropWorld::Step(double inDeltaTime)
 {
+    if (Status started = StartStep(inDeltaTime); !started)
+        return started.GetError();
+    return LandStep();
+}
+
+Status PropWorld::StartStep(double inDeltaTime)
+{
     if (Status valid = CheckTimeStep(inDeltaTime, "PropWorld::Step"); !valid)
-        return valid.GetError();
+        return valid;
+    if (HasStepInFlight())
+        return MakeError(EError::InvalidArgument, "PropWorld::Step: a step is in flight; LandStep first");
     // intent: a step some prop refuses is refused before any prop steps or the recording takes it
     for (std::size_t index = 0; index < mProps.size(); ++index)
         if (Status valid = mProps[index].mProp.CheckStep(inDeltaTime); valid.HasError())
@@ -140,34 +175,94 @@ Result<PropStepReport> PropWorld::Step(double inDeltaTime)
         step.WriteDouble(inDeltaTime);
         if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Step), step.GetBytes());
             status.HasError())
-            return status.GetError();
+            return status;
     }
-    PropStepReport report;
+    // The collisions that waited reach the props now, in dispatch order, before the step (as they would have
+    // when dispatched: nothing changes a prop between its steps but a hand-over of loose pieces).
+    std::vector<QueuedCollision> queued;
+    queued.swap(mQueued);
+    for (const QueuedCollision& collision : queued)
+        ApplyToProps(collision.mCollision, collision.mPropCount);
+    if (mInFlight == nullptr)
+        mInFlight = std::make_unique<InFlight>();
+    InFlight& flight = *mInFlight;
+    flight.mOwner = this;
+    flight.mDeltaTime = inDeltaTime;
+    flight.mReport = PropStepReport();
+    flight.mStatus = Status::Ok();
+    flight.mOnTask.assign(mProps.size(), 0);
+    flight.mBodyRotations.assign(mProps.size(), std::nullopt);
     for (std::size_t index = 0; index < mProps.size(); ++index)
     {
-        Result<fem::TetStepResult> step = mProps[index].mProp.Step(inDeltaTime);
-        if (step.HasError())
-        {
-            Error error = step.GetError();
-            error.mMessage = "PropWorld::Step: prop " + std::to_string(index) + ": " + error.mMessage;
-            return error;
-        }
-        const fem::ETetStepEvent events = step.Get().mEvents;
-        if (fem::HasEvent(events, fem::ETetStepEvent::Sleeping))
-            ++report.mSleeping;
-        else
-            ++report.mStepped;
-        report.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
-        report.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
-        UpdateContactVelocity(mProps[index], fem::HasEvent(events, fem::ETetStepEvent::Sleeping));
+        // intent: the body's frame as the step starts, read here: the engine moves bodies while the task runs
+        if (const plugin::BodyState* state = mWorld->GetBodyState(mProps[index].mBody); state != nullptr)
+            flight.mBodyRotations[index] = state->mTransform.mRotation;
+        flight.mOnTask[index] = mProps[index].mProp.GetCpuSolver() != nullptr ? 1 : 0;
     }
-    return report;
+    const JobSystem* jobs = mWorld->GetSettings().mJobs;
+    flight.mOnJobs = mSettings.mStepOffThread && jobs != nullptr && jobs->mStartTask != nullptr && jobs->mWaitTask != nullptr;
+    flight.mWaited = false;
+    flight.mActive = true;
+    if (!flight.mOnJobs)
+    {
+        for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
+            StepProp(flight, index);
+        return Status::Ok();
+    }
+    // intent: GPU props on the game's thread, where their context is current; the CPU props on the task
+    for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
+        if (flight.mOnTask[index] == 0)
+            StepProp(flight, index);
+    flight.mTicket = jobs->mStartTask(jobs->mHost, &PropWorld::RunStep, &flight);
+    return Status::Ok();
+}
+
+void PropWorld::RunStep(void* inFlight)
+{
+    auto* flight = static_cast<InFlight*>(inFlight);
+    for (std::size_t index = 0; index < flight->mOnTask.size(); ++index)
+        if (flight->mOnTask[index] != 0 && flight->mStatus.IsValid())
+            flight->mOwner->StepProp(*flight, index);
+}
+
+void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
+{
+    Prop& prop = mProps[inIndex];
+    Result<fem::TetStepResult> step = prop.mProp.Step(ioFlight.mDeltaTime);
+    if (step.HasError())
+    {
+        Error error = step.GetError();
+        error.mMessage = "PropWorld::Step: prop " + std::to_string(inIndex) + ": " + error.mMessage;
+        ioFlight.mStatus = error;
+        return;
+    }
+    const fem::ETetStepEvent events = step.Get().mEvents;
+    const bool sleeping = fem::HasEvent(events, fem::ETetStepEvent::Sleeping);
+    ++(sleeping ? ioFlight.mReport.mSleeping : ioFlight.mReport.mStepped);
+    ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
+    ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
+    prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
+}
+
+Result<PropStepReport> PropWorld::LandStep()
+{
+    if (!HasStepInFlight())
+        return PropStepReport();
+    WaitForStep();
+    InFlight& flight = *mInFlight;
+    flight.mActive = false;
+    for (std::size_t index = 0; index < flight.mOnTask.size(); ++index)
+        mProps[index].mContactVelocity = mProps[index].mSteppedVelocity;
+    if (flight.mStatus.HasError())
+        return flight.mStatus.GetError();
+    return flight.mReport;
 }
 
 Status PropWorld::Prepare(double inDeltaTime)
 {
     if (Status valid = CheckTimeStep(inDeltaTime, "PropWorld::Prepare"); !valid)
         return valid;
+    WaitForStep();
     for (Prop& prop : mProps)
         if (Status prepared = prop.mProp.Prepare(inDeltaTime); !prepared)
             return prepared; // cannot happen for a valid step: kept for a future backend's refusal
@@ -179,6 +274,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     if (!std::isfinite(inMinMass) || !(inMinMass >= 0.0))
         return MakeError(std::isfinite(inMinMass) ? EError::InvalidArgument : EError::NonFinite,
                          "PropWorld::TakeLooseFragments: the minimum mass must be finite and >= 0 kg");
+    WaitForStep();
     // intent: every piece and its rigid body first
     std::vector<LooseFragment> loose;
     std::vector<Vec3> positions, velocities;
@@ -273,6 +369,7 @@ Result<std::vector<std::vector<Vec3>>> PropWorld::GetCollisionPieces(PropId inPr
 {
     if (Status valid = ValidateShapeQuery(inProp, inCellSize, "GetCollisionPieces"); !valid)
         return valid.GetError();
+    WaitForStep();
     const Prop& prop = mProps[inProp.mValue];
     std::vector<Vec3> positions;
     prop.mProp.ReadPositions(positions);
@@ -286,6 +383,7 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
         return valid.GetError();
     if (!std::isfinite(inTolerance) || !(inTolerance >= 0.0))
         return MakeError(EError::InvalidArgument, "PropWorld::TakeChangedShape: the tolerance must be finite and >= 0 m");
+    WaitForStep();
     // intent: the positions read once; the pieces built only when the shape changed (called every step)
     Prop& prop = mProps[inProp.mValue];
     std::vector<Vec3> positions;
@@ -303,9 +401,8 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces).Get());
 }
 
-void PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping) const
+Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation)
 {
-    ioProp.mContactVelocity = Vec3::Zero();
     // The latest hits stand until new ones arrive: collisions reach the prop when the world dispatches them,
     // not at every engine step, and between them the struck material goes on moving (or is held back).
     if (!ioProp.mHits.empty())
@@ -316,7 +413,7 @@ void PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping) const
     if (inSleeping)
         ioProp.mStruck.clear();
     if (ioProp.mStruck.empty())
-        return;
+        return Vec3::Zero();
     // intent: the struck nodes' mean velocity, each weighted by the size of the impulse it took (body frame),
     // leaving out nodes of pieces handed over (fixed, they no longer move with the prop)
     // intent: the CPU solver's velocities in place; the GPU's read back
@@ -338,13 +435,12 @@ void PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping) const
         impulse += hit.mImpulse;
         weight += share;
     }
-    const plugin::BodyState* state = mWorld->GetBodyState(ioProp.mBody);
-    if (!(weight > 0.0) || !(impulse.norm() > 0.0) || state == nullptr)
-        return;
+    if (!(weight > 0.0) || !(impulse.norm() > 0.0) || !inBodyRotation)
+        return Vec3::Zero();
     // intent: only along the direction the material was struck. The held body stands for the whole prop: moved
     // sideways or up with a timber flung so, it would carry the car with it.
     const Vec3 direction = impulse.normalized();
-    ioProp.mContactVelocity = state->mTransform.mRotation * (direction.dot(sum / weight) * direction);
+    return *inBodyRotation * (direction.dot(sum / weight) * direction);
 }
 
 void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::ObjectDent>)
@@ -353,11 +449,24 @@ void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::Ob
 
 void PropWorld::OnBeforeCollision(const plugin::Collision& inCollision)
 {
+    // intent: off the game's thread, a collision of a prop's body waits for the next StartStep (a task may be
+    // stepping the prop now); others are no prop's business
+    if (mSettings.mStepOffThread)
+    {
+        if (FindProp(inCollision.mBodyA).IsValid() || FindProp(inCollision.mBodyB).IsValid())
+            mQueued.push_back({inCollision, mProps.size()});
+        return;
+    }
+    ApplyToProps(inCollision, mProps.size());
+}
+
+void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount)
+{
     // Both bodies may carry a prop (a car hitting a fence carries none; two crates hitting each other two).
     for (const plugin::BodyId body : {inCollision.mBodyA, inCollision.mBodyB})
     {
         const PropId prop = FindProp(body);
-        if (!prop.IsValid())
+        if (!prop.IsValid() || prop.mValue >= inPropCount)
             continue;
         ++mCollisions;
         Prop& hit = mProps[prop.mValue];

@@ -173,7 +173,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
                                .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
                                .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
                                .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
-        cFrame / 4.0);
+        cFrame / 4.0, s.mSettings.mPropsOffThread);
     if (!fence)
         return MakeError(fence.GetError().mCode, "the fence: " + fence.GetError().mMessage);
     s.mFence = std::move(fence).Get();

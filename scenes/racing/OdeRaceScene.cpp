@@ -206,7 +206,7 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
                                .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
                                .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
                                .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
-        cStep);
+        cStep, s.mSettings.mPropsOffThread);
     if (!fence)
         return MakeError(fence.GetError().mCode, "the fence: " + fence.GetError().mMessage);
     s.mFence = std::move(fence).Get();

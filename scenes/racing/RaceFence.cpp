@@ -32,7 +32,7 @@ constexpr double cMinPieceMass = 0.05;
 
 } // namespace
 
-Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime)
+Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime, bool inOffThread)
 {
     Result<fem::TetFence> fence = fem::MakeTetFence(RaceCourse::FenceSettings());
     if (!fence)
@@ -41,7 +41,7 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
     if (!wood)
         return wood.GetError();
     std::unique_ptr<RaceFence> result(new RaceFence(ioDamage));
-    Result<std::unique_ptr<props::PropWorld>> props = props::PropWorld::Create(ioDamage);
+    Result<std::unique_ptr<props::PropWorld>> props = props::PropWorld::Create(ioDamage, {.mStepOffThread = inOffThread});
     if (!props)
         return props.GetError();
     result->mProps = std::move(props).Get();
@@ -69,7 +69,10 @@ Result<std::unique_ptr<RaceFence>> RaceFence::Create(DamageWorld& ioDamage, Race
 Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
 {
     const double start_ms = common::ThreadCpuMs();
-    Result<props::PropStepReport> stepped = mProps->Step(inDeltaTime);
+    // intent: off the thread, the step started by the last call lands here, its outcome reaches the engine,
+    // and this step starts only then (its collisions waited for it); otherwise the step runs here
+    const bool off_thread = mProps->GetSettings().mStepOffThread;
+    Result<props::PropStepReport> stepped = off_thread ? mProps->LandStep() : mProps->Step(inDeltaTime);
     if (!stepped)
         return stepped.GetError();
     ++mSteps;
@@ -86,6 +89,9 @@ Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
         MakePiece(piece);
         outNewBodies.push_back(piece.mBody);
     }
+    if (off_thread)
+        if (Status started = mProps->StartStep(inDeltaTime); !started)
+            return started;
     const double step_ms = common::ThreadCpuMs() - start_ms;
     mWorstStepMs = std::max(mWorstStepMs, step_ms);
     mTotalStepMs += step_ms;

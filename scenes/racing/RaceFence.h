@@ -37,8 +37,10 @@ class RaceFence
 {
 public:
     /// Makes the fence's body in the engine and its prop in a PropWorld of ioDamage (which must outlive it),
-    /// prepared for steps of inStepTime (s): the first hit does not factor its FEM in its frame.
-    static Result<std::unique_ptr<RaceFence>> Create(plugin::DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime);
+    /// prepared for steps of inStepTime (s): the first hit does not factor its FEM in its frame. With
+    /// inOffThread its FEM steps as a task of ioDamage's job system (props::PropWorldSettings::mStepOffThread).
+    static Result<std::unique_ptr<RaceFence>> Create(plugin::DamageWorld& ioDamage, RacePropEngine inEngine, double inStepTime,
+                                                     bool inOffThread = false);
 
     /// The fence's engine body
     plugin::BodyId GetBody() const { return mBody; }
@@ -48,7 +50,8 @@ public:
     /// After the engine's frame (and the damage world's Update): steps the fence's FEM by inDeltaTime (s),
     /// gives the engine the struck planks' velocity for the held body, makes the pieces that broke loose
     /// engine bodies, and hands the engine the fence's new shape when it changed. Bodies made this frame are
-    /// appended to outNewBodies (for names in the log). A sleeping fence costs one check.
+    /// appended to outNewBodies (for names in the log). A sleeping fence costs one check. Off the thread:
+    /// lands the step started by the previous call, hands its outcome to the engine, and starts this one.
     Status Step(double inDeltaTime, std::vector<plugin::BodyId>& outNewBodies);
 
     /// Adds the fence (without the pieces that left; coloured by how far its nodes moved) and every flying

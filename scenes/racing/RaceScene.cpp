@@ -19,7 +19,7 @@ Status RaceScene::CreateDamageWorld()
 {
     mJobs = std::make_unique<common::ThreadJobSystem>(mSettings.mThreads);
     DamageWorldSettings damage;
-    damage.mJobs = mSettings.mThreads > 1 || mSettings.mDeferDents ? &mJobs->Get() : nullptr;
+    damage.mJobs = mSettings.mThreads > 1 || mSettings.mDeferDents || mSettings.mPropsOffThread ? &mJobs->Get() : nullptr;
     damage.mDeferDents = mSettings.mDeferDents;
     Result<std::unique_ptr<DamageWorld>> world = DamageWorld::Create(damage);
     if (!world)

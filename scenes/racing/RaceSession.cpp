@@ -65,10 +65,12 @@ int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const cha
         if (arg == "--help" || arg == "-h")
         {
             std::printf("usage: %s [--out DIR] [--duration S] [--speed M_PER_S] [--threads N] [--defer-dents]\n"
-                        "       [--no-pictures]\n  %s\n"
+                        "       [--props-off-thread] [--no-pictures]\n  %s\n"
                         "  --threads N  the game's job system runs dents on N threads (1: on the game's thread)\n"
                         "  --defer-dents  dents run as a task of the job system and land one frame later\n"
                         "               (DamageWorldSettings::mDeferDents; with --threads 1 the task runs inline)\n"
+                        "  --props-off-thread  the fence's FEM steps as a task of the job system, landing at the\n"
+                        "               next engine step (props::PropWorldSettings::mStepOffThread)\n"
                         "  Writes DIR/race.crumple (replay for crumple-replay), DIR/car.obj, DIR/parked.obj and, with\n"
                         "  pictures, DIR/before.png, DIR/after.png and DIR/frames/frame_NNNN.png.\n",
                         inProgram, inDescription);
@@ -83,6 +85,8 @@ int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const cha
             outOptions.mPictures = false;
         else if (arg == "--defer-dents")
             outOptions.mDeferDents = true;
+        else if (arg == "--props-off-thread")
+            outOptions.mPropsOffThread = true;
         else if (arg == "--out" && i + 1 < inArgc)
             outOptions.mOut = inArgv[++i];
         else if (arg == "--threads" && i + 1 < inArgc)

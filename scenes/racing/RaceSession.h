@@ -50,6 +50,7 @@ struct RaceOptions
     bool mPictures = true;                        ///< PNG before/after and frames
     int mThreads = 1;                             ///< Threads of the game's job system handed to Crumple
     bool mDeferDents = false;                     ///< DamageWorldSettings::mDeferDents
+    bool mPropsOffThread = false;                 ///< props::PropWorldSettings::mStepOffThread
 };
 
 /// Parses --out, --duration, --speed, --threads, --defer-dents, --no-pictures, --help, --version. Returns -1 to go on, else an exit code.

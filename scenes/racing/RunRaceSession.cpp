@@ -17,7 +17,8 @@ int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const Ma
         return 2;
     };
     Result<std::unique_ptr<RaceScene>> made = inMakeScene(
-        {.mSpeed = inOptions.mSpeed, .mThreads = inOptions.mThreads, .mDeferDents = inOptions.mDeferDents, .mAttach = true});
+        {.mSpeed = inOptions.mSpeed, .mThreads = inOptions.mThreads, .mDeferDents = inOptions.mDeferDents,
+         .mPropsOffThread = inOptions.mPropsOffThread, .mAttach = true});
     if (!made)
         return fail(made.GetError());
     RaceScene& scene = *made.Get();

@@ -27,13 +27,15 @@ struct CRUMPLE_API JobSystem
     int mWorkerCount = 1;                       ///< How many pieces can run at once (>= 1): a hint for splitting
 
     /// Starts inTask(inTaskContext) on a worker and returns at once with a ticket for mWaitTask (or runs it
-    /// before returning, a valid host too). Crumple starts at most one task at a time per world and waits for
-    /// it before it starts the next; the task never calls back into the job system.
+    /// before returning, a valid host too). Crumple has at most one task in flight per DamageWorld (deferred
+    /// dents) and one per props::PropWorld (props stepped off the thread), and waits for each before it starts
+    /// the next of its kind; tasks never call back into the job system, and results do not depend on the order
+    /// in which the host runs them.
     using StartTaskFunction = std::uint64_t (*)(void* inHost, void (*inTask)(void* inTaskContext), void* inTaskContext);
     /// Returns when the task of inTicket has finished (at once when it has).
     using WaitTaskFunction = void (*)(void* inHost, std::uint64_t inTicket);
-    StartTaskFunction mStartTask = nullptr; ///< Optional: lets DamageWorldSettings::mDeferDents run dents off the
-                                            ///< game's thread
+    StartTaskFunction mStartTask = nullptr; ///< Optional: lets DamageWorldSettings::mDeferDents run dents, and
+                                            ///< props::PropWorldSettings::mStepOffThread props, off the game's thread
     WaitTaskFunction mWaitTask = nullptr;   ///< Required with mStartTask
 };
 

@@ -27,6 +27,9 @@ enum class EPropRecord : std::uint32_t
     Step = 0x50535450u, // "PSTP"
     /// Pieces left a prop (PropWorld::TakeLooseFragments): u32 prop index, u32 node count, the u32 nodes fixed
     Loose = 0x504c4f53u, // "PLOS"
+    /// No payload, before any prop: the props were stepped off the game's thread (PropWorldSettings::
+    /// mStepOffThread), so every collision reached them at the next step record, not where it was recorded
+    Queued = 0x50515545u, // "PQUE"
 };
 
 /// A prop as recorded when it joined a PropWorld: enough to rebuild its solver bit for bit. The state is
@@ -84,7 +87,8 @@ struct CRUMPLE_API ReplayedProp
 /// Replays the props of a recording without an engine: each prop is rebuilt when it joined, on its recorded
 /// backend (a GPU prop on a device of ioProvider, which makes its context only then; null, or no device: on
 /// the CPU), takes the recorded collisions with its body (FemProp::ApplyCollision) and the recorded steps, in
-/// the recorded order. CPU props end bitwise as they did live, and GPU props on the same device and driver.
+/// the recorded order (after a Queued record, each collision at the first step recorded after it; those after
+/// the last step never reach a prop, as live). CPU props end bitwise as they did live, and GPU props on the same device and driver.
 /// Refused with a message naming the record on a corrupt or inconsistent prop record (among them a second
 /// prop for the same body, or records whose collision counts go back).
 CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,

@@ -39,6 +39,23 @@ struct CRUMPLE_API PropStepReport
     int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
 };
 
+/// How a PropWorld steps its props.
+struct CRUMPLE_API PropWorldSettings
+{
+    /// Off the game's thread (issue 12's "no hitch"): StartStep hands the props' step to a task of the damage
+    /// world's job system (DamageWorldSettings::mJobs, mStartTask; inline where it has none) and returns at
+    /// once; LandStep, after the engine's next step, waits for it and hands over what it did. A hit's FEM
+    /// step then costs the game's thread nothing but the wait, and its outcome (the held body's velocity,
+    /// loose pieces, the new shape) reaches the engine one step later. While a step is in flight the
+    /// collisions the world dispatches wait in a queue and reach the props that existed when they were
+    /// dispatched, in dispatch order, at the next StartStep (as they would have when dispatched unless the game
+    /// took loose pieces in between: nothing else changes a prop between its steps). Results do not depend on the job
+    /// system or its thread count: the same calls give bitwise the same props and recording. GPU props step
+    /// on the game's thread in StartStep (their context is current there); CPU props' element passes run on
+    /// the task alone (a task does not call back into the job system).
+    bool mStepOffThread = false;
+};
+
 /// A piece of a prop that broke loose, handed to the game as a rigid body (PropWorld::TakeLooseFragments).
 struct CRUMPLE_API LooseFragment
 {
@@ -66,12 +83,15 @@ struct CRUMPLE_API LooseFragment
 /// Threading: the world calls it from DamageWorld::Update/Flush on the game's thread; Step() runs there too.
 /// A CPU prop's element passes (forces, stiffness products) are split over the world's job system
 /// (DamageWorldSettings::mJobs) when it has one, each piece writing only its own nodes' sums, so the props'
-/// results are bitwise the same for any number of workers (fem::TetSolver::SetJobSystem).
+/// results are bitwise the same for any number of workers (fem::TetSolver::SetJobSystem). With
+/// PropWorldSettings::mStepOffThread the step runs as a task instead (StartStep, LandStep): every other call
+/// first waits for a step in flight, so the game's thread never reads a prop the task is writing.
 class CRUMPLE_API PropWorld final : public plugin::DamageListener
 {
 public:
     /// Registers with ioWorld, which must outlive this object.
-    static Result<std::unique_ptr<PropWorld>> Create(plugin::DamageWorld& ioWorld);
+    static Result<std::unique_ptr<PropWorld>> Create(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings = {});
+    /// Waits for a step in flight (its task points into this object).
     ~PropWorld() override;
     PropWorld(const PropWorld&) = delete;
     PropWorld& operator=(const PropWorld&) = delete;
@@ -88,8 +108,9 @@ public:
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
     /// which must be recording the same world and outlive this object or be detached (nullptr) first.
     /// Refused, recording nothing, when a recorder is attached already (detach it first), the recorder has
-    /// failed or is closed, or a prop added so far cannot be recorded (one that has stepped): attach the
-    /// recorder before the first Step().
+    /// failed or is closed, a prop added so far cannot be recorded (one that has stepped), or collisions wait
+    /// for a step (mStepOffThread; the recording would not hold them): attach the recorder before the first
+    /// Step() and the first hit. With mStepOffThread the recording says so first (EPropRecord::Queued).
     Status AttachRecorder(plugin::DamageRecorder* ioRecorder);
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);
@@ -108,8 +129,26 @@ public:
 
     /// Steps every prop by inDeltaTime (s, finite, > 0), in PropId order. A step some prop would refuse (a
     /// symplectic prop that would need more sub-steps than allowed: FemProp::CheckStep) is an error naming the
-    /// prop, and no prop steps and nothing is recorded.
+    /// prop, and no prop steps and nothing is recorded. StartStep then LandStep; refused, as StartStep, while a
+    /// step is in flight.
     Result<PropStepReport> Step(double inDeltaTime);
+    /// Starts the step Step(inDeltaTime) does: the collisions waiting (mStepOffThread) reach the props, the
+    /// step is recorded, and the props step, on a task of the world's job system with mStepOffThread (inline
+    /// without it, or where the job system cannot start tasks). Refused, changing nothing, as Step refuses,
+    /// and while a step is in flight (LandStep first). A collision the props refuse when it reaches them is
+    /// counted (GetRefusedCount) and does not stop the step.
+    Status StartStep(double inDeltaTime);
+    /// Waits for the step StartStep started and hands over its report; the struck members' velocities
+    /// (GetContactVelocity) are this step's from now on. An empty report when no step is in flight. The error
+    /// of a prop that failed to step (cannot happen after StartStep accepted the step; kept for a backend's
+    /// failure) names the prop; the props before it stepped.
+    Result<PropStepReport> LandStep();
+    /// True between StartStep and LandStep
+    bool HasStepInFlight() const { return mInFlight != nullptr && mInFlight->mActive; }
+    /// The settings it was made with
+    const PropWorldSettings& GetSettings() const { return mSettings; }
+    /// Collisions waiting for the next StartStep (mStepOffThread)
+    std::size_t GetQueuedCollisionCount() const { return mQueued.size(); }
     /// FemProp::Prepare for every prop (the props added so far): at level load, with the step the game will
     /// use, so that the first hit does not factor a prop's implicit system in its frame. Changes no state.
     /// Refused, preparing nothing, for a bad step length.
@@ -152,7 +191,7 @@ public:
     /// it sleeps (or for an unknown prop). Collisions reach a prop when the world dispatches them, which may
     /// be steps after the contact, so the latest hits stand until new ones arrive. A held prop body stands
     /// for the whole prop but a car meets only the members it touches: give this to the adapter's
-    /// SetHeldVelocity after each Step, so that the engine's next contact sees the struck timbers moving as
+    /// SetHeldVelocity after each Step (LandStep publishes a step's), so that the engine's next contact sees the struck timbers moving as
     /// the FEM moves them (a timber already pushed to the car's speed takes no new impulse; one its posts
     /// hold back takes what holds it back).
     Vec3 GetContactVelocity(PropId inProp) const
@@ -171,7 +210,7 @@ public:
     void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
 
 private:
-    explicit PropWorld(plugin::DamageWorld& ioWorld) : mWorld(&ioWorld) {}
+    PropWorld(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings) : mWorld(&ioWorld), mSettings(inSettings) {}
 
     struct Prop
     {
@@ -184,18 +223,51 @@ private:
         std::vector<NodalImpulse> mHits{};   ///< Nodal impulses of the collisions since the last Step
         std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
+        Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
+    };
+    // A step from StartStep to LandStep: what the task needs and what it made. Stable address for the task.
+    struct InFlight
+    {
+        PropWorld* mOwner = nullptr;
+        double mDeltaTime = 0.0;
+        std::vector<std::uint8_t> mOnTask;        ///< Per prop: steps on the task (else stepped in StartStep)
+        std::vector<std::optional<Mat3>> mBodyRotations; ///< Per prop, at StartStep: its body's frame (none: gone)
+        PropStepReport mReport;
+        Status mStatus = Status::Ok();            ///< The first prop that failed to step
+        std::uint64_t mTicket = 0;
+        bool mOnJobs = false;                     ///< Started with mStartTask (LandStep waits)
+        bool mActive = false;
+        mutable bool mWaited = false;
+    };
+    // Steps prop inIndex by the flight's step: report, status and the struck members' velocity.
+    void StepProp(InFlight& ioFlight, std::size_t inIndex);
+    static void RunStep(void* inFlight);
+    // Returns when no task is writing the props (a const call may read them then).
+    void WaitForStep() const;
+    // Applies a collision to the props of its bodies among the first inPropCount (counts, refusals, hits).
+    void ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount);
+    // A collision waiting for the next step, and how many props there were when it was dispatched (those it
+    // reaches, as it would have when dispatched).
+    struct QueuedCollision
+    {
+        plugin::Collision mCollision;
+        std::size_t mPropCount = 0;
     };
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
-    // mContactVelocity from the latest hits and the nodes' velocities now; moves new hits to mStruck.
-    void UpdateContactVelocity(Prop& ioProp, bool inSleeping) const;
+    // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
+    // body's rotation, zero without one); moves new hits to mStruck.
+    static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
     // GetCollisionPieces of inProp at inPositions.
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;
 
     plugin::DamageWorld* mWorld = nullptr;
+    PropWorldSettings mSettings;
     plugin::DamageRecorder* mRecorder = nullptr;
     std::vector<Prop> mProps;
+    std::vector<QueuedCollision> mQueued;     ///< mStepOffThread: dispatched, waiting for the next StartStep
+    std::unique_ptr<InFlight> mInFlight;
     std::uint64_t mCollisions = 0;
     std::uint64_t mRefused = 0;
     Status mFirstRefusal;

@@ -1,0 +1,240 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Props stepped off the game's thread (PropWorldSettings::mStepOffThread): the same props whatever the job
+// system, the same as on the game's thread when nothing happens between a step and its landing, and a
+// recording that replays bit for bit.
+#include "BrittlePanel.h"
+#include "ScratchDirectory.h"
+#include "ThreadJobSystem.h"
+#include "WorldFixture.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/props/PropRecording.h>
+#include <crumple/props/PropWorld.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <optional>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// Weak enough (1 GPa, a tenth of the shared brittle strength) that the hits knock pieces out of it.
+FemProp WeakPanel()
+{
+    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
+}
+
+// How the game drives the props after each engine step.
+enum class ELoop
+{
+    Step,         ///< Step(), then loose pieces: the step on the game's thread, or started and landed at once
+    LandThenStart ///< LandStep(), loose pieces, StartStep(): the step runs while the engine steps
+};
+
+// What a run left.
+struct Outcome
+{
+    std::vector<Vec3> mPositions, mVelocities;
+    std::vector<TetIndices> mElements;
+    int mBrokenLinks = 0;
+    int mLoosePieces = 0;
+    int mFractured = 0; ///< Steps' reports: props fractured
+    std::vector<std::byte> mRecording;
+};
+
+// Hard hits across the wall panel, the engine's Update dispatching each while the props are (or would be)
+// stepping; after each of 40 engine steps of 1/120 s the game drives the props as inLoop says and takes the
+// loose pieces. inThreads: 0 for no job system, else a ThreadJobSystem of that many threads. inLastHit: one
+// more hit after the last step (off the thread it waits for a step that never comes).
+Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool inLastHit = false)
+{
+    std::optional<common::ThreadJobSystem> jobs;
+    DamageWorldSettings settings;
+    if (inThreads > 0)
+    {
+        jobs.emplace(inThreads);
+        settings.mJobs = &jobs->Get();
+    }
+    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
+    const std::filesystem::path path = common::ScratchDirectory() / "props_off_thread.crumple";
+    std::unique_ptr<DamageRecorder> recorder;
+    if (inRecord)
+        recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = inOffThread}).Get();
+    if (inRecord)
+        REQUIRE(props->AttachRecorder(recorder.get()));
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    Outcome outcome;
+    for (int step = 0; step <= 40; ++step)
+    {
+        if ((step % 8 == 0 && step < 32) || (step == 40 && inLastHit))
+        {
+            const int hit = step / 8;
+            REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(40.0)));
+            const double y = -0.6 + 0.4 * hit, z = 0.6 - 0.3 * hit;
+            REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(y, z, 0.1 * step),
+                                                                           fixture.FrontContact(y + 0.1, z - 0.1, 0.1 * step)}));
+            fixture.mWorld.Flush();
+        }
+        if (step == 40)
+            break;
+        Result<PropStepReport> report = inLoop == ELoop::Step ? props->Step(1.0 / 120.0) : props->LandStep();
+        REQUIRE(report);
+        outcome.mFractured += report.Get().mFractured;
+        Result<std::vector<LooseFragment>> loose = props->TakeLooseFragments();
+        REQUIRE(loose);
+        outcome.mLoosePieces += static_cast<int>(loose.Get().size());
+        if (inLoop == ELoop::LandThenStart)
+            REQUIRE(props->StartStep(1.0 / 120.0));
+    }
+    const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver(); // waits for a step in flight
+    outcome.mPositions = solver.GetPositions();
+    outcome.mVelocities = solver.GetVelocities();
+    outcome.mElements = solver.GetElementNodes();
+    outcome.mBrokenLinks = solver.GetBrokenLinkCount();
+    if (inRecord)
+    {
+        REQUIRE(props->AttachRecorder(nullptr));
+        REQUIRE(recorder->Close());
+        outcome.mRecording = ReadFileBytes(path).Get();
+    }
+    return outcome;
+}
+
+void CheckSame(const Outcome& inA, const Outcome& inB)
+{
+    CHECK(inA.mBrokenLinks == inB.mBrokenLinks);
+    CHECK(inA.mLoosePieces == inB.mLoosePieces);
+    CHECK(inA.mFractured == inB.mFractured);
+    CHECK(inA.mElements == inB.mElements);
+    CHECK(inA.mPositions == inB.mPositions);
+    CHECK(inA.mVelocities == inB.mVelocities);
+}
+
+} // namespace
+
+TEST_CASE("Props off the game's thread end bitwise the same for any job system and thread count", "[props][threads]")
+{
+    const Outcome inline_run = Run(0, true, ELoop::LandThenStart, true);
+    // The run is worth comparing: the hits cracked the panel and knocked pieces out, taken between steps.
+    REQUIRE(inline_run.mBrokenLinks > 0);
+    REQUIRE(inline_run.mLoosePieces > 0);
+    for (int threads : {1, 2, 4})
+    {
+        INFO("threads " << threads);
+        const Outcome threaded = Run(threads, true, ELoop::LandThenStart, true);
+        CheckSame(threaded, inline_run);
+        CHECK(threaded.mRecording == inline_run.mRecording);
+    }
+}
+
+TEST_CASE("Props off the game's thread, landed before the next hit, are the props stepped on the game's thread",
+          "[props][threads]")
+{
+    // The collisions that waited reach the props just where they would have when dispatched: with hits that
+    // do not depend on the props (no engine here), bitwise the same run, whether each step lands at once or
+    // at the next engine step with the loose pieces taken in between. (In an engine the held body's velocity
+    // and the pieces then reach the engine a step later, and the run differs: the racing samples.)
+    const Outcome on_thread = Run(2, false, ELoop::Step, false);
+    REQUIRE(on_thread.mLoosePieces > 0);
+    CheckSame(Run(2, true, ELoop::Step, false), on_thread);
+    CheckSame(Run(2, true, ELoop::LandThenStart, false), on_thread);
+}
+
+TEST_CASE("Props off the game's thread replay bit for bit, loose pieces taken between landing and start", "[props][replay][threads]")
+{
+    // A last hit waits for a step that never comes: it must not reach the replayed prop either.
+    const Outcome live = Run(2, true, ELoop::LandThenStart, true, true);
+    REQUIRE(live.mLoosePieces > 0);
+    const Replay replay = DecodeReplay(live.mRecording).Get();
+    REQUIRE(!replay.mExtensions.empty());
+    CHECK(replay.mExtensions[0].mTag == static_cast<std::uint32_t>(EPropRecord::Queued));
+    const std::vector<ReplayedProp> replayed = ReplayProps(replay).Get();
+    REQUIRE(replayed.size() == 1u);
+    const TetSolver& again = *replayed[0].mProp.GetCpuSolver();
+    CHECK(again.GetBrokenLinkCount() == live.mBrokenLinks);
+    CHECK(again.GetElementNodes() == live.mElements);
+    CHECK(again.GetPositions() == live.mPositions);
+    CHECK(again.GetVelocities() == live.mVelocities);
+
+    // The same records read as stepped on the game's thread (no Queued record) give the last hit to the prop:
+    // the record is what makes the replay right.
+    Replay unqueued = replay;
+    unqueued.mExtensions.erase(unqueued.mExtensions.begin());
+    const std::vector<ReplayedProp> wrong = ReplayProps(unqueued).Get();
+    REQUIRE(wrong.size() == 1u);
+    CHECK(wrong[0].mProp.GetCpuSolver()->GetVelocities() != live.mVelocities);
+
+    // A Queued record after a prop's, or with a payload, is refused.
+    Replay late = replay;
+    std::swap(late.mExtensions[0], late.mExtensions[1]);
+    CHECK(ReplayProps(late).HasError());
+    Replay padded = replay;
+    padded.mExtensions[0].mPayload.push_back(std::byte{0});
+    CHECK(ReplayProps(padded).HasError());
+}
+
+TEST_CASE("Props off the game's thread: a second start, a late recorder and a collision older than its prop", "[props][threads]")
+{
+    common::ThreadJobSystem jobs(2);
+    common::WorldFixture fixture(4000, {8, 6, 6}, [&] {
+        DamageWorldSettings settings;
+        settings.mJobs = &jobs.Get();
+        return settings;
+    }());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    CHECK(props->GetSettings().mStepOffThread);
+
+    // Nothing in flight: an empty report.
+    Result<PropStepReport> nothing = props->LandStep();
+    REQUIRE(nothing);
+    CHECK(nothing.Get().mStepped == 0);
+    CHECK(nothing.Get().mSleeping == 0);
+
+    // A hit before the prop joined waits in no queue and never reaches it (as on the game's thread).
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(20.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
+    fixture.mWorld.Flush();
+    CHECK(props->GetQueuedCollisionCount() == 0u);
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    REQUIRE(props->StartStep(1.0 / 120.0));
+    REQUIRE(props->LandStep());
+    CHECK(props->GetCollisionCount() == 0u);
+    const std::vector<Vec3> at_rest = props->GetProp(wall)->GetCpuSolver()->GetVelocities();
+    CHECK(std::all_of(at_rest.begin(), at_rest.end(), [](const Vec3& v) { return v == Vec3::Zero(); }));
+
+    // A hit now waits for the next start; a recorder cannot start with it waiting.
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(20.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 1.0)}));
+    fixture.mWorld.Flush();
+    CHECK(props->GetQueuedCollisionCount() == 1u);
+    CHECK(props->GetCollisionCount() == 0u);
+    const std::filesystem::path path = common::ScratchDirectory() / "props_late_recorder.crumple";
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    CHECK(props->AttachRecorder(recorder.get()).HasError());
+
+    // The step starts with it; a second start before landing is refused and changes nothing.
+    REQUIRE(props->StartStep(1.0 / 120.0));
+    CHECK(props->HasStepInFlight());
+    CHECK(props->GetQueuedCollisionCount() == 0u);
+    CHECK(props->GetCollisionCount() == 1u);
+    const Status second = props->StartStep(1.0 / 120.0);
+    CHECK(second.HasError());
+    CHECK(props->Step(1.0 / 120.0).HasError());
+    CHECK(props->StartStep(-1.0).HasError());
+    Result<PropStepReport> landed = props->LandStep();
+    REQUIRE(landed);
+    CHECK(landed.Get().mStepped == 1);
+    CHECK_FALSE(props->HasStepInFlight());
+    // Landed: the struck material's velocity is this step's, and it moves away from the car (+x).
+    CHECK(props->GetContactVelocity(wall).x() > 0.0);
+    REQUIRE(recorder->Close());
+}
