@@ -234,6 +234,12 @@ const std::vector<double>& FemProp::GetMasses() const
     return mCpu->GetMasses();
 }
 
+const std::vector<double>& FemProp::GetInverseMasses() const
+{
+    CRUMPLE_PROPS_ON_GPU(GetInverseMasses())
+    return mCpu->GetInverseMasses();
+}
+
 const std::vector<fem::TetIndices>& FemProp::GetElementNodes() const
 {
     CRUMPLE_PROPS_ON_GPU(GetElementNodes())

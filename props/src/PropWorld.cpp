@@ -28,6 +28,12 @@ PropWorld::~PropWorld()
     mWorld->RemoveListener(this);
 }
 
+bool PropWorld::StepsOnTasks() const
+{
+    const JobSystem* jobs = mWorld->GetSettings().mJobs;
+    return mSettings.mStepOffThread && jobs != nullptr && jobs->mStartTask != nullptr && jobs->mWaitTask != nullptr;
+}
+
 void PropWorld::WaitForStep() const
 {
     if (!HasStepInFlight() || mInFlight->mWaited)
@@ -62,13 +68,12 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     mProps.push_back(Prop{.mBody = inBody, .mProp = std::move(ioProp)});
     // intent: a prop stepped on a task splits nothing over the job system (a task must not call back into it)
     if (fem::TetSolver* cpu = mProps.back().mProp.GetCpuSolver(); cpu != nullptr)
-        cpu->SetJobSystem(mSettings.mStepOffThread ? nullptr : mWorld->GetSettings().mJobs);
+        cpu->SetJobSystem(StepsOnTasks() ? nullptr : mWorld->GetSettings().mJobs);
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
 Status PropWorld::CheckCanAdd(const FemProp& inProp) const
 {
-    WaitForStep();
     if (mRecorder == nullptr)
         return Status::Ok();
     if (Status recorder = mRecorder->GetStatus(); recorder.HasError())
@@ -177,12 +182,6 @@ Status PropWorld::StartStep(double inDeltaTime)
             status.HasError())
             return status;
     }
-    // The collisions that waited reach the props now, in dispatch order, before the step (as they would have
-    // when dispatched: nothing changes a prop between its steps but a hand-over of loose pieces).
-    std::vector<QueuedCollision> queued;
-    queued.swap(mQueued);
-    for (const QueuedCollision& collision : queued)
-        ApplyToProps(collision.mCollision, collision.mPropCount);
     if (mInFlight == nullptr)
         mInFlight = std::make_unique<InFlight>();
     InFlight& flight = *mInFlight;
@@ -190,6 +189,12 @@ Status PropWorld::StartStep(double inDeltaTime)
     flight.mDeltaTime = inDeltaTime;
     flight.mReport = PropStepReport();
     flight.mStatus = Status::Ok();
+    flight.mTally = CollisionTally();
+    // The collisions that waited reach the props just before the step, in dispatch order (as they would have
+    // when dispatched: nothing changes a prop between its steps but a hand-over of loose pieces): on the
+    // task for the props it steps.
+    flight.mCollisions.clear();
+    flight.mCollisions.swap(mQueued);
     flight.mOnTask.assign(mProps.size(), 0);
     flight.mBodyRotations.assign(mProps.size(), std::nullopt);
     for (std::size_t index = 0; index < mProps.size(); ++index)
@@ -200,18 +205,23 @@ Status PropWorld::StartStep(double inDeltaTime)
         flight.mOnTask[index] = mProps[index].mProp.GetCpuSolver() != nullptr ? 1 : 0;
     }
     const JobSystem* jobs = mWorld->GetSettings().mJobs;
-    flight.mOnJobs = mSettings.mStepOffThread && jobs != nullptr && jobs->mStartTask != nullptr && jobs->mWaitTask != nullptr;
+    flight.mOnJobs = StepsOnTasks();
     flight.mWaited = false;
     flight.mActive = true;
     if (!flight.mOnJobs)
     {
+        for (const QueuedCollision& collision : flight.mCollisions)
+            ApplyToProps(collision.mCollision, collision.mPropCount, [](std::size_t) { return true; }, flight.mTally);
         for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
             StepProp(flight, index);
         return Status::Ok();
     }
     // intent: GPU props on the game's thread, where their context is current; the CPU props on the task
+    const auto on_thread = [&flight](std::size_t inProp) { return flight.mOnTask[inProp] == 0; };
+    for (const QueuedCollision& collision : flight.mCollisions)
+        ApplyToProps(collision.mCollision, collision.mPropCount, on_thread, flight.mTally);
     for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
-        if (flight.mOnTask[index] == 0)
+        if (on_thread(index))
             StepProp(flight, index);
     flight.mTicket = jobs->mStartTask(jobs->mHost, &PropWorld::RunStep, &flight);
     return Status::Ok();
@@ -220,9 +230,13 @@ Status PropWorld::StartStep(double inDeltaTime)
 void PropWorld::RunStep(void* inFlight)
 {
     auto* flight = static_cast<InFlight*>(inFlight);
-    for (std::size_t index = 0; index < flight->mOnTask.size(); ++index)
-        if (flight->mOnTask[index] != 0 && flight->mStatus.IsValid())
-            flight->mOwner->StepProp(*flight, index);
+    PropWorld& world = *flight->mOwner;
+    const auto on_task = [flight](std::size_t inProp) { return flight->mOnTask[inProp] != 0; };
+    for (const QueuedCollision& collision : flight->mCollisions)
+        world.ApplyToProps(collision.mCollision, collision.mPropCount, on_task, flight->mTally);
+    for (std::size_t index = 0; index < flight->mOnTask.size() && flight->mStatus.IsValid(); ++index)
+        if (on_task(index))
+            world.StepProp(*flight, index);
 }
 
 void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
@@ -253,6 +267,11 @@ Result<PropStepReport> PropWorld::LandStep()
     flight.mActive = false;
     for (std::size_t index = 0; index < flight.mOnTask.size(); ++index)
         mProps[index].mContactVelocity = mProps[index].mSteppedVelocity;
+    mTally.mCollisions += flight.mTally.mCollisions;
+    if (mTally.mRefused == 0 && flight.mTally.mRefused > 0)
+        mTally.mFirstRefusal = flight.mTally.mFirstRefusal;
+    mTally.mRefused += flight.mTally.mRefused;
+    flight.mCollisions.clear();
     if (flight.mStatus.HasError())
         return flight.mStatus.GetError();
     return flight.mReport;
@@ -285,6 +304,10 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         if (body == nullptr)
             continue; // its body left the world: nothing of it is in the game's world to hand over
         prop.mTaken.resize(static_cast<std::size_t>(prop.mProp.GetNodeCount()), 0);
+        // intent: a piece comes loose only when links break or anchors change; the pieces of an unchanged
+        // prop (most steps of a swinging fence) are not worked out again
+        if (IsSettled(prop))
+            continue;
         const std::vector<fem::TetFragment> fragments = prop.mProp.ComputeFragments();
         // A piece taken before has all its nodes fixed by us: it anchors nothing. The prop is held by a node
         // fixed otherwise; a prop held by none keeps the piece holding group 0 (its body carries it).
@@ -339,7 +362,33 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             prop.mTaken[static_cast<std::size_t>(node)] = 1;
         }
     }
+    // Every prop looked at has handed over all it had loose: settled until links break or anchors change.
+    for (Prop& prop : mProps)
+        if (mWorld->GetBodyState(prop.mBody) != nullptr)
+            Settle(prop);
     return loose;
+}
+
+bool PropWorld::IsSettled(const Prop& inProp)
+{
+    if (inProp.mSettledBrokenLinks != inProp.mProp.GetBrokenLinkCount())
+        return false;
+    const std::vector<double>& inverse_masses = inProp.mProp.GetInverseMasses();
+    if (inverse_masses.size() != inProp.mSettledFixed.size())
+        return false;
+    for (std::size_t node = 0; node < inverse_masses.size(); ++node)
+        if ((inverse_masses[node] == 0.0) != (inProp.mSettledFixed[node] != 0))
+            return false;
+    return true;
+}
+
+void PropWorld::Settle(Prop& ioProp)
+{
+    ioProp.mSettledBrokenLinks = ioProp.mProp.GetBrokenLinkCount();
+    const std::vector<double>& inverse_masses = ioProp.mProp.GetInverseMasses();
+    ioProp.mSettledFixed.resize(inverse_masses.size());
+    for (std::size_t node = 0; node < inverse_masses.size(); ++node)
+        ioProp.mSettledFixed[node] = inverse_masses[node] == 0.0 ? 1 : 0;
 }
 
 Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
@@ -457,23 +506,24 @@ void PropWorld::OnBeforeCollision(const plugin::Collision& inCollision)
             mQueued.push_back({inCollision, mProps.size()});
         return;
     }
-    ApplyToProps(inCollision, mProps.size());
+    ApplyToProps(inCollision, mProps.size(), [](std::size_t) { return true; }, mTally);
 }
 
-void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount)
+template <class Which>
+void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount, const Which& inWhich, CollisionTally& ioTally)
 {
     // Both bodies may carry a prop (a car hitting a fence carries none; two crates hitting each other two).
     for (const plugin::BodyId body : {inCollision.mBodyA, inCollision.mBodyB})
     {
         const PropId prop = FindProp(body);
-        if (!prop.IsValid() || prop.mValue >= inPropCount)
+        if (!prop.IsValid() || prop.mValue >= inPropCount || !inWhich(prop.mValue))
             continue;
-        ++mCollisions;
+        ++ioTally.mCollisions;
         Prop& hit = mProps[prop.mValue];
         if (Status status = hit.mProp.ApplyCollision(inCollision, body, &hit.mHits); status.HasError())
         {
-            if (mRefused++ == 0)
-                mFirstRefusal = status;
+            if (ioTally.mRefused++ == 0)
+                ioTally.mFirstRefusal = status;
         }
     }
 }

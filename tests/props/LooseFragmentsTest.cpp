@@ -114,6 +114,48 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
     CHECK(replayed[0].mProp.GetCpuSolver()->GetInverseMasses() == solver.GetInverseMasses());
 }
 
+TEST_CASE("Loose pieces: a prop whose links and anchors did not change is not searched again, and one whose "
+          "anchors changed is",
+          "[props]")
+{
+    // TakeLooseFragments skips a prop whose broken links and fixed nodes are those it last settled; the game
+    // un-fixing a node it had fixed must still let the piece it held go.
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    Smash(fixture, *props, wall, 12);
+    FemProp& prop = *props->GetProp(wall);
+    // The game pins one node of each loose piece: nothing is loose, twice (the second call skips the search).
+    std::vector<int> pins;
+    for (const TetFragment& piece : prop.ComputeFragments())
+        if (!piece.mAnchored)
+            pins.push_back(piece.mNodes.front());
+    REQUIRE_FALSE(pins.empty());
+    for (int node : pins)
+        REQUIRE(prop.SetNodeFixed(node, true));
+    CHECK(props->TakeLooseFragments().Get().empty());
+    CHECK(props->TakeLooseFragments().Get().empty());
+    // Unpinned, without a link breaking: the pieces leave at the next call.
+    for (int node : pins)
+        REQUIRE(prop.SetNodeFixed(node, false));
+    CHECK(props->TakeLooseFragments().Get().size() == pins.size());
+    CHECK(props->TakeLooseFragments().Get().empty());
+}
+
+TEST_CASE("Loose pieces: a prop settled before it cracked is searched again once links break", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    CHECK(props->TakeLooseFragments().Get().empty()); // whole: settled with no link broken
+    Smash(fixture, *props, wall, 12);
+    int loose = 0;
+    for (const TetFragment& piece : props->GetProp(wall)->ComputeFragments())
+        loose += piece.mAnchored ? 0 : 1;
+    REQUIRE(loose > 0);
+    CHECK(static_cast<int>(props->TakeLooseFragments().Get().size()) == loose);
+}
+
 TEST_CASE("Loose pieces lighter than the minimum mass are dropped without a body", "[props]")
 {
     common::WorldFixture fixture;

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -119,6 +120,45 @@ void CheckSame(const Outcome& inA, const Outcome& inB)
     CHECK(inA.mVelocities == inB.mVelocities);
 }
 
+// A host job system whose started tasks run only when waited for (a real host may run them that late): a call
+// that reads a prop without waiting for the step in flight sees it unstepped. Counts the tasks started.
+struct LazyTasks
+{
+    JobSystem mJobs;
+    void (*mTask)(void*) = nullptr;
+    void* mContext = nullptr;
+    int mStarted = 0;
+
+    LazyTasks(const LazyTasks&) = delete;
+    LazyTasks& operator=(const LazyTasks&) = delete;
+    LazyTasks()
+    {
+        mJobs.mHost = this;
+        mJobs.mParallelFor = [](void*, int inCount, void (*inTask)(void*, int), void* inContext) {
+            for (int index = 0; index < inCount; ++index)
+                inTask(inContext, index);
+        };
+        mJobs.mStartTask = [](void* inHost, void (*inTask)(void*), void* inContext) -> std::uint64_t {
+            auto* self = static_cast<LazyTasks*>(inHost);
+            REQUIRE(self->mTask == nullptr); // one in flight at a time
+            self->mTask = inTask;
+            self->mContext = inContext;
+            return static_cast<std::uint64_t>(++self->mStarted);
+        };
+        mJobs.mWaitTask = [](void* inHost, std::uint64_t) {
+            auto* self = static_cast<LazyTasks*>(inHost);
+            if (self->mTask != nullptr)
+                std::exchange(self->mTask, nullptr)(self->mContext);
+        };
+    }
+    DamageWorldSettings Settings() const
+    {
+        DamageWorldSettings settings;
+        settings.mJobs = &mJobs;
+        return settings;
+    }
+};
+
 } // namespace
 
 TEST_CASE("Props off the game's thread end bitwise the same for any job system and thread count", "[props][threads]")
@@ -184,12 +224,8 @@ TEST_CASE("Props off the game's thread replay bit for bit, loose pieces taken be
 
 TEST_CASE("Props off the game's thread: a second start, a late recorder and a collision older than its prop", "[props][threads]")
 {
-    common::ThreadJobSystem jobs(2);
-    common::WorldFixture fixture(4000, {8, 6, 6}, [&] {
-        DamageWorldSettings settings;
-        settings.mJobs = &jobs.Get();
-        return settings;
-    }());
+    LazyTasks host;
+    common::WorldFixture fixture(4000, {8, 6, 6}, host.Settings());
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
     CHECK(props->GetSettings().mStepOffThread);
 
@@ -199,7 +235,7 @@ TEST_CASE("Props off the game's thread: a second start, a late recorder and a co
     CHECK(nothing.Get().mStepped == 0);
     CHECK(nothing.Get().mSleeping == 0);
 
-    // A hit before the prop joined waits in no queue and never reaches it (as on the game's thread).
+    // A hit before any prop joined waits in no queue and never reaches one (as on the game's thread).
     REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(20.0)));
     REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
     fixture.mWorld.Flush();
@@ -220,21 +256,67 @@ TEST_CASE("Props off the game's thread: a second start, a late recorder and a co
     const std::filesystem::path path = common::ScratchDirectory() / "props_late_recorder.crumple";
     std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
     CHECK(props->AttachRecorder(recorder.get()).HasError());
+    REQUIRE(recorder->Close());
 
-    // The step starts with it; a second start before landing is refused and changes nothing.
+    // The step starts with it, as a task of the host; a second start before landing is refused and changes
+    // nothing.
+    const int started = host.mStarted;
     REQUIRE(props->StartStep(1.0 / 120.0));
+    CHECK(host.mStarted == started + 1);
     CHECK(props->HasStepInFlight());
     CHECK(props->GetQueuedCollisionCount() == 0u);
-    CHECK(props->GetCollisionCount() == 1u);
-    const Status second = props->StartStep(1.0 / 120.0);
-    CHECK(second.HasError());
+    CHECK(props->StartStep(1.0 / 120.0).HasError());
     CHECK(props->Step(1.0 / 120.0).HasError());
     CHECK(props->StartStep(-1.0).HasError());
+    CHECK(host.mStarted == started + 1);
+    CHECK(props->GetQueuedCollisionCount() == 0u);
+    CHECK(props->GetCollisionCount() == 0u);             // counted on the task, published by LandStep
+    CHECK(props->GetContactVelocity(wall) == Vec3::Zero()); // the last landed step's until LandStep
     Result<PropStepReport> landed = props->LandStep();
     REQUIRE(landed);
     CHECK(landed.Get().mStepped == 1);
     CHECK_FALSE(props->HasStepInFlight());
+    CHECK(props->GetCollisionCount() == 1u);
+    CHECK(props->GetRefusedCount() == 0u);
     // Landed: the struck material's velocity is this step's, and it moves away from the car (+x).
     CHECK(props->GetContactVelocity(wall).x() > 0.0);
+}
+
+TEST_CASE("Props off the game's thread: every read of a prop waits for the step in flight, and a prop added after a "
+          "collision was dispatched does not take it, live or replayed",
+          "[props][threads][replay]")
+{
+    // The host runs a task only when it is waited for: a read that did not wait would see the prop unstepped.
+    LazyTasks host;
+    common::WorldFixture fixture(4000, {8, 6, 6}, host.Settings());
+    const std::filesystem::path path = common::ScratchDirectory() / "props_added_late.crumple";
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()));
+    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(40.0)));
+    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
+    fixture.mWorld.Flush();
+    REQUIRE(props->GetQueuedCollisionCount() == 1u);
+    // The car's body takes a prop after its hit was dispatched: the hit reaches the wall only.
+    const PropId car = props->AddProp(fixture.mCar, WeakPanel()).Get();
+    REQUIRE(props->StartStep(1.0 / 120.0));
+    const std::vector<Vec3> wall_rest = props->GetProp(wall)->GetCpuSolver()->GetMesh().GetRestPositions();
+    const std::vector<Vec3> read_in_flight = props->GetProp(wall)->GetCpuSolver()->GetPositions(); // waits
+    REQUIRE(props->LandStep());
+    CHECK(props->GetCollisionCount() == 1u);
+    const std::vector<Vec3> wall_positions = props->GetProp(wall)->GetCpuSolver()->GetPositions();
+    CHECK(read_in_flight == wall_positions);
+    CHECK(wall_positions != wall_rest); // the step moved it: the read above saw the task's work
+    const std::vector<Vec3> car_velocities = props->GetProp(car)->GetCpuSolver()->GetVelocities();
+    CHECK(std::all_of(car_velocities.begin(), car_velocities.end(), [](const Vec3& v) { return v == Vec3::Zero(); }));
+    const std::vector<Vec3> car_positions = props->GetProp(car)->GetCpuSolver()->GetPositions();
+    REQUIRE(props->AttachRecorder(nullptr));
     REQUIRE(recorder->Close());
+
+    const std::vector<ReplayedProp> replayed = ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
+    REQUIRE(replayed.size() == 2u);
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == wall_positions);
+    CHECK(replayed[1].mProp.GetCpuSolver()->GetPositions() == car_positions);
+    CHECK(replayed[1].mProp.GetCpuSolver()->GetVelocities() == car_velocities);
 }

@@ -107,6 +107,8 @@ public:
     void ReadVelocities(std::vector<Vec3>& outVelocities) const;
     /// Lumped node masses (kg), #N
     const std::vector<double>& GetMasses() const;
+    /// Node inverse masses (1/kg), #N: 0 where the node is fixed
+    const std::vector<double>& GetInverseMasses() const;
     /// Number of nodes #N
     int GetNodeCount() const;
     /// Each element's current nodes (fracture gives a crack's sides nodes of their own)

@@ -46,13 +46,13 @@ struct CRUMPLE_API PropWorldSettings
     /// world's job system (DamageWorldSettings::mJobs, mStartTask; inline where it has none) and returns at
     /// once; LandStep, after the engine's next step, waits for it and hands over what it did. A hit's FEM
     /// step then costs the game's thread nothing but the wait, and its outcome (the held body's velocity,
-    /// loose pieces, the new shape) reaches the engine one step later. While a step is in flight the
-    /// collisions the world dispatches wait in a queue and reach the props that existed when they were
-    /// dispatched, in dispatch order, at the next StartStep (as they would have when dispatched unless the game
-    /// took loose pieces in between: nothing else changes a prop between its steps). Results do not depend on the job
-    /// system or its thread count: the same calls give bitwise the same props and recording. GPU props step
-    /// on the game's thread in StartStep (their context is current there); CPU props' element passes run on
-    /// the task alone (a task does not call back into the job system).
+    /// loose pieces, the new shape) reaches the engine one step later. The collisions the world dispatches
+    /// (in flight or not) wait in a queue and reach the props that existed when they were dispatched, in
+    /// dispatch order, at the next StartStep (as they would have when dispatched unless the game took loose
+    /// pieces in between: nothing else changes a prop between its steps). Results do not depend on the job
+    /// system or its thread count: the same calls give bitwise the same props and recording. GPU props take
+    /// their collisions and step on the game's thread in StartStep (their context is current there); CPU
+    /// props on the task, their element passes on it alone (a task does not call back into the job system).
     bool mStepOffThread = false;
 };
 
@@ -84,8 +84,11 @@ struct CRUMPLE_API LooseFragment
 /// A CPU prop's element passes (forces, stiffness products) are split over the world's job system
 /// (DamageWorldSettings::mJobs) when it has one, each piece writing only its own nodes' sums, so the props'
 /// results are bitwise the same for any number of workers (fem::TetSolver::SetJobSystem). With
-/// PropWorldSettings::mStepOffThread the step runs as a task instead (StartStep, LandStep): every other call
-/// first waits for a step in flight, so the game's thread never reads a prop the task is writing.
+/// PropWorldSettings::mStepOffThread the step runs as a task instead (StartStep, LandStep). Every call is the
+/// game's: those that read or change a prop (GetProp, AddProp, Prepare, AttachRecorder, TakeLooseFragments,
+/// GetCollisionPieces, TakeChangedShape) first wait for a step in flight; the inline getters (GetBody,
+/// FindProp, GetContactVelocity, GetShapeRevision, the collision counts) read only what the task does not
+/// write, and show the last landed step's values.
 class CRUMPLE_API PropWorld final : public plugin::DamageListener
 {
 public:
@@ -139,9 +142,10 @@ public:
     /// counted (GetRefusedCount) and does not stop the step.
     Status StartStep(double inDeltaTime);
     /// Waits for the step StartStep started and hands over its report; the struck members' velocities
-    /// (GetContactVelocity) are this step's from now on. An empty report when no step is in flight. The error
-    /// of a prop that failed to step (cannot happen after StartStep accepted the step; kept for a backend's
-    /// failure) names the prop; the props before it stepped.
+    /// (GetContactVelocity) and the collision counts are this step's from now on. An empty report when no
+    /// step is in flight. The error of a prop that failed to step (cannot happen after StartStep accepted the
+    /// step; kept for a backend's failure) names the prop; on the game's thread the props before it stepped,
+    /// off it the GPU props step first, then the CPU props up to the failing one.
     Result<PropStepReport> LandStep();
     /// True between StartStep and LandStep
     bool HasStepInFlight() const { return mInFlight != nullptr && mInFlight->mActive; }
@@ -200,9 +204,10 @@ public:
     }
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
     /// world validated; kept for diagnosis with the first refusal's reason)
-    std::uint64_t GetCollisionCount() const { return mCollisions; }
-    std::uint64_t GetRefusedCount() const { return mRefused; }
-    const Status& GetFirstRefusal() const { return mFirstRefusal; }
+    /// (mStepOffThread: counted when they reach the props, on the step's task, and published by LandStep)
+    std::uint64_t GetCollisionCount() const { return mTally.mCollisions; }
+    std::uint64_t GetRefusedCount() const { return mTally.mRefused; }
+    const Status& GetFirstRefusal() const { return mTally.mFirstRefusal; }
 
     /// Takes the collision's impulses onto the props of its bodies.
     void OnBeforeCollision(const plugin::Collision& inCollision) override;
@@ -217,6 +222,10 @@ private:
         plugin::BodyId mBody;
         FemProp mProp;
         std::vector<std::uint8_t> mTaken{}; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
+        /// What decided the pieces when TakeLooseFragments last looked and left none behind: while the links
+        /// broken and the fixed nodes are the same, no piece can be loose (ComputeFragments is skipped)
+        int mSettledBrokenLinks = -1;
+        std::vector<std::uint8_t> mSettledFixed{};
         std::uint64_t mPiecesTaken = 0;   ///< Pieces handed over
         std::uint64_t mShapeRevision = ~std::uint64_t{0}; ///< mPiecesTaken at the last TakeChangedShape
         std::vector<Vec3> mShapePositions{}; ///< Node positions at the last TakeChangedShape
@@ -224,6 +233,21 @@ private:
         std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
         Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
+        // A step's task writes mProp, mHits, mStruck and mSteppedVelocity of the props it steps, nothing else.
+    };
+    // Collisions that reached props, and those refused (the first one's reason kept).
+    struct CollisionTally
+    {
+        std::uint64_t mCollisions = 0;
+        std::uint64_t mRefused = 0;
+        Status mFirstRefusal;
+    };
+    // A collision waiting for the next step, and how many props there were when it was dispatched (those it
+    // reaches, as it would have when dispatched).
+    struct QueuedCollision
+    {
+        plugin::Collision mCollision;
+        std::size_t mPropCount = 0;
     };
     // A step from StartStep to LandStep: what the task needs and what it made. Stable address for the task.
     struct InFlight
@@ -232,29 +256,32 @@ private:
         double mDeltaTime = 0.0;
         std::vector<std::uint8_t> mOnTask;        ///< Per prop: steps on the task (else stepped in StartStep)
         std::vector<std::optional<Mat3>> mBodyRotations; ///< Per prop, at StartStep: its body's frame (none: gone)
+        std::vector<QueuedCollision> mCollisions; ///< mStepOffThread: what waited, applied before the step
+        CollisionTally mTally;                    ///< What the step's collisions did, until LandStep adds it
         PropStepReport mReport;
         Status mStatus = Status::Ok();            ///< The first prop that failed to step
         std::uint64_t mTicket = 0;
         bool mOnJobs = false;                     ///< Started with mStartTask (LandStep waits)
         bool mActive = false;
-        mutable bool mWaited = false;
+        bool mWaited = false;                     ///< LandStep or a read waited for the task
     };
     // Steps prop inIndex by the flight's step: report, status and the struck members' velocity.
     void StepProp(InFlight& ioFlight, std::size_t inIndex);
     static void RunStep(void* inFlight);
+    // Applies a collision to the props of its bodies among the first inPropCount for which inWhich(prop index)
+    // holds (hits kept for the contact velocity), counted in ioTally.
+    template <class Which>
+    void ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount, const Which& inWhich, CollisionTally& ioTally);
     // Returns when no task is writing the props (a const call may read them then).
     void WaitForStep() const;
-    // Applies a collision to the props of its bodies among the first inPropCount (counts, refusals, hits).
-    void ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount);
-    // A collision waiting for the next step, and how many props there were when it was dispatched (those it
-    // reaches, as it would have when dispatched).
-    struct QueuedCollision
-    {
-        plugin::Collision mCollision;
-        std::size_t mPropCount = 0;
-    };
+    // mStepOffThread with a job system that can start tasks: steps run as tasks.
+    bool StepsOnTasks() const;
     // The recording of a prop about to join, or an error when it cannot be recorded.
     Result<std::vector<std::byte>> RecordedSetup(plugin::BodyId inBody, const FemProp& inProp) const;
+    // True when inProp's links broken and fixed nodes are those TakeLooseFragments last settled: none can leave.
+    static bool IsSettled(const Prop& inProp);
+    // Remembers what settled inProp (after TakeLooseFragments handed over all its loose pieces).
+    static void Settle(Prop& ioProp);
     // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
     // body's rotation, zero without one); moves new hits to mStruck.
     static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
@@ -268,9 +295,7 @@ private:
     std::vector<Prop> mProps;
     std::vector<QueuedCollision> mQueued;     ///< mStepOffThread: dispatched, waiting for the next StartStep
     std::unique_ptr<InFlight> mInFlight;
-    std::uint64_t mCollisions = 0;
-    std::uint64_t mRefused = 0;
-    Status mFirstRefusal;
+    CollisionTally mTally;
 };
 
 } // namespace crumple::props
