@@ -126,37 +126,33 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, EFemBackend inBackend, co
     return setup;
 }
 
-Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
+namespace
 {
-    if (const fem::TetSolver* cpu = inProp.GetCpuSolver(); cpu != nullptr)
-    {
-        Result<PropSetup> setup = MakePropSetup(inBody, EFemBackend::Cpu, *cpu);
-        if (setup.IsValid())
-            setup.Get().mContactSpread = inProp.GetContactSpread();
-        return setup;
-    }
+
 #if defined(CRUMPLE_PROPS_WITH_GPU)
-    const gpu::GpuTetSolver& solver = *inProp.GetGpuSolver();
-    if (solver.GetElementWorkCount() != 0)
+// The setup of a GPU prop's solver (its state read back), refused once it has stepped.
+Result<PropSetup> GpuPropSetup(plugin::BodyId inBody, const gpu::GpuTetSolver& inSolver)
+{
+    if (inSolver.GetElementWorkCount() != 0)
         return MakeError(EError::InvalidArgument,
                          "MakePropSetup: the GPU prop has already stepped; record a prop before its first step (add it "
                          "to a recording PropWorld when it is made)");
-    const fem::TetMesh& mesh = solver.GetMesh();
+    const fem::TetMesh& mesh = inSolver.GetMesh();
     PropSetup setup;
     setup.mBody = inBody;
     setup.mBackend = EFemBackend::Gpu;
     setup.mRestPositions = mesh.GetRestPositions();
     setup.mTets = mesh.GetTets();
     setup.mGroups = mesh.GetGroups();
-    setup.mMaterial = solver.GetMaterialSettings();
-    setup.mSettings = solver.GetSettings();
-    if (Status read = solver.ReadNodeState(setup.mPositions, setup.mVelocities, setup.mExternalForces); read.HasError())
+    setup.mMaterial = inSolver.GetMaterialSettings();
+    setup.mSettings = inSolver.GetSettings();
+    if (Status read = inSolver.ReadNodeState(setup.mPositions, setup.mVelocities, setup.mExternalForces); read.HasError())
         return MakeError(EError::IoError, "MakePropSetup: the GPU prop's state could not be read back: " + read.GetError().mMessage);
-    const std::size_t nodes = static_cast<std::size_t>(solver.GetNodeCount());
+    const std::size_t nodes = static_cast<std::size_t>(inSolver.GetNodeCount());
     // intent: positions still where the solver was made (the GPU got them as floats) are recorded as the
     // double ones they came from, so the rebuilt CPU solver is the very one the live GPU solver was made from
     // (both then answer IsStillAndUnstrained alike: a prop made still sleeps at its first step in both)
-    const std::vector<Vec3>& made = solver.GetMadeRestPositions();
+    const std::vector<Vec3>& made = inSolver.GetMadeRestPositions();
     bool unmoved = made.size() == nodes;
     for (std::size_t node = 0; unmoved && node < nodes; ++node)
         unmoved = setup.mPositions[node] == made[node].cast<float>().cast<double>();
@@ -164,12 +160,26 @@ Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
         setup.mPositions = made;
     setup.mAnchored.resize(setup.mPositions.size());
     for (std::size_t node = 0; node < setup.mAnchored.size(); ++node)
-        setup.mAnchored[node] = solver.GetInverseMasses()[node] == 0.0 ? 1 : 0;
-    setup.mContactSpread = inProp.GetContactSpread();
+        setup.mAnchored[node] = inSolver.GetInverseMasses()[node] == 0.0 ? 1 : 0;
     return setup;
-#else
-    return MakeError(EError::InvalidArgument, "MakePropSetup: the prop has no solver");
+}
 #endif
+
+} // namespace
+
+Result<PropSetup> MakePropSetup(plugin::BodyId inBody, const FemProp& inProp)
+{
+    const fem::TetSolver* cpu = inProp.GetCpuSolver();
+#if defined(CRUMPLE_PROPS_WITH_GPU)
+    Result<PropSetup> setup = cpu != nullptr ? MakePropSetup(inBody, EFemBackend::Cpu, *cpu) : GpuPropSetup(inBody, *inProp.GetGpuSolver());
+#else
+    if (cpu == nullptr)
+        return MakeError(EError::InvalidArgument, "MakePropSetup: the prop has no solver");
+    Result<PropSetup> setup = MakePropSetup(inBody, EFemBackend::Cpu, *cpu);
+#endif
+    if (setup.IsValid())
+        setup.Get().mContactSpread = inProp.GetContactSpread();
+    return setup;
 }
 
 Status ValidatePropSetupSizes(const PropSetup& inSetup)
