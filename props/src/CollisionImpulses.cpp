@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace crumple::props
@@ -96,11 +97,10 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                 return MakeError(EError::OutOfRange, "CollisionNodalImpulses: element " + std::to_string(tet) + " names node " +
                                                          std::to_string(node) + " of " + std::to_string(inPositions.size()));
 
-    // Invert every element's edge matrix once for all contacts.
-    Result<BarycentricSearch> made = BarycentricSearch::Create(inElementNodes, inPositions);
-    if (!made)
-        return MakeError(made.GetError().mCode, "CollisionNodalImpulses: " + made.GetError().mMessage);
-    const BarycentricSearch& search = made.Get();
+    // intent: every element's edge matrix inverted once for all contacts, and only when a contact needs its
+    // element (one that spreads finds free nodes in reach without it). Create refuses only corners outside
+    // the nodes, checked above, so building it late changes no answer.
+    std::optional<BarycentricSearch> search;
 
     std::vector<NodalImpulse> impulses;
     impulses.reserve(4 * inCollision.mContacts.size()); // more when spread
@@ -124,8 +124,15 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
                 continue;
         }
 
+        if (!search)
+        {
+            Result<BarycentricSearch> made = BarycentricSearch::Create(inElementNodes, inPositions);
+            if (!made)
+                return MakeError(made.GetError().mCode, "CollisionNodalImpulses: " + made.GetError().mMessage);
+            search.emplace(std::move(made).Get());
+        }
         // The element whose smallest barycentric weight is largest: the containing one if any.
-        const BarycentricHit hit = search.FindBest(point);
+        const BarycentricHit hit = search->FindBest(point);
         if (hit.mElement < 0)
             return MakeError(EError::InvalidArgument, "CollisionNodalImpulses: every element is degenerate");
         const int best = hit.mElement;
