@@ -44,8 +44,12 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
         return;
     }
     Status stepped = Status::Ok();
+    std::vector<double> crumple_ms; // the attached frames' share of Crumple (adapter and fence, game-thread CPU)
+    crumple_ms.reserve(static_cast<std::size_t>(inFrames));
     const LockstepFrames timed = TimeLockstep(inFrames, [&](int inSide) {
         stepped = (inSide == 0 ? *bare.Get() : *attached.Get()).StepFrame(nullptr);
+        if (inSide == 1)
+            crumple_ms.push_back(attached.Get()->GetLastFrameCrumpleMs());
         return stepped.IsValid();
     });
     const std::vector<double>(&wall)[2] = timed.mWallMs;
@@ -67,7 +71,10 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
                      ";median_cpu_ms=" + FormatExtra(Quantile(cpu[1], 0.5)) +
                      ";bare_worst_cpu_ms=" + FormatExtra(*std::max_element(cpu[0].begin(), cpu[0].end())) +
                      ";bare_p99_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.99)) + ";bare_median_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.5)) +
-                     ";fence_worst_step_ms=" + FormatExtra(fence.GetWorstStepMs()) + ";frames=" + std::to_string(inFrames)});
+                     ";fence_worst_step_ms=" + FormatExtra(fence.GetWorstStepMs()) +
+                     ";crumple_worst_cpu_ms=" + FormatExtra(*std::max_element(crumple_ms.begin(), crumple_ms.end())) +
+                     ";crumple_worst_at_s=" + FormatExtra(worst_at(crumple_ms) / 60.0) +
+                     ";crumple_p99_cpu_ms=" + FormatExtra(Quantile(crumple_ms, 0.99)) + ";frames=" + std::to_string(inFrames)});
 }
 
 template <class Scene>

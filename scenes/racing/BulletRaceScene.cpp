@@ -209,9 +209,12 @@ Status BulletRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
     const double speed = static_cast<double>(mVehicle->getCurrentSpeedKmHour()) / 3.6;
     for (int wheel = 2; wheel < 4; ++wheel)
         mVehicle->applyEngineForce(speed < mSettings.mSpeed ? btScalar(6000) : btScalar(0), wheel);
+    mFrameCrumpleMs = 0.0;
     for (int sub = 0; sub < 4; ++sub)
     {
         mWorld->stepSimulation(btScalar(cFrame / 4.0), 0); // exactly one step of 1/240 s
+        if (mAdapter != nullptr)
+            mFrameCrumpleMs += 1.0e3 * mAdapter->GetLastStepStats().mSeconds;
         if (Status stepped = StepFence(cFrame / 4.0, inNewBodies); !stepped)
             return stepped;
     }

@@ -222,12 +222,16 @@ Status OdeRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
         dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamVel2, -mSettings.mSpeed / cWheelRadius);
         dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamFMax2, 1500.0);
     }
+    mFrameCrumpleMs = 0.0;
     for (int sub = 0; sub < 4; ++sub)
     {
         dSpaceCollide(mSpace, this, &OdeRaceScene::Near);
         dWorldQuickStep(mWorld, cStep);
         if (mAdapter != nullptr)
+        {
             mAdapter->AfterStep(cStep); // Crumple
+            mFrameCrumpleMs += 1.0e3 * mAdapter->GetLastStepStats().mSeconds;
+        }
         dJointGroupEmpty(mContacts);
         // The fence's FEM after each engine step: the held fence body takes the struck timbers' velocity.
         if (Status stepped = StepFence(cStep, inNewBodies); !stepped)

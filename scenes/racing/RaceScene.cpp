@@ -4,6 +4,8 @@
 #include "RaceFence.h"
 #include "ThreadJobSystem.h"
 
+#include <crumple/base/ThreadCpuClock.h>
+
 namespace crumple::samples
 {
 
@@ -43,7 +45,9 @@ Status RaceScene::StepFence(double inStep, const RaceNewBodies& inNewBodies)
     if (mFence == nullptr)
         return Status::Ok();
     mPieces.clear();
+    const double start = ThreadCpuSeconds();
     const Status stepped = mFence->Step(inStep, mPieces);
+    mFrameCrumpleMs += 1.0e3 * (ThreadCpuSeconds() - start);
     if (inNewBodies && !mPieces.empty())
         inNewBodies(mPieces);
     return stepped;

@@ -63,6 +63,11 @@ public:
     RaceFence* GetFence() { return mFence.get(); }
     /// The bodies' names for the collision log
     const std::map<plugin::BodyId, std::string>& GetNames() const { return mNames; }
+    /// Crumple's share of the last StepFrame (the game thread's CPU time, ms): the adapter's calls (its
+    /// GetLastStepStats().mSeconds: contacts, impulses, body states, dispatching and landing dents) and the
+    /// fence's Step (its FEM, or with mPropsOffThread its hand-over); not the engine's own collision
+    /// detection and solve, of the fence's pieces among other bodies. 0 without Crumple.
+    double GetLastFrameCrumpleMs() const { return mFrameCrumpleMs; }
 
 protected:
     explicit RaceScene(const RaceSceneSettings& inSettings);
@@ -81,6 +86,7 @@ protected:
     const plugin::DeformableObject* mCarObject = nullptr;
     const plugin::DeformableObject* mParkedObject = nullptr;
     std::map<plugin::BodyId, std::string> mNames;
+    double mFrameCrumpleMs = 0.0; ///< GetLastFrameCrumpleMs: the engine's scene resets it and adds its adapter's
 
 private:
     std::vector<plugin::BodyId> mPieces; // scratch: the bodies one engine step made

@@ -209,8 +209,9 @@ void RaceSession::BeginFrame()
     mFrameStart = std::chrono::steady_clock::now();
 }
 
-void RaceSession::EndFrame()
+void RaceSession::EndFrame(double inCrumpleMs)
 {
+    mFrameCrumpleMs.push_back(inCrumpleMs);
     mFrameWallMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mFrameStart).count());
     mFrameCpuMs.push_back(common::ThreadCpuMs() - mFrameStartCpuMs);
 }
@@ -238,7 +239,9 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
                 mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
     std::printf("%s\n", inFence.Summary().c_str());
     // intent: the worst frame and where it was, then the distribution (engine step + Crumple)
-    for (const auto& [times, what] : {std::pair{&mFrameWallMs, "wall"}, std::pair{&mFrameCpuMs, "game-thread CPU"}})
+    for (const auto& [times, what] : {std::pair{&mFrameWallMs, "engine step with Crumple, wall"},
+                                      std::pair{&mFrameCpuMs, "engine step with Crumple, game-thread CPU"},
+                                      std::pair{&mFrameCrumpleMs, "Crumple's share: adapter and fence, game-thread CPU"}})
     {
         if (times->empty())
             continue;
@@ -248,7 +251,7 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
         const auto at = [&](double inQuantile) {
             return sorted[static_cast<std::size_t>(inQuantile * static_cast<double>(sorted.size() - 1))];
         };
-        std::printf("physics frames (engine step with Crumple, %s, %d thread(s)): worst %.3f ms at frame %td "
+        std::printf("physics frames (%s, %d thread(s)): worst %.3f ms at frame %td "
                     "(t = %.2f s), 99th percentile %.3f ms, median %.3f ms over %zu frames\n",
                     what, mOptions.mThreads, *worst, worst - times->begin(),
                     static_cast<double>(worst - times->begin()) / 60.0, at(0.99), at(0.5), times->size());

@@ -94,7 +94,8 @@ public:
     /// prints the worst frame, the 99th percentile and the median, in wall time (what the game's thread
     /// waited, workers included) and in the game thread's CPU time, so that a damage hitch shows.
     void BeginFrame();
-    void EndFrame();
+    /// inCrumpleMs: Crumple's share of the frame (RaceScene::GetLastFrameCrumpleMs)
+    void EndFrame(double inCrumpleMs);
 
 private:
     RaceSession(const RaceOptions& inOptions, plugin::DamageWorld& ioDamage, std::map<plugin::BodyId, std::string> inNames)
@@ -109,6 +110,7 @@ private:
     int mFrames = 0;
     double mFrameStartCpuMs = 0.0;
     std::chrono::steady_clock::time_point mFrameStart;
+    std::vector<double> mFrameCrumpleMs; ///< Crumple's share of each frame (game-thread CPU, ms)
     std::vector<double> mFrameCpuMs;  ///< Thread CPU time of each physics frame on the game's thread (ms)
     std::vector<double> mFrameWallMs; ///< Wall time of each physics frame (ms): what the game's thread waited
 };

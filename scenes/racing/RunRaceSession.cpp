@@ -40,7 +40,7 @@ int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const Ma
     {
         session.BeginFrame();
         finished = scene.StepFrame(name_pieces);
-        session.EndFrame();
+        session.EndFrame(scene.GetLastFrameCrumpleMs());
         if (finished && frame % 6 == 0)
             session.PaintFrame(*scene.GetCar(), scene.GetCarPose(), *scene.GetParked(), scene.GetParkedPose(), fence);
     }

@@ -172,6 +172,10 @@ TEST_CASE("Bullet: a car driving on flat ground gets no damage", "[bullet]")
     const EngineCrashResult result = drive.Run();
     CHECK(result.mMaxDent == 0.0);
     CHECK(drive.GetAdapter().GetLastStepStats().mContactsReported > 0); // it is on the ground all along
+    // The adapter's own share of the step, on the game's thread: some, and far less than a step's 1/60 s.
+    const double seconds = drive.GetAdapter().GetLastStepStats().mSeconds;
+    CHECK(seconds > 0.0);
+    CHECK(seconds < 1.0 / 60.0);
 }
 
 TEST_CASE("Bullet: a compound chassis maps its children's contacts to its body", "[bullet]")

@@ -4,6 +4,7 @@
 
 #include <crumple/bullet/BulletAdapter.h>
 #include <crumple/bullet/BulletBodyState.h>
+#include <crumple/base/ThreadCpuClock.h>
 
 #include <btBulletDynamicsCommon.h>
 
@@ -298,6 +299,7 @@ Result<btConvexHullShape*> BulletAdapter::CreateFollowingHull(ObjectId inObject,
 
 void BulletAdapter::PreTick(double)
 {
+    const double start = ThreadCpuSeconds();
     // Pre-solve snapshot of every awake mapped body; sleeping bodies keep their last (resting) state.
     int snapshotted = 0;
     for (const MappedBody& mapped : mBodies)
@@ -309,10 +311,12 @@ void BulletAdapter::PreTick(double)
     }
     mLastStats = {};
     mLastStats.mBodiesSnapshotted = snapshotted;
+    mLastStats.mSeconds = ThreadCpuSeconds() - start;
 }
 
 void BulletAdapter::PostTick(double inTimeStep)
 {
+    const double start = ThreadCpuSeconds();
     mTime += inTimeStep;
 
     // Manifold points of mapped pairs that touch, in the dispatcher's (deterministic) order.
@@ -353,6 +357,7 @@ void BulletAdapter::PostTick(double inTimeStep)
     if (!mHulls.empty() && mDamage.GetShapeRevision() != mHullRevision)
         UpdateHulls();
     HoldProps();
+    mLastStats.mSeconds += ThreadCpuSeconds() - start;
 }
 
 void BulletAdapter::UpdateHulls()

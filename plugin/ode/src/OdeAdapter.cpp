@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ode/OdeAdapter.h>
 #include <crumple/ode/OdeBodyState.h>
+#include <crumple/base/ThreadCpuClock.h>
 
 #include <ode/ode.h>
 
@@ -294,6 +295,14 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
 {
     if (inCount == 0)
         return;
+    const double start = ThreadCpuSeconds();
+    // intent: every return below passes through this, so the step's time has all of its calls
+    struct AddTime
+    {
+        double mStart;
+        double& mSeconds;
+        ~AddTime() { mSeconds += ThreadCpuSeconds() - mStart; }
+    } add_time{start, mCurrent.mSeconds};
     const BodyId a = BodyOfGeom(inGeom1);
     const BodyId b = BodyOfGeom(inGeom2);
     if (!a.IsValid() || !b.IsValid() || a == b)
@@ -315,6 +324,7 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
 
 void OdeAdapter::AfterStep(double inTimeStep)
 {
+    const double start = ThreadCpuSeconds();
     mTime += inTimeStep;
     for (ContactEvent& event : mEvents)
         event.mTime = mTime;
@@ -324,6 +334,7 @@ void OdeAdapter::AfterStep(double inTimeStep)
         mCurrent.mContactsRefused = static_cast<int>(mEvents.size());
     mCurrent.mUpdate = mDamage.Update(mTime);
     HoldProps();
+    mCurrent.mSeconds += ThreadCpuSeconds() - start;
 
     // Ready for the next step.
     mLastStats = mCurrent;

@@ -43,6 +43,9 @@ struct CRUMPLE_API BulletStepStats
     int mContactsReported = 0;  ///< Manifold points submitted
     int mContactsRefused = 0;   ///< Points of a batch the damage world refused (non-finite engine output)
     plugin::UpdateReport mUpdate; ///< What the damage world dispatched
+    double mSeconds = 0.0;        ///< The game thread's CPU time in the adapter's two callbacks, the damage
+                                  ///< world's Update included (s, ThreadCpuSeconds): Crumple's share of the
+                                  ///< sub-step, waits for deferred dents left out
 };
 
 /// Connects a btDiscreteDynamicsWorld to a crumple::plugin::DamageWorld.

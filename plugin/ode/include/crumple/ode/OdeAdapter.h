@@ -27,6 +27,9 @@ struct CRUMPLE_API OdeStepStats
     int mContactsReported = 0;    ///< Contacts submitted
     int mContactsRefused = 0;     ///< Contacts in a batch the damage world refused (non-finite engine output)
     plugin::UpdateReport mUpdate; ///< What the damage world dispatched
+    double mSeconds = 0.0;        ///< The game thread's CPU time in OnCollide and AfterStep, the damage world's
+                                  ///< Update included (s, ThreadCpuSeconds): Crumple's share of the step,
+                                  ///< waits for deferred dents left out
 };
 
 /// Connects an ODE world to a crumple::plugin::DamageWorld with two calls per step:
