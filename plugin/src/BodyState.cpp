@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/BodyState.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include <string>
@@ -40,6 +41,11 @@ Status ValidateBodyState(const BodyState& inState)
         const double scale = inverse_inertia.cwiseAbs().maxCoeff();
         if ((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() > 1.0e-9 * scale)
             return MakeError(EError::InvalidArgument, "BodyState.mInverseInertiaWorld is not symmetric");
+        // intent: a Cholesky factorisation that succeeds proves the matrix positive definite, far cheaper than
+        // its eigenvalues (this runs for every awake body at every step); only a matrix it refuses (a zero or
+        // negative eigenvalue) is judged by its smallest eigenvalue against the tolerance
+        if (Eigen::LLT<Mat3>(inverse_inertia).info() == Eigen::Success)
+            return Status::Ok();
         const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(inverse_inertia, Eigen::EigenvaluesOnly).eigenvalues();
         if (eigenvalues.minCoeff() < -1.0e-12 * scale)
             return MakeError(EError::InvalidArgument,

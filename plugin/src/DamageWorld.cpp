@@ -255,21 +255,22 @@ std::vector<ObjectId> DamageWorld::GetObjectIds() const
 
 Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const
 {
-    const std::string where = "contact " + std::to_string(inIndex) + ": ";
+    // intent: the message's prefix made only for a refusal (this runs for every contact of every step)
+    const auto where = [inIndex] { return "contact " + std::to_string(inIndex) + ": "; };
     if (!IsLive(inContact.mBodyA) || !IsLive(inContact.mBodyB))
-        return MakeError(EError::OutOfRange, where + "names a body that does not exist");
+        return MakeError(EError::OutOfRange, where() + "names a body that does not exist");
     if (inContact.mBodyA == inContact.mBodyB)
-        return MakeError(EError::InvalidArgument, where + "a body cannot collide with itself");
+        return MakeError(EError::InvalidArgument, where() + "a body cannot collide with itself");
     if (!IsFinite(inContact.mPointOnA) || !IsFinite(inContact.mPointOnB) || !IsFinite(inContact.mNormal) ||
         !IsFinite(inContact.mPenetrationDepth) || !IsFinite(inContact.mTime))
-        return MakeError(EError::NonFinite, where + "has a NaN or Inf field");
+        return MakeError(EError::NonFinite, where() + "has a NaN or Inf field");
     if (std::abs(inContact.mNormal.norm() - 1.0) > 1.0e-3)
-        return MakeError(EError::InvalidArgument, where + "mNormal must be a unit vector");
+        return MakeError(EError::InvalidArgument, where() + "mNormal must be a unit vector");
     // Within twice the bodies' range (BodyState.h), so lever arms and impulses stay far from overflow.
     if (!(inContact.mPointOnA.cwiseAbs().maxCoeff() <= 2.0 * cMaxBodyPosition) ||
         !(inContact.mPointOnB.cwiseAbs().maxCoeff() <= 2.0 * cMaxBodyPosition) ||
         !(std::abs(inContact.mPenetrationDepth) <= cMaxBodyPosition))
-        return MakeError(EError::OutOfRange, where + "a point or the depth is farther than 2e9 m from the world's origin");
+        return MakeError(EError::OutOfRange, where() + "a point or the depth is farther than 2e9 m from the world's origin");
     return Status::Ok();
 }
 

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
+
 #include <limits>
 
 using namespace crumple;
@@ -44,6 +46,23 @@ TEST_CASE("ValidateBodyState accepts a normal body and names bad fields", "[plug
     CHECK(ValidateBodyState(wall).IsValid());
     CHECK(wall.InverseMass() == 0.0);
     CHECK(wall.InverseInertia() == Mat3::Zero());
+}
+
+TEST_CASE("ValidateBodyState judges an inverse inertia by its smallest eigenvalue, semi-definite ones too", "[plugin]")
+{
+    // In a tilted frame, so that no entry alone tells: R diag(d) R^T.
+    const Mat3 tilt = (Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized())).toRotationMatrix();
+    const auto with_eigenvalues = [&](const Vec3& inEigenvalues) {
+        BodyState state;
+        state.mInverseInertiaWorld = tilt * inEigenvalues.asDiagonal() * tilt.transpose();
+        state.mInverseInertiaWorld = 0.5 * (state.mInverseInertiaWorld + state.mInverseInertiaWorld.transpose()).eval();
+        return ValidateBodyState(state);
+    };
+    CHECK(with_eigenvalues(Vec3(0.5, 0.25, 2.0)).IsValid());  // positive definite (the fast path)
+    CHECK(with_eigenvalues(Vec3(0.5, 0.0, 2.0)).IsValid());   // infinite inertia about one axis
+    CHECK(with_eigenvalues(Vec3(0.5, -1.0e-15, 2.0)).IsValid()); // within the tolerance of 1e-12 x the largest entry
+    CHECK(with_eigenvalues(Vec3(0.5, -1.0e-6, 2.0)).HasError());
+    CHECK(with_eigenvalues(Vec3(-0.5, 0.25, 2.0)).HasError());
 }
 
 TEST_CASE("A motion type outside the enum is refused", "[plugin]")
