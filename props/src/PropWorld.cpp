@@ -195,6 +195,8 @@ Status PropWorld::StartStep(double inDeltaTime)
     // task for the props it steps.
     flight.mCollisions.clear();
     flight.mCollisions.swap(mQueued);
+    const JobSystem* jobs = mWorld->GetSettings().mJobs;
+    flight.mOnJobs = StepsOnTasks();
     flight.mOnTask.assign(mProps.size(), 0);
     flight.mBodyRotations.assign(mProps.size(), std::nullopt);
     for (std::size_t index = 0; index < mProps.size(); ++index)
@@ -202,41 +204,34 @@ Status PropWorld::StartStep(double inDeltaTime)
         // intent: the body's frame as the step starts, read here: the engine moves bodies while the task runs
         if (const plugin::BodyState* state = mWorld->GetBodyState(mProps[index].mBody); state != nullptr)
             flight.mBodyRotations[index] = state->mTransform.mRotation;
-        flight.mOnTask[index] = mProps[index].mProp.GetCpuSolver() != nullptr ? 1 : 0;
+        // intent: GPU props on the game's thread, where their context is current; the rest on the task (all
+        // of them, in PropId order, when the task runs inline)
+        flight.mOnTask[index] = !flight.mOnJobs || mProps[index].mProp.GetCpuSolver() != nullptr ? 1 : 0;
     }
-    const JobSystem* jobs = mWorld->GetSettings().mJobs;
-    flight.mOnJobs = StepsOnTasks();
     flight.mWaited = false;
     flight.mActive = true;
-    if (!flight.mOnJobs)
-    {
-        for (const QueuedCollision& collision : flight.mCollisions)
-            ApplyToProps(collision.mCollision, collision.mPropCount, [](std::size_t) { return true; }, flight.mTally);
-        for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
-            StepProp(flight, index);
-        return Status::Ok();
-    }
-    // intent: GPU props on the game's thread, where their context is current; the CPU props on the task
-    const auto on_thread = [&flight](std::size_t inProp) { return flight.mOnTask[inProp] == 0; };
-    for (const QueuedCollision& collision : flight.mCollisions)
-        ApplyToProps(collision.mCollision, collision.mPropCount, on_thread, flight.mTally);
-    for (std::size_t index = 0; index < mProps.size() && flight.mStatus.IsValid(); ++index)
-        if (on_thread(index))
-            StepProp(flight, index);
-    flight.mTicket = jobs->mStartTask(jobs->mHost, &PropWorld::RunStep, &flight);
+    RunPart(flight, false);
+    if (flight.mOnJobs)
+        flight.mTicket = jobs->mStartTask(jobs->mHost, &PropWorld::RunStep, &flight);
+    else
+        RunStep(&flight);
     return Status::Ok();
 }
 
 void PropWorld::RunStep(void* inFlight)
 {
     auto* flight = static_cast<InFlight*>(inFlight);
-    PropWorld& world = *flight->mOwner;
-    const auto on_task = [flight](std::size_t inProp) { return flight->mOnTask[inProp] != 0; };
-    for (const QueuedCollision& collision : flight->mCollisions)
-        world.ApplyToProps(collision.mCollision, collision.mPropCount, on_task, flight->mTally);
-    for (std::size_t index = 0; index < flight->mOnTask.size() && flight->mStatus.IsValid(); ++index)
-        if (on_task(index))
-            world.StepProp(*flight, index);
+    flight->mOwner->RunPart(*flight, true);
+}
+
+void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
+{
+    const auto mine = [&ioFlight, inOnTask](std::size_t inProp) { return (ioFlight.mOnTask[inProp] != 0) == inOnTask; };
+    for (const QueuedCollision& collision : ioFlight.mCollisions)
+        ApplyToProps(collision.mCollision, collision.mPropCount, mine, ioFlight.mTally);
+    for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
+        if (mine(index))
+            StepProp(ioFlight, index);
 }
 
 void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)

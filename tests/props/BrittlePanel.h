@@ -35,4 +35,11 @@ inline props::FemProp BrittlePanel(const std::array<int, 3>& inCells, double inY
     return prop;
 }
 
+/// The panel weak enough (1 GPa, a tenth of the shared brittle strength, 8 x 8 cells) that the car's hard hits
+/// knock pieces out of it.
+inline props::FemProp WeakPanel()
+{
+    return BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
+}
+
 } // namespace crumple::test

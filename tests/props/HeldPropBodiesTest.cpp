@@ -58,12 +58,6 @@ struct CountingEngine
     std::size_t CallCount() const { return mBodies.size() + mShapes.size() + mVelocities.size(); }
 };
 
-// A weak brittle panel (a tenth of the shared strength, 8 x 8 cells) that hard hits knock pieces out of.
-FemProp WeakPanel()
-{
-    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
-}
-
 // One hard hit of the car at (y, z) of the panel, dispatched at once.
 void Hit(common::WorldFixture& ioFixture, int inHit)
 {
@@ -82,7 +76,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = 0.5, .mShapeTolerance = 0.005, .mMinPieceMass = 0.0}).Get();
 
@@ -160,7 +154,7 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engi
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
 
     HeldPropEngine no_bodies = engine.Calls();
@@ -217,7 +211,7 @@ TEST_CASE("HeldPropBodies gives a shape the engine refused again at the next upd
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls()).Get();
     engine.mRefuseShapes = true;
@@ -243,8 +237,8 @@ TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), an
     // The wall's prop is held; a second prop on the floor body stands for a free crate the engine moves.
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
-    const PropId crate = props->AddProp(fixture.mFloor, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    const PropId crate = props->AddProp(fixture.mFloor, test::WeakPanel()).Get();
     CountingEngine engine;
     HeldPropEngine calls = engine.Calls();
     calls.mIsHeld = [&](BodyId inBody) { return inBody == fixture.mWall; };

@@ -23,13 +23,6 @@ using namespace crumple::props;
 namespace
 {
 
-// The panel of these tests: weak enough (1 GPa, a tenth of the shared brittle strength, 8 x 8 cells) that hard
-// hits knock pieces out of it.
-FemProp WeakPanel()
-{
-    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
-}
-
 // Momentum of the prop's free nodes, world frame.
 Vec3 FreeMomentum(const TetSolver& inSolver, const Mat3& inRotation)
 {
@@ -67,7 +60,7 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
     std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
     REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     Smash(fixture, *props, wall, 12);
 
     const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver();
@@ -122,7 +115,7 @@ TEST_CASE("Loose pieces: a prop whose links and anchors did not change is not se
     // un-fixing a node it had fixed must still let the piece it held go.
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     Smash(fixture, *props, wall, 12);
     FemProp& prop = *props->GetProp(wall);
     // The game pins one node of each loose piece: nothing is loose, twice (the second call skips the search).
@@ -146,7 +139,7 @@ TEST_CASE("Loose pieces: a prop settled before it cracked is searched again once
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CHECK(props->TakeLooseFragments().Get().empty()); // whole: settled with no link broken
     Smash(fixture, *props, wall, 12);
     int loose = 0;
@@ -160,7 +153,7 @@ TEST_CASE("Loose pieces lighter than the minimum mass are dropped without a body
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     Smash(fixture, *props, wall, 12);
     const std::vector<LooseFragment> loose = props->TakeLooseFragments(1.0e9).Get();
     REQUIRE_FALSE(loose.empty());
@@ -179,7 +172,7 @@ TEST_CASE("A free prop keeps the piece its body carries, however often its loose
     // and the second call handed over the piece the prop's own body carries.
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    FemProp panel = WeakPanel();
+    FemProp panel = test::WeakPanel();
     for (int node = 0; node < panel.GetNodeCount(); ++node)
         REQUIRE(panel.SetNodeFixed(node, false).IsValid()); // free: nothing holds it
     const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();

@@ -27,10 +27,12 @@ using namespace crumple::props;
 namespace
 {
 
-// Weak enough (1 GPa, a tenth of the shared brittle strength) that the hits knock pieces out of it.
-FemProp WeakPanel()
+// One contact of the car at speed inSpeed (m/s) on the panel's centre at time inTime (s), dispatched at once.
+void HitCentre(common::WorldFixture& ioFixture, double inSpeed, double inTime)
 {
-    return test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1);
+    REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(inSpeed)));
+    REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{ioFixture.FrontContact(0.0, 0.0, inTime)}));
+    ioFixture.mWorld.Flush();
 }
 
 // How the game drives the props after each engine step.
@@ -72,7 +74,7 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = inOffThread}).Get();
     if (inRecord)
         REQUIRE(props->AttachRecorder(recorder.get()));
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     Outcome outcome;
     for (int step = 0; step <= 40; ++step)
     {
@@ -236,11 +238,9 @@ TEST_CASE("Props off the game's thread: a second start, a late recorder and a co
     CHECK(nothing.Get().mSleeping == 0);
 
     // A hit before any prop joined waits in no queue and never reaches one (as on the game's thread).
-    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(20.0)));
-    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
-    fixture.mWorld.Flush();
+    HitCentre(fixture, 20.0, 0.0);
     CHECK(props->GetQueuedCollisionCount() == 0u);
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     REQUIRE(props->StartStep(1.0 / 120.0));
     REQUIRE(props->LandStep());
     CHECK(props->GetCollisionCount() == 0u);
@@ -248,9 +248,7 @@ TEST_CASE("Props off the game's thread: a second start, a late recorder and a co
     CHECK(std::all_of(at_rest.begin(), at_rest.end(), [](const Vec3& v) { return v == Vec3::Zero(); }));
 
     // A hit now waits for the next start; a recorder cannot start with it waiting.
-    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(20.0)));
-    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 1.0)}));
-    fixture.mWorld.Flush();
+    HitCentre(fixture, 20.0, 1.0);
     CHECK(props->GetQueuedCollisionCount() == 1u);
     CHECK(props->GetCollisionCount() == 0u);
     const std::filesystem::path path = common::ScratchDirectory() / "props_late_recorder.crumple";
@@ -293,13 +291,11 @@ TEST_CASE("Props off the game's thread: every read of a prop waits for the step 
     std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
     REQUIRE(props->AttachRecorder(recorder.get()));
-    const PropId wall = props->AddProp(fixture.mWall, WeakPanel()).Get();
-    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(40.0)));
-    REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}));
-    fixture.mWorld.Flush();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitCentre(fixture, 40.0, 0.0);
     REQUIRE(props->GetQueuedCollisionCount() == 1u);
     // The car's body takes a prop after its hit was dispatched: the hit reaches the wall only.
-    const PropId car = props->AddProp(fixture.mCar, WeakPanel()).Get();
+    const PropId car = props->AddProp(fixture.mCar, test::WeakPanel()).Get();
     REQUIRE(props->StartStep(1.0 / 120.0));
     const std::vector<Vec3> wall_rest = props->GetProp(wall)->GetCpuSolver()->GetMesh().GetRestPositions();
     const std::vector<Vec3> read_in_flight = props->GetProp(wall)->GetCpuSolver()->GetPositions(); // waits

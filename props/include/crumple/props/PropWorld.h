@@ -254,7 +254,7 @@ private:
     {
         PropWorld* mOwner = nullptr;
         double mDeltaTime = 0.0;
-        std::vector<std::uint8_t> mOnTask;        ///< Per prop: steps on the task (else stepped in StartStep)
+        std::vector<std::uint8_t> mOnTask;        ///< Per prop: steps on the task (else in StartStep, before it)
         std::vector<std::optional<Mat3>> mBodyRotations; ///< Per prop, at StartStep: its body's frame (none: gone)
         std::vector<QueuedCollision> mCollisions; ///< mStepOffThread: what waited, applied before the step
         CollisionTally mTally;                    ///< What the step's collisions did, until LandStep adds it
@@ -268,6 +268,9 @@ private:
     // Steps prop inIndex by the flight's step: report, status and the struck members' velocity.
     void StepProp(InFlight& ioFlight, std::size_t inIndex);
     static void RunStep(void* inFlight);
+    // The flight's collisions onto, then the step of, the props on the task (inOnTask) or off it, in PropId
+    // order, stopping at a prop that fails.
+    void RunPart(InFlight& ioFlight, bool inOnTask);
     // Applies a collision to the props of its bodies among the first inPropCount for which inWhich(prop index)
     // holds (hits kept for the contact velocity), counted in ioTally.
     template <class Which>
