@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <string>
 
 namespace crumple::props
@@ -37,8 +36,13 @@ Result<std::vector<std::vector<Vec3>>> PropCollisionPieces(std::span<const Vec3>
             return MakeError(EError::InvalidArgument, "PropCollisionPieces: the cell size is too small for the positions "
                                                       "(more than 2^52 cubes from the origin)");
     }
-    // intent: each cube's nodes, cubes ordered (z, y, x) so that the pieces come out the same every time
-    std::map<std::array<std::int64_t, 3>, std::vector<int>> cubes;
+    // intent: each kept element's cube (z, y, x), then one sort of the elements by cube, with no allocation per
+    // cube; each cube's run gives its piece. Pieces and node order are those of an ordered map from cube to
+    // nodes, which this replaces (its tree and per-cube lists cost most of a call).
+    std::vector<std::array<std::int64_t, 3>> cubes;
+    std::vector<std::uint32_t> kept;
+    cubes.reserve(inElements.size());
+    kept.reserve(inElements.size());
     for (std::size_t element = 0; element < inElements.size(); ++element)
     {
         if (element < inLeftOut.size() && inLeftOut[element] != 0)
@@ -48,19 +52,71 @@ Result<std::vector<std::vector<Vec3>>> PropCollisionPieces(std::span<const Vec3>
             centroid += inPositions[static_cast<std::size_t>(node)];
         centroid *= 0.25;
         const Vec3 cell = (centroid / inCellSize).array().floor();
-        std::vector<int>& nodes = cubes[{static_cast<std::int64_t>(cell.z()), static_cast<std::int64_t>(cell.y()),
-                                         static_cast<std::int64_t>(cell.x())}];
-        nodes.insert(nodes.end(), inElements[element].begin(), inElements[element].end());
+        cubes.push_back({static_cast<std::int64_t>(cell.z()), static_cast<std::int64_t>(cell.y()), static_cast<std::int64_t>(cell.x())});
+        kept.push_back(static_cast<std::uint32_t>(element));
     }
-    std::vector<std::vector<Vec3>> pieces;
-    pieces.reserve(cubes.size());
-    for (auto& [cube, nodes] : cubes)
+    // intent: a cube as one integer, in the same (z, y, x) order, when the cubes' box has fewer than 2^62 cubes
+    // (any prop within reason); a far-flung prop is sorted by the triple itself
+    std::array<std::int64_t, 3> low{}, extent{};
+    bool packed = !cubes.empty();
+    for (int axis = 0; axis < 3 && packed; ++axis)
     {
+        std::int64_t lo = cubes[0][axis], hi = cubes[0][axis];
+        for (const std::array<std::int64_t, 3>& cube : cubes)
+        {
+            lo = std::min(lo, cube[axis]);
+            hi = std::max(hi, cube[axis]);
+        }
+        low[axis] = lo;
+        extent[axis] = hi - lo + 1; // below 2^53: cube indices are below 2^52 in size
+        packed = extent[axis] < (std::int64_t{1} << 20);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order(kept.size()); // (packed cube, index into kept)
+    if (packed)
+        for (std::size_t k = 0; k < kept.size(); ++k)
+        {
+            const std::array<std::int64_t, 3>& cube = cubes[k];
+            order[k] = {static_cast<std::uint64_t>(((cube[0] - low[0]) * extent[1] + (cube[1] - low[1])) * extent[2] + (cube[2] - low[2])),
+                        static_cast<std::uint32_t>(k)};
+        }
+    else
+    {
+        std::vector<std::uint32_t> by_triple(kept.size());
+        for (std::size_t k = 0; k < kept.size(); ++k)
+            by_triple[k] = static_cast<std::uint32_t>(k);
+        std::stable_sort(by_triple.begin(), by_triple.end(), [&](std::uint32_t inA, std::uint32_t inB) { return cubes[inA] < cubes[inB]; });
+        std::uint64_t rank = 0;
+        for (std::size_t k = 0; k < kept.size(); ++k)
+        {
+            rank += k > 0 && cubes[by_triple[k]] != cubes[by_triple[k - 1]] ? 1 : 0;
+            order[k] = {rank, by_triple[k]};
+        }
+    }
+    std::sort(order.begin(), order.end());
+
+    // intent: a cube's distinct nodes by a stamp per node (no sort of the duplicates), then ascending
+    std::vector<std::uint32_t> stamp(inPositions.size(), 0);
+    std::uint32_t cube_stamp = 0;
+    std::vector<std::vector<Vec3>> pieces;
+    std::vector<int> nodes;
+    for (std::size_t first = 0; first < order.size();)
+    {
+        ++cube_stamp;
+        nodes.clear();
+        std::size_t end = first;
+        for (; end < order.size() && order[end].first == order[first].first; ++end)
+            for (int node : inElements[kept[order[end].second]])
+                if (stamp[static_cast<std::size_t>(node)] != cube_stamp)
+                {
+                    stamp[static_cast<std::size_t>(node)] = cube_stamp;
+                    nodes.push_back(node);
+                }
         std::sort(nodes.begin(), nodes.end());
-        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
         std::vector<Vec3>& piece = pieces.emplace_back();
+        piece.reserve(nodes.size());
         for (int node : nodes)
             piece.push_back(inPositions[static_cast<std::size_t>(node)]);
+        first = end;
     }
     return pieces;
 }

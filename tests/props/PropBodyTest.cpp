@@ -17,6 +17,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <random>
+#include <set>
 #include <cmath>
 #include <limits>
 
@@ -140,6 +144,68 @@ TEST_CASE("MakePropBody and PropCollisionPieces refuse bad input and leave out w
     std::vector<fem::TetIndices> elements = slab.GetTets();
     elements.back()[1] = static_cast<int>(slab.GetRestPositions().size());
     CHECK(PropCollisionPieces(slab.GetRestPositions(), elements, {}, 0.25).GetError().mCode == EError::OutOfRange);
+}
+
+namespace
+{
+
+// The pieces as the definition reads: an ordered map from cube (z, y, x) to its elements' nodes, each
+// cube's nodes deduplicated and ascending.
+std::vector<std::vector<Vec3>> MapPieces(std::span<const Vec3> inPositions, std::span<const fem::TetIndices> inElements,
+                                         std::span<const std::uint8_t> inLeftOut, double inCellSize)
+{
+    std::map<std::array<std::int64_t, 3>, std::set<int>> cubes;
+    for (std::size_t element = 0; element < inElements.size(); ++element)
+    {
+        if (element < inLeftOut.size() && inLeftOut[element] != 0)
+            continue;
+        Vec3 centroid = Vec3::Zero();
+        for (int node : inElements[element])
+            centroid += inPositions[static_cast<std::size_t>(node)];
+        const Vec3 cell = (0.25 * centroid / inCellSize).array().floor();
+        cubes[{static_cast<std::int64_t>(cell.z()), static_cast<std::int64_t>(cell.y()), static_cast<std::int64_t>(cell.x())}]
+            .insert(inElements[element].begin(), inElements[element].end());
+    }
+    std::vector<std::vector<Vec3>> pieces;
+    for (const auto& [cube, nodes] : cubes)
+    {
+        std::vector<Vec3>& piece = pieces.emplace_back();
+        for (int node : nodes)
+            piece.push_back(inPositions[static_cast<std::size_t>(node)]);
+    }
+    return pieces;
+}
+
+} // namespace
+
+TEST_CASE("PropCollisionPieces equals the cube map it stands for, near the origin and far from it", "[props]")
+{
+    // A slab crumpled at random (elements straddle cubes, some cubes share nodes), a third of its elements
+    // left out; then the same moved far out along one axis (more cubes between the extremes than one integer
+    // can number) and spread over a span wider than 2^20 cubes.
+    const fem::TetMesh slab = fem::TetGrid({.mSize = Vec3(1.0, 0.6, 0.4), .mCellCount = {10, 6, 4}}).Get();
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+    std::vector<Vec3> positions = slab.GetRestPositions();
+    for (Vec3& position : positions)
+        position += Vec3(jitter(random), jitter(random), jitter(random));
+    std::vector<std::uint8_t> left_out(slab.GetTets().size(), 0);
+    for (std::size_t element = 0; element < left_out.size(); element += 3)
+        left_out[element] = 1;
+    for (const Vec3& offset : {Vec3(0.0, 0.0, 0.0), Vec3(-0.37, 0.11, -0.05), Vec3(1.0e9, -3.0e8, 0.0)})
+        for (double cell : {0.05, 0.25, 0.7})
+        {
+            INFO("offset " << offset.transpose() << ", cell " << cell);
+            std::vector<Vec3> moved = positions;
+            for (Vec3& position : moved)
+                position += offset;
+            CHECK(PropCollisionPieces(moved, slab.GetTets(), left_out, cell).Get() == MapPieces(moved, slab.GetTets(), left_out, cell));
+            CHECK(PropCollisionPieces(moved, slab.GetTets(), {}, cell).Get() == MapPieces(moved, slab.GetTets(), {}, cell));
+        }
+    std::vector<Vec3> spread = positions;
+    spread[0] = Vec3(-4.0e5, 2.0e5, 1.0e5); // with 0.05 m cubes: 8e6 cubes from the rest of the slab
+    CHECK(PropCollisionPieces(spread, slab.GetTets(), {}, 0.05).Get() == MapPieces(spread, slab.GetTets(), {}, 0.05));
+    CHECK(PropCollisionPieces(positions, slab.GetTets(), std::vector<std::uint8_t>(left_out.size(), 1), 0.25).Get().empty());
 }
 
 TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed over", "[props]")
