@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/ffd/OneSidedControls.h>
@@ -401,6 +402,7 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
 void FfdDeformer::CommitZoneDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
                                   double inMaxStep, DentReport& ioReport)
 {
+    CatchUp();
     DentReport& report = ioReport;
     // Scale the dent down as a whole if it would move a vertex too far in one go or in total.
     std::vector<int> changed;
@@ -817,6 +819,7 @@ void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, De
 
 void FfdDeformer::RecomputeAll()
 {
+    CatchUp();
     // intent: the fold guard's trial field follows controls set from outside a dent (Reset, a loaded state)
     for (std::size_t z = 0; z < mZones.size(); ++z)
         mGuardControls[z] = mZones[z].GetControlDisplacements();
@@ -849,6 +852,7 @@ void FfdDeformer::SetPublishing(bool inOn)
 {
     if (inOn == mPublishing)
         return;
+    CatchUp();
     mPublishing = inOn;
     if (inOn)
     {
@@ -856,6 +860,7 @@ void FfdDeformer::SetPublishing(bool inOn)
         mPublishedNormals = mNormals;
         mPublishedDirty = mDirty;
         std::fill(mDirty.begin(), mDirty.end(), std::uint8_t{0});
+        mStaleMarks.assign(mDirty.size(), 0);
     }
     else
     {
@@ -865,6 +870,7 @@ void FfdDeformer::SetPublishing(bool inOn)
         mPublishedPositions = {};
         mPublishedNormals = {};
         mPublishedDirty = {};
+        mStaleMarks = {};
     }
 }
 
@@ -872,14 +878,36 @@ void FfdDeformer::Publish()
 {
     if (!mPublishing)
         return;
+    // intent: one branch-free pass (the compiler vectorizes it); on the game's thread, where dents land
+    std::uint8_t any = 0;
     for (std::size_t v = 0; v < mDirty.size(); ++v)
-        if (mDirty[v] != 0)
+    {
+        mPublishedDirty[v] = static_cast<std::uint8_t>(mPublishedDirty[v] | mDirty[v]);
+        any = static_cast<std::uint8_t>(any | mDirty[v]);
+    }
+    if (any == 0)
+        return;
+    // intent: whatever marked vertices dirty caught up first, so the working buffers hold the latest state
+    // everywhere, and the stale marks are all zero: they become the fresh dirty marks
+    CRUMPLE_ASSERT(!mStale, "FfdDeformer::Publish: a change did not catch up with the last Publish");
+    mPositions.swap(mPublishedPositions);
+    mNormals.swap(mPublishedNormals);
+    mDirty.swap(mStaleMarks);
+    mStale = true;
+}
+
+void FfdDeformer::CatchUp()
+{
+    if (!mStale)
+        return;
+    for (std::size_t v = 0; v < mStaleMarks.size(); ++v)
+        if (mStaleMarks[v] != 0)
         {
-            mPublishedPositions[v] = mPositions[v];
-            mPublishedNormals[v] = mNormals[v];
-            mPublishedDirty[v] = 1;
-            mDirty[v] = 0;
+            mPositions[v] = mPublishedPositions[v];
+            mNormals[v] = mPublishedNormals[v];
+            mStaleMarks[v] = 0;
         }
+    mStale = false;
 }
 
 void FfdDeformer::RecomputeNormals()

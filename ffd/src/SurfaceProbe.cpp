@@ -203,7 +203,7 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                         std::isfinite(inProbe.mThirdMin) && std::isfinite(inProbe.mThirdMax);
     if (!finite)
         return {};
-    ProbeScan scan(inProbe, mPositions, mRestMesh.mPositions, mRestMesh.mTriangles);
+    ProbeScan scan(inProbe, GetCurrentPositions(), mRestMesh.mPositions, mRestMesh.mTriangles);
 
     // intent: what lies in no zone never moved and has no cell: scan it all
     for (std::uint32_t v : mSurfaceIndex->LooseVertices())
@@ -282,7 +282,7 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                     // answer; cell order costs several times more per item on an imported mesh)
                     if (visited > budget)
                     {
-                        ProbeScan everything(inProbe, mPositions, mRestMesh.mPositions, mRestMesh.mTriangles);
+                        ProbeScan everything(inProbe, GetCurrentPositions(), mRestMesh.mPositions, mRestMesh.mTriangles);
                         everything.Everything();
                         return everything.Result();
                     }

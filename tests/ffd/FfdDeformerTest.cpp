@@ -605,3 +605,71 @@ TEST_CASE("One-sided dents: a push that is not one-sided is left as solved", "[f
     const Eigen::RowVector3d push = wanted.colwise().sum().normalized();
     CHECK(delta.row(1).dot(push) == Approx(0.0).margin(1e-15));
 }
+
+TEST_CASE("Publishing shows the last published dents while later ones work, through every call in between", "[ffd]")
+{
+    // A deformer that publishes beside one that does not, given the same dents: after each Publish the
+    // published view equals the plain one bit for bit, and whatever runs between a Publish and the next
+    // dent (a probe, the current positions, a copy, a recompute, publishing turned off) sees the latest
+    // state, though the working buffers lack the published vertices until a change copies them back.
+    FfdDeformer plain = MakeDeformer();
+    FfdDeformer published = MakeDeformer();
+    published.SetPublishing(true);
+    (void)published.TakeDirtyRanges();
+    const std::vector<Vec3> rest = published.GetPositions();
+    SurfaceProbe probe; // looks along -x into the front face, over the first dent's deepest point
+    probe.mDirection = -Vec3::UnitX();
+    probe.mSide = Vec3::UnitY();
+    probe.mThird = -Vec3::UnitZ();
+    probe.mSideMin = 0.2;
+    probe.mSideMax = 0.4;
+    probe.mThirdMin = -0.2;
+    probe.mThirdMax = 0.0;
+    const std::vector<PointDisplacement> rear{{Vec3(-2.0, 0.2, 0.0), Vec3(0.06, 0.0, 0.0)}};
+
+    REQUIRE(plain.ApplyDent(FrontDent(0.08)).IsValid());
+    REQUIRE(published.ApplyDent(FrontDent(0.08)).IsValid());
+    CHECK(SameBytes(published.GetPositions(), rest)); // not published yet
+    CHECK(SameBytes(published.GetCurrentPositions(), plain.GetPositions()));
+    published.Publish();
+    CHECK(SameBytes(published.GetPositions(), plain.GetPositions()));
+    CHECK(SameBytes(published.GetNormals(), plain.GetNormals()));
+    CHECK(SameBytes(published.GetCurrentPositions(), plain.GetPositions()));
+    const SurfaceProbeResult seen = published.ProbeSurface(probe), expected = plain.ProbeSurface(probe);
+    CHECK(seen.mFront == expected.mFront);
+    CHECK(seen.mMoved == expected.mMoved);
+    CHECK(seen.mMoved > 0.02); // the probe saw the dent, not the rest mesh
+    published.Publish(); // nothing new: the published view stays
+    CHECK(SameBytes(published.GetPositions(), plain.GetPositions()));
+
+    // A copy taken between a Publish and the next dent dents like the original.
+    FfdDeformer copy = published;
+    for (FfdDeformer* deformer : {&plain, &published, &copy})
+        REQUIRE(deformer->ApplyDent(rear).IsValid());
+    for (FfdDeformer* deformer : {&published, &copy})
+    {
+        CHECK_FALSE(SameBytes(deformer->GetPositions(), plain.GetPositions())); // the rear dent waits
+        deformer->Publish();
+        CHECK(SameBytes(deformer->GetPositions(), plain.GetPositions()));
+        CHECK(SameBytes(deformer->GetNormals(), plain.GetNormals()));
+    }
+    // The game is told of every vertex either dent moved (the plain deformer's dirty marks since the start).
+    CHECK(published.TakeDirtyRanges() == plain.TakeDirtyRanges());
+
+    // A third dent, published; then the calls that change the whole state, each on a copy.
+    for (FfdDeformer* deformer : {&plain, &published})
+        REQUIRE(deformer->ApplyDent(FrontDent(-0.03)).IsValid());
+    published.Publish();
+    FfdDeformer recomputed = published;
+    recomputed.RecomputeAll();
+    CHECK(SameBytes(recomputed.GetPositions(), plain.GetPositions()));
+    CHECK(SameBytes(recomputed.GetNormals(), plain.GetNormals()));
+    FfdDeformer unpublished = published;
+    unpublished.SetPublishing(false);
+    CHECK(SameBytes(unpublished.GetPositions(), plain.GetPositions()));
+    CHECK(SameBytes(unpublished.GetNormals(), plain.GetNormals()));
+    FfdDeformer reset = published;
+    reset.Reset();
+    CHECK(SameBytes(reset.GetPositions(), rest));
+    CHECK(SameBytes(published.GetPositions(), plain.GetPositions()));
+}

@@ -88,14 +88,18 @@ public:
     /// Unit vertex normals (area-weighted), body frame, #V: the published ones while publishing
     const std::vector<Vec3>& GetNormals() const { return mPublishing ? mPublishedNormals : mNormals; }
     /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published
-    const std::vector<Vec3>& GetCurrentPositions() const { return mPositions; }
+    const std::vector<Vec3>& GetCurrentPositions() const { return mStale ? mPublishedPositions : mPositions; }
 
     /// Deferred publishing (plugin::DamageWorldSettings::mDeferDents): while on, GetPositions, GetNormals and
     /// the dirty ranges show the state of the last Publish(), which no dent writes, so the game may read
     /// them while a worker dents this deformer. Turning it on publishes the current state; off drops the copy.
     void SetPublishing(bool inOn);
-    /// Copies the vertices dents changed since the last Publish() into the published state and marks them
-    /// for TakeDirtyRanges. RecomputeAll (Reset, SetControlDisplacements) publishes by itself.
+    /// Makes the dents since the last Publish() the published state and marks their vertices for
+    /// TakeDirtyRanges. RecomputeAll (Reset, SetControlDisplacements) publishes by itself.
+    /// It costs a pass over one byte per vertex, whatever the dents moved: the published and working buffers
+    /// trade places, and the next change to this deformer (on the worker that dents it) first copies the
+    /// vertices the new working buffer lacks. So the arrays behind GetPositions() and GetNormals() may be
+    /// others after a Publish: take them again rather than keep their data pointers.
     void Publish();
     bool IsPublishing() const { return mPublishing; }
     /// The undeformed mesh
@@ -159,6 +163,9 @@ private:
     void UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport);
     Vec3 VertexNormal(std::uint32_t inVertex) const;
     Vec3 FaceNormal(std::uint32_t inTriangle) const;
+    // After a Publish the working buffers lack the vertices it published (mStale): copies them back from the
+    // published ones. Every change to positions, normals or dirty marks calls it first.
+    void CatchUp();
 
     FfdDeformerSettings mSettings;
     TriangleMesh mRestMesh;
@@ -208,6 +215,10 @@ private:
     std::vector<Vec3> mPublishedPositions;      ///< Publishing: what GetPositions shows
     std::vector<Vec3> mPublishedNormals;        ///< Publishing: what GetNormals shows
     std::vector<std::uint8_t> mPublishedDirty;  ///< Publishing: published and not yet taken
+    /// Publishing: the vertices mPositions and mNormals lack since the last Publish (it swapped the buffers);
+    /// while mStale, the published buffers are the current state. All zero when !mStale.
+    std::vector<std::uint8_t> mStaleMarks;
+    bool mStale = false;
     const JobSystem* mJobs = nullptr; ///< The host's workers for per-vertex work; null: inline
     std::uint64_t mVertexEvaluations = 0;
 };
