@@ -231,7 +231,13 @@ void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
         ApplyToProps(collision.mCollision, collision.mPropCount, mine, ioFlight.mTally);
     for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
         if (mine(index))
+        {
             StepProp(ioFlight, index);
+            // intent: only where the step runs as a task of its own: inline, the calls would do the same work
+            // at once, and only when asked
+            if (inOnTask && ioFlight.mOnJobs && ioFlight.mStatus.IsValid())
+                ForecastHandOver(mProps[index]);
+        }
 }
 
 void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
@@ -303,19 +309,22 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         // prop (most steps of a swinging fence) are not worked out again
         if (IsSettled(prop))
             continue;
-        const std::vector<fem::TetFragment> fragments = prop.mProp.ComputeFragments();
-        // A piece taken before has all its nodes fixed by us: it anchors nothing. The prop is held by a node
-        // fixed otherwise; a prop held by none keeps the piece holding group 0 (its body carries it).
-        const auto taken = [&](const fem::TetFragment& inPiece) { return prop.mTaken[static_cast<std::size_t>(inPiece.mNodes[0])] != 0; };
-        const bool held = std::any_of(fragments.begin(), fragments.end(),
-                                      [&](const fem::TetFragment& f) { return f.mAnchored && !taken(f); });
-        std::vector<std::size_t> leaving;
-        for (std::size_t f = 0; f < fragments.size(); ++f)
-            if (!fragments[f].mAnchored && (held || f != 0))
-                leaving.push_back(f);
+        prop.mProp.ReadPositions(positions);
+        std::vector<fem::TetFragment> fragments;
+        if (prop.mForecast.mHasFragments && ForecastHolds(prop, positions))
+        {
+            fragments = std::move(prop.mForecast.mFragments);
+            ++mHandOverStats.mFragmentsForecast;
+        }
+        else
+        {
+            fragments = prop.mProp.ComputeFragments();
+            ++mHandOverStats.mFragmentsComputed;
+        }
+        prop.mForecast.mHasFragments = false;
+        const std::vector<std::size_t> leaving = LeavingFragments(prop, fragments);
         if (leaving.empty())
             continue;
-        prop.mProp.ReadPositions(positions);
         prop.mProp.ReadVelocities(velocities);
         for (std::size_t f : leaving)
         {
@@ -432,12 +441,16 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     Prop& prop = mProps[inProp.mValue];
     std::vector<Vec3> positions;
     prop.mProp.ReadPositions(positions);
-    bool changed = prop.mShapeRevision != prop.mPiecesTaken || prop.mShapePositions.size() != positions.size();
-    for (std::size_t node = 0; node < positions.size() && !changed; ++node)
-        changed = (positions[node] - prop.mShapePositions[node]).squaredNorm() > inTolerance * inTolerance;
-    if (!changed)
+    prop.mShapeCellSize = inCellSize;
+    prop.mShapeTolerance = inTolerance;
+    const bool forecast = prop.mForecast.mHasPieces && prop.mForecast.mCellSize == inCellSize &&
+                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && ForecastHolds(prop, positions);
+    prop.mForecast.mHasPieces = false;
+    if (!ShapeChanged(prop, positions, inTolerance))
         return std::optional<std::vector<std::vector<Vec3>>>();
-    Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(prop, positions, inCellSize);
+    Result<std::vector<std::vector<Vec3>>> pieces = forecast ? Result<std::vector<std::vector<Vec3>>>(std::move(prop.mForecast.mPieces))
+                                                             : PiecesOf(prop, positions, inCellSize);
+    ++(forecast ? mHandOverStats.mShapesForecast : mHandOverStats.mShapesComputed);
     if (pieces.HasError())
         return MakeError(pieces.GetError().mCode, "PropWorld::TakeChangedShape: " + pieces.GetError().mMessage);
     prop.mShapeRevision = prop.mPiecesTaken;

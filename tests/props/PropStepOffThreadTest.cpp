@@ -50,8 +50,15 @@ struct Outcome
     int mBrokenLinks = 0;
     int mLoosePieces = 0;
     int mFractured = 0; ///< Steps' reports: props fractured
+    std::vector<std::vector<int>> mLooseNodes;    ///< Each loose piece's nodes, in hand-over order
+    std::vector<double> mLooseMasses;             ///< ... and its rigid body's mass (0 when dropped)
+    std::vector<std::vector<std::vector<Vec3>>> mShapes; ///< Every changed shape taken, in order
+    PropHandOverStats mHandOver;
     std::vector<std::byte> mRecording;
 };
+
+// The shape the loop takes after the loose pieces: 0.25 m cubes, following the panel to 10 micrometres (it barely moves between hits).
+constexpr double cShapeCell = 0.25, cShapeTolerance = 1.0e-5;
 
 // Hard hits across the wall panel, the engine's Update dispatching each while the props are (or would be)
 // stepping; after each of 40 engine steps of 1/120 s the game drives the props as inLoop says and takes the
@@ -76,6 +83,21 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
         REQUIRE(props->AttachRecorder(recorder.get()));
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     Outcome outcome;
+    // The hand-over after each landed step: loose pieces, then the changed shape.
+    const auto hand_over = [&] {
+        Result<std::vector<LooseFragment>> loose = props->TakeLooseFragments();
+        REQUIRE(loose);
+        outcome.mLoosePieces += static_cast<int>(loose.Get().size());
+        for (const LooseFragment& piece : loose.Get())
+        {
+            outcome.mLooseNodes.push_back(piece.mNodes);
+            outcome.mLooseMasses.push_back(piece.mDropped ? 0.0 : piece.mRigidBody.mBody.mMass);
+        }
+        Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props->TakeChangedShape(wall, cShapeCell, cShapeTolerance);
+        REQUIRE(shape);
+        if (shape.Get())
+            outcome.mShapes.push_back(*shape.Get());
+    };
     for (int step = 0; step <= 40; ++step)
     {
         if ((step % 8 == 0 && step < 32) || (step == 40 && inLastHit))
@@ -87,22 +109,30 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
                                                                            fixture.FrontContact(y + 0.1, z - 0.1, 0.1 * step)}));
             fixture.mWorld.Flush();
         }
+        // intent: the 40th step lands after the loop (LandThenStart): either loop hands over after each step
         if (step == 40)
             break;
         Result<PropStepReport> report = inLoop == ELoop::Step ? props->Step(1.0 / 120.0) : props->LandStep();
         REQUIRE(report);
         outcome.mFractured += report.Get().mFractured;
-        Result<std::vector<LooseFragment>> loose = props->TakeLooseFragments();
-        REQUIRE(loose);
-        outcome.mLoosePieces += static_cast<int>(loose.Get().size());
+        if (inLoop == ELoop::Step || step > 0)
+            hand_over();
         if (inLoop == ELoop::LandThenStart)
             REQUIRE(props->StartStep(1.0 / 120.0));
+    }
+    if (inLoop == ELoop::LandThenStart)
+    {
+        Result<PropStepReport> report = props->LandStep();
+        REQUIRE(report);
+        outcome.mFractured += report.Get().mFractured;
+        hand_over();
     }
     const TetSolver& solver = *props->GetProp(wall)->GetCpuSolver(); // waits for a step in flight
     outcome.mPositions = solver.GetPositions();
     outcome.mVelocities = solver.GetVelocities();
     outcome.mElements = solver.GetElementNodes();
     outcome.mBrokenLinks = solver.GetBrokenLinkCount();
+    outcome.mHandOver = props->GetHandOverStats();
     if (inRecord)
     {
         REQUIRE(props->AttachRecorder(nullptr));
@@ -114,12 +144,16 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
 
 void CheckSame(const Outcome& inA, const Outcome& inB)
 {
+    INFO("shapes " << inA.mShapes.size() << " and " << inB.mShapes.size());
     CHECK(inA.mBrokenLinks == inB.mBrokenLinks);
     CHECK(inA.mLoosePieces == inB.mLoosePieces);
     CHECK(inA.mFractured == inB.mFractured);
     CHECK(inA.mElements == inB.mElements);
     CHECK(inA.mPositions == inB.mPositions);
     CHECK(inA.mVelocities == inB.mVelocities);
+    CHECK(inA.mLooseNodes == inB.mLooseNodes);
+    CHECK(inA.mLooseMasses == inB.mLooseMasses);
+    CHECK(inA.mShapes == inB.mShapes);
 }
 
 // A host job system whose started tasks run only when waited for (a real host may run them that late): a call
@@ -185,10 +219,35 @@ TEST_CASE("Props off the game's thread, landed before the next hit, are the prop
     // do not depend on the props (no engine here), bitwise the same run, whether each step lands at once or
     // at the next engine step with the loose pieces taken in between. (In an engine the held body's velocity
     // and the pieces then reach the engine a step later, and the run differs: the racing samples.)
+    // The hand-over between landing and start (loose pieces, changed shapes) is the one the game's thread
+    // works out, though off the thread the task worked most of it out (PropHandOverStats).
     const Outcome on_thread = Run(2, false, ELoop::Step, false);
     REQUIRE(on_thread.mLoosePieces > 0);
-    CheckSame(Run(2, true, ELoop::Step, false), on_thread);
-    CheckSame(Run(2, true, ELoop::LandThenStart, false), on_thread);
+    REQUIRE(on_thread.mShapes.size() > 2u);
+    CHECK(on_thread.mHandOver.mFragmentsForecast == 0u);
+    CHECK(on_thread.mHandOver.mShapesForecast == 0u);
+    {
+        INFO("stepped and landed at once");
+        CheckSame(Run(2, true, ELoop::Step, false), on_thread);
+    }
+    const Outcome off_thread = Run(2, true, ELoop::LandThenStart, false);
+    {
+        INFO("landed at the next engine step");
+        CheckSame(off_thread, on_thread);
+    }
+    CHECK(off_thread.mHandOver.mFragmentsForecast > 0u);
+    CHECK(off_thread.mHandOver.mShapesForecast > 0u);
+    // Worked out in a call only where the task could not: the first shape, and those of steps after which
+    // pieces left.
+    CHECK(off_thread.mHandOver.mShapesComputed < off_thread.mHandOver.mShapesForecast);
+    // Inline (no job system) nothing is worked out ahead: the calls do it when asked.
+    const Outcome inline_off_thread = Run(0, true, ELoop::LandThenStart, false);
+    {
+        INFO("inline");
+        CheckSame(inline_off_thread, on_thread);
+    }
+    CHECK(inline_off_thread.mHandOver.mFragmentsForecast == 0u);
+    CHECK(inline_off_thread.mHandOver.mShapesForecast == 0u);
 }
 
 TEST_CASE("Props off the game's thread replay bit for bit, loose pieces taken between landing and start", "[props][replay][threads]")
@@ -315,4 +374,64 @@ TEST_CASE("Props off the game's thread: every read of a prop waits for the step 
     CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == wall_positions);
     CHECK(replayed[1].mProp.GetCpuSolver()->GetPositions() == car_positions);
     CHECK(replayed[1].mProp.GetCpuSolver()->GetVelocities() == car_velocities);
+}
+
+TEST_CASE("Props off the game's thread: a prop the game changed after the step landed is handed over as it is now",
+          "[props][threads]")
+{
+    // The task works out the hand-over for the prop as it stepped. The game may then change the prop through
+    // GetProp: pin a node, move one. The calls must not take the task's answers then (they would hand over a
+    // piece that is now held, or a shape where the prop no longer is), but work them out from the prop.
+    common::ThreadJobSystem jobs(2);
+    DamageWorldSettings settings;
+    settings.mJobs = &jobs.Get();
+    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
+    HitCentre(fixture, 60.0, 0.0);
+    bool moved = false, pinned = false;
+    for (int step = 0; step < 80 && !(moved && pinned); ++step)
+    {
+        REQUIRE(props->StartStep(1.0 / 120.0));
+        REQUIRE(props->LandStep());
+        FemProp& prop = *props->GetProp(wall);
+        const std::vector<fem::TetFragment> fragments = prop.ComputeFragments();
+        const auto loose = std::find_if(fragments.begin() + 1, fragments.end(), [](const fem::TetFragment& inF) { return !inF.mAnchored; });
+        const PropHandOverStats before = props->GetHandOverStats();
+        if (loose != fragments.end() && !pinned)
+        {
+            // A piece is loose: pin one of its nodes. It stays in the prop.
+            pinned = true;
+            const int node = loose->mNodes[0];
+            REQUIRE(prop.SetNodeFixed(node, true));
+            Result<std::vector<LooseFragment>> taken = props->TakeLooseFragments();
+            REQUIRE(taken);
+            for (const LooseFragment& piece : taken.Get())
+                CHECK(std::find(piece.mNodes.begin(), piece.mNodes.end(), node) == piece.mNodes.end());
+            CHECK(props->GetHandOverStats().mFragmentsForecast == before.mFragmentsForecast);
+            CHECK(props->GetHandOverStats().mFragmentsComputed == before.mFragmentsComputed + 1);
+        }
+        else
+            REQUIRE(props->TakeLooseFragments());
+        const PropHandOverStats taken_loose = props->GetHandOverStats();
+        if (loose == fragments.end() && taken_loose.mShapesForecast > 0 && !moved && step % 2 == 1)
+        {
+            // No piece leaves, and the task built this step's shape: move a node 5 cm first.
+            moved = true;
+            std::vector<Vec3> positions = prop.GetCpuSolver()->GetPositions();
+            positions[positions.size() / 2] += Vec3(0.0, 0.0, 0.05);
+            REQUIRE(prop.GetCpuSolver()->SetPositions(positions));
+            Result<std::optional<std::vector<std::vector<Vec3>>>> shape = props->TakeChangedShape(wall, cShapeCell, cShapeTolerance);
+            REQUIRE(shape);
+            REQUIRE(shape.Get());
+            CHECK(*shape.Get() == props->GetCollisionPieces(wall, cShapeCell).Get());
+            CHECK(props->GetHandOverStats().mShapesForecast == taken_loose.mShapesForecast);
+            CHECK(props->GetHandOverStats().mShapesComputed == taken_loose.mShapesComputed + 1);
+            continue;
+        }
+        REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
+    }
+    CHECK(pinned);
+    CHECK(moved);
 }

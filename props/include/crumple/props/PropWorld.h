@@ -39,6 +39,18 @@ struct CRUMPLE_API PropStepReport
     int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
 };
 
+/// Where the hand-over's answers came from (PropWorld::GetHandOverStats). Off the game's thread the step's
+/// task also works out, for each prop it stepped, the pieces TakeLooseFragments and the shape TakeChangedShape
+/// will ask for next, with the state it used; a call whose prop is still in that state takes them instead of
+/// working them out on the game's thread (the same answer, bit for bit: the same function of the same state).
+struct CRUMPLE_API PropHandOverStats
+{
+    std::uint64_t mFragmentsForecast = 0; ///< A prop's fragments (TakeLooseFragments) worked out on the task
+    std::uint64_t mFragmentsComputed = 0; ///< ... worked out in the call
+    std::uint64_t mShapesForecast = 0;    ///< A changed shape (TakeChangedShape) built on the task
+    std::uint64_t mShapesComputed = 0;    ///< ... built in the call
+};
+
 /// How a PropWorld steps its props.
 struct CRUMPLE_API PropWorldSettings
 {
@@ -53,6 +65,7 @@ struct CRUMPLE_API PropWorldSettings
     /// system or its thread count: the same calls give bitwise the same props and recording. GPU props take
     /// their collisions and step on the game's thread in StartStep (their context is current there); CPU
     /// props on the task, their element passes on it alone (a task does not call back into the job system).
+    /// The task also works out the hand-over that follows its step (PropHandOverStats).
     bool mStepOffThread = false;
 };
 
@@ -208,6 +221,8 @@ public:
     std::uint64_t GetCollisionCount() const { return mTally.mCollisions; }
     std::uint64_t GetRefusedCount() const { return mTally.mRefused; }
     const Status& GetFirstRefusal() const { return mTally.mFirstRefusal; }
+    /// Where the hand-over's answers came from so far (mStepOffThread)
+    const PropHandOverStats& GetHandOverStats() const { return mHandOverStats; }
 
     /// Takes the collision's impulses onto the props of its bodies.
     void OnBeforeCollision(const plugin::Collision& inCollision) override;
@@ -216,6 +231,24 @@ public:
 
 private:
     PropWorld(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings) : mWorld(&ioWorld), mSettings(inSettings) {}
+
+    // What a step's task worked out for the hand-over after it (mStepOffThread, a prop stepped on a task), and
+    // the state it worked it out from: the prop's broken links, node positions and inverse masses (its
+    // fixed nodes), and for the shape the pieces taken and the cell size. A call uses it only while the prop
+    // is in that state (the game may have changed the prop since: GetProp), once.
+    struct HandOverForecast
+    {
+        bool mMade = false;
+        int mBrokenLinks = 0;
+        std::vector<Vec3> mPositions;
+        std::vector<double> mInverseMasses;
+        bool mHasFragments = false; ///< The prop was not settled: its fragments
+        std::vector<fem::TetFragment> mFragments;
+        bool mHasPieces = false;    ///< Its shape had changed and no piece was to leave: the new shape
+        std::vector<std::vector<Vec3>> mPieces;
+        double mCellSize = 0.0;
+        std::uint64_t mPiecesTaken = 0;
+    };
 
     struct Prop
     {
@@ -233,7 +266,11 @@ private:
         std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
         Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
-        // A step's task writes mProp, mHits, mStruck and mSteppedVelocity of the props it steps, nothing else.
+        double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
+        double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
+        HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
+        // A step's task writes mProp, mHits, mStruck, mSteppedVelocity and mForecast of the props it steps,
+        // nothing else.
     };
     // Collisions that reached props, and those refused (the first one's reason kept).
     struct CollisionTally
@@ -288,6 +325,14 @@ private:
     // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
     // body's rotation, zero without one); moves new hits to mStruck.
     static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
+    // The fragments of inFragments (inProp's) that TakeLooseFragments hands over, ascending.
+    static std::vector<std::size_t> LeavingFragments(const Prop& inProp, const std::vector<fem::TetFragment>& inFragments);
+    // TakeChangedShape's test: pieces were taken since the last shape, or a node moved more than inTolerance.
+    static bool ShapeChanged(const Prop& inProp, std::span<const Vec3> inPositions, double inTolerance);
+    // On the task, after inProp stepped: its HandOverForecast.
+    static void ForecastHandOver(Prop& ioProp);
+    // The forecast holds for inProp at inPositions (read now): made, and the prop in the state it was made from.
+    static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions);
     // GetCollisionPieces of inProp at inPositions.
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;
@@ -299,6 +344,7 @@ private:
     std::vector<QueuedCollision> mQueued;     ///< mStepOffThread: dispatched, waiting for the next StartStep
     std::unique_ptr<InFlight> mInFlight;
     CollisionTally mTally;
+    PropHandOverStats mHandOverStats;
 };
 
 } // namespace crumple::props

@@ -1,0 +1,75 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// The hand-over worked out on a step's task (PropWorldSettings::mStepOffThread): the fragments and the new
+// collision shape the game will ask for between landing the step and starting the next, so that its thread
+// does not work them out at the moment a prop breaks (ComputeFragments, PropCollisionPieces: most of the
+// fence's hand-over in the racing samples).
+#include <crumple/props/PropWorld.h>
+
+#include <algorithm>
+
+namespace crumple::props
+{
+
+std::vector<std::size_t> PropWorld::LeavingFragments(const Prop& inProp, const std::vector<fem::TetFragment>& inFragments)
+{
+    // A piece taken before has all its nodes fixed by us: it anchors nothing. The prop is held by a node
+    // fixed otherwise; a prop held by none keeps the piece holding group 0 (its body carries it).
+    const auto taken = [&](const fem::TetFragment& inPiece) {
+        const auto node = static_cast<std::size_t>(inPiece.mNodes[0]);
+        return node < inProp.mTaken.size() && inProp.mTaken[node] != 0;
+    };
+    const bool held = std::any_of(inFragments.begin(), inFragments.end(),
+                                  [&](const fem::TetFragment& inPiece) { return inPiece.mAnchored && !taken(inPiece); });
+    std::vector<std::size_t> leaving;
+    for (std::size_t f = 0; f < inFragments.size(); ++f)
+        if (!inFragments[f].mAnchored && (held || f != 0))
+            leaving.push_back(f);
+    return leaving;
+}
+
+bool PropWorld::ShapeChanged(const Prop& inProp, std::span<const Vec3> inPositions, double inTolerance)
+{
+    bool changed = inProp.mShapeRevision != inProp.mPiecesTaken || inProp.mShapePositions.size() != inPositions.size();
+    for (std::size_t node = 0; node < inPositions.size() && !changed; ++node)
+        changed = (inPositions[node] - inProp.mShapePositions[node]).squaredNorm() > inTolerance * inTolerance;
+    return changed;
+}
+
+void PropWorld::ForecastHandOver(Prop& ioProp)
+{
+    // intent: reads only the prop and what the game's thread writes while no step is in flight (what was
+    // taken and settled, the last shape's arguments); never the damage world, whose bodies the engine moves
+    HandOverForecast& forecast = ioProp.mForecast;
+    forecast.mMade = true;
+    forecast.mBrokenLinks = ioProp.mProp.GetBrokenLinkCount();
+    ioProp.mProp.ReadPositions(forecast.mPositions);
+    forecast.mInverseMasses = ioProp.mProp.GetInverseMasses();
+    forecast.mHasFragments = !IsSettled(ioProp);
+    forecast.mFragments.clear();
+    if (forecast.mHasFragments)
+        forecast.mFragments = ioProp.mProp.ComputeFragments();
+    // intent: the shape only when the game asks for one and no piece is to leave first (a piece that leaves
+    // changes the shape: the call builds it then)
+    forecast.mHasPieces = false;
+    forecast.mPieces.clear();
+    const bool pieces_leave = forecast.mHasFragments && !LeavingFragments(ioProp, forecast.mFragments).empty();
+    if (ioProp.mShapeTolerance >= 0.0 && !pieces_leave && ShapeChanged(ioProp, forecast.mPositions, ioProp.mShapeTolerance))
+        if (Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(ioProp, forecast.mPositions, ioProp.mShapeCellSize); pieces)
+        {
+            forecast.mHasPieces = true;
+            forecast.mPieces = std::move(pieces).Get();
+            forecast.mCellSize = ioProp.mShapeCellSize;
+            forecast.mPiecesTaken = ioProp.mPiecesTaken;
+        }
+}
+
+bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions)
+{
+    const HandOverForecast& forecast = inProp.mForecast;
+    return forecast.mMade && forecast.mBrokenLinks == inProp.mProp.GetBrokenLinkCount() &&
+           std::equal(inPositions.begin(), inPositions.end(), forecast.mPositions.begin(), forecast.mPositions.end()) &&
+           forecast.mInverseMasses == inProp.mProp.GetInverseMasses();
+}
+
+} // namespace crumple::props
