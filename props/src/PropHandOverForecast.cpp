@@ -49,19 +49,30 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
     forecast.mFragments.clear();
     if (forecast.mHasFragments)
         forecast.mFragments = ioProp.mProp.ComputeFragments();
-    // intent: the shape only when the game asks for one and no piece is to leave first (a piece that leaves
-    // changes the shape: the call builds it then)
+    // intent: the shape once the pieces foreseen have left (what TakeLooseFragments then takes: their nodes),
+    // when the game asks for shapes and this one changed
     forecast.mHasPieces = false;
     forecast.mPieces.clear();
-    const bool pieces_leave = forecast.mHasFragments && !LeavingFragments(ioProp, forecast.mFragments).empty();
-    if (ioProp.mShapeTolerance >= 0.0 && !pieces_leave && ShapeChanged(ioProp, forecast.mPositions, ioProp.mShapeTolerance))
-        if (Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(ioProp, forecast.mPositions, ioProp.mShapeCellSize); pieces)
+    if (ioProp.mShapeTolerance < 0.0)
+        return;
+    forecast.mTaken = ioProp.mTaken;
+    forecast.mTaken.resize(forecast.mPositions.size(), 0);
+    forecast.mPiecesTaken = ioProp.mPiecesTaken;
+    if (forecast.mHasFragments)
+        for (std::size_t f : LeavingFragments(ioProp, forecast.mFragments))
         {
-            forecast.mHasPieces = true;
-            forecast.mPieces = std::move(pieces).Get();
-            forecast.mCellSize = ioProp.mShapeCellSize;
-            forecast.mPiecesTaken = ioProp.mPiecesTaken;
+            ++forecast.mPiecesTaken;
+            for (int node : forecast.mFragments[f].mNodes)
+                forecast.mTaken[static_cast<std::size_t>(node)] = 1;
         }
+    if (forecast.mPiecesTaken == ioProp.mPiecesTaken && !ShapeChanged(ioProp, forecast.mPositions, ioProp.mShapeTolerance))
+        return;
+    if (Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(ioProp, forecast.mTaken, forecast.mPositions, ioProp.mShapeCellSize); pieces)
+    {
+        forecast.mHasPieces = true;
+        forecast.mPieces = std::move(pieces).Get();
+        forecast.mCellSize = ioProp.mShapeCellSize;
+    }
 }
 
 bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions)

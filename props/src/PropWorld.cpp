@@ -397,13 +397,19 @@ void PropWorld::Settle(Prop& ioProp)
 
 Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
 {
+    return PiecesOf(inProp, inProp.mTaken, inPositions, inCellSize);
+}
+
+Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
+                                                           std::span<const Vec3> inPositions, double inCellSize)
+{
     const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
     // An element of a piece handed over has all its nodes taken: its first one tells.
     std::vector<std::uint8_t> left_out(elements.size(), 0);
     for (std::size_t element = 0; element < elements.size(); ++element)
     {
         const auto node = static_cast<std::size_t>(elements[element][0]);
-        left_out[element] = node < inProp.mTaken.size() ? inProp.mTaken[node] : 0;
+        left_out[element] = node < inTaken.size() ? inTaken[node] : 0;
     }
     return PropCollisionPieces(inPositions, elements, left_out, inCellSize);
 }
@@ -444,7 +450,8 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     prop.mShapeCellSize = inCellSize;
     prop.mShapeTolerance = inTolerance;
     const bool forecast = prop.mForecast.mHasPieces && prop.mForecast.mCellSize == inCellSize &&
-                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && ForecastHolds(prop, positions);
+                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && prop.mForecast.mTaken == prop.mTaken &&
+                          ForecastHolds(prop, positions);
     prop.mForecast.mHasPieces = false;
     if (!ShapeChanged(prop, positions, inTolerance))
         return std::optional<std::vector<std::vector<Vec3>>>();

@@ -234,8 +234,9 @@ private:
 
     // What a step's task worked out for the hand-over after it (mStepOffThread, a prop stepped on a task), and
     // the state it worked it out from: the prop's broken links, node positions and inverse masses (its
-    // fixed nodes), and for the shape the pieces taken and the cell size. A call uses it only while the prop
-    // is in that state (the game may have changed the prop since: GetProp), once.
+    // fixed nodes), and for the shape the cell size and the pieces and nodes taken once TakeLooseFragments
+    // has handed over the loose pieces it foresaw. A call uses it only while the prop is in that state (the
+    // game may have changed the prop since: GetProp), once.
     struct HandOverForecast
     {
         bool mMade = false;
@@ -244,10 +245,11 @@ private:
         std::vector<double> mInverseMasses;
         bool mHasFragments = false; ///< The prop was not settled: its fragments
         std::vector<fem::TetFragment> mFragments;
-        bool mHasPieces = false;    ///< Its shape had changed and no piece was to leave: the new shape
+        bool mHasPieces = false;    ///< Its shape had changed (or pieces were to leave): the new shape
         std::vector<std::vector<Vec3>> mPieces;
         double mCellSize = 0.0;
-        std::uint64_t mPiecesTaken = 0;
+        std::uint64_t mPiecesTaken = 0;   ///< Pieces taken once the fragments' loose pieces are
+        std::vector<std::uint8_t> mTaken; ///< Nodes taken once they are (Prop::mTaken)
     };
 
     struct Prop
@@ -333,8 +335,10 @@ private:
     static void ForecastHandOver(Prop& ioProp);
     // The forecast holds for inProp at inPositions (read now): made, and the prop in the state it was made from.
     static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions);
-    // GetCollisionPieces of inProp at inPositions.
+    // GetCollisionPieces of inProp at inPositions; with inTaken, as if those nodes were taken (one byte each).
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
+    static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
+                                                           std::span<const Vec3> inPositions, double inCellSize);
     Status ValidateShapeQuery(PropId inProp, double inCellSize, const char* inWhat) const;
 
     plugin::DamageWorld* mWorld = nullptr;
