@@ -79,6 +79,7 @@ Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
     mAwakeSteps += stepped.Get().mStepped > 0 ? 1 : 0;
     props::HeldPropUpdate update;
     const Status held = mHeld->Update(stepped.Get(), update);
+    mLastDrawingMs = 0.0;
     for (const props::HeldPiece& piece : update.mPieces)
     {
         ++mLoose;
@@ -86,7 +87,9 @@ Status RaceFence::Step(double inDeltaTime, std::vector<BodyId>& outNewBodies)
             mLeftOut[static_cast<std::size_t>(element)] = 1;
         if (!piece.mBody.IsValid())
             continue;
+        const double drawing_start_ms = common::ThreadCpuMs();
         MakePiece(piece);
+        mLastDrawingMs += common::ThreadCpuMs() - drawing_start_ms;
         outNewBodies.push_back(piece.mBody);
     }
     if (off_thread)

@@ -64,6 +64,9 @@ public:
     std::string Summary() const;
     /// The longest Step() so far, in the game thread's CPU time (ms)
     double GetWorstStepMs() const { return mWorstStepMs; }
+    /// Of the last Step(), the time spent making the drawing meshes of new pieces (the game's own work, not
+    /// Crumple's: a game builds its render meshes its own way), game thread's CPU (ms)
+    double GetLastStepDrawingMs() const { return mLastDrawingMs; }
 
 private:
     explicit RaceFence(plugin::DamageWorld& ioDamage) : mDamage(&ioDamage) {}
@@ -89,6 +92,7 @@ private:
     int mLoose = 0;                       ///< Pieces handed over, with a body or without (too light)
     int mSteps = 0, mAwakeSteps = 0;
     double mWorstStepMs = 0.0, mTotalStepMs = 0.0; ///< Step() in the game thread's CPU time
+    double mLastDrawingMs = 0.0;                    ///< GetLastStepDrawingMs
 };
 
 } // namespace crumple::samples

@@ -65,8 +65,10 @@ public:
     const std::map<plugin::BodyId, std::string>& GetNames() const { return mNames; }
     /// Crumple's share of the last StepFrame (the game thread's CPU time, ms): the adapter's calls (its
     /// GetLastStepStats().mSeconds: contacts, impulses, body states, dispatching and landing dents) and the
-    /// fence's Step (its FEM, or with mPropsOffThread its hand-over); not the engine's own collision
-    /// detection and solve, of the fence's pieces among other bodies. 0 without Crumple.
+    /// fence's Step (its FEM, or with mPropsOffThread its hand-over, the engine's calls for new pieces and
+    /// shapes included); not the engine's own collision detection and solve, of the fence's pieces among other
+    /// bodies, nor the drawing meshes the sample makes of new pieces (RaceFence::GetLastStepDrawingMs). 0
+    /// without Crumple.
     double GetLastFrameCrumpleMs() const { return mFrameCrumpleMs; }
 
 protected:
