@@ -75,12 +75,12 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
     }
 }
 
-bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions)
+bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes)
 {
     const HandOverForecast& forecast = inProp.mForecast;
     return forecast.mMade && forecast.mBrokenLinks == inProp.mProp.GetBrokenLinkCount() &&
            std::equal(inPositions.begin(), inPositions.end(), forecast.mPositions.begin(), forecast.mPositions.end()) &&
-           forecast.mInverseMasses == inProp.mProp.GetInverseMasses();
+           (!inSameFixedNodes || forecast.mInverseMasses == inProp.mProp.GetInverseMasses());
 }
 
 } // namespace crumple::props

@@ -311,7 +311,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             continue;
         prop.mProp.ReadPositions(positions);
         std::vector<fem::TetFragment> fragments;
-        if (prop.mForecast.mHasFragments && ForecastHolds(prop, positions))
+        if (prop.mForecast.mHasFragments && ForecastHolds(prop, positions, true))
         {
             fragments = std::move(prop.mForecast.mFragments);
             ++mHandOverStats.mFragmentsForecast;
@@ -451,7 +451,7 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     prop.mShapeTolerance = inTolerance;
     const bool forecast = prop.mForecast.mHasPieces && prop.mForecast.mCellSize == inCellSize &&
                           prop.mForecast.mPiecesTaken == prop.mPiecesTaken && prop.mForecast.mTaken == prop.mTaken &&
-                          ForecastHolds(prop, positions);
+                          ForecastHolds(prop, positions, false);
     prop.mForecast.mHasPieces = false;
     if (!ShapeChanged(prop, positions, inTolerance))
         return std::optional<std::vector<std::vector<Vec3>>>();

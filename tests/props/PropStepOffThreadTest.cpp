@@ -98,6 +98,11 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
         if (shape.Get())
             outcome.mShapes.push_back(*shape.Get());
     };
+    // The shape at rest, before the first step (the game hands the engine its first shape at level load).
+    Result<std::optional<std::vector<std::vector<Vec3>>>> first_shape = props->TakeChangedShape(wall, cShapeCell, cShapeTolerance);
+    REQUIRE(first_shape);
+    REQUIRE(first_shape.Get());
+    outcome.mShapes.push_back(*first_shape.Get());
     for (int step = 0; step <= 40; ++step)
     {
         if ((step % 8 == 0 && step < 32) || (step == 40 && inLastHit))
@@ -237,8 +242,8 @@ TEST_CASE("Props off the game's thread, landed before the next hit, are the prop
     }
     CHECK(off_thread.mHandOver.mFragmentsForecast > 0u);
     CHECK(off_thread.mHandOver.mShapesForecast > 0u);
-    // Worked out in a call only where the task could not: the first shape (the task learns the cell size and
-    // tolerance from it), though pieces left after some steps.
+    // Worked out in a call only where the task could not: the first shape, at rest (the task learns the cell
+    // size and tolerance from it); then the task built every shape, those after pieces left too.
     CHECK(off_thread.mHandOver.mShapesComputed == 1u);
     CHECK(off_thread.mHandOver.mFragmentsComputed == 0u);
     // Inline (no job system) nothing is worked out ahead: the calls do it when asked.

@@ -333,8 +333,10 @@ private:
     static bool ShapeChanged(const Prop& inProp, std::span<const Vec3> inPositions, double inTolerance);
     // On the task, after inProp stepped: its HandOverForecast.
     static void ForecastHandOver(Prop& ioProp);
-    // The forecast holds for inProp at inPositions (read now): made, and the prop in the state it was made from.
-    static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions);
+    // The forecast holds for inProp at inPositions (read now): made, and the prop in the state it was made from:
+    // the same links broken and node positions, and with inSameFixedNodes the same fixed nodes (what the
+    // fragments depend on; the shape does not, and TakeLooseFragments fixes the nodes of the pieces it takes).
+    static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes);
     // GetCollisionPieces of inProp at inPositions; with inTaken, as if those nodes were taken (one byte each).
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
