@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -763,6 +764,13 @@ Vec3 FfdDeformer::VertexNormal(std::uint32_t inVertex) const
 namespace
 {
 
+// Bit for bit, not by value: -0.0 and +0.0 differ. A write that changes a vertex's bits must mark it dirty,
+// or the published copy (and, after Publish swaps buffers, the working one) keeps the old bits.
+bool SameBits(const Vec3& inA, const Vec3& inB)
+{
+    return std::memcmp(inA.data(), inB.data(), sizeof(Vec3)) == 0;
+}
+
 // Puts a list of distinct indices into ascending order when it holds a good part of all inCount indices: a
 // pass over byte marks (linear, no comparisons), after which the work walks the mesh's arrays in memory order
 // instead of in the cell order the list came in (which scatters it over an imported mesh). Short lists stay
@@ -832,7 +840,7 @@ void FfdDeformer::RecomputeAll()
         const Vec3 position = zone < 0 ? mRestMesh.mPositions[v]
                                        : Vec3(mRestMesh.mPositions[v] +
                                               mZones[static_cast<std::size_t>(zone)].Displacement(mVertexLocation[v]));
-        if (position != mPositions[v])
+        if (!SameBits(position, mPositions[v]))
             mDirty[v] = 1;
         mPositions[v] = position;
         if (zone >= 0)
@@ -918,7 +926,7 @@ void FfdDeformer::RecomputeNormals()
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const Vec3 normal = VertexNormal(v);
-        if (normal != mNormals[v])
+        if (!SameBits(normal, mNormals[v]))
             mDirty[v] = 1;
         mNormals[v] = normal;
     }

@@ -87,7 +87,8 @@ public:
     const std::vector<Vec3>& GetPositions() const { return mPublishing ? mPublishedPositions : mPositions; }
     /// Unit vertex normals (area-weighted), body frame, #V: the published ones while publishing
     const std::vector<Vec3>& GetNormals() const { return mPublishing ? mPublishedNormals : mNormals; }
-    /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published
+    /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published. The
+    /// array may be another after any change or Publish: take it again rather than keep the reference.
     const std::vector<Vec3>& GetCurrentPositions() const { return mStale ? mPublishedPositions : mPositions; }
 
     /// Deferred publishing (plugin::DamageWorldSettings::mDeferDents): while on, GetPositions, GetNormals and
