@@ -7,6 +7,7 @@
 #include <crumple/props/PropWorld.h>
 
 #include <algorithm>
+#include <cstring>
 
 namespace crumple::props
 {
@@ -43,9 +44,12 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
     HandOverForecast& forecast = ioProp.mForecast;
     forecast.mMade = true;
     forecast.mBrokenLinks = ioProp.mProp.GetBrokenLinkCount();
+    forecast.mElements = ioProp.mProp.GetElementNodes();
     ioProp.mProp.ReadPositions(forecast.mPositions);
     forecast.mInverseMasses = ioProp.mProp.GetInverseMasses();
-    forecast.mHasFragments = !IsSettled(ioProp);
+    // intent: the fragments once the game takes loose pieces (it has settled the prop once), and only while
+    // they can have changed
+    forecast.mHasFragments = ioProp.mSettledBrokenLinks >= 0 && !IsSettled(ioProp);
     forecast.mFragments.clear();
     if (forecast.mHasFragments)
         forecast.mFragments = ioProp.mProp.ComputeFragments();
@@ -77,10 +81,24 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
 
 bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes)
 {
+    // intent: positions bit for bit (-0.0 and +0.0 give the same cubes but other pieces' bits), the elements'
+    // nodes themselves (fracture renumbers them; the broken links' count is the quick test)
     const HandOverForecast& forecast = inProp.mForecast;
     return forecast.mMade && forecast.mBrokenLinks == inProp.mProp.GetBrokenLinkCount() &&
-           std::equal(inPositions.begin(), inPositions.end(), forecast.mPositions.begin(), forecast.mPositions.end()) &&
+           inPositions.size() == forecast.mPositions.size() &&
+           std::memcmp(inPositions.data(), forecast.mPositions.data(), inPositions.size() * sizeof(Vec3)) == 0 &&
+           forecast.mElements == inProp.mProp.GetElementNodes() &&
            (!inSameFixedNodes || forecast.mInverseMasses == inProp.mProp.GetInverseMasses());
+}
+
+bool PropWorld::SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB)
+{
+    const std::size_t common = std::min(inA.size(), inB.size());
+    const auto none = [](std::span<const std::uint8_t> inRest) {
+        return std::all_of(inRest.begin(), inRest.end(), [](std::uint8_t inTaken) { return inTaken == 0; });
+    };
+    return std::equal(inA.begin(), inA.begin() + static_cast<std::ptrdiff_t>(common), inB.begin()) &&
+           none(inA.subspan(common)) && none(inB.subspan(common));
 }
 
 } // namespace crumple::props

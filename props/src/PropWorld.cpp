@@ -450,7 +450,7 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     prop.mShapeCellSize = inCellSize;
     prop.mShapeTolerance = inTolerance;
     const bool forecast = prop.mForecast.mHasPieces && prop.mForecast.mCellSize == inCellSize &&
-                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && prop.mForecast.mTaken == prop.mTaken &&
+                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && SameTaken(prop.mForecast.mTaken, prop.mTaken) &&
                           ForecastHolds(prop, positions, false);
     prop.mForecast.mHasPieces = false;
     if (!ShapeChanged(prop, positions, inTolerance))

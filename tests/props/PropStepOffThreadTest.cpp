@@ -98,7 +98,9 @@ Outcome Run(int inThreads, bool inOffThread, ELoop inLoop, bool inRecord, bool i
         if (shape.Get())
             outcome.mShapes.push_back(*shape.Get());
     };
-    // The shape at rest, before the first step (the game hands the engine its first shape at level load).
+    // The shape at rest, before the first step (the game hands the engine its first shape at level load),
+    // and the loose pieces then (none).
+    REQUIRE(props->TakeLooseFragments().Get().empty());
     Result<std::optional<std::vector<std::vector<Vec3>>>> first_shape = props->TakeChangedShape(wall, cShapeCell, cShapeTolerance);
     REQUIRE(first_shape);
     REQUIRE(first_shape.Get());
@@ -242,10 +244,11 @@ TEST_CASE("Props off the game's thread, landed before the next hit, are the prop
     }
     CHECK(off_thread.mHandOver.mFragmentsForecast > 0u);
     CHECK(off_thread.mHandOver.mShapesForecast > 0u);
-    // Worked out in a call only where the task could not: the first shape, at rest (the task learns the cell
-    // size and tolerance from it); then the task built every shape, those after pieces left too.
+    // Worked out in a call only where the task could not: the calls at rest, before the first step (the task
+    // learns the shape's cell size and tolerance from them); then the task worked out every hand-over, the
+    // shapes after pieces left too.
     CHECK(off_thread.mHandOver.mShapesComputed == 1u);
-    CHECK(off_thread.mHandOver.mFragmentsComputed == 0u);
+    CHECK(off_thread.mHandOver.mFragmentsComputed == 1u);
     // Inline (no job system) nothing is worked out ahead: the calls do it when asked.
     const Outcome inline_off_thread = Run(0, true, ELoop::LandThenStart, false);
     {

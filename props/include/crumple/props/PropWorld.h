@@ -233,14 +233,15 @@ private:
     PropWorld(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings) : mWorld(&ioWorld), mSettings(inSettings) {}
 
     // What a step's task worked out for the hand-over after it (mStepOffThread, a prop stepped on a task), and
-    // the state it worked it out from: the prop's broken links, node positions and inverse masses (its
-    // fixed nodes), and for the shape the cell size and the pieces and nodes taken once TakeLooseFragments
+    // the state it worked it out from: the prop's broken links and elements' nodes, node positions (bit for
+    // bit) and inverse masses (its fixed nodes), and for the shape the cell size and the pieces and nodes taken once TakeLooseFragments
     // has handed over the loose pieces it foresaw. A call uses it only while the prop is in that state (the
     // game may have changed the prop since: GetProp), once.
     struct HandOverForecast
     {
         bool mMade = false;
         int mBrokenLinks = 0;
+        std::vector<fem::TetIndices> mElements;
         std::vector<Vec3> mPositions;
         std::vector<double> mInverseMasses;
         bool mHasFragments = false; ///< The prop was not settled: its fragments
@@ -337,6 +338,8 @@ private:
     // the same links broken and node positions, and with inSameFixedNodes the same fixed nodes (what the
     // fragments depend on; the shape does not, and TakeLooseFragments fixes the nodes of the pieces it takes).
     static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes);
+    // The same nodes taken (one byte each), a node past the end of either counting as not taken.
+    static bool SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB);
     // GetCollisionPieces of inProp at inPositions; with inTaken, as if those nodes were taken (one byte each).
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
