@@ -64,6 +64,8 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
     { return static_cast<int>(std::max_element(inValues.begin(), inValues.end()) - inValues.begin()); };
     const int worst = worst_at(cpu[1]);
     const samples::RaceFence& fence = *attached.Get()->GetFence();
+    // Fragments and shapes the props' task worked out for the hand-over, and those its calls did
+    const props::PropHandOverStats& handover = fence.GetHandOverStats();
     ioTable.Add({"frame_budget", inEngine + "/" + inCase, Quantile(wall[1], 0.5), 0.0, "none",
                  "worst_cpu_ms=" + FormatExtra(cpu[1][static_cast<std::size_t>(worst)]) + ";worst_at_s=" + FormatExtra(worst / 60.0) +
                      ";worst_wall_ms=" + FormatExtra(*std::max_element(wall[1].begin(), wall[1].end())) +
@@ -74,7 +76,10 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
                      ";fence_worst_step_ms=" + FormatExtra(fence.GetWorstStepMs()) +
                      ";crumple_worst_cpu_ms=" + FormatExtra(*std::max_element(crumple_ms.begin(), crumple_ms.end())) +
                      ";crumple_worst_at_s=" + FormatExtra(worst_at(crumple_ms) / 60.0) +
-                     ";crumple_p99_cpu_ms=" + FormatExtra(Quantile(crumple_ms, 0.99)) + ";frames=" + std::to_string(inFrames)});
+                     ";crumple_p99_cpu_ms=" + FormatExtra(Quantile(crumple_ms, 0.99)) +
+                     ";handover_on_task=" + std::to_string(handover.mFragmentsForecast + handover.mShapesForecast) +
+                     ";handover_in_calls=" + std::to_string(handover.mFragmentsComputed + handover.mShapesComputed) +
+                     ";frames=" + std::to_string(inFrames)});
 }
 
 template <class Scene>

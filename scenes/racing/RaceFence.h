@@ -64,6 +64,8 @@ public:
     std::string Summary() const;
     /// The longest Step() so far, in the game thread's CPU time (ms)
     double GetWorstStepMs() const { return mWorstStepMs; }
+    /// Where the fence's hand-overs came from: worked out on its step's task or in the call (off the thread)
+    const props::PropHandOverStats& GetHandOverStats() const { return mProps->GetHandOverStats(); }
     /// Of the last Step(), the time spent making the drawing meshes of new pieces (the game's own work, not
     /// Crumple's: a game builds its render meshes its own way), game thread's CPU (ms)
     double GetLastStepDrawingMs() const { return mLastDrawingMs; }
