@@ -190,6 +190,7 @@ Status PropWorld::StartStep(double inDeltaTime)
     flight.mReport = PropStepReport();
     flight.mStatus = Status::Ok();
     flight.mTally = CollisionTally();
+    flight.mForecastsMade = 0;
     // The collisions that waited reach the props just before the step, in dispatch order (as they would have
     // when dispatched: nothing changes a prop between its steps but a hand-over of loose pieces): on the
     // task for the props it steps.
@@ -232,15 +233,19 @@ void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
     for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
         if (mine(index))
         {
-            StepProp(ioFlight, index);
-            // intent: only where the step runs as a task of its own: inline, the calls would do the same work
-            // at once, and only when asked
-            if (inOnTask && ioFlight.mOnJobs && ioFlight.mStatus.IsValid())
+            const bool integrated = StepProp(ioFlight, index);
+            // intent: only where the step runs as a task of its own (inline, the calls would do the same work
+            // at once, and only when asked), and only for a prop that moved: a sleeping prop costs nothing,
+            // and its last forecast still holds
+            if (inOnTask && ioFlight.mOnJobs && integrated)
+            {
                 ForecastHandOver(mProps[index]);
+                ++ioFlight.mForecastsMade;
+            }
         }
 }
 
-void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
+bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
 {
     Prop& prop = mProps[inIndex];
     Result<fem::TetStepResult> step = prop.mProp.Step(ioFlight.mDeltaTime);
@@ -249,7 +254,7 @@ void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
         Error error = step.GetError();
         error.mMessage = "PropWorld::Step: prop " + std::to_string(inIndex) + ": " + error.mMessage;
         ioFlight.mStatus = error;
-        return;
+        return false;
     }
     const fem::ETetStepEvent events = step.Get().mEvents;
     const bool sleeping = fem::HasEvent(events, fem::ETetStepEvent::Sleeping);
@@ -257,6 +262,7 @@ void PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
     prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
+    return !sleeping;
 }
 
 Result<PropStepReport> PropWorld::LandStep()
@@ -272,6 +278,7 @@ Result<PropStepReport> PropWorld::LandStep()
     if (mTally.mRefused == 0 && flight.mTally.mRefused > 0)
         mTally.mFirstRefusal = flight.mTally.mFirstRefusal;
     mTally.mRefused += flight.mTally.mRefused;
+    mHandOverStats.mForecastsMade += flight.mForecastsMade;
     flight.mCollisions.clear();
     if (flight.mStatus.HasError())
         return flight.mStatus.GetError();

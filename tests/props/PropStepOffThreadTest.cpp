@@ -444,3 +444,36 @@ TEST_CASE("Props off the game's thread: a prop the game changed after the step l
     CHECK(pinned);
     CHECK(moved);
 }
+
+TEST_CASE("Props off the game's thread: the task works out a hand-over only for a prop that moved", "[props][threads]")
+{
+    // A sleeping prop costs nothing, its hand-over included: its state, and so its last forecast, is unchanged.
+    common::ThreadJobSystem jobs(2);
+    DamageWorldSettings settings;
+    settings.mJobs = &jobs.Get();
+    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    REQUIRE(props->TakeLooseFragments());
+    REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
+    int awake = 0, asleep = 0;
+    const auto step = [&] {
+        REQUIRE(props->StartStep(1.0 / 120.0));
+        Result<PropStepReport> report = props->LandStep();
+        REQUIRE(report);
+        awake += report.Get().mStepped;
+        asleep += report.Get().mSleeping;
+        REQUIRE(props->TakeLooseFragments());
+        REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
+    };
+    for (int i = 0; i < 10; ++i)
+        step();
+    CHECK(awake == 0);
+    CHECK(asleep == 10);
+    CHECK(props->GetHandOverStats().mForecastsMade == 0u);
+    HitCentre(fixture, 20.0, 0.0);
+    for (int i = 0; i < 10; ++i)
+        step();
+    REQUIRE(awake > 0);
+    CHECK(props->GetHandOverStats().mForecastsMade == static_cast<std::uint64_t>(awake));
+}

@@ -49,6 +49,8 @@ struct CRUMPLE_API PropHandOverStats
     std::uint64_t mFragmentsComputed = 0; ///< ... worked out in the call
     std::uint64_t mShapesForecast = 0;    ///< A changed shape (TakeChangedShape) built on the task
     std::uint64_t mShapesComputed = 0;    ///< ... built in the call
+    std::uint64_t mForecastsMade = 0;     ///< Hand-overs the tasks worked out: one per awake prop per step (a
+                                          ///< sleeping prop's state, and so its last one, is unchanged)
 };
 
 /// How a PropWorld steps its props.
@@ -299,14 +301,16 @@ private:
         std::vector<QueuedCollision> mCollisions; ///< mStepOffThread: what waited, applied before the step
         CollisionTally mTally;                    ///< What the step's collisions did, until LandStep adds it
         PropStepReport mReport;
+        std::uint64_t mForecastsMade = 0;          ///< On the task, until LandStep adds them to the stats
         Status mStatus = Status::Ok();            ///< The first prop that failed to step
         std::uint64_t mTicket = 0;
         bool mOnJobs = false;                     ///< Started with mStartTask (LandStep waits)
         bool mActive = false;
         bool mWaited = false;                     ///< LandStep or a read waited for the task
     };
-    // Steps prop inIndex by the flight's step: report, status and the struck members' velocity.
-    void StepProp(InFlight& ioFlight, std::size_t inIndex);
+    // Steps prop inIndex by the flight's step: report, status and the struck members' velocity. True when the
+    // prop integrated (it was awake and did not fail).
+    bool StepProp(InFlight& ioFlight, std::size_t inIndex);
     static void RunStep(void* inFlight);
     // The flight's collisions onto, then the step of, the props on the task (inOnTask) or off it, in PropId
     // order, stopping at a prop that fails.
