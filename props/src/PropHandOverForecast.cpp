@@ -42,7 +42,6 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
     // intent: reads only the prop and what the game's thread writes while no step is in flight (what was
     // taken and settled, the last shape's arguments); never the damage world, whose bodies the engine moves
     HandOverForecast& forecast = ioProp.mForecast;
-    forecast.mMade = true;
     forecast.mBrokenLinks = ioProp.mProp.GetBrokenLinkCount();
     forecast.mElements = ioProp.mProp.GetElementNodes();
     ioProp.mProp.ReadPositions(forecast.mPositions);
@@ -84,11 +83,18 @@ bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositi
     // intent: positions bit for bit (-0.0 and +0.0 give the same cubes but other pieces' bits), the elements'
     // nodes themselves (fracture renumbers them; the broken links' count is the quick test)
     const HandOverForecast& forecast = inProp.mForecast;
-    return forecast.mMade && forecast.mBrokenLinks == inProp.mProp.GetBrokenLinkCount() &&
+    return forecast.mBrokenLinks == inProp.mProp.GetBrokenLinkCount() &&
            inPositions.size() == forecast.mPositions.size() &&
            std::memcmp(inPositions.data(), forecast.mPositions.data(), inPositions.size() * sizeof(Vec3)) == 0 &&
            forecast.mElements == inProp.mProp.GetElementNodes() &&
            (!inSameFixedNodes || forecast.mInverseMasses == inProp.mProp.GetInverseMasses());
+}
+
+bool PropWorld::ShapeForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
+{
+    const HandOverForecast& forecast = inProp.mForecast;
+    return forecast.mHasPieces && forecast.mCellSize == inCellSize && forecast.mPiecesTaken == inProp.mPiecesTaken &&
+           SameTaken(forecast.mTaken, inProp.mTaken) && ForecastHolds(inProp, inPositions, false);
 }
 
 bool PropWorld::SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB)

@@ -316,9 +316,13 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         // prop (most steps of a swinging fence) are not worked out again
         if (IsSettled(prop))
             continue;
-        prop.mProp.ReadPositions(positions);
+        // intent: positions read once, and only when needed: to check a forecast, or for pieces that leave (a
+        // GPU prop's are read back from the device)
+        const bool read_first = prop.mForecast.mHasFragments;
+        if (read_first)
+            prop.mProp.ReadPositions(positions);
         std::vector<fem::TetFragment> fragments;
-        if (prop.mForecast.mHasFragments && ForecastHolds(prop, positions, true))
+        if (read_first && ForecastHolds(prop, positions, true))
         {
             fragments = std::move(prop.mForecast.mFragments);
             ++mHandOverStats.mFragmentsForecast;
@@ -332,6 +336,8 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         const std::vector<std::size_t> leaving = LeavingFragments(prop, fragments);
         if (leaving.empty())
             continue;
+        if (!read_first)
+            prop.mProp.ReadPositions(positions);
         prop.mProp.ReadVelocities(velocities);
         for (std::size_t f : leaving)
         {
@@ -456,11 +462,11 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     prop.mProp.ReadPositions(positions);
     prop.mShapeCellSize = inCellSize;
     prop.mShapeTolerance = inTolerance;
-    const bool forecast = prop.mForecast.mHasPieces && prop.mForecast.mCellSize == inCellSize &&
-                          prop.mForecast.mPiecesTaken == prop.mPiecesTaken && SameTaken(prop.mForecast.mTaken, prop.mTaken) &&
-                          ForecastHolds(prop, positions, false);
+    // intent: the forecast checked only for a shape that changed (this runs at every step)
+    const bool changed = ShapeChanged(prop, positions, inTolerance);
+    const bool forecast = changed && ShapeForecastHolds(prop, positions, inCellSize);
     prop.mForecast.mHasPieces = false;
-    if (!ShapeChanged(prop, positions, inTolerance))
+    if (!changed)
         return std::optional<std::vector<std::vector<Vec3>>>();
     Result<std::vector<std::vector<Vec3>>> pieces = forecast ? Result<std::vector<std::vector<Vec3>>>(std::move(prop.mForecast.mPieces))
                                                              : PiecesOf(prop, positions, inCellSize);

@@ -202,6 +202,22 @@ struct LazyTasks
     }
 };
 
+// A weak wall panel whose props step off the game's thread, on a 2-thread job system.
+struct OffThreadWall
+{
+    common::ThreadJobSystem mJobs{2};
+    common::WorldFixture mFixture{4000, {8, 6, 6}, WithJobs(mJobs)};
+    std::unique_ptr<PropWorld> mProps = PropWorld::Create(mFixture.mWorld, {.mStepOffThread = true}).Get();
+    PropId mWall = mProps->AddProp(mFixture.mWall, test::WeakPanel()).Get();
+
+    static DamageWorldSettings WithJobs(const common::ThreadJobSystem& inJobs)
+    {
+        DamageWorldSettings settings;
+        settings.mJobs = &inJobs.Get();
+        return settings;
+    }
+};
+
 } // namespace
 
 TEST_CASE("Props off the game's thread end bitwise the same for any job system and thread count", "[props][threads]")
@@ -391,12 +407,10 @@ TEST_CASE("Props off the game's thread: a prop the game changed after the step l
     // The task works out the hand-over for the prop as it stepped. The game may then change the prop through
     // GetProp: pin a node, move one. The calls must not take the task's answers then (they would hand over a
     // piece that is now held, or a shape where the prop no longer is), but work them out from the prop.
-    common::ThreadJobSystem jobs(2);
-    DamageWorldSettings settings;
-    settings.mJobs = &jobs.Get();
-    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
-    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    OffThreadWall scene;
+    common::WorldFixture& fixture = scene.mFixture;
+    PropWorld* props = scene.mProps.get();
+    const PropId wall = scene.mWall;
     REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
     HitCentre(fixture, 60.0, 0.0);
     bool moved = false, pinned = false;
@@ -448,12 +462,10 @@ TEST_CASE("Props off the game's thread: a prop the game changed after the step l
 TEST_CASE("Props off the game's thread: the task works out a hand-over only for a prop that moved", "[props][threads]")
 {
     // A sleeping prop costs nothing, its hand-over included: its state, and so its last forecast, is unchanged.
-    common::ThreadJobSystem jobs(2);
-    DamageWorldSettings settings;
-    settings.mJobs = &jobs.Get();
-    common::WorldFixture fixture(4000, {8, 6, 6}, settings);
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
-    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    OffThreadWall scene;
+    common::WorldFixture& fixture = scene.mFixture;
+    PropWorld* props = scene.mProps.get();
+    const PropId wall = scene.mWall;
     REQUIRE(props->TakeLooseFragments());
     REQUIRE(props->TakeChangedShape(wall, cShapeCell, cShapeTolerance));
     int awake = 0, asleep = 0;

@@ -241,7 +241,6 @@ private:
     // game may have changed the prop since: GetProp), once.
     struct HandOverForecast
     {
-        bool mMade = false;
         int mBrokenLinks = 0;
         std::vector<fem::TetIndices> mElements;
         std::vector<Vec3> mPositions;
@@ -338,10 +337,14 @@ private:
     static bool ShapeChanged(const Prop& inProp, std::span<const Vec3> inPositions, double inTolerance);
     // On the task, after inProp stepped: its HandOverForecast.
     static void ForecastHandOver(Prop& ioProp);
-    // The forecast holds for inProp at inPositions (read now): made, and the prop in the state it was made from:
-    // the same links broken and node positions, and with inSameFixedNodes the same fixed nodes (what the
-    // fragments depend on; the shape does not, and TakeLooseFragments fixes the nodes of the pieces it takes).
+    // The forecast (one that has fragments or a shape) holds for inProp at inPositions (read now): the prop is in
+    // the state it was made from, the same links broken, elements and node positions, and with inSameFixedNodes
+    // the same fixed nodes (what the fragments depend on; the shape does not, and TakeLooseFragments fixes the
+    // nodes of the pieces it takes).
     static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes);
+    // The forecast's shape holds for a TakeChangedShape of inProp at inPositions with inCellSize: it has one,
+    // for that cell size, the pieces and nodes taken since are those it foresaw, and ForecastHolds.
+    static bool ShapeForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     // The same nodes taken (one byte each), a node past the end of either counting as not taken.
     static bool SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB);
     // GetCollisionPieces of inProp at inPositions; with inTaken, as if those nodes were taken (one byte each).
