@@ -4,6 +4,8 @@
 #include <crumple/base/Assert.h>
 #include <crumple/ffd/FfdLattice.h>
 
+#include "TensorProductSum.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -57,6 +59,7 @@ FfdLattice::FfdLattice(const FfdLatticeSettings& inSettings) : mSettings(inSetti
     const std::size_t count = static_cast<std::size_t>(inSettings.mControlCount[0]) * inSettings.mControlCount[1] *
                               inSettings.mControlCount[2];
     mControlDisplacements.assign(count, Vec3::Zero());
+    mWideSum = HasWideTensorProductSum();
 }
 
 Vec3 FfdLattice::LatticeCoordinate(const Vec3& inBodyPoint) const
@@ -115,20 +118,13 @@ Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation, std::span<const
                        inLocation.mCell[1] < mCellCount[1] && inLocation.mCell[2] < mCellCount[2],
                    "FfdLattice::Displacement: a location outside the lattice or controls of another lattice");
 
-    // Fixed summation order (c, b, a) so the result is bitwise reproducible.
-    Vec3 sum = Vec3::Zero();
-    for (int c = 0; c < 4; ++c)
-    {
-        Vec3 plane = Vec3::Zero();
-        for (int b = 0; b < 4; ++b)
-        {
-            const Vec3* row = &inControls[static_cast<std::size_t>(base + c * nxy + b * nx)];
-            const Vec3 line = wx[0] * row[0] + wx[1] * row[1] + wx[2] * row[2] + wx[3] * row[3];
-            plane += wy[b] * line;
-        }
-        sum += wz[c] * plane;
-    }
-    return sum;
+    // intent: the wide sum reads one double past the cell's last control, so not in the lattice's last cell
+    const CellWeights weights{wx, wy, wz};
+    const Vec3* first = &inControls[static_cast<std::size_t>(base)];
+    const auto last = static_cast<std::size_t>(base + 3 * nxy + 3 * nx + 3);
+    if (mWideSum && last + 1 < inControls.size())
+        return WideTensorProductSum(first, nx, nxy, weights);
+    return TensorProductSum(first, nx, nxy, weights);
 }
 
 } // namespace crumple::ffd

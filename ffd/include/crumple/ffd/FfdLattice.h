@@ -63,7 +63,8 @@ public:
     /// Undeformed position of control (a, b, c), body frame (m).
     Vec3 RestControlPosition(int inA, int inB, int inC) const;
 
-    /// Displacement (m, body frame) of a point at inLocation: the tensor-product sum over its 64 controls.
+    /// Displacement (m, body frame) of a point at inLocation: the tensor-product sum over its 64 controls, in a
+    /// fixed order, bitwise the same on every x86-64 processor (with AVX or without).
     Vec3 Displacement(const LatticeLocation& inLocation) const { return Displacement(inLocation, mControlDisplacements); }
     /// The same sum over another set of control displacements (#controls, ControlIndex order). Preconditions
     /// (checked by assertion only: it runs per vertex): inControls holds GetControlCount() entries and
@@ -81,6 +82,7 @@ private:
     std::array<int, 3> mCellCount{};
     Vec3 mSpacing = Vec3::Ones();
     std::vector<Vec3> mControlDisplacements;
+    bool mWideSum = false; ///< Displacement takes the AVX sum (same bits, about twice as fast) where it runs
 };
 
 } // namespace crumple::ffd
