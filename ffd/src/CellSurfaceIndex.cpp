@@ -36,7 +36,7 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
 
     // intent: each triangle's cells once (-1 past its count); the loose ones, in no zone, apart
     std::vector<std::array<int, 3>> triangle_cells(inMesh.mTriangles.size());
-    index.mEntryStart.assign(cells + 1, 0);
+    index.mTriangleStart.assign(cells + 1, 0);
     for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
     {
         std::array<int, 3>& own = triangle_cells[t];
@@ -45,24 +45,19 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
         if (count == 0)
             index.mLooseTriangles.push_back(t);
         for (int i = 0; i < count; ++i)
-            ++index.mEntryStart[static_cast<std::size_t>(own[static_cast<std::size_t>(i)]) + 1];
+            ++index.mTriangleStart[static_cast<std::size_t>(own[static_cast<std::size_t>(i)]) + 1];
     }
 
-    // intent: triangle entries per cell (counting sort keeps ascending triangle order inside a cell)
+    // intent: triangles per cell (counting sort keeps ascending triangle order inside a cell)
     for (std::size_t c = 0; c < cells; ++c)
-        index.mEntryStart[c + 1] += index.mEntryStart[c];
-    index.mEntries.resize(index.mEntryStart[cells]);
-    std::vector<std::uint32_t> fill(index.mEntryStart.begin(), index.mEntryStart.end() - 1);
+        index.mTriangleStart[c + 1] += index.mTriangleStart[c];
+    index.mTriangles.resize(index.mTriangleStart[cells]);
+    std::vector<std::uint32_t> fill(index.mTriangleStart.begin(), index.mTriangleStart.end() - 1);
     for (std::uint32_t t = 0; t < inMesh.mTriangles.size(); ++t)
     {
         const std::array<int, 3>& own = triangle_cells[t];
         for (std::size_t i = 0; i < 3 && own[i] >= 0; ++i)
-        {
-            Entry entry{t, {-1, -1}};
-            for (std::size_t j = 0; j < i; ++j)
-                entry.mEarlierCell[j] = own[j];
-            index.mEntries[fill[static_cast<std::size_t>(own[i])]++] = entry;
-        }
+            index.mTriangles[fill[static_cast<std::size_t>(own[i])]++] = t;
     }
 
     // intent: ring vertices per cell: corners of the cell's triangles that lie in another cell (or in no
@@ -136,39 +131,18 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
     return index;
 }
 
-void CellSurfaceIndex::AppendTriangles(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
-                                       std::vector<std::uint32_t>& ioTriangles) const
+void CellSurfaceIndex::InsertTriangles(std::span<const int> inCells, AscendingIndexSet& ioTriangles) const
 {
     for (int cell : inCells)
-        for (std::uint32_t e = mEntryStart[static_cast<std::size_t>(cell)]; e < mEntryStart[static_cast<std::size_t>(cell) + 1]; ++e)
-        {
-            // intent: reported under its first touched cell only
-            const Entry& entry = mEntries[e];
-            const bool earlier = (entry.mEarlierCell[0] >= 0 && inCellMarks[static_cast<std::size_t>(entry.mEarlierCell[0])] != 0) ||
-                                 (entry.mEarlierCell[1] >= 0 && inCellMarks[static_cast<std::size_t>(entry.mEarlierCell[1])] != 0);
-            if (!earlier)
-                ioTriangles.push_back(entry.mTriangle);
-        }
+        for (std::uint32_t t : TrianglesOf(cell))
+            ioTriangles.Insert(t);
 }
 
-void CellSurfaceIndex::AppendRing(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
-                                  std::span<const int> inVertexCell, std::vector<std::uint8_t>& ioVertexMarks,
-                                  std::vector<std::uint32_t>& ioVertices) const
+void CellSurfaceIndex::InsertRing(std::span<const int> inCells, AscendingIndexSet& ioVertices) const
 {
-    const std::size_t first = ioVertices.size();
     for (int cell : inCells)
         for (std::uint32_t r = mRingStart[static_cast<std::size_t>(cell)]; r < mRingStart[static_cast<std::size_t>(cell) + 1]; ++r)
-        {
-            // intent: a ring vertex inside another touched cell is not ring; a shared one is taken once
-            const std::uint32_t v = mRing[r];
-            const int own = inVertexCell[v];
-            if ((own >= 0 && inCellMarks[static_cast<std::size_t>(own)] != 0) || ioVertexMarks[v] != 0)
-                continue;
-            ioVertexMarks[v] = 1;
-            ioVertices.push_back(v);
-        }
-    for (std::size_t i = first; i < ioVertices.size(); ++i)
-        ioVertexMarks[ioVertices[i]] = 0;
+            ioVertices.Insert(mRing[r]);
 }
 
 } // namespace crumple::ffd

@@ -5,6 +5,8 @@
 #include <crumple/base/Math.h>
 #include <crumple/ffd/TriangleMesh.h>
 
+#include "AscendingIndexSet.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -20,8 +22,8 @@ namespace crumple::ffd
 /// vertices in its touched cells. A triangle's face normal changes when one
 /// of its vertices is in a touched cell; a vertex normal changes when it is in a touched cell or shares a
 /// triangle with a vertex that is (its "ring"). Each triangle is listed under every distinct zone cell of its
-/// vertices, with the smaller of those cells beside it, and is reported under the first touched one only, so
-/// it is reported once without a mark.
+/// vertices; a dent inserts the lists of its touched cells into a bit set (AscendingIndexSet), which keeps a
+/// triangle or vertex listed under two touched cells once and hands them back in the mesh's order.
 ///
 /// For region queries (FfdDeformer::ProbeSurface) each cell also keeps its reach box: the rest-frame box of
 /// its vertices and of every vertex of its triangles, so a triangle larger than a cell is found from any
@@ -29,36 +31,20 @@ namespace crumple::ffd
 class CellSurfaceIndex
 {
 public:
-    /// One triangle listed under a cell: the cells of its other vertices that come before this one (-1: none).
-    struct Entry
-    {
-        std::uint32_t mTriangle;
-        int mEarlierCell[2];
-    };
-
     /// @param[in] inMesh        the rest mesh
     /// @param[in] inVertexCell  #V: each vertex's cell (numbered across zones), -1 for a vertex of no zone
     /// @param[in] inCellCount   cells of all zones
     static CellSurfaceIndex Build(const TriangleMesh& inMesh, std::span<const int> inVertexCell, int inCellCount);
-
-    /// Appends the triangles with a vertex in one of inCells, each once.
-    /// @param[in] inCells      touched cells, ascending
-    /// @param[in] inCellMarks  per cell: nonzero exactly for inCells
-    void AppendTriangles(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
-                         std::vector<std::uint32_t>& ioTriangles) const;
-
-    /// Appends the vertices outside inCells that share a triangle with a vertex in one of them, each once.
-    /// @param[in] inVertexCell  as given to Build
-    /// @param[in,out] ioVertexMarks  #V, all zero on entry and on return
-    void AppendRing(std::span<const int> inCells, std::span<const std::uint8_t> inCellMarks,
-                    std::span<const int> inVertexCell, std::vector<std::uint8_t>& ioVertexMarks,
-                    std::vector<std::uint32_t>& ioVertices) const;
-
-    /// The triangles with a vertex in inCell
-    std::span<const Entry> EntriesOf(int inCell) const
+    /// Inserts the triangles with a vertex in one of inCells.
+    void InsertTriangles(std::span<const int> inCells, AscendingIndexSet& ioTriangles) const;
+    /// Inserts the vertices outside a cell of inCells that share a triangle with a vertex in it (some may lie in
+    /// another cell of inCells).
+    void InsertRing(std::span<const int> inCells, AscendingIndexSet& ioVertices) const;
+    /// The triangles with a vertex in inCell, ascending
+    std::span<const std::uint32_t> TrianglesOf(int inCell) const
     {
-        return std::span<const Entry>(mEntries).subspan(mEntryStart[static_cast<std::size_t>(inCell)],
-                                                        mEntryStart[static_cast<std::size_t>(inCell) + 1] - mEntryStart[static_cast<std::size_t>(inCell)]);
+        return std::span<const std::uint32_t>(mTriangles).subspan(mTriangleStart[static_cast<std::size_t>(inCell)],
+                                                                  mTriangleStart[static_cast<std::size_t>(inCell) + 1] - mTriangleStart[static_cast<std::size_t>(inCell)]);
     }
     /// Rest-frame box of the cell's vertices and its triangles' vertices (body frame, m); empty (low > high)
     /// for a cell without vertices
@@ -77,8 +63,8 @@ public:
     const std::vector<std::uint32_t>& LooseTriangles() const { return mLooseTriangles; }
 
 private:
-    std::vector<std::uint32_t> mEntryStart; ///< #cells + 1: CSR offsets into mEntries
-    std::vector<Entry> mEntries;
+    std::vector<std::uint32_t> mTriangleStart; ///< #cells + 1: CSR offsets into mTriangles
+    std::vector<std::uint32_t> mTriangles;     ///< Per cell: TrianglesOf
     std::vector<std::uint32_t> mRingStart;  ///< #cells + 1: CSR offsets into mRing
     std::vector<std::uint32_t> mRing;       ///< Per cell: vertices outside it sharing a triangle with one inside, ascending
     std::vector<Vec3> mReachLow, mReachHigh; ///< Per cell: reach box (body frame, m)

@@ -6,6 +6,7 @@
 #include <crumple/ffd/OneSidedControls.h>
 #include <crumple/ffd/FoldGuard.h>
 
+#include "AscendingIndexSet.h"
 #include "CellSurfaceIndex.h"
 #include "ZonePoints.h"
 
@@ -243,7 +244,6 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
     deformer.mGuardControls = deformer.mScratchControls;
     deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
-    deformer.mCellMark.assign(static_cast<std::size_t>(cell_total), 0);
     deformer.mCellBound.assign(static_cast<std::size_t>(cell_total), 0.0);
     // intent: each slice's reach: the union of its cells' reach boxes, per axis
     for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
@@ -272,8 +272,8 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
                 }
         deformer.mSlices.push_back(std::move(slices));
     }
-    deformer.mVertexMark.assign(vertex_count, 0);
-    deformer.mTriangleMark.assign(triangle_count, 0);
+    deformer.mVertexBits.assign((vertex_count + 63) / 64, 0);
+    deformer.mTriangleBits.assign((triangle_count + 63) / 64, 0);
     deformer.mDirty.assign(vertex_count, 0);
     deformer.mPositions = deformer.mRestMesh.mPositions;
     deformer.mNormals.assign(vertex_count, Vec3::Zero());
@@ -582,17 +582,13 @@ void FfdDeformer::TouchCells(int inZone, std::span<const int> inControls)
                 const auto cell = static_cast<std::size_t>(zone.CellIndex({i, j, k}));
                 if (mask[at(i - cell_low[0], j - cell_low[1], k - cell_low[2])] == 0 || start[cell + 1] == start[cell])
                     continue;
-                const int global = offset + static_cast<int>(cell);
-                mCellMark[static_cast<std::size_t>(global)] = 1;
-                mTouchedCells.push_back(global);
+                mTouchedCells.push_back(offset + static_cast<int>(cell));
             }
     mTouchedZone = inZone;
 }
 
 void FfdDeformer::UntouchCells()
 {
-    for (int cell : mTouchedCells)
-        mCellMark[static_cast<std::size_t>(cell)] = 0;
     mTouchedCells.clear();
 }
 
@@ -771,41 +767,24 @@ bool SameBits(const Vec3& inA, const Vec3& inB)
     return std::memcmp(inA.data(), inB.data(), sizeof(Vec3)) == 0;
 }
 
-// Puts a list of distinct indices into ascending order when it holds a good part of all inCount indices: a
-// pass over byte marks (linear, no comparisons), after which the work walks the mesh's arrays in memory order
-// instead of in the cell order the list came in (which scatters it over an imported mesh). Short lists stay
-// as they are: the pass would cost more than their scattered reads.
-void AscendingIfLarge(std::vector<std::uint32_t>& ioIndices, std::vector<std::uint8_t>& ioMarks)
-{
-    if (ioIndices.size() * 16 < ioMarks.size())
-        return;
-    for (std::uint32_t index : ioIndices)
-        ioMarks[index] = 1;
-    ioIndices.clear();
-    for (std::uint32_t index = 0; index < ioMarks.size(); ++index)
-        if (ioMarks[index] != 0)
-        {
-            ioMarks[index] = 0;
-            ioIndices.push_back(index);
-        }
-}
-
 } // namespace
 
 void FfdDeformer::UpdateNormalsAround(std::span<const std::uint32_t> inMoved, DentReport& ioReport)
 {
-    // intent: the triangles with a vertex in a touched cell, each once; their corners are the moved
-    // vertices that have a triangle and the ring around the touched cells
+    // intent: the triangles with a vertex in a touched cell and their corners (the moved vertices that have a
+    // triangle and the ring around the touched cells), each once and ascending: the work then walks the mesh's
+    // arrays in memory order, not in the cell order that scatters it over an imported mesh
     std::vector<std::uint32_t> triangles;
-    mSurfaceIndex->AppendTriangles(mTouchedCells, mCellMark, triangles);
+    AscendingIndexSet triangle_set(mTriangleBits);
+    mSurfaceIndex->InsertTriangles(mTouchedCells, triangle_set);
+    triangle_set.TakeAscending(triangles);
     std::vector<std::uint32_t> corners;
-    corners.reserve(inMoved.size());
+    AscendingIndexSet corner_set(mVertexBits);
     for (std::uint32_t v : inMoved)
         if (mVertexTriangleStart[v + 1] != mVertexTriangleStart[v])
-            corners.push_back(v);
-    mSurfaceIndex->AppendRing(mTouchedCells, mCellMark, mVertexCell, mVertexMark, corners);
-    AscendingIfLarge(triangles, mTriangleMark);
-    AscendingIfLarge(corners, mVertexMark);
+            corner_set.Insert(v);
+    mSurfaceIndex->InsertRing(mTouchedCells, corner_set);
+    corner_set.TakeAscending(corners);
     // Face normals, then the normals of every corner of those triangles (a corner may not have moved
     // itself); each piece writes only its own elements.
     const int face_pieces = PieceCount(mJobs, triangles.size(), cMinVerticesPerPiece);

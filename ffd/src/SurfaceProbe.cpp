@@ -273,9 +273,9 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                     visited += mCellStart[z][local + 1] - mCellStart[z][local];
                     if (!behind && !InsidePrism(inProbe, low, high, cell_moved))
                     {
-                        for (const CellSurfaceIndex::Entry& entry : mSurfaceIndex->EntriesOf(cell))
-                            scan.Triangle(entry.mTriangle);
-                        visited += mSurfaceIndex->EntriesOf(cell).size();
+                        for (std::uint32_t triangle : mSurfaceIndex->TrianglesOf(cell))
+                            scan.Triangle(triangle);
+                        visited += mSurfaceIndex->TrianglesOf(cell).size();
                     }
                     // intent: a probe that visits a good part of the mesh cell by cell (a wide one over a
                     // body dented deep) is cheaper as one pass in memory order: start over that way (same

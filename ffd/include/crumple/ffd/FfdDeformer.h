@@ -193,12 +193,11 @@ private:
     std::vector<std::uint32_t> mVertexTriangles;           ///< Triangles around each vertex
 
     // Scratch, all zero (marks) or empty between calls.
-    std::vector<std::uint8_t> mCellMark;    ///< Per cell across zones
-    std::vector<int> mTouchedCells;         ///< The marked cells, ascending
+    std::vector<int> mTouchedCells;         ///< The cells a change reaches (TouchCells), ascending
     int mTouchedZone = 0;                   ///< The zone of mTouchedCells
     std::vector<std::uint8_t> mDilation[2]; ///< TouchCells' masks over the changed controls' box
-    std::vector<std::uint8_t> mVertexMark;
-    std::vector<std::uint8_t> mTriangleMark;
+    std::vector<std::uint64_t> mVertexBits;   ///< One bit per vertex (AscendingIndexSet)
+    std::vector<std::uint64_t> mTriangleBits; ///< One bit per triangle (AscendingIndexSet)
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
