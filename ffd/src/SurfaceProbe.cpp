@@ -249,6 +249,12 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
             const Vec3& slice_high = slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)];
             if (!(slice_low.x() <= slice_high.x()) || !MeetsPrism(inProbe, slice_low, slice_high, moved))
                 continue;
+            // intent: a slice wholly behind the front adds nothing once a vertex is inside, unless a vertex moved
+            // further than any inside so far: the cells' test below on the slice's box and the largest move,
+            // which bound every cell's (most slices behind the struck face of a car go at once)
+            if (scan.HasVertexInside() && NearestAlong(inProbe, slice_low, slice_high, moved) > scan.GetFront() &&
+                !(moved * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+                continue;
             for (int b = 0; b < cells[static_cast<std::size_t>(others[1])]; ++b)
                 for (int a = 0; a < cells[static_cast<std::size_t>(others[0])]; ++a)
                 {
