@@ -723,9 +723,10 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
                 const std::uint32_t v = inVertices[i];
                 const std::size_t k = first + (i - run[c]);
                 const Vec3 displacement = zone.Displacement(locations[k]);
-                mPositions[v] = rest[k] + displacement;
+                const Vec3 position = rest[k] + displacement;
+                mPositions[v] = position;
                 cell_largest = std::max(cell_largest, displacement.squaredNorm());
-                cell_moved = std::max(cell_moved, (mPositions[v] - rest[k]).squaredNorm());
+                cell_moved = std::max(cell_moved, (position - rest[k]).squaredNorm());
                 mDirty[v] = 1;
             }
             mCellBound[static_cast<std::size_t>(mTouchedCells[c])] = std::sqrt(cell_moved);
