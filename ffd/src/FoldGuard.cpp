@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FoldGuard.h>
 
+#include "AscendingIndexSet.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -110,7 +112,9 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
     const Mat3& axes = inLattice.GetSettings().mAxes;
     const std::array<int, 3> stride{{1, n[0], n[0] * n[1]}};
 
-    std::vector<int> lines;
+    std::vector<std::uint32_t> lines;
+    // intent: each axis's lines once and ascending, from one bit per control (no sort of the changed list)
+    std::vector<std::uint64_t> line_bits((inLattice.GetControlDisplacements().size() + 63) / 64, 0);
     std::vector<double> p;
     std::vector<double> p_wanted;
     std::vector<double> q;
@@ -120,19 +124,19 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
     {
         // intent: the lines along this axis through a changed control, named by their first control
         lines.clear();
+        AscendingIndexSet line_set(line_bits);
         for (int control : inChanged)
         {
             const int coordinate = (control / stride[static_cast<std::size_t>(axis)]) % n[static_cast<std::size_t>(axis)];
-            lines.push_back(control - coordinate * stride[static_cast<std::size_t>(axis)]);
+            line_set.Insert(static_cast<std::uint32_t>(control - coordinate * stride[static_cast<std::size_t>(axis)]));
         }
-        std::sort(lines.begin(), lines.end());
-        lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+        line_set.TakeAscending(lines);
 
         const Vec3 direction = axes.col(axis);
         const double spacing = inLattice.GetSpacing()[axis];
         const auto count = static_cast<std::size_t>(n[static_cast<std::size_t>(axis)]);
         const auto step = static_cast<std::size_t>(stride[static_cast<std::size_t>(axis)]);
-        for (int line : lines)
+        for (std::uint32_t line : lines)
         {
             // intent: project the line on the axis (lattice frame) and skip it cheaply when it is clean
             // Controls that move no vertex are left out of the line (they hold no surface to fold).
