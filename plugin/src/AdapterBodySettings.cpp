@@ -69,8 +69,9 @@ Status ValidateHull(const std::string& inName, const std::vector<Vec3>& inPoints
             const Vec3 normal = (points[i] - points[0]).cross(points[j] - points[0]);
             if (normal.norm() <= 1.0e-9 * extent * extent)
                 continue;
+            const Vec3 unit = normal.normalized();
             for (const Vec3& point : points)
-                largest = std::max(largest, std::abs(normal.normalized().dot(point - points[0])));
+                largest = std::max(largest, std::abs(unit.dot(point - points[0])));
             if (largest <= 1.0e-9 * extent)
                 largest = 0.0;
         }
