@@ -225,9 +225,13 @@ TEST_CASE("FlipFlatEdges: a fan of slivers becomes Delaunay, the face and its ou
     for (const auto& t : flipped.mTriangles)
         for (int k = 0; k < 3; ++k)
             opposite[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
-    for (const auto& [edge, c] : opposite)
-        if (const auto other = opposite.find({edge.second, edge.first}); other != opposite.end())
+    // intent: named pairs, not structured bindings: a lambda may not capture those before C++20 compilers
+    // caught up (clang 14 refuses it)
+    for (const auto& entry : opposite)
+        if (const auto other = opposite.find({entry.first.second, entry.first.first}); other != opposite.end())
         {
+            const std::pair<std::uint32_t, std::uint32_t>& edge = entry.first;
+            const std::uint32_t c = entry.second;
             auto angle = [&](std::uint32_t inApex) {
                 const Vec3 u = flipped.mPositions[edge.first] - flipped.mPositions[inApex];
                 const Vec3 v = flipped.mPositions[edge.second] - flipped.mPositions[inApex];

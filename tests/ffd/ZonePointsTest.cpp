@@ -20,8 +20,11 @@ namespace
 std::vector<ZonePoint> Scan(const std::vector<std::pair<Vec3, Vec3>>& inPoints, double inMergeDistance)
 {
     std::vector<ZonePoint> points;
-    for (const auto& [lattice, displacement] : inPoints)
+    for (const auto& point : inPoints)
     {
+        // intent: named, not structured bindings: clang 14 refuses to capture those in a lambda
+        const Vec3& lattice = point.first;
+        const Vec3& displacement = point.second;
         auto near = std::find_if(points.begin(), points.end(), [&](const ZonePoint& p) {
             return (p.mLattice - lattice).cwiseAbs().maxCoeff() < inMergeDistance;
         });
