@@ -152,14 +152,15 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
             k.resize(members.size());
             for (std::size_t m = 0; m < members.size(); ++m)
             {
-                const std::size_t control = static_cast<std::size_t>(line) + members[m] * step;
-                p[m] = direction.dot(ioAfter[control]);
-                q[m] = direction.dot(inBefore[control]);
+                p[m] = direction.dot(ioAfter[static_cast<std::size_t>(line) + members[m] * step]);
                 k[m] = static_cast<double>(members[m]);
             }
             LineResolver resolver(p, q, k, spacing, inMinSpacing);
             if (!resolver.AnyViolation())
                 continue;
+            // intent: the positions before the dent only for a line that needs resolving (most are clean)
+            for (std::size_t m = 0; m < members.size(); ++m)
+                q[m] = direction.dot(inBefore[static_cast<std::size_t>(line) + members[m] * step]);
             p_wanted = p;
             resolver.Resolve();
 

@@ -222,6 +222,32 @@ TEST_CASE("Controls that move into each other meet around their midpoint", "[ffd
     CHECK(MinRelativeGap(lattice, after) >= cMinSpacing);
 }
 
+TEST_CASE("Controls meet around their midpoint when one of them had moved in an earlier dent", "[ffd]")
+{
+    // The right control moved forward by 0.3 h in an earlier dent; this dent moves it back to 0.05 h (down
+    // the line, toward the left one) while the left one moves up by h: both moved into each other in this
+    // dent, so they meet at the midpoint of where this dent wanted them (measured from the state before it,
+    // not from rest: from rest the right one would seem to have moved up and be pushed along instead).
+    const FfdLattice lattice = MakeLattice();
+    const double h = lattice.GetSpacing().x();
+    const int left = lattice.ControlIndex(3, 2, 2);
+    const int right = lattice.ControlIndex(4, 2, 2);
+    std::vector<Vec3> before(static_cast<std::size_t>(lattice.GetControlCount()), Vec3::Zero());
+    before[static_cast<std::size_t>(right)] = Vec3(0.3 * h, 0.0, 0.0);
+    std::vector<Vec3> after = before;
+    after[static_cast<std::size_t>(left)] = Vec3(1.0 * h, 0.0, 0.0);
+    after[static_cast<std::size_t>(right)] = Vec3(0.05 * h, 0.0, 0.0);
+    const std::vector<int> changed{left, right};
+
+    const std::vector<int> moved = FoldGuard(lattice, before, after, changed, cMinSpacing);
+
+    // Midpoint of the wanted displacements 0.525 h, gap 0.2 h: 0.925 h and 0.125 h.
+    CHECK(moved == std::vector<int>{left, right});
+    CHECK(after[static_cast<std::size_t>(left)].x() == Approx(0.925 * h).epsilon(1e-8));
+    CHECK(after[static_cast<std::size_t>(right)].x() == Approx(0.125 * h).epsilon(1e-8));
+    CHECK(MinRelativeGap(lattice, after) >= cMinSpacing);
+}
+
 TEST_CASE("FoldGuard with a zero minimum spacing does nothing", "[ffd]")
 {
     const FfdLattice lattice = MakeLattice();
