@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Assert.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -23,6 +25,7 @@ public:
     void Insert(std::uint32_t inIndex)
     {
         const std::size_t word = inIndex >> 6;
+        CRUMPLE_ASSERT(word < mWords.size(), "AscendingIndexSet::Insert: an index past the set's bound");
         mWords[word] |= std::uint64_t{1} << (inIndex & 63);
         mLowWord = word < mLowWord ? word : mLowWord;
         mHighWord = word > mHighWord ? word : mHighWord;
