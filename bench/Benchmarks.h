@@ -15,6 +15,8 @@ struct BenchOptions
 
 /// Dent application on a car-sized mesh: contacts, zones and lattice resolution against time and error.
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+/// The dent's per-vertex kernel, the B-spline sum in AVX lanes against the scalar one (part of the dent group).
+void RunTensorSumCase(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// Simultaneous Baraff impulses against the analytic impulse, and the cost of frames without impacts.
 void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);

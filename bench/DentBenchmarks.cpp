@@ -269,6 +269,9 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 
     // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
     ScalingCase(ioTable, triangles, 4 * triangles, repetitions);
+
+    // Its per-vertex kernel alone.
+    RunTensorSumCase(ioTable, inOptions);
 }
 
 } // namespace crumple::bench
