@@ -62,8 +62,12 @@ __attribute__((target("avx"))) Vec3 WideTensorProductSum(const Vec3* inFirst, st
 
 bool HasWideTensorProductSum()
 {
-    // intent: asked once; the answer (the processor's and the OS's AVX support) cannot change in a process
-    static const bool sHasAvx = __builtin_cpu_supports("avx") != 0;
+    // intent: asked once; the answer (the processor's and the OS's AVX support) cannot change in a process. The
+    // explicit init makes it right even from a static constructor that runs before libgcc's own.
+    static const bool sHasAvx = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx") != 0;
+    }();
     return sHasAvx;
 }
 
