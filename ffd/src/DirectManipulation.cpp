@@ -5,8 +5,6 @@
 #include <crumple/ffd/CubicBSplineWeights.h>
 #include <crumple/ffd/DirectManipulation.h>
 
-#include <Eigen/Cholesky>
-
 #include <algorithm>
 #include <array>
 
@@ -105,27 +103,12 @@ Eigen::MatrixX3d GramSolve(const DirectManipulationData& inData, const Eigen::Ma
     for (Eigen::Index k = 0; k < n; ++k)
         permuted.row(k) = inRhs.row(inData.mPivots[static_cast<std::size_t>(k)]);
 
-    // Pseudo-inverse of the rank-revealed Gram matrix G ~ L L^T: (L L^T)^-1 at full rank, else
-    // L (L^T L)^-2 L^T, the Moore-Penrose inverse of L L^T for L of full column rank.
-    Eigen::MatrixX3d solved;
-    if (inRank == n)
-    {
-        const auto lower = inData.mL.triangularView<Eigen::Lower>();
-        solved = lower.transpose().solve(lower.solve(permuted));
-    }
-    else if (inRank == inData.mRank)
-        solved = inData.mL * inData.mLtLFactor.solve(inData.mLtLFactor.solve(inData.mL.transpose() * permuted));
-    else
-    {
-        // A lower cut: the leading columns of L, and the leading block of L^T L where it was computed (a
-        // rank-deficient factor); at full rank no L^T L was needed until now.
-        const auto l = inData.mL.leftCols(inRank);
-        const Eigen::MatrixXd ltl_block = inData.mLtL.rows() >= inRank
-                                              ? Eigen::MatrixXd(inData.mLtL.topLeftCorner(inRank, inRank))
-                                              : Eigen::MatrixXd(l.transpose() * l);
-        const Eigen::LLT<Eigen::MatrixXd> ltl(ltl_block);
-        solved = l * ltl.solve(ltl.solve(l.transpose() * permuted));
-    }
+    // Pseudo-inverse of the rank-revealed Gram matrix G ~ L L^T: the prepared one at the factor's rank, else
+    // that of L's leading columns (a lower cut, when the tolerance was raised).
+    const Eigen::MatrixX3d solved =
+        inRank == inData.mPseudoInverse.mRank
+            ? SolveGramPseudoInverse(inData.mPseudoInverse, inData.mL, permuted)
+            : SolveGramPseudoInverse(PrepareGramPseudoInverse(inData.mL.leftCols(inRank)), inData.mL.leftCols(inRank), permuted);
 
     Eigen::MatrixX3d y(n, 3);
     for (Eigen::Index k = 0; k < n; ++k)
@@ -230,14 +213,7 @@ DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
     data.mL = std::move(factor.mL);
     data.mPivots = std::move(factor.mPivots);
     data.mRank = factor.mRank;
-    if (data.mRank < static_cast<int>(data.mPivots.size()))
-    {
-        // Its lower triangle only (a symmetric rank-k update: half the products of a general one); the
-        // Cholesky factorizations below read nothing else.
-        data.mLtL.setZero(data.mRank, data.mRank);
-        data.mLtL.selfadjointView<Eigen::Lower>().rankUpdate(data.mL.transpose());
-        data.mLtLFactor.compute(data.mLtL);
-    }
+    data.mPseudoInverse = PrepareGramPseudoInverse(data.mL);
     return data;
 }
 

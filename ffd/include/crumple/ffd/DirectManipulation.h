@@ -6,6 +6,7 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/ffd/FfdLattice.h>
+#include <crumple/ffd/GramPseudoInverse.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -60,9 +61,7 @@ struct CRUMPLE_API DirectManipulationData
     bool mGramOfPoints = true;       ///< True: B B^T is factored (#points <= #controls); false: dense B is
     Eigen::MatrixXd mL;              ///< #points by rank pivoted Cholesky factor of B B^T, pivot order
     std::vector<int> mPivots;        ///< #points pivot order of B B^T
-    Eigen::MatrixXd mLtL;            ///< rank by rank L^T L, lower triangle only, when rank < #points; a lower rank's is its
-                                     ///< leading block (the columns of L do not change with the cut)
-    Eigen::LLT<Eigen::MatrixXd> mLtLFactor; ///< Cholesky factor of mLtL
+    GramPseudoInverse mPseudoInverse; ///< (L L^T)^+ at mRank, ready to apply
     Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> mTall; ///< Of dense B, when #points > #controls
     double mTolerance = cDefaultRankTolerance; ///< The relative pivot tolerance the factor was computed with
     int mRank = 0;                   ///< Numerical rank of B under the tolerance

@@ -1,0 +1,113 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/ffd/DirectManipulation.h>
+#include <crumple/ffd/GramPseudoInverse.h>
+
+#include "PivotedCholesky.h"
+
+#include <Eigen/SVD>
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace crumple::ffd;
+
+namespace
+{
+
+// The pivoted Cholesky factor of a random Gram matrix X X^T of rank r (X #n by r, Gaussian entries): the
+// shape and the pivoting (|L_ij| <= L_jj) of the factors the direct-manipulation solve hands over.
+Eigen::MatrixXd RandomFactor(int inRows, int inRank, std::mt19937_64& ioRandom)
+{
+    std::normal_distribution<double> entry(0.0, 1.0);
+    Eigen::MatrixXd x(inRows, inRank);
+    for (int i = 0; i < inRows; ++i)
+        for (int j = 0; j < inRank; ++j)
+            x(i, j) = entry(ioRandom);
+    PivotedCholeskyFactor factor = PivotedCholesky(x * x.transpose(), 1.0e-12);
+    REQUIRE(factor.mRank == inRank);
+    return factor.mL;
+}
+
+Eigen::MatrixX3d RandomRhs(int inRows, std::mt19937_64& ioRandom)
+{
+    std::uniform_real_distribution<double> entry(-1.0, 1.0);
+    Eigen::MatrixX3d rhs(inRows, 3);
+    for (int i = 0; i < inRows; ++i)
+        for (int j = 0; j < 3; ++j)
+            rhs(i, j) = entry(ioRandom);
+    return rhs;
+}
+
+} // namespace
+
+TEST_CASE("The Gram pseudo-inverse equals an SVD pseudo-inverse of L L^T at full and cut rank", "[ffd]")
+{
+    // Both coupling forms (fewer dependent rows than independent ones and more), full rank, rank one.
+    std::mt19937_64 random(5);
+    const std::vector<std::pair<int, int>> shapes{{40, 40}, {40, 30}, {40, 10}, {40, 1}, {7, 6}, {7, 2}, {263, 185}};
+    bool saw_dependents = false, saw_independents = false;
+    for (const auto& [rows, rank] : shapes)
+    {
+        const Eigen::MatrixXd l = RandomFactor(rows, rank, random);
+        const Eigen::MatrixX3d rhs = RandomRhs(rows, random);
+        const GramPseudoInverse inverse = PrepareGramPseudoInverse(l);
+        const Eigen::MatrixX3d solved = SolveGramPseudoInverse(inverse, l, rhs);
+
+        // An independent computation: the SVD of the Gram matrix itself, cut at its exact rank.
+        const Eigen::MatrixXd gram = l * l.transpose();
+        Eigen::BDCSVD<Eigen::MatrixXd> svd(gram, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(rows, rows);
+        for (int k = 0; k < rank; ++k)
+            pinv += svd.matrixV().col(k) * svd.matrixU().col(k).transpose() / svd.singularValues()(k);
+        const Eigen::MatrixX3d reference = pinv * rhs;
+        const double condition = svd.singularValues()(0) / svd.singularValues()(rank - 1);
+        INFO(rows << " rows, rank " << rank << ", cond " << condition);
+        // Two backward-stable solves of a system of condition c agree to about c times the rounding unit.
+        CHECK((solved - reference).norm() <= 1.0e-13 * condition * reference.norm());
+        // The Moore-Penrose conditions that matter to a solve: the answer lies in the range of G (it is G's
+        // minimum-norm least-squares solution), and G times it is the rhs projected onto that range.
+        const Eigen::MatrixXd range = svd.matrixU().leftCols(rank);
+        CHECK((solved - range * (range.transpose() * solved)).norm() <= 1.0e-13 * condition * solved.norm());
+        CHECK((gram * solved - range * (range.transpose() * rhs)).norm() <= 1.0e-13 * condition * rhs.norm());
+        (inverse.mCouplingOfDependents ? saw_dependents : saw_independents) |= rank < rows;
+    }
+    CHECK(saw_dependents);
+    CHECK(saw_independents);
+}
+
+TEST_CASE("The direct-manipulation factor of clustered points on a face has the SVD pseudo-inverse", "[ffd]")
+{
+    // As a dent's points: on one lattice plane (a car's front face), in pairs a few millimetres apart, on a
+    // fine lattice; the factor is cut well below #points and its dependent rows are close to independent ones.
+    crumple::ffd::FfdLatticeSettings settings;
+    settings.mSize = crumple::Vec3(4.2, 1.8, 1.4);
+    settings.mControlCount = {16, 16, 16};
+    const FfdLattice lattice = FfdLattice::Create(settings).Get();
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> y(0.0, 13.0), z(0.0, 13.0), jitter(-0.02, 0.02);
+    std::vector<LatticeLocation> locations;
+    for (int i = 0; i < 130; ++i)
+    {
+        const double a = y(random), b = z(random);
+        locations.push_back(lattice.Locate(crumple::Vec3(12.5, a, b)));
+        locations.push_back(lattice.Locate(crumple::Vec3(12.5, a + jitter(random), b + jitter(random))));
+    }
+    const DirectManipulationData data = DirectManipulationPrecompute(lattice, locations);
+    REQUIRE(data.mGramOfPoints);
+    const int rows = static_cast<int>(locations.size());
+    INFO("rank " << data.mRank << " of " << rows);
+    REQUIRE(data.mRank < rows);
+    REQUIRE(data.mRank > rows / 4);
+
+    const Eigen::MatrixX3d rhs = RandomRhs(rows, random);
+    const Eigen::MatrixX3d solved = SolveGramPseudoInverse(data.mPseudoInverse, data.mL, rhs);
+    const Eigen::MatrixXd gram = data.mL * data.mL.transpose();
+    Eigen::BDCSVD<Eigen::MatrixXd> svd(gram, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(rows, rows);
+    for (int k = 0; k < data.mRank; ++k)
+        pinv += svd.matrixV().col(k) * svd.matrixU().col(k).transpose() / svd.singularValues()(k);
+    const double condition = svd.singularValues()(0) / svd.singularValues()(data.mRank - 1);
+    INFO("cond " << condition);
+    CHECK((solved - pinv * rhs).norm() <= 1.0e-13 * condition * (pinv * rhs).norm());
+}
