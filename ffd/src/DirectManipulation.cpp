@@ -24,46 +24,68 @@ AxisWeights WeightsOf(const LatticeLocation& inLocation)
             CubicBSplineWeights(inLocation.mT.z())};
 }
 
-// Overlap of two points' 1D weights along one axis: sum over the controls both reach of w_i w_j. Point j's
-// cell is inOffset cells after point i's, so control a of i is control a - inOffset of j.
-double AxisOverlap(const std::array<double, 4>& inWi, const std::array<double, 4>& inWj, int inOffset)
+// One point's 1D weights along an axis, with three zeros on either side: the overlap with a point inOffset
+// cells further along is then the same four products whatever the offset.
+using PaddedWeights = std::array<double, 10>;
+
+PaddedWeights Padded(const std::array<double, 4>& inWeights)
 {
+    PaddedWeights padded{};
+    std::copy(inWeights.begin(), inWeights.end(), padded.begin() + 3);
+    return padded;
+}
+
+// Overlap of two points' 1D weights along one axis: sum over the controls both reach of w_i w_j. Point j's
+// cell is inOffset cells (-3 to 3) after point i's, so control b of j is control b + inOffset of i. The
+// padding adds exact zeros before and after the shared products, in their ascending order, so the sum is
+// the one over the shared controls alone, bit for bit.
+double AxisOverlap(const PaddedWeights& inWi, const std::array<double, 4>& inWj, int inOffset)
+{
+    const double* wi = inWi.data() + 3 + inOffset;
     double sum = 0.0;
-    for (int a = std::max(0, inOffset); a < std::min(4, 4 + inOffset); ++a)
-        sum += inWi[static_cast<std::size_t>(a)] * inWj[static_cast<std::size_t>(a - inOffset)];
+    for (std::size_t b = 0; b < 4; ++b)
+        sum += wi[b] * inWj[b];
     return sum;
 }
 
-// B B^T from the tensor-product structure: each entry is a product of three 1D overlaps.
-Eigen::MatrixXd PointGram(std::span<const LatticeLocation> inLocations)
+// The lower triangle of B B^T (its strictly upper part is left unset: PivotedCholesky reads nothing else),
+// from the tensor-product structure: each entry is a product of three 1D overlaps.
+RowMajorMatrix PointGram(std::span<const LatticeLocation> inLocations)
 {
     const auto n = static_cast<Eigen::Index>(inLocations.size());
     std::vector<AxisWeights> weights;
+    std::vector<std::array<PaddedWeights, 3>> padded;
     weights.reserve(inLocations.size());
+    padded.reserve(inLocations.size());
     for (const LatticeLocation& location : inLocations)
+    {
         weights.push_back(WeightsOf(location));
-    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n, n);
+        padded.push_back({Padded(weights.back()[0]), Padded(weights.back()[1]), Padded(weights.back()[2])});
+    }
+    RowMajorMatrix gram(n, n);
+    // intent: row by row (contiguous in memory), the columns up to the diagonal
     for (Eigen::Index i = 0; i < n; ++i)
+    {
+        const LatticeLocation& li = inLocations[static_cast<std::size_t>(i)];
+        const std::array<PaddedWeights, 3>& pi = padded[static_cast<std::size_t>(i)];
         for (Eigen::Index j = 0; j <= i; ++j)
         {
-            const LatticeLocation& li = inLocations[static_cast<std::size_t>(i)];
             const LatticeLocation& lj = inLocations[static_cast<std::size_t>(j)];
             // Points four or more cells apart on any axis share no control: test the cells before any weight.
-            std::array<int, 3> offset{};
-            bool apart = false;
-            for (std::size_t axis = 0; axis < 3; ++axis)
+            const int dx = lj.mCell[0] - li.mCell[0], dy = lj.mCell[1] - li.mCell[1], dz = lj.mCell[2] - li.mCell[2];
+            if (dx < -3 || dx > 3 || dy < -3 || dy > 3 || dz < -3 || dz > 3)
             {
-                offset[axis] = lj.mCell[axis] - li.mCell[axis];
-                apart = apart || offset[axis] < -3 || offset[axis] > 3;
-            }
-            if (apart)
+                gram(i, j) = 0.0;
                 continue;
+            }
+            const AxisWeights& wj = weights[static_cast<std::size_t>(j)];
             double product = 1.0;
-            for (std::size_t axis = 0; axis < 3; ++axis)
-                product *= AxisOverlap(weights[static_cast<std::size_t>(i)][axis], weights[static_cast<std::size_t>(j)][axis],
-                                       offset[axis]);
+            product *= AxisOverlap(pi[0], wj[0], dx);
+            product *= AxisOverlap(pi[1], wj[1], dy);
+            product *= AxisOverlap(pi[2], wj[2], dz);
             gram(i, j) = product;
         }
+    }
     return gram;
 }
 

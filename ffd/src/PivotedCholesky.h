@@ -9,6 +9,9 @@
 namespace crumple::ffd
 {
 
+/// A row-major dense matrix: the factorization reads and writes along rows.
+using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 /// A rank-revealing Cholesky factor of a symmetric positive semi-definite matrix G: with the symmetric
 /// permutation P (row k of P G P^T is row mPivots[k] of G), P G P^T ~ L L^T with L lower trapezoidal,
 /// #n by mRank. The error of the approximation is the Schur complement left when the factorization stopped:
@@ -25,9 +28,11 @@ struct PivotedCholeskyFactor
 /// stops when it is at most inRelativeThreshold times the largest diagonal of G. For G = A^T A this picks
 /// the same pivots as a column-pivoted QR of A, with |R_kk|^2 = the pivots, so stopping at tau^2 here is
 /// the rank decision |R_kk| <= tau |R_00| of a rank-revealing QR. Ties go to the lower index, so the
-/// factor is a pure function of G's bytes. Cost: O(n rank^2).
-/// @param[in] inG                  #n by #n symmetric positive semi-definite (only its lower triangle is read)
+/// factor is a pure function of G's bytes. Cost: O(n rank^2), most of it in matrix-matrix products (blocked
+/// as LAPACK's dpstrf: panels of columns, then one symmetric update of the rest).
+/// @param[in] inG                  #n by #n symmetric positive semi-definite, taken by value and factored in
+///                                 place (move it in to save a copy); only its lower triangle is read
 /// @param[in] inRelativeThreshold  stop when the largest remaining diagonal is <= this times max diag(G)
-PivotedCholeskyFactor PivotedCholesky(const Eigen::MatrixXd& inG, double inRelativeThreshold);
+PivotedCholeskyFactor PivotedCholesky(RowMajorMatrix inG, double inRelativeThreshold);
 
 } // namespace crumple::ffd
