@@ -7,8 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <set>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace crumple::ffd
 {
@@ -53,32 +54,33 @@ std::vector<Triangle> Delaunay(const std::vector<Vec2>& inPoints)
     vertices.push_back(centre + Vec2(1.0e4 * extent, -1.0e4 * extent));
     vertices.push_back(centre + Vec2(0.0, 1.0e4 * extent));
     std::vector<Triangle> triangles{{n, n + 1, n + 2}};
-
+    std::vector<Triangle> kept;
+    std::vector<std::pair<int, int>> edges;
     for (int p = 0; p < n; ++p)
     {
-        // Remove the triangles whose circumcircle holds p; keep their boundary edges.
-        std::map<std::pair<int, int>, int> edge_count;
-        std::vector<Triangle> kept;
-        std::vector<std::pair<int, int>> edges;
+        // Remove the triangles whose circumcircle holds p; keep their boundary edges (the cavity's few
+        // edges, so a linear count beats a map's allocations).
+        kept.clear();
+        edges.clear();
         for (const Triangle& t : triangles)
         {
             if (InCircumcircle(vertices[t[0]], vertices[t[1]], vertices[t[2]], vertices[p]))
             {
                 for (int e = 0; e < 3; ++e)
-                {
-                    const int a = t[e], b = t[(e + 1) % 3];
-                    edges.emplace_back(a, b);
-                    ++edge_count[{std::min(a, b), std::max(a, b)}];
-                }
+                    edges.emplace_back(t[e], t[(e + 1) % 3]);
             }
             else
                 kept.push_back(t);
         }
-        // Re-triangulate the cavity from p.
-        for (const auto& [a, b] : edges)
-            if (edge_count[{std::min(a, b), std::max(a, b)}] == 1)
-                kept.push_back({a, b, p});
-        triangles = std::move(kept);
+        // Re-triangulate the cavity from p: an edge two cavity triangles share is inside it.
+        const auto same_edge = [](const std::pair<int, int>& inE, const std::pair<int, int>& inF) {
+            return (inE.first == inF.first && inE.second == inF.second) ||
+                   (inE.first == inF.second && inE.second == inF.first);
+        };
+        for (const std::pair<int, int>& edge : edges)
+            if (std::count_if(edges.begin(), edges.end(), [&](const std::pair<int, int>& inOther) { return same_edge(edge, inOther); }) == 1)
+                kept.push_back({edge.first, edge.second, p});
+        triangles.swap(kept);
     }
     // Drop everything attached to the super-triangle.
     std::vector<Triangle> result;
@@ -115,31 +117,44 @@ std::vector<PointDisplacement> Thinned(std::vector<PointDisplacement> inPoints, 
                                        const Vec3& inE1, const Vec3& inE2, double inSpacing)
 {
     const double radius = cThinningRadius * inSpacing;
-    // Kept points hashed by a grid of the radius: a closer point is in the same or a neighbouring bucket.
-    std::map<std::pair<long, long>, std::vector<Vec2>> buckets;
-    const auto bucket_of = [&](const Vec2& inQ) {
-        return std::pair<long, long>(static_cast<long>(std::floor(inQ.x() / radius)),
-                                     static_cast<long>(std::floor(inQ.y() / radius)));
+    // Kept points bucketed by a grid over the points' extent: a closer point is in the same or a
+    // neighbouring bucket. Each bucket is a list threaded through the kept points (no allocation per
+    // bucket); whether a close point exists does not depend on the order a bucket is searched in.
+    std::vector<Vec2> plane(inPoints.size());
+    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (std::size_t i = 0; i < inPoints.size(); ++i)
+    {
+        const Vec3 d = inPoints[i].mPoint - inCentroid;
+        plane[i] = Vec2(d.dot(inE1), d.dot(inE2));
+        lo = lo.cwiseMin(plane[i]);
+        hi = hi.cwiseMax(plane[i]);
+    }
+    // Buckets no smaller than the radius (so the neighbours hold every closer point) and at most 128 a side.
+    const double bucket_size = std::max(radius, (hi - lo).maxCoeff() / 128.0);
+    const auto bucket_of = [&](const Vec2& inQ, std::size_t inAxis) {
+        return static_cast<long>(std::floor(inQ[static_cast<Eigen::Index>(inAxis)] / bucket_size)) -
+               static_cast<long>(std::floor(lo[static_cast<Eigen::Index>(inAxis)] / bucket_size));
     };
+    const long columns = bucket_of(hi, 0) + 1, rows = bucket_of(hi, 1) + 1;
+    std::vector<int> first(static_cast<std::size_t>(columns * rows), -1), next;
+    std::vector<Vec2> kept_plane;
     std::vector<PointDisplacement> kept;
     kept.reserve(inPoints.size());
     for (std::size_t i = 0; i < inPoints.size(); ++i)
     {
-        const Vec3 d = inPoints[i].mPoint - inCentroid;
-        const Vec2 q(d.dot(inE1), d.dot(inE2));
-        const auto [bx, by] = bucket_of(q);
+        const Vec2& q = plane[i];
+        const long bx = bucket_of(q, 0), by = bucket_of(q, 1);
         bool near = false;
-        for (long dy = -1; dy <= 1 && !near && i >= inGiven; ++dy)
-            for (long dx = -1; dx <= 1 && !near; ++dx)
-            {
-                const auto found = buckets.find({bx + dx, by + dy});
-                if (found != buckets.end())
-                    near = std::any_of(found->second.begin(), found->second.end(),
-                                       [&](const Vec2& inKept) { return (inKept - q).norm() < radius; });
-            }
+        for (long y = std::max(by - 1, 0L); y <= std::min(by + 1, rows - 1) && !near && i >= inGiven; ++y)
+            for (long x = std::max(bx - 1, 0L); x <= std::min(bx + 1, columns - 1) && !near; ++x)
+                for (int k = first[static_cast<std::size_t>(y * columns + x)]; k >= 0 && !near; k = next[static_cast<std::size_t>(k)])
+                    near = (kept_plane[static_cast<std::size_t>(k)] - q).norm() < radius;
         if (near)
             continue;
-        buckets[{bx, by}].push_back(q);
+        const std::size_t bucket = static_cast<std::size_t>(by * columns + bx);
+        next.push_back(first[bucket]);
+        first[bucket] = static_cast<int>(kept_plane.size());
+        kept_plane.push_back(q);
         kept.push_back(inPoints[i]);
     }
     return kept;
@@ -206,10 +221,17 @@ std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> in
     const std::vector<Triangle> triangles = Delaunay(plane);
 
     // Grid samples strictly inside triangles, away from the given points.
-    Vec2 lo = plane[0];
+    Vec2 lo = plane[0], hi = plane[0];
     for (const Vec2& p : plane)
+    {
         lo = lo.cwiseMin(p);
-    std::set<std::pair<long, long>> taken;
+        hi = hi.cwiseMax(p);
+    }
+    // The grid nodes already sampled, one byte each over the set's box (a node satisfies
+    // lo + g inSpacing <= hi, so g <= (hi - lo) / inSpacing + 1 in floating point).
+    const auto grid_nodes = [&](Eigen::Index inAxis) { return static_cast<long>(std::floor((hi[inAxis] - lo[inAxis]) / inSpacing)) + 2; };
+    const long grid_columns = grid_nodes(0);
+    std::vector<char> taken(static_cast<std::size_t>(grid_columns * grid_nodes(1)), 0);
     for (const Triangle& t : triangles)
     {
         const Vec2 &a = plane[t[0]], &b = plane[t[1]], &c = plane[t[2]];
@@ -222,8 +244,12 @@ std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> in
             {
                 const Vec2 q = lo + inSpacing * Vec2(static_cast<double>(gx), static_cast<double>(gy));
                 const double wa = Orient(b, c, q) / area, wb = Orient(c, a, q) / area, wc = Orient(a, b, q) / area;
-                if (wa <= 1.0e-9 || wb <= 1.0e-9 || wc <= 1.0e-9 || !taken.insert({gx, gy}).second)
+                if (wa <= 1.0e-9 || wb <= 1.0e-9 || wc <= 1.0e-9)
                     continue;
+                char& node = taken[static_cast<std::size_t>(gy * grid_columns + gx)];
+                if (node != 0)
+                    continue;
+                node = 1;
                 if (std::any_of(plane.begin(), plane.end(), [&](const Vec2& o) { return (o - q).norm() < 0.5 * inSpacing; }))
                     continue;
                 const PointDisplacement &pa = inPoints[source[t[0]]], &pb = inPoints[source[t[1]]],
@@ -235,10 +261,13 @@ std::vector<PointDisplacement> Interpolate(std::span<const PointDisplacement> in
 
     // Edges longer than the spacing, each once (after the grid, so that thinning keeps the regular grid
     // and drops the edge samples beside it).
-    std::set<std::pair<int, int>> edges;
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(3 * triangles.size());
     for (const Triangle& t : triangles)
         for (int e = 0; e < 3; ++e)
-            edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
+            edges.emplace_back(std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     for (const auto& [a, b] : edges)
     {
         const double length = (plane[a] - plane[b]).norm();
