@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/GramPseudoInverse.h>
 
+#include <crumple/base/Assert.h>
+
 namespace crumple::ffd
 {
 
@@ -24,6 +26,8 @@ Eigen::MatrixX3d ApplyCoupling(const GramPseudoInverse& inInverse, const Eigen::
 
 GramPseudoInverse PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL)
 {
+    CRUMPLE_ASSERT(inL.cols() <= inL.rows() && (inL.cols() == 0 || inL.diagonal().minCoeff() > 0.0),
+                   "PrepareGramPseudoInverse: L must be #n by r <= #n with a positive diagonal");
     GramPseudoInverse inverse;
     const Eigen::Index r = inL.cols();
     const Eigen::Index dependent = inL.rows() - r;
@@ -52,6 +56,9 @@ Eigen::MatrixX3d SolveGramPseudoInverse(const GramPseudoInverse& inInverse, cons
 {
     const Eigen::Index r = inInverse.mRank;
     const Eigen::Index dependent = inL.rows() - r;
+    CRUMPLE_ASSERT(inL.cols() == r && inInverse.mDependentT.rows() == r && inInverse.mDependentT.cols() == dependent &&
+                       inRhs.rows() == inL.rows(),
+                   "SolveGramPseudoInverse: L or the right-hand side is not the one the inverse was prepared for");
     const auto l11 = inL.topRows(r).triangularView<Eigen::Lower>();
     // intent: M N A^-1 N M^T inRhs, right to left
     Eigen::MatrixX3d u = inRhs.topRows(r);

@@ -31,7 +31,7 @@ struct CRUMPLE_API GramPseudoInverse
 /// @param[in] inL  #n by r (r <= #n) lower trapezoidal with a positive diagonal
 CRUMPLE_API GramPseudoInverse PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL);
 
-/// (inL inL^T)^+ inRhs, for the inL the inverse was prepared from.
+/// (inL inL^T)^+ inRhs, for the inL the inverse was prepared from (asserted: the shapes must match).
 /// @param[in] inRhs  #n by 3, rows in the order of inL's rows
 CRUMPLE_API Eigen::MatrixX3d SolveGramPseudoInverse(const GramPseudoInverse& inInverse,
                                                     const Eigen::Ref<const Eigen::MatrixXd>& inL,
