@@ -4,6 +4,7 @@
 #include <crumple/ffd/GramPseudoInverse.h>
 
 #include "PivotedCholesky.h"
+#include "RandomGram.h"
 
 #include <Eigen/SVD>
 #include <catch2/catch.hpp>
@@ -19,12 +20,7 @@ namespace
 // shape and the pivoting (|L_ij| <= L_jj) of the factors the direct-manipulation solve hands over.
 Eigen::MatrixXd RandomFactor(int inRows, int inRank, std::mt19937_64& ioRandom)
 {
-    std::normal_distribution<double> entry(0.0, 1.0);
-    Eigen::MatrixXd x(inRows, inRank);
-    for (int i = 0; i < inRows; ++i)
-        for (int j = 0; j < inRank; ++j)
-            x(i, j) = entry(ioRandom);
-    PivotedCholeskyFactor factor = PivotedCholesky(x * x.transpose(), 1.0e-12);
+    PivotedCholeskyFactor factor = PivotedCholesky(crumple::ffd::test::RandomGram(inRows, inRank, ioRandom), 1.0e-12);
     REQUIRE(factor.mRank == inRank);
     return factor.mL;
 }

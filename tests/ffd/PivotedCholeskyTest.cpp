@@ -2,26 +2,17 @@
 // SPDX-License-Identifier: MIT
 // White-box: the blocked pivoted Cholesky against its definition and an unblocked reference.
 #include "PivotedCholesky.h"
+#include "RandomGram.h"
 
 #include <catch2/catch.hpp>
 
 #include <random>
 
 using namespace crumple::ffd;
+using crumple::ffd::test::RandomGram;
 
 namespace
 {
-
-// X X^T for X #n by inRank with Gaussian entries: positive semi-definite of rank inRank.
-Eigen::MatrixXd RandomGram(int inRows, int inRank, std::mt19937_64& ioRandom)
-{
-    std::normal_distribution<double> entry(0.0, 1.0);
-    Eigen::MatrixXd x(inRows, inRank);
-    for (int i = 0; i < inRows; ++i)
-        for (int j = 0; j < inRank; ++j)
-            x(i, j) = entry(ioRandom);
-    return x * x.transpose();
-}
 
 // The textbook algorithm (Higham, section 10.3), unblocked: the oracle for the pivot order.
 std::vector<int> ReferencePivots(Eigen::MatrixXd inG, double inRelativeThreshold, int& outRank)
