@@ -866,12 +866,17 @@ void FfdDeformer::Publish()
 {
     if (!mPublishing)
         return;
-    // intent: one branch-free pass (the compiler vectorizes it); on the game's thread, where dents land
+    // intent: one branch-free pass on the game's thread, where dents land. Through local pointers: a byte
+    // store may alias anything, so indexing the vectors made the compiler reload their data pointers after
+    // every byte and run the pass a byte at a time (0.1 ms on a 67k-vertex car); this one vectorizes.
     std::uint8_t any = 0;
-    for (std::size_t v = 0; v < mDirty.size(); ++v)
+    std::uint8_t* const published = mPublishedDirty.data();
+    const std::uint8_t* const dirty = mDirty.data();
+    const std::size_t count = mDirty.size();
+    for (std::size_t v = 0; v < count; ++v)
     {
-        mPublishedDirty[v] = static_cast<std::uint8_t>(mPublishedDirty[v] | mDirty[v]);
-        any = static_cast<std::uint8_t>(any | mDirty[v]);
+        published[v] = static_cast<std::uint8_t>(published[v] | dirty[v]);
+        any = static_cast<std::uint8_t>(any | dirty[v]);
     }
     if (any == 0)
         return;
@@ -888,12 +893,19 @@ void FfdDeformer::CatchUp()
 {
     if (!mStale)
         return;
-    for (std::size_t v = 0; v < mStaleMarks.size(); ++v)
-        if (mStaleMarks[v] != 0)
+    // intent: through local pointers, as in Publish (a byte store would reload every vector's data pointer)
+    std::uint8_t* const stale = mStaleMarks.data();
+    Vec3* const positions = mPositions.data();
+    Vec3* const normals = mNormals.data();
+    const Vec3* const published_positions = mPublishedPositions.data();
+    const Vec3* const published_normals = mPublishedNormals.data();
+    const std::size_t count = mStaleMarks.size();
+    for (std::size_t v = 0; v < count; ++v)
+        if (stale[v] != 0)
         {
-            mPositions[v] = mPublishedPositions[v];
-            mNormals[v] = mPublishedNormals[v];
-            mStaleMarks[v] = 0;
+            positions[v] = published_positions[v];
+            normals[v] = published_normals[v];
+            stale[v] = 0;
         }
     mStale = false;
 }
