@@ -15,15 +15,18 @@ void ByteWriter::WriteU8(std::uint8_t inValue)
 
 void ByteWriter::WriteU32(std::uint32_t inValue)
 {
-    // Little-endian byte by byte: the file is the same on any host.
+    // Little-endian byte by byte: the file is the same on any host. Grown once, not by four push_backs
+    // (a recording writes every contact's and every loose piece's fields through here).
+    std::byte* const out = Grow(4);
     for (int i = 0; i < 4; ++i)
-        mBytes.push_back(static_cast<std::byte>((inValue >> (8 * i)) & 0xFFu));
+        out[i] = static_cast<std::byte>((inValue >> (8 * i)) & 0xFFu);
 }
 
 void ByteWriter::WriteU64(std::uint64_t inValue)
 {
+    std::byte* const out = Grow(8);
     for (int i = 0; i < 8; ++i)
-        mBytes.push_back(static_cast<std::byte>((inValue >> (8 * i)) & 0xFFu));
+        out[i] = static_cast<std::byte>((inValue >> (8 * i)) & 0xFFu);
 }
 
 void ByteWriter::WriteDouble(double inValue)
@@ -46,6 +49,18 @@ void ByteWriter::WriteTag(std::string_view inTag)
 {
     for (char c : inTag)
         mBytes.push_back(static_cast<std::byte>(c));
+}
+
+void ByteWriter::Reserve(std::size_t inBytes)
+{
+    mBytes.reserve(mBytes.size() + inBytes);
+}
+
+std::byte* ByteWriter::Grow(std::size_t inBytes)
+{
+    const std::size_t at = mBytes.size();
+    mBytes.resize(at + inBytes);
+    return mBytes.data() + at;
 }
 
 void ByteWriter::WriteChecksum()

@@ -83,18 +83,41 @@ void DamageRecorder::OnBeforeCollision(const Collision& inCollision)
 
 Status DamageRecorder::WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload)
 {
+    return WriteExtensionRecords(inTag, std::span<const std::span<const std::byte>>(&inPayload, 1));
+}
+
+Status DamageRecorder::WriteExtensions(std::uint32_t inTag, std::span<const std::vector<std::byte>> inPayloads)
+{
+    const std::vector<std::span<const std::byte>> payloads(inPayloads.begin(), inPayloads.end());
+    return WriteExtensionRecords(inTag, payloads);
+}
+
+Status DamageRecorder::WriteExtensionRecords(std::uint32_t inTag, std::span<const std::span<const std::byte>> inPayloads)
+{
     if (mFile == nullptr)
         return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: the recorder is closed");
     if (mStatus.HasError())
         return mStatus;
-    // intent: a record's length field is 32 bits; a longer payload would be cut and the file lost
-    if (inPayload.size() > std::numeric_limits<std::uint32_t>::max() - sizeof(std::uint32_t))
-        return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: a payload of " + std::to_string(inPayload.size()) +
-                                                      " bytes is longer than a record holds (4 GiB)");
-    ByteWriter writer;
-    writer.WriteU32(inTag);
-    writer.WriteBytes(inPayload);
-    Write(EncodeReplayRecord(EReplayRecord::Extension, writer.GetBytes()));
+    // intent: a record's length field is 32 bits; a longer payload would be cut and the file lost. All are
+    // checked before any is written.
+    for (const std::span<const std::byte> payload : inPayloads)
+        if (payload.size() > std::numeric_limits<std::uint32_t>::max() - sizeof(std::uint32_t))
+            return MakeError(EError::InvalidArgument, "DamageRecorder::WriteExtension: a payload of " + std::to_string(payload.size()) +
+                                                          " bytes is longer than a record holds (4 GiB)");
+    // intent: the records' bytes one after the other, written and flushed once (a write is a system call:
+    // 35 pieces that break loose at once cost 35 of them otherwise)
+    std::vector<std::byte> bytes;
+    for (const std::span<const std::byte> payload : inPayloads)
+    {
+        ByteWriter writer;
+        writer.Reserve(sizeof(std::uint32_t) + payload.size());
+        writer.WriteU32(inTag);
+        writer.WriteBytes(payload);
+        const std::vector<std::byte> record = EncodeReplayRecord(EReplayRecord::Extension, writer.GetBytes());
+        bytes.insert(bytes.end(), record.begin(), record.end());
+    }
+    if (!bytes.empty())
+        Write(bytes);
     return mStatus;
 }
 

@@ -70,7 +70,13 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
         const auto n = static_cast<std::size_t>(node);
         const Vec3 r = inPositions[n] - mass_centre;
         lumped_angular += inMasses[n] * r.cross(inVelocities[n]);
-        lumped_inertia += inMasses[n] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+        // m (|r|^2 I - r r^T), entry by entry: the matrix expression was not inlined (0.1 ms for a piece of
+        // 1,500 nodes, on the game's thread when a prop breaks). The same products and sums in the same order,
+        // so the bits are the expression's: |r|^2 * 1 on the diagonal, |r|^2 * 0 = +0 off it, minus r_i r_j.
+        const double squared = r.squaredNorm();
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                lumped_inertia(row, col) += inMasses[n] * (squared * (row == col ? 1.0 : 0.0) - r[row] * r[col]);
     }
     const Vec3 velocity = momentum / inFragment.mMass;
     const Vec3 spin = lumped_inertia.ldlt().solve(lumped_angular);

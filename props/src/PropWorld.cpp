@@ -358,19 +358,27 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
             loose.push_back(std::move(piece));
         }
     }
-    // intent: record, then fix the pieces' nodes in their props. A recorder's write error does not stop the
-    // hand-over (the game's world already holds what it returns): the recorder keeps it (GetStatus, Close).
-    for (const LooseFragment& piece : loose)
+    // intent: record (one write for all the pieces), then fix the pieces' nodes in their props. A recorder's
+    // write error does not stop the hand-over (the game's world already holds what it returns): the recorder
+    // keeps it (GetStatus, Close).
+    if (mRecorder != nullptr && !loose.empty())
     {
-        if (mRecorder != nullptr)
+        std::vector<std::vector<std::byte>> records;
+        records.reserve(loose.size());
+        for (const LooseFragment& piece : loose)
         {
             ByteWriter record;
+            record.Reserve(sizeof(std::uint32_t) * (2 + piece.mNodes.size()));
             record.WriteU32(piece.mProp.mValue);
             record.WriteU32(static_cast<std::uint32_t>(piece.mNodes.size()));
             for (int node : piece.mNodes)
                 record.WriteU32(static_cast<std::uint32_t>(node));
-            (void)mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Loose), record.GetBytes());
+            records.push_back(record.TakeBytes());
         }
+        (void)mRecorder->WriteExtensions(static_cast<std::uint32_t>(EPropRecord::Loose), records);
+    }
+    for (const LooseFragment& piece : loose)
+    {
         Prop& prop = mProps[piece.mProp.mValue];
         ++prop.mPiecesTaken;
         for (int node : piece.mNodes)

@@ -203,6 +203,39 @@ TEST_CASE("An interrupted recording never looks complete", "[plugin][replay]")
     CHECK(DamageRecorder::Create("/nonexistent-dir/x.crumple", fixture.mWorld).GetError().mCode == EError::IoError);
 }
 
+TEST_CASE("Extension records written together are the bytes of the same records written one by one", "[plugin][replay]")
+{
+    const std::vector<std::vector<std::byte>> payloads = {
+        {std::byte{1}, std::byte{2}}, {}, {std::byte{0xFF}, std::byte{0}, std::byte{7}, std::byte{9}}};
+    const std::filesystem::path one_by_one = ScratchFile("extensions_one_by_one.crumple");
+    const std::filesystem::path together = ScratchFile("extensions_together.crumple");
+    {
+        WorldFixture fixture;
+        std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(one_by_one, fixture.mWorld).Get());
+        for (const std::vector<std::byte>& payload : payloads)
+            REQUIRE(recorder->WriteExtension(42u, payload));
+        REQUIRE(recorder->Close());
+    }
+    {
+        WorldFixture fixture;
+        std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(together, fixture.mWorld).Get());
+        REQUIRE(recorder->WriteExtensions(42u, payloads));
+        REQUIRE(recorder->WriteExtensions(43u, {})); // nothing to write: nothing written
+        REQUIRE(recorder->Close());
+        // Closed: refused, as WriteExtension is
+        CHECK(recorder->WriteExtensions(42u, payloads).GetError().mCode == EError::InvalidArgument);
+    }
+    const std::vector<std::byte> expected = ReadFileBytes(one_by_one).Get();
+    CHECK(ReadFileBytes(together).Get() == expected);
+    const Replay replay = DecodeReplay(expected).Get();
+    REQUIRE(replay.mExtensions.size() == payloads.size());
+    for (std::size_t i = 0; i < payloads.size(); ++i)
+    {
+        CHECK(replay.mExtensions[i].mTag == 42u);
+        CHECK(replay.mExtensions[i].mPayload == payloads[i]);
+    }
+}
+
 TEST_CASE("A recorded collision beyond what bodies can produce is refused, and a hand-made one dents finitely", "[plugin][replay]")
 {
     // A file of one collision (no object) and its end record.

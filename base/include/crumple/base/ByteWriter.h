@@ -27,6 +27,8 @@ public:
     void WriteVec3(const Vec3& inValue);
     void WriteBytes(std::span<const std::byte> inBytes);
     void WriteTag(std::string_view inTag); ///< Raw ASCII, no length prefix (magic numbers)
+    /// Room for inBytes more bytes, for a writer that knows its record's size (no reallocation while writing)
+    void Reserve(std::size_t inBytes);
 
     /// Appends the CRC-32 of everything written so far.
     void WriteChecksum();
@@ -35,6 +37,9 @@ public:
     std::vector<std::byte>&& TakeBytes() { return std::move(mBytes); }
 
 private:
+    // inBytes more bytes at the end (zeroed), returned for writing
+    std::byte* Grow(std::size_t inBytes);
+
     std::vector<std::byte> mBytes;
 };
 

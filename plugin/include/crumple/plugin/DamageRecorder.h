@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace crumple::plugin
@@ -45,6 +46,9 @@ public:
     /// the collisions recorded so far; DecodeReplay hands it back in Replay::mExtensions. Refused after
     /// Close() or a write error, and for a payload longer than a record holds (2^32 - 5 bytes), writing nothing.
     Status WriteExtension(std::uint32_t inTag, std::span<const std::byte> inPayload);
+    /// WriteExtension for each payload in turn, with one write and flush of the file for all (the same bytes):
+    /// for a layer that records many at once. Refused as a whole, writing nothing, for any payload it refuses.
+    Status WriteExtensions(std::uint32_t inTag, std::span<const std::vector<std::byte>> inPayloads);
 
     /// Records written so far.
     std::uint64_t GetCollisionCount() const { return mCollisions; }
@@ -57,6 +61,8 @@ private:
     DamageRecorder(std::FILE* inFile, std::filesystem::path inPath, DamageWorld& inWorld)
         : mFile(inFile), mPath(std::move(inPath)), mWorld(&inWorld) {}
     void Write(std::span<const std::byte> inBytes);
+    // WriteExtension(s): every payload checked, then their records in one write
+    Status WriteExtensionRecords(std::uint32_t inTag, std::span<const std::span<const std::byte>> inPayloads);
     void RecordNewObjects();
 
     std::FILE* mFile = nullptr;
