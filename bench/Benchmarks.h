@@ -17,6 +17,8 @@ struct BenchOptions
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// The dent's per-vertex kernel, the B-spline sum in AVX lanes against the scalar one (part of the dent group).
 void RunTensorSumCase(BenchTable& ioTable, const BenchOptions& inOptions);
+/// Rows wide_impact: ffd::InterpolateWideImpact on a car front's random contacts and on a ring of contacts
+void RunWideImpactCases(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// Simultaneous Baraff impulses against the analytic impulse, and the cost of frames without impacts.
 void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);

@@ -272,6 +272,7 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 
     // Its per-vertex kernel alone.
     RunTensorSumCase(ioTable, inOptions);
+    RunWideImpactCases(ioTable, inOptions);
 }
 
 } // namespace crumple::bench

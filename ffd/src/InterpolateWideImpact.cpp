@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -56,10 +57,11 @@ std::vector<Triangle> Delaunay(const std::vector<Vec2>& inPoints)
     std::vector<Triangle> triangles{{n, n + 1, n + 2}};
     std::vector<Triangle> kept;
     std::vector<std::pair<int, int>> edges;
+    std::vector<std::pair<std::uint64_t, std::size_t>> sorted_edges; // (undirected edge, its index in edges)
+    std::vector<std::uint8_t> shared;                                // per cavity edge: a second triangle has it
     for (int p = 0; p < n; ++p)
     {
-        // Remove the triangles whose circumcircle holds p; keep their boundary edges (the cavity's few
-        // edges, so a linear count beats a map's allocations).
+        // Remove the triangles whose circumcircle holds p; keep their boundary edges.
         kept.clear();
         edges.clear();
         for (const Triangle& t : triangles)
@@ -72,14 +74,24 @@ std::vector<Triangle> Delaunay(const std::vector<Vec2>& inPoints)
             else
                 kept.push_back(t);
         }
-        // Re-triangulate the cavity from p: an edge two cavity triangles share is inside it.
-        const auto same_edge = [](const std::pair<int, int>& inE, const std::pair<int, int>& inF) {
-            return (inE.first == inF.first && inE.second == inF.second) ||
-                   (inE.first == inF.second && inE.second == inF.first);
-        };
-        for (const std::pair<int, int>& edge : edges)
-            if (std::count_if(edges.begin(), edges.end(), [&](const std::pair<int, int>& inOther) { return same_edge(edge, inOther); }) == 1)
-                kept.push_back({edge.first, edge.second, p});
+        // Re-triangulate the cavity from p: an edge two cavity triangles share is inside it. Shared edges found
+        // by sorting (a cavity is a few edges, but points on a circle, a round impactor's rim, make it hundreds:
+        // counting each edge's copies made that quadratic), new triangles made in the cavity edges' order.
+        sorted_edges.clear();
+        for (std::size_t e = 0; e < edges.size(); ++e)
+        {
+            const auto low = static_cast<std::uint32_t>(std::min(edges[e].first, edges[e].second));
+            const auto high = static_cast<std::uint32_t>(std::max(edges[e].first, edges[e].second));
+            sorted_edges.emplace_back((static_cast<std::uint64_t>(high) << 32) | low, e);
+        }
+        std::sort(sorted_edges.begin(), sorted_edges.end());
+        shared.assign(edges.size(), 0);
+        for (std::size_t k = 1; k < sorted_edges.size(); ++k)
+            if (sorted_edges[k].first == sorted_edges[k - 1].first)
+                shared[sorted_edges[k].second] = shared[sorted_edges[k - 1].second] = 1;
+        for (std::size_t e = 0; e < edges.size(); ++e)
+            if (shared[e] == 0)
+                kept.push_back({edges[e].first, edges[e].second, p});
         triangles.swap(kept);
     }
     // Drop everything attached to the super-triangle.

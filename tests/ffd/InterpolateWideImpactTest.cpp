@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 using namespace crumple;
@@ -47,6 +48,44 @@ TEST_CASE("A box face's four corners become one coherent dent", "[ffd]")
     for (double y = -0.6; y <= 0.6; y += 0.05)
         for (double z = -0.4; z <= 0.4; z += 0.05)
         {
+            double nearest = 1.0e9;
+            for (const PointDisplacement& p : filled)
+                nearest = std::min(nearest, (p.mPoint - Vec3(2.0, y, z)).norm());
+            REQUIRE(nearest <= spacing);
+        }
+}
+
+TEST_CASE("A ring of contacts (a round impactor's rim) fills its disc with the linear field", "[ffd]")
+{
+    // 150 points on one circle, every one on every other's circumcircle: the Delaunay step's degenerate case,
+    // with cavities of hundreds of edges.
+    constexpr int cRing = 150;
+    constexpr double cRadius = 0.6;
+    std::vector<PointDisplacement> ring;
+    for (int i = 0; i < cRing; ++i)
+    {
+        const double angle = 2.0 * 3.14159265358979323846 * i / cRing;
+        const Vec3 point(2.0, cRadius * std::cos(angle), cRadius * std::sin(angle));
+        ring.push_back({point, Affine(point)});
+    }
+    const double spacing = 0.15;
+    const std::vector<PointDisplacement> filled = InterpolateWideImpact(ring, spacing);
+    REQUIRE(filled.size() > ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i)
+        CHECK(filled[i].mPoint == ring[i].mPoint);
+    for (const PointDisplacement& p : filled)
+    {
+        // In the disc's plane, inside the ring, with the linearly interpolated displacement.
+        CHECK(p.mPoint.x() == Approx(2.0).margin(1.0e-12));
+        CHECK(p.mPoint.tail<2>().norm() <= cRadius + 1.0e-12);
+        CHECK((p.mDisplacement - Affine(p.mPoint)).norm() <= 1.0e-12);
+    }
+    // Coverage: every point of the disc (inside the inscribed polygon) is within one spacing of a sample.
+    for (double y = -0.55; y <= 0.55; y += 0.05)
+        for (double z = -0.55; z <= 0.55; z += 0.05)
+        {
+            if (std::hypot(y, z) > cRadius * std::cos(3.14159265358979323846 / cRing))
+                continue;
             double nearest = 1.0e9;
             for (const PointDisplacement& p : filled)
                 nearest = std::min(nearest, (p.mPoint - Vec3(2.0, y, z)).norm());
