@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "PivotedCholesky.h"
 
+#include <crumple/base/Assert.h>
+
 #include <crumple/ffd/CubicBSplineWeights.h>
 #include <crumple/ffd/DirectManipulation.h>
 
@@ -126,15 +128,21 @@ Eigen::MatrixX3d GramSolve(const DirectManipulationData& inData, const Eigen::Ma
         permuted.row(k) = inRhs.row(inData.mPivots[static_cast<std::size_t>(k)]);
 
     // Pseudo-inverse of the rank-revealed Gram matrix G ~ L L^T: the prepared one at the factor's rank, else
-    // that of L's leading columns (a lower cut, when the tolerance was raised).
-    const Eigen::MatrixX3d solved =
-        inRank == inData.mPseudoInverse.mRank
-            ? SolveGramPseudoInverse(inData.mPseudoInverse, inData.mL, permuted)
-            : SolveGramPseudoInverse(PrepareGramPseudoInverse(inData.mL.leftCols(inRank)), inData.mL.leftCols(inRank), permuted);
+    // that of L's leading columns (a lower cut, when the tolerance was raised). The factor is this file's own
+    // (a positive diagonal, finite) and the right-hand side a residual of finite displacements, so neither
+    // is refused; if one were, no control moves rather than some.
+    Result<Eigen::MatrixX3d> solved = MakeError(EError::InvalidArgument, "GramSolve: not solved");
+    if (inRank == inData.mPseudoInverse.mRank)
+        solved = SolveGramPseudoInverse(inData.mPseudoInverse, inData.mL, permuted);
+    else if (Result<GramPseudoInverse> lower = PrepareGramPseudoInverse(inData.mL.leftCols(inRank)); lower)
+        solved = SolveGramPseudoInverse(lower.Get(), inData.mL.leftCols(inRank), permuted);
+    CRUMPLE_ASSERT(solved.IsValid(), "GramSolve: the Gram pseudo-inverse refused the library's own factor");
+    if (!solved)
+        return Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(inData.mControls.size()), 3);
 
     Eigen::MatrixX3d y(n, 3);
     for (Eigen::Index k = 0; k < n; ++k)
-        y.row(inData.mPivots[static_cast<std::size_t>(k)]) = solved.row(k);
+        y.row(inData.mPivots[static_cast<std::size_t>(k)]) = solved.Get().row(k);
     // B^+ = B^T (B B^T)^+.
     return ApplyTranspose(inData, y);
 }
@@ -235,7 +243,14 @@ DirectManipulationData DirectManipulationPrecompute(const FfdLattice& inLattice,
     data.mL = std::move(factor.mL);
     data.mPivots = std::move(factor.mPivots);
     data.mRank = factor.mRank;
-    data.mPseudoInverse = PrepareGramPseudoInverse(data.mL);
+    // intent: the factor is PivotedCholesky's (positive diagonal, finite for finite weights): never refused;
+    // if it were, the solve prepares again at its rank and moves no control
+    Result<GramPseudoInverse> prepared = PrepareGramPseudoInverse(data.mL);
+    CRUMPLE_ASSERT(prepared.IsValid(), "DirectManipulationPrecompute: the Gram pseudo-inverse refused the factor");
+    if (prepared)
+        data.mPseudoInverse = std::move(prepared).Get();
+    else
+        data.mPseudoInverse.mRank = -1;
     return data;
 }
 

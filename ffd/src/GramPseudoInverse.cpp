@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/GramPseudoInverse.h>
 
-#include <crumple/base/Assert.h>
+#include <string>
 
 namespace crumple::ffd
 {
@@ -24,14 +24,25 @@ Eigen::MatrixX3d ApplyCoupling(const GramPseudoInverse& inInverse, const Eigen::
 
 } // namespace
 
-GramPseudoInverse PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL)
+Result<GramPseudoInverse> PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL)
 {
-    CRUMPLE_ASSERT(inL.cols() <= inL.rows() && (inL.cols() == 0 || inL.diagonal().minCoeff() > 0.0),
-                   "PrepareGramPseudoInverse: L must be #n by r <= #n with a positive diagonal");
-    GramPseudoInverse inverse;
+    if (!(inL.cols() <= inL.rows()))
+        return MakeError(EError::InvalidArgument, "PrepareGramPseudoInverse: L has more columns (" + std::to_string(inL.cols()) +
+                                                      ") than rows (" + std::to_string(inL.rows()) + ")");
+    // intent: the lower trapezoid is all that is read; a NaN anywhere in it fails allFinite, and one on the
+    // diagonal also fails "> 0" (a minimum over the diagonal would skip it)
     const Eigen::Index r = inL.cols();
+    for (Eigen::Index column = 0; column < r; ++column)
+        if (!inL.col(column).tail(inL.rows() - column).allFinite())
+            return MakeError(EError::NonFinite, "PrepareGramPseudoInverse: L has a value that is not finite in column " +
+                                                    std::to_string(column));
+    if (!(inL.diagonal().array() > 0.0).all())
+        return MakeError(EError::InvalidArgument, "PrepareGramPseudoInverse: L's diagonal must be positive");
+    GramPseudoInverse inverse;
     const Eigen::Index dependent = inL.rows() - r;
     inverse.mRank = static_cast<int>(r);
+    inverse.mFactorDiagonal = inL.diagonal();
+    inverse.mFactorRows = inL.rows();
     // intent: S^T = L11^-T L21^T, one triangular solve with the dependent rows as right-hand sides
     inverse.mDependentT = inL.bottomRows(dependent).transpose();
     inL.topRows(r).triangularView<Eigen::Lower>().transpose().solveInPlace(inverse.mDependentT);
@@ -51,14 +62,20 @@ GramPseudoInverse PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixX
     return inverse;
 }
 
-Eigen::MatrixX3d SolveGramPseudoInverse(const GramPseudoInverse& inInverse, const Eigen::Ref<const Eigen::MatrixXd>& inL,
-                                        const Eigen::MatrixX3d& inRhs)
+Result<Eigen::MatrixX3d> SolveGramPseudoInverse(const GramPseudoInverse& inInverse, const Eigen::Ref<const Eigen::MatrixXd>& inL,
+                                                const Eigen::MatrixX3d& inRhs)
 {
     const Eigen::Index r = inInverse.mRank;
+    // intent: the factor prepared from, by shape and diagonal bit for bit (O(r), a fraction of the solve)
+    if (inL.rows() != inInverse.mFactorRows || inL.cols() != r || inInverse.mFactorDiagonal.size() != r ||
+        (r > 0 && !(inL.diagonal().array() == inInverse.mFactorDiagonal.array()).all()))
+        return MakeError(EError::InvalidArgument, "SolveGramPseudoInverse: L is not the factor the inverse was prepared from");
+    if (inRhs.rows() != inL.rows())
+        return MakeError(EError::InvalidArgument, "SolveGramPseudoInverse: the right-hand side has " + std::to_string(inRhs.rows()) +
+                                                      " rows, L has " + std::to_string(inL.rows()));
+    if (!inRhs.allFinite())
+        return MakeError(EError::NonFinite, "SolveGramPseudoInverse: the right-hand side is not finite");
     const Eigen::Index dependent = inL.rows() - r;
-    CRUMPLE_ASSERT(inL.cols() == r && inInverse.mDependentT.rows() == r && inInverse.mDependentT.cols() == dependent &&
-                       inRhs.rows() == inL.rows(),
-                   "SolveGramPseudoInverse: L or the right-hand side is not the one the inverse was prepared for");
     const auto l11 = inL.topRows(r).triangularView<Eigen::Lower>();
     // intent: M N A^-1 N M^T inRhs, right to left
     Eigen::MatrixX3d u = inRhs.topRows(r);
@@ -72,7 +89,7 @@ Eigen::MatrixX3d SolveGramPseudoInverse(const GramPseudoInverse& inInverse, cons
     result.topRows(r) = u;
     if (dependent > 0)
         result.bottomRows(dependent).noalias() = inInverse.mDependentT.transpose() * u;
-    return result;
+    return Result<Eigen::MatrixX3d>(std::move(result));
 }
 
 } // namespace crumple::ffd

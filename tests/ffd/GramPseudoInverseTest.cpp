@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <random>
 
 using namespace crumple::ffd;
@@ -47,8 +48,8 @@ TEST_CASE("The Gram pseudo-inverse equals an SVD pseudo-inverse of L L^T at full
     {
         const Eigen::MatrixXd l = RandomFactor(rows, rank, random);
         const Eigen::MatrixX3d rhs = RandomRhs(rows, random);
-        const GramPseudoInverse inverse = PrepareGramPseudoInverse(l);
-        const Eigen::MatrixX3d solved = SolveGramPseudoInverse(inverse, l, rhs);
+        const GramPseudoInverse inverse = PrepareGramPseudoInverse(l).Get();
+        const Eigen::MatrixX3d solved = SolveGramPseudoInverse(inverse, l, rhs).Get();
 
         // An independent computation: the SVD of the Gram matrix itself, cut at its exact rank.
         const Eigen::MatrixXd gram = l * l.transpose();
@@ -97,7 +98,7 @@ TEST_CASE("The direct-manipulation factor of clustered points on a face has the 
     REQUIRE(data.mRank > rows / 4);
 
     const Eigen::MatrixX3d rhs = RandomRhs(rows, random);
-    const Eigen::MatrixX3d solved = SolveGramPseudoInverse(data.mPseudoInverse, data.mL, rhs);
+    const Eigen::MatrixX3d solved = SolveGramPseudoInverse(data.mPseudoInverse, data.mL, rhs).Get();
     const Eigen::MatrixXd gram = data.mL * data.mL.transpose();
     Eigen::BDCSVD<Eigen::MatrixXd> svd(gram, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(rows, rows);
@@ -106,4 +107,50 @@ TEST_CASE("The direct-manipulation factor of clustered points on a face has the 
     const double condition = svd.singularValues()(0) / svd.singularValues()(data.mRank - 1);
     INFO("cond " << condition);
     CHECK((solved - pinv * rhs).norm() <= 1.0e-13 * condition * (pinv * rhs).norm());
+}
+
+TEST_CASE("The Gram pseudo-inverse refuses what is not a factor, and a solve with another factor", "[ffd]")
+{
+    std::mt19937_64 random(13);
+    const Eigen::MatrixXd l = RandomFactor(12, 7, random);
+    const Eigen::MatrixX3d rhs = RandomRhs(12, random);
+    const GramPseudoInverse inverse = PrepareGramPseudoInverse(l).Get();
+    REQUIRE(SolveGramPseudoInverse(inverse, l, rhs));
+
+    SECTION("more columns than rows")
+    {
+        CHECK(PrepareGramPseudoInverse(Eigen::MatrixXd(l.transpose())).GetError().mCode == crumple::EError::InvalidArgument);
+    }
+    SECTION("a NaN or a zero anywhere on the diagonal, not only the first entry")
+    {
+        for (const double bad : {std::numeric_limits<double>::quiet_NaN(), 0.0, -1.0})
+            for (const Eigen::Index k : {Eigen::Index{0}, Eigen::Index{3}, Eigen::Index{6}})
+            {
+                Eigen::MatrixXd broken = l;
+                broken(k, k) = bad;
+                INFO("diagonal entry " << k << " = " << bad);
+                CHECK(PrepareGramPseudoInverse(broken).HasError());
+            }
+    }
+    SECTION("a value that is not finite below the diagonal; above it nothing is read")
+    {
+        Eigen::MatrixXd broken = l;
+        broken(10, 2) = std::numeric_limits<double>::infinity();
+        CHECK(PrepareGramPseudoInverse(broken).GetError().mCode == crumple::EError::NonFinite);
+        Eigen::MatrixXd upper = l;
+        upper(1, 4) = std::numeric_limits<double>::quiet_NaN(); // above the diagonal: not part of the factor
+        CHECK(PrepareGramPseudoInverse(upper));
+    }
+    SECTION("a solve with a factor of another shape or diagonal, or a right-hand side of other rows or not finite")
+    {
+        CHECK(SolveGramPseudoInverse(inverse, l.leftCols(6), rhs).GetError().mCode == crumple::EError::InvalidArgument);
+        CHECK(SolveGramPseudoInverse(inverse, l.topRows(11), rhs.topRows(11)).GetError().mCode == crumple::EError::InvalidArgument);
+        Eigen::MatrixXd other = l;
+        other(5, 5) *= 1.0 + 1.0e-15;
+        CHECK(SolveGramPseudoInverse(inverse, other, rhs).GetError().mCode == crumple::EError::InvalidArgument);
+        CHECK(SolveGramPseudoInverse(inverse, l, rhs.topRows(11)).GetError().mCode == crumple::EError::InvalidArgument);
+        Eigen::MatrixX3d nan_rhs = rhs;
+        nan_rhs(4, 1) = std::numeric_limits<double>::quiet_NaN();
+        CHECK(SolveGramPseudoInverse(inverse, l, nan_rhs).GetError().mCode == crumple::EError::NonFinite);
+    }
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/Result.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -25,16 +26,21 @@ struct CRUMPLE_API GramPseudoInverse
     Eigen::LLT<Eigen::MatrixXd> mCoupling;   ///< Cholesky factor of I + S^T S (r by r), or of I + S S^T
     bool mCouplingOfDependents = false;      ///< True: mCoupling is of I + S S^T ((#n - r) by (#n - r), the smaller)
     int mRank = 0;                           ///< r
+    Eigen::VectorXd mFactorDiagonal;         ///< L's diagonal (r), bit for bit: a solve with another factor is refused
+    Eigen::Index mFactorRows = 0;            ///< #n
 };
 
-/// Prepares the pseudo-inverse of inL inL^T.
-/// @param[in] inL  #n by r (r <= #n) lower trapezoidal with a positive diagonal
-CRUMPLE_API GramPseudoInverse PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL);
+/// Prepares the pseudo-inverse of inL inL^T. Only the lower trapezoid of inL is read.
+/// @param[in] inL  #n by r (r <= #n), lower trapezoidal, finite, with a positive diagonal
+/// @return the prepared inverse, or an error (InvalidArgument, NonFinite) for an inL that is not such a factor
+CRUMPLE_API Result<GramPseudoInverse> PrepareGramPseudoInverse(const Eigen::Ref<const Eigen::MatrixXd>& inL);
 
-/// (inL inL^T)^+ inRhs, for the inL the inverse was prepared from (asserted: the shapes must match).
-/// @param[in] inRhs  #n by 3, rows in the order of inL's rows
-CRUMPLE_API Eigen::MatrixX3d SolveGramPseudoInverse(const GramPseudoInverse& inInverse,
-                                                    const Eigen::Ref<const Eigen::MatrixXd>& inL,
-                                                    const Eigen::MatrixX3d& inRhs);
+/// (inL inL^T)^+ inRhs, for the inL the inverse was prepared from.
+/// @param[in] inRhs  #n by 3, rows in the order of inL's rows, finite
+/// @return #n by 3, or an error for an inL of another shape or diagonal than the prepared one's
+///         (InvalidArgument) or a right-hand side of another row count (InvalidArgument) or not finite (NonFinite)
+CRUMPLE_API Result<Eigen::MatrixX3d> SolveGramPseudoInverse(const GramPseudoInverse& inInverse,
+                                                            const Eigen::Ref<const Eigen::MatrixXd>& inL,
+                                                            const Eigen::MatrixX3d& inRhs);
 
 } // namespace crumple::ffd
