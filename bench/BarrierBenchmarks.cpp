@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
+#include "ThreadCpuTime.h"
 
 #if defined(CRUMPLE_BENCH_CRASH)
 #include "FloatingBarrierCrash.h"
@@ -27,8 +28,10 @@ void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         settings.mTimeStep = 1.0 / steps_per_second;
         settings.mDuration = inOptions.mQuick ? 0.05 : 0.2;
         const auto start = std::chrono::steady_clock::now();
+        const double cpu_start = common::ThreadCpuMs();
         const Result<crash::FloatingBarrierCrashResult> result = crash::RunFloatingBarrierCrash(settings);
         const double elapsed = ElapsedMs(start);
+        const double cpu_elapsed = common::ThreadCpuMs() - cpu_start;
         if (result.HasError())
             continue;
         const crash::FloatingBarrierCrashResult& crash = result.Get();
@@ -37,7 +40,8 @@ void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                      elapsed / steps, crash.mDeepestCrush / crash.mCampbellCrush - 1.0, "rel_crush_vs_campbell",
                      "crush_m=" + FormatExtra(crash.mDeepestCrush) + ";campbell_m=" + FormatExtra(crash.mCampbellCrush) +
                          ";end_speed_m_s=" + FormatExtra(crash.mEndSpeed) +
-                         ";momentum_error_N_s=" + FormatExtra(crash.mMomentumError)});
+                         ";momentum_error_N_s=" + FormatExtra(crash.mMomentumError) +
+                         ";cpu_ms_per_step=" + FormatExtra(cpu_elapsed / steps)});
     }
 #else
     (void)ioTable;

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
+#include "ThreadCpuTime.h"
 
 #if defined(CRUMPLE_BENCH_CRASH)
 #include <crumple/crash/CrashRun.h>
@@ -36,7 +37,7 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         {
             if (inOptions.mQuick && (engine == EEngine::Ode || body.mName != "box car"))
                 continue;
-            std::vector<double> times, law_errors, line_errors;
+            std::vector<double> times, cpu_times, law_errors, line_errors;
             for (double km_h : speeds)
             {
                 CrashScenario scenario;
@@ -46,8 +47,10 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                 scenario.mImpact.mSpeed = km_h / 3.6;
                 scenario.mPictures = false;
                 const auto start = std::chrono::steady_clock::now();
+                const double cpu_start = common::ThreadCpuMs();
                 const Result<CrashOutcome> outcome = RunCrash(scenario, {});
                 times.push_back(ElapsedMs(start));
+                cpu_times.push_back(common::ThreadCpuMs() - cpu_start);
                 if (outcome.HasError())
                     continue;
                 const double crush = outcome.Get().mResidualCrush[static_cast<int>(EZone::Front)];
@@ -67,13 +70,14 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
             };
             std::sort(times.begin(), times.end());
+            std::sort(cpu_times.begin(), cpu_times.end());
             std::string name = body.mName;
             std::replace(name.begin(), name.end(), ' ', '_');
             ioTable.Add({"crush_vs_campbell", name + "/" + ToString(engine) + "/full_wall",
                          times[times.size() / 2], worst(law_errors), "worst_rel_crush_vs_law",
                          "speeds_km_h=" + std::to_string(speeds.size()) + "_from_" + FormatExtra(speeds.front()) +
                              "_to_" + FormatExtra(speeds.back()) + ";worst_rel_vs_midsize_line=" +
-                             FormatExtra(worst(line_errors))});
+                             FormatExtra(worst(line_errors)) + ";cpu_ms=" + FormatExtra(cpu_times[cpu_times.size() / 2])});
         }
 #else
     (void)ioTable;
