@@ -104,19 +104,19 @@ std::vector<Timing> InterleavedMedians(int inRepetitions,
     return medians;
 }
 
-double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun)
+Timing MedianTiming(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun)
 {
-    std::vector<double> times;
+    std::vector<double> wall, cpu;
     for (int i = 0; i < inRepetitions; ++i)
     {
         inPrepare();
         const auto start = std::chrono::steady_clock::now();
+        const double cpu_start = ThreadCpuMs();
         inRun();
-        const auto stop = std::chrono::steady_clock::now();
-        times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+        cpu.push_back(ThreadCpuMs() - cpu_start);
+        wall.push_back(ElapsedMs(start));
     }
-    std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
-    return times[times.size() / 2];
+    return {Median(wall), Median(cpu)};
 }
 
 } // namespace crumple::bench

@@ -75,7 +75,7 @@ struct Timing
 std::vector<Timing> InterleavedMedians(int inRepetitions,
                                        const std::vector<std::pair<std::function<void()>, std::function<void()>>>& inSides);
 
-/// Median wall time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
-double MedianMs(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);
+/// Median wall and thread CPU time (ms) of inRepetitions calls of inRun, each preceded by an untimed inPrepare.
+Timing MedianTiming(int inRepetitions, const std::function<void()>& inPrepare, const std::function<void()>& inRun);
 
 } // namespace crumple::bench

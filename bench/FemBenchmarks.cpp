@@ -95,7 +95,7 @@ double StaticCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inM
     const std::vector<Vec3> rest = beam.GetSolver().GetMesh().GetRestPositions();
     TetStaticResult solve;
     bool solved = true;
-    const double ms = MedianMs(
+    const Timing timing = MedianTiming(
         inRepetitions, [&] { (void)beam.GetSolver().SetPositions(rest); },
         [&]
         {
@@ -105,9 +105,9 @@ double StaticCase(BenchTable& ioTable, const BeamMesh& inMesh, EElasticModel inM
                 solve = result.Get();
         });
     const double error = solved ? TipError(beam) : std::numeric_limits<double>::quiet_NaN();
-    ioTable.Add({"fem_cantilever", MeshName(beam) + "/static/" + ModelLabel(inModel), ms, error,
+    ioTable.Add({"fem_cantilever", MeshName(beam) + "/static/" + ModelLabel(inModel), timing.mWallMs, error,
                  "rel_tip_error",
-                 MeshExtra(beam) + ";solved=" + (solved ? "yes" : "no") +
+                 MeshExtra(beam) + ";cpu_ms=" + FormatExtra(timing.mCpuMs) + ";solved=" + (solved ? "yes" : "no") +
                      ";newton=" + std::to_string(solve.mIterations) +
                      ";cg_iterations=" + std::to_string(solve.mSolverIterations) + ";residual=" +
                      FormatExtra(solve.mRelativeResidual) + ";deflection_m=" + FormatExtra(beam.TipDeflection())});

@@ -35,16 +35,17 @@ void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
                                 Vec3::UnitZ()});
     std::vector<double> impulses;
     constexpr int cInner = 20;
-    const double ms = MedianMs(inRepetitions, [] {}, [&] {
+    const Timing timing = MedianTiming(inRepetitions, [] {}, [&] {
         for (int i = 0; i < cInner; ++i)
             impulses = SimultaneousImpulses(box, ground, contacts, e, 0.5);
-    }) / cInner;
+    });
+    const double ms = timing.mWallMs / cInner;
     double total = 0.0;
     for (double j : impulses)
         total += j;
     const double expected = (1.0 + e) * m * v;
     ioTable.Add({"impulse_solve", std::to_string(contacts.size()) + "_contacts", ms, std::abs(total - expected) / expected,
-                 "rel_total_impulse", "analytic=(1+e)mv=" + std::to_string(expected)});
+                 "rel_total_impulse", "analytic=(1+e)mv=" + std::to_string(expected) + ";cpu_ms=" + FormatExtra(timing.mCpuMs / cInner)});
 }
 
 // Frames without impacts: an empty frame and a car resting on four wheel contacts.
@@ -54,15 +55,16 @@ void IdleCases(BenchTable& ioTable, int inRepetitions)
     const ffd::FfdDeformer& car = fixture.mWorld.GetObject(fixture.mCarObject)->GetDeformer();
     constexpr int cFrames = 1000;
     double time = 0.0;
-    const double empty_ms = MedianMs(inRepetitions, [] {}, [&] {
+    const Timing empty = MedianTiming(inRepetitions, [] {}, [&] {
         for (int i = 0; i < cFrames; ++i)
         {
             (void)fixture.mWorld.SubmitContacts({});
             fixture.mWorld.Update(time += 1.0 / 60.0);
         }
-    }) / cFrames;
-    ioTable.Add({"frame_overhead", "no_contacts", empty_ms, 0.0, "none",
-                 "vertex_evaluations=" + std::to_string(car.GetVertexEvaluationCount())});
+    });
+    ioTable.Add({"frame_overhead", "no_contacts", empty.mWallMs / cFrames, 0.0, "none",
+                 "vertex_evaluations=" + std::to_string(car.GetVertexEvaluationCount()) +
+                     ";cpu_ms=" + FormatExtra(empty.mCpuMs / cFrames)});
 
     BodyState resting = fixture.CarState(0.0);
     resting.mLinearVelocity = Vec3(20.0, 0.0, -9.81 / 60.0);
@@ -77,7 +79,7 @@ void IdleCases(BenchTable& ioTable, int inRepetitions)
             contact.mNormal = Vec3::UnitZ();
             wheels.push_back(contact);
         }
-    const double resting_ms = MedianMs(inRepetitions, [] {}, [&] {
+    const Timing resting_timing = MedianTiming(inRepetitions, [] {}, [&] {
         for (int i = 0; i < cFrames; ++i)
         {
             time += 1.0 / 60.0;
@@ -87,10 +89,11 @@ void IdleCases(BenchTable& ioTable, int inRepetitions)
             (void)fixture.mWorld.SubmitContacts(wheels);
             fixture.mWorld.Update(time);
         }
-    }) / cFrames;
-    ioTable.Add({"frame_overhead", "4_resting_contacts", resting_ms, 0.0, "none",
+    });
+    ioTable.Add({"frame_overhead", "4_resting_contacts", resting_timing.mWallMs / cFrames, 0.0, "none",
                  "vertex_evaluations=" + std::to_string(car.GetVertexEvaluationCount()) +
-                     ";open_collisions=" + std::to_string(fixture.mWorld.GetOpenCollisionCount())});
+                     ";open_collisions=" + std::to_string(fixture.mWorld.GetOpenCollisionCount()) +
+                     ";cpu_ms=" + FormatExtra(resting_timing.mCpuMs / cFrames)});
 }
 
 // One pair's manifold of N contacts in one step (a mesh-mesh contact) through DamageWorld::SubmitContacts,
@@ -111,7 +114,7 @@ void ManifoldCase(BenchTable& ioTable, int inContacts, int inRepetitions)
     } listener;
     fixture.mWorld.AddListener(&listener);
     double time = 0.0;
-    const double ms = MedianMs(inRepetitions, [&] {
+    const Timing timing = MedianTiming(inRepetitions, [&] {
         (void)fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(15.0));
         time += 1.0;
         for (ContactEvent& contact : contacts)
@@ -127,9 +130,10 @@ void ManifoldCase(BenchTable& ioTable, int inContacts, int inRepetitions)
     (void)fixture.mWorld.SubmitContacts(contacts);
     (void)fixture.mWorld.Flush();
     const double expected = (1.0 + fixture.mWorld.GetSettings().mRestitution) * fixture.mMass * 15.0;
-    ioTable.Add({"manifold_submit", std::to_string(contacts.size()) + "_contacts_one_pair", ms,
+    ioTable.Add({"manifold_submit", std::to_string(contacts.size()) + "_contacts_one_pair", timing.mWallMs,
                  std::abs(listener.mImpulse - expected) / expected, "rel_total_impulse",
-                 "solved_contacts<=" + std::to_string(fixture.mWorld.GetSettings().mMaxContactsPerPair)});
+                 "solved_contacts<=" + std::to_string(fixture.mWorld.GetSettings().mMaxContactsPerPair) +
+                     ";cpu_ms=" + FormatExtra(timing.mCpuMs)});
 }
 
 } // namespace
