@@ -50,19 +50,32 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
         axes.col(2) = -axes.col(2);
     const Vec3& c = inFragment.mCenterOfMass;
 
-    // intent: the nodes' momentum, mass centre, and rigid spin about it (least squares under the lumped masses)
-    double nodal_mass = 0.0;
+    // intent: two passes over the nodes instead of six (a piece can hold most of a prop's nodes: 1,567 in the
+    // racing fence's, on the game's thread). Every sum keeps its own terms in node order, so each is bit for bit
+    // what a pass of its own gave. The first: momentum, mass centre, angular momentum about c, hull points and
+    // the nodes' world kinetic energy (the prop body's motion added to every node as to the body).
+    const Mat3& rotation = inPropBody.mTransform.mRotation;
+    FragmentRigidBody result;
+    plugin::ConvexBodySettings& body = result.mBody;
+    body.mHullPoints.reserve(inFragment.mNodes.size());
+    double nodal_mass = 0.0, world_nodal = 0.0;
     Vec3 momentum = Vec3::Zero(), mass_centre = Vec3::Zero();
+    Vec3 angular = Vec3::Zero(); // the nodes' angular momentum about the body's centre of mass
     for (int node : inFragment.mNodes)
     {
         const auto n = static_cast<std::size_t>(node);
         nodal_mass += inMasses[n];
         momentum += inMasses[n] * inVelocities[n];
         mass_centre += inMasses[n] * inPositions[n];
+        angular += inMasses[n] * (inPositions[n] - c).cross(inVelocities[n]);
+        body.mHullPoints.push_back(axes.transpose() * (inPositions[n] - c));
+        const Vec3 world_velocity = rotation * inVelocities[n] + inPropBody.PointVelocity(inPropBody.mTransform.ToWorld(inPositions[n]));
+        world_nodal += 0.5 * inMasses[n] * world_velocity.squaredNorm();
     }
     if (!(nodal_mass > 0.0))
         return MakeError(EError::InvalidArgument, "FragmentBody: the fragment's nodes have no mass");
     mass_centre /= nodal_mass;
+    // The second: the rigid spin about the nodes' mass centre (least squares under the lumped masses).
     Vec3 lumped_angular = Vec3::Zero();
     Mat3 lumped_inertia = Mat3::Zero();
     for (int node : inFragment.mNodes)
@@ -82,20 +95,9 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
     const Vec3 spin = lumped_inertia.ldlt().solve(lumped_angular);
     if (!IsFinite(velocity) || !IsFinite(spin))
         return MakeError(EError::NonFinite, "FragmentBody: the nodes' velocities give no finite rigid motion");
-    FragmentRigidBody result;
-    {
-        Vec3 angular = Vec3::Zero(); // the nodes' angular momentum about the body's centre of mass
-        for (int node : inFragment.mNodes)
-        {
-            const auto n = static_cast<std::size_t>(node);
-            angular += inMasses[n] * (inPositions[n] - c).cross(inVelocities[n]);
-        }
-        result.mAngularMomentumChange = (inFragment.mInertia * spin - angular).norm();
-    }
+    result.mAngularMomentumChange = (inFragment.mInertia * spin - angular).norm();
 
     // intent: to the world through the prop body's state
-    const Mat3& rotation = inPropBody.mTransform.mRotation;
-    plugin::ConvexBodySettings& body = result.mBody;
     body.mMass = inFragment.mMass;
     body.mPrincipalInertia = eigen.eigenvalues();
     body.mPosition = inPropBody.mTransform.ToWorld(c);
@@ -103,17 +105,6 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
     body.mLinearVelocity = rotation * velocity + inPropBody.PointVelocity(body.mPosition);
     body.mAngularVelocity = rotation * spin + (inPropBody.mMotionType == plugin::EMotionType::Static ? Vec3::Zero()
                                                                                                        : inPropBody.mAngularVelocity);
-    for (int node : inFragment.mNodes)
-        body.mHullPoints.push_back(axes.transpose() * (inPositions[static_cast<std::size_t>(node)] - c));
-
-    // intent: energies in the world (the prop body's motion added to every node and to the body alike)
-    double world_nodal = 0.0;
-    for (int node : inFragment.mNodes)
-    {
-        const auto n = static_cast<std::size_t>(node);
-        const Vec3 world_velocity = rotation * inVelocities[n] + inPropBody.PointVelocity(inPropBody.mTransform.ToWorld(inPositions[n]));
-        world_nodal += 0.5 * inMasses[n] * world_velocity.squaredNorm();
-    }
     result.mNodalKineticEnergy = world_nodal;
     result.mRigidKineticEnergy = 0.5 * body.mMass * body.mLinearVelocity.squaredNorm() +
                                  0.5 * body.mAngularVelocity.dot(body.WorldInertia() * body.mAngularVelocity);
