@@ -43,11 +43,15 @@ Result<GramPseudoInverse> PrepareGramPseudoInverse(const Eigen::Ref<const Eigen:
     inverse.mRank = static_cast<int>(r);
     inverse.mFactorDiagonal = inL.diagonal();
     inverse.mFactorRows = inL.rows();
-    // intent: S^T = L11^-T L21^T, one triangular solve with the dependent rows as right-hand sides
+    // intent: S^T = L11^-T L21^T, one triangular solve with the dependent rows as right-hand sides; none when
+    // either side is empty (Eigen's triangular solve binds a reference to an empty matrix's first entry: UB)
     inverse.mDependentT = inL.bottomRows(dependent).transpose();
-    inL.topRows(r).triangularView<Eigen::Lower>().transpose().solveInPlace(inverse.mDependentT);
-    if (dependent == 0)
+    if (dependent == 0 || r == 0)
+    {
+        inverse.mCoupling.compute(Eigen::MatrixXd(0, 0)); // unused, but set: an uncomputed LLT copies indeterminate state
         return inverse;
+    }
+    inL.topRows(r).triangularView<Eigen::Lower>().transpose().solveInPlace(inverse.mDependentT);
 
     // intent: factor the smaller of I + S^T S (r by r) and I + S S^T (dependent by dependent); only the lower
     // triangle is formed, the factorization reads nothing else
@@ -75,6 +79,9 @@ Result<Eigen::MatrixX3d> SolveGramPseudoInverse(const GramPseudoInverse& inInver
                                                       " rows, L has " + std::to_string(inL.rows()));
     if (!inRhs.allFinite())
         return MakeError(EError::NonFinite, "SolveGramPseudoInverse: the right-hand side is not finite");
+    // intent: the pseudo-inverse of a zero Gram matrix (rank 0) is zero
+    if (r == 0)
+        return Result<Eigen::MatrixX3d>(Eigen::MatrixX3d::Zero(inL.rows(), 3));
     const Eigen::Index dependent = inL.rows() - r;
     const auto l11 = inL.topRows(r).triangularView<Eigen::Lower>();
     // intent: M N A^-1 N M^T inRhs, right to left

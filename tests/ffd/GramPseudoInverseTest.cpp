@@ -117,6 +117,12 @@ TEST_CASE("The Gram pseudo-inverse refuses what is not a factor, and a solve wit
     const GramPseudoInverse inverse = PrepareGramPseudoInverse(l).Get();
     REQUIRE(SolveGramPseudoInverse(inverse, l, rhs));
 
+    SECTION("rank 0: the pseudo-inverse of a zero Gram matrix is zero")
+    {
+        const Eigen::MatrixXd empty(12, 0);
+        const GramPseudoInverse zero = PrepareGramPseudoInverse(empty).Get();
+        CHECK(SolveGramPseudoInverse(zero, empty, rhs).Get() == Eigen::MatrixX3d::Zero(12, 3));
+    }
     SECTION("more columns than rows")
     {
         CHECK(PrepareGramPseudoInverse(Eigen::MatrixXd(l.transpose())).GetError().mCode == crumple::EError::InvalidArgument);
