@@ -23,7 +23,7 @@ class DamageWorld;
 /// collision, written when the world dispatches it (OnBeforeCollision), so that with deferred dents
 /// (DamageWorldSettings::mDeferDents) the records come in the same order, and the file has the same bytes,
 /// as with dents on the caller's thread: a layer that records beside the collisions (crumple::props) sees
-/// them at the same Update either way. Records are written and flushed one at a time; nothing is buffered for the whole run. The
+/// them at the same Update either way. Records are written and flushed as they come (WriteExtensions writes its records in one write); nothing is buffered for the whole run. The
 /// file is written as "<path>.partial" and renamed to <path> by Close(), so an interrupted run never
 /// leaves a file that looks complete. A game replicates damage over a network the same way: send these
 /// records, not meshes.
