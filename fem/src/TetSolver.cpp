@@ -366,10 +366,8 @@ void TetSolver::InputChanged()
     mReferenceValid = false;
 }
 
-Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
+void TetSolver::FixNode(int inNode, bool inFixed)
 {
-    if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
-        return status;
     const bool was_fixed = mInverseMasses[inNode] == 0.0;
     if (was_fixed != inFixed)
         mFreeMass += inFixed ? -mMasses[inNode] : mMasses[inNode];
@@ -378,6 +376,27 @@ Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
     mElementActiveValid = false;
     if (inFixed)
         mVelocities[inNode].setZero();
+}
+
+Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
+{
+    if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
+        return status;
+    FixNode(inNode, inFixed);
+    InputChanged();
+    return Status::Ok();
+}
+
+Status TetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
+{
+    // intent: every node checked before any changes
+    for (int node : inNodes)
+        if (Status status = CheckNode(node, GetNodeCount(), "SetNodesFixed"); status.HasError())
+            return status;
+    if (inNodes.empty())
+        return Status::Ok();
+    for (int node : inNodes)
+        FixNode(node, inFixed);
     InputChanged();
     return Status::Ok();
 }

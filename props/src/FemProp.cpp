@@ -119,6 +119,12 @@ Status FemProp::SetNodeFixed(int inNode, bool inFixed)
     return mCpu->SetNodeFixed(inNode, inFixed);
 }
 
+Status FemProp::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
+{
+    CRUMPLE_PROPS_ON_GPU(SetNodesFixed(inNodes, inFixed))
+    return mCpu->SetNodesFixed(inNodes, inFixed);
+}
+
 Status FemProp::ApplyImpulse(int inNode, const Vec3& inImpulse)
 {
     CRUMPLE_PROPS_ON_GPU(ApplyImpulse(inNode, inImpulse))

@@ -419,9 +419,8 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                     return MakeError(EError::CorruptData, where + "a loose piece's node is not a node of its prop");
                 node = static_cast<int>(value);
             }
-            for (int node : nodes)
-                if (Status fixed = solver.SetNodeFixed(node, true); fixed.HasError())
-                    return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
+            if (Status fixed = solver.SetNodesFixed(nodes, true); fixed.HasError())
+                return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
         }
         // Other tags belong to other layers.
     }

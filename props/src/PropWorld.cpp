@@ -381,11 +381,9 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     {
         Prop& prop = mProps[piece.mProp.mValue];
         ++prop.mPiecesTaken;
+        (void)prop.mProp.SetNodesFixed(piece.mNodes, true); // the prop's own fragment nodes: cannot be refused
         for (int node : piece.mNodes)
-        {
-            (void)prop.mProp.SetNodeFixed(node, true); // the prop's own fragment nodes: cannot be refused
             prop.mTaken[static_cast<std::size_t>(node)] = 1;
-        }
     }
     // Every prop looked at has handed over all it had loose: settled until links break or anchors change.
     for (Prop& prop : mProps)

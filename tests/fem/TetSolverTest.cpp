@@ -155,6 +155,40 @@ TEST_CASE("TetSolver refuses bad input and changes nothing", "[fem]")
     }
 }
 
+TEST_CASE("SetNodesFixed is SetNodeFixed node by node, and refuses a bad node changing nothing", "[fem]")
+{
+    TetSolverSettings settings;
+    settings.mIntegrator = EIntegrator::SymplecticEuler;
+    TetSolver one_by_one = TetSolver::Create(SmallBox(), FemMaterialSettings{}, settings).Get();
+    for (int node = 0; node < one_by_one.GetNodeCount(); ++node)
+        REQUIRE(one_by_one.ApplyImpulse(node, Vec3(0.01 * node, -0.02, 0.03)));
+    TetSolver together = one_by_one;
+    // A piece's nodes as a prop hands them over: unordered, one of them fixed twice, then some freed again.
+    const std::vector<int> piece{7, 2, 11, 2, 5, 0};
+    for (int node : piece)
+        REQUIRE(one_by_one.SetNodeFixed(node, true));
+    REQUIRE(together.SetNodesFixed(piece, true));
+    CHECK(Snapshot(together) == Snapshot(one_by_one));
+    const std::vector<int> freed{11, 0};
+    for (int node : freed)
+        REQUIRE(one_by_one.SetNodeFixed(node, false));
+    REQUIRE(together.SetNodesFixed(freed, false));
+    CHECK(Snapshot(together) == Snapshot(one_by_one));
+    for (int step = 0; step < 5; ++step)
+    {
+        REQUIRE(one_by_one.Step(1.0e-4));
+        REQUIRE(together.Step(1.0e-4));
+    }
+    CHECK(StateHash(together) == StateHash(one_by_one));
+
+    const Snapshot before(together);
+    CHECK(together.SetNodesFixed(std::vector<int>{3, together.GetNodeCount()}, true).GetError().mCode == EError::OutOfRange);
+    CHECK(together.SetNodesFixed(std::vector<int>{-1, 4}, true).HasError());
+    CHECK(Snapshot(together) == before);
+    CHECK(together.SetNodesFixed({}, true)); // nothing to do
+    CHECK(Snapshot(together) == before);
+}
+
 TEST_CASE("TetSolver refuses a symplectic step beyond mMaxSubSteps and a static solve without anchors",
           "[fem]")
 {

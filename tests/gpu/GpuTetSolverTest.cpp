@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <tuple>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -205,6 +206,42 @@ TEST_CASE("GPU runs are deterministic: the same inputs give bitwise the same pos
         return positions;
     };
     CHECK(run() == run());
+}
+
+TEST_CASE("GPU SetNodesFixed gives SetNodeFixed's state node by node, in one read and write", "[gpu]")
+{
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
+    const TetSolver bar = ClampedBar(EElasticModel::CorotatedLinear);
+    GpuTetSolver one_by_one = GpuTetSolver::CreateFrom(device, bar).Get();
+    GpuTetSolver together = GpuTetSolver::CreateFrom(device, bar).Get();
+    for (GpuTetSolver* gpu : {&one_by_one, &together})
+    {
+        REQUIRE(gpu->ApplyImpulse(cTipNode, cHit).IsValid());
+        REQUIRE(gpu->Step(1.0 / 240.0).IsValid());
+    }
+    // Unordered, spread over the bar (the range between holds nodes that must come back as they were), one twice.
+    const std::vector<int> piece{cTipNode, 9, cTipNode - 1, 30, 9};
+    for (int node : piece)
+        REQUIRE(one_by_one.SetNodeFixed(node, true).IsValid());
+    REQUIRE(together.SetNodesFixed(piece, true).IsValid());
+    const auto state = [](const GpuTetSolver& inGpu) {
+        std::vector<Vec3> positions, velocities;
+        inGpu.ReadPositions(positions);
+        inGpu.ReadVelocities(velocities);
+        return std::make_tuple(positions, velocities, inGpu.GetInverseMasses());
+    };
+    CHECK(state(together) == state(one_by_one));
+    for (int node : std::vector<int>{30, 9})
+        REQUIRE(one_by_one.SetNodeFixed(node, false).IsValid());
+    REQUIRE(together.SetNodesFixed(std::vector<int>{30, 9}, false).IsValid());
+    for (GpuTetSolver* gpu : {&one_by_one, &together})
+        for (int step = 0; step < 5; ++step)
+            REQUIRE(gpu->Step(1.0 / 240.0).IsValid());
+    CHECK(state(together) == state(one_by_one));
+
+    const auto before = state(together);
+    CHECK(together.SetNodesFixed(std::vector<int>{3, together.GetNodeCount()}, true).HasError());
+    CHECK(state(together) == before);
 }
 
 TEST_CASE("GpuTetSolver refuses what it cannot do and bad input, changing nothing", "[gpu]")

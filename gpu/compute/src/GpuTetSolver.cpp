@@ -311,6 +311,38 @@ Status GpuTetSolver::SetNodeFixed(int inNode, bool inFixed)
     return Status::Ok();
 }
 
+Status GpuTetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
+{
+    // intent: every node checked (and the device made current) before anything changes
+    for (int node : inNodes)
+        if (Status status = CheckNode(node, "SetNodesFixed"); status.HasError())
+            return status;
+    if (inNodes.empty())
+        return Status::Ok();
+    InputChanged();
+    const auto [low, high] = std::minmax_element(inNodes.begin(), inNodes.end());
+    const auto first = static_cast<std::size_t>(*low);
+    const std::size_t count = static_cast<std::size_t>(*high) - first + 1;
+    // intent: the positions' fourth lane holds the inverse mass; the other nodes of the range go back as read
+    std::vector<Float4> positions(count);
+    mPositions.Download(first * sizeof(Float4), count * sizeof(Float4), positions.data());
+    for (int node : inNodes)
+    {
+        mInverseMasses[static_cast<std::size_t>(node)] = inFixed ? 0.0 : 1.0 / mMasses[static_cast<std::size_t>(node)];
+        positions[static_cast<std::size_t>(node) - first][3] = static_cast<float>(mInverseMasses[static_cast<std::size_t>(node)]);
+    }
+    mPositions.Upload(first * sizeof(Float4), count * sizeof(Float4), positions.data());
+    if (inFixed)
+    {
+        std::vector<Float4> velocities(count);
+        mVelocities.Download(first * sizeof(Float4), count * sizeof(Float4), velocities.data());
+        for (int node : inNodes)
+            velocities[static_cast<std::size_t>(node) - first] = Float4{};
+        mVelocities.Upload(first * sizeof(Float4), count * sizeof(Float4), velocities.data());
+    }
+    return Status::Ok();
+}
+
 Status GpuTetSolver::ApplyImpulse(int inNode, const Vec3& inImpulse)
 {
     if (!IsFinite(inImpulse))

@@ -48,6 +48,9 @@ public:
 
     /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again (inverse mass 1 / mass).
     Status SetNodeFixed(int inNode, bool inFixed);
+    /// SetNodeFixed for each of inNodes, in their order, with the same result; refused with nothing changed if
+    /// any is not a node. For many at once (a piece that broke loose: its nodes leave the prop).
+    Status SetNodesFixed(std::span<const int> inNodes, bool inFixed);
     /// Bound on every coordinate of what the setters take (positions m, velocities m/s, forces N, gravity
     /// m/s^2, and the velocity an impulse leaves): far beyond any simulation, and small enough that squares,
     /// energies and their sums over the nodes stay finite (1e300 m/s made every later step "diverged")
@@ -227,6 +230,8 @@ private:
     void SaveShape(ShapeState& outShape) const;
     void RestoreShape(const ShapeState& inShape);
 
+    // SetNodeFixed's change of one checked node, without waking the stepper
+    void FixNode(int inNode, bool inFixed);
     // Marks that an input changed: wake up and take a new energy reference before the next step.
     void InputChanged();
     // Symplectic Euler over inDeltaTime in inSubSteps sub-steps.

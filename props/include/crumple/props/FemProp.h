@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -78,6 +79,7 @@ public:
 
     /// As fem::TetSolver / GpuTetSolver.
     Status SetNodeFixed(int inNode, bool inFixed);
+    Status SetNodesFixed(std::span<const int> inNodes, bool inFixed);
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);

@@ -68,6 +68,10 @@ public:
 
     /// Anchors node inNode (inverse mass 0, velocity 0) or frees it again.
     Status SetNodeFixed(int inNode, bool inFixed);
+    /// SetNodeFixed for each of inNodes, with the same result, in one read and one write of the node buffers
+    /// over the range the nodes span (SetNodeFixed reads one node back and writes it, a device sync per node);
+    /// refused with nothing changed if any is not a node.
+    Status SetNodesFixed(std::span<const int> inNodes, bool inFixed);
     /// Adds inImpulse (N s, world) to node inNode: dv = inImpulse / m; an anchored node absorbs it.
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     /// Sets the constant external force (N, world) on node inNode.
