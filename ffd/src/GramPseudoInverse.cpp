@@ -42,7 +42,6 @@ Result<GramPseudoInverse> PrepareGramPseudoInverse(const Eigen::Ref<const Eigen:
     const Eigen::Index dependent = inL.rows() - r;
     inverse.mRank = static_cast<int>(r);
     inverse.mFactorDiagonal = inL.diagonal();
-    inverse.mFactorRows = inL.rows();
     // intent: S^T = L11^-T L21^T, one triangular solve with the dependent rows as right-hand sides; none when
     // either side is empty (Eigen's triangular solve binds a reference to an empty matrix's first entry: UB)
     inverse.mDependentT = inL.bottomRows(dependent).transpose();
@@ -70,8 +69,8 @@ Result<Eigen::MatrixX3d> SolveGramPseudoInverse(const GramPseudoInverse& inInver
                                                 const Eigen::MatrixX3d& inRhs)
 {
     const Eigen::Index r = inInverse.mRank;
-    // intent: the factor prepared from, by shape and diagonal bit for bit (O(r), a fraction of the solve)
-    if (inL.rows() != inInverse.mFactorRows || inL.cols() != r || inInverse.mFactorDiagonal.size() != r ||
+    // intent: the factor prepared from, by shape (#n = r + the dependent rows) and diagonal bit for bit (O(r))
+    if (inL.rows() != r + inInverse.mDependentT.cols() || inL.cols() != r || inInverse.mFactorDiagonal.size() != r ||
         (r > 0 && !(inL.diagonal().array() == inInverse.mFactorDiagonal.array()).all()))
         return MakeError(EError::InvalidArgument, "SolveGramPseudoInverse: L is not the factor the inverse was prepared from");
     if (inRhs.rows() != inL.rows())

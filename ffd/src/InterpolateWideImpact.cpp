@@ -34,13 +34,14 @@ double Orient(const Vec2& inA, const Vec2& inB, const Vec2& inC)
 bool InCircumcircle(const Vec2& inA, const Vec2& inB, const Vec2& inC, const Vec2& inP)
 {
     const Vec2 a = inA - inP, b = inB - inP, c = inC - inP;
-    const double ab = a.x() * b.y() - b.x() * a.y(), bc = b.x() * c.y() - c.x() * b.y(), ca = a.x() * c.y() - c.x() * a.y();
-    const double det = (a.squaredNorm()) * bc - (b.squaredNorm()) * ca + (c.squaredNorm()) * ab;
+    const double bx_cy = b.x() * c.y(), cx_by = c.x() * b.y(), ax_cy = a.x() * c.y(), cx_ay = c.x() * a.y();
+    const double ax_by = a.x() * b.y(), bx_ay = b.x() * a.y();
+    const double a2 = a.squaredNorm(), b2 = b.squaredNorm(), c2 = c.squaredNorm();
+    const double det = a2 * (bx_cy - cx_by) - b2 * (ax_cy - cx_ay) + c2 * (ax_by - bx_ay);
     // intent: the size of the terms whose differences make det (the permanent); the evaluation's error is a
     // few rounding units of it
-    const double size = a.squaredNorm() * (std::abs(b.x() * c.y()) + std::abs(c.x() * b.y())) +
-                        b.squaredNorm() * (std::abs(a.x() * c.y()) + std::abs(c.x() * a.y())) +
-                        c.squaredNorm() * (std::abs(a.x() * b.y()) + std::abs(b.x() * a.y()));
+    const double size = a2 * (std::abs(bx_cy) + std::abs(cx_by)) + b2 * (std::abs(ax_cy) + std::abs(cx_ay)) +
+                        c2 * (std::abs(ax_by) + std::abs(bx_ay));
     return det > 1.0e-12 * size;
 }
 

@@ -295,41 +295,35 @@ Status GpuTetSolver::CheckNode(int inNode, const char* inCaller) const
 
 Status GpuTetSolver::SetNodeFixed(int inNode, bool inFixed)
 {
-    if (Status status = CheckNode(inNode, "SetNodeFixed"); status.HasError())
-        return status;
-    InputChanged();
-    mInverseMasses[inNode] = inFixed ? 0.0 : 1.0 / mMasses[inNode];
-    Float4 position;
-    mPositions.Download(inNode * sizeof(Float4), sizeof(Float4), &position);
-    position[3] = static_cast<float>(mInverseMasses[inNode]);
-    mPositions.Upload(inNode * sizeof(Float4), sizeof(Float4), &position);
-    if (inFixed)
-    {
-        const Float4 zero{};
-        mVelocities.Upload(inNode * sizeof(Float4), sizeof(Float4), &zero);
-    }
-    return Status::Ok();
+    return FixNodes(std::span<const int>(&inNode, 1), inFixed, "SetNodeFixed");
 }
 
 Status GpuTetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
 {
+    return FixNodes(inNodes, inFixed, "SetNodesFixed");
+}
+
+Status GpuTetSolver::FixNodes(std::span<const int> inNodes, bool inFixed, const char* inCaller)
+{
     // intent: every node checked (and the device made current) before anything changes
     for (int node : inNodes)
-        if (Status status = CheckNode(node, "SetNodesFixed"); status.HasError())
+        if (Status status = CheckNode(node, inCaller); status.HasError())
             return status;
     if (inNodes.empty())
         return Status::Ok();
     InputChanged();
+    // intent: one read and one write of each node buffer over the range the nodes span (per node, each would
+    // be a device sync); the positions' fourth lane holds the inverse mass, the range's other nodes go back as read
     const auto [low, high] = std::minmax_element(inNodes.begin(), inNodes.end());
     const auto first = static_cast<std::size_t>(*low);
     const std::size_t count = static_cast<std::size_t>(*high) - first + 1;
-    // intent: the positions' fourth lane holds the inverse mass; the other nodes of the range go back as read
     std::vector<Float4> positions(count);
     mPositions.Download(first * sizeof(Float4), count * sizeof(Float4), positions.data());
     for (int node : inNodes)
     {
-        mInverseMasses[static_cast<std::size_t>(node)] = inFixed ? 0.0 : 1.0 / mMasses[static_cast<std::size_t>(node)];
-        positions[static_cast<std::size_t>(node) - first][3] = static_cast<float>(mInverseMasses[static_cast<std::size_t>(node)]);
+        const auto n = static_cast<std::size_t>(node);
+        mInverseMasses[n] = inFixed ? 0.0 : 1.0 / mMasses[n];
+        positions[n - first][3] = static_cast<float>(mInverseMasses[n]);
     }
     mPositions.Upload(first * sizeof(Float4), count * sizeof(Float4), positions.data());
     if (inFixed)

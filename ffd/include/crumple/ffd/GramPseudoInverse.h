@@ -27,7 +27,6 @@ struct CRUMPLE_API GramPseudoInverse
     bool mCouplingOfDependents = false;      ///< True: mCoupling is of I + S S^T ((#n - r) by (#n - r), the smaller)
     int mRank = 0;                           ///< r
     Eigen::VectorXd mFactorDiagonal;         ///< L's diagonal (r), bit for bit: a solve with another factor is refused
-    Eigen::Index mFactorRows = 0;            ///< #n
 };
 
 /// Prepares the pseudo-inverse of inL inL^T. Only the lower trapezoid of inL is read.

@@ -174,6 +174,8 @@ private:
     // Binds every buffer to its binding point.
     void BindAll() const;
     Status CheckNode(int inNode, const char* inCaller) const;
+    // SetNodeFixed / SetNodesFixed, inCaller naming the call in errors
+    Status FixNodes(std::span<const int> inNodes, bool inFixed, const char* inCaller);
     // A node buffer (#N float4) read back as Vec3s (waits for the GPU); empty and an error when the device
     // could not be made current.
     Status ReadNodeBuffer(const StorageBuffer& inBuffer, std::vector<Vec3>& outValues) const;
