@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FlipFlatEdges.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <numbers>
 #include <deque>
 #include <string>
@@ -35,40 +37,61 @@ Vec3 UnitNormal(const std::vector<Vec3>& inPositions, const Triangle& inTriangle
     return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
 }
 
-} // namespace
-
-Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
+// Each vertex's twin of lowest index at the same position (bitwise), so that edges on two sides of a seam
+// are one edge.
+std::vector<std::uint32_t> SeamTwins(const std::vector<Vec3>& inPositions)
 {
-    if (Status valid = ValidateTriangleMesh(ioMesh); !valid)
-        return valid.GetError();
-    if (!(inFlatCosine > 0.0 && inFlatCosine <= 1.0))
-        return MakeError(EError::InvalidArgument, "FlipFlatEdges: the flatness cosine must be in (0, 1], not " + std::to_string(inFlatCosine));
+    std::vector<std::uint32_t> order(inPositions.size());
+    std::iota(order.begin(), order.end(), 0u);
+    auto less = [&](std::uint32_t inA, std::uint32_t inB) {
+        const Vec3& a = inPositions[inA];
+        const Vec3& b = inPositions[inB];
+        if (a.x() != b.x())
+            return a.x() < b.x();
+        if (a.y() != b.y())
+            return a.y() < b.y();
+        if (a.z() != b.z())
+            return a.z() < b.z();
+        return inA < inB;
+    };
+    std::sort(order.begin(), order.end(), less);
+    std::vector<std::uint32_t> twin(inPositions.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        twin[order[i]] = (i > 0 && inPositions[order[i]] == inPositions[order[i - 1]]) ? twin[order[i - 1]] : order[i];
+    return twin;
+}
+
+// The flip loop both entry points share. inMayFlip(t0, t1, new0, new1) says whether the pair t0 = (a, b, c),
+// t1 = (b, a, d) may become new0 = (c, d, b), new1 = (d, c, a); the loop adds the Delaunay condition.
+// inKey[v] names vertex v in the edge map: v itself, or its seam twin (SeamTwins) to flip across seams; a new
+// triangle then takes each corner from the old triangle whose slot it takes, d and c from the other one.
+template <class MayFlip>
+std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inKey, MayFlip&& inMayFlip)
+{
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     std::vector<Triangle>& triangles = ioMesh.mTriangles;
+    auto edge_key = [&](std::uint32_t inFrom, std::uint32_t inTo) { return DirectedKey(inKey[inFrom], inKey[inTo]); };
     // intent: each directed edge's triangle, cNonManifold for an edge used twice the same way (never flipped)
     constexpr std::uint32_t cNonManifold = 0xFFFFFFFFu;
     std::unordered_map<std::uint64_t, std::uint32_t> owner;
     owner.reserve(triangles.size() * 3);
-    std::vector<Vec3> normals(triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-        normals[t] = UnitNormal(positions, triangles[t]);
         for (int k = 0; k < 3; ++k)
         {
-            const auto [it, added] = owner.try_emplace(DirectedKey(triangles[t][k], triangles[t][(k + 1) % 3]), static_cast<std::uint32_t>(t));
+            const auto [it, added] = owner.try_emplace(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]), static_cast<std::uint32_t>(t));
             if (!added)
                 it->second = cNonManifold;
         }
-    }
 
     // intent: each undirected edge once, in triangle order (deterministic)
     std::deque<std::uint64_t> queue;
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
-            if (triangles[t][k] < triangles[t][(k + 1) % 3])
-                queue.push_back(DirectedKey(triangles[t][k], triangles[t][(k + 1) % 3]));
+            if (inKey[triangles[t][k]] < inKey[triangles[t][(k + 1) % 3]])
+                queue.push_back(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]));
     std::size_t flips = 0;
-    // intent: every flip raises the sum of the smallest angles, so this ends; the cap only guards round-off cycles
+    // intent: in a plane every flip raises the sum of the smallest angles, so this ends; the cap guards
+    // round-off cycles and the slightly bent quads FlipNearlyFlatEdges accepts
     const std::size_t max_flips = 16 * triangles.size();
     while (!queue.empty() && flips < max_flips)
     {
@@ -82,48 +105,126 @@ Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
         if (theirs == owner.end() || theirs->second == cNonManifold)
             continue;
         const std::uint32_t t0 = mine->second, t1 = theirs->second;
-        // intent: only two triangles of one plane, facing the same way
-        if (t0 == t1 || normals[t0].isZero(0.0) || normals[t1].isZero(0.0) || normals[t0].dot(normals[t1]) < inFlatCosine)
+        if (t0 == t1)
             continue;
-        // t0 = (a, b, c) and t1 = (b, a, d), each up to rotation
-        auto third = [&](std::uint32_t inT, std::uint32_t inFrom, std::uint32_t inTo) {
+        // t0 = (a, b, c) and t1 = (b, a, d), each up to rotation; corner k of the edge's start in each
+        auto start = [&](std::uint32_t inT, std::uint32_t inFrom, std::uint32_t inTo) {
             const Triangle& tri = triangles[inT];
             for (int k = 0; k < 3; ++k)
-                if (tri[k] == inFrom && tri[(k + 1) % 3] == inTo)
-                    return tri[(k + 2) % 3];
-            return inFrom; // cannot happen: the map says the edge is there
+                if (inKey[tri[k]] == inFrom && inKey[tri[(k + 1) % 3]] == inTo)
+                    return k;
+            return 0; // cannot happen: the map says the edge is there
         };
-        const std::uint32_t c = third(t0, a, b), d = third(t1, b, a);
-        if (c == d || c == a || c == b || d == a || d == b)
+        const int k0 = start(t0, a, b), k1 = start(t1, b, a);
+        const std::uint32_t c = triangles[t0][(k0 + 2) % 3], d = triangles[t1][(k1 + 2) % 3];
+        if (inKey[c] == inKey[d] || inKey[c] == a || inKey[c] == b || inKey[d] == a || inKey[d] == b)
             continue;
-        const double opposite = AngleAt(positions[c], positions[a], positions[b]) + AngleAt(positions[d], positions[b], positions[a]);
+        // the old pair's own indices of a and b (different across a seam)
+        const std::uint32_t a0 = triangles[t0][k0], b0 = triangles[t0][(k0 + 1) % 3], a1 = triangles[t1][(k1 + 1) % 3];
+        const double opposite = AngleAt(positions[c], positions[a0], positions[b0]) + AngleAt(positions[d], positions[b0], positions[a0]);
         // a hair above pi: cocircular quads are left alone, so no pair flips back and forth
         if (!(opposite > std::numbers::pi + 1.0e-9))
             continue;
-        if (owner.contains(DirectedKey(c, d)) || owner.contains(DirectedKey(d, c)))
+        if (owner.contains(edge_key(c, d)) || owner.contains(edge_key(d, c)))
             continue;
-        // the new pair (c, d, b) and (d, c, a) must keep the plane's orientation: a non-convex quad would turn one over
-        const Triangle new0{c, d, b}, new1{d, c, a};
-        const Vec3 n0 = UnitNormal(positions, new0), n1 = UnitNormal(positions, new1);
-        if (n0.dot(normals[t0]) < inFlatCosine || n1.dot(normals[t0]) < inFlatCosine)
+        const Triangle new0{c, d, b0}, new1{d, c, a1};
+        if (!inMayFlip(t0, t1, new0, new1))
             continue;
         // intent: rewire the directed-edge map, then queue the quad's four outer edges
         for (std::uint64_t old : {DirectedKey(a, b), DirectedKey(b, a)})
             owner.erase(old);
         triangles[t0] = new0;
         triangles[t1] = new1;
-        normals[t0] = n0;
-        normals[t1] = n1;
         for (int k = 0; k < 3; ++k)
         {
-            owner[DirectedKey(new0[k], new0[(k + 1) % 3])] = t0;
-            owner[DirectedKey(new1[k], new1[(k + 1) % 3])] = t1;
+            owner[edge_key(new0[k], new0[(k + 1) % 3])] = t0;
+            owner[edge_key(new1[k], new1[(k + 1) % 3])] = t1;
         }
-        for (std::uint64_t outer : {DirectedKey(b, c), DirectedKey(c, a), DirectedKey(a, d), DirectedKey(d, b)})
+        for (std::uint64_t outer : {edge_key(b0, c), edge_key(c, a0), edge_key(a1, d), edge_key(d, b0)})
             queue.push_back(outer);
         ++flips;
     }
     return flips;
+}
+
+Vec3 AreaVector(const std::vector<Vec3>& inPositions, const Triangle& inTriangle)
+{
+    return (inPositions[inTriangle[1]] - inPositions[inTriangle[0]]).cross(inPositions[inTriangle[2]] - inPositions[inTriangle[0]]);
+}
+
+} // namespace
+
+Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
+{
+    if (Status valid = ValidateTriangleMesh(ioMesh); !valid)
+        return valid.GetError();
+    if (!(inFlatCosine > 0.0 && inFlatCosine <= 1.0))
+        return MakeError(EError::InvalidArgument, "FlipFlatEdges: the flatness cosine must be in (0, 1], not " + std::to_string(inFlatCosine));
+    const std::vector<Vec3>& positions = ioMesh.mPositions;
+    std::vector<Vec3> normals(ioMesh.mTriangles.size());
+    for (std::size_t t = 0; t < normals.size(); ++t)
+        normals[t] = UnitNormal(positions, ioMesh.mTriangles[t]);
+    std::vector<std::uint32_t> itself(positions.size());
+    std::iota(itself.begin(), itself.end(), 0u);
+    return FlipWhere(ioMesh, itself, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+        // intent: only two triangles of one plane, facing the same way
+        if (normals[inT0].isZero(0.0) || normals[inT1].isZero(0.0) || normals[inT0].dot(normals[inT1]) < inFlatCosine)
+            return false;
+        // the new pair must keep the plane's orientation: a non-convex quad would turn one over
+        const Vec3 n0 = UnitNormal(positions, inNew0), n1 = UnitNormal(positions, inNew1);
+        if (n0.dot(normals[inT0]) < inFlatCosine || n1.dot(normals[inT0]) < inFlatCosine)
+            return false;
+        normals[inT0] = n0;
+        normals[inT1] = n1;
+        return true;
+    });
+}
+
+// Why the slab bounds the change: the quad's four corners span a tetrahedron whose two diagonals are the old
+// edge ab and the new edge cd. When ab and cd cross seen along n = ab x cd (the closest points of their lines
+// lie inside both segments), both pairs of triangles cover the same region seen along n, so every point of one
+// pair has a point of the other straight along n; both lie between the parallel planes through ab and cd,
+// which are |(c - a) . n| / |n| apart.
+Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviation, bool inAcrossSeams)
+{
+    if (Status valid = ValidateTriangleMesh(ioMesh); !valid)
+        return valid.GetError();
+    if (!(inMaxDeviation >= 0.0 && std::isfinite(inMaxDeviation)))
+        return MakeError(EError::InvalidArgument,
+                         "FlipNearlyFlatEdges: the largest deviation must be finite and >= 0 (m), not " + std::to_string(inMaxDeviation));
+    const std::vector<Vec3>& positions = ioMesh.mPositions;
+    const std::vector<Triangle>& triangles = ioMesh.mTriangles;
+    std::vector<std::uint32_t> keys;
+    if (inAcrossSeams)
+        keys = SeamTwins(positions);
+    else
+    {
+        keys.resize(positions.size());
+        std::iota(keys.begin(), keys.end(), 0u);
+    }
+    return FlipWhere(ioMesh, keys, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+        const Vec3& a = positions[inNew1[2]];
+        const Vec3& b = positions[inNew0[2]];
+        const Vec3& c = positions[inNew0[0]];
+        const Vec3& d = positions[inNew0[1]];
+        // intent: the closest points of lines ab and cd lie strictly inside both segments
+        const Vec3 ab = b - a, cd = d - c, ca = a - c;
+        const double aa = ab.dot(ab), cc = cd.dot(cd), ac = ab.dot(cd);
+        const double denominator = aa * cc - ac * ac;
+        if (!(denominator > 0.0))
+            return false;
+        const double s = (ac * cd.dot(ca) - cc * ab.dot(ca)) / denominator;
+        const double t = (aa * cd.dot(ca) - ac * ab.dot(ca)) / denominator;
+        if (!(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0))
+            return false;
+        // intent: the slab between the two diagonals is at most inMaxDeviation thick
+        const Vec3 n = ab.cross(cd);
+        if (std::abs(ca.dot(n)) > inMaxDeviation * n.norm())
+            return false;
+        // intent: both new triangles face the way the old pair faces together (a cap's own normal says little)
+        const Vec3 facing = AreaVector(positions, triangles[inT0]) + AreaVector(positions, triangles[inT1]);
+        return AreaVector(positions, inNew0).dot(facing) > 0.0 && AreaVector(positions, inNew1).dot(facing) > 0.0;
+    });
 }
 
 } // namespace crumple::ffd

@@ -244,7 +244,7 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         // Unknown keys, with the known ones and unit hints
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
          "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, mesh_unit_m, "
-         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, mesh_rigid_parts, box_size_m, mass_kg, "
+         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, mesh_flip_deviation_m, mesh_rigid_parts, box_size_m, mass_kg, "
          "inertia_kg_m2, inertia_from, control_count, control_spacing_m, zones, material)"},
         {Minimal(R"("mass_kg": 1200, "zones": [{"min_m": [0, 0, 0], "max_m": [1, 0, 1]}])"), EError::InvalidArgument,
          "/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m on every axis"},

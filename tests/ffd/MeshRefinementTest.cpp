@@ -7,7 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -271,4 +274,162 @@ TEST_CASE("A smooth pocket turns a bumper's slivers over, and none of the Delaun
     REQUIRE(FlipFlatEdges(better));
     CHECK(TotalArea(better) == Approx(TotalArea(fan)).epsilon(1e-12));
     CHECK(TurnedOver(better, Pocket(better)) == 0);
+}
+
+namespace
+{
+
+// The bumper's fan, its vertices raised or lowered by up to inNoise (m) in z, seeded: flat to a fraction of a
+// millimetre, as an exported bevel is, so the slivers' unit normals scatter by degrees.
+TriangleMesh NoisyBumperUnderside(double inNoise)
+{
+    TriangleMesh mesh = BumperUnderside();
+    std::uint32_t state = 12345u;
+    for (Vec3& p : mesh.mPositions)
+    {
+        state = state * 1664525u + 1013904223u;
+        p.z() += inNoise * (2.0 * (state >> 8) / double(1u << 24) - 1.0);
+    }
+    return mesh;
+}
+
+// Distance from inPoint to the triangle (a, b, c), by the closest point on the plane or on an edge.
+double PointTriangleDistance(const Vec3& inPoint, const Vec3& inA, const Vec3& inB, const Vec3& inC)
+{
+    auto segment = [&](const Vec3& inFrom, const Vec3& inTo) {
+        const Vec3 d = inTo - inFrom;
+        const double t = std::clamp((inPoint - inFrom).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        return (inFrom + t * d - inPoint).norm();
+    };
+    const Vec3 n = (inB - inA).cross(inC - inA);
+    const Vec3 projected = inPoint - ((inPoint - inA).dot(n) / n.squaredNorm()) * n;
+    // intent: inside when the projection lies on the same side of all three edges
+    const bool inside = (inB - inA).cross(projected - inA).dot(n) >= 0.0 && (inC - inB).cross(projected - inB).dot(n) >= 0.0 &&
+                        (inA - inC).cross(projected - inC).dot(n) >= 0.0;
+    if (inside)
+        return (projected - inPoint).norm();
+    return std::min({segment(inA, inB), segment(inB, inC), segment(inC, inA)});
+}
+
+// The largest distance from points spread over inMesh's triangles to inOther's surface.
+double SurfaceDeviation(const TriangleMesh& inMesh, const TriangleMesh& inOther)
+{
+    double largest = 0.0;
+    constexpr int cSteps = 8;
+    for (const auto& t : inMesh.mTriangles)
+        for (int i = 0; i <= cSteps; ++i)
+            for (int j = 0; i + j <= cSteps; ++j)
+            {
+                const double u = double(i) / cSteps, v = double(j) / cSteps;
+                const Vec3 p = (1.0 - u - v) * inMesh.mPositions[t[0]] + u * inMesh.mPositions[t[1]] + v * inMesh.mPositions[t[2]];
+                double nearest = std::numeric_limits<double>::infinity();
+                for (const auto& o : inOther.mTriangles)
+                    nearest = std::min(nearest, PointTriangleDistance(p, inOther.mPositions[o[0]], inOther.mPositions[o[1]],
+                                                                      inOther.mPositions[o[2]]));
+                largest = std::max(largest, nearest);
+            }
+    return largest;
+}
+
+} // namespace
+
+TEST_CASE("FlipNearlyFlatEdges: on an exactly flat fan it makes FlipFlatEdges' triangles", "[ffd]")
+{
+    TriangleMesh exact = BumperUnderside(), nearly = BumperUnderside();
+    REQUIRE(FlipFlatEdges(exact));
+    Result<std::size_t> flips = FlipNearlyFlatEdges(nearly, 0.0);
+    REQUIRE(flips);
+    CHECK(flips.Get() > 10);
+    CHECK(nearly.mTriangles == exact.mTriangles);
+}
+
+TEST_CASE("FlipNearlyFlatEdges: a fan flat to 0.2 mm becomes Delaunay within the deviation, and a pocket turns nothing over", "[ffd]")
+{
+    constexpr double cNoise = 2.0e-4, cTolerance = 1.0e-3;
+    const TriangleMesh fan = NoisyBumperUnderside(cNoise);
+    // the premise: the slivers' normals scatter too far for FlipFlatEdges, and the pocket turns them over
+    TriangleMesh exact = fan;
+    REQUIRE(FlipFlatEdges(exact));
+    CHECK(TurnedOver(exact, Pocket(exact)) > 0);
+
+    TriangleMesh nearly = fan;
+    Result<std::size_t> flips = FlipNearlyFlatEdges(nearly, cTolerance);
+    REQUIRE(flips);
+    CHECK(flips.Get() > 10);
+    CHECK(nearly.mPositions == fan.mPositions);
+    CHECK(nearly.mTriangles.size() == fan.mTriangles.size());
+    CHECK(IsClosedManifold(nearly) == IsClosedManifold(fan));
+    for (const auto& t : nearly.mTriangles)
+        CHECK(AreaVector(nearly, t).z() < 0.0);
+    CHECK(SmallestAngle(nearly) > SmallestAngle(fan));
+    // intent: the surface moved by no more than the noise allows (each flip is bounded by its slab, and the
+    // whole fan lies within cNoise of z = 0), both ways
+    CHECK(SurfaceDeviation(nearly, fan) <= 2.0 * cNoise);
+    CHECK(SurfaceDeviation(fan, nearly) <= 2.0 * cNoise);
+    // intent: refined as crumple-crash does, the pocket turns nothing over
+    Result<RefinedMesh> refined = RefineLongEdges(nearly, 0.1);
+    REQUIRE(refined);
+    TriangleMesh better = refined.Get().mMesh;
+    REQUIRE(FlipNearlyFlatEdges(better, cTolerance));
+    CHECK(TurnedOver(better, Pocket(better)) == 0);
+}
+
+TEST_CASE("FlipNearlyFlatEdges: a ridge flips only when its height is within the deviation", "[ffd]")
+{
+    // A tent: the edge (0, 1) along x at z = 0 and the edge between the two far corners 0.3 m above it.
+    TriangleMesh tent;
+    tent.mPositions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.1, 0.3), Vec3(0.5, -0.1, 0.3)};
+    tent.mTriangles = {{0, 1, 2}, {1, 0, 3}};
+    TriangleMesh below = tent, above = tent;
+    Result<std::size_t> none = FlipNearlyFlatEdges(below, 0.29);
+    REQUIRE(none);
+    CHECK(none.Get() == 0);
+    CHECK(below.mTriangles == tent.mTriangles);
+    Result<std::size_t> one = FlipNearlyFlatEdges(above, 0.31);
+    REQUIRE(one);
+    CHECK(one.Get() == 1);
+    CHECK(above.mTriangles != tent.mTriangles);
+}
+
+TEST_CASE("FlipNearlyFlatEdges: across a seam only when asked, each new triangle from both sides' vertices", "[ffd]")
+{
+    // A cap (0, 1, 2) 0.1 mm high on a 1 m edge, and across that edge, by position only, the triangle (4, 3, 5):
+    // vertices 3 and 4 duplicate 0 and 1, as an exporter splits them at a texture seam.
+    TriangleMesh seam;
+    seam.mPositions = {Vec3(0, 0, 0),  Vec3(1, 0, 0),    Vec3(0.5, 1e-4, 0), Vec3(0, 0, 0),
+                       Vec3(1, 0, 0), Vec3(0.5, -0.6, 0)};
+    seam.mTriangles = {{0, 1, 2}, {4, 3, 5}};
+    TriangleMesh apart = seam;
+    Result<std::size_t> none = FlipNearlyFlatEdges(apart, 1e-3);
+    REQUIRE(none);
+    CHECK(none.Get() == 0);
+    TriangleMesh joined = seam;
+    Result<std::size_t> one = FlipNearlyFlatEdges(joined, 1e-3, true);
+    REQUIRE(one);
+    CHECK(one.Get() == 1);
+    // intent: the first slot keeps its side's b = 1 with the cap's apex 2 and the far corner 5; the second its
+    // side's a = 3
+    CHECK(joined.mTriangles[0] == std::array<std::uint32_t, 3>{2, 5, 1});
+    CHECK(joined.mTriangles[1] == std::array<std::uint32_t, 3>{5, 2, 3});
+    CHECK(TotalArea(joined) == Approx(TotalArea(seam)).epsilon(1e-12));
+    for (const auto& t : joined.mTriangles)
+        CHECK(AreaVector(joined, t).z() > 0.0);
+}
+
+TEST_CASE("FlipNearlyFlatEdges: bad input changes nothing", "[ffd]")
+{
+    TriangleMesh fan = NoisyBumperUnderside(2.0e-4);
+    const TriangleMesh copy = fan;
+    for (double bad : {-1e-3, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+        Result<std::size_t> flips = FlipNearlyFlatEdges(fan, bad);
+        REQUIRE(flips.HasError());
+        CHECK(flips.GetError().mMessage.find("deviation") != std::string::npos);
+        CHECK(fan.mTriangles == copy.mTriangles);
+    }
+    TriangleMesh broken = copy;
+    broken.mTriangles.push_back({0, 1, 999});
+    const TriangleMesh broken_copy = broken;
+    REQUIRE(FlipNearlyFlatEdges(broken, 1e-3).HasError());
+    CHECK(broken.mTriangles == broken_copy.mTriangles);
 }

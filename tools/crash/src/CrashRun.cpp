@@ -181,6 +181,9 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             loaded.Get() = std::move(refined.Get().mMesh);
             if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
                 return flipped.GetError();
+            if (vehicle.mMeshFlipDeviation > 0.0)
+                if (Result<std::size_t> flipped = ffd::FlipNearlyFlatEdges(loaded.Get(), vehicle.mMeshFlipDeviation, true); flipped.HasError())
+                    return flipped.GetError();
         }
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);

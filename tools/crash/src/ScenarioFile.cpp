@@ -467,7 +467,7 @@ class ScenarioReader
         if (!ExpectObject(inVehicle, inPointer) ||
             !CheckKeys(inVehicle, inPointer,
                        {{"mesh", "mesh_name", "mesh_length_m", "mesh_unit_m", "mesh_forward_axis", "mesh_up_axis",
-                         "mesh_max_edge_m", "mesh_rigid_parts",      "box_size_m", "mass_kg", "inertia_kg_m2",
+                         "mesh_max_edge_m", "mesh_flip_deviation_m", "mesh_rigid_parts", "box_size_m", "mass_kg", "inertia_kg_m2",
                          "inertia_from", "control_count", "control_spacing_m", "zones", "material"},
                         {{"mesh_length", "mesh lengths are mesh_length_m"},
                          {"box_size", "box sizes are box_size_m"},
@@ -543,6 +543,8 @@ class ScenarioReader
                         ioVehicle.mMeshLength) ||
             !ReadNumber(inVehicle, inPointer, "mesh_max_edge_m", NumberRange::NonNegative(), false,
                         ioVehicle.mMeshMaxEdge) ||
+            !ReadNumber(inVehicle, inPointer, "mesh_flip_deviation_m", NumberRange::NonNegative(), false,
+                        ioVehicle.mMeshFlipDeviation) ||
             !ReadVec3(inVehicle, inPointer, "box_size_m", BodySize(), ioVehicle.mBoxSize) ||
             !ReadNumber(inVehicle, inPointer, "mass_kg", BodyMass(), true, ioVehicle.mMass))
             return false;

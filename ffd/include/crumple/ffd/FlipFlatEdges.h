@@ -27,4 +27,30 @@ namespace crumple::ffd
 /// @return the number of flips made, or an error for bad input (the mesh unchanged)
 CRUMPLE_API Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine = 1.0 - 1.0e-6);
 
+/// The same Delaunay flips where the surface is flat only to within inMaxDeviation: an edge ab between the
+/// triangles (a, b, c) and (b, a, d) is flipped to cd when the two angles facing it add up to more than pi,
+/// ab and cd cross when seen along ab x cd, the tetrahedron (a, b, c, d) is at most inMaxDeviation thick
+/// between the two (so no point of the surface moves farther), and both new triangles face the way the old
+/// pair faces together. Repeats until no edge qualifies; vertices, their order and their count stay.
+///
+/// Why: a mesh's bevels and T-junctions leave caps, triangles with a corner near 180 degrees a fraction of a
+/// millimetre high (the Toy Car's front lip: caps 0.56 mm high and 10 cm long). Their unit normals are round-off
+/// and differ from their neighbours', so FlipFlatEdges leaves them, and a dent's field bends more across their
+/// length than they are high: they turn over although the field folds nothing. Flipping the cap's long edge
+/// to its neighbour's far corner removes it and moves the surface by less than the cap's height.
+///
+/// @param[in,out] ioMesh          the mesh; ValidateTriangleMesh must accept it (else it is left as it was)
+/// Exporters split vertices along texture seams and hard edges, so an edge there has one triangle per side
+/// by index. With inAcrossSeams such an edge is one edge when its ends' positions are bitwise equal, and a
+/// flip across it makes each new triangle from both sides' vertices: right for a mesh whose vertices carry
+/// only a position (crumple-crash's), wrong for a textured one (a flipped triangle would stretch its texture
+/// coordinates across the seam).
+///
+/// @param[in,out] ioMesh          the mesh; ValidateTriangleMesh must accept it (else it is left as it was)
+/// @param[in]     inMaxDeviation  how far a flip may move the surface (m, or the mesh's unit), finite and >= 0;
+///                                each flip is bounded, not their sum over flips that share a triangle
+/// @param[in]     inAcrossSeams   flip across seams too (see above)
+/// @return the number of flips made, or an error for bad input (the mesh unchanged)
+CRUMPLE_API Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviation, bool inAcrossSeams = false);
+
 } // namespace crumple::ffd

@@ -67,6 +67,11 @@ struct VehicleSpec
     /// dent folds nothing (ffd::RefineLongEdges); the default is the default control spacing, so that no
     /// triangle spans more than a lattice cell, the scale the dent field varies on.
     double mMeshMaxEdge = 0.15;
+    /// After the re-cut (mMeshMaxEdge > 0), edges whose flip moves the surface by at most this (m) are flipped
+    /// where that makes the triangles Delaunay (ffd::FlipNearlyFlatEdges), >= 0; 0: only exactly flat pairs.
+    /// A bevel or T-junction leaves caps a fraction of a millimetre high that turn over in a dent although the
+    /// field folds nothing; a millimetre is below what a crash measurement or picture resolves.
+    double mMeshFlipDeviation = 0.001;
     /// The file's meshes whose node or mesh name contains one of these (any case) keep their shape and move
     /// with the body around their centre (samples::CarMeshSettings::mRigidPartNames): wheels stay round.
     std::vector<std::string> mMeshRigidParts{"wheel", "tire", "tyre"};
