@@ -8,7 +8,6 @@
 #include <numbers>
 #include <deque>
 #include <string>
-#include <unordered_map>
 
 namespace crumple::ffd
 {
@@ -61,6 +60,70 @@ std::vector<std::uint32_t> SeamTwins(const std::vector<Vec3>& inPositions)
     return twin;
 }
 
+// Each directed edge's triangle, found by scanning its start vertex's few outgoing edges. A flip reads about
+// ten of them and changes six; in a hash map those lookups were most of the flips' time.
+class DirectedEdges
+{
+public:
+    static constexpr std::uint32_t cNone = 0xFFFFFFFEu;        ///< No triangle has the edge
+    static constexpr std::uint32_t cNonManifold = 0xFFFFFFFFu; ///< Two triangles have it the same way round
+
+    explicit DirectedEdges(std::size_t inVertexCount) : mOut(inVertexCount) {}
+
+    /// Records that inTriangle has the edge; a second triangle with it marks it cNonManifold
+    void Add(std::uint32_t inFrom, std::uint32_t inTo, std::uint32_t inTriangle)
+    {
+        for (Entry& e : mOut[inFrom])
+            if (e.mTo == inTo)
+            {
+                e.mTriangle = cNonManifold;
+                return;
+            }
+        mOut[inFrom].push_back({inTo, inTriangle});
+    }
+
+    /// The edge's triangle, cNone or cNonManifold
+    std::uint32_t Find(std::uint32_t inFrom, std::uint32_t inTo) const
+    {
+        for (const Entry& e : mOut[inFrom])
+            if (e.mTo == inTo)
+                return e.mTriangle;
+        return cNone;
+    }
+
+    /// The edge now belongs to inTriangle (whatever it was before)
+    void Set(std::uint32_t inFrom, std::uint32_t inTo, std::uint32_t inTriangle)
+    {
+        for (Entry& e : mOut[inFrom])
+            if (e.mTo == inTo)
+            {
+                e.mTriangle = inTriangle;
+                return;
+            }
+        mOut[inFrom].push_back({inTo, inTriangle});
+    }
+
+    void Erase(std::uint32_t inFrom, std::uint32_t inTo)
+    {
+        std::vector<Entry>& out = mOut[inFrom];
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (out[i].mTo == inTo)
+            {
+                out[i] = out.back();
+                out.pop_back();
+                return;
+            }
+    }
+
+private:
+    struct Entry
+    {
+        std::uint32_t mTo;
+        std::uint32_t mTriangle;
+    };
+    std::vector<std::vector<Entry>> mOut; ///< Per start vertex (its key), its outgoing edges
+};
+
 // The flip loop both entry points share. inMayFlip(t0, t1, new0, new1) says whether the pair t0 = (a, b, c),
 // t1 = (b, a, d) may become new0 = (c, d, b), new1 = (d, c, a); the loop adds the Delaunay condition.
 // inKey[v] names vertex v in the edge map: v itself, or its seam twin (SeamTwins) to flip across seams; a new
@@ -72,16 +135,10 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
     std::vector<Triangle>& triangles = ioMesh.mTriangles;
     auto edge_key = [&](std::uint32_t inFrom, std::uint32_t inTo) { return DirectedKey(inKey[inFrom], inKey[inTo]); };
     // intent: each directed edge's triangle, cNonManifold for an edge used twice the same way (never flipped)
-    constexpr std::uint32_t cNonManifold = 0xFFFFFFFFu;
-    std::unordered_map<std::uint64_t, std::uint32_t> owner;
-    owner.reserve(triangles.size() * 3);
+    DirectedEdges owner(positions.size());
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
-        {
-            const auto [it, added] = owner.try_emplace(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]), static_cast<std::uint32_t>(t));
-            if (!added)
-                it->second = cNonManifold;
-        }
+            owner.Add(inKey[triangles[t][k]], inKey[triangles[t][(k + 1) % 3]], static_cast<std::uint32_t>(t));
 
     // intent: each undirected edge once, in triangle order (deterministic)
     std::deque<std::uint64_t> queue;
@@ -98,13 +155,12 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         const std::uint64_t key = queue.front();
         queue.pop_front();
         const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xFFFFFFFFu);
-        const auto mine = owner.find(key);
-        if (mine == owner.end() || mine->second == cNonManifold)
+        const std::uint32_t t0 = owner.Find(a, b);
+        if (t0 == DirectedEdges::cNone || t0 == DirectedEdges::cNonManifold)
             continue;
-        const auto theirs = owner.find(DirectedKey(b, a));
-        if (theirs == owner.end() || theirs->second == cNonManifold)
+        const std::uint32_t t1 = owner.Find(b, a);
+        if (t1 == DirectedEdges::cNone || t1 == DirectedEdges::cNonManifold)
             continue;
-        const std::uint32_t t0 = mine->second, t1 = theirs->second;
         if (t0 == t1)
             continue;
         // t0 = (a, b, c) and t1 = (b, a, d), each up to rotation; corner k of the edge's start in each
@@ -125,20 +181,20 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         // a hair above pi: cocircular quads are left alone, so no pair flips back and forth
         if (!(opposite > std::numbers::pi + 1.0e-9))
             continue;
-        if (owner.contains(edge_key(c, d)) || owner.contains(edge_key(d, c)))
+        if (owner.Find(inKey[c], inKey[d]) != DirectedEdges::cNone || owner.Find(inKey[d], inKey[c]) != DirectedEdges::cNone)
             continue;
         const Triangle new0{c, d, b0}, new1{d, c, a1};
         if (!inMayFlip(t0, t1, new0, new1))
             continue;
         // intent: rewire the directed-edge map, then queue the quad's four outer edges
-        for (std::uint64_t old : {DirectedKey(a, b), DirectedKey(b, a)})
-            owner.erase(old);
+        owner.Erase(a, b);
+        owner.Erase(b, a);
         triangles[t0] = new0;
         triangles[t1] = new1;
         for (int k = 0; k < 3; ++k)
         {
-            owner[edge_key(new0[k], new0[(k + 1) % 3])] = t0;
-            owner[edge_key(new1[k], new1[(k + 1) % 3])] = t1;
+            owner.Set(inKey[new0[k]], inKey[new0[(k + 1) % 3]], t0);
+            owner.Set(inKey[new1[k]], inKey[new1[(k + 1) % 3]], t1);
         }
         for (std::uint64_t outer : {edge_key(b0, c), edge_key(c, a0), edge_key(a1, d), edge_key(d, b0)})
             queue.push_back(outer);
