@@ -63,6 +63,21 @@ std::string Number(double inValue, int inDigits)
     return text;
 }
 
+// One line on how the mesh was re-cut: the counts a user checks against the file and the flips that moved
+// its surface within the stated deviation.
+std::string MeshPreparationText(const MeshPreparation& inMesh)
+{
+    std::string text = "mesh: " + std::to_string(inMesh.mFileTriangles) + " triangles and " +
+                       std::to_string(inMesh.mFileVertices) + " vertices from the file";
+    if (!(inMesh.mMaxEdge > 0.0))
+        return text + ", as they are (mesh_max_edge_m 0)";
+    text += ", re-cut to " + std::to_string(inMesh.mTriangles) + " and " + std::to_string(inMesh.mVertices) +
+            " (edges up to " + Number(inMesh.mMaxEdge, 3) + " m; " + std::to_string(inMesh.mFlatFlips) + " flips in flat parts";
+    if (inMesh.mFlipDeviation > 0.0)
+        text += ", " + std::to_string(inMesh.mNearlyFlatFlips) + " within " + Number(inMesh.mFlipDeviation, 4) + " m";
+    return text + ")";
+}
+
 } // namespace
 
 std::vector<ExpectationResult> CheckExpectations(const CrashScenario& inScenario, const CrashOutcome& inOutcome)
@@ -126,6 +141,13 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     report["folded_vertices"] = inOutcome.mFoldedVertices;
     report["folded_triangles"] = inOutcome.mFoldedTriangles;
     report["warnings"] = inOutcome.mWarnings;
+    if (const std::optional<MeshPreparation>& mesh = inOutcome.mMeshPreparation)
+        report["mesh_preparation"] = {{"file_triangles", mesh->mFileTriangles}, {"file_vertices", mesh->mFileVertices},
+                                      {"triangles", mesh->mTriangles},         {"vertices", mesh->mVertices},
+                                      {"max_edge_m", mesh->mMaxEdge},          {"flat_flips", mesh->mFlatFlips},
+                                      {"flip_deviation_m", mesh->mFlipDeviation}, {"nearly_flat_flips", mesh->mNearlyFlatFlips}};
+    else
+        report["mesh_preparation"] = nullptr;
     report["crush_profile"] = {{"damage_width_m", inOutcome.mFrontProfile.mDamageWidth},
                                {"C_m", inOutcome.mFrontProfile.mC},
                                {"average_m", inOutcome.mFrontProfile.Average()}};
@@ -187,6 +209,8 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
                  inOutcome.mOutwardDisplacement);
+    if (const std::optional<MeshPreparation>& mesh = inOutcome.mMeshPreparation)
+        std::fprintf(inStream, "  %s\n", MeshPreparationText(*mesh).c_str());
     for (const std::string& warning : inOutcome.mWarnings)
         std::fprintf(inStream, "  WARNING %s\n", warning.c_str());
     const CrushProfile& profile = inOutcome.mFrontProfile;
@@ -269,6 +293,8 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
                                  std::to_string(history.mPulseSteps) + " engine steps (" +
                                  (history.mAccelerationCfc60.empty() ? "unfiltered: step too coarse for CFC 60" : "CFC 60") +
                                  "; the engine's rigid-box pulse, timeseries.csv)");
+    if (const std::optional<MeshPreparation>& mesh = inOutcome.mMeshPreparation)
+        row("mesh preparation", Escape(MeshPreparationText(*mesh)));
     for (const std::string& warning : inOutcome.mWarnings)
         row("<span class=\"fail\">warning</span>", Escape(warning));
     if (!std::isnan(inOutcome.mTargetResidualCrush))

@@ -60,7 +60,8 @@ Vec3 ShellInertia(const ffd::TriangleMesh& inMesh, const Vec3& inCentre, double 
 
 // The scenario in the shared engine scene's terms.
 Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenario, const CrashRunOptions& inOptions,
-                                                  std::vector<std::string>& outWarnings)
+                                                  std::vector<std::string>& outWarnings,
+                                                  std::optional<MeshPreparation>& outPreparation)
 {
     const VehicleSpec& vehicle = inScenario.mVehicle;
     common::EngineCrashSettings settings;
@@ -170,21 +171,37 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
                 return MakeError(EError::InvalidArgument, text + "; refused by --strict");
             outWarnings.push_back(text);
         }
+        MeshPreparation preparation;
+        preparation.mFileTriangles = loaded.Get().mTriangles.size();
+        preparation.mFileVertices = loaded.Get().mPositions.size();
         if (vehicle.mMeshMaxEdge > 0.0)
         {
-            if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
+            preparation.mMaxEdge = vehicle.mMeshMaxEdge;
+            Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get());
+            if (flipped.HasError())
                 return flipped.GetError();
+            preparation.mFlatFlips = flipped.Get();
             Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(loaded.Get(), vehicle.mMeshMaxEdge);
             if (refined.HasError())
                 return refined.GetError();
             rigid_parts = samples::PartsAfterRefinement(rigid_parts, refined.Get());
             loaded.Get() = std::move(refined.Get().mMesh);
-            if (Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get()); flipped.HasError())
+            flipped = ffd::FlipFlatEdges(loaded.Get());
+            if (flipped.HasError())
                 return flipped.GetError();
+            preparation.mFlatFlips += flipped.Get();
             if (vehicle.mMeshFlipDeviation > 0.0)
-                if (Result<std::size_t> flipped = ffd::FlipNearlyFlatEdges(loaded.Get(), vehicle.mMeshFlipDeviation, true); flipped.HasError())
+            {
+                preparation.mFlipDeviation = vehicle.mMeshFlipDeviation;
+                flipped = ffd::FlipNearlyFlatEdges(loaded.Get(), vehicle.mMeshFlipDeviation, true);
+                if (flipped.HasError())
                     return flipped.GetError();
+                preparation.mNearlyFlatFlips = flipped.Get();
+            }
         }
+        preparation.mTriangles = loaded.Get().mTriangles.size();
+        preparation.mVertices = loaded.Get().mPositions.size();
+        outPreparation = preparation;
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);
         settings.mHalfExtents = 0.5 * (bounds.mMax - bounds.mMin);
@@ -522,7 +539,8 @@ double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPo
 Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOptions& inOptions)
 {
     std::vector<std::string> warnings;
-    Result<common::EngineCrashSettings> settings = SceneSettings(inScenario, inOptions, warnings);
+    std::optional<MeshPreparation> preparation;
+    Result<common::EngineCrashSettings> settings = SceneSettings(inScenario, inOptions, warnings, preparation);
     if (settings.HasError())
         return settings.GetError();
     Result<CrashOutcome> outcome = MakeError(EError::InvalidArgument, "unknown engine");
@@ -546,6 +564,7 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
     if (outcome.HasError())
         return outcome;
     outcome.Get().mWarnings = std::move(warnings);
+    outcome.Get().mMeshPreparation = preparation;
     return outcome;
 }
 

@@ -7,8 +7,10 @@
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <array>
-#include <limits>
+#include <cstddef>
 #include <filesystem>
+#include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -44,6 +46,20 @@ struct CrushProfile
     double Average() const { return (0.5 * mC[0] + mC[1] + mC[2] + mC[3] + mC[4] + 0.5 * mC[5]) / 5.0; }
 };
 
+/// How a mesh body was prepared for the crash (VehicleSpec::mMeshMaxEdge and mMeshFlipDeviation): the
+/// surface is the file's, its triangles are not.
+struct MeshPreparation
+{
+    std::size_t mFileTriangles = 0;   ///< As loaded (the meshes mesh_name kept)
+    std::size_t mFileVertices = 0;    ///< As loaded
+    std::size_t mTriangles = 0;       ///< After the re-cut: the mesh the crash deforms
+    std::size_t mVertices = 0;        ///< After the re-cut (midpoints added)
+    double mMaxEdge = 0.0;            ///< The re-cut's longest edge (m); 0: no re-cut
+    std::size_t mFlatFlips = 0;       ///< Edges flipped in exactly flat parts (ffd::FlipFlatEdges, both passes)
+    double mFlipDeviation = 0.0;      ///< How far a flip of a nearly flat pair may move the surface (m)
+    std::size_t mNearlyFlatFlips = 0; ///< Edges flipped within mFlipDeviation (ffd::FlipNearlyFlatEdges)
+};
+
 /// What a crash run measured. Velocities in the world frame; crush in the car's body frame.
 struct CrashOutcome
 {
@@ -51,6 +67,7 @@ struct CrashOutcome
     int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
     int mFoldedTriangles = 0;               ///< Car body triangles turned over (FoldedTriangles)
     std::vector<std::string> mWarnings;     ///< What the run doubts about its input (a sideways mesh)
+    std::optional<MeshPreparation> mMeshPreparation; ///< A mesh body's re-cut; empty for the procedural box
     CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
