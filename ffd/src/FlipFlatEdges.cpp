@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <numbers>
+#include <optional>
 #include <deque>
 #include <string>
 
@@ -36,8 +37,8 @@ Vec3 UnitNormal(const std::vector<Vec3>& inPositions, const Triangle& inTriangle
     return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
 }
 
-// Each vertex's twin of lowest index at the same position (bitwise), so that edges on two sides of a seam
-// are one edge.
+// Each vertex's twin of lowest index at the same position (==, so 0.0 and -0.0 are one), so that edges on
+// two sides of a seam are one edge.
 std::vector<std::uint32_t> SeamTwins(const std::vector<Vec3>& inPositions)
 {
     std::vector<std::uint32_t> order(inPositions.size());
@@ -124,12 +125,84 @@ private:
     std::vector<std::vector<Entry>> mOut; ///< Per start vertex (its key), its outgoing edges
 };
 
+// How many triangles have each directed edge that touches a seam, by the positions of its ends: a flip by
+// index must not make an edge that a seam's other side already has (the two sides would then face each
+// other, a fold). An edge between two vertices without a twin exists by position only as itself, so the
+// index map answers for it.
+class PositionEdges
+{
+public:
+    /// inSeam[v]: 1 when v shares its position with another vertex
+    PositionEdges(const std::vector<Triangle>& inTriangles, const std::vector<std::uint32_t>& inTwins,
+                  std::vector<std::uint8_t> inSeam)
+        : mTwins(inTwins), mSeam(std::move(inSeam)), mOut(inTwins.size())
+    {
+        for (const Triangle& t : inTriangles)
+            for (int k = 0; k < 3; ++k)
+                Add(t[k], t[(k + 1) % 3]);
+    }
+
+    /// Whether a triangle has the edge by position; false for an edge that touches no seam (ask by index)
+    bool Has(std::uint32_t inFrom, std::uint32_t inTo) const
+    {
+        if (!(mSeam[inFrom] | mSeam[inTo]))
+            return false;
+        for (const Entry& e : mOut[mTwins[inFrom]])
+            if (e.mTo == mTwins[inTo])
+                return true;
+        return false;
+    }
+
+    void Add(std::uint32_t inFrom, std::uint32_t inTo)
+    {
+        if (!(mSeam[inFrom] | mSeam[inTo]))
+            return;
+        std::vector<Entry>& out = mOut[mTwins[inFrom]];
+        for (Entry& e : out)
+            if (e.mTo == mTwins[inTo])
+            {
+                ++e.mCount;
+                return;
+            }
+        out.push_back({mTwins[inTo], 1});
+    }
+
+    void Remove(std::uint32_t inFrom, std::uint32_t inTo)
+    {
+        if (!(mSeam[inFrom] | mSeam[inTo]))
+            return;
+        std::vector<Entry>& out = mOut[mTwins[inFrom]];
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (out[i].mTo == mTwins[inTo])
+            {
+                if (--out[i].mCount == 0)
+                {
+                    out[i] = out.back();
+                    out.pop_back();
+                }
+                return;
+            }
+    }
+
+private:
+    struct Entry
+    {
+        std::uint32_t mTo;
+        std::uint32_t mCount;
+    };
+    const std::vector<std::uint32_t>& mTwins;
+    std::vector<std::uint8_t> mSeam;
+    std::vector<std::vector<Entry>> mOut; ///< Per start vertex's twin, its outgoing edges by their ends' twins
+};
+
 // The flip loop both entry points share. inMayFlip(t0, t1, new0, new1) says whether the pair t0 = (a, b, c),
 // t1 = (b, a, d) may become new0 = (c, d, b), new1 = (d, c, a); the loop adds the Delaunay condition.
 // inKey[v] names vertex v in the edge map: v itself, or its seam twin (SeamTwins) to flip across seams; a new
 // triangle then takes each corner from the old triangle whose slot it takes, d and c from the other one.
+// inTwins are the seam twins: pass the same vector as inKey when the edges are keyed by them.
 template <class MayFlip>
-std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inKey, MayFlip&& inMayFlip)
+std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inKey, const std::vector<std::uint32_t>& inTwins,
+                      MayFlip&& inMayFlip)
 {
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     std::vector<Triangle>& triangles = ioMesh.mTriangles;
@@ -139,6 +212,22 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             owner.Add(inKey[triangles[t][k]], inKey[triangles[t][(k + 1) % 3]], static_cast<std::uint32_t>(t));
+    // intent: keyed by index, the edges by position beside them; keyed by twins, the owner map is that already
+    std::optional<PositionEdges> by_position;
+    if (&inKey != &inTwins)
+    {
+        std::vector<std::uint8_t> seam(inTwins.size(), 0);
+        bool any = false;
+        for (std::size_t v = 0; v < inTwins.size(); ++v)
+            if (inTwins[v] != v)
+                seam[v] = seam[inTwins[v]] = 1, any = true;
+        if (any)
+            by_position.emplace(triangles, inTwins, std::move(seam));
+    }
+    auto joined = [&](std::uint32_t inC, std::uint32_t inD) {
+        return owner.Find(inKey[inC], inKey[inD]) != DirectedEdges::cNone || owner.Find(inKey[inD], inKey[inC]) != DirectedEdges::cNone ||
+               (by_position && (by_position->Has(inC, inD) || by_position->Has(inD, inC)));
+    };
 
     // intent: each undirected edge once, in triangle order (deterministic)
     std::deque<std::uint64_t> queue;
@@ -181,7 +270,7 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         // a hair above pi: cocircular quads are left alone, so no pair flips back and forth
         if (!(opposite > std::numbers::pi + 1.0e-9))
             continue;
-        if (owner.Find(inKey[c], inKey[d]) != DirectedEdges::cNone || owner.Find(inKey[d], inKey[c]) != DirectedEdges::cNone)
+        if (joined(c, d))
             continue;
         const Triangle new0{c, d, b0}, new1{d, c, a1};
         if (!inMayFlip(t0, t1, new0, new1))
@@ -189,6 +278,13 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         // intent: rewire the directed-edge map, then queue the quad's four outer edges
         owner.Erase(a, b);
         owner.Erase(b, a);
+        if (by_position)
+        {
+            by_position->Remove(a0, b0);
+            by_position->Remove(b0, a0);
+            by_position->Add(c, d);
+            by_position->Add(d, c);
+        }
         triangles[t0] = new0;
         triangles[t1] = new1;
         for (int k = 0; k < 3; ++k)
@@ -222,7 +318,8 @@ Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
         normals[t] = UnitNormal(positions, ioMesh.mTriangles[t]);
     std::vector<std::uint32_t> itself(positions.size());
     std::iota(itself.begin(), itself.end(), 0u);
-    return FlipWhere(ioMesh, itself, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    const std::vector<std::uint32_t> twins = SeamTwins(positions);
+    return FlipWhere(ioMesh, itself, twins, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         // intent: only two triangles of one plane, facing the same way
         if (normals[inT0].isZero(0.0) || normals[inT1].isZero(0.0) || normals[inT0].dot(normals[inT1]) < inFlatCosine)
             return false;
@@ -250,15 +347,14 @@ Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviat
                          "FlipNearlyFlatEdges: the largest deviation must be finite and >= 0 (m), not " + std::to_string(inMaxDeviation));
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     const std::vector<Triangle>& triangles = ioMesh.mTriangles;
-    std::vector<std::uint32_t> keys;
-    if (inAcrossSeams)
-        keys = SeamTwins(positions);
-    else
+    const std::vector<std::uint32_t> twins = SeamTwins(positions);
+    std::vector<std::uint32_t> itself;
+    if (!inAcrossSeams)
     {
-        keys.resize(positions.size());
-        std::iota(keys.begin(), keys.end(), 0u);
+        itself.resize(positions.size());
+        std::iota(itself.begin(), itself.end(), 0u);
     }
-    return FlipWhere(ioMesh, keys, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    return FlipWhere(ioMesh, inAcrossSeams ? twins : itself, twins, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         const Vec3& a = positions[inNew1[2]];
         const Vec3& b = positions[inNew0[2]];
         const Vec3& c = positions[inNew0[0]];

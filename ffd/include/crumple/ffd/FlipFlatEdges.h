@@ -31,7 +31,10 @@ CRUMPLE_API Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFla
 /// triangles (a, b, c) and (b, a, d) is flipped to cd when the two angles facing it add up to more than pi,
 /// ab and cd cross when seen along ab x cd, the tetrahedron (a, b, c, d) is at most inMaxDeviation thick
 /// between the two (so no point of the surface moves farther), and both new triangles face the way the old
-/// pair faces together. Repeats until no edge qualifies; vertices, their order and their count stay.
+/// pair faces together, and no edge joins the positions of c and d yet (also through a seam's split
+/// vertices). Each edge is examined once, then the four outer edges of every flip; on a mesh that is not
+/// folded a second call finds nothing more (measured), on a folded one it may find a few. Vertices, their
+/// order and their count stay.
 ///
 /// Why: a mesh's bevels and T-junctions leave caps, triangles with a corner near 180 degrees a fraction of a
 /// millimetre high (the Toy Car's front lip: caps 0.56 mm high and 10 cm long). Their unit normals are round-off
@@ -39,9 +42,9 @@ CRUMPLE_API Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFla
 /// length than they are high: they turn over although the field folds nothing. Flipping the cap's long edge
 /// to its neighbour's far corner removes it and moves the surface by less than the cap's height.
 ///
-/// @param[in,out] ioMesh          the mesh; ValidateTriangleMesh must accept it (else it is left as it was)
 /// Exporters split vertices along texture seams and hard edges, so an edge there has one triangle per side
-/// by index. With inAcrossSeams such an edge is one edge when its ends' positions are bitwise equal, and a
+/// by index. With inAcrossSeams such an edge is one edge when its ends' positions are equal (==, so 0.0 and -0.0
+/// are one), and a
 /// flip across it makes each new triangle from both sides' vertices: right for a mesh whose vertices carry
 /// only a position (crumple-crash's), wrong for a textured one (a flipped triangle would stretch its texture
 /// coordinates across the seam).
