@@ -6,7 +6,7 @@
 
 #include <crumple/crash/CrashRun.h>
 #include <crumple/crash/ShippedCars.h>
-#include <crumple/ffd/FlipFlatEdges.h>
+#include <crumple/crash/RecutCarMesh.h>
 
 #include <catch2/catch.hpp>
 
@@ -46,7 +46,7 @@ CrashOutcome PoleCrash(bool inRigidWheels)
     return std::move(outcome.Get());
 }
 
-// The truck's wheels as the crash run re-cuts them (the same steps as CrashRun's mesh loading).
+// The truck's wheels as the crash run re-cuts them.
 std::vector<std::vector<std::uint32_t>> TruckWheels()
 {
     const VehicleSpec vehicle = Truck().mVehicle;
@@ -55,9 +55,8 @@ std::vector<std::vector<std::uint32_t>> TruckWheels()
     settings.mLength = vehicle.mMeshLength;
     settings.mFileToBody = samples::FileToBodyRotation(samples::EMeshAxis::PlusZ, samples::EMeshAxis::PlusY).Get();
     samples::CarBody body = samples::LoadCarBody(settings).Get();
-    REQUIRE(ffd::FlipFlatEdges(body.mMesh));
-    const ffd::RefinedMesh refined = ffd::RefineLongEdges(body.mMesh, vehicle.mMeshMaxEdge).Get();
-    return samples::PartsAfterRefinement(body.mRigidParts, refined);
+    REQUIRE(RecutCarMesh(body.mMesh, body.mRigidParts, vehicle.mMeshMaxEdge, vehicle.mMeshFlipDeviation));
+    return body.mRigidParts;
 }
 
 // The largest difference between two vertices' displacements within a part (m): zero when it translates.

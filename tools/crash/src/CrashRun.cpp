@@ -6,11 +6,10 @@
 #include "EngineCrash.h"
 #include "FemBarrierCoupling.h"
 
+#include <crumple/crash/RecutCarMesh.h>
 #include <crumple/crash/TimeHistory.h>
 
 #include <crumple/ffd/BoundingBox.h>
-#include <crumple/ffd/FlipFlatEdges.h>
-#include <crumple/ffd/RefineLongEdges.h>
 #include <crumple/plugin/DamageRecorder.h>
 
 #if defined(CRUMPLE_CRASH_BULLET)
@@ -171,37 +170,11 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
                 return MakeError(EError::InvalidArgument, text + "; refused by --strict");
             outWarnings.push_back(text);
         }
-        MeshPreparation preparation;
-        preparation.mFileTriangles = loaded.Get().mTriangles.size();
-        preparation.mFileVertices = loaded.Get().mPositions.size();
-        if (vehicle.mMeshMaxEdge > 0.0)
-        {
-            preparation.mMaxEdge = vehicle.mMeshMaxEdge;
-            Result<std::size_t> flipped = ffd::FlipFlatEdges(loaded.Get());
-            if (flipped.HasError())
-                return flipped.GetError();
-            preparation.mFlatFlips = flipped.Get();
-            Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(loaded.Get(), vehicle.mMeshMaxEdge);
-            if (refined.HasError())
-                return refined.GetError();
-            rigid_parts = samples::PartsAfterRefinement(rigid_parts, refined.Get());
-            loaded.Get() = std::move(refined.Get().mMesh);
-            flipped = ffd::FlipFlatEdges(loaded.Get());
-            if (flipped.HasError())
-                return flipped.GetError();
-            preparation.mFlatFlips += flipped.Get();
-            if (vehicle.mMeshFlipDeviation > 0.0)
-            {
-                preparation.mFlipDeviation = vehicle.mMeshFlipDeviation;
-                flipped = ffd::FlipNearlyFlatEdges(loaded.Get(), vehicle.mMeshFlipDeviation, true);
-                if (flipped.HasError())
-                    return flipped.GetError();
-                preparation.mNearlyFlatFlips = flipped.Get();
-            }
-        }
-        preparation.mTriangles = loaded.Get().mTriangles.size();
-        preparation.mVertices = loaded.Get().mPositions.size();
-        outPreparation = preparation;
+        Result<MeshPreparation> preparation =
+            RecutCarMesh(loaded.Get(), rigid_parts, vehicle.mMeshMaxEdge, vehicle.mMeshFlipDeviation);
+        if (preparation.HasError())
+            return preparation.GetError();
+        outPreparation = preparation.Get();
         // The collision box is the mesh's bounding box.
         const ffd::AlignedBox bounds = ffd::BoundingBox(loaded.Get().mPositions);
         settings.mHalfExtents = 0.5 * (bounds.mMax - bounds.mMin);

@@ -4,6 +4,7 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/crash/CrashScenario.h>
+#include <crumple/crash/RecutCarMesh.h>
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <array>
@@ -44,20 +45,6 @@ struct CrushProfile
     /// CRASH3's average, (C1/2 + C2 + C3 + C4 + C5 + C6/2) / 5 (m): the crush of the same energy spread
     /// uniformly over the damage width
     double Average() const { return (0.5 * mC[0] + mC[1] + mC[2] + mC[3] + mC[4] + 0.5 * mC[5]) / 5.0; }
-};
-
-/// How a mesh body was prepared for the crash (VehicleSpec::mMeshMaxEdge and mMeshFlipDeviation): the
-/// surface is the file's, its triangles are not.
-struct MeshPreparation
-{
-    std::size_t mFileTriangles = 0;   ///< As loaded (the meshes mesh_name kept)
-    std::size_t mFileVertices = 0;    ///< As loaded
-    std::size_t mTriangles = 0;       ///< After the re-cut: the mesh the crash deforms
-    std::size_t mVertices = 0;        ///< After the re-cut (midpoints added)
-    double mMaxEdge = 0.0;            ///< The re-cut's longest edge (m); 0: no re-cut
-    std::size_t mFlatFlips = 0;       ///< Edges flipped in exactly flat parts (ffd::FlipFlatEdges, both passes)
-    double mFlipDeviation = 0.0;      ///< How far a flip of a nearly flat pair may move the surface (m)
-    std::size_t mNearlyFlatFlips = 0; ///< Edges flipped within mFlipDeviation (ffd::FlipNearlyFlatEdges)
 };
 
 /// What a crash run measured. Velocities in the world frame; crush in the car's body frame.

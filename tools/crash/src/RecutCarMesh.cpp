@@ -1,0 +1,50 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "CarMesh.h"
+
+#include <crumple/crash/RecutCarMesh.h>
+#include <crumple/ffd/FlipFlatEdges.h>
+#include <crumple/ffd/RefineLongEdges.h>
+
+#include <utility>
+
+namespace crumple::crash
+{
+
+Result<MeshPreparation> RecutCarMesh(ffd::TriangleMesh& ioMesh, std::vector<std::vector<std::uint32_t>>& ioRigidParts,
+                                     double inMaxEdge, double inFlipDeviation)
+{
+    MeshPreparation preparation;
+    preparation.mFileTriangles = ioMesh.mTriangles.size();
+    preparation.mFileVertices = ioMesh.mPositions.size();
+    if (inMaxEdge > 0.0)
+    {
+        preparation.mMaxEdge = inMaxEdge;
+        Result<std::size_t> flipped = ffd::FlipFlatEdges(ioMesh);
+        if (flipped.HasError())
+            return flipped.GetError();
+        preparation.mFlatFlips = flipped.Get();
+        Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(ioMesh, inMaxEdge);
+        if (refined.HasError())
+            return refined.GetError();
+        ioRigidParts = samples::PartsAfterRefinement(ioRigidParts, refined.Get());
+        ioMesh = std::move(refined.Get().mMesh);
+        flipped = ffd::FlipFlatEdges(ioMesh);
+        if (flipped.HasError())
+            return flipped.GetError();
+        preparation.mFlatFlips += flipped.Get();
+        if (inFlipDeviation > 0.0)
+        {
+            preparation.mFlipDeviation = inFlipDeviation;
+            flipped = ffd::FlipNearlyFlatEdges(ioMesh, inFlipDeviation, true);
+            if (flipped.HasError())
+                return flipped.GetError();
+            preparation.mNearlyFlatFlips = flipped.Get();
+        }
+    }
+    preparation.mTriangles = ioMesh.mTriangles.size();
+    preparation.mVertices = ioMesh.mPositions.size();
+    return preparation;
+}
+
+} // namespace crumple::crash
