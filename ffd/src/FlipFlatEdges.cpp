@@ -200,9 +200,10 @@ private:
 // inKey[v] names vertex v in the edge map: v itself, or its seam twin (SeamTwins) to flip across seams; a new
 // triangle then takes each corner from the old triangle whose slot it takes, d and c from the other one.
 // inTwins are the seam twins: pass the same vector as inKey when the edges are keyed by them.
+// inSeedAngle > 0: only edges facing a corner of at least this angle (rad) flip (a cap's long edge).
 template <class MayFlip>
 std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inKey, const std::vector<std::uint32_t>& inTwins,
-                      MayFlip&& inMayFlip)
+                      double inSeedAngle, MayFlip&& inMayFlip)
 {
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     std::vector<Triangle>& triangles = ioMesh.mTriangles;
@@ -229,12 +230,21 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
                (by_position && (by_position->Has(inC, inD) || by_position->Has(inD, inC)));
     };
 
-    // intent: each undirected edge once, in triangle order (deterministic)
+    // intent: each undirected edge once, in triangle order (deterministic); or only the edges that face a
+    // corner of at least inSeedAngle, each from the triangle of that corner
     std::deque<std::uint64_t> queue;
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
-            if (inKey[triangles[t][k]] < inKey[triangles[t][(k + 1) % 3]])
-                queue.push_back(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]));
+        {
+            const std::uint32_t from = triangles[t][k], to = triangles[t][(k + 1) % 3];
+            if (inSeedAngle > 0.0)
+            {
+                if (AngleAt(positions[triangles[t][(k + 2) % 3]], positions[from], positions[to]) >= inSeedAngle)
+                    queue.push_back(edge_key(from, to));
+            }
+            else if (inKey[from] < inKey[to])
+                queue.push_back(edge_key(from, to));
+        }
     std::size_t flips = 0;
     // intent: in a plane every flip raises the sum of the smallest angles, so this ends; the cap guards
     // round-off cycles and the slightly bent quads FlipNearlyFlatEdges accepts
@@ -266,9 +276,12 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
             continue;
         // the old pair's own indices of a and b (different across a seam)
         const std::uint32_t a0 = triangles[t0][k0], b0 = triangles[t0][(k0 + 1) % 3], a1 = triangles[t1][(k1 + 1) % 3];
-        const double opposite = AngleAt(positions[c], positions[a0], positions[b0]) + AngleAt(positions[d], positions[b0], positions[a0]);
+        const double angle_c = AngleAt(positions[c], positions[a0], positions[b0]);
+        const double angle_d = AngleAt(positions[d], positions[b0], positions[a0]);
         // a hair above pi: cocircular quads are left alone, so no pair flips back and forth
-        if (!(opposite > std::numbers::pi + 1.0e-9))
+        if (!(angle_c + angle_d > std::numbers::pi + 1.0e-9))
+            continue;
+        if (inSeedAngle > 0.0 && !(std::max(angle_c, angle_d) >= inSeedAngle))
             continue;
         if (joined(c, d))
             continue;
@@ -319,7 +332,7 @@ Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
     std::vector<std::uint32_t> itself(positions.size());
     std::iota(itself.begin(), itself.end(), 0u);
     const std::vector<std::uint32_t> twins = SeamTwins(positions);
-    return FlipWhere(ioMesh, itself, twins, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    return FlipWhere(ioMesh, itself, twins, 0.0, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         // intent: only two triangles of one plane, facing the same way
         if (normals[inT0].isZero(0.0) || normals[inT1].isZero(0.0) || normals[inT0].dot(normals[inT1]) < inFlatCosine)
             return false;
@@ -338,13 +351,16 @@ Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
 // lie inside both segments), both pairs of triangles cover the same region seen along n, so every point of one
 // pair has a point of the other straight along n; both lie between the parallel planes through ab and cd,
 // which are |(c - a) . n| / |n| apart.
-Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviation, bool inAcrossSeams)
+Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviation, bool inAcrossSeams, double inCapAngle)
 {
     if (Status valid = ValidateTriangleMesh(ioMesh); !valid)
         return valid.GetError();
     if (!(inMaxDeviation >= 0.0 && std::isfinite(inMaxDeviation)))
         return MakeError(EError::InvalidArgument,
                          "FlipNearlyFlatEdges: the largest deviation must be finite and >= 0 (m), not " + std::to_string(inMaxDeviation));
+    if (!(inCapAngle >= 0.0 && inCapAngle <= std::numbers::pi))
+        return MakeError(EError::InvalidArgument,
+                         "FlipNearlyFlatEdges: the cap angle must be in [0, pi] (rad), not " + std::to_string(inCapAngle));
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     const std::vector<Triangle>& triangles = ioMesh.mTriangles;
     const std::vector<std::uint32_t> twins = SeamTwins(positions);
@@ -354,7 +370,7 @@ Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviat
         itself.resize(positions.size());
         std::iota(itself.begin(), itself.end(), 0u);
     }
-    return FlipWhere(ioMesh, inAcrossSeams ? twins : itself, twins, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    return FlipWhere(ioMesh, inAcrossSeams ? twins : itself, twins, inCapAngle, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         const Vec3& a = positions[inNew1[2]];
         const Vec3& b = positions[inNew0[2]];
         const Vec3& c = positions[inNew0[0]];

@@ -161,7 +161,7 @@ TEST_CASE("Crush model: the roof stays and no triangle turns over", "[crash][slo
 
     SECTION("no triangle turns over")
     {
-        // Known to fail on the Toy Car: 15-24 of its 164,405 re-cut triangles in the 56 km/h pole, offset and
+        // Known to fail on the Toy Car: 16-23 of its 164,405 re-cut triangles in the 56 km/h pole, offset and
         // 30-degree hits (hundreds before ffd::FlipNearlyFlatEdges took the caps out): caps 4-12 mm high on the
         // front lip's creases, facing caps across the crease (flipping them would move the surface 2-4 mm, over
         // mesh_flip_deviation_m), and 0.2 mm strips along the side with an open edge (a T-junction of the

@@ -502,3 +502,60 @@ TEST_CASE("FlipNearlyFlatEdges: a closed mesh stays closed; a seam's other side 
         CHECK(flat.mTriangles == tet.mTriangles);
     }
 }
+
+TEST_CASE("FlipNearlyFlatEdges with a cap angle: only caps' long edges flip, the rest keeps its triangles", "[ffd]")
+{
+    // A flat square of 4 x 4 cells cut along one diagonal each (not Delaunay where the diagonals disagree
+    // with a slight shear), with a cap: a vertex 0.1 mm off the middle of one cell's diagonal, fanned in.
+    TriangleMesh mesh;
+    constexpr int cCells = 4;
+    for (int j = 0; j <= cCells; ++j)
+        for (int i = 0; i <= cCells; ++i)
+            mesh.mPositions.emplace_back(0.1 * i + 0.02 * j, 0.1 * j, 0.0); // sheared: the cut diagonals are not Delaunay
+    auto index = [](int inI, int inJ) { return static_cast<std::uint32_t>(inJ * (cCells + 1) + inI); };
+    for (int j = 0; j < cCells; ++j)
+        for (int i = 0; i < cCells; ++i)
+        {
+            if (i == 1 && j == 1)
+                continue; // the cell with the cap, below
+            mesh.mTriangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+            mesh.mTriangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+        }
+    // intent: cell (1, 1) split at a point just beside its diagonal: (a, b, c) is a cap with c near ab
+    const Vec3 a = mesh.mPositions[index(1, 1)], b = mesh.mPositions[index(2, 2)];
+    mesh.mPositions.push_back(0.5 * (a + b) + Vec3(-1e-4, 1e-4, 0.0)); // left of a -> b, inside (a, b, (1, 2))
+    const auto c = static_cast<std::uint32_t>(mesh.mPositions.size() - 1);
+    mesh.mTriangles.push_back({index(1, 1), index(2, 1), index(2, 2)});
+    mesh.mTriangles.push_back({index(1, 1), index(2, 2), c});
+    mesh.mTriangles.push_back({c, index(2, 2), index(1, 2)});
+    mesh.mTriangles.push_back({index(1, 1), c, index(1, 2)});
+
+    TriangleMesh caps = mesh, all = mesh;
+    Result<std::size_t> cap_flips = FlipNearlyFlatEdges(caps, 1.0e-3, false, 150.0 * std::numbers::pi / 180.0);
+    Result<std::size_t> all_flips = FlipNearlyFlatEdges(all, 1.0e-3);
+    REQUIRE(cap_flips);
+    REQUIRE(all_flips);
+    CHECK(cap_flips.Get() >= 1);
+    CHECK(all_flips.Get() > cap_flips.Get()); // the sheared cells' diagonals flip too without a cap angle
+    // intent: no corner of 150 degrees or more is left, and every other cell keeps its two triangles
+    for (const auto& t : caps.mTriangles)
+        for (int k = 0; k < 3; ++k)
+        {
+            const Vec3 u = caps.mPositions[t[(k + 1) % 3]] - caps.mPositions[t[k]];
+            const Vec3 v = caps.mPositions[t[(k + 2) % 3]] - caps.mPositions[t[k]];
+            CHECK(std::atan2(u.cross(v).norm(), u.dot(v)) < 150.0 * std::numbers::pi / 180.0);
+        }
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t + 4 < mesh.mTriangles.size(); ++t)
+        kept += caps.mTriangles[t] == mesh.mTriangles[t] ? 1 : 0;
+    CHECK(kept >= mesh.mTriangles.size() - 4 - 4); // at most the cap's neighbour cells changed
+    CHECK(TotalArea(caps) == Approx(TotalArea(mesh)).epsilon(1e-12));
+    for (const auto& t : caps.mTriangles)
+        CHECK(AreaVector(caps, t).z() > 0.0);
+    for (double bad : {-0.1, 4.0, std::numeric_limits<double>::quiet_NaN()})
+    {
+        TriangleMesh copy = mesh;
+        REQUIRE(FlipNearlyFlatEdges(copy, 1.0e-3, false, bad).HasError());
+        CHECK(copy.mTriangles == mesh.mTriangles);
+    }
+}
