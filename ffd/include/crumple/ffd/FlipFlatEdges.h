@@ -53,9 +53,11 @@ CRUMPLE_API Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFla
 /// @param[in]     inMaxDeviation  how far a flip may move the surface (m, or the mesh's unit), finite and >= 0;
 ///                                each flip is bounded, not their sum over flips that share a triangle
 /// @param[in]     inAcrossSeams   flip across seams too (see above)
-/// @param[in]     inCapAngle      0: every edge is examined first; > 0 (rad, at most pi): only the edges that face
-///                                a corner of at least this angle (caps, near pi), and then the neighbours
-///                                their flips reach, so the rest of the mesh keeps its triangles
+/// @param[in]     inCapAngle      0: every nearly flat edge may flip (the flat parts become Delaunay); > 0 (rad,
+///                                at most pi): only edges that face a corner of at least this angle flip, a
+///                                cap's long edge as Botsch and Kobbelt remove caps ("A Robust Procedure to
+///                                Eliminate Degenerate Faces from Triangle Meshes", VMV 2001), so the rest of
+///                                the mesh keeps its triangles (crumple-crash passes 150 degrees)
 /// @return the number of flips made, or an error for bad input (the mesh unchanged)
 CRUMPLE_API Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviation, bool inAcrossSeams = false,
                                                     double inCapAngle = 0.0);
