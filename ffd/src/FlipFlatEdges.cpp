@@ -2,13 +2,18 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FlipFlatEdges.h>
 
+#include "DirectedEdges.h"
+#include "PositionEdges.h"
+#include "SeamTwins.h"
+
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <numbers>
-#include <optional>
 #include <deque>
+#include <numbers>
+#include <numeric>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace crumple::ffd
 {
@@ -36,164 +41,6 @@ Vec3 UnitNormal(const std::vector<Vec3>& inPositions, const Triangle& inTriangle
     const double length = n.norm();
     return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
 }
-
-// Each vertex's twin of lowest index at the same position (==, so 0.0 and -0.0 are one), so that edges on
-// two sides of a seam are one edge.
-std::vector<std::uint32_t> SeamTwins(const std::vector<Vec3>& inPositions)
-{
-    std::vector<std::uint32_t> order(inPositions.size());
-    std::iota(order.begin(), order.end(), 0u);
-    auto less = [&](std::uint32_t inA, std::uint32_t inB) {
-        const Vec3& a = inPositions[inA];
-        const Vec3& b = inPositions[inB];
-        if (a.x() != b.x())
-            return a.x() < b.x();
-        if (a.y() != b.y())
-            return a.y() < b.y();
-        if (a.z() != b.z())
-            return a.z() < b.z();
-        return inA < inB;
-    };
-    std::sort(order.begin(), order.end(), less);
-    std::vector<std::uint32_t> twin(inPositions.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-        twin[order[i]] = (i > 0 && inPositions[order[i]] == inPositions[order[i - 1]]) ? twin[order[i - 1]] : order[i];
-    return twin;
-}
-
-// Each directed edge's triangle, found by scanning its start vertex's few outgoing edges. A flip reads about
-// ten of them and changes six; in a hash map those lookups were most of the flips' time.
-class DirectedEdges
-{
-public:
-    static constexpr std::uint32_t cNone = 0xFFFFFFFEu;        ///< No triangle has the edge
-    static constexpr std::uint32_t cNonManifold = 0xFFFFFFFFu; ///< Two triangles have it the same way round
-
-    explicit DirectedEdges(std::size_t inVertexCount) : mOut(inVertexCount) {}
-
-    /// Records that inTriangle has the edge; a second triangle with it marks it cNonManifold
-    void Add(std::uint32_t inFrom, std::uint32_t inTo, std::uint32_t inTriangle)
-    {
-        for (Entry& e : mOut[inFrom])
-            if (e.mTo == inTo)
-            {
-                e.mTriangle = cNonManifold;
-                return;
-            }
-        mOut[inFrom].push_back({inTo, inTriangle});
-    }
-
-    /// The edge's triangle, cNone or cNonManifold
-    std::uint32_t Find(std::uint32_t inFrom, std::uint32_t inTo) const
-    {
-        for (const Entry& e : mOut[inFrom])
-            if (e.mTo == inTo)
-                return e.mTriangle;
-        return cNone;
-    }
-
-    /// The edge now belongs to inTriangle (whatever it was before)
-    void Set(std::uint32_t inFrom, std::uint32_t inTo, std::uint32_t inTriangle)
-    {
-        for (Entry& e : mOut[inFrom])
-            if (e.mTo == inTo)
-            {
-                e.mTriangle = inTriangle;
-                return;
-            }
-        mOut[inFrom].push_back({inTo, inTriangle});
-    }
-
-    void Erase(std::uint32_t inFrom, std::uint32_t inTo)
-    {
-        std::vector<Entry>& out = mOut[inFrom];
-        for (std::size_t i = 0; i < out.size(); ++i)
-            if (out[i].mTo == inTo)
-            {
-                out[i] = out.back();
-                out.pop_back();
-                return;
-            }
-    }
-
-private:
-    struct Entry
-    {
-        std::uint32_t mTo;
-        std::uint32_t mTriangle;
-    };
-    std::vector<std::vector<Entry>> mOut; ///< Per start vertex (its key), its outgoing edges
-};
-
-// How many triangles have each directed edge that touches a seam, by the positions of its ends: a flip by
-// index must not make an edge that a seam's other side already has (the two sides would then face each
-// other, a fold). An edge between two vertices without a twin exists by position only as itself, so the
-// index map answers for it.
-class PositionEdges
-{
-public:
-    /// inSeam[v]: 1 when v shares its position with another vertex
-    PositionEdges(const std::vector<Triangle>& inTriangles, const std::vector<std::uint32_t>& inTwins,
-                  std::vector<std::uint8_t> inSeam)
-        : mTwins(inTwins), mSeam(std::move(inSeam)), mOut(inTwins.size())
-    {
-        for (const Triangle& t : inTriangles)
-            for (int k = 0; k < 3; ++k)
-                Add(t[k], t[(k + 1) % 3]);
-    }
-
-    /// Whether a triangle has the edge by position; false for an edge that touches no seam (ask by index)
-    bool Has(std::uint32_t inFrom, std::uint32_t inTo) const
-    {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
-            return false;
-        for (const Entry& e : mOut[mTwins[inFrom]])
-            if (e.mTo == mTwins[inTo])
-                return true;
-        return false;
-    }
-
-    void Add(std::uint32_t inFrom, std::uint32_t inTo)
-    {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
-            return;
-        std::vector<Entry>& out = mOut[mTwins[inFrom]];
-        for (Entry& e : out)
-            if (e.mTo == mTwins[inTo])
-            {
-                ++e.mCount;
-                return;
-            }
-        out.push_back({mTwins[inTo], 1});
-    }
-
-    void Remove(std::uint32_t inFrom, std::uint32_t inTo)
-    {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
-            return;
-        std::vector<Entry>& out = mOut[mTwins[inFrom]];
-        for (std::size_t i = 0; i < out.size(); ++i)
-            if (out[i].mTo == mTwins[inTo])
-            {
-                if (--out[i].mCount == 0)
-                {
-                    out[i] = out.back();
-                    out.pop_back();
-                }
-                return;
-            }
-    }
-
-private:
-    struct Entry
-    {
-        std::uint32_t mTo;
-        std::uint32_t mCount;
-    };
-    const std::vector<std::uint32_t>& mTwins;
-    std::vector<std::uint8_t> mSeam;
-    std::vector<std::vector<Entry>> mOut; ///< Per start vertex's twin, its outgoing edges by their ends' twins
-};
 
 // The flip loop both entry points share. inMayFlip(t0, t1, new0, new1) says whether the pair t0 = (a, b, c),
 // t1 = (b, a, d) may become new0 = (c, d, b), new1 = (d, c, a); the loop adds the Delaunay condition.
