@@ -7,7 +7,9 @@
 #include "SeamTwins.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <numbers>
 #include <numeric>
