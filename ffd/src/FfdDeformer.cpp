@@ -182,6 +182,8 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     {
         std::vector<LatticeLocation>& locations = deformer.mBucketLocations.emplace_back();
         std::vector<Vec3>& rest = deformer.mBucketRest.emplace_back();
+        locations.reserve(deformer.mCellVertices[z].size());
+        rest.reserve(deformer.mCellVertices[z].size());
         for (std::uint32_t v : deformer.mCellVertices[z])
         {
             locations.push_back(deformer.mVertexLocation[v]);
