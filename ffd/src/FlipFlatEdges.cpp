@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <deque>
 #include <numbers>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,25 +45,26 @@ Vec3 UnitNormal(const std::vector<Vec3>& inPositions, const Triangle& inTriangle
 
 // The flip loop both entry points share. inMayFlip(t0, t1, new0, new1) says whether the pair t0 = (a, b, c),
 // t1 = (b, a, d) may become new0 = (c, d, b), new1 = (d, c, a); the loop adds the Delaunay condition.
-// inKey[v] names vertex v in the edge map: v itself, or its seam twin (SeamTwins) to flip across seams; a new
-// triangle then takes each corner from the old triangle whose slot it takes, d and c from the other one.
-// inTwins are the seam twins: pass the same vector as inKey when the edges are keyed by them.
-// inSeedAngle > 0: only edges facing a corner of at least this angle (rad) flip (a cap's long edge).
+// The edge map names vertex v by its seam twin (inTwins, SeamTwins) when inAcrossSeams, else by v itself; a
+// flip across a seam makes each new triangle take its corners from the old triangle whose slot it takes, d
+// and c from the other one. inSeedAngle > 0: only edges facing a corner of at least this angle (rad) flip
+// (a cap's long edge).
 template <class MayFlip>
-std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inKey, const std::vector<std::uint32_t>& inTwins,
-                      double inSeedAngle, MayFlip&& inMayFlip)
+std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& inTwins, bool inAcrossSeams, double inSeedAngle,
+                      MayFlip&& inMayFlip)
 {
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     std::vector<Triangle>& triangles = ioMesh.mTriangles;
-    auto edge_key = [&](std::uint32_t inFrom, std::uint32_t inTo) { return DirectedKey(inKey[inFrom], inKey[inTo]); };
+    auto name = [&](std::uint32_t inVertex) { return inAcrossSeams ? inTwins[inVertex] : inVertex; };
+    auto edge_key = [&](std::uint32_t inFrom, std::uint32_t inTo) { return DirectedKey(name(inFrom), name(inTo)); };
     // intent: each directed edge's triangle, cNonManifold for an edge used twice the same way (never flipped)
     DirectedEdges owner(positions.size());
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
-            owner.Add(inKey[triangles[t][k]], inKey[triangles[t][(k + 1) % 3]], static_cast<std::uint32_t>(t));
+            owner.Add(name(triangles[t][k]), name(triangles[t][(k + 1) % 3]), static_cast<std::uint32_t>(t));
     // intent: keyed by index, the edges by position beside them; keyed by twins, the owner map is that already
     std::optional<PositionEdges> by_position;
-    if (&inKey != &inTwins)
+    if (!inAcrossSeams)
     {
         std::vector<std::uint8_t> seam(inTwins.size(), 0);
         bool any = false;
@@ -75,7 +75,7 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
             by_position.emplace(triangles, inTwins, std::move(seam));
     }
     auto joined = [&](std::uint32_t inC, std::uint32_t inD) {
-        return owner.Find(inKey[inC], inKey[inD]) != DirectedEdges::cNone || owner.Find(inKey[inD], inKey[inC]) != DirectedEdges::cNone ||
+        return owner.Find(name(inC), name(inD)) != DirectedEdges::cNone || owner.Find(name(inD), name(inC)) != DirectedEdges::cNone ||
                (by_position && (by_position->Has(inC, inD) || by_position->Has(inD, inC)));
     };
 
@@ -91,7 +91,7 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
                 if (AngleAt(positions[triangles[t][(k + 2) % 3]], positions[from], positions[to]) >= inSeedAngle)
                     queue.push_back(edge_key(from, to));
             }
-            else if (inKey[from] < inKey[to])
+            else if (name(from) < name(to))
                 queue.push_back(edge_key(from, to));
         }
     std::size_t flips = 0;
@@ -115,13 +115,13 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         auto start = [&](std::uint32_t inT, std::uint32_t inFrom, std::uint32_t inTo) {
             const Triangle& tri = triangles[inT];
             for (int k = 0; k < 3; ++k)
-                if (inKey[tri[k]] == inFrom && inKey[tri[(k + 1) % 3]] == inTo)
+                if (name(tri[k]) == inFrom && name(tri[(k + 1) % 3]) == inTo)
                     return k;
             return 0; // cannot happen: the map says the edge is there
         };
         const int k0 = start(t0, a, b), k1 = start(t1, b, a);
         const std::uint32_t c = triangles[t0][(k0 + 2) % 3], d = triangles[t1][(k1 + 2) % 3];
-        if (inKey[c] == inKey[d] || inKey[c] == a || inKey[c] == b || inKey[d] == a || inKey[d] == b)
+        if (name(c) == name(d) || name(c) == a || name(c) == b || name(d) == a || name(d) == b)
             continue;
         // the old pair's own indices of a and b (different across a seam)
         const std::uint32_t a0 = triangles[t0][k0], b0 = triangles[t0][(k0 + 1) % 3], a1 = triangles[t1][(k1 + 1) % 3];
@@ -151,8 +151,8 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
         triangles[t1] = new1;
         for (int k = 0; k < 3; ++k)
         {
-            owner.Set(inKey[new0[k]], inKey[new0[(k + 1) % 3]], t0);
-            owner.Set(inKey[new1[k]], inKey[new1[(k + 1) % 3]], t1);
+            owner.Set(name(new0[k]), name(new0[(k + 1) % 3]), t0);
+            owner.Set(name(new1[k]), name(new1[(k + 1) % 3]), t1);
         }
         for (std::uint64_t outer : {edge_key(b0, c), edge_key(c, a0), edge_key(a1, d), edge_key(d, b0)})
             queue.push_back(outer);
@@ -178,10 +178,8 @@ Result<std::size_t> FlipFlatEdges(TriangleMesh& ioMesh, double inFlatCosine)
     std::vector<Vec3> normals(ioMesh.mTriangles.size());
     for (std::size_t t = 0; t < normals.size(); ++t)
         normals[t] = UnitNormal(positions, ioMesh.mTriangles[t]);
-    std::vector<std::uint32_t> itself(positions.size());
-    std::iota(itself.begin(), itself.end(), 0u);
     const std::vector<std::uint32_t> twins = SeamTwins(positions);
-    return FlipWhere(ioMesh, itself, twins, 0.0, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    return FlipWhere(ioMesh, twins, false, 0.0, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         // intent: only two triangles of one plane, facing the same way
         if (normals[inT0].isZero(0.0) || normals[inT1].isZero(0.0) || normals[inT0].dot(normals[inT1]) < inFlatCosine)
             return false;
@@ -213,13 +211,7 @@ Result<std::size_t> FlipNearlyFlatEdges(TriangleMesh& ioMesh, double inMaxDeviat
     const std::vector<Vec3>& positions = ioMesh.mPositions;
     const std::vector<Triangle>& triangles = ioMesh.mTriangles;
     const std::vector<std::uint32_t> twins = SeamTwins(positions);
-    std::vector<std::uint32_t> itself;
-    if (!inAcrossSeams)
-    {
-        itself.resize(positions.size());
-        std::iota(itself.begin(), itself.end(), 0u);
-    }
-    return FlipWhere(ioMesh, inAcrossSeams ? twins : itself, twins, inCapAngle, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
+    return FlipWhere(ioMesh, twins, inAcrossSeams, inCapAngle, [&](std::uint32_t inT0, std::uint32_t inT1, const Triangle& inNew0, const Triangle& inNew1) {
         const Vec3& a = positions[inNew1[2]];
         const Vec3& b = positions[inNew0[2]];
         const Vec3& c = positions[inNew0[0]];

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "OutgoingEdges.h"
+
 #include <array>
-#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,7 +22,7 @@ public:
     /// inSeam[v]: 1 when v shares its position with another vertex
     PositionEdges(const std::vector<std::array<std::uint32_t, 3>>& inTriangles, const std::vector<std::uint32_t>& inTwins,
                   std::vector<std::uint8_t> inSeam)
-        : mTwins(inTwins), mSeam(std::move(inSeam)), mOut(inTwins.size())
+        : mTwins(inTwins), mSeam(std::move(inSeam)), mCounts(inTwins.size())
     {
         for (const std::array<std::uint32_t, 3>& t : inTriangles)
             for (int k = 0; k < 3; ++k)
@@ -31,54 +32,33 @@ public:
     /// Whether a triangle has the edge by position; false for an edge that touches no seam (ask by index)
     bool Has(std::uint32_t inFrom, std::uint32_t inTo) const
     {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
-            return false;
-        for (const Entry& e : mOut[mTwins[inFrom]])
-            if (e.mTo == mTwins[inTo])
-                return true;
-        return false;
+        return OnSeam(inFrom, inTo) && mCounts.Find(mTwins[inFrom], mTwins[inTo]) != nullptr;
     }
 
     void Add(std::uint32_t inFrom, std::uint32_t inTo)
     {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
+        if (!OnSeam(inFrom, inTo))
             return;
-        std::vector<Entry>& out = mOut[mTwins[inFrom]];
-        for (Entry& e : out)
-            if (e.mTo == mTwins[inTo])
-            {
-                ++e.mCount;
-                return;
-            }
-        out.push_back({mTwins[inTo], 1});
+        if (std::uint32_t* count = mCounts.Find(mTwins[inFrom], mTwins[inTo]))
+            ++*count;
+        else
+            mCounts.Insert(mTwins[inFrom], mTwins[inTo], 1);
     }
 
     void Remove(std::uint32_t inFrom, std::uint32_t inTo)
     {
-        if (!(mSeam[inFrom] | mSeam[inTo]))
+        if (!OnSeam(inFrom, inTo))
             return;
-        std::vector<Entry>& out = mOut[mTwins[inFrom]];
-        for (std::size_t i = 0; i < out.size(); ++i)
-            if (out[i].mTo == mTwins[inTo])
-            {
-                if (--out[i].mCount == 0)
-                {
-                    out[i] = out.back();
-                    out.pop_back();
-                }
-                return;
-            }
+        if (std::uint32_t* count = mCounts.Find(mTwins[inFrom], mTwins[inTo]); count != nullptr && --*count == 0)
+            mCounts.Erase(mTwins[inFrom], mTwins[inTo]);
     }
 
 private:
-    struct Entry
-    {
-        std::uint32_t mTo;
-        std::uint32_t mCount;
-    };
+    bool OnSeam(std::uint32_t inFrom, std::uint32_t inTo) const { return (mSeam[inFrom] | mSeam[inTo]) != 0; }
+
     const std::vector<std::uint32_t>& mTwins;
     std::vector<std::uint8_t> mSeam;
-    std::vector<std::vector<Entry>> mOut; ///< Per start vertex's twin, its outgoing edges by their ends' twins
+    OutgoingEdges<std::uint32_t> mCounts; ///< Keyed by the ends' twins
 };
 
 } // namespace crumple::ffd
