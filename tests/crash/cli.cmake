@@ -65,6 +65,7 @@ set(crash_malformed
     "mesh_length_too_small|/vehicle/mesh_length_m: must be in \\[0.1, 1000\\]"
     "huge_speed|/impact/speed_km_h: must be in"
     "negative_mesh_max_edge|/vehicle/mesh_max_edge_m: must be >= 0"
+    "negative_mesh_flip_deviation|/vehicle/mesh_flip_deviation_m: must be >= 0"
     "thin_zone|/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m"
     "preset_not_regular|not a regular file"
     "preset_duplicate_key|crush_A_N_per_m: duplicate key"
