@@ -5,6 +5,7 @@
 #include <crumple/plugin/ContactReduction.h>
 #include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorld.h>
+#include <crumple/plugin/FrictionalImpulses.h>
 #include <crumple/plugin/SurfaceContactPoints.h>
 
 #include <algorithm>
@@ -264,6 +265,8 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
     if (!IsFinite(inContact.mPointOnA) || !IsFinite(inContact.mPointOnB) || !IsFinite(inContact.mNormal) ||
         !IsFinite(inContact.mPenetrationDepth) || !IsFinite(inContact.mTime))
         return MakeError(EError::NonFinite, where() + "has a NaN or Inf field");
+    if (!(inContact.mFriction >= 0.0)) // NaN too; +inf is a surface that never slides
+        return MakeError(EError::InvalidArgument, where() + "mFriction must be >= 0 (or +inf)");
     if (std::abs(inContact.mNormal.norm() - 1.0) > 1.0e-3)
         return MakeError(EError::InvalidArgument, where() + "mNormal must be a unit vector");
     // Within twice the bodies' range (BodyState.h), so lever arms and impulses stay far from overflow.
@@ -313,6 +316,7 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
         contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
         contact.mPenetrationDepth = event.mPenetrationDepth;
+        contact.mFriction = event.mFriction;
         contact.mTime = event.mTime;
         const BodyId a = flip ? event.mBodyB : event.mBodyA;
         const BodyId b = flip ? event.mBodyA : event.mBodyB;
@@ -360,34 +364,37 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         }
         std::vector<ImpulseContact> impulse_contacts;
         for (const CollisionContact& c : batch.mContacts)
-            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c)});
-        const std::vector<double> impulses =
-            SimultaneousImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
+            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c), c.mFriction});
+        const std::vector<ContactImpulse> impulses =
+            FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
         ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,
                             state_b.mLinearVelocity, state_b.mAngularVelocity};
         bool pushed = false;
         for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
         {
-            if (!std::isfinite(impulses[i]))
+            if (!std::isfinite(impulses[i].mNormal) || !IsFinite(impulses[i].mFriction))
                 return MakeError(EError::NonFinite, "contact impulse is not finite: check the bodies' masses");
-            if (!(impulses[i] > 0.0))
+            if (!(impulses[i].mNormal > 0.0))
                 continue;
             pushed = true;
             CollisionContact contact = batch.mContacts[i];
-            contact.mImpulse = impulses[i];
+            contact.mImpulse = impulses[i].mNormal;
+            contact.mFrictionImpulse = impulses[i].mFriction;
             contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
             // The impulse took the closing speed v beyond the speculative s = gap / dt to a rebound of
             // e (v - s): kinetic energy J (v + s - e (v - s)) / 2 left the pair.
             const double v = std::max(contact.mApproachSpeed, 0.0), s = impulse_contacts[i].mSpeculativeSpeed;
             const double e = mSettings.mRestitution;
-            contact.mAbsorbedEnergy = 0.5 * impulses[i] * ((1.0 - e) * v + (1.0 + e) * s);
+            contact.mAbsorbedEnergy = 0.5 * impulses[i].mNormal * ((1.0 - e) * v + (1.0 + e) * s);
             contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
             contact.mLocalPointOnB = state_b.mTransform.ToBody(contact.mPointOnB);
             contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
             contact.mLocalNormalOnB = state_b.mTransform.DirectionToBody(contact.mNormal);
+            contact.mLocalFrictionOnA = state_a.mTransform.DirectionToBody(contact.mFrictionImpulse);
+            contact.mLocalFrictionOnB = state_b.mTransform.DirectionToBody(-contact.mFrictionImpulse);
             accepted[b].push_back(contact);
-            // The impulse +J n on A and -J n on B changes the velocities it leaves.
-            const Vec3 impulse = impulses[i] * contact.mNormal;
+            // The impulse +J n + t on A and its opposite on B changes the velocities it leaves.
+            const Vec3 impulse = contact.ImpulseOnA();
             const Vec3& point = impulse_contacts[i].mPoint;
             memory.mLinearA += state_a.InverseMass() * impulse;
             memory.mAngularA += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);

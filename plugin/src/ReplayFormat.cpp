@@ -147,7 +147,7 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     return object;
 }
 
-Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
+Result<Collision> DecodeCollision(std::span<const std::byte> inPayload, std::uint32_t inVersion)
 {
     ByteReader reader(inPayload);
     Collision collision;
@@ -172,7 +172,8 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
     if (!std::isfinite(collision.mStartTime) || !std::isfinite(collision.mEndTime))
         return MakeError(EError::CorruptData, "collision record: a time is not finite");
     std::uint32_t contacts = 0;
-    if (!ReadCount(reader, 26 * 8, contacts))
+    const bool frictional = inVersion >= 9;
+    if (!ReadCount(reader, (frictional ? 36 : 26) * 8, contacts))
         return MakeError(EError::CorruptData, "collision record: contact count is corrupt");
     collision.mContacts.resize(contacts);
     for (CollisionContact& c : collision.mContacts)
@@ -189,6 +190,19 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload)
         c.mApproachSpeed = reader.ReadDouble();
         c.mAbsorbedEnergy = reader.ReadDouble();
         c.mTime = reader.ReadDouble();
+        if (frictional)
+        {
+            c.mFriction = reader.ReadDouble();
+            c.mFrictionImpulse = reader.ReadVec3();
+            c.mLocalFrictionOnA = reader.ReadVec3();
+            c.mLocalFrictionOnB = reader.ReadVec3();
+        }
+        // intent: friction within its cone (mu may be +inf), as FrictionalImpulses leaves it
+        const bool friction_valid = c.mFriction >= 0.0 && IsFinite(c.mFrictionImpulse) && IsFinite(c.mLocalFrictionOnA) &&
+                                    IsFinite(c.mLocalFrictionOnB) && c.mFrictionImpulse.norm() <= cMaxImpulse &&
+                                    (c.mFrictionImpulse.isZero(0.0) || c.mFrictionImpulse.norm() <= c.mFriction * c.mImpulse * (1.0 + 1.0e-9));
+        if (!friction_valid)
+            return MakeError(EError::CorruptData, "collision record: a contact's friction is not finite, negative or outside its cone");
         if (!IsFinite(c.mLocalPointOnA) || !IsFinite(c.mLocalPointOnB) || !IsFinite(c.mLocalNormalOnA) ||
             !IsFinite(c.mLocalNormalOnB) || !(c.mImpulse >= 0.0 && c.mImpulse <= cMaxImpulse) || !IsFinite(c.mPointOnA) ||
             !IsFinite(c.mPointOnB) || !IsFinite(c.mNormal) || !std::isfinite(c.mPenetrationDepth) ||
@@ -312,6 +326,10 @@ std::vector<std::byte> EncodeCollision(const Collision& inCollision)
         writer.WriteDouble(c.mApproachSpeed);
         writer.WriteDouble(c.mAbsorbedEnergy);
         writer.WriteDouble(c.mTime);
+        writer.WriteDouble(c.mFriction);
+        writer.WriteVec3(c.mFrictionImpulse);
+        writer.WriteVec3(c.mLocalFrictionOnA);
+        writer.WriteVec3(c.mLocalFrictionOnB);
     }
     return writer.TakeBytes();
 }
@@ -354,7 +372,7 @@ Result<Replay> DecodeReplay(std::span<const std::byte> inBytes)
         }
         case EReplayRecord::Collision:
         {
-            Result<Collision> collision = DecodeCollision(payload);
+            Result<Collision> collision = DecodeCollision(payload, version);
             if (!collision)
                 return MakeError(collision.GetError().mCode, where + collision.GetError().mMessage);
             replay.mCollisions.push_back(std::move(collision).Get());

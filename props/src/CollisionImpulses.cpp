@@ -106,11 +106,11 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
     impulses.reserve(4 * inCollision.mContacts.size()); // more when spread
     for (std::size_t index = 0; index < inCollision.mContacts.size(); ++index)
     {
-        // The contact in the prop's body frame: +j n on A, -j n on B.
+        // The contact in the prop's body frame: +j n + t on A, -j n - t on B.
         const plugin::CollisionContact& contact = inCollision.mContacts[index];
         const Vec3 point = is_a ? contact.mLocalPointOnA : contact.mLocalPointOnB;
-        const Vec3 impulse = (is_a ? contact.mImpulse : -contact.mImpulse) *
-                             (is_a ? contact.mLocalNormalOnA : contact.mLocalNormalOnB);
+        const Vec3 impulse = is_a ? Vec3(contact.mImpulse * contact.mLocalNormalOnA + contact.mLocalFrictionOnA)
+                                  : Vec3(-contact.mImpulse * contact.mLocalNormalOnB + contact.mLocalFrictionOnB);
         if (!IsFinite(point) || !IsFinite(impulse))
             return MakeError(EError::NonFinite,
                              "CollisionNodalImpulses: contact " + std::to_string(index) + " is not finite");

@@ -41,9 +41,9 @@ Vec3 ImpulseOnBody(std::span<const Collision> inLog, BodyId inBody)
         for (const CollisionContact& contact : collision.mContacts)
         {
             if (collision.mBodyA == inBody)
-                impulse += contact.mImpulse * contact.mNormal;
+                impulse += contact.ImpulseOnA();
             else if (collision.mBodyB == inBody)
-                impulse -= contact.mImpulse * contact.mNormal;
+                impulse -= contact.ImpulseOnA();
         }
     return impulse;
 }

@@ -131,10 +131,6 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     const int count = dCollide(inGeom1, inGeom2, static_cast<int>(contacts.size()), &contacts[0].geom, sizeof(dContact));
     if (count <= 0)
         return;
-    // The one extra call a game adds to its near callback.
-    if (scene->mAdapter != nullptr)
-        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count)));
-
     dBodyID b1 = dGeomGetBody(inGeom1), b2 = dGeomGetBody(inGeom2);
     for (int i = 0; i < count; ++i)
     {
@@ -156,9 +152,12 @@ void OdeWallCrash::NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2)
         const bool held = std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b1) != scene->mHeldBodies.end() ||
                           std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b2) != scene->mHeldBodies.end();
         contact.surface.soft_erp = held ? 0.0 : 0.2;
-        dJointID joint = dJointCreateContact(scene->mWorld, scene->mContacts, &contact);
-        dJointAttach(joint, b1, b2);
     }
+    // The one extra call a game adds to its near callback, once the surfaces are set (it reads their mu).
+    if (scene->mAdapter != nullptr)
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count)));
+    for (int i = 0; i < count; ++i)
+        dJointAttach(dJointCreateContact(scene->mWorld, scene->mContacts, &contacts[static_cast<std::size_t>(i)]), b1, b2);
 }
 
 Result<plugin::BodyId> OdeWallCrash::MakeDebrisBody(const plugin::ConvexBodySettings& inSettings)

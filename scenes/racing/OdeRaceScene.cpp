@@ -64,8 +64,6 @@ void OdeRaceScene::Near(void* inData, dGeomID inGeom1, dGeomID inGeom2)
     const int count = dCollide(inGeom1, inGeom2, static_cast<int>(contacts.size()), &contacts[0].geom, sizeof(dContact));
     if (count <= 0)
         return;
-    if (scene->mAdapter != nullptr)
-        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count))); // Crumple
     for (int i = 0; i < count; ++i)
     {
         dContact& contact = contacts[static_cast<std::size_t>(i)];
@@ -82,8 +80,12 @@ void OdeRaceScene::Near(void* inData, dGeomID inGeom1, dGeomID inGeom2)
                           std::find(scene->mHeldBodies.begin(), scene->mHeldBodies.end(), b2) != scene->mHeldBodies.end();
         contact.surface.soft_erp = held ? 0.0 : 0.2;
         contact.surface.soft_cfm = 1.0e-5;
-        dJointAttach(dJointCreateContact(scene->mWorld, scene->mContacts, &contact), b1, b2);
     }
+    // Crumple, once the surfaces are set (it reads their mu)
+    if (scene->mAdapter != nullptr)
+        scene->mAdapter->OnCollide(inGeom1, inGeom2, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(count)));
+    for (int i = 0; i < count; ++i)
+        dJointAttach(dJointCreateContact(scene->mWorld, scene->mContacts, &contacts[static_cast<std::size_t>(i)]), b1, b2);
 }
 
 Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettings& inSettings)

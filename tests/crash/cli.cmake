@@ -10,10 +10,10 @@ file(GLOB crash_examples CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/samples/scenari
 # Examples that fail a sanity check today, each with the check it fails: they must keep failing it (exit 1,
 # the check named) until the defect is fixed, and then this list shrinks. Not a waiver: the run still
 # exits 1 for its users.
-#  - angled_wall_30deg_ode: Crumple's Baraff impulse is frictionless (D4MD), and against a 30-degree wall with
-#    friction 0.5 ODE's normal impulse is 7 % larger (the friction's torque changes the normal closing speed).
-set(crash_known_insane
-    "angled_wall_30deg_ode|FAIL sanity impulse_momentum")
+# None today: angled_wall_30deg_ode failed impulse_momentum while Crumple's impulse was frictionless (ODE's
+# normal impulse against the 30-degree wall with friction 0.5 was 7 % larger, the friction's torque changing
+# the normal closing speed); the impulse has carried the engine's friction since (FrictionalImpulses).
+set(crash_known_insane)
 foreach(example IN LISTS crash_examples)
     get_filename_component(name ${example} NAME_WE)
     set(expect_exit 0)

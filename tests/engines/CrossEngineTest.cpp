@@ -33,7 +33,7 @@ namespace
 {
 
 // The crashes of the momentum and crush checks: frontal, 40 % offset, pole and 30-degree wall at 20-64 km/h.
-std::vector<std::pair<std::string, EngineCrashSettings>> MomentumCrashes()
+std::vector<std::pair<std::string, EngineCrashSettings>> MomentumCrashes(double inFriction)
 {
     std::vector<std::pair<std::string, EngineCrashSettings>> crashes;
     for (double km_h : {20.0, 40.0, 56.0, 64.0})
@@ -42,7 +42,7 @@ std::vector<std::pair<std::string, EngineCrashSettings>> MomentumCrashes()
         base.mSpeed = km_h / 3.6;
         base.mDuration = 0.3;
         base.mTriangles = 2000;
-        base.mFriction = 0.0; // the wall's normal impulses are then the only horizontal force on the car
+        base.mFriction = inFriction; // the wall's and the other car's; with 0 the normal impulses act alone
         base.mGroundFriction = 0.0;
         const std::string speed = std::to_string(static_cast<int>(km_h)) + " km/h ";
         crashes.emplace_back(speed + "frontal", base);
@@ -101,26 +101,47 @@ std::pair<Vec3, Vec3> ImpulseAndMomentumChange(const EngineCrashSettings& inSett
             inSettings.mMass * (velocity[std::min(after, velocity.size() - 1)] - velocity[before])};
 }
 
+
+// Crumple's impulse on the car against the engine's change of its momentum, horizontally, for each crash.
+template <class Scene>
+void CheckImpulseIsMomentumChange(const std::string& inEngine, double inFriction)
+{
+    for (const auto& [name, settings] : MomentumCrashes(inFriction))
+    {
+        const std::pair<Vec3, Vec3> run = ImpulseAndMomentumChange<Scene>(settings);
+        const Vec3 horizontal(1.0, 1.0, 0.0);
+        const Vec3 crumple = run.first.cwiseProduct(horizontal);
+        const Vec3 engine = run.second.cwiseProduct(horizontal);
+        INFO(name << " " << inEngine << ", friction " << inFriction << ": Crumple " << crumple.transpose() << " N s, engine "
+                  << engine.transpose() << " N s");
+        CHECK(engine.norm() > 0.0);
+        CHECK((crumple - engine).norm() <= 0.03 * engine.norm());
+    }
+}
+
 } // namespace
 
+// The engines bounce as Crumple's impulses assume (the scenes set their restitution from
+// DamageWorldSettings::mRestitution and cap ODE's penetration push-out), and Crumple counts an impact once
+// however many steps the engine takes to stop the car. With friction Crumple's impulse carries the engine's
+// coefficient (ContactEvent::mFriction) and stops or slows the contacts' slip (FrictionalImpulses): the car's
+// sideways momentum after an offset, angled or corner hit is then the engine's too.
 TEST_CASE("A collision's impulse is the engine's change of the car's momentum within 3 %, in Bullet and ODE", "[bullet][ode]")
 {
-    // The engines bounce as Crumple's impulses assume (the scenes set their restitution from
-    // DamageWorldSettings::mRestitution and cap ODE's penetration push-out), and Crumple counts an impact once
-    // however many steps the engine takes to stop the car.
-    for (const auto& [name, settings] : MomentumCrashes())
-    {
-        const std::pair<Vec3, Vec3> bullet = ImpulseAndMomentumChange<BulletWallCrash>(settings);
-        const std::pair<Vec3, Vec3> ode = ImpulseAndMomentumChange<OdeWallCrash>(settings);
-        for (const auto* run : {&bullet, &ode})
-        {
-            const Vec3 horizontal(1.0, 1.0, 0.0);
-            const Vec3 crumple = run->first.cwiseProduct(horizontal);
-            const Vec3 engine = run->second.cwiseProduct(horizontal);
-            INFO(name << (run == &bullet ? " Bullet" : " ODE") << ": Crumple " << crumple.transpose() << " N s, engine "
-                      << engine.transpose() << " N s");
-            CHECK(engine.norm() > 0.0);
-            CHECK((crumple - engine).norm() <= 0.03 * engine.norm());
-        }
-    }
+    CheckImpulseIsMomentumChange<BulletWallCrash>("Bullet", 0.0);
+    CheckImpulseIsMomentumChange<OdeWallCrash>("ODE", 0.0);
+    CheckImpulseIsMomentumChange<OdeWallCrash>("ODE", 0.5);
+}
+
+// Bullet with friction: 21 of the 24 crashes agree within 3 %. Bullet solves friction along one tangent per
+// contact (the slip's direction when the contact appeared, or an arbitrary one without slip), so a car that
+// yaws against the wall after an offset or corner hit slides across it: sideways Bullet takes 133 N s where
+// Crumple's impulse, which stops the corner's slip, takes 449 N s and ODE's engine 448 N s (20 km/h offset),
+// 339 against 531 N s (20 km/h into a corner), 641 against 1,067 N s (40 km/h into a corner). Measured with
+// SOLVER_USE_2_FRICTION_DIRECTIONS in the scene: 23 of 24 agree (the corner hits within 0.5 %; the 40 km/h
+// offset hit takes 1,451 N s sideways against Crumple's 903 and ODE's 897), but the scene's other tests
+// depend on where Bullet's first contact lands, and the scene keeps Bullet's default.
+TEST_CASE("With friction a collision's impulse is Bullet's change of the car's momentum within 3 %", "[bullet][!mayfail]")
+{
+    CheckImpulseIsMomentumChange<BulletWallCrash>("Bullet", 0.5);
 }

@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <functional>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -148,7 +149,7 @@ TEST_CASE("A truncated, corrupt or foreign replay file is refused with a clear m
     CHECK(corrupted.GetError().mMessage.find("record") != std::string::npos);
 
     std::vector<std::byte> newer = bytes;
-    newer[8] = std::byte{9};
+    newer[8] = std::byte{10};
     CHECK(DecodeReplay(newer).GetError().mCode == EError::VersionMismatch);
     std::vector<std::byte> foreign = bytes;
     foreign[0] = std::byte{'Z'};
@@ -257,8 +258,31 @@ TEST_CASE("A recorded collision beyond what bodies can produce is refused, and a
     contact.mLocalNormalOnB = -Vec3::UnitX();
     contact.mNormal = Vec3::UnitX();
     contact.mImpulse = 1.0e3;
+    contact.mFriction = 0.5;
+    contact.mFrictionImpulse = contact.mLocalFrictionOnA = Vec3(0.0, 300.0, 0.0);
+    contact.mLocalFrictionOnB = Vec3(0.0, -300.0, 0.0);
     collision.mContacts = {contact, contact};
-    REQUIRE(DecodeReplay(file_of(collision)).IsValid());
+    const Result<Replay> read = DecodeReplay(file_of(collision));
+    REQUIRE(read.IsValid());
+    // The friction of a contact comes back as written (version 9).
+    CHECK(read.Get().mCollisions[0].mContacts[1].mFriction == 0.5);
+    CHECK(read.Get().mCollisions[0].mContacts[1].mFrictionImpulse == contact.mFrictionImpulse);
+    CHECK(read.Get().mCollisions[0].mContacts[1].mLocalFrictionOnB == contact.mLocalFrictionOnB);
+
+    // Friction outside its cone |t| <= mu j, a negative or NaN coefficient, a non-finite impulse: refused.
+    for (const auto& spoil : std::vector<std::function<void(CollisionContact&)>>{
+             [](CollisionContact& c) { c.mFrictionImpulse = Vec3(0.0, 600.0, 0.0); },
+             [](CollisionContact& c) { c.mFriction = -0.5; },
+             [](CollisionContact& c) { c.mFriction = std::nan(""); },
+             [](CollisionContact& c) { c.mLocalFrictionOnA.z() = std::numeric_limits<double>::infinity(); }})
+    {
+        Collision spoiled = collision;
+        spoil(spoiled.mContacts[0]);
+        CHECK(DecodeReplay(file_of(spoiled)).GetError().mCode == EError::CorruptData);
+    }
+    Collision sticky = collision;
+    sticky.mContacts[0].mFriction = std::numeric_limits<double>::infinity(); // a surface that never slides
+    CHECK(DecodeReplay(file_of(sticky)).IsValid());
 
     Collision huge = collision;
     huge.mContacts[1].mImpulse = 1.0e308; // finite, far past the 1e28 N s bodies can produce

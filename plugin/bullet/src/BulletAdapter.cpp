@@ -345,6 +345,7 @@ void BulletAdapter::PostTick(double inTimeStep)
             event.mPointOnB = ToVec3(point.getPositionWorldOnB());
             event.mNormal = ToVec3(point.m_normalWorldOnB).normalized(); // from B towards A, as Crumple expects
             event.mPenetrationDepth = -distance;
+            event.mFriction = static_cast<double>(point.m_combinedFriction); // what Bullet's solver uses for the point
             event.mTime = mTime;
             mEvents.push_back(event);
         }

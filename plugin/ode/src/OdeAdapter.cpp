@@ -280,18 +280,19 @@ BodyId OdeAdapter::BodyOfGeom(dGeomID inGeom)
     return id;
 }
 
-void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts)
+void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts, double inFriction)
 {
-    CollectContacts(inGeom1, inGeom2, inContacts.data(), inContacts.size(), sizeof(dContactGeom));
+    CollectContacts(inGeom1, inGeom2, inContacts.data(), inContacts.size(), sizeof(dContactGeom), nullptr, inFriction);
 }
 
 void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContact> inContacts)
 {
-    CollectContacts(inGeom1, inGeom2, inContacts.empty() ? nullptr : &inContacts.front().geom, inContacts.size(), sizeof(dContact));
+    CollectContacts(inGeom1, inGeom2, inContacts.empty() ? nullptr : &inContacts.front().geom, inContacts.size(), sizeof(dContact),
+                    inContacts.data(), 0.0);
 }
 
 void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContactGeom* inFirst, std::size_t inCount,
-                                 std::size_t inStride)
+                                 std::size_t inStride, const dContact* inFull, double inFriction)
 {
     if (inCount == 0)
         return;
@@ -318,6 +319,12 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
         event.mPointOnA = event.mPointOnB = Vec3(contact.pos[0], contact.pos[1], contact.pos[2]);
         event.mNormal = Vec3(contact.normal[0], contact.normal[1], contact.normal[2]);
         event.mPenetrationDepth = static_cast<double>(contact.depth);
+        event.mFriction = inFriction;
+        if (inFull != nullptr)
+        {
+            const dSurfaceParameters& surface = inFull[i].surface;
+            event.mFriction = (surface.mode & dContactApprox1_1) != 0 ? static_cast<double>(surface.mu) : 0.0;
+        }
         mEvents.push_back(event);
     }
 }

@@ -317,10 +317,10 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         outcome.mCollisions.push_back({collision.mStartTime, collision.mEndTime, impulse,
                                        static_cast<int>(collision.mContacts.size())});
         outcome.mTotalImpulse += impulse;
-        // Each contact pushes A along its normal (B to A) and B the other way.
+        // Each contact pushes A along its normal (B to A) with its friction, and B the other way.
         const double side = collision.mBodyA == car_body ? 1.0 : collision.mBodyB == car_body ? -1.0 : 0.0;
         for (const plugin::CollisionContact& contact : collision.mContacts)
-            outcome.mCarImpulse += side * contact.mImpulse * contact.mNormal;
+            outcome.mCarImpulse += side * contact.ImpulseOnA();
         if (side != 0.0)
         {
             outcome.mImpactStartTime = std::isnan(outcome.mImpactStartTime)

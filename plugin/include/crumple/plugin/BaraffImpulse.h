@@ -40,6 +40,8 @@ struct CRUMPLE_API ImpulseContact
                                     ///< contact reported at a distance g before touching, g / dt. Only the approach
                                     ///< beyond it is resolved now, as an engine's speculative contact solver does;
                                     ///< the rest arrives with the next step's contact
+    double mFriction = 0.0;         ///< Coulomb friction coefficient mu (>= 0, +inf: no sliding), used by
+                                    ///< FrictionalImpulses; SimultaneousImpulses is frictionless
 };
 
 /// Impulses of contacts that one engine step reported together for the same body pair (N s each, >= 0).

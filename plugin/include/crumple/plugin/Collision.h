@@ -33,12 +33,22 @@ struct CRUMPLE_API CollisionContact
     Vec3 mLocalNormalOnB = Vec3::UnitZ(); ///< The normal in B's body frame
     double mPenetrationDepth = 0.0;     ///< As reported (m)
     double mImpulse = 0.0;              ///< Baraff impulse magnitude (N s), > 0: +n on A, -n on B
-    double mApproachSpeed = 0.0;        ///< Closing speed before the solver, -v_rel (m/s), > 0
+    double mFriction = 0.0;             ///< The contact's Coulomb coefficient, as submitted (ContactEvent::mFriction)
+    Vec3 mFrictionImpulse = Vec3::Zero(); ///< Tangential impulse on A (N s), world frame, perpendicular to mNormal,
+                                          ///< |.| <= mFriction mImpulse; B takes its opposite (FrictionalImpulses)
+    Vec3 mLocalFrictionOnA = Vec3::Zero(); ///< The friction impulse on A in A's body frame (N s)
+    Vec3 mLocalFrictionOnB = Vec3::Zero(); ///< The friction impulse on B (the opposite of A's) in B's body frame (N s)
+    double mApproachSpeed = 0.0;        ///< Closing speed before the solver, -v_rel (m/s): > 0, except at a resting
+                                        ///< contact that friction at the others pressed onto B (FrictionalImpulses)
     /// Kinetic energy the impulse took out of the pair (J): J ((1 - e) v + (1 + e) s) / 2 with the world's
     /// restitution e, the approach speed v and the speculative speed s (gap / step) the impulse left alone;
-    /// what the two bodies' structures absorb between them (exact for the contacts of one step, solved together)
+    /// what the two bodies' structures absorb between them (exact for the contacts of one step, solved together).
+    /// The normal impulse's share only: what friction takes out (sliding, scraping) crushes nothing
     double mAbsorbedEnergy = 0.0;
     double mTime = 0.0;                 ///< Step time (s)
+
+    /// The whole impulse on A, normal and friction (N s), world frame; B takes its opposite
+    Vec3 ImpulseOnA() const { return mImpulse * mNormal + mFrictionImpulse; }
 };
 
 /// Contacts of one body pair grouped over a time window: one physical impact.

@@ -24,6 +24,9 @@ struct CRUMPLE_API ContactEvent
     Vec3 mPointOnB = Vec3::Zero();   ///< Contact point on B's surface, world frame (m)
     Vec3 mNormal = Vec3::UnitZ();    ///< Unit contact normal from B towards A, world frame
     double mPenetrationDepth = 0.0;  ///< Overlap along the normal (m), > 0 when penetrating, < 0 for a gap
+    double mFriction = 0.0;          ///< Coulomb friction coefficient of the two surfaces (dimensionless, >= 0;
+                                     ///< +inf: they never slide); 0 gives frictionless impulses. The adapters
+                                     ///< pass the engine's own (Bullet's combined friction, ODE's surface mu)
     double mTime = 0.0;              ///< Simulation time of the step that reported it (s)
 };
 

@@ -51,8 +51,10 @@ struct CRUMPLE_API Replay
 /// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
 /// dents flag; extension records. 7: ids carry their generation (u32 after each object and body index).
 /// 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its u32
-/// vertices). Written: 8. Read: 8, and 7 (whose objects have no rigid parts, so its recordings still replay).
-constexpr std::uint32_t cReplayVersion = 8;
+/// vertices). 9: per contact the friction coefficient and the friction impulse (world, on A's body frame, on
+/// B's body frame) after the time. Written: 9. Read: 9, 8 and 7 (whose contacts are frictionless and objects
+/// have no rigid parts, so their recordings still replay).
+constexpr std::uint32_t cReplayVersion = 9;
 /// The oldest version DecodeReplay still reads.
 constexpr std::uint32_t cOldestReplayVersion = 7;
 

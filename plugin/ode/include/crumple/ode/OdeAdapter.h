@@ -99,9 +99,14 @@ public:
 
     /// Takes the contacts dCollide returned for (inGeom1, inGeom2). Contacts involving an unregistered body
     /// are ignored. ODE's normal points from geom 2 into geom 1, which is Crumple's B-to-A convention.
-    void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts);
+    /// inFriction: the Coulomb coefficient the game's contact joints use for the pair (>= 0, dInfinity for
+    /// no sliding; 0: frictionless impulses).
+    void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts, double inFriction = 0.0);
     /// The same for the dContact array a near callback gave dCollide (its geoms at stride sizeof(dContact)),
-    /// so the callback passes its contacts as they are, with no copy of their geoms.
+    /// so the callback passes its contacts as they are, with no copy of their geoms. Call it after filling
+    /// their surface parameters: each contact's friction is its surface.mu where surface.mode has
+    /// dContactApprox1_1 (ODE's friction pyramid, mu a coefficient as in Crumple); without it ODE reads mu as a
+    /// force limit in newtons, which no coefficient matches, and Crumple's impulse for the contact is frictionless.
     void OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContact> inContacts);
 
     /// Submits the step's contacts and dispatches closed collisions; call after dWorldStep/dWorldQuickStep.
@@ -113,7 +118,9 @@ public:
 
 private:
     // OnCollide's work: inCount contact geoms from inFirst, inStride bytes apart (as dCollide writes them).
-    void CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContactGeom* inFirst, std::size_t inCount, std::size_t inStride);
+    // inFull: the dContact array inFirst's geoms belong to, whose surfaces give the friction; null: inFriction.
+    void CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContactGeom* inFirst, std::size_t inCount, std::size_t inStride,
+                         const dContact* inFull, double inFriction);
     OdeAdapter(plugin::DamageWorld& inDamage, plugin::BodyId inEnvironment) : mDamage(inDamage), mEnvironment(inEnvironment) {}
     plugin::BodyId BodyOfGeom(dGeomID inGeom);
 
