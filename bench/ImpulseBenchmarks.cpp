@@ -4,7 +4,9 @@
 #include "WorldFixture.h"
 
 #include <crumple/plugin/BaraffImpulse.h>
+#include <crumple/plugin/FrictionalImpulses.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -46,6 +48,42 @@ void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
     const double expected = (1.0 + e) * m * v;
     ioTable.Add({"impulse_solve", std::to_string(contacts.size()) + "_contacts", ms, std::abs(total - expected) / expected,
                  "rel_total_impulse", "analytic=(1+e)mv=" + std::to_string(expected) + ";cpu_ms=" + FormatExtra(timing.mCpuMs / cInner)});
+}
+
+// The same box landing flat while sliding at 10 m/s, friction 0.5 at each of its N contacts: every contact
+// slides, so the contacts together take (1+e) m v_z along the normal and mu times that against the slide
+// (the normals share the friction's pitching torque between front and back), whatever N.
+void FrictionCase(BenchTable& ioTable, int inGrid, int inRepetitions)
+{
+    const double m = 1200.0, v = 5.0, e = 0.1, mu = 0.5;
+    BodyState box;
+    box.mMass = m;
+    box.mInverseInertiaWorld = Vec3(12.0 / (m * (4.0 + 1.96)), 12.0 / (m * (16.0 + 1.96)), 12.0 / (m * 20.0)).asDiagonal();
+    box.mCenterOfMass = Vec3(0.0, 0.0, 0.7);
+    box.mLinearVelocity = Vec3(10.0, 0.0, -v);
+    BodyState ground;
+    ground.mMotionType = EMotionType::Static;
+    std::vector<ImpulseContact> contacts;
+    for (int i = 0; i < inGrid; ++i)
+        for (int k = 0; k < inGrid; ++k)
+            contacts.push_back({Vec3(-2.0 + 4.0 * i / (inGrid - 1), -1.0 + 2.0 * k / (inGrid - 1), 0.0), Vec3::UnitZ(), 0.0, mu});
+    std::vector<ContactImpulse> impulses;
+    constexpr int cInner = 20;
+    const Timing timing = MedianTiming(inRepetitions, [] {}, [&] {
+        for (int i = 0; i < cInner; ++i)
+            impulses = FrictionalImpulses(box, ground, contacts, e, 0.5);
+    });
+    double normal = 0.0;
+    Vec3 friction = Vec3::Zero();
+    for (const ContactImpulse& j : impulses)
+    {
+        normal += j.mNormal;
+        friction += j.mFriction;
+    }
+    const double expected = (1.0 + e) * m * v;
+    const double error = std::max(std::abs(normal - expected), (friction + mu * expected * Vec3::UnitX()).norm()) / expected;
+    ioTable.Add({"friction_solve", std::to_string(contacts.size()) + "_sliding_contacts", timing.mWallMs / cInner, error,
+                 "rel_impulse", "analytic=(1+e)mv=" + std::to_string(expected) + ",mu_times_it;cpu_ms=" + FormatExtra(timing.mCpuMs / cInner)});
 }
 
 // Frames without impacts: an empty frame and a car resting on four wheel contacts.
@@ -143,6 +181,8 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     const int repetitions = inOptions.mQuick ? 3 : 51;
     for (int grid : {1, 2, 6, 8})
         ImpulseCase(ioTable, grid, repetitions);
+    for (int grid : {2, 4, 8})
+        FrictionCase(ioTable, grid, repetitions);
     for (int contacts : {10, 100, 1000, 10000})
         ManifoldCase(ioTable, contacts, inOptions.mQuick ? 3 : 11);
     IdleCases(ioTable, repetitions);
