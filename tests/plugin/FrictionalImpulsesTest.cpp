@@ -226,10 +226,12 @@ TEST_CASE("A box landing on its face while sliding and spinning meets Coulomb's 
 TEST_CASE("On random contact sets friction stays in its cone and makes no energy", "[plugin]")
 {
     // Seeded falls of box-like bodies onto the ground or onto each other, 1-16 contacts with tilted normals and
-    // mixed friction. Gauss-Seidel over such crowds of redundant contacts can converge slowly, and where it stops
-    // at its sweep bound Coulomb's conditions hold only approximately (a few sets of this kind missed them by
-    // more than 3 % of the approach speed); what holds whatever the convergence: pushing normals, friction in
-    // its cone and in the tangent plane, without restitution no kinetic energy made, and the same bits again.
+    // mixed friction, one set in five with mu = +inf. Gauss-Seidel over such crowds of redundant contacts can
+    // converge slowly, and where it stops at its sweep bound Coulomb's conditions hold only approximately:
+    // measured on these 400 sets, 31 miss them by more than 3 % of the approach speed (29 of them with mu = +inf,
+    // 25 of those with restitution) and 9 by more than 10 % (all with mu = +inf). What holds whatever the
+    // convergence: pushing normals, friction in its cone and in the tangent plane, without restitution no
+    // kinetic energy made, and the same bits again.
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     CoulombTally tally;
