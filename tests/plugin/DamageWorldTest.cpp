@@ -170,6 +170,16 @@ TEST_CASE("DamageWorld refuses bad contacts whole and changes nothing", "[plugin
         batch[2].mNormal = Vec3(-2.0, 0.0, 0.0);
         CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::InvalidArgument);
     }
+    SECTION("a negative or NaN friction coefficient")
+    {
+        batch[1].mFriction = -0.5;
+        const Status negative = fixture.mWorld.SubmitContacts(batch);
+        REQUIRE(negative.HasError());
+        CHECK(negative.GetError().mCode == EError::InvalidArgument);
+        CHECK(negative.GetError().mMessage.find("mFriction") != std::string::npos);
+        batch[1].mFriction = nan;
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::InvalidArgument);
+    }
     CHECK(fixture.mWorld.GetOpenCollisionCount() == 0);
     CHECK(fixture.mWorld.Flush().mCollisionsDispatched == 0);
 }
@@ -365,4 +375,40 @@ TEST_CASE("A body set to dispatch every step has its collisions dispatched in th
     REQUIRE(listener.mCollisions.size() == 3);
     CHECK(listener.mCollisions[2].TotalImpulse() == Approx(listener.mCollisions[1].TotalImpulse()).epsilon(1e-12));
     fixture.mWorld.RemoveListener(&listener);
+}
+
+TEST_CASE("A sliding hit carries friction into its collision, inside the cone, in world and body frames", "[plugin]")
+{
+    // The car hits the wall at 15 m/s while sliding along it at 5 m/s, friction 0.4 at its four front
+    // corners: the collision's contacts take friction against the slide (-y on the car), inside mu j, in the
+    // contact plane, given in each body's frame as well; the car's whole impulse is normal plus friction.
+    WorldFixture fixture;
+    RecordingListener listener;
+    fixture.mWorld.AddListener(&listener);
+    BodyState sliding = fixture.CarState(15.0);
+    sliding.mLinearVelocity.y() = 5.0;
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, sliding));
+    std::vector<ContactEvent> batch = FrontCorners(fixture, 0.0);
+    for (ContactEvent& contact : batch)
+        contact.mFriction = 0.4;
+    REQUIRE(fixture.mWorld.SubmitContacts(batch));
+    fixture.mWorld.Flush();
+    REQUIRE(listener.mCollisions.size() == 1);
+    const Collision& collision = listener.mCollisions[0];
+    const bool car_is_a = collision.mBodyA == fixture.mCar;
+    Vec3 on_car = Vec3::Zero();
+    for (const CollisionContact& c : collision.mContacts)
+    {
+        CHECK(c.mFriction == 0.4);
+        CHECK(c.mFrictionImpulse.norm() > 0.0);
+        CHECK(c.mFrictionImpulse.norm() <= 0.4 * c.mImpulse * (1.0 + 1.0e-12));
+        CHECK(std::abs(c.mFrictionImpulse.dot(c.mNormal)) <= 1.0e-9 * c.mImpulse);
+        // Body frames: the same vector, each side's sign (A takes +t, B takes -t).
+        CHECK((sliding.mTransform.DirectionToBody(car_is_a ? c.mFrictionImpulse : Vec3(-c.mFrictionImpulse)) -
+               (car_is_a ? c.mLocalFrictionOnA : c.mLocalFrictionOnB))
+                  .norm() <= 1.0e-9 * c.mImpulse);
+        on_car += car_is_a ? c.ImpulseOnA() : Vec3(-c.ImpulseOnA());
+    }
+    CHECK(on_car.y() < 0.0); // against the slide
+    CHECK(on_car.x() < 0.0); // and against the approach
 }
