@@ -18,15 +18,25 @@ using namespace crumple::plugin;
 namespace
 {
 
-// N contacts in a grid on the bottom of a 1,200 kg, 4 m x 2 m box falling flat at 5 m/s on static ground.
-void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
+constexpr double cBoxMass = 1200.0; // kg
+
+// A 1,200 kg, 4 m x 2 m x 1.4 m box, its bottom face on z = 0, moving at inVelocity (m/s).
+BodyState FallingBox(const Vec3& inVelocity)
 {
-    const double m = 1200.0, v = 5.0, e = 0.1;
+    const double m = cBoxMass;
     BodyState box;
     box.mMass = m;
     box.mInverseInertiaWorld = Vec3(12.0 / (m * (4.0 + 1.96)), 12.0 / (m * (16.0 + 1.96)), 12.0 / (m * 20.0)).asDiagonal();
     box.mCenterOfMass = Vec3(0.0, 0.0, 0.7);
-    box.mLinearVelocity = Vec3(0.0, 0.0, -v);
+    box.mLinearVelocity = inVelocity;
+    return box;
+}
+
+// N contacts in a grid on the bottom of a 1,200 kg, 4 m x 2 m box falling flat at 5 m/s on static ground.
+void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
+{
+    const double m = cBoxMass, v = 5.0, e = 0.1;
+    const BodyState box = FallingBox(Vec3(0.0, 0.0, -v));
     BodyState ground;
     ground.mMotionType = EMotionType::Static;
     std::vector<ImpulseContact> contacts;
@@ -55,12 +65,8 @@ void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
 // (the normals share the friction's pitching torque between front and back), whatever N.
 void FrictionCase(BenchTable& ioTable, int inGrid, int inRepetitions)
 {
-    const double m = 1200.0, v = 5.0, e = 0.1, mu = 0.5;
-    BodyState box;
-    box.mMass = m;
-    box.mInverseInertiaWorld = Vec3(12.0 / (m * (4.0 + 1.96)), 12.0 / (m * (16.0 + 1.96)), 12.0 / (m * 20.0)).asDiagonal();
-    box.mCenterOfMass = Vec3(0.0, 0.0, 0.7);
-    box.mLinearVelocity = Vec3(10.0, 0.0, -v);
+    const double m = cBoxMass, v = 5.0, e = 0.1, mu = 0.5;
+    const BodyState box = FallingBox(Vec3(10.0, 0.0, -v));
     BodyState ground;
     ground.mMotionType = EMotionType::Static;
     std::vector<ImpulseContact> contacts;

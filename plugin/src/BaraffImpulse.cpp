@@ -3,8 +3,6 @@
 #include <crumple/base/Assert.h>
 #include <crumple/plugin/BaraffImpulse.h>
 
-#include "ClosingContacts.h"
-
 #include <Eigen/QR>
 
 #include <algorithm>
@@ -13,6 +11,10 @@
 namespace crumple::plugin
 {
 
+namespace
+{
+
+// Change of A's-minus-B's velocity along inNormalI at inPointI per unit impulse +n_j on A, -n_j on B.
 double ImpulseResponse(const BodyState& inA, const BodyState& inB, const Vec3& inPointI, const Vec3& inNormalI,
                        const Vec3& inPointJ, const Vec3& inNormalJ)
 {
@@ -22,6 +24,8 @@ double ImpulseResponse(const BodyState& inA, const BodyState& inB, const Vec3& i
     const Vec3 dv_b = inB.InverseMass() * inNormalJ + (inB.InverseInertia() * rb_j.cross(inNormalJ)).cross(rb_i);
     return inNormalI.dot(dv_a + dv_b);
 }
+
+} // namespace
 
 double RelativeNormalVelocity(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inNormal)
 {
@@ -43,54 +47,54 @@ double BaraffImpulse(const BodyState& inA, const BodyState& inB, const Vec3& inP
     return -(1.0 + inRestitution) * v_rel / denominator;
 }
 
-ClosingContacts FindClosingContacts(const BodyState& inA, const BodyState& inB, std::span<const ImpulseContact> inContacts,
-                                    double inRestitution, double inClosingSpeed)
+std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& inB,
+                                         std::span<const ImpulseContact> inContacts, double inRestitution,
+                                         double inClosingSpeed)
 {
-    ClosingContacts closing;
-    std::vector<double> v_rel;
-    for (std::size_t i = 0; i < inContacts.size(); ++i)
+    CRUMPLE_ASSERT(inRestitution >= 0.0 && inRestitution <= 1.0 && inClosingSpeed >= 0.0,
+                   "SimultaneousImpulses: restitution outside [0, 1] or a negative closing speed");
+    const std::size_t n = inContacts.size();
+    std::vector<double> impulses(n, 0.0);
+    std::vector<double> v_rel(n);
+    std::vector<std::size_t> active;
+    for (std::size_t i = 0; i < n; ++i)
     {
-        const double v = RelativeNormalVelocity(inA, inB, inContacts[i].mPoint, inContacts[i].mNormal) +
-                         std::max(inContacts[i].mSpeculativeSpeed, 0.0);
-        if (v < -inClosingSpeed)
-        {
-            closing.mIndices.push_back(i);
-            v_rel.push_back(v);
-        }
+        v_rel[i] = RelativeNormalVelocity(inA, inB, inContacts[i].mPoint, inContacts[i].mNormal) +
+                   std::max(inContacts[i].mSpeculativeSpeed, 0.0);
+        if (v_rel[i] < -inClosingSpeed)
+            active.push_back(i);
     }
-    const auto m = static_cast<Eigen::Index>(closing.mIndices.size());
-    closing.mResponse.resize(m, m);
-    closing.mTarget.resize(m);
-    for (Eigen::Index r = 0; r < m; ++r)
-    {
-        const ImpulseContact& ci = inContacts[closing.mIndices[static_cast<std::size_t>(r)]];
-        closing.mTarget[r] = -(1.0 + inRestitution) * v_rel[static_cast<std::size_t>(r)];
-        for (Eigen::Index c = 0; c < m; ++c)
-        {
-            const ImpulseContact& cj = inContacts[closing.mIndices[static_cast<std::size_t>(c)]];
-            closing.mResponse(r, c) = ImpulseResponse(inA, inB, ci.mPoint, ci.mNormal, cj.mPoint, cj.mNormal);
-        }
-    }
-    return closing;
-}
-
-Eigen::VectorXd SolveNormalImpulses(const Eigen::MatrixXd& inResponse, const Eigen::VectorXd& inTarget)
-{
-    const Eigen::MatrixXd& k = inResponse;
-    const Eigen::VectorXd& target = inTarget;
-    const Eigen::Index m = target.size();
-    Eigen::VectorXd j = Eigen::VectorXd::Zero(m);
-    if (m == 0 || !(k.diagonal().maxCoeff() > 0.0))
-        return j; // nothing closes, or both bodies immovable
+    if (active.empty())
+        return impulses;
 
     // One closing contact: the scalar formula, exactly as published.
-    if (m == 1)
+    if (active.size() == 1)
     {
-        j[0] = target[0] / k(0, 0);
-        return j;
+        const ImpulseContact& c = inContacts[active[0]];
+        const double response = ImpulseResponse(inA, inB, c.mPoint, c.mNormal, c.mPoint, c.mNormal);
+        impulses[active[0]] = response > 0.0 ? -(1.0 + inRestitution) * v_rel[active[0]] / response : 0.0;
+        return impulses;
     }
 
+    // The closing contacts' response matrix K and target -(1+e) v.
+    const auto m = static_cast<Eigen::Index>(active.size());
+    Eigen::MatrixXd k(m, m);
+    Eigen::VectorXd target(m);
+    for (Eigen::Index r = 0; r < m; ++r)
+    {
+        const ImpulseContact& ci = inContacts[active[static_cast<std::size_t>(r)]];
+        target[r] = -(1.0 + inRestitution) * v_rel[active[static_cast<std::size_t>(r)]];
+        for (Eigen::Index c = 0; c < m; ++c)
+        {
+            const ImpulseContact& cj = inContacts[active[static_cast<std::size_t>(c)]];
+            k(r, c) = ImpulseResponse(inA, inB, ci.mPoint, ci.mNormal, cj.mPoint, cj.mNormal);
+        }
+    }
+    if (!(k.diagonal().maxCoeff() > 0.0))
+        return impulses; // both bodies immovable
+
     // Active set: minimum-norm solve over the pushing contacts, drop any that would pull, repeat.
+    Eigen::VectorXd j = Eigen::VectorXd::Zero(m);
     std::vector<Eigen::Index> pushing(static_cast<std::size_t>(m));
     for (Eigen::Index r = 0; r < m; ++r)
         pushing[static_cast<std::size_t>(r)] = r;
@@ -141,20 +145,8 @@ Eigen::VectorXd SolveNormalImpulses(const Eigen::MatrixXd& inResponse, const Eig
         if (change <= tolerance)
             break;
     }
-    return j;
-}
-
-std::vector<double> SimultaneousImpulses(const BodyState& inA, const BodyState& inB,
-                                         std::span<const ImpulseContact> inContacts, double inRestitution,
-                                         double inClosingSpeed)
-{
-    CRUMPLE_ASSERT(inRestitution >= 0.0 && inRestitution <= 1.0 && inClosingSpeed >= 0.0,
-                   "SimultaneousImpulses: restitution outside [0, 1] or a negative closing speed");
-    std::vector<double> impulses(inContacts.size(), 0.0);
-    const ClosingContacts closing = FindClosingContacts(inA, inB, inContacts, inRestitution, inClosingSpeed);
-    const Eigen::VectorXd j = SolveNormalImpulses(closing.mResponse, closing.mTarget);
-    for (std::size_t r = 0; r < closing.mIndices.size(); ++r)
-        impulses[closing.mIndices[r]] = j[static_cast<Eigen::Index>(r)];
+    for (Eigen::Index r = 0; r < m; ++r)
+        impulses[active[static_cast<std::size_t>(r)]] = j[r];
     return impulses;
 }
 

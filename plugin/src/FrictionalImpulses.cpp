@@ -3,8 +3,6 @@
 #include <crumple/base/Assert.h>
 #include <crumple/plugin/FrictionalImpulses.h>
 
-#include "ClosingContacts.h"
-
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -189,11 +187,10 @@ std::vector<ContactImpulse> FrictionalImpulses(const BodyState& inA, const BodyS
     CRUMPLE_ASSERT(inRestitution >= 0.0 && inRestitution <= 1.0 && inClosingSpeed >= 0.0,
                    "FrictionalImpulses: restitution outside [0, 1] or a negative closing speed");
     // intent: the frictionless answer first, the start of the joint solve and the whole answer without friction
-    const ClosingContacts closing = FindClosingContacts(inA, inB, inContacts, inRestitution, inClosingSpeed);
-    const Eigen::VectorXd normal = SolveNormalImpulses(closing.mResponse, closing.mTarget);
+    const std::vector<double> normal = SimultaneousImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed);
     std::vector<ContactImpulse> impulses(inContacts.size());
-    for (std::size_t r = 0; r < closing.mIndices.size(); ++r)
-        impulses[closing.mIndices[r]].mNormal = normal[static_cast<Eigen::Index>(r)];
+    for (std::size_t i = 0; i < inContacts.size(); ++i)
+        impulses[i].mNormal = normal[i];
     bool any_friction = false;
     for (std::size_t i = 0; i < inContacts.size(); ++i)
     {

@@ -2,35 +2,21 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/BaraffImpulse.h>
 
+#include "ImpulseBodies.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace crumple;
 using namespace crumple::plugin;
+using crumple::common::Sphere;
+using crumple::common::StaticGround;
 
 namespace
 {
 
 constexpr double cTolerance = 1.0e-12;
-
-BodyState Sphere(double inMass, double inRadius, const Vec3& inCentre, const Vec3& inVelocity)
-{
-    BodyState state;
-    state.mMass = inMass;
-    state.mInverseInertiaWorld = Mat3::Identity() / (0.4 * inMass * inRadius * inRadius);
-    state.mTransform.mTranslation = inCentre;
-    state.mCenterOfMass = inCentre;
-    state.mLinearVelocity = inVelocity;
-    return state;
-}
-
-BodyState StaticGround()
-{
-    BodyState ground;
-    ground.mMotionType = EMotionType::Static;
-    return ground;
-}
 
 double Relative(double inValue, double inReference)
 {

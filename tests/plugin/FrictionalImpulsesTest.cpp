@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/FrictionalImpulses.h>
 
+#include "ImpulseBodies.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,27 +12,11 @@
 
 using namespace crumple;
 using namespace crumple::plugin;
+using crumple::common::Sphere;
+using crumple::common::StaticGround;
 
 namespace
 {
-
-BodyState Sphere(double inMass, double inRadius, const Vec3& inCentre, const Vec3& inVelocity)
-{
-    BodyState state;
-    state.mMass = inMass;
-    state.mInverseInertiaWorld = Mat3::Identity() / (0.4 * inMass * inRadius * inRadius);
-    state.mTransform.mTranslation = inCentre;
-    state.mCenterOfMass = inCentre;
-    state.mLinearVelocity = inVelocity;
-    return state;
-}
-
-BodyState StaticGround()
-{
-    BodyState ground;
-    ground.mMotionType = EMotionType::Static;
-    return ground;
-}
 
 // A box-like body of random mass, inertia, orientation and velocity, moving down onto the plane z = 0.
 BodyState RandomFaller(std::mt19937& ioRandom)
