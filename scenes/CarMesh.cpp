@@ -249,15 +249,15 @@ std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<s
     // intent: each vertex's part (-1: none), the added ones from their parents in order (a parent may itself
     // be an added vertex of a lower index)
     const std::size_t vertices = inRefined.mMesh.mPositions.size();
-    const std::size_t first_added = vertices - inRefined.mMidpointParents.size();
+    const std::size_t first_added = vertices - inRefined.mSplitParents.size();
     std::vector<int> part_of(vertices, -1);
     for (std::size_t part = 0; part < inParts.size(); ++part)
         for (std::uint32_t v : inParts[part])
             if (v < first_added)
                 part_of[v] = static_cast<int>(part);
-    for (std::size_t k = 0; k < inRefined.mMidpointParents.size(); ++k)
+    for (std::size_t k = 0; k < inRefined.mSplitParents.size(); ++k)
     {
-        const auto& parents = inRefined.mMidpointParents[k];
+        const auto& parents = inRefined.mSplitParents[k];
         if (part_of[parents[0]] >= 0 && part_of[parents[0]] == part_of[parents[1]])
             part_of[first_added + k] = part_of[parents[0]];
     }

@@ -75,8 +75,8 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings);
 /// LoadCarBody's mesh alone.
 Result<ffd::TriangleMesh> LoadCarMesh(const CarMeshSettings& inSettings);
 
-/// inParts' vertex lists after ffd::RefineLongEdges: a vertex added at the midpoint of two vertices of one
-/// part joins that part (a part's edges join its own vertices only, so nothing else changes).
+/// inParts' vertex lists after ffd::RefineLongEdges or ffd::SplitCaps: a vertex added on the edge between two
+/// vertices of one part joins that part (a part's edges join its own vertices only, so nothing else changes).
 std::vector<std::vector<std::uint32_t>> PartsAfterRefinement(const std::vector<std::vector<std::uint32_t>>& inParts,
                                                              const ffd::RefinedMesh& inRefined);
 

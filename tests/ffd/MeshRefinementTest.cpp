@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 // RefineLongEdges and FlipFlatEdges: the surface stays the same, the triangles get short and well shaped,
 // and a smooth dent that turns a bumper's slivers over leaves the refined triangles of the same face alone.
+#include "MeshChecks.h"
+
 #include <crumple/ffd/FlipFlatEdges.h>
 #include <crumple/ffd/RefineLongEdges.h>
 
@@ -18,23 +20,10 @@
 
 using namespace crumple;
 using namespace crumple::ffd;
+using namespace crumple::ffd::test;
 
 namespace
 {
-
-Vec3 AreaVector(const TriangleMesh& inMesh, const std::array<std::uint32_t, 3>& inTriangle)
-{
-    const Vec3& a = inMesh.mPositions[inTriangle[0]];
-    return 0.5 * (inMesh.mPositions[inTriangle[1]] - a).cross(inMesh.mPositions[inTriangle[2]] - a);
-}
-
-double TotalArea(const TriangleMesh& inMesh)
-{
-    double area = 0.0;
-    for (const auto& t : inMesh.mTriangles)
-        area += AreaVector(inMesh, t).norm();
-    return area;
-}
 
 double LongestEdge(const TriangleMesh& inMesh)
 {
@@ -43,19 +32,6 @@ double LongestEdge(const TriangleMesh& inMesh)
         for (int k = 0; k < 3; ++k)
             longest = std::max(longest, (inMesh.mPositions[t[k]] - inMesh.mPositions[t[(k + 1) % 3]]).norm());
     return longest;
-}
-
-// Every directed edge once, and its reverse once: a closed, consistently oriented, manifold surface.
-bool IsClosedManifold(const TriangleMesh& inMesh)
-{
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
-    for (const auto& t : inMesh.mTriangles)
-        for (int k = 0; k < 3; ++k)
-            ++directed[{t[k], t[(k + 1) % 3]}];
-    for (const auto& [edge, count] : directed)
-        if (count != 1 || directed.count({edge.second, edge.first}) != 1 || directed.at({edge.second, edge.first}) != 1)
-            return false;
-    return true;
 }
 
 // A closed cube of side 2 m about the origin, two triangles per face, counter-clockwise from outside.
@@ -90,37 +66,6 @@ TriangleMesh BumperUnderside()
     return mesh;
 }
 
-// A pole's pocket pushed along -x: 0.27 m at y = 0, fading over 0.3 m (smooth, and folding nothing: x' = x -
-// w(y) keeps every horizontal surface's orientation).
-TriangleMesh Pocket(const TriangleMesh& inMesh)
-{
-    TriangleMesh dented = inMesh;
-    for (Vec3& p : dented.mPositions)
-        p.x() -= 0.27 * std::exp(-(p.y() / 0.3) * (p.y() / 0.3));
-    return dented;
-}
-
-int TurnedOver(const TriangleMesh& inRest, const TriangleMesh& inNow)
-{
-    int turned = 0;
-    for (const auto& t : inRest.mTriangles)
-        turned += AreaVector(inRest, t).dot(AreaVector(inNow, t)) < 0.0 ? 1 : 0;
-    return turned;
-}
-
-double SmallestAngle(const TriangleMesh& inMesh)
-{
-    double smallest = std::numbers::pi;
-    for (const auto& t : inMesh.mTriangles)
-        for (int k = 0; k < 3; ++k)
-        {
-            const Vec3 u = inMesh.mPositions[t[(k + 1) % 3]] - inMesh.mPositions[t[k]];
-            const Vec3 v = inMesh.mPositions[t[(k + 2) % 3]] - inMesh.mPositions[t[k]];
-            smallest = std::min(smallest, std::atan2(u.cross(v).norm(), u.dot(v)));
-        }
-    return smallest;
-}
-
 } // namespace
 
 TEST_CASE("RefineLongEdges: a closed cube stays closed, flat and of the same area, with no edge over the limit", "[ffd]")
@@ -144,12 +89,15 @@ TEST_CASE("RefineLongEdges: a closed cube stays closed, flat and of the same are
         CHECK(n[axis] * centre[axis] == Approx(1.0).epsilon(1e-12));
     }
     // intent: the input's vertices first, unchanged; each added one exactly its parents' midpoint
-    REQUIRE(r.mMesh.mPositions.size() == cube.mPositions.size() + r.mMidpointParents.size());
+    REQUIRE(r.mMesh.mPositions.size() == cube.mPositions.size() + r.mSplitParents.size());
+    REQUIRE(r.mSplitFractions.size() == r.mSplitParents.size());
+    for (double fraction : r.mSplitFractions)
+        CHECK(fraction == 0.5);
     for (std::size_t v = 0; v < cube.mPositions.size(); ++v)
         CHECK(r.mMesh.mPositions[v] == cube.mPositions[v]);
-    for (std::size_t k = 0; k < r.mMidpointParents.size(); ++k)
+    for (std::size_t k = 0; k < r.mSplitParents.size(); ++k)
     {
-        const auto [a, b] = r.mMidpointParents[k];
+        const auto [a, b] = r.mSplitParents[k];
         const std::size_t added = cube.mPositions.size() + k;
         CHECK(a < added);
         CHECK(b < added);
@@ -206,7 +154,7 @@ TEST_CASE("RefineLongEdges: bad input is refused with a reason", "[ffd]")
     Result<RefinedMesh> same = RefineLongEdges(cube, 10.0);
     REQUIRE(same);
     CHECK(same.Get().mMesh.mTriangles == cube.mTriangles);
-    CHECK(same.Get().mMidpointParents.empty());
+    CHECK(same.Get().mSplitParents.empty());
 }
 
 TEST_CASE("FlipFlatEdges: a fan of slivers becomes Delaunay, the face and its outline unchanged", "[ffd]")
@@ -222,7 +170,7 @@ TEST_CASE("FlipFlatEdges: a fan of slivers becomes Delaunay, the face and its ou
     for (const auto& t : flipped.mTriangles)
         CHECK(AreaVector(flipped, t).z() < 0.0);
     // a Delaunay triangulation has the largest smallest angle of all (the strip is thin: it stays small)
-    CHECK(SmallestAngle(flipped) >= SmallestAngle(fan));
+    CHECK(CornerAngleRange(flipped).mSmallest >= CornerAngleRange(fan).mSmallest);
     // intent: no edge left whose two facing angles add up to more than pi (the Delaunay property)
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
     for (const auto& t : flipped.mTriangles)
@@ -360,7 +308,7 @@ TEST_CASE("FlipNearlyFlatEdges: a fan flat to 0.2 mm becomes Delaunay within the
     CHECK(nearly.mTriangles.size() == fan.mTriangles.size());
     for (const auto& t : nearly.mTriangles)
         CHECK(AreaVector(nearly, t).z() < 0.0);
-    CHECK(SmallestAngle(nearly) > SmallestAngle(fan));
+    CHECK(CornerAngleRange(nearly).mSmallest > CornerAngleRange(fan).mSmallest);
     // intent: Delaunay: no inner edge left whose two facing angles add up to more than pi (every quad of the
     // fan is convex and within the deviation, so every such edge could flip)
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
@@ -478,7 +426,7 @@ TEST_CASE("FlipNearlyFlatEdges: a closed mesh stays closed; a seam's other side 
         CHECK(flips.Get() > 0);
         CHECK(IsClosedManifold(flipped));
         CHECK(TotalArea(flipped) == Approx(TotalArea(cube)).epsilon(1e-6));
-        CHECK(SmallestAngle(flipped) >= SmallestAngle(cube));
+        CHECK(CornerAngleRange(flipped).mSmallest >= CornerAngleRange(cube).mSmallest);
         // intent: no flip crossed a cube edge (0.1 mm noise against a 90-degree crease)
         CHECK(SurfaceDeviation(flipped, cube) <= 2.0e-4);
     }

@@ -14,14 +14,16 @@
 namespace crumple::ffd
 {
 
-/// A mesh with its long edges split, and where each added vertex came from.
+/// A mesh with some of its edges split, and where each added vertex came from.
 struct CRUMPLE_API RefinedMesh
 {
     TriangleMesh mMesh; ///< The input's vertices first, in their order, then the added ones; its triangles
-    /// #added by 2: added vertex mMesh.mPositions.size() - mMidpointParents.size() + k is the midpoint of
-    /// vertices mMidpointParents[k] (either may itself be an added vertex of a lower index). A game carries its
-    /// own vertex attributes (texture coordinates, colours, bone weights) over with the same midpoints.
-    std::vector<std::array<std::uint32_t, 2>> mMidpointParents;
+    /// #added by 2: added vertex mMesh.mPositions.size() - mSplitParents.size() + k lies on the edge between
+    /// vertices mSplitParents[k] (either may itself be an added vertex of a lower index), at
+    /// (1 - f) p0 + f p1 with f = mSplitFractions[k]. A game carries its own vertex attributes (texture
+    /// coordinates, colours, bone weights) over with the same weights.
+    std::vector<std::array<std::uint32_t, 2>> mSplitParents;
+    std::vector<double> mSplitFractions; ///< #added fractions f in (0, 1) (RefineLongEdges: 0.5, the midpoints)
 };
 
 /// Splits every edge longer than inMaxEdge at its midpoint until none is, keeping the mesh conforming (an
