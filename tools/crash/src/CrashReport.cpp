@@ -75,7 +75,7 @@ std::string MeshPreparationText(const MeshPreparation& inMesh)
             " (edges up to " + Number(inMesh.mMaxEdge, 3) + " m; " + std::to_string(inMesh.mFlatFlips) + " flips in flat parts";
     if (inMesh.mFlipDeviation > 0.0)
         text += ", " + std::to_string(inMesh.mNearlyFlatFlips) + " within " + Number(inMesh.mFlipDeviation, 4) + " m";
-    return text + ")";
+    return text + ", " + std::to_string(inMesh.mCapSplitVertices) + " vertices added to split caps)";
 }
 
 } // namespace
@@ -145,7 +145,8 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
         report["mesh_preparation"] = {{"file_triangles", mesh->mFileTriangles}, {"file_vertices", mesh->mFileVertices},
                                       {"triangles", mesh->mTriangles},         {"vertices", mesh->mVertices},
                                       {"max_edge_m", mesh->mMaxEdge},          {"flat_flips", mesh->mFlatFlips},
-                                      {"flip_deviation_m", mesh->mFlipDeviation}, {"nearly_flat_flips", mesh->mNearlyFlatFlips}};
+                                      {"flip_deviation_m", mesh->mFlipDeviation}, {"nearly_flat_flips", mesh->mNearlyFlatFlips},
+                                      {"cap_split_vertices", mesh->mCapSplitVertices}};
     else
         report["mesh_preparation"] = nullptr;
     report["crush_profile"] = {{"damage_width_m", inOutcome.mFrontProfile.mDamageWidth},
