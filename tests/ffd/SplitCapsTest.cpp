@@ -3,6 +3,7 @@
 // SplitCaps: a cap on a crease, which no flip may remove, is split at its foot; the surface keeps its shape
 // exactly and stays closed, a seam's sides keep their own vertices, and a pole's pocket that turned the cap
 // over turns none of its pieces.
+#include "BoxMesh.h"
 #include "MeshChecks.h"
 
 #include <crumple/ffd/FlipFlatEdges.h>
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <random>
 #include <set>
 
 using namespace crumple;
@@ -172,4 +175,121 @@ TEST_CASE("SplitCaps: bad input is refused with a reason", "[ffd]")
     TriangleMesh not_finite = lip;
     not_finite.mPositions[3].x() = std::numeric_limits<double>::infinity();
     CHECK_FALSE(SplitCaps(not_finite, cCapAngle));
+}
+
+namespace
+{
+
+// Caps as SplitCaps takes them: a corner of at least the cap angle, the far corner off the long edge by more
+// than 1e-9 of its length (closer is a degenerate triangle, which it leaves).
+int CountCaps(const TriangleMesh& inMesh)
+{
+    int caps = 0;
+    for (const auto& t : inMesh.mTriangles)
+    {
+        TriangleMesh one;
+        one.mPositions = {inMesh.mPositions[t[0]], inMesh.mPositions[t[1]], inMesh.mPositions[t[2]]};
+        one.mTriangles = {{0, 1, 2}};
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, (one.mPositions[(k + 1) % 3] - one.mPositions[k]).norm());
+        const double height = 2.0 * AreaVector(one, one.mTriangles[0]).norm() / longest;
+        caps += height > 1e-9 * longest && CornerAngleRange(one).mLargest >= cCapAngle ? 1 : 0;
+    }
+    return caps;
+}
+
+// Every directed edge's reverse is there, by position: a surface closed across its seams.
+bool IsClosedByPosition(const TriangleMesh& inMesh)
+{
+    auto key = [&](std::uint32_t inA, std::uint32_t inB)
+    {
+        const Vec3& a = inMesh.mPositions[inA];
+        const Vec3& b = inMesh.mPositions[inB];
+        return std::array<double, 6>{a.x(), a.y(), a.z(), b.x(), b.y(), b.z()};
+    };
+    std::map<std::array<double, 6>, int> directed;
+    for (const auto& t : inMesh.mTriangles)
+        for (int k = 0; k < 3; ++k)
+            ++directed[key(t[k], t[(k + 1) % 3])];
+    for (const auto& t : inMesh.mTriangles)
+        for (int k = 0; k < 3; ++k)
+            if (directed[key(t[(k + 1) % 3], t[k])] != directed[key(t[k], t[(k + 1) % 3])])
+                return false;
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("SplitCaps stress: random boxes full of caps and seams stay valid, closed and of the same area, "
+          "and lose every cap",
+          "[ffd]")
+{
+    // A subdivided box whose grid vertices are pulled, at random, onto the line through two of their
+    // neighbours (caps of exactly 180 degrees, degenerate), or to within a millimetre of it (caps), at every
+    // scale from a millimetre to ten kilometres; one face's vertices split from the rest (a seam).
+    std::mt19937_64 random(2026);
+    for (int trial = 0; trial < 24; ++trial)
+    {
+        const double scale = std::pow(10.0, -3.0 + 7.0 * (trial % 8) / 7.0);
+        TriangleMesh mesh = common::MakeBoxMesh(Vec3(2.0, 0.9, 0.7) * scale, {9, 5, 4});
+        std::uniform_int_distribution<std::size_t> pick(0, mesh.mTriangles.size() - 1);
+        std::uniform_real_distribution<double> offset(-1e-3, 1e-3), along(0.2, 0.8);
+        for (int pull = 0; pull < 40; ++pull)
+        {
+            const auto& t = mesh.mTriangles[pick(random)];
+            const Vec3 a = mesh.mPositions[t[1]], b = mesh.mPositions[t[2]];
+            const Vec3 on_line = a + along(random) * (b - a);
+            // intent: the same plane (the box's faces are flat), so the surface stays a box
+            Vec3 moved = on_line + (pull % 2 == 0 ? 0.0 : offset(random) * scale) * (b - a).normalized();
+            const Vec3 before = mesh.mPositions[t[0]];
+            for (int axis = 0; axis < 3; ++axis)
+                if (std::abs(std::abs(before[axis]) - std::abs(mesh.mPositions[t[1]][axis])) == 0.0 &&
+                    std::abs(std::abs(before[axis]) - std::abs(mesh.mPositions[t[2]][axis])) == 0.0)
+                    moved[axis] = before[axis];
+            mesh.mPositions[t[0]] = moved;
+        }
+        if (trial % 3 == 0)
+        {
+            // intent: the +x face's triangles take their own copies of their vertices (a hard edge)
+            std::map<std::uint32_t, std::uint32_t> copy;
+            for (auto& t : mesh.mTriangles)
+            {
+                const Vec3 centre =
+                    (mesh.mPositions[t[0]] + mesh.mPositions[t[1]] + mesh.mPositions[t[2]]) / 3.0;
+                if (!(centre.x() > 1.999 * scale))
+                    continue;
+                for (std::uint32_t& v : t)
+                {
+                    const auto [it, added] =
+                        copy.try_emplace(v, static_cast<std::uint32_t>(mesh.mPositions.size()));
+                    if (added)
+                        mesh.mPositions.push_back(mesh.mPositions[v]);
+                    v = it->second;
+                }
+            }
+        }
+        INFO("trial " << trial << ", scale " << scale << " m, " << CountCaps(mesh) << " caps");
+        REQUIRE(IsClosedByPosition(mesh));
+        REQUIRE(CountCaps(mesh) > 0); // the premise
+        const double area = TotalArea(mesh);
+        TriangleMesh cut = mesh;
+        int rounds = 0;
+        for (; rounds < 16; ++rounds)
+        {
+            Result<RefinedMesh> split = SplitCaps(cut, cCapAngle);
+            REQUIRE(split);
+            CheckAddedVertices(split.Get());
+            if (split.Get().mSplitParents.empty())
+                break;
+            cut = split.Get().mMesh;
+            REQUIRE(ValidateTriangleMesh(cut));
+            REQUIRE(FlipNearlyFlatEdges(cut, 1e-3 * scale, true, cCapAngle));
+        }
+        INFO(rounds << " rounds, " << CountCaps(cut) << " caps left");
+        CHECK(ValidateTriangleMesh(cut));
+        CHECK(TotalArea(cut) == Approx(area).epsilon(1e-9));
+        CHECK(IsClosedByPosition(cut));
+        CHECK(CountCaps(cut) == 0); // measured: 2-11 caps each, none left after 1-5 rounds
+    }
 }
