@@ -88,7 +88,12 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
             const std::uint32_t from = triangles[t][k], to = triangles[t][(k + 1) % 3];
             if (inSeedAngle > 0.0)
             {
-                if (AngleAt(positions[triangles[t][(k + 2) % 3]], positions[from], positions[to]) >= inSeedAngle)
+                // intent: a corner whose edges do not point apart (u . v >= 0) is at most pi/2, so past an obtuse
+                // seed angle it needs no arctangent: the same decisions, at a third of the cost on a car's mesh
+                const Vec3& apex = positions[triangles[t][(k + 2) % 3]];
+                if (inSeedAngle > 0.5 * std::numbers::pi && (positions[from] - apex).dot(positions[to] - apex) >= 0.0)
+                    continue;
+                if (AngleAt(apex, positions[from], positions[to]) >= inSeedAngle)
                     queue.push_back(edge_key(from, to));
             }
             else if (name(from) < name(to))
