@@ -2,32 +2,68 @@
 // SPDX-License-Identifier: MIT
 #include "SeamTwins.h"
 
-#include <algorithm>
-#include <numeric>
+#include <array>
+#include <bit>
+#include <cstring>
 
 namespace crumple::ffd
 {
 
+namespace
+{
+
+// A position's bits, with -0.0 read as 0.0 so that positions equal by == have equal keys.
+using PositionKey = std::array<std::uint64_t, 3>;
+
+PositionKey KeyOf(const Vec3& inPosition)
+{
+    PositionKey key;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        const double value = inPosition[axis] == 0.0 ? 0.0 : inPosition[axis];
+        std::memcpy(&key[static_cast<std::size_t>(axis)], &value, sizeof(double));
+    }
+    return key;
+}
+
+struct PositionKeyHash
+{
+    std::size_t operator()(const PositionKey& inKey) const
+    {
+        // intent: mix the three words (splitmix64's finalizer), so grid-aligned coordinates spread
+        std::uint64_t h =
+            inKey[0] * 0x9E3779B97F4A7C15ull ^ std::rotl(inKey[1], 21) ^ std::rotl(inKey[2], 42);
+        h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+        h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+        return static_cast<std::size_t>(h ^ (h >> 31));
+    }
+};
+
+} // namespace
+
 std::vector<std::uint32_t> SeamTwins(const std::vector<Vec3>& inPositions)
 {
-    // intent: sort by position, ties by index, so each run of equal positions starts at its lowest index
-    std::vector<std::uint32_t> order(inPositions.size());
-    std::iota(order.begin(), order.end(), 0u);
-    auto less = [&](std::uint32_t inA, std::uint32_t inB) {
-        const Vec3& a = inPositions[inA];
-        const Vec3& b = inPositions[inB];
-        if (a.x() != b.x())
-            return a.x() < b.x();
-        if (a.y() != b.y())
-            return a.y() < b.y();
-        if (a.z() != b.z())
-            return a.z() < b.z();
-        return inA < inB;
-    };
-    std::sort(order.begin(), order.end(), less);
+    // intent: in index order, each vertex takes the first index seen at its position, the lowest: an
+    // open-addressed table of vertex indices (linear probing, at most half full) instead of a sort by
+    // position, the same answer in linear time with one allocation (it runs once per flip or split pass)
+    constexpr std::uint32_t cEmpty = 0xFFFFFFFFu;
+    std::size_t capacity = 16;
+    while (capacity < 2 * inPositions.size())
+        capacity *= 2;
+    std::vector<std::uint32_t> table(capacity, cEmpty);
+    std::vector<PositionKey> keys(inPositions.size());
     std::vector<std::uint32_t> twin(inPositions.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-        twin[order[i]] = (i > 0 && inPositions[order[i]] == inPositions[order[i - 1]]) ? twin[order[i - 1]] : order[i];
+    const PositionKeyHash hash;
+    for (std::size_t v = 0; v < inPositions.size(); ++v)
+    {
+        keys[v] = KeyOf(inPositions[v]);
+        std::size_t slot = hash(keys[v]) & (capacity - 1);
+        while (table[slot] != cEmpty && keys[table[slot]] != keys[v])
+            slot = (slot + 1) & (capacity - 1);
+        if (table[slot] == cEmpty)
+            table[slot] = static_cast<std::uint32_t>(v);
+        twin[v] = table[slot];
+    }
     return twin;
 }
 
