@@ -114,12 +114,21 @@ Result<RefinedMesh> SplitCaps(const TriangleMesh& inMesh, double inCapAngle)
     std::unordered_map<std::uint64_t, std::uint32_t> added;
     std::vector<std::array<std::uint32_t, 3>>& triangles = refined.mMesh.mTriangles;
     triangles.reserve(inMesh.mTriangles.size() + 4 * splits.size());
+    // intent: look an edge up only when both its ends (by twin) end a split edge: most triangles touch none
+    std::vector<std::uint8_t> on_split(inMesh.mPositions.size(), 0);
+    for (const auto& [key, split] : splits)
+    {
+        on_split[static_cast<std::uint32_t>(key)] = 1;
+        on_split[static_cast<std::uint32_t>(key >> 32)] = 1;
+    }
     for (const auto& triangle : inMesh.mTriangles)
     {
         std::array<std::uint32_t, 3> cut = {cNoSplit, cNoSplit, cNoSplit};
         for (int k = 0; k < 3; ++k)
         {
             const std::uint32_t a = triangle[k], b = triangle[(k + 1) % 3];
+            if (on_split[twin[a]] == 0 || on_split[twin[b]] == 0)
+                continue;
             const auto split = splits.find(EdgeKey(twin[a], twin[b]));
             if (split == splits.end())
                 continue;
