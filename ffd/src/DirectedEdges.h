@@ -19,6 +19,9 @@ public:
 
     explicit DirectedEdges(std::size_t inVertexCount) : mEdges(inVertexCount) {}
 
+    /// Room for inCount edges from inFrom (its triangles' corners), so that adding them allocates once
+    void Reserve(std::uint32_t inFrom, std::size_t inCount) { mEdges.Reserve(inFrom, inCount); }
+
     /// Records that inTriangle has the edge; a second triangle with it marks it cNonManifold
     void Add(std::uint32_t inFrom, std::uint32_t inTo, std::uint32_t inTriangle)
     {

@@ -59,6 +59,16 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
     auto edge_key = [&](std::uint32_t inFrom, std::uint32_t inTo) { return DirectedKey(name(inFrom), name(inTo)); };
     // intent: each directed edge's triangle, cNonManifold for an edge used twice the same way (never flipped)
     DirectedEdges owner(positions.size());
+    {
+        // intent: each vertex's list allocated once at its size (a flip adds an edge now and then)
+        std::vector<std::uint32_t> out_degree(positions.size(), 0);
+        for (const Triangle& triangle : triangles)
+            for (std::uint32_t v : triangle)
+                ++out_degree[name(v)];
+        for (std::size_t v = 0; v < out_degree.size(); ++v)
+            if (out_degree[v] > 0)
+                owner.Reserve(static_cast<std::uint32_t>(v), out_degree[v] + 2);
+    }
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             owner.Add(name(triangles[t][k]), name(triangles[t][(k + 1) % 3]), static_cast<std::uint32_t>(t));

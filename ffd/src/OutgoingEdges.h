@@ -34,6 +34,9 @@ public:
         return nullptr;
     }
 
+    /// Room for inCount entries from inFrom, so that adding them allocates once
+    void Reserve(std::uint32_t inFrom, std::size_t inCount) { mOut[inFrom].reserve(inCount); }
+
     /// Adds an entry for an edge that has none (Find returned null)
     void Insert(std::uint32_t inFrom, std::uint32_t inTo, const Value& inValue) { mOut[inFrom].push_back({inTo, inValue}); }
 
