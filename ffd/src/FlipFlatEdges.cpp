@@ -140,6 +140,11 @@ std::size_t FlipWhere(TriangleMesh& ioMesh, const std::vector<std::uint32_t>& in
             continue;
         // the old pair's own indices of a and b (different across a seam)
         const std::uint32_t a0 = triangles[t0][k0], b0 = triangles[t0][(k0 + 1) % 3], a1 = triangles[t1][(k1 + 1) % 3];
+        // intent: two corners whose edges do not point apart are at most pi/2 each, never more than pi
+        // together: no arctangent needed to leave the edge (most edges of a mesh)
+        if ((positions[a0] - positions[c]).dot(positions[b0] - positions[c]) >= 0.0 &&
+            (positions[b0] - positions[d]).dot(positions[a0] - positions[d]) >= 0.0)
+            continue;
         const double angle_c = AngleAt(positions[c], positions[a0], positions[b0]);
         const double angle_d = AngleAt(positions[d], positions[b0], positions[a0]);
         // a hair above pi: cocircular quads are left alone, so no pair flips back and forth
