@@ -1,31 +1,16 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "CarMesh.h"
+#include "RemoveCaps.h"
 
 #include <crumple/crash/RecutCarMesh.h>
 #include <crumple/ffd/FlipFlatEdges.h>
 #include <crumple/ffd/RefineLongEdges.h>
-#include <crumple/ffd/SplitCaps.h>
 
-#include <numbers>
 #include <utility>
 
 namespace crumple::crash
 {
-
-namespace
-{
-
-// The flips start at caps, triangles with a corner of at least this: every triangle the Toy Car's pole,
-// offset and 30-degree hits turned over had one over 150 degrees (460 of 467 over 170). Flipping every
-// nearly flat edge instead retriangulated the whole body (155,108 flips) and, across the split vertices of
-// hard edges, mixed the two sides' normals: the trims' shading turned speckled in the pictures.
-constexpr double cCapAngle = 150.0 * std::numbers::pi / 180.0;
-
-// Rounds of cap splits and flips: on the Toy Car 4,193 split edges, then 1,430, 591, 238, 81, 31, ...
-constexpr int cMaxCapRounds = 16;
-
-} // namespace
 
 Result<MeshPreparation> RecutCarMesh(ffd::TriangleMesh& ioMesh, std::vector<std::vector<std::uint32_t>>& ioRigidParts,
                                      double inMaxEdge, double inFlipDeviation)
@@ -49,36 +34,12 @@ Result<MeshPreparation> RecutCarMesh(ffd::TriangleMesh& ioMesh, std::vector<std:
         if (flipped.HasError())
             return flipped.GetError();
         preparation.mFlatFlips += flipped.Get();
-        if (inFlipDeviation > 0.0)
-        {
-            preparation.mFlipDeviation = inFlipDeviation;
-            flipped = ffd::FlipNearlyFlatEdges(ioMesh, inFlipDeviation, true, cCapAngle);
-            if (flipped.HasError())
-                return flipped.GetError();
-            preparation.mNearlyFlatFlips = flipped.Get();
-        }
-        // The caps no flip removed lie on creases (the Toy Car's front lip): split them at their feet. A
-        // neighbour split with a cap can leave a cap among its pieces; a nearly flat flip removes most of those,
-        // so the two alternate until no cap is left.
-        for (int round = 0; round < cMaxCapRounds; ++round)
-        {
-            Result<ffd::RefinedMesh> split = ffd::SplitCaps(ioMesh, cCapAngle);
-            if (split.HasError())
-                return split.GetError();
-            const std::size_t added = split.Get().mSplitParents.size();
-            if (added == 0)
-                break;
-            ioRigidParts = samples::PartsAfterRefinement(ioRigidParts, split.Get());
-            ioMesh = std::move(split.Get().mMesh);
-            preparation.mCapSplitVertices += added;
-            if (inFlipDeviation > 0.0)
-            {
-                flipped = ffd::FlipNearlyFlatEdges(ioMesh, inFlipDeviation, true, cCapAngle);
-                if (flipped.HasError())
-                    return flipped.GetError();
-                preparation.mNearlyFlatFlips += flipped.Get();
-            }
-        }
+        preparation.mFlipDeviation = inFlipDeviation;
+        Result<samples::CapRemoval> caps = samples::RemoveCaps(ioMesh, ioRigidParts, inFlipDeviation);
+        if (caps.HasError())
+            return caps.GetError();
+        preparation.mNearlyFlatFlips = caps.Get().mFlips;
+        preparation.mCapSplitVertices = caps.Get().mSplitVertices;
     }
     preparation.mTriangles = ioMesh.mTriangles.size();
     preparation.mVertices = ioMesh.mPositions.size();
