@@ -32,6 +32,19 @@ BodyState FallingBox(const Vec3& inVelocity)
     return box;
 }
 
+// inGrid x inGrid contacts spread over the box's 4 m x 2 m bottom (one at its centre for inGrid 1), normal +z,
+// friction coefficient inFriction.
+std::vector<ImpulseContact> BottomGrid(int inGrid, double inFriction)
+{
+    std::vector<ImpulseContact> contacts;
+    for (int i = 0; i < inGrid; ++i)
+        for (int k = 0; k < inGrid; ++k)
+            contacts.push_back({Vec3(inGrid == 1 ? 0.0 : -2.0 + 4.0 * i / (inGrid - 1),
+                                     inGrid == 1 ? 0.0 : -1.0 + 2.0 * k / (inGrid - 1), 0.0),
+                                Vec3::UnitZ(), 0.0, inFriction});
+    return contacts;
+}
+
 // N contacts in a grid on the bottom of a 1,200 kg, 4 m x 2 m box falling flat at 5 m/s on static ground.
 void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
 {
@@ -39,12 +52,7 @@ void ImpulseCase(BenchTable& ioTable, int inGrid, int inRepetitions)
     const BodyState box = FallingBox(Vec3(0.0, 0.0, -v));
     BodyState ground;
     ground.mMotionType = EMotionType::Static;
-    std::vector<ImpulseContact> contacts;
-    for (int i = 0; i < inGrid; ++i)
-        for (int k = 0; k < inGrid; ++k)
-            contacts.push_back({Vec3(inGrid == 1 ? 0.0 : -2.0 + 4.0 * i / (inGrid - 1),
-                                     inGrid == 1 ? 0.0 : -1.0 + 2.0 * k / (inGrid - 1), 0.0),
-                                Vec3::UnitZ()});
+    const std::vector<ImpulseContact> contacts = BottomGrid(inGrid, 0.0);
     std::vector<double> impulses;
     constexpr int cInner = 20;
     const Timing timing = MedianTiming(inRepetitions, [] {}, [&] {
@@ -69,10 +77,7 @@ void FrictionCase(BenchTable& ioTable, int inGrid, int inRepetitions)
     const BodyState box = FallingBox(Vec3(10.0, 0.0, -v));
     BodyState ground;
     ground.mMotionType = EMotionType::Static;
-    std::vector<ImpulseContact> contacts;
-    for (int i = 0; i < inGrid; ++i)
-        for (int k = 0; k < inGrid; ++k)
-            contacts.push_back({Vec3(-2.0 + 4.0 * i / (inGrid - 1), -1.0 + 2.0 * k / (inGrid - 1), 0.0), Vec3::UnitZ(), 0.0, mu});
+    const std::vector<ImpulseContact> contacts = BottomGrid(inGrid, mu);
     std::vector<ContactImpulse> impulses;
     constexpr int cInner = 20;
     const Timing timing = MedianTiming(inRepetitions, [] {}, [&] {

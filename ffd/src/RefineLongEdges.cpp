@@ -12,18 +12,6 @@
 namespace crumple::ffd
 {
 
-namespace
-{
-
-// An undirected edge as one key: both triangles that share it find the same midpoint.
-std::uint64_t EdgeKey(std::uint32_t inA, std::uint32_t inB)
-{
-    const std::uint64_t low = std::min(inA, inB), high = std::max(inA, inB);
-    return (high << 32) | low;
-}
-
-} // namespace
-
 Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles)
 {
     if (Status valid = ValidateTriangleMesh(inMesh); !valid)
@@ -51,7 +39,7 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
                 const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
                 if (!((positions[a] - positions[b]).squaredNorm() > max_edge2))
                     continue;
-                const auto [it, added] = midpoints.try_emplace(EdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
+                const auto [it, added] = midpoints.try_emplace(UndirectedEdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
                 if (added)
                 {
                     if (positions.size() >= 0xFFFFFFFEu)

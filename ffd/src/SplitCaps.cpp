@@ -17,12 +17,6 @@ namespace crumple::ffd
 namespace
 {
 
-std::uint64_t EdgeKey(std::uint32_t inA, std::uint32_t inB)
-{
-    const std::uint64_t low = std::min(inA, inB), high = std::max(inA, inB);
-    return (high << 32) | low;
-}
-
 // A far corner closer to the long edge than this fraction of its length makes a degenerate triangle.
 constexpr double cDegenerate = 1e-9;
 
@@ -85,7 +79,7 @@ Result<RefinedMesh> SplitCaps(const TriangleMesh& inMesh, double inCapAngle)
         const std::uint32_t a = triangle[(corner + 1) % 3], b = triangle[(corner + 2) % 3];
         if (twin[a] == twin[b])
             continue;
-        const std::uint64_t key = EdgeKey(twin[a], twin[b]);
+        const std::uint64_t key = UndirectedEdgeKey(twin[a], twin[b]);
         if (splits.contains(key))
             continue;
         const std::uint32_t from = std::min(twin[a], twin[b]), to = std::max(twin[a], twin[b]);
@@ -129,11 +123,11 @@ Result<RefinedMesh> SplitCaps(const TriangleMesh& inMesh, double inCapAngle)
             const std::uint32_t a = triangle[k], b = triangle[(k + 1) % 3];
             if (on_split[twin[a]] == 0 || on_split[twin[b]] == 0)
                 continue;
-            const auto split = splits.find(EdgeKey(twin[a], twin[b]));
+            const auto split = splits.find(UndirectedEdgeKey(twin[a], twin[b]));
             if (split == splits.end())
                 continue;
             const auto [it, is_new] =
-                added.try_emplace(EdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
+                added.try_emplace(UndirectedEdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
             if (is_new)
             {
                 if (positions.size() >= 0xFFFFFFFEu)

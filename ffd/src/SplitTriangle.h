@@ -11,6 +11,14 @@
 namespace crumple::ffd
 {
 
+/// An undirected edge as one key, whichever way round its ends are given: both triangles on an edge (and
+/// both sides of a seam, given the ends' twins) find the same entry.
+inline std::uint64_t UndirectedEdgeKey(std::uint32_t inA, std::uint32_t inB)
+{
+    const std::uint64_t low = inA < inB ? inA : inB, high = inA < inB ? inB : inA;
+    return (high << 32) | low;
+}
+
 /// Marks an edge of SplitTriangle's inMid that is not split.
 constexpr std::uint32_t cNoSplit = 0xFFFFFFFFu;
 

@@ -138,14 +138,12 @@ ffd::TriangleMesh RaceCarMesh()
         // The file's caps out (flat parts Delaunay, caps flipped within a millimetre or split): with them a
         // session's dents turned 78 (Bullet) and 135 (ODE) triangles over, every one a cap. No long-edge
         // refinement, which would double the triangles a dent updates.
-        ffd::TriangleMesh mesh = std::move(loaded).Get();
+        ffd::TriangleMesh mesh = loaded.Get();
         std::vector<std::vector<std::uint32_t>> no_parts;
         if (ffd::FlipFlatEdges(mesh) && RemoveCaps(mesh, no_parts, cCarCapDeviation))
             return mesh;
         std::printf("note: the car's caps could not be taken out; using the mesh as the file has it\n");
-        loaded = LoadCarMesh(ToyCarMesh(SharedDataFolder()));
-        if (loaded)
-            return std::move(loaded).Get();
+        return std::move(loaded).Get();
     }
     std::printf("note: %s; using a procedural box car\n", loaded.GetError().mMessage.c_str());
     return common::MakeBoxMesh(Vec3(2.1, 0.95, 0.6), {42, 19, 12});
