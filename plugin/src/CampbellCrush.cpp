@@ -120,14 +120,78 @@ std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattic
     return {std::max(static_cast<int>(std::floor(low)) - 1, 0), std::min(static_cast<int>(std::ceil(high)) + 1, last)};
 }
 
+// The occupant cell's limit on a planned crush (CrushPlan): active when the crush runs within 60 degrees of
+// the body's length and the material leaves a cell. Where a footprint column stacks up, its compaction goes
+// past kappa, so the pocket's walls widen to keep facing out (the k < 2 sqrt(f) rule of PlanCampbellCrush,
+// f the column's remaining fraction); the footprint's corners and centre bound the columns (the cell's face
+// is a plane, so the room is linear across the footprint).
+void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, CrushPlan& ioPlan)
+{
+    const double extent = inLength.mMax - inLength.mMin;
+    const double along = inLength.mAxis.dot(ioPlan.mDirection);
+    // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over:
+    // a coarser lattice cannot keep a cell apart from its crush zone, and crushes as without one.
+    constexpr double cMinZoneSpacings = 4.0;
+    if (!(inMaterial.mCrushZoneFraction < 0.5) || !(extent > 0.0) || !(std::abs(along) >= 0.5) ||
+        !(inMaterial.mCrushZoneFraction * extent >= cMinZoneSpacings * ioPlan.mSpacing))
+        return;
+    ioPlan.mCellActive = true;
+    // The struck end is where the oriented axis comes in from; the cell begins a zone's share of the length
+    // further along.
+    ioPlan.mCellAxis = along > 0.0 ? inLength.mAxis : Vec3(-inLength.mAxis);
+    ioPlan.mCellFace = along > 0.0 ? inLength.mMin + inMaterial.mCrushZoneFraction * extent
+                                   : -(inLength.mMax - inMaterial.mCrushZoneFraction * extent);
+    const std::array<double, 2> sides{ioPlan.mSideMin, ioPlan.mSideMax};
+    const std::array<double, 2> thirds{ioPlan.mThirdMin, ioPlan.mThirdMax};
+    std::array<Vec3, 5> columns;
+    for (std::size_t k = 0; k < 4; ++k)
+        columns[k] = ioPlan.mFront * ioPlan.mDirection + sides[k & 1] * ioPlan.mSide + thirds[k >> 1] * ioPlan.mThird;
+    columns[4] = ioPlan.mFront * ioPlan.mDirection + 0.5 * (sides[0] + sides[1]) * ioPlan.mSide +
+                 0.5 * (thirds[0] + thirds[1]) * ioPlan.mThird;
+    for (const Vec3& column : columns)
+    {
+        const auto [crush, length] = ioPlan.ColumnCrush(column);
+        if (crush < ioPlan.mDepth)
+            ioPlan.mStackedUp = true;
+        if (crush > 0.0 && length > 0.0)
+            ioPlan.mRamp = std::max(ioPlan.mRamp, crush / (2.0 * std::sqrt(std::max(1.0 - crush / length, 0.01))));
+    }
+}
+
 } // namespace
+
+std::array<double, 2> CrushPlan::ColumnCrush(const Vec3& inPoint) const
+{
+    if (!mCellActive)
+        return {mDepth, mZoneLength};
+    // Along the column (the line through inPoint along d) the length coordinate grows by a . d per metre:
+    // the column enters the cell at this depth behind the flat layer, and keeps one spacing clear of it.
+    const double enter = mDirection.dot(inPoint) + (mCellFace - mCellAxis.dot(inPoint)) / mCellAxis.dot(mDirection) -
+                         mFront - mFlatLayer;
+    const double room = enter - mSpacing;
+    if (mZoneLength <= room)
+        return {mDepth, mZoneLength};
+    if (!(room > 0.0))
+        return {0.0, 0.0};
+    const double free = (1.0 - mKappa) * room;
+    const double packed = (1.0 - 0.5 * mKappa) * room;
+    if (mDepth <= free)
+        return {mDepth, room};
+    if (!(packed > free)) // kappa 0: the zone compacts to nothing and no further
+        return {free, room};
+    // Stacked up: C1 + (C2 - C1)(1 - exp(-(C - C1) / (C2 - C1))), slope 1 at C1 and C2 never reached.
+    return {free - (packed - free) * std::expm1(-(mDepth - free) / (packed - free)), room};
+}
 
 double CrushPlan::DisplacementAt(const Vec3& inPoint) const
 {
-    const double delta = mDirection.dot(inPoint) - mFront - mFlatLayer;
-    if (delta >= mZoneLength)
+    const auto [crush, length] = ColumnCrush(inPoint);
+    if (!(crush > 0.0))
         return 0.0;
-    const double along = delta <= 0.0 ? 1.0 : 1.0 - delta / mZoneLength;
+    const double delta = mDirection.dot(inPoint) - mFront - mFlatLayer;
+    if (delta >= length)
+        return 0.0;
+    const double along = delta <= 0.0 ? 1.0 : 1.0 - delta / length;
     const double side = mSide.dot(inPoint), third = mThird.dot(inPoint);
     // The field is full one flat-layer width past the footprint: the spline blends over two spacings, and
     // the footprint's own edge (a box face's corner contacts) must reach the impactor too.
@@ -135,7 +199,35 @@ double CrushPlan::DisplacementAt(const Vec3& inPoint) const
     if (outside >= mRamp)
         return 0.0;
     const double across = mRamp > 0.0 ? 1.0 - outside / mRamp : 1.0;
-    return mDepth * along * across;
+    return crush * along * across;
+}
+
+BodyLength MeasureBodyLength(std::span<const Vec3> inRestPositions, const Vec3& inUp)
+{
+    BodyLength length;
+    if (inRestPositions.empty())
+        return length;
+    const Vec3 up = inUp.normalized();
+    Eigen::Index least = 0;
+    up.cwiseAbs().minCoeff(&least);
+    const Vec3 first = (Vec3::Unit(least) - up.dot(Vec3::Unit(least)) * up).normalized();
+    const Vec3 second = up.cross(first);
+    constexpr double cInf = std::numeric_limits<double>::infinity();
+    std::array<double, 2> low{cInf, cInf}, high{-cInf, -cInf};
+    for (const Vec3& p : inRestPositions)
+    {
+        const std::array<double, 2> along{first.dot(p), second.dot(p)};
+        for (std::size_t k = 0; k < 2; ++k)
+        {
+            low[k] = std::min(low[k], along[k]);
+            high[k] = std::max(high[k], along[k]);
+        }
+    }
+    const std::size_t k = high[1] - low[1] > high[0] - low[0] ? 1 : 0;
+    length.mAxis = k == 0 ? first : second;
+    length.mMin = low[k];
+    length.mMax = high[k];
+    return length;
 }
 
 double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth)
@@ -194,7 +286,7 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
 
 std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
-                                           const ffd::FfdDeformer& inDeformer)
+                                           const ffd::FfdDeformer& inDeformer, const BodyLength* inLength)
 {
     if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inMaterial))
         return std::nullopt;
@@ -258,6 +350,9 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // therefore slope at most 2 sqrt(f) : 1 (1:1 at the default quarter; the 2:1 walls before turned the box
     // car's pocket walls over at 64 km/h), and the fade spans at least two control spacings.
     plan.mRamp = std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01))));
+    plan.mKappa = inMaterial.mCrushedLengthFraction;
+    plan.mSpacing = spacing;
+    LimitByCell(inMaterial, inLength != nullptr ? *inLength : MeasureBodyLength(inDeformer.GetRestMesh().mPositions, inUp), plan);
     return plan;
 }
 

@@ -37,6 +37,8 @@ Status ValidateDamageMaterial(const DamageMaterial& inMaterial)
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
     if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushedLengthFraction must be in [0, 1)");
+    if (!(material.mCrushZoneFraction > 0.0 && material.mCrushZoneFraction <= 0.5))
+        return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushZoneFraction must be in (0, 0.5]");
     return Status::Ok();
 }
 

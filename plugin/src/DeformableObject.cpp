@@ -80,7 +80,8 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
         return deformer.GetError();
     // The up axis as given (within 1e-3 of unit): a recording keeps it bit for bit, and the crush only
     // takes its direction.
-    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, std::move(deformer).Get());
+    const BodyLength length = MeasureBodyLength(deformer.Get().GetRestMesh().mPositions, inSettings.mUpAxis);
+    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, length, std::move(deformer).Get());
 }
 
 std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide,
@@ -136,11 +137,12 @@ ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, E
     if (mMaterial.mModel == ECrushModel::Campbell)
     {
         const double energy = inSide == ECollisionSide::A ? inCollision.mCrushEnergyA : inCollision.mCrushEnergyB;
-        const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer);
+        const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer, &mLength);
         if (!plan)
             return {};
         ffd::DentReport report = ApplyCrushPlan(*plan, mMaterial.mMaxInstantDeformation, mDeformer);
         report.mContactsClamped = plan->mClamped ? 1 : 0;
+        report.mStackedUp = plan->mStackedUp ? 1 : 0;
         return report;
     }
     int clamped = 0;

@@ -130,6 +130,9 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
                 vertex = reader.ReadU32();
         }
     }
+    // Before version 10 no crush stopped at an occupant cell: 0.5 leaves none. An out-of-range value is left
+    // as read, for DeformableObject::Create to refuse with its message.
+    settings.mMaterial.mCrushZoneFraction = inVersion >= 10 ? reader.ReadDouble() : 0.5;
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "object record: length does not match its contents");
     // The lattices must be exactly as large as the control state the record carries, so a forged zone size
@@ -296,6 +299,7 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
         for (std::uint32_t vertex : part)
             writer.WriteU32(vertex);
     }
+    writer.WriteDouble(settings.mMaterial.mCrushZoneFraction);
     return writer.TakeBytes();
 }
 

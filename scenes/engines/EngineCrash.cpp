@@ -52,7 +52,10 @@ void CrashCounter::OnCollision(const Collision& inCollision, std::span<const Obj
 {
     ++mCollisions;
     for (const ObjectDent& dent : inDents)
+    {
         mLimitedDents += dent.mReport.IsLimited() ? 1 : 0;
+        mStackedUpDents += dent.mReport.mStackedUp;
+    }
     mTotalImpulse += inCollision.TotalImpulse();
     mLog.push_back(inCollision);
 }

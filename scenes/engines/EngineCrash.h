@@ -110,6 +110,7 @@ public:
     int mCollisions = 0;
     double mTotalImpulse = 0.0;
     int mLimitedDents = 0; ///< Dents a bound limited (ffd::DentReport::IsLimited), any object
+    int mStackedUpDents = 0; ///< Crushes that stacked up against an occupant cell (ffd::DentReport::mStackedUp)
     std::vector<plugin::Collision> mLog; ///< Every collision, in dispatch order
 };
 

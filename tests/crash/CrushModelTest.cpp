@@ -75,7 +75,7 @@ const Run& Find(const std::string& inBody, const std::string& inTarget, double i
 
 // One test case per verdict, its checks as sections: the 128 crashes run once per process (about a minute
 // on this project's machine with the re-cut meshes), not once per check.
-TEST_CASE("Crush model: engines agree, crush grows with speed and width, the rear and the outside stay, nothing turns over, Campbell's band", "[crash][slow]")
+TEST_CASE("Crush model: engines agree, crush grows with speed and width, the roof, the rear and the outside stay, nothing turns over, Campbell's band", "[crash][slow]")
 {
     SECTION("the same crash crushes the same in Bullet and ODE, within 5 %")
     {
@@ -107,15 +107,32 @@ TEST_CASE("Crush model: engines agree, crush grows with speed and width, the rea
 
     SECTION("a pole crushes deeper than a full wall at the same speed")
     {
+        // By more than a fifth while the pole's crush has room; once it stacks up against the occupant cell
+        // (DamageMaterial::mCrushZoneFraction) both crushes approach the same bound, the zone's, and the
+        // pole's stays the deeper.
         for (const NamedVehicle& body : ShippedCars())
             for (double km_h : cSpeedsKmh)
                 for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
                 {
                     const double wall = Find(body.mName, "full wall", km_h, engine).mFront;
-                    const double pole = Find(body.mName, "pole", km_h, engine).mFront;
-                    INFO(body.mName << ", " << km_h << " km/h, " << ToString(engine) << ": wall " << wall << " m, pole " << pole << " m");
-                    CHECK(pole > 1.2 * wall);
+                    const Run& pole = Find(body.mName, "pole", km_h, engine);
+                    const bool stacked = pole.mOutcome.mStackedUpDents > 0;
+                    INFO(body.mName << ", " << km_h << " km/h, " << ToString(engine) << ": wall " << wall << " m, pole "
+                                    << pole.mFront << " m" << (stacked ? ", stacked up" : ""));
+                    CHECK(pole.mFront > (stacked ? 1.0 : 1.2) * wall);
                 }
+    }
+
+    SECTION("the roof moves less than 2 % of the front crush")
+    {
+        // The roof zone (the top fifth between the front and rear quarters) is the occupant cell's top: a
+        // crush that would compact into it stacks up instead. Before the cell, every crush deeper than about
+        // 0.7 m moved it, by up to 0.5 m on the box car at 64 km/h.
+        for (const auto& [name, run] : Runs())
+        {
+            INFO(name << ": roof " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] << " m, front " << run.mFront << " m");
+            CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] <= 0.02 * run.mFront);
+        }
     }
 
     SECTION("the rear never moves and no vertex moves out against the crush by more than 1 cm")
@@ -158,19 +175,3 @@ TEST_CASE("Crush model: engines agree, crush grows with speed and width, the rea
             }
     }
 }
-
-TEST_CASE("Crush model: the roof stays", "[crash][slow][!mayfail]")
-{
-    SECTION("the roof moves less than 2 % of the front crush")
-    {
-        // Known to fail: a crush of C compacts the 1.33 C behind the impactor (mCrushedLengthFraction 0.25), so a
-        // crush deeper than about 0.7 m (narrow hits at 56-64 km/h, the box car's from 40) reaches the front of
-        // the roof zone (the top fifth behind the front quarter) of every body: the cabin is not modelled stiffer.
-        for (const auto& [name, run] : Runs())
-        {
-            INFO(name << ": roof " << run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] << " m, front " << run.mFront << " m");
-            CHECK(run.mOutcome.mResidualCrush[static_cast<int>(EZone::Roof)] <= 0.02 * run.mFront);
-        }
-    }
-}
-

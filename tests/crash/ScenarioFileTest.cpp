@@ -207,6 +207,11 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
         ParseCrashScenario(Minimal(R"("mass_kg": 900, "material": {"max_deformation_m": 0.5})"), {});
     REQUIRE(partial.IsValid());
     CHECK(partial.Get().mVehicle.mMaterial.mMaxInstantDeformation == 0.5);
+    CHECK(partial.Get().mVehicle.mMaterial.mCrushZoneFraction == defaults.mVehicle.mMaterial.mCrushZoneFraction);
+    const Result<CrashScenario> zone =
+        ParseCrashScenario(Minimal(R"("mass_kg": 900, "material": {"crush_zone_fraction": 0.3})"), {});
+    REQUIRE(zone.IsValid());
+    CHECK(zone.Get().mVehicle.mMaterial.mCrushZoneFraction == 0.3);
     CHECK(partial.Get().mVehicle.mMaterial.mDeformationFactor ==
           defaults.mVehicle.mMaterial.mDeformationFactor);
 }
@@ -329,6 +334,10 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/vehicle/material/max_deformation_m: must be >= min_deformation_m (0.1), got 0.05"},
         {Minimal(R"("mass_kg": 1, "material": {"deformation_factor_m_per_N_s": -1e-5})"),
          EError::InvalidArgument, "/vehicle/material/deformation_factor_m_per_N_s: must be >= 0, got -1e-05"},
+        {Minimal(R"("mass_kg": 1, "material": {"crush_zone_fraction": 0.6})"), EError::InvalidArgument,
+         "/vehicle/material/crush_zone_fraction: must be in (0, 0.5], got 0.6"},
+        {Minimal(R"("mass_kg": 1, "material": {"crush_zone_fraction": 0})"), EError::InvalidArgument,
+         "/vehicle/material/crush_zone_fraction: must be in (0, 0.5], got 0"},
         {Minimal(mass, speed, R"("target": {"angle_deg": 90})"), EError::InvalidArgument,
          "/target/angle_deg: must be in (-90, 90), got 90"},
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "min": 3, "max": 1}])"),

@@ -240,11 +240,17 @@ TEST_CASE("A second hit crushes on from the first: two half-energy hits about eq
 
 TEST_CASE("A Campbell crush replays bit for bit", "[plugin]")
 {
-    // Also with an up axis that is not +z and not exactly unit: the recording keeps it as given.
-    for (const Vec3& up : {Vec3(Vec3::UnitZ()), Vec3(Vec3(0.3, 0.0006, 1.0).normalized() * (1.0 + 4.0e-4))})
+    // Also with an up axis that is not +z and not exactly unit: the recording keeps it as given; and with a
+    // longer crush zone, which the recording keeps too (the 54 km/h hit stacks up against the default cell).
+    const std::array<std::pair<Vec3, double>, 3> cases{{{Vec3::UnitZ(), 0.25},
+                                                         {Vec3(0.3, 0.0006, 1.0).normalized() * (1.0 + 4.0e-4), 0.25},
+                                                         {Vec3::UnitZ(), 0.35}}};
+    for (const auto& [up, fraction] : cases)
     {
-        INFO("up " << up.transpose());
-        CampbellCar car(DamageWorldSettings{}, CampbellMaterial(), up);
+        INFO("up " << up.transpose() << ", crush zone fraction " << fraction);
+        DamageMaterial material = CampbellMaterial();
+        material.mCrushZoneFraction = fraction;
+        CampbellCar car(DamageWorldSettings{}, material, up);
         const std::filesystem::path path = common::ScratchDirectory() / "campbell.crumple";
         Result<std::unique_ptr<DamageRecorder>> recorder = DamageRecorder::Create(path, car.mWorld);
         REQUIRE(recorder);
@@ -254,6 +260,7 @@ TEST_CASE("A Campbell crush replays bit for bit", "[plugin]")
         Result<Replay> replay = DecodeReplay(ReadFileBytes(path).Get());
         REQUIRE(replay);
         CHECK(replay.Get().mObjects[0].mSettings.mUpAxis == up);
+        CHECK(replay.Get().mObjects[0].mSettings.mMaterial.mCrushZoneFraction == fraction);
         Result<std::vector<ReplayedObject>> replayed = ReplayDamage(replay.Get());
         REQUIRE(replayed);
         const std::vector<Vec3>& live = car.Object().GetDeformer().GetPositions();
@@ -294,6 +301,12 @@ TEST_CASE("Bad Campbell parameters are refused with the field named", "[plugin]"
     bad = base;
     bad.mMaterial.mCrushedLengthFraction = 1.0;
     refused(bad, "mCrushedLengthFraction");
+    for (double fraction : {0.0, 0.51, std::nan("")})
+    {
+        bad = base;
+        bad.mMaterial.mCrushZoneFraction = fraction;
+        refused(bad, "mCrushZoneFraction");
+    }
     bad = base;
     bad.mMaterial.mModel = static_cast<ECrushModel>(7);
     refused(bad, "mModel");
@@ -365,6 +378,17 @@ TEST_CASE("A crush plan changes exactly the controls its field reaches, as a sca
         plan.mFlatLayer = 0.15;
         plan.mZoneLength = plan.mDepth / 0.75;
         plan.mRamp = std::max(0.3, 0.5 * plan.mDepth);
+        if (i % 2 == 1)
+        {
+            // An occupant cell whose face crosses the body somewhere, its axis within 60 degrees of d.
+            plan.mCellActive = true;
+            plan.mCellAxis = (plan.mDirection + 0.5 * Vec3(normal(random), normal(random), normal(random))).normalized();
+            if (plan.mCellAxis.dot(plan.mDirection) < 0.5)
+                plan.mCellAxis = plan.mDirection;
+            plan.mCellFace = plan.mCellAxis.dot(Vec3(-1.5 + 2.0 * unit(random), 0.0, 0.0));
+            plan.mSpacing = 0.15;
+            plan.mKappa = 0.25;
+        }
 
         ffd::FfdDeformer planned = body, reference = body;
         const ffd::DentReport report = ApplyCrushPlan(plan, 1.5, planned);
@@ -399,4 +423,126 @@ TEST_CASE("A crush plan changes exactly the controls its field reaches, as a sca
         changed += report.mControlsChanged > 0 ? 1 : 0;
     }
     CHECK(changed >= 30); // most plans reach the body: the comparison is not over empty fields
+}
+
+namespace
+{
+
+// Largest move of a vertex of the occupant cell (rest x within the middle half of the length) and of the
+// front crush, on a CampbellCar hit head-on at inKmh by a pole.
+struct CellOutcome
+{
+    double mFront = 0.0;
+    double mCell = 0.0;
+};
+
+CellOutcome PoleHit(double inKmh, const DamageMaterial& inMaterial)
+{
+    CampbellCar car({}, inMaterial);
+    car.Hit(inKmh / 3.6, 0.0);
+    CellOutcome outcome;
+    outcome.mFront = car.FrontCrush();
+    const ffd::FfdDeformer& deformer = car.Object().GetDeformer();
+    for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+    {
+        const Vec3& rest = deformer.GetRestMesh().mPositions[v];
+        if (std::abs(rest.x()) <= 0.5 * car.mHalf.x())
+            outcome.mCell = std::max(outcome.mCell, (deformer.GetPositions()[v] - rest).norm());
+    }
+    return outcome;
+}
+
+} // namespace
+
+TEST_CASE("A crush along the length stacks up short of the occupant cell and still grows with the energy", "[plugin]")
+{
+    // The 4.4 m box car's cell begins 1.1 m behind its front (the default quarter); a 0.15 m lattice keeps
+    // one spacing clear of it behind a flat layer: 0.8 m of room, 0.6 m of free crush, never 0.7.
+    const DamageMaterial material = CampbellMaterial();
+    DamageMaterial no_cell = material;
+    no_cell.mCrushZoneFraction = 0.5;
+    double previous = 0.0;
+    for (double km_h : {30.0, 45.0, 56.0, 70.0}) // below 75 km/h: no demand reaches the 1.5 m clamp
+    {
+        const CellOutcome with = PoleHit(km_h, material);
+        const CellOutcome without = PoleHit(km_h, no_cell);
+        INFO(km_h << " km/h: front " << with.mFront << " m, cell " << with.mCell << " m; without a cell: front "
+                  << without.mFront << " m, cell " << without.mCell << " m");
+        CHECK(with.mFront > previous);
+        CHECK(with.mFront <= without.mFront);
+        CHECK(with.mFront < 0.7 + 0.01);
+        CHECK(with.mCell <= 0.01 * with.mFront);
+        if (km_h >= 56.0)
+            CHECK(without.mCell > 0.1 * without.mFront); // the same hits without a cell reach into it
+        previous = with.mFront;
+    }
+}
+
+TEST_CASE("The occupant cell leaves alone what cannot reach it: a shallow crush, a sideways one, a coarse lattice", "[plugin]")
+{
+    DamageMaterial no_cell = CampbellMaterial();
+    no_cell.mCrushZoneFraction = 0.5;
+    // A 30 km/h pole crushes about 0.4 m, with room to spare: bit for bit the crush without a cell.
+    {
+        CampbellCar with_cell;
+        CampbellCar plain({}, no_cell);
+        with_cell.Hit(30.0 / 3.6, 0.0);
+        plain.Hit(30.0 / 3.6, 0.0);
+        const std::vector<Vec3>& a = with_cell.Object().GetDeformer().GetPositions();
+        const std::vector<Vec3>& b = plain.Object().GetDeformer().GetPositions();
+        REQUIRE(a.size() == b.size());
+        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+        CHECK(with_cell.FrontCrush() > 0.1);
+    }
+    // Planned directly: a sideways crush (along the width) and a crush on a lattice coarser than a quarter of
+    // the zone take no cell; a head-on one does, and stacks up.
+    CampbellCar car;
+    const DeformableObject& object = car.Object();
+    auto plan = [&](const Vec3& inInward, const Vec3& inPoint, const ffd::FfdDeformer& inDeformer) {
+        Collision collision;
+        collision.mBodyA = car.mCar;
+        collision.mBodyB = car.mWall;
+        CollisionContact contact;
+        contact.mLocalPointOnA = inPoint;
+        contact.mLocalNormalOnA = inInward;
+        contact.mImpulse = 1.0e4;
+        collision.mContacts.push_back(contact);
+        return PlanCampbellCrush(collision, ECollisionSide::A, 1.0e6, object.GetMaterial(), object.GetUpAxis(), inDeformer,
+                                 &object.GetLength());
+    };
+    const std::optional<CrushPlan> head_on = plan(-Vec3::UnitX(), Vec3(2.2, 0.0, 0.0), object.GetDeformer());
+    REQUIRE(head_on);
+    CHECK(head_on->mCellActive);
+    CHECK(head_on->mStackedUp);
+    const std::array<double, 2> column = head_on->ColumnCrush(Vec3(2.2, 0.0, 0.0));
+    CHECK(column[0] > 0.75 * column[1]);  // past kappa's free crush,
+    CHECK(column[0] < 0.875 * column[1]); // short of half of kappa
+    CHECK(column[1] == Approx(1.1 - 2.0 * head_on->mSpacing).epsilon(1.0e-9));
+    const std::optional<CrushPlan> sideways = plan(-Vec3::UnitY(), Vec3(0.0, 0.825, 0.0), object.GetDeformer());
+    REQUIRE(sideways);
+    CHECK(!sideways->mCellActive);
+    CHECK(!sideways->mStackedUp);
+    CHECK(sideways->ColumnCrush(Vec3(0.0, 0.825, 0.0))[0] == sideways->mDepth);
+    // 0.3 m controls: a 1.1 m zone holds fewer than four spacings.
+    ffd::TriangleMesh mesh = object.GetDeformer().GetRestMesh();
+    ffd::FfdDeformerSettings coarse;
+    coarse.mZones.push_back(FitZoneToMesh(mesh, {0, 0, 0}, 1.5, 0.3));
+    const ffd::FfdDeformer coarse_body = ffd::FfdDeformer::Create(std::move(mesh), coarse).Get();
+    const std::optional<CrushPlan> coarse_plan = plan(-Vec3::UnitX(), Vec3(2.2, 0.0, 0.0), coarse_body);
+    REQUIRE(coarse_plan);
+    CHECK(!coarse_plan->mCellActive);
+}
+
+TEST_CASE("The body's length is its longest horizontal extent", "[plugin]")
+{
+    const std::vector<Vec3> box{Vec3(-0.9, -2.2, 0.0), Vec3(0.9, 2.2, 1.4)};
+    const BodyLength along_y = MeasureBodyLength(box, Vec3::UnitZ());
+    CHECK(along_y.mAxis.isApprox(Vec3::UnitY()));
+    CHECK(along_y.mMin == -2.2);
+    CHECK(along_y.mMax == 2.2);
+    // Up along y: the horizontal extents are x (1.8 m) and z (1.4 m).
+    const BodyLength along_x = MeasureBodyLength(box, Vec3::UnitY());
+    CHECK(std::abs(along_x.mAxis.x()) == Approx(1.0));
+    CHECK(along_x.mMax - along_x.mMin == Approx(1.8));
+    CHECK(MeasureBodyLength({}, Vec3::UnitZ()).mMax == 0.0);
 }

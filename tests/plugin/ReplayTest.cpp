@@ -149,7 +149,7 @@ TEST_CASE("A truncated, corrupt or foreign replay file is refused with a clear m
     CHECK(corrupted.GetError().mMessage.find("record") != std::string::npos);
 
     std::vector<std::byte> newer = bytes;
-    newer[8] = std::byte{10};
+    newer[8] = std::byte{static_cast<unsigned char>(cReplayVersion + 1)};
     CHECK(DecodeReplay(newer).GetError().mCode == EError::VersionMismatch);
     std::vector<std::byte> foreign = bytes;
     foreign[0] = std::byte{'Z'};
@@ -180,6 +180,9 @@ TEST_CASE("The replay fuzz regressions are in a format this library reads, so th
             REQUIRE(replay);
             CHECK_FALSE(replay.Get().mObjects.empty());
             CHECK_FALSE(replay.Get().mCollisions.empty());
+            // Recorded before the occupant cell: they replay without one.
+            for (const RecordedObject& object : replay.Get().mObjects)
+                CHECK(object.mSettings.mMaterial.mCrushZoneFraction == 0.5);
         }
         ++files;
     }

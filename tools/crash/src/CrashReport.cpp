@@ -154,6 +154,7 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                {"average_m", inOutcome.mFrontProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     report["limited_dents"] = inOutcome.mLimitedDents;
+    report["stacked_up_dents"] = inOutcome.mStackedUpDents;
     const TimeHistory& history = inFindings.mHistory;
     report["time_history"] = {{"file", "timeseries.csv"},
                               {"step_s", history.mStep},
@@ -221,6 +222,11 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
     if (inOutcome.mLimitedDents > 0)
         std::fprintf(inStream, "  %d dent(s) clamped by the material's maximum deformation: the crush is a lower bound\n",
                      inOutcome.mLimitedDents);
+    if (inOutcome.mStackedUpDents > 0)
+        std::fprintf(inStream,
+                     "  %d crush(es) stacked up against the occupant cell (crush_zone_fraction): the front crushed less "
+                     "than Campbell's law asks, the cabin not at all\n",
+                     inOutcome.mStackedUpDents);
     if (inOutcome.mFoldedTriangles > 0)
         std::fprintf(inStream, "  surface folded: %d of %zu triangles turned over\n", inOutcome.mFoldedTriangles,
                      inOutcome.mRestMesh.mTriangles.size());
@@ -288,6 +294,7 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     }
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
+    row("crushes stacked up against the occupant cell", std::to_string(inOutcome.mStackedUpDents));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
     const TimeHistory& history = inFindings.mHistory;
     row("peak deceleration", Number(history.mPeakDeceleration / 9.80665, 1) + " g over " +

@@ -311,6 +311,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
             return status.GetError();
 
     outcome.mLimitedDents = scene.GetCounter().mLimitedDents;
+    outcome.mStackedUpDents = scene.GetCounter().mStackedUpDents;
     for (const plugin::Collision& collision : scene.GetCounter().mLog)
     {
         const double impulse = collision.TotalImpulse();

@@ -748,12 +748,13 @@ class ScenarioReader
                 ? CheckKeys(inMaterial, inPointer,
                             {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
                               "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
-                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "preset_file"},
+                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction",
+                              "preset_file"},
                              hints})
                 : CheckKeys(inMaterial, inPointer,
                             {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
                               "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
-                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction"},
+                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction"},
                              hints});
         if (!keys_ok)
             return false;
@@ -777,7 +778,9 @@ class ScenarioReader
             !ReadNumber(inMaterial, inPointer, "min_crush_width_m", NumberRange::Positive(), false,
                         material.mMinCrushWidth) ||
             !ReadNumber(inMaterial, inPointer, "crushed_length_fraction", NumberRange{0.0, false, 1.0, true}, false,
-                        material.mCrushedLengthFraction))
+                        material.mCrushedLengthFraction) ||
+            !ReadNumber(inMaterial, inPointer, "crush_zone_fraction", NumberRange{0.0, true, 0.5, false}, false,
+                        material.mCrushZoneFraction))
             return false;
         std::size_t model = static_cast<std::size_t>(material.mModel);
         if (!ReadEnum(inMaterial, inPointer, "crush_model", {"impulse_factor", "campbell"}, {}, false, model))

@@ -34,6 +34,8 @@ struct CRUMPLE_API DentReport
     double mMaxWanted = 0.0;       ///< Max wanted displacement magnitude (m), to make mMaxPointError relative
     int mContactsClamped = 0;      ///< Contacts whose depth the material's maximum instantaneous deformation cut
                                    ///< (set by plugin::DeformableObject::ApplyCollision; 0 from ApplyDent)
+    int mStackedUp = 0;            ///< Crushes that stacked up against the occupant cell, crushing less than
+                                   ///< Campbell's law asks (plugin::CrushPlan::mStackedUp; set as mContactsClamped)
 
     /// True when a bound limited this dent: a contact's depth clamped or the dent scaled down.
     bool IsLimited() const { return mContactsClamped > 0 || mScale < 1.0; }

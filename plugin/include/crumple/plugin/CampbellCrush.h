@@ -9,7 +9,9 @@
 #include <crumple/plugin/Collision.h>
 #include <crumple/plugin/DamageMaterial.h>
 
+#include <array>
 #include <optional>
+#include <span>
 
 namespace crumple::plugin
 {
@@ -27,6 +29,14 @@ namespace crumple::plugin
 /// max(2 lattice spacings, C / 2) (pocket walls no steeper than 2:1). So a flat
 /// barrier leaves a flat front at its final position (to within kappa L), a pole a pocket as wide as the
 /// footprint, and nothing moves outside the footprint's margin or behind the crush zone.
+///
+/// The occupant cell (DamageMaterial::mCrushZoneFraction): when the crush runs within 60 degrees of the
+/// body's length, each column of the field (a line along d) stops one control spacing h short of where it
+/// enters the cell, so the cell's vertices keep their place (the spline reaches two spacings, and the
+/// field's last spacing moves by less than a fifth of (1 - kappa) h). A column with room Z behind the flat
+/// layer crushes by C while C <= (1 - kappa) Z; past that its zone stacks up: the column crushes by
+/// C1 + (C2 - C1)(1 - exp(-(C - C1) / (C2 - C1))), C1 = (1 - kappa) Z, C2 = (1 - kappa / 2) Z, compacted over
+/// Z, so the crush still grows with the energy but never reaches the cell.
 struct CRUMPLE_API CrushPlan
 {
     Vec3 mDirection = Vec3::UnitX(); ///< d: unit crush direction, into the body
@@ -42,10 +52,32 @@ struct CRUMPLE_API CrushPlan
     double mWidth = 0.0;          ///< w: the crushed width the energy is spread over (m)
     double mPreviousCrush = 0.0;  ///< Crush already in the footprint before this collision (m)
     bool mClamped = false;        ///< The depth was cut to the material's maximum instantaneous deformation
+    double mKappa = 0.25;         ///< kappa: the material's mCrushedLengthFraction
+    double mSpacing = 0.0;        ///< h: the lattice's coarsest control spacing along d (m)
+    bool mCellActive = false;     ///< The crush runs along the body's length and an occupant cell limits it
+    Vec3 mCellAxis = Vec3::UnitX(); ///< a: the body's length axis, oriented along the crush (a . d > 0)
+    double mCellFace = 0.0;       ///< Where the cell begins along mCellAxis (m)
+    bool mStackedUp = false;      ///< Some column of the footprint crushes less than mDepth: its zone stacked up
 
+    /// The crush of the column through inPoint (m) and the length it compacts over behind the flat layer (m):
+    /// mDepth and mZoneLength unless the occupant cell limits the column.
+    std::array<double, 2> ColumnCrush(const Vec3& inPoint) const;
     /// The field's displacement magnitude along mDirection at body point inPoint (m), >= 0.
     double DisplacementAt(const Vec3& inPoint) const;
 };
+
+/// The body's length: its longest horizontal extent at rest (across the up axis), where the crush zones at
+/// either end and the occupant cell between them lie (DamageMaterial::mCrushZoneFraction).
+struct CRUMPLE_API BodyLength
+{
+    Vec3 mAxis = Vec3::UnitX(); ///< Unit, perpendicular to up
+    double mMin = 0.0;          ///< The rest vertices' extent along mAxis (m)
+    double mMax = 0.0;
+};
+
+/// The longer of the two horizontal extents of inRestPositions (the body axis least aligned with inUp, made
+/// perpendicular to it, and up x that axis); ties take the first. An empty span gives an empty extent.
+CRUMPLE_API BodyLength MeasureBodyLength(std::span<const Vec3> inRestPositions, const Vec3& inUp);
 
 /// The width across inUp over which the collision's contacts of side inSide crush, at least inMinWidth (m).
 CRUMPLE_API double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
@@ -75,9 +107,11 @@ CRUMPLE_API void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, 
 /// The crush a collision with inEnergy (J) for this side makes on a body whose deformer is inDeformer; empty
 /// when there is nothing to crush (no closing contact, the energy below G, no vertex in the footprint,
 /// or a depth under the material's minimum) or the material is one ValidateDamageMaterial refuses.
+/// inLength: the body's length (MeasureBodyLength of the deformer's rest mesh, which DeformableObject keeps);
+/// null measures it here, a pass over every rest vertex.
 CRUMPLE_API std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
-                                           const ffd::FfdDeformer& inDeformer);
+                                           const ffd::FfdDeformer& inDeformer, const BodyLength* inLength = nullptr);
 
 /// Applies a plan: each zone's controls take the field at their current positions (the B-spline
 /// quasi-interpolant of the field, exact for its linear parts), through FfdDeformer::ApplyControlDelta with

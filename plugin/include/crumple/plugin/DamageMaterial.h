@@ -58,6 +58,15 @@ struct CRUMPLE_API DamageMaterial
     /// What remains of a crushed length, in [0, 1): the crushed region is compacted to this fraction of its
     /// depth behind the impactor's final face (sheet-metal crush tubes fold to about a quarter of their length).
     double mCrushedLengthFraction = 0.25;
+    /// Share of the body's length (its longest horizontal extent at rest) at each end that crushes, in
+    /// (0, 0.5]; the occupant cell between the two ends is modelled rigid. A crush along the length (within
+    /// 60 degrees of it) compacts its zone only up to a control spacing short of the cell; a crush that would
+    /// reach further stacks up: the zone compacts past mCrushedLengthFraction, ever more slowly, towards half
+    /// of it, so the cabin and its roof never move (CrushPlan). 0.25: the front and rear quarters of a car,
+    /// bumper to windscreen base and boot (an assumption to set per vehicle, not a measured value); 0.5: no
+    /// cell (every crush compacts as deep as Campbell's law asks). Sideways crushes are not limited, nor are
+    /// crushes on a lattice coarser than a quarter of the zone along the crush (it cannot keep them apart).
+    double mCrushZoneFraction = 0.25;
 };
 
 /// Checks a material at the API boundary: every field finite and within the range its comment gives, and a

@@ -5,6 +5,7 @@
 #include <crumple/base/Export.h>
 
 #include <crumple/ffd/FfdDeformer.h>
+#include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/Collision.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
 
@@ -41,16 +42,20 @@ public:
     bool GetInterpolateWideImpacts() const { return mInterpolate; }
     /// The body's up direction (body frame, unit)
     const Vec3& GetUpAxis() const { return mUp; }
+    /// The body's length at rest (MeasureBodyLength): where the occupant cell of a Campbell crush lies
+    const BodyLength& GetLength() const { return mLength; }
     const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
     ffd::FfdDeformer& GetDeformer() { return mDeformer; }
 
 private:
-    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, const Vec3& inUp, ffd::FfdDeformer inDeformer)
-        : mMaterial(inMaterial), mInterpolate(inInterpolate), mUp(inUp), mDeformer(std::move(inDeformer)) {}
+    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, const Vec3& inUp, const BodyLength& inLength,
+                     ffd::FfdDeformer inDeformer)
+        : mMaterial(inMaterial), mInterpolate(inInterpolate), mUp(inUp), mLength(inLength), mDeformer(std::move(inDeformer)) {}
 
     DamageMaterial mMaterial;
     bool mInterpolate = true;
     Vec3 mUp = Vec3::UnitZ();
+    BodyLength mLength;
     ffd::FfdDeformer mDeformer;
 };
 

@@ -52,9 +52,10 @@ struct CRUMPLE_API Replay
 /// dents flag; extension records. 7: ids carry their generation (u32 after each object and body index).
 /// 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its u32
 /// vertices). 9: per contact the friction coefficient and the friction impulse (world, on A's body frame, on
-/// B's body frame) after the time. Written: 9. Read: 9, 8 and 7 (whose contacts are frictionless and objects
-/// have no rigid parts, so their recordings still replay).
-constexpr std::uint32_t cReplayVersion = 9;
+/// B's body frame) after the time. 10: the material's crush zone fraction (f64 after the rigid parts).
+/// Written: 10. Read: 10, 9, 8 and 7 (whose contacts are frictionless, objects have no rigid parts before 8
+/// and no occupant cell (fraction 0.5) before 10, so their recordings still replay as they were made).
+constexpr std::uint32_t cReplayVersion = 10;
 /// The oldest version DecodeReplay still reads.
 constexpr std::uint32_t cOldestReplayVersion = 7;
 

@@ -58,6 +58,7 @@ struct CrashOutcome
     CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
+    int mStackedUpDents = 0;                ///< Crushes that stacked up against the occupant cell (any object)
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
