@@ -6,6 +6,7 @@
 #include "CarMesh.h"
 #include "ObjWriter.h"
 #include "RemoveCaps.h"
+#include "SurfaceFolds.h"
 #include "ThreadCpuTime.h"
 
 #include <crumple/ffd/BoundingBox.h>
@@ -257,6 +258,12 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
                 "listed); racing car deepest dent %.3f m, parked "
                 "car %.3f m; %d frames\n",
                 mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    // A dent must never turn the surface over (tests/CMakeLists' racing checks read this line).
+    const ffd::FfdDeformer& car = inCar.GetDeformer();
+    const ffd::FfdDeformer& parked = inParked.GetDeformer();
+    std::printf("triangles turned over: racing car %d of %zu, parked car %d of %zu\n",
+                common::FoldedTriangles(car.GetRestMesh(), car.GetPositions()), car.GetRestMesh().mTriangles.size(),
+                common::FoldedTriangles(parked.GetRestMesh(), parked.GetPositions()), parked.GetRestMesh().mTriangles.size());
     std::printf("%s\n", inFence.Summary().c_str());
     // intent: the worst frame and where it was, then the distribution (engine step + Crumple)
     for (const auto& [times, what] : {std::pair{&mFrameWallMs, "engine step with Crumple, wall"},

@@ -5,6 +5,7 @@
 #include "CarMesh.h"
 #include "EngineCrash.h"
 #include "FemBarrierCoupling.h"
+#include "SurfaceFolds.h"
 
 #include <crumple/crash/RecutCarMesh.h>
 #include <crumple/crash/TimeHistory.h>
@@ -338,8 +339,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     outcome.mNormals = car.GetNormals();
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
-    outcome.mFoldedVertices = FoldedVertices(outcome.mRestNormals, outcome.mNormals);
-    outcome.mFoldedTriangles = FoldedTriangles(outcome.mRestMesh, outcome.mPositions);
+    outcome.mFoldedVertices = common::FoldedVertices(outcome.mRestNormals, outcome.mNormals);
+    outcome.mFoldedTriangles = common::FoldedTriangles(outcome.mRestMesh, outcome.mPositions);
     outcome.mFrontProfile = FrontCrushProfile(outcome.mRestMesh, outcome.mPositions);
     // intent: the car's initial travel in its own frame; a standing car (a target hitting it) has none
     const double start_speed = outcome.mStartVelocity.norm();
@@ -393,30 +394,6 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return mOutwardDisplacement;
     }
     return std::numeric_limits<double>::quiet_NaN();
-}
-
-int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals)
-{
-    int folded = 0;
-    for (std::size_t vertex = 0; vertex < inNormals.size() && vertex < inRestNormals.size(); ++vertex)
-        folded += inRestNormals[vertex].dot(inNormals[vertex]) < 0.0 ? 1 : 0;
-    return folded;
-}
-
-int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)
-{
-    int folded = 0;
-    for (const auto& t : inRest.mTriangles)
-    {
-        const Vec3& a = inRest.mPositions[t[0]];
-        const Vec3 rest = (inRest.mPositions[t[1]] - a).cross(inRest.mPositions[t[2]] - a);
-        if (rest.isZero(0.0))
-            continue;
-        const Vec3& b = inPositions[t[0]];
-        const Vec3 now = (inPositions[t[1]] - b).cross(inPositions[t[2]] - b);
-        folded += rest.dot(now) < 0.0 ? 1 : 0;
-    }
-    return folded;
 }
 
 CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)

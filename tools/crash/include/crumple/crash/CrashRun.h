@@ -51,8 +51,8 @@ struct CrushProfile
 struct CrashOutcome
 {
     std::array<double, 6> mResidualCrush{}; ///< Largest residual vertex displacement per EZone (m)
-    int mFoldedVertices = 0;                ///< Car body vertices turned over (FoldedVertices)
-    int mFoldedTriangles = 0;               ///< Car body triangles turned over (FoldedTriangles)
+    int mFoldedVertices = 0;                ///< Car body vertices turned over (common::FoldedVertices)
+    int mFoldedTriangles = 0;               ///< Car body triangles turned over (common::FoldedTriangles)
     std::vector<std::string> mWarnings;     ///< What the run doubts about its input (a sideways mesh)
     std::optional<MeshPreparation> mMeshPreparation; ///< A mesh body's re-cut; empty for the procedural box
     CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
@@ -111,19 +111,6 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
 /// (roof: the passenger compartment's), or all vertices (any). Zones overlap at corners: a frontal hit
 /// also shows in left and right.
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone);
-
-/// Vertices whose normal now points against their rest normal (dot < 0): the surface has folded over
-/// there. Vertex normals are area-weighted over the vertex's triangles, so a sliver triangle that a smooth
-/// dent tips over (a thin triangle of a real mesh can) does not count; a sound dent, however deep, turns no
-/// vertex over.
-/// @param[in] inRestNormals  #V unit vertex normals before
-/// @param[in] inNormals      #V unit vertex normals after
-int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals);
-
-/// Triangles whose face normal the dents turned over (its dot product with the rest face normal < 0): a
-/// fold of the surface itself. Triangles of zero rest area are skipped. Unlike FoldedVertices it does not
-/// count a vertex on a sharp ridge whose averaged normal tips over when the crush compacts the ridge.
-int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
 
 /// The front's crush profile: the vertices of the front quarter (rest x within a quarter of the length of the
 /// front) whose backward move exceeds 1 cm span the damage width; each of six equally spaced stations across
