@@ -2,11 +2,15 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/CampbellCrush.h>
 
+#include "StruckFront.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <vector>
 
 namespace crumple::plugin
 {
@@ -110,7 +114,8 @@ std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattic
             high = -1.0;
     };
     const double across = inPlan.mFlatLayer + inPlan.mRamp;
-    below(inPlan.mDirection, inPlan.mFront + inPlan.mFlatLayer + inPlan.mZoneLength);
+    // A column behind the front by F reaches F + max((C - F) / (1 - kappa), h) <= max(L, C + h).
+    below(inPlan.mDirection, inPlan.mFront + inPlan.mFlatLayer + std::max(inPlan.mZoneLength, inPlan.mDepth + inPlan.mSpacing));
     below(inPlan.mSide, inPlan.mSideMax + across);
     below(-inPlan.mSide, -(inPlan.mSideMin - across));
     below(inPlan.mThird, inPlan.mThirdMax + across);
@@ -150,8 +155,8 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, C
                  0.5 * (thirds[0] + thirds[1]) * ioPlan.mThird;
     for (const Vec3& column : columns)
     {
-        const auto [crush, length] = ioPlan.ColumnCrush(column);
-        if (crush < ioPlan.mDepth)
+        const auto [crush, length, front] = ioPlan.ColumnCrush(column);
+        if (crush < ioPlan.mDepth - front)
             ioPlan.mStackedUp = true;
         if (crush > 0.0 && length > 0.0)
             ioPlan.mRamp = std::max(ioPlan.mRamp, crush / (2.0 * std::sqrt(std::max(1.0 - crush / length, 0.01))));
@@ -160,35 +165,42 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, C
 
 } // namespace
 
-std::array<double, 2> CrushPlan::ColumnCrush(const Vec3& inPoint) const
+std::array<double, 3> CrushPlan::ColumnCrush(const Vec3& inPoint) const
 {
+    // A flat front (no grid): every column starts at mFront and takes the whole crush, exactly as planned.
+    const double front = mStruckFront.At(mSide.dot(inPoint), mThird.dot(inPoint));
+    const double depth = front > 0.0 ? mDepth - front : mDepth;
+    if (!(depth > 0.0))
+        return {0.0, 0.0, front};
+    const double zone = front > 0.0 ? std::max(depth / (1.0 - mKappa), mSpacing) : mZoneLength;
     if (!mCellActive)
-        return {mDepth, mZoneLength};
+        return {depth, zone, front};
     // Along the column (the line through inPoint along d) the length coordinate grows by a . d per metre:
-    // the column enters the cell at this depth behind the flat layer, and keeps one spacing clear of it.
+    // the column enters the cell at this depth behind its flat layer, and keeps one spacing clear of it.
     const double enter = mDirection.dot(inPoint) + (mCellFace - mCellAxis.dot(inPoint)) / mCellAxis.dot(mDirection) -
-                         mFront - mFlatLayer;
+                         mFront - mFlatLayer - front;
     const double room = enter - mSpacing;
-    if (mZoneLength <= room)
-        return {mDepth, mZoneLength};
+    if (zone <= room)
+        return {depth, zone, front};
     if (!(room > 0.0))
-        return {0.0, 0.0};
+        return {0.0, 0.0, front};
     const double free = (1.0 - mKappa) * room;
     const double packed = (1.0 - 0.5 * mKappa) * room;
-    if (mDepth <= free)
-        return {mDepth, room};
+    if (depth <= free)
+        return {depth, room, front};
     if (!(packed > free)) // kappa 0: the zone compacts to nothing and no further
-        return {free, room};
+        return {free, room, front};
     // Stacked up: C1 + (C2 - C1)(1 - exp(-(C - C1) / (C2 - C1))), slope 1 at C1 and C2 never reached.
-    return {free - (packed - free) * std::expm1(-(mDepth - free) / (packed - free)), room};
+    return {free - (packed - free) * std::expm1(-(depth - free) / (packed - free)), room, front};
 }
 
 double CrushPlan::DisplacementAt(const Vec3& inPoint) const
 {
-    const auto [crush, length] = ColumnCrush(inPoint);
+    const auto [crush, length, front] = ColumnCrush(inPoint);
     if (!(crush > 0.0))
         return 0.0;
-    const double delta = mDirection.dot(inPoint) - mFront - mFlatLayer;
+    const double delta = front > 0.0 ? mDirection.dot(inPoint) - mFront - mFlatLayer - front
+                                     : mDirection.dot(inPoint) - mFront - mFlatLayer;
     if (delta >= length)
         return 0.0;
     const double along = delta <= 0.0 ? 1.0 : 1.0 - delta / length;
@@ -200,34 +212,6 @@ double CrushPlan::DisplacementAt(const Vec3& inPoint) const
         return 0.0;
     const double across = mRamp > 0.0 ? 1.0 - outside / mRamp : 1.0;
     return crush * along * across;
-}
-
-BodyLength MeasureBodyLength(std::span<const Vec3> inRestPositions, const Vec3& inUp)
-{
-    BodyLength length;
-    if (inRestPositions.empty())
-        return length;
-    const Vec3 up = inUp.normalized();
-    Eigen::Index least = 0;
-    up.cwiseAbs().minCoeff(&least);
-    const Vec3 first = (Vec3::Unit(least) - up.dot(Vec3::Unit(least)) * up).normalized();
-    const Vec3 second = up.cross(first);
-    constexpr double cInf = std::numeric_limits<double>::infinity();
-    std::array<double, 2> low{cInf, cInf}, high{-cInf, -cInf};
-    for (const Vec3& p : inRestPositions)
-    {
-        const std::array<double, 2> along{first.dot(p), second.dot(p)};
-        for (std::size_t k = 0; k < 2; ++k)
-        {
-            low[k] = std::min(low[k], along[k]);
-            high[k] = std::max(high[k], along[k]);
-        }
-    }
-    const std::size_t k = high[1] - low[1] > high[0] - low[0] ? 1 : 0;
-    length.mAxis = k == 0 ? first : second;
-    length.mMin = low[k];
-    length.mMax = high[k];
-    return length;
 }
 
 double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth)
@@ -286,7 +270,7 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
 
 std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
-                                           const ffd::FfdDeformer& inDeformer, const BodyLength* inLength)
+                                           const ffd::FfdDeformer& inDeformer, const CrushBody* inBody)
 {
     if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inMaterial))
         return std::nullopt;
@@ -314,6 +298,10 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // vertex there, only a triangle across it); the crush already there is the deepest earlier inward move
     // of the vertices in the footprint, or of the triangles across it when none is.
     const ffd::SurfaceProbeResult surface = inDeformer.ProbeSurface(*footprint);
+    std::optional<CrushBody> measured;
+    if (inBody == nullptr)
+        measured = MeasureCrushBody(inDeformer, inUp);
+    const CrushBody& body = inBody != nullptr ? *inBody : *measured;
     if (!std::isfinite(surface.mFront))
         return std::nullopt;
     const double front = surface.mFront;
@@ -329,6 +317,30 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // took, and this collision's energy takes it further.
     const double absorbed = CampbellCrushEnergy(inMaterial, plan.mWidth, previous);
     double depth = CampbellCrushDepth(inMaterial, plan.mWidth, absorbed + inEnergy) - previous;
+    // The struck surface's shape across the footprint (a rounded nose, a front at an angle to the crush),
+    // measured within a slab twice the flat front's depth (and the field's widest reach for it), then the
+    // depth its profile needs for the energy; a deeper answer measures again in a deeper slab. A column met
+    // only behind the slab holds the slab's depth, which the answer does not reach, so the slab changes
+    // nothing but the cost (racing dents are centimetres deep; the surface scan is most of a plan's time).
+    plan.mKappa = inMaterial.mCrushedLengthFraction;
+    plan.mSpacing = spacing;
+    plan.mFlatLayer = spacing;
+    const double wall_slope = 2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01));
+    for (double slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * depth + 2.0 * spacing); depth > 0.0;)
+    {
+        plan.mRamp = std::max(2.0 * spacing, slab / wall_slope);
+        plan.mDepth = slab;
+        // Half the pocket walls' slope limit: the columns' shear adds to the walls' where both are.
+        plan.mStruckFront = MeasureStruckFront(plan, inDeformer, body.mLargeTriangles, 0.5 * wall_slope);
+        const double profiled =
+            plan.mStruckFront.mDepth.empty() ? depth : ProfileCrushDepth(plan, inMaterial, previous, inEnergy, depth);
+        if (profiled <= slab || slab >= inMaterial.mMaxInstantDeformation)
+        {
+            depth = profiled;
+            break;
+        }
+        slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * profiled);
+    }
     if (depth > inMaterial.mMaxInstantDeformation)
     {
         depth = inMaterial.mMaxInstantDeformation;
@@ -350,9 +362,7 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // therefore slope at most 2 sqrt(f) : 1 (1:1 at the default quarter; the 2:1 walls before turned the box
     // car's pocket walls over at 64 km/h), and the fade spans at least two control spacings.
     plan.mRamp = std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01))));
-    plan.mKappa = inMaterial.mCrushedLengthFraction;
-    plan.mSpacing = spacing;
-    LimitByCell(inMaterial, inLength != nullptr ? *inLength : MeasureBodyLength(inDeformer.GetRestMesh().mPositions, inUp), plan);
+    LimitByCell(inMaterial, body.mLength, plan);
     return plan;
 }
 

@@ -80,8 +80,8 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
         return deformer.GetError();
     // The up axis as given (within 1e-3 of unit): a recording keeps it bit for bit, and the crush only
     // takes its direction.
-    const BodyLength length = MeasureBodyLength(deformer.Get().GetRestMesh().mPositions, inSettings.mUpAxis);
-    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, length, std::move(deformer).Get());
+    CrushBody body = MeasureCrushBody(deformer.Get(), inSettings.mUpAxis);
+    return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, std::move(body), std::move(deformer).Get());
 }
 
 std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& inCollision, ECollisionSide inSide,
@@ -137,7 +137,7 @@ ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, E
     if (mMaterial.mModel == ECrushModel::Campbell)
     {
         const double energy = inSide == ECollisionSide::A ? inCollision.mCrushEnergyA : inCollision.mCrushEnergyB;
-        const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer, &mLength);
+        const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer, &mCrushBody);
         if (!plan)
             return {};
         ffd::DentReport report = ApplyCrushPlan(*plan, mMaterial.mMaxInstantDeformation, mDeformer);

@@ -389,6 +389,20 @@ TEST_CASE("A crush plan changes exactly the controls its field reaches, as a sca
             plan.mSpacing = 0.15;
             plan.mKappa = 0.25;
         }
+        if (i % 4 == 2 || i % 4 == 3)
+        {
+            // A struck front whose columns start anywhere within the crush depth.
+            plan.mSpacing = 0.15;
+            StruckFront& front = plan.mStruckFront;
+            front.mBin = 0.15;
+            front.mSideOrigin = plan.mSideMin - 1.0;
+            front.mThirdOrigin = plan.mThirdMin - 1.0;
+            front.mSideCount = static_cast<int>((plan.mSideMax - plan.mSideMin + 2.0) / front.mBin) + 2;
+            front.mThirdCount = static_cast<int>((plan.mThirdMax - plan.mThirdMin + 2.0) / front.mBin) + 2;
+            front.mDepth.resize(static_cast<std::size_t>(front.mSideCount) * static_cast<std::size_t>(front.mThirdCount));
+            for (double& d : front.mDepth)
+                d = plan.mDepth * unit(random);
+        }
 
         ffd::FfdDeformer planned = body, reference = body;
         const ffd::DentReport report = ApplyCrushPlan(plan, 1.5, planned);
@@ -508,13 +522,13 @@ TEST_CASE("The occupant cell leaves alone what cannot reach it: a shallow crush,
         contact.mImpulse = 1.0e4;
         collision.mContacts.push_back(contact);
         return PlanCampbellCrush(collision, ECollisionSide::A, 1.0e6, object.GetMaterial(), object.GetUpAxis(), inDeformer,
-                                 &object.GetLength());
+                                 &object.GetCrushBody());
     };
     const std::optional<CrushPlan> head_on = plan(-Vec3::UnitX(), Vec3(2.2, 0.0, 0.0), object.GetDeformer());
     REQUIRE(head_on);
     CHECK(head_on->mCellActive);
     CHECK(head_on->mStackedUp);
-    const std::array<double, 2> column = head_on->ColumnCrush(Vec3(2.2, 0.0, 0.0));
+    const std::array<double, 3> column = head_on->ColumnCrush(Vec3(2.2, 0.0, 0.0));
     CHECK(column[0] > 0.75 * column[1]);  // past kappa's free crush,
     CHECK(column[0] < 0.875 * column[1]); // short of half of kappa
     CHECK(column[1] == Approx(1.1 - 2.0 * head_on->mSpacing).epsilon(1.0e-9));
@@ -545,4 +559,69 @@ TEST_CASE("The body's length is its longest horizontal extent", "[plugin]")
     CHECK(std::abs(along_x.mAxis.x()) == Approx(1.0));
     CHECK(along_x.mMax - along_x.mMin == Approx(1.8));
     CHECK(MeasureBodyLength({}, Vec3::UnitZ()).mMax == 0.0);
+}
+
+TEST_CASE("A wall flattens a slanted front against itself, and the profile takes Campbell's energy", "[plugin]")
+{
+    // The box car with its front slanted 0.25 m across its width (body x = 2.2 at y = -0.825, 1.95 at
+    // y = +0.825; the slant fades to nothing at the rear), hit head-on by a wall at 40 km/h with contacts
+    // where the wall meets the face. Every column crushes from where its own surface meets the wall: the
+    // face ends flat, and the crush profile across it (deep at y = -0.825, shallow at +0.825) absorbs
+    // Campbell's energy integrated across the width.
+    const Vec3 half(2.2, 0.825, 0.7);
+    auto slant = [&](const Vec3& inRest) { return 0.25 * (inRest.y() + half.y()) / (2.0 * half.y()) * (inRest.x() + half.x()) / (2.0 * half.x()); };
+    std::unique_ptr<DamageWorld> owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& world = *owner;
+    BodyState wall_state;
+    wall_state.mMotionType = EMotionType::Static;
+    const BodyId wall = world.CreateBody(wall_state).Get();
+    CampbellCar shape; // for its body state
+    const BodyId car = world.CreateBody(shape.State(40.0 / 3.6)).Get();
+    DeformableObjectSettings settings;
+    settings.mMesh = common::MakeBoxMesh(half, common::BoxSegmentsForTriangles(half, 20000));
+    for (Vec3& p : settings.mMesh.mPositions)
+        p.x() -= slant(p);
+    settings.mMaterial = CampbellMaterial();
+    settings.mFittedMaxTotalDeformation = 1.5;
+    const ObjectId object = world.CreateDeformableObject(car, settings).Get();
+    std::vector<ContactEvent> contacts;
+    for (double y : {-0.8, -0.4, 0.0, 0.4, 0.8})
+        for (double z : {-0.6, 0.6})
+        {
+            ContactEvent contact;
+            contact.mBodyA = car;
+            contact.mBodyB = wall;
+            // The face at (y, z), in the world: the body's front x = 2.2 sits at world x = 0.
+            contact.mPointOnA = contact.mPointOnB = Vec3(-slant(Vec3(half.x(), y, z)), y, z);
+            contact.mNormal = -Vec3::UnitX();
+            contacts.push_back(contact);
+        }
+    REQUIRE(world.SubmitContacts(contacts, 1.0 / 120.0));
+    world.Flush();
+
+    const ffd::FfdDeformer& deformer = world.GetObject(object)->GetDeformer();
+    double foremost = -1.0e9, rearmost = 1.0e9, deepest = 0.0, shallowest = 1.0e9;
+    for (std::size_t v = 0; v < deformer.GetPositions().size(); ++v)
+    {
+        const Vec3& rest = deformer.GetRestMesh().mPositions[v];
+        const Vec3& now = deformer.GetPositions()[v];
+        // The front face inside the contacts' span, away from its side edges.
+        if (rest.x() + slant(Vec3(half.x(), rest.y(), rest.z())) > half.x() - 1.0e-9 && std::abs(rest.y()) <= 0.7 &&
+            std::abs(rest.z()) <= 0.6)
+        {
+            foremost = std::max(foremost, now.x());
+            rearmost = std::min(rearmost, now.x());
+            deepest = std::max(deepest, rest.x() - now.x());
+            shallowest = std::min(shallowest, rest.x() - now.x());
+        }
+    }
+    INFO("face after: x from " << rearmost << " to " << foremost << " m; crush from " << shallowest << " to " << deepest << " m");
+    CHECK(foremost - rearmost < 0.05);        // flat against the wall: the slant across |y| <= 0.7 was 0.21 m
+    CHECK(deepest - shallowest > 0.15);      // by crushing the foremost side the most
+    // Campbell's energy over the profile: the same energy as a flat front's crush, spread as the slant wants.
+    const double e = world.GetSettings().mRestitution;
+    const double energy = (1.0 - e * e) * 0.5 * cMass * std::pow(40.0 / 3.6, 2);
+    const double flat = CampbellCrushDepth(settings.mMaterial, 1.65, energy);
+    CHECK(deepest > flat);
+    CHECK(0.5 * (deepest + shallowest) == Approx(flat).epsilon(0.1));
 }

@@ -12,9 +12,28 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace crumple::plugin
 {
+
+/// How far behind a crush's front each column of it meets the body: the struck surface's depth along d,
+/// sampled on a square grid across d (bin centres; bilinear between them, the edge bins' values beyond).
+/// Values are in [0, C]: a column that meets nothing within the crush depth C holds C. The grid is made
+/// Lipschitz (no value exceeds a neighbour's by more than mSlope times their distance), so the crush the
+/// columns take, C minus their depth, changes across the footprint no faster than the pocket walls allow.
+struct CRUMPLE_API StruckFront
+{
+    double mSideOrigin = 0.0;  ///< Centre of bin (0, 0) along the plan's mSide (m)
+    double mThirdOrigin = 0.0; ///< Centre of bin (0, 0) along the plan's mThird (m)
+    double mBin = 0.0;         ///< Bin size (m)
+    double mSlope = 1.0;       ///< Largest change of depth per metre across d
+    int mSideCount = 0, mThirdCount = 0;
+    std::vector<double> mDepth; ///< mSideCount x mThirdCount, side fastest (m); empty: a flat front, depth 0
+
+    /// The depth at inSide, inThird (m): 0 on an empty grid.
+    double At(double inSide, double inThird) const;
+};
 
 /// Where and how deep a Campbell crush goes, in the struck body's frame.
 ///
@@ -29,6 +48,12 @@ namespace crumple::plugin
 /// max(2 lattice spacings, C / 2) (pocket walls no steeper than 2:1). So a flat
 /// barrier leaves a flat front at its final position (to within kappa L), a pole a pocket as wide as the
 /// footprint, and nothing moves outside the footprint's margin or behind the crush zone.
+///
+/// A curved or slanted front (a rounded nose, a car hit by a wall at an angle): each column meets the body
+/// F behind s0 (mStruckFront), so it crushes by C - F only, over its own zone behind its own surface; the
+/// struck surface then ends against the impactor's final face instead of being pushed back whole. The
+/// grid's slope limit (half the pocket walls': sqrt(kappa)) keeps the columns' shear fold-free; a front
+/// steeper than that conforms only as far as the limit lets it.
 ///
 /// The occupant cell (DamageMaterial::mCrushZoneFraction): when the crush runs within 60 degrees of the
 /// body's length, each column of the field (a line along d) stops one control spacing h short of where it
@@ -57,11 +82,13 @@ struct CRUMPLE_API CrushPlan
     bool mCellActive = false;     ///< The crush runs along the body's length and an occupant cell limits it
     Vec3 mCellAxis = Vec3::UnitX(); ///< a: the body's length axis, oriented along the crush (a . d > 0)
     double mCellFace = 0.0;       ///< Where the cell begins along mCellAxis (m)
-    bool mStackedUp = false;      ///< Some column of the footprint crushes less than mDepth: its zone stacked up
+    bool mStackedUp = false;      ///< Some column of the footprint crushes less than its share: its zone stacked up
+    StruckFront mStruckFront;         ///< Where each column meets the body, behind mFront (empty: all at mFront)
 
-    /// The crush of the column through inPoint (m) and the length it compacts over behind the flat layer (m):
-    /// mDepth and mZoneLength unless the occupant cell limits the column.
-    std::array<double, 2> ColumnCrush(const Vec3& inPoint) const;
+    /// The column through inPoint: its crush (m), the length it compacts over behind its flat layer (m), and
+    /// how far behind mFront its surface begins (m): mDepth, mZoneLength and 0 on a flat front unless the
+    /// occupant cell limits the column.
+    std::array<double, 3> ColumnCrush(const Vec3& inPoint) const;
     /// The field's displacement magnitude along mDirection at body point inPoint (m), >= 0.
     double DisplacementAt(const Vec3& inPoint) const;
 };
@@ -78,6 +105,19 @@ struct CRUMPLE_API BodyLength
 /// The longer of the two horizontal extents of inRestPositions (the body axis least aligned with inUp, made
 /// perpendicular to it, and up x that axis); ties take the first. An empty span gives an empty extent.
 CRUMPLE_API BodyLength MeasureBodyLength(std::span<const Vec3> inRestPositions, const Vec3& inUp);
+
+/// What a crush plan needs to know of a body that its dents do not change, measured once per body
+/// (DeformableObject keeps it): its length, and its triangles with an edge longer than half the lattice's
+/// finest control spacing at rest, the only ones that can hold a struck-front bin centre that none of their
+/// vertices stands for (StruckFront).
+struct CRUMPLE_API CrushBody
+{
+    BodyLength mLength;
+    std::vector<std::uint32_t> mLargeTriangles; ///< Ascending
+};
+
+/// Measures inDeformer's rest mesh for PlanCampbellCrush.
+CRUMPLE_API CrushBody MeasureCrushBody(const ffd::FfdDeformer& inDeformer, const Vec3& inUp);
 
 /// The width across inUp over which the collision's contacts of side inSide crush, at least inMinWidth (m).
 CRUMPLE_API double CrushWidth(const Collision& inCollision, ECollisionSide inSide, const Vec3& inUp, double inMinWidth);
@@ -107,11 +147,11 @@ CRUMPLE_API void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, 
 /// The crush a collision with inEnergy (J) for this side makes on a body whose deformer is inDeformer; empty
 /// when there is nothing to crush (no closing contact, the energy below G, no vertex in the footprint,
 /// or a depth under the material's minimum) or the material is one ValidateDamageMaterial refuses.
-/// inLength: the body's length (MeasureBodyLength of the deformer's rest mesh, which DeformableObject keeps);
-/// null measures it here, a pass over every rest vertex.
+/// inBody: MeasureCrushBody of the deformer (DeformableObject keeps it); null measures it here, a pass over
+/// the rest mesh.
 CRUMPLE_API std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
                                            const DamageMaterial& inMaterial, const Vec3& inUp,
-                                           const ffd::FfdDeformer& inDeformer, const BodyLength* inLength = nullptr);
+                                           const ffd::FfdDeformer& inDeformer, const CrushBody* inBody = nullptr);
 
 /// Applies a plan: each zone's controls take the field at their current positions (the B-spline
 /// quasi-interpolant of the field, exact for its linear parts), through FfdDeformer::ApplyControlDelta with

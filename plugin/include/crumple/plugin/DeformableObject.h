@@ -42,20 +42,21 @@ public:
     bool GetInterpolateWideImpacts() const { return mInterpolate; }
     /// The body's up direction (body frame, unit)
     const Vec3& GetUpAxis() const { return mUp; }
-    /// The body's length at rest (MeasureBodyLength): where the occupant cell of a Campbell crush lies
-    const BodyLength& GetLength() const { return mLength; }
+    /// What a Campbell crush plan measures of the body once (MeasureCrushBody): its length, where the
+    /// occupant cell lies, and its large triangles
+    const CrushBody& GetCrushBody() const { return mCrushBody; }
     const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
     ffd::FfdDeformer& GetDeformer() { return mDeformer; }
 
 private:
-    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, const Vec3& inUp, const BodyLength& inLength,
+    DeformableObject(const DamageMaterial& inMaterial, bool inInterpolate, const Vec3& inUp, CrushBody inCrushBody,
                      ffd::FfdDeformer inDeformer)
-        : mMaterial(inMaterial), mInterpolate(inInterpolate), mUp(inUp), mLength(inLength), mDeformer(std::move(inDeformer)) {}
+        : mMaterial(inMaterial), mInterpolate(inInterpolate), mUp(inUp), mCrushBody(std::move(inCrushBody)), mDeformer(std::move(inDeformer)) {}
 
     DamageMaterial mMaterial;
     bool mInterpolate = true;
     Vec3 mUp = Vec3::UnitZ();
-    BodyLength mLength;
+    CrushBody mCrushBody;
     ffd::FfdDeformer mDeformer;
 };
 

@@ -1,0 +1,215 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "StruckFront.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+double StruckFront::At(double inSide, double inThird) const
+{
+    if (mDepth.empty())
+        return 0.0;
+    const double u = std::clamp((inSide - mSideOrigin) / mBin, 0.0, static_cast<double>(mSideCount - 1));
+    const double v = std::clamp((inThird - mThirdOrigin) / mBin, 0.0, static_cast<double>(mThirdCount - 1));
+    const int i = std::min(static_cast<int>(u), std::max(mSideCount - 2, 0));
+    const int j = std::min(static_cast<int>(v), std::max(mThirdCount - 2, 0));
+    const double fu = u - i, fv = v - j;
+    const int i1 = std::min(i + 1, mSideCount - 1), j1 = std::min(j + 1, mThirdCount - 1);
+    auto at = [&](int inI, int inJ) { return mDepth[static_cast<std::size_t>(inJ) * static_cast<std::size_t>(mSideCount) + static_cast<std::size_t>(inI)]; };
+    return (1.0 - fv) * ((1.0 - fu) * at(i, j) + fu * at(i1, j)) + fv * ((1.0 - fu) * at(i, j1) + fu * at(i1, j1));
+}
+
+StruckFront MeasureStruckFront(const CrushPlan& inPlan, const ffd::FfdDeformer& inDeformer, std::span<const std::uint32_t> inLargeTriangles,
+                         double inSlope)
+{
+    StruckFront grid;
+    const double depth = inPlan.mDepth;
+    const double margin = inPlan.mFlatLayer + inPlan.mRamp + inPlan.mSpacing;
+    const double side0 = inPlan.mSideMin - margin, side1 = inPlan.mSideMax + margin;
+    const double third0 = inPlan.mThirdMin - margin, third1 = inPlan.mThirdMax + margin;
+    constexpr int cMaxBins = 256; // per axis: a bound on the grid's memory and on its sweeps
+    const double bin = std::max({inPlan.mSpacing, (side1 - side0) / (cMaxBins - 1), (third1 - third0) / (cMaxBins - 1)});
+    if (!(bin > 0.0) || !std::isfinite(bin))
+        return grid;
+    const int ns = static_cast<int>(std::ceil((side1 - side0) / bin)) + 1;
+    const int nt = static_cast<int>(std::ceil((third1 - third0) / bin)) + 1;
+    const std::size_t count = static_cast<std::size_t>(ns) * static_cast<std::size_t>(nt);
+    std::vector<double> front(count, depth);
+    std::vector<std::uint8_t> met(count, 0);
+    auto index = [&](int inI, int inJ) { return static_cast<std::size_t>(inJ) * static_cast<std::size_t>(ns) + static_cast<std::size_t>(inI); };
+
+    // The positions dents work on (GetCurrentPositions: a deferred dent is ahead of what the game sees).
+    // Every vertex marks the bin its column falls in as met by the body (a column met only behind the slab,
+    // above a bonnet say, must hold the slab's depth, not its neighbours') and lowers it to its own depth.
+    const double inverse = 1.0 / bin;
+    for (const Vec3& p : inDeformer.GetCurrentPositions())
+    {
+        // Bin coordinates plus a half, so that truncation rounds to the nearest centre.
+        const double u = (inPlan.mSide.dot(p) - side0) * inverse + 0.5;
+        if (!(u >= 0.0 && u < ns))
+            continue;
+        const double w = (inPlan.mThird.dot(p) - third0) * inverse + 0.5;
+        if (!(w >= 0.0 && w < nt))
+            continue;
+        const std::size_t b = index(static_cast<int>(u), static_cast<int>(w));
+        met[b] = 1;
+        front[b] = std::min(front[b], std::max(inPlan.mDirection.dot(p) - inPlan.mFront, 0.0));
+    }
+    // A triangle larger than half a bin can hold a bin centre none of its vertices stands for: its depth
+    // there, where it reaches into the slab.
+    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
+    const std::vector<std::array<std::uint32_t, 3>>& triangles = inDeformer.GetRestMesh().mTriangles;
+    for (std::uint32_t triangle : inLargeTriangles)
+    {
+        const std::array<std::uint32_t, 3>& t = triangles[triangle];
+        std::array<double, 3> x{}, y{}, z{};
+        for (std::size_t k = 0; k < 3; ++k)
+            z[k] = inPlan.mDirection.dot(positions[t[k]]) - inPlan.mFront;
+        if (std::min({z[0], z[1], z[2]}) >= depth)
+            continue;
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+            x[k] = inPlan.mSide.dot(positions[t[k]]);
+            y[k] = inPlan.mThird.dot(positions[t[k]]);
+        }
+        const double area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+        if (!(std::abs(area) > 0.0))
+            continue; // seen edge-on: its vertices stand for it
+        const int i0 = std::max(static_cast<int>(std::ceil((std::min({x[0], x[1], x[2]}) - side0) * inverse)), 0);
+        const int i1 = std::min(static_cast<int>(std::floor((std::max({x[0], x[1], x[2]}) - side0) * inverse)), ns - 1);
+        const int j0 = std::max(static_cast<int>(std::ceil((std::min({y[0], y[1], y[2]}) - third0) * inverse)), 0);
+        const int j1 = std::min(static_cast<int>(std::floor((std::max({y[0], y[1], y[2]}) - third0) * inverse)), nt - 1);
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i)
+            {
+                const double px = side0 + i * bin, py = third0 + j * bin;
+                // Barycentric weights of the bin centre in the projected triangle.
+                const double wb = ((px - x[0]) * (y[2] - y[0]) - (py - y[0]) * (x[2] - x[0])) / area;
+                const double wc = ((x[1] - x[0]) * (py - y[0]) - (y[1] - y[0]) * (px - x[0])) / area;
+                const double wa = 1.0 - wb - wc;
+                if (wa < 0.0 || wb < 0.0 || wc < 0.0)
+                    continue;
+                const std::size_t k = index(i, j);
+                met[k] = 1;
+                front[k] = std::min(front[k], std::max(wa * z[0] + wb * z[1] + wc * z[2], 0.0));
+            }
+    }
+
+    // Bins the body never meets take the least depth of their met neighbours, ring by ring.
+    bool any = false;
+    for (std::uint8_t m : met)
+        any = any || m != 0;
+    if (!any)
+        return grid;
+    for (bool open = true; open;)
+    {
+        open = false;
+        std::vector<std::uint8_t> next = met;
+        for (int j = 0; j < nt; ++j)
+            for (int i = 0; i < ns; ++i)
+            {
+                if (met[index(i, j)] != 0)
+                    continue;
+                double least = std::numeric_limits<double>::infinity();
+                for (int dj = -1; dj <= 1; ++dj)
+                    for (int di = -1; di <= 1; ++di)
+                    {
+                        const int ii = i + di, jj = j + dj;
+                        if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && met[index(ii, jj)] != 0)
+                            least = std::min(least, front[index(ii, jj)]);
+                    }
+                if (std::isfinite(least))
+                {
+                    front[index(i, j)] = least;
+                    next[index(i, j)] = 1;
+                }
+                else
+                    open = true;
+            }
+        met.swap(next);
+    }
+    // Chamfer sweeps: no bin deeper than a neighbour's depth plus the slope times their distance.
+    const double straight = inSlope * bin, diagonal = inSlope * bin * std::numbers::sqrt2;
+    auto relax = [&](int inI, int inJ, int inDi, int inDj, double inStep) {
+        const int ii = inI + inDi, jj = inJ + inDj;
+        if (ii >= 0 && ii < ns && jj >= 0 && jj < nt)
+            front[index(inI, inJ)] = std::min(front[index(inI, inJ)], front[index(ii, jj)] + inStep);
+    };
+    for (int j = 0; j < nt; ++j)
+        for (int i = 0; i < ns; ++i)
+        {
+            relax(i, j, -1, 0, straight);
+            relax(i, j, 0, -1, straight);
+            relax(i, j, -1, -1, diagonal);
+            relax(i, j, 1, -1, diagonal);
+        }
+    for (int j = nt - 1; j >= 0; --j)
+        for (int i = ns - 1; i >= 0; --i)
+        {
+            relax(i, j, 1, 0, straight);
+            relax(i, j, 0, 1, straight);
+            relax(i, j, 1, 1, diagonal);
+            relax(i, j, -1, 1, diagonal);
+        }
+    bool flat = true;
+    for (double f : front)
+        flat = flat && f == 0.0;
+    if (flat)
+        return grid;
+    grid.mSideOrigin = side0;
+    grid.mThirdOrigin = third0;
+    grid.mBin = bin;
+    grid.mSlope = inSlope;
+    grid.mSideCount = ns;
+    grid.mThirdCount = nt;
+    grid.mDepth = std::move(front);
+    return grid;
+}
+
+double ProfileCrushDepth(const CrushPlan& inPlan, const DamageMaterial& inMaterial, double inPrevious, double inEnergy,
+                         double inFlatDepth)
+{
+    constexpr int cStations = 32;
+    const StruckFront& grid = inPlan.mStruckFront;
+    const double width = inPlan.mSideMax - inPlan.mSideMin, height = inPlan.mThirdMax - inPlan.mThirdMin;
+    const int rows = std::clamp(static_cast<int>(std::ceil(height / grid.mBin)), 1, 256);
+    std::array<double, cStations> fronts{};
+    double deepest = 0.0;
+    for (int s = 0; s < cStations; ++s)
+    {
+        const double side = inPlan.mSideMin + (s + 0.5) * width / cStations;
+        double least = std::numeric_limits<double>::infinity();
+        for (int r = 0; r < rows; ++r)
+            least = std::min(least, grid.At(side, inPlan.mThirdMin + (r + 0.5) * height / rows));
+        fronts[static_cast<std::size_t>(s)] = least;
+        deepest = std::max(deepest, least);
+    }
+    const double station = width / cStations;
+    const double g = inPrevious > 0.0 ? 0.0 : inMaterial.mCrushG * width;
+    auto energy = [&](double inDepth) {
+        double e = g;
+        for (double f : fronts)
+        {
+            const double c = inDepth - f;
+            if (c > 0.0)
+                e += station * (inMaterial.mCrushA * c + inMaterial.mCrushB * (inPrevious * c + 0.5 * c * c));
+        }
+        return e;
+    };
+    double low = inFlatDepth, high = inFlatDepth + deepest;
+    for (int i = 0; i < 64 && high - low > 1.0e-12 * (1.0 + high); ++i)
+    {
+        const double middle = 0.5 * (low + high);
+        (energy(middle) < inEnergy ? low : high) = middle;
+    }
+    return high;
+}
+
+} // namespace crumple::plugin
