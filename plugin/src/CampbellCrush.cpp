@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
 namespace crumple::plugin
