@@ -5,11 +5,13 @@
 #include "ThreadJobSystem.h"
 
 #include <crumple/plugin/BaraffImpulse.h>
+#include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DeformableObject.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -238,6 +240,38 @@ void ScalingCase(BenchTable& ioTable, int inSmall, int inLarge, int inRepetition
                      FormatExtra(1000.0 * small_per_vertex) + ";large_us_per_vertex=" + FormatExtra(1000.0 * large_per_vertex)});
 }
 
+// What planning a Campbell crush costs beside applying it: PlanCampbellCrush alone (the footprint probe,
+// the struck front's pass over the body's vertices and large triangles, the profile's depth, the cell) and
+// the whole ApplyCollision (plan and control field), interleaved, on the box body of inTriangles with its
+// default lattice. The box's front is flat and square to the crush, so the plan's depth must be the closed
+// form's: the error is its distance from CampbellCrushDepth over the footprint's width.
+void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions)
+{
+    const Collision collision = MakeFrontCollision(64);
+    const DeformableObject pristine = MakeCar(inTriangles, 1, 0, ECrushModel::Campbell);
+    DeformableObject car = pristine;
+    std::optional<CrushPlan> plan;
+    ffd::DentReport report;
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions,
+        {{[] {},
+          [&] {
+              plan = PlanCampbellCrush(collision, ECollisionSide::B, collision.mCrushEnergyB, pristine.GetMaterial(),
+                                       pristine.GetUpAxis(), pristine.GetDeformer(), &pristine.GetCrushBody());
+          }},
+         {[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }}});
+    if (!plan)
+        throw std::runtime_error("crush_plan: the collision planned no crush");
+    const double law = CampbellCrushDepth(pristine.GetMaterial(), plan->mWidth, collision.mCrushEnergyB);
+    ioTable.Add({"crush_plan", std::to_string(inTriangles / 1000) + "k_tris/campbell/64_contacts", timing[0].mWallMs,
+                 std::abs(plan->mDepth - law) / law, "rel_depth_vs_flat_law",
+                 "plan_cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";apply_collision_ms=" + FormatExtra(timing[1].mWallMs) +
+                     ";apply_collision_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";plan_share_cpu=" +
+                     FormatExtra(timing[0].mCpuMs / timing[1].mCpuMs) + ";large_triangles=" +
+                     std::to_string(pristine.GetCrushBody().mLargeTriangles.size()) + ";vertices_updated=" +
+                     std::to_string(report.mVerticesMoved)});
+}
+
 } // namespace
 
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -266,6 +300,9 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     // written from the footprint.
     for (int controls : {8, 16, 0})
         ApplyCase(ioTable, "apply_collision", triangles, 1, controls, 64, repetitions, ECrushModel::Campbell);
+
+    // Its plan alone, beside the whole crush.
+    PlanCase(ioTable, triangles, repetitions);
 
     // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
     ScalingCase(ioTable, triangles, 4 * triangles, repetitions);
