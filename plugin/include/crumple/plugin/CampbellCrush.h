@@ -19,7 +19,8 @@ namespace crumple::plugin
 
 /// How far behind a crush's front each column of it meets the body: the struck surface's depth along d,
 /// sampled on a square grid across d (bin centres; bilinear between them, the edge bins' values beyond).
-/// Values are in [0, C]: a column that meets nothing within the crush depth C holds C. The grid is made
+/// Values are in [0, S], S the depth of the slab it was measured in (at least the crush depth C): a column
+/// that meets nothing within the slab holds S, and crushes nothing. The grid is made
 /// Lipschitz (no value exceeds a neighbour's by more than mSlope times their distance), so the crush the
 /// columns take, C minus their depth, changes across the footprint no faster than the pocket walls allow.
 struct CRUMPLE_API StruckFront
@@ -83,7 +84,7 @@ struct CRUMPLE_API CrushPlan
     Vec3 mCellAxis = Vec3::UnitX(); ///< a: the body's length axis, oriented along the crush (a . d > 0)
     double mCellFace = 0.0;       ///< Where the cell begins along mCellAxis (m)
     bool mStackedUp = false;      ///< Some column of the footprint crushes less than its share: its zone stacked up
-    StruckFront mStruckFront;         ///< Where each column meets the body, behind mFront (empty: all at mFront)
+    StruckFront mStruckFront;     ///< Where each column meets the body, behind mFront (empty: all at mFront)
 
     /// The column through inPoint: its crush (m), the length it compacts over behind its flat layer (m), and
     /// how far behind mFront its surface begins (m): mDepth, mZoneLength and 0 on a flat front unless the
