@@ -129,15 +129,22 @@ std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattic
 // past kappa, so the pocket's walls widen to keep facing out (the k < 2 sqrt(f) rule of PlanCampbellCrush,
 // f the column's remaining fraction); the footprint's corners and centre bound the columns (the cell's face
 // is a plane, so the room is linear across the footprint).
-void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, CrushPlan& ioPlan)
+void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, const ffd::FfdDeformer& inDeformer, CrushPlan& ioPlan)
 {
     const double extent = inLength.mMax - inLength.mMin;
     const double along = inLength.mAxis.dot(ioPlan.mDirection);
+    // The lattice's coarsest control spacing along the length.
+    double axis_spacing = 0.0;
+    for (const ffd::FfdLattice& zone : inDeformer.GetZones())
+        axis_spacing = std::max(axis_spacing, (zone.GetSettings().mAxes.transpose() * inLength.mAxis)
+                                                  .cwiseAbs()
+                                                  .cwiseProduct(zone.GetSpacing())
+                                                  .sum());
     // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over:
     // a coarser lattice cannot keep a cell apart from its crush zone, and crushes as without one.
     constexpr double cMinZoneSpacings = 4.0;
     if (!(inMaterial.mCrushZoneFraction < 0.5) || !(extent > 0.0) || !(std::abs(along) >= 0.5) ||
-        !(inMaterial.mCrushZoneFraction * extent >= cMinZoneSpacings * ioPlan.mSpacing))
+        !(inMaterial.mCrushZoneFraction * extent >= cMinZoneSpacings * axis_spacing))
         return;
     ioPlan.mCellActive = true;
     // The struck end is where the oriented axis comes in from; the cell begins a zone's share of the length
@@ -361,7 +368,7 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // therefore slope at most 2 sqrt(f) : 1 (1:1 at the default quarter; the 2:1 walls before turned the box
     // car's pocket walls over at 64 km/h), and the fade spans at least two control spacings.
     plan.mRamp = std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01))));
-    LimitByCell(inMaterial, body.mLength, plan);
+    LimitByCell(inMaterial, body.mLength, inDeformer, plan);
     return plan;
 }
 

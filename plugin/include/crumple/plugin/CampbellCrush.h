@@ -62,7 +62,11 @@ struct CRUMPLE_API StruckFront
 /// field's last spacing moves by less than a fifth of (1 - kappa) h). A column with room Z behind the flat
 /// layer crushes by C while C <= (1 - kappa) Z; past that its zone stacks up: the column crushes by
 /// C1 + (C2 - C1)(1 - exp(-(C - C1) / (C2 - C1))), C1 = (1 - kappa) Z, C2 = (1 - kappa / 2) Z, compacted over
-/// Z, so the crush still grows with the energy but never reaches the cell.
+/// Z, so the crush still grows with the energy but never reaches the cell. The lattice's spacing along the
+/// length must fit four times in the zone, or no cell is kept. The fold guard keeps controls
+/// FfdDeformerSettings::mMinControlSpacing (0.2) of a spacing apart: a zone compacted closer (kappa / 2 below
+/// it) has the guard push the rest on, into the cell: 1.9 mm at the default quarter on the tested bodies,
+/// 3.3 % of the crush with kappa 0.1 at 40 degrees (CampbellCrushTest's stress case).
 struct CRUMPLE_API CrushPlan
 {
     Vec3 mDirection = Vec3::UnitX(); ///< d: unit crush direction, into the body
