@@ -65,7 +65,9 @@ struct CRUMPLE_API DamageMaterial
     /// of it, so the cabin and its roof never move (CrushPlan). 0.25: the front and rear quarters of a car,
     /// bumper to windscreen base and boot (an assumption to set per vehicle, not a measured value); 0.5: no
     /// cell (every crush compacts as deep as Campbell's law asks). Sideways crushes are not limited, nor are
-    /// crushes on a lattice coarser than a quarter of the zone along the crush (it cannot keep them apart).
+    /// crushes on a lattice whose spacing along the length exceeds a quarter of the zone (it cannot keep them
+    /// apart). With mCrushedLengthFraction below the fold guard's gap (FfdDeformerSettings::mMinControlSpacing)
+    /// a stacked-up crush leaks into the cell (CrushPlan).
     double mCrushZoneFraction = 0.25;
 };
 
