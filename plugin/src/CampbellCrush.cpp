@@ -124,6 +124,15 @@ std::array<int, 2> FieldRangeOnRow(const CrushPlan& inPlan, const ffd::FfdLattic
     return {std::max(static_cast<int>(std::floor(low)) - 1, 0), std::min(static_cast<int>(std::ceil(high)) + 1, last)};
 }
 
+// The lattice's coarsest control spacing along the unit direction inAlong, over the deformer's zones (m).
+double CoarsestSpacingAlong(const ffd::FfdDeformer& inDeformer, const Vec3& inAlong)
+{
+    double spacing = 0.0;
+    for (const ffd::FfdLattice& zone : inDeformer.GetZones())
+        spacing = std::max(spacing, (zone.GetSettings().mAxes.transpose() * inAlong).cwiseAbs().cwiseProduct(zone.GetSpacing()).sum());
+    return spacing;
+}
+
 // The occupant cell's limit on a planned crush (CrushPlan): active when the crush runs within 60 degrees of
 // the body's length and the material leaves a cell. Where a footprint column stacks up, its compaction goes
 // past kappa, so the pocket's walls widen to keep facing out (the k < 2 sqrt(f) rule of PlanCampbellCrush,
@@ -133,13 +142,7 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, c
 {
     const double extent = inLength.mMax - inLength.mMin;
     const double along = inLength.mAxis.dot(ioPlan.mDirection);
-    // The lattice's coarsest control spacing along the length.
-    double axis_spacing = 0.0;
-    for (const ffd::FfdLattice& zone : inDeformer.GetZones())
-        axis_spacing = std::max(axis_spacing, (zone.GetSettings().mAxes.transpose() * inLength.mAxis)
-                                                  .cwiseAbs()
-                                                  .cwiseProduct(zone.GetSpacing())
-                                                  .sum());
+    const double axis_spacing = CoarsestSpacingAlong(inDeformer, inLength.mAxis);
     // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over:
     // a coarser lattice cannot keep a cell apart from its crush zone, and crushes as without one.
     constexpr double cMinZoneSpacings = 4.0;
@@ -292,24 +295,19 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     plan.mThirdMin = footprint->mThirdMin;
     plan.mThirdMax = footprint->mThirdMax;
     plan.mWidth = plan.mSideMax - plan.mSideMin;
-    // The lattice's coarsest control spacing along the crush: the layer the spline blends over there.
-    double spacing = 0.0;
-    for (const ffd::FfdLattice& zone : inDeformer.GetZones())
-        spacing = std::max(spacing, (zone.GetSettings().mAxes.transpose() * plan.mDirection)
-                                        .cwiseAbs()
-                                        .cwiseProduct(zone.GetSpacing())
-                                        .sum());
+    // The layer the spline blends over along the crush.
+    const double spacing = CoarsestSpacingAlong(inDeformer, plan.mDirection);
 
     // The impactor meets the body's foremost surface point in the footprint (a low-poly roof may have no
     // vertex there, only a triangle across it); the crush already there is the deepest earlier inward move
     // of the vertices in the footprint, or of the triangles across it when none is.
     const ffd::SurfaceProbeResult surface = inDeformer.ProbeSurface(*footprint);
+    if (!std::isfinite(surface.mFront))
+        return std::nullopt;
     std::optional<CrushBody> measured;
     if (inBody == nullptr)
         measured = MeasureCrushBody(inDeformer, inUp);
     const CrushBody& body = inBody != nullptr ? *inBody : *measured;
-    if (!std::isfinite(surface.mFront))
-        return std::nullopt;
     const double front = surface.mFront;
     // A move shallower than the material's smallest dent (the fade of a neighbouring crush) is no crush: it
     // must not waive the no-damage energy G of an undamaged front.
