@@ -28,6 +28,16 @@ Status ValidateBodyState(const BodyState& inState)
         return MakeError(EError::OutOfRange, "BodyState is farther than 1e9 m from the world's origin");
     if (!IsRotation(inState.mTransform.mRotation, 1.0e-6))
         return MakeError(EError::DegenerateGeometry, "BodyState.mTransform.mRotation is not a rotation");
+    if (inState.mHasShapeBounds)
+    {
+        if (!IsFinite(inState.mShapeMin) || !IsFinite(inState.mShapeMax))
+            return MakeError(EError::NonFinite, "BodyState.mShapeMin or mShapeMax has a NaN or Inf component");
+        if (!(inState.mShapeMin.cwiseAbs().maxCoeff() <= cMaxBodyPosition) ||
+            !(inState.mShapeMax.cwiseAbs().maxCoeff() <= cMaxBodyPosition))
+            return MakeError(EError::OutOfRange, "BodyState.mShapeMin or mShapeMax is beyond 1e9 m (state an unbounded shape out to 1e9 m)");
+        if (!(inState.mShapeMin.array() <= inState.mShapeMax.array()).all())
+            return MakeError(EError::InvalidArgument, "BodyState.mShapeMin is above mShapeMax on an axis");
+    }
     if (inState.mMotionType == EMotionType::Dynamic)
     {
         if (!(inState.mMass > 0.0))

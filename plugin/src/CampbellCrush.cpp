@@ -133,6 +133,90 @@ double CoarsestSpacingAlong(const ffd::FfdDeformer& inDeformer, const Vec3& inAl
     return spacing;
 }
 
+CrossRect Union(const CrossRect& inA, const CrossRect& inB)
+{
+    return {std::min(inA.mSideMin, inB.mSideMin), std::max(inA.mSideMax, inB.mSideMax), std::min(inA.mThirdMin, inB.mThirdMin),
+            std::max(inA.mThirdMax, inB.mThirdMax)};
+}
+
+// Where the impactor's face can meet the body across the plan's direction: the impactor's shape box across
+// d, within the body's rest bounding box across d. None when they do not overlap.
+std::optional<CrossRect> ImpactorFace(const CrushPlan& inPlan, const ShapeBox& inImpactor, const CrushBody& inBody)
+{
+    const ShapeBox outline{0.5 * (inBody.mRestMin + inBody.mRestMax), Mat3((0.5 * (inBody.mRestMax - inBody.mRestMin)).asDiagonal()), true};
+    const std::array<double, 2> side = inImpactor.ExtentAlong(inPlan.mSide), third = inImpactor.ExtentAlong(inPlan.mThird);
+    const std::array<double, 2> body_side = outline.ExtentAlong(inPlan.mSide), body_third = outline.ExtentAlong(inPlan.mThird);
+    const CrossRect face{std::max(side[0], body_side[0]), std::min(side[1], body_side[1]), std::max(third[0], body_third[0]),
+                         std::min(third[1], body_third[1])};
+    if (!(face.mSideMin <= face.mSideMax && face.mThirdMin <= face.mThirdMax))
+        return std::nullopt;
+    return face;
+}
+
+// The footprint of a crush C deep against the impactor's face: the rectangle the contacts span and the
+// face's bins whose surface lies less than C behind the front (the impactor, advancing C, reaches them), each
+// bin counted whole where it overlaps the face, widened to inMinWidth as the contacts' own footprint is.
+CrossRect FootprintAtDepth(const CrossRect& inContacts, const CrossRect& inFace, const SurfaceBins& inBins, double inDepth,
+                           double inMinWidth)
+{
+    CrossRect footprint = inContacts;
+    const double half = 0.5 * inBins.mBin;
+    for (int j = 0; j < inBins.mThirdCount; ++j)
+    {
+        const double third = inBins.mThirdOrigin + j * inBins.mBin;
+        if (!(third + half > inFace.mThirdMin && third - half < inFace.mThirdMax))
+            continue;
+        for (int i = 0; i < inBins.mSideCount; ++i)
+        {
+            const double side = inBins.mSideOrigin + i * inBins.mBin;
+            if (!(side + half > inFace.mSideMin && side - half < inFace.mSideMax) ||
+                !(inBins.mDepth[static_cast<std::size_t>(j) * static_cast<std::size_t>(inBins.mSideCount) + static_cast<std::size_t>(i)] < inDepth))
+                continue;
+            footprint.mSideMin = std::min(footprint.mSideMin, std::max(side - half, inFace.mSideMin));
+            footprint.mSideMax = std::max(footprint.mSideMax, std::min(side + half, inFace.mSideMax));
+            footprint.mThirdMin = std::min(footprint.mThirdMin, std::max(third - half, inFace.mThirdMin));
+            footprint.mThirdMax = std::max(footprint.mThirdMax, std::min(third + half, inFace.mThirdMax));
+        }
+    }
+    Widen(footprint.mSideMin, footprint.mSideMax, inMinWidth);
+    Widen(footprint.mThirdMin, footprint.mThirdMax, inMinWidth);
+    return footprint;
+}
+
+// A crush against an impactor whose face reaches past the contacts (a wall before a rounded nose): the
+// footprint grows to the surface the face reaches as it advances, and a wider footprint takes the energy at a
+// shallower crush. Solves C = Depth(Footprint(C)) by bisection: Footprint grows with C and Depth falls with
+// the width, from the contacts' own crush (C0, Footprint(0) = the contacts' widened footprint) down. Leaves
+// the footprint on ioPlan (the one of the upper bracket, which holds every column the answer crushes) and
+// returns the crush. inContacts: the contacts' span, not widened.
+double ConformToImpactor(CrushPlan& ioPlan, const CrossRect& inContacts, const CrossRect& inFace, const SurfaceBins& inBins,
+                         const DamageMaterial& inMaterial, double inPrevious, double inEnergy)
+{
+    const double min_width = inMaterial.mMinCrushWidth;
+    auto depth_over = [&](const CrossRect& inFootprint) {
+        ioPlan.mSideMin = inFootprint.mSideMin;
+        ioPlan.mSideMax = inFootprint.mSideMax;
+        ioPlan.mThirdMin = inFootprint.mThirdMin;
+        ioPlan.mThirdMax = inFootprint.mThirdMax;
+        ioPlan.mWidth = ioPlan.mSideMax - ioPlan.mSideMin;
+        const double absorbed = CampbellCrushEnergy(inMaterial, ioPlan.mWidth, inPrevious);
+        const double flat = CampbellCrushDepth(inMaterial, ioPlan.mWidth, absorbed + inEnergy) - inPrevious;
+        if (!(flat > 0.0) || ioPlan.mStruckFront.mDepth.empty())
+            return flat;
+        return ProfileCrushDepth(ioPlan, inMaterial, inPrevious, inEnergy, flat);
+    };
+    double high = depth_over(FootprintAtDepth(inContacts, inFace, inBins, 0.0, min_width));
+    double low = 0.0;
+    if (!(high > 0.0))
+        return high;
+    for (int i = 0; i < 48 && high - low > 1.0e-9 * (1.0 + high); ++i)
+    {
+        const double middle = 0.5 * (low + high);
+        (depth_over(FootprintAtDepth(inContacts, inFace, inBins, middle, min_width)) >= middle ? low : high) = middle;
+    }
+    return depth_over(FootprintAtDepth(inContacts, inFace, inBins, high, min_width));
+}
+
 // The occupant cell's limit on a planned crush (CrushPlan): active when the crush runs within 60 degrees of
 // the body's length and the material leaves a cell. Where a footprint column stacks up, its compaction goes
 // past kappa, so the pocket's walls widen to keep facing out (the k < 2 sqrt(f) rule of PlanCampbellCrush,
@@ -330,14 +414,25 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     plan.mSpacing = spacing;
     plan.mFlatLayer = spacing;
     const double wall_slope = 2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01));
+    const ShapeBox& impactor = inSide == ECollisionSide::A ? inCollision.mShapeOfBOnA : inCollision.mShapeOfAOnB;
+    const CrossRect contacts{plan.mSideMin, plan.mSideMax, plan.mThirdMin, plan.mThirdMax};
+    std::optional<CrossRect> face = impactor.mKnown ? ImpactorFace(plan, impactor, body) : std::nullopt;
+    CrossRect touched; // the contacts' own span, not widened
+    if (const std::optional<ffd::SurfaceProbe> span = face ? FootprintOf(inCollision, inSide, inUp, 0.0) : std::nullopt)
+        touched = CrossRect{span->mSideMin, span->mSideMax, span->mThirdMin, span->mThirdMax};
+    else
+        face.reset();
     for (double slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * depth + 2.0 * spacing); depth > 0.0;)
     {
         plan.mRamp = std::max(2.0 * spacing, slab / wall_slope);
         plan.mDepth = slab;
         // Half the pocket walls' slope limit: the columns' shear adds to the walls' where both are.
-        plan.mStruckFront = MeasureStruckFront(plan, inDeformer, body.mLargeTriangles, 0.5 * wall_slope);
+        SurfaceBins surface_bins;
+        plan.mStruckFront = MeasureStruckFront(plan, face ? Union(*face, contacts) : contacts, inDeformer, body.mLargeTriangles,
+                                               0.5 * wall_slope, face ? &surface_bins : nullptr);
         const double profiled =
-            plan.mStruckFront.mDepth.empty() ? depth : ProfileCrushDepth(plan, inMaterial, previous, inEnergy, depth);
+            face ? ConformToImpactor(plan, touched, *face, surface_bins, inMaterial, previous, inEnergy)
+                 : (plan.mStruckFront.mDepth.empty() ? depth : ProfileCrushDepth(plan, inMaterial, previous, inEnergy, depth));
         if (profiled <= slab || slab >= inMaterial.mMaxInstantDeformation)
         {
             depth = profiled;

@@ -38,7 +38,8 @@ double CollisionGrouper::WindowOf(const Collision& inCollision) const
     return std::find(mEachStep.begin(), mEachStep.end(), inCollision.mSequence) != mEachStep.end() ? 0.0 : mSettings.mTimeWindow;
 }
 
-void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep)
+void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep,
+                           const std::array<ShapeBox, 2>& inShapes)
 {
     if (inContacts.empty())
         return;
@@ -68,6 +69,8 @@ void CollisionGrouper::Add(BodyId inBodyA, BodyId inBodyB, std::span<const Colli
     collision.mEndTime = time;
     collision.mSequence = mNextSequence++;
     collision.mContacts.assign(inContacts.begin(), inContacts.end());
+    collision.mShapeOfBOnA = inShapes[0];
+    collision.mShapeOfAOnB = inShapes[1];
     if (inEachStep)
         mEachStep.push_back(collision.mSequence);
     mOpen.push_back(std::move(collision));

@@ -42,6 +42,15 @@ CrushBody MeasureCrushBody(const ffd::FfdDeformer& inDeformer, const Vec3& inUp)
     CrushBody body;
     const ffd::TriangleMesh& rest = inDeformer.GetRestMesh();
     body.mLength = MeasureBodyLength(rest.mPositions, inUp);
+    if (!rest.mPositions.empty())
+    {
+        body.mRestMin = body.mRestMax = rest.mPositions.front();
+        for (const Vec3& p : rest.mPositions)
+        {
+            body.mRestMin = body.mRestMin.cwiseMin(p);
+            body.mRestMax = body.mRestMax.cwiseMax(p);
+        }
+    }
     const double large = 0.5 * inDeformer.GetMinSpacing();
     const double large2 = large * large;
     for (std::uint32_t t = 0; t < rest.mTriangles.size(); ++t)

@@ -16,6 +16,25 @@
 namespace crumple::plugin
 {
 
+namespace
+{
+
+// inOf's collision shape box (BodyState::mShapeMin, mShapeMax) in inIn's body frame; unknown when inOf did not
+// state its shape.
+ShapeBox ShapeBoxIn(const BodyState& inOf, const BodyState& inIn)
+{
+    ShapeBox box;
+    if (!inOf.mHasShapeBounds)
+        return box;
+    box.mCenter = inIn.mTransform.ToBody(inOf.mTransform.ToWorld(0.5 * (inOf.mShapeMin + inOf.mShapeMax)));
+    box.mHalfAxes = inIn.mTransform.mRotation.transpose() * inOf.mTransform.mRotation *
+                    (0.5 * (inOf.mShapeMax - inOf.mShapeMin)).asDiagonal();
+    box.mKnown = true;
+    return box;
+}
+
+} // namespace
+
 Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettings& inSettings)
 {
     if (!(inSettings.mRestitution >= 0.0 && inSettings.mRestitution <= 1.0))
@@ -418,8 +437,12 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             mImpactMemories.push_back(memory);
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
-        mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b],
-                     mBodies[batches[b].mA.mValue].mDispatchEachStep || mBodies[batches[b].mB.mValue].mDispatchEachStep);
+    {
+        const BodySlot& slot_a = mBodies[batches[b].mA.mValue];
+        const BodySlot& slot_b = mBodies[batches[b].mB.mValue];
+        mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b], slot_a.mDispatchEachStep || slot_b.mDispatchEachStep,
+                     {ShapeBoxIn(slot_b.mState, slot_a.mState), ShapeBoxIn(slot_a.mState, slot_b.mState)});
+    }
     return Status::Ok();
 }
 

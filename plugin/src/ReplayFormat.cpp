@@ -163,6 +163,21 @@ Result<Collision> DecodeCollision(std::span<const std::byte> inPayload, std::uin
     collision.mSequence = reader.ReadU64();
     collision.mCrushEnergyA = reader.ReadDouble();
     collision.mCrushEnergyB = reader.ReadDouble();
+    if (inVersion >= 11)
+        for (ShapeBox* box : {&collision.mShapeOfBOnA, &collision.mShapeOfAOnB})
+        {
+            const std::uint8_t known = reader.ReadU8();
+            box->mCenter = reader.ReadVec3();
+            for (int c = 0; c < 3; ++c)
+                box->mHalfAxes.col(c) = reader.ReadVec3();
+            box->mKnown = known == 1;
+            // Boxes within BodyState's ranges, seen from a body within them, lie within a few 1e9 m.
+            constexpr double cMaxShapeCoordinate = 1.0e10; // m
+            if (known > 1 || !IsFinite(box->mCenter) || !IsFinite(box->mHalfAxes) ||
+                !(box->mCenter.cwiseAbs().maxCoeff() <= cMaxShapeCoordinate) ||
+                !(box->mHalfAxes.cwiseAbs().maxCoeff() <= cMaxShapeCoordinate))
+                return MakeError(EError::CorruptData, "collision record: a shape box is not finite, out of range or has a bad flag");
+        }
     // What a writer can produce: bodies within BodyState's ranges give impulses of at most about 1e28 N s and
     // energies of about 1e44 J. The bounds leave room above those, and keep sums over a record's contacts
     // finite; what follows from them is bounded where it is used (a crush depth clamps to the material's
@@ -315,6 +330,13 @@ std::vector<std::byte> EncodeCollision(const Collision& inCollision)
     writer.WriteU64(inCollision.mSequence);
     writer.WriteDouble(inCollision.mCrushEnergyA);
     writer.WriteDouble(inCollision.mCrushEnergyB);
+    for (const ShapeBox* box : {&inCollision.mShapeOfBOnA, &inCollision.mShapeOfAOnB})
+    {
+        writer.WriteU8(box->mKnown ? 1 : 0);
+        writer.WriteVec3(box->mCenter);
+        for (int c = 0; c < 3; ++c)
+            writer.WriteVec3(box->mHalfAxes.col(c));
+    }
     writer.WriteU32(static_cast<std::uint32_t>(inCollision.mContacts.size()));
     for (const CollisionContact& c : inCollision.mContacts)
     {

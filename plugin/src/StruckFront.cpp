@@ -26,14 +26,14 @@ double StruckFront::At(double inSide, double inThird) const
     return (1.0 - fv) * ((1.0 - fu) * at(i, j) + fu * at(i1, j)) + fv * ((1.0 - fu) * at(i, j1) + fu * at(i1, j1));
 }
 
-StruckFront MeasureStruckFront(const CrushPlan& inPlan, const ffd::FfdDeformer& inDeformer, std::span<const std::uint32_t> inLargeTriangles,
-                         double inSlope)
+StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegion, const ffd::FfdDeformer& inDeformer,
+                               std::span<const std::uint32_t> inLargeTriangles, double inSlope, SurfaceBins* outSurface)
 {
     StruckFront grid;
     const double depth = inPlan.mDepth;
     const double margin = inPlan.mFlatLayer + inPlan.mRamp + inPlan.mSpacing;
-    const double side0 = inPlan.mSideMin - margin, side1 = inPlan.mSideMax + margin;
-    const double third0 = inPlan.mThirdMin - margin, third1 = inPlan.mThirdMax + margin;
+    const double side0 = inRegion.mSideMin - margin, side1 = inRegion.mSideMax + margin;
+    const double third0 = inRegion.mThirdMin - margin, third1 = inRegion.mThirdMax + margin;
     constexpr int cMaxBins = 256; // per axis: a bound on the grid's memory and on its sweeps
     const double bin = std::max({inPlan.mSpacing, (side1 - side0) / (cMaxBins - 1), (third1 - third0) / (cMaxBins - 1)});
     if (!(bin > 0.0) || !std::isfinite(bin))
@@ -102,6 +102,18 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const ffd::FfdDeformer& 
             }
     }
 
+    if (outSurface != nullptr)
+    {
+        outSurface->mSideOrigin = side0;
+        outSurface->mThirdOrigin = third0;
+        outSurface->mBin = bin;
+        outSurface->mSideCount = ns;
+        outSurface->mThirdCount = nt;
+        outSurface->mDepth.assign(count, std::numeric_limits<double>::infinity());
+        for (std::size_t k = 0; k < count; ++k)
+            if (met[k] != 0)
+                outSurface->mDepth[k] = front[k];
+    }
     // Bins the body never meets take the least depth of their met neighbours, ring by ring.
     bool any = false;
     for (std::uint8_t m : met)

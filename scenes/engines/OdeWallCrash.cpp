@@ -53,12 +53,14 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
     {
         dGeomID pole = dCreateCylinder(mSpace, inSettings.mPoleRadius, 6.0); // axis along z
         dGeomSetPosition(pole, 0, 0, 3);
+        RegisterImpactor(pole);
     }
     else if (!inSettings.mDriveOnly && !inSettings.mFloating && inSettings.mOverlapFraction < 1.0)
     {
         // A 2 m thick, 10 m wide wall from y = edge to edge + 10.
         dGeomID wall = dCreateBox(mSpace, 2, 10, 6);
         dGeomSetPosition(wall, 1, CrashWallLeftEdge(inSettings) + 5.0, 3);
+        RegisterImpactor(wall);
     }
     else if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
@@ -69,6 +71,7 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
         dMatrix3 wall_rotation;
         dRFromAxisAndAngle(wall_rotation, 0, 0, 1, angle);
         dGeomSetRotation(wall, wall_rotation);
+        RegisterImpactor(wall);
     }
 
     // Scenery: crates in a grid beside the road (not registered with Crumple).
@@ -113,6 +116,12 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
         mTargetObject = mDamage.CreateDeformableObject(mAdapter->AddBody(mTarget).Get(),
                                                        TargetVehicleObject(*inSettings.mTargetVehicle)).Get();
     mDamage.AddListener(&mCounter);
+}
+
+void OdeWallCrash::RegisterImpactor(dGeomID inGeom)
+{
+    if (mAdapter != nullptr)
+        mWallBody = mAdapter->AddStaticGeom(inGeom).Get();
 }
 
 OdeWallCrash::~OdeWallCrash()

@@ -33,8 +33,9 @@ public:
     dSpaceID GetSpace() const { return mSpace; }
     dBodyID GetCar() const { return mCar; }
     ode::OdeAdapter& GetAdapter() { return *mAdapter; }
-    /// The damage body of the target: ODE's static geoms (ground, wall or pole) are the adapter's environment
-    plugin::BodyId GetWallBody() const { return mAdapter->GetEnvironment(); }
+    /// The damage body of the target: the wall or pole, a static geom registered with the adapter (so that its
+    /// shape reaches the crush); the adapter's environment (the ground's) when the scene has neither
+    plugin::BodyId GetWallBody() const { return mWallBody.IsValid() ? mWallBody : mAdapter->GetEnvironment(); }
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
     /// A loose piece's body (the adapter's CreateConvexBody in this scene's world)
@@ -51,12 +52,15 @@ public:
 
 private:
     static void NearCallback(void* inData, dGeomID inGeom1, dGeomID inGeom2);
+    /// Registers the wall or pole geom with the adapter (when attached) as the target's own body.
+    void RegisterImpactor(dGeomID inGeom);
 
     EngineCrashSettings mSettings;
     dWorldID mWorld = nullptr;
     dSpaceID mSpace = nullptr;
     dJointGroupID mContacts = nullptr;
     dBodyID mCar = nullptr;
+    plugin::BodyId mWallBody; ///< The wall or pole (RegisterImpactor); invalid without one or unattached
     std::unique_ptr<plugin::DamageWorld> mDamageOwner; ///< On the heap: the world never moves
     plugin::DamageWorld& mDamage;
     std::unique_ptr<ode::OdeAdapter> mAdapter;

@@ -521,3 +521,26 @@ TEST_CASE("Bullet: a held prop body stays at its pose without gravity, and its p
     adapter.reset();
     CHECK(world.mWorld.getNumCollisionObjects() == objects);
 }
+
+TEST_CASE("Bullet: a body state carries its collision shape's bounds, a plane's out to the state's range", "[bullet]")
+{
+    // A 2 x 4 x 6 m box turned about z: its bounds are in its own frame, not the world's.
+    btBoxShape box(btVector3(1, 2, 3));
+    btRigidBody::btRigidBodyConstructionInfo info(10, nullptr, &box, btVector3(1, 1, 1));
+    info.m_startWorldTransform = btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(0.7)), btVector3(5, -3, 2));
+    btRigidBody body(info);
+    const BodyState state = bullet::BulletBodyState(body);
+    REQUIRE(state.mHasShapeBounds);
+    CHECK(state.mShapeMin.isApprox(Vec3(-1, -2, -3), 1.0e-6));
+    CHECK(state.mShapeMax.isApprox(Vec3(1, 2, 3), 1.0e-6));
+    CHECK(ValidateBodyState(state));
+
+    btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
+    btCollisionObject ground;
+    ground.setCollisionShape(&plane);
+    const BodyState ground_state = bullet::BulletBodyState(ground);
+    REQUIRE(ground_state.mHasShapeBounds);
+    CHECK(ground_state.mShapeMax.x() == cMaxBodyPosition);
+    CHECK(ground_state.mShapeMin.y() == -cMaxBodyPosition);
+    CHECK(ValidateBodyState(ground_state));
+}

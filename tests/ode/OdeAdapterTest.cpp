@@ -343,3 +343,42 @@ TEST_CASE("ODE: a held prop body stays at its pose without gravity, and its piec
     dWorldDestroy(world);
     dCloseODE();
 }
+
+TEST_CASE("ODE: a body state carries its geoms' bounds in its frame, a plane's out to the state's range", "[ode]")
+{
+    dInitODE();
+    dWorldID world = dWorldCreate();
+    dSpaceID space = dHashSpaceCreate(nullptr);
+    // A body turned about z with a 2 x 4 x 6 m box offset 1 m along its own x: exact bounds in the body frame.
+    dBodyID body = dBodyCreate(world);
+    dMatrix3 turn;
+    dRFromAxisAndAngle(turn, 0, 0, 1, 0.7);
+    dBodySetRotation(body, turn);
+    dBodySetPosition(body, 5, -3, 2);
+    dMass mass;
+    dMassSetBoxTotal(&mass, 10, 2, 4, 6);
+    dBodySetMass(body, &mass);
+    dGeomID box = dCreateBox(space, 2, 4, 6);
+    dGeomSetBody(box, body);
+    dGeomSetOffsetPosition(box, 1, 0, 0);
+    const BodyState state = ode::OdeBodyState(body);
+    REQUIRE(state.mHasShapeBounds);
+    CHECK(state.mShapeMin.isApprox(Vec3(0, -2, -3), 1.0e-9));
+    CHECK(state.mShapeMax.isApprox(Vec3(2, 2, 3), 1.0e-9));
+    CHECK(ValidateBodyState(state));
+    // A static box geom: its bounds in its own frame; a plane: the state's range.
+    dGeomID wall = dCreateBox(space, 2, 10, 6);
+    dGeomSetPosition(wall, 1, 2, 3);
+    dGeomSetRotation(wall, turn);
+    const BodyState wall_state = ode::OdeStaticGeomState(wall);
+    REQUIRE(wall_state.mHasShapeBounds);
+    CHECK(wall_state.mShapeMin.isApprox(Vec3(-1, -5, -3), 1.0e-9));
+    CHECK(wall_state.mShapeMax.isApprox(Vec3(1, 5, 3), 1.0e-9));
+    const BodyState plane_state = ode::OdeStaticGeomState(dCreatePlane(space, 0, 0, 1, 0));
+    REQUIRE(plane_state.mHasShapeBounds);
+    CHECK(plane_state.mShapeMax.x() == cMaxBodyPosition);
+    CHECK(ValidateBodyState(plane_state));
+    dSpaceDestroy(space);
+    dWorldDestroy(world);
+    dCloseODE();
+}

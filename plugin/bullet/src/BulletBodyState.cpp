@@ -24,6 +24,24 @@ Mat3 ToMat3(const btMatrix3x3& inM)
     return m;
 }
 
+// The object's collision shape's bounding box in its own frame (Bullet's margin included); an unbounded
+// shape (a static plane) is stated out to the body state's range.
+void SetShapeBounds(const btCollisionObject& inObject, plugin::BodyState& ioState)
+{
+    const btCollisionShape* shape = inObject.getCollisionShape();
+    if (shape == nullptr)
+        return;
+    btTransform identity;
+    identity.setIdentity();
+    btVector3 low, high;
+    shape->getAabb(identity, low, high);
+    const Vec3 bound = Vec3::Constant(plugin::cMaxBodyPosition);
+    ioState.mShapeMin = ToVec3(low).cwiseMax(-bound).cwiseMin(bound);
+    ioState.mShapeMax = ToVec3(high).cwiseMax(-bound).cwiseMin(bound);
+    ioState.mHasShapeBounds = IsFinite(ioState.mShapeMin) && IsFinite(ioState.mShapeMax) &&
+                              (ioState.mShapeMin.array() <= ioState.mShapeMax.array()).all();
+}
+
 } // namespace
 
 plugin::BodyState BulletBodyState(const btCollisionObject& inObject)
@@ -34,6 +52,7 @@ plugin::BodyState BulletBodyState(const btCollisionObject& inObject)
     state.mTransform.mRotation = Quat(ToMat3(transform.getBasis())).normalized().toRotationMatrix();
     state.mTransform.mTranslation = ToVec3(transform.getOrigin());
     state.mCenterOfMass = state.mTransform.mTranslation;
+    SetShapeBounds(inObject, state);
 
     const btRigidBody* body = btRigidBody::upcast(&inObject);
     if (body == nullptr || inObject.isStaticObject())

@@ -30,6 +30,13 @@ struct CRUMPLE_API BodyState
     Vec3 mCenterOfMass = Vec3::Zero();          ///< Centre of mass, world frame (m)
     Vec3 mLinearVelocity = Vec3::Zero();        ///< Velocity of the centre of mass, world frame (m/s)
     Vec3 mAngularVelocity = Vec3::Zero();       ///< Angular velocity, world frame (rad/s)
+    /// The body's collision shape's bounding box in its body frame (m): where a crush of another body meets
+    /// it (Collision::mShapeOfBOnA). The adapters state it from the engine's shape; an unbounded shape (a
+    /// plane) is stated out to cMaxBodyPosition. Without it a crush takes the impactor's face to be as wide as
+    /// the contacts it made.
+    bool mHasShapeBounds = false;
+    Vec3 mShapeMin = Vec3::Zero();
+    Vec3 mShapeMax = Vec3::Zero();
 
     /// 1/m, 0 for static and kinematic bodies (1/kg)
     double InverseMass() const { return mMotionType == EMotionType::Dynamic ? 1.0 / mMass : 0.0; }

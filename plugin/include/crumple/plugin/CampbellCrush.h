@@ -119,6 +119,8 @@ struct CRUMPLE_API CrushBody
 {
     BodyLength mLength;
     std::vector<std::uint32_t> mLargeTriangles; ///< Ascending
+    Vec3 mRestMin = Vec3::Zero(); ///< The rest mesh's bounding box in the body frame (m): how far across a
+    Vec3 mRestMax = Vec3::Zero(); ///< crush an impactor's face can meet the body
 };
 
 /// Measures inDeformer's rest mesh for PlanCampbellCrush.

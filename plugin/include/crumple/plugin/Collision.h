@@ -7,6 +7,7 @@
 #include <crumple/base/Math.h>
 #include <crumple/plugin/Ids.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -51,6 +52,25 @@ struct CRUMPLE_API CollisionContact
     Vec3 ImpulseOnA() const { return mImpulse * mNormal + mFrictionImpulse; }
 };
 
+/// A body's collision shape seen from another body: the shape's bounding box (BodyState::mShapeMin, mShapeMax)
+/// in the other body's frame, as a centre and three half axes. The crush planner takes the impactor's face
+/// from it (CrushPlan): how far across the crush direction the impactor reaches, a wall past the car's
+/// outline, a pole only its own width.
+struct CRUMPLE_API ShapeBox
+{
+    Vec3 mCenter = Vec3::Zero();   ///< Box centre (m)
+    Mat3 mHalfAxes = Mat3::Zero(); ///< Columns: the box's half axes (m)
+    bool mKnown = false;           ///< False: the body did not state its shape (BodyState::mHasShapeBounds)
+
+    /// The interval the box covers along the unit axis inAxis, {low, high} (m).
+    std::array<double, 2> ExtentAlong(const Vec3& inAxis) const
+    {
+        const double centre = inAxis.dot(mCenter);
+        const double half = (mHalfAxes.transpose() * inAxis).cwiseAbs().sum();
+        return {centre - half, centre + half};
+    }
+};
+
 /// Contacts of one body pair grouped over a time window: one physical impact.
 struct CRUMPLE_API Collision
 {
@@ -64,6 +84,10 @@ struct CRUMPLE_API Collision
     /// (CrushEnergyShares): used by objects with the Campbell crush model, recorded for replays
     double mCrushEnergyA = 0.0;
     double mCrushEnergyB = 0.0;
+    /// Each body's collision shape in the other's frame at the collision's first step: B's in A's frame
+    /// (the impactor a crush of A meets) and A's in B's. Unknown where the body did not state its shape.
+    ShapeBox mShapeOfBOnA;
+    ShapeBox mShapeOfAOnB;
 
     /// Sum of the contact impulses (N s)
     double TotalImpulse() const

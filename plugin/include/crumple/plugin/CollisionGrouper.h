@@ -7,6 +7,7 @@
 #include <crumple/base/Result.h>
 #include <crumple/plugin/Collision.h>
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -36,7 +37,10 @@ public:
     /// of whose contacts lies within the group distance of one of theirs; otherwise they open a new one.
     /// inEachStep: the contacts form a collision of their own that closes at their own time (a window of
     /// zero), for bodies whose collisions must be dispatched at every step (DamageWorld::SetDispatchEachStep).
-    void Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep = false);
+    /// inShapes: each body's shape in the other's frame (Collision::mShapeOfBOnA, mShapeOfAOnB), kept by a
+    /// collision they open.
+    void Add(BodyId inBodyA, BodyId inBodyB, std::span<const CollisionContact> inContacts, bool inEachStep = false,
+             const std::array<ShapeBox, 2>& inShapes = {});
 
     /// Removes and returns, in dispatch order, the collisions whose window has closed at inTime
     /// (inTime >= start + window).

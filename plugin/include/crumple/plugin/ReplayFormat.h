@@ -53,9 +53,12 @@ struct CRUMPLE_API Replay
 /// 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its u32
 /// vertices). 9: per contact the friction coefficient and the friction impulse (world, on A's body frame, on
 /// B's body frame) after the time. 10: the material's crush zone fraction (f64 after the rigid parts).
-/// Written: 10. Read: 10, 9, 8 and 7 (whose contacts are frictionless, objects have no rigid parts before 8
-/// and no occupant cell (fraction 0.5) before 10, so their recordings still replay as they were made).
-constexpr std::uint32_t cReplayVersion = 10;
+/// 11: per collision, after the crush energies, the shape boxes of B on A and of A on B (each u8 known, the
+/// centre and three half axes as f64 Vec3s).
+/// Written: 11. Read: 11 down to 7 (whose contacts are frictionless, objects have no rigid parts before 8,
+/// no occupant cell (fraction 0.5) before 10 and collisions no shape boxes before 11, so their recordings
+/// still replay as they were made).
+constexpr std::uint32_t cReplayVersion = 11;
 /// The oldest version DecodeReplay still reads.
 constexpr std::uint32_t cOldestReplayVersion = 7;
 
