@@ -84,6 +84,27 @@ Collision MakeFrontCollision(int inContacts)
     return collision;
 }
 
+// One contact column at the middle of the same front (a hull's tip against a wall), with the wall's shape
+// known: a 2 m thick, 10 m wide, 6 m tall box whose face is the plane of the car's front (Collision::
+// mShapeOfAOnB, in the car's frame). The crush meets the whole front, as the 64 contacts' does.
+Collision MakeWallColumnCollision()
+{
+    Collision collision = MakeFrontCollision(64);
+    const double energy = collision.mCrushEnergyB;
+    const double impulse = collision.TotalImpulse() / 2.0;
+    collision.mContacts.resize(2);
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+        collision.mContacts[i].mLocalPointOnB = Vec3(cHalfExtents.x(), 0.0, i == 0 ? -0.6 : 0.6);
+        collision.mContacts[i].mImpulse = impulse;
+    }
+    collision.mShapeOfAOnB.mCenter = Vec3(cHalfExtents.x() + 1.0, 0.0, 0.0);
+    collision.mShapeOfAOnB.mHalfAxes = Vec3(1.0, 5.0, 3.0).asDiagonal();
+    collision.mShapeOfAOnB.mKnown = true;
+    collision.mCrushEnergyB = energy;
+    return collision;
+}
+
 double MaxControl(const DeformableObject& inCar)
 {
     double largest = 0.0;
@@ -244,10 +265,12 @@ void ScalingCase(BenchTable& ioTable, int inSmall, int inLarge, int inRepetition
 // the struck front's pass over the body's vertices and large triangles, the profile's depth, the cell) and
 // the whole ApplyCollision (plan and control field), interleaved, on the box body of inTriangles with its
 // default lattice. The box's front is flat and square to the crush, so the plan's depth must be the closed
-// form's: the error is its distance from CampbellCrushDepth over the footprint's width.
-void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions)
+// form's: the error is its distance from CampbellCrushDepth over the footprint's width. inWallFace: one
+// contact column and the wall's shape (MakeWallColumnCollision), whose footprint is the whole front: the
+// error is then the distance from the closed form over the body's width.
+void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWallFace = false)
 {
-    const Collision collision = MakeFrontCollision(64);
+    const Collision collision = inWallFace ? MakeWallColumnCollision() : MakeFrontCollision(64);
     const DeformableObject pristine = MakeCar(inTriangles, 1, 0, ECrushModel::Campbell);
     DeformableObject car = pristine;
     std::optional<CrushPlan> plan;
@@ -262,8 +285,10 @@ void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions)
          {[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }}});
     if (!plan)
         throw std::runtime_error("crush_plan: the collision planned no crush");
-    const double law = CampbellCrushDepth(pristine.GetMaterial(), plan->mWidth, collision.mCrushEnergyB);
-    ioTable.Add({"crush_plan", std::to_string(inTriangles / 1000) + "k_tris/campbell/64_contacts", timing[0].mWallMs,
+    const double width = inWallFace ? 2.0 * cHalfExtents.y() : plan->mWidth;
+    const double law = CampbellCrushDepth(pristine.GetMaterial(), width, collision.mCrushEnergyB);
+    ioTable.Add({"crush_plan", std::to_string(inTriangles / 1000) + "k_tris/campbell/" + (inWallFace ? "wall_face_1_column" : "64_contacts"),
+                 timing[0].mWallMs,
                  std::abs(plan->mDepth - law) / law, "rel_depth_vs_flat_law",
                  "plan_cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";apply_collision_ms=" + FormatExtra(timing[1].mWallMs) +
                      ";apply_collision_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";plan_share_cpu=" +
@@ -303,6 +328,7 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 
     // Its plan alone, beside the whole crush.
     PlanCase(ioTable, triangles, repetitions);
+    PlanCase(ioTable, triangles, repetitions, true);
 
     // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
     ScalingCase(ioTable, triangles, 4 * triangles, repetitions);

@@ -50,6 +50,15 @@ struct CRUMPLE_API StruckFront
 /// barrier leaves a flat front at its final position (to within kappa L), a pole a pocket as wide as the
 /// footprint, and nothing moves outside the footprint's margin or behind the crush zone.
 ///
+/// The impactor's own shape (Collision::mShapeOfBOnA / mShapeOfAOnB, from BodyState::mShapeMin, mShapeMax)
+/// widens the footprint beyond the contacts: an engine reports where the bodies touch at first (a rounded
+/// nose's tip, the edge of an offset wall), but the impactor's face meets more of the body as it advances. With
+/// the shape known the footprint is the contacts' span and every bin of the struck surface (below) within the
+/// impactor's box across d, and within the body's rest bounds, that lies less than C behind s0; C is the
+/// crush that footprint's width takes the energy at (a fixed point, by bisection). A wall wider than the car
+/// therefore crushes the whole front it reaches, an offset wall only its own share, a pole its own width (or
+/// the minimum width) however tall. The box is the shape's bounding box: a fence's rails count as a wall.
+///
 /// A curved or slanted front (a rounded nose, a car hit by a wall at an angle): each column meets the body
 /// F behind s0 (mStruckFront), so it crushes by C - F only, over its own zone behind its own surface; the
 /// struck surface then ends against the impactor's final face instead of being pushed back whole. The
