@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "WorldFixture.h"
 #include "BoxMesh.h"
+#include "ImpulseBodies.h"
 
 #include <cstring>
 
@@ -29,17 +30,7 @@ WorldFixture::WorldFixture(int inTriangles, std::array<int, 3> inControlCount, c
 
 BodyState WorldFixture::CarState(double inSpeed) const
 {
-    BodyState car;
-    car.mMass = mMass;
-    const Vec3 size = 2.0 * mHalfExtents;
-    car.mInverseInertiaWorld = Vec3(12.0 / (mMass * (size.y() * size.y() + size.z() * size.z())),
-                                    12.0 / (mMass * (size.x() * size.x() + size.z() * size.z())),
-                                    12.0 / (mMass * (size.x() * size.x() + size.y() * size.y())))
-                                   .asDiagonal();
-    car.mTransform.mTranslation = Vec3(-mHalfExtents.x(), 0.0, 0.0);
-    car.mCenterOfMass = car.mTransform.mTranslation;
-    car.mLinearVelocity = Vec3(inSpeed, 0.0, 0.0);
-    return car;
+    return BoxCarBeforeWall(mMass, mHalfExtents, inSpeed);
 }
 
 ContactEvent WorldFixture::FrontContact(double inY, double inZ, double inTime, double inDepth) const

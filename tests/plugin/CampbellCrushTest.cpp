@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "ImpulseBodies.h"
 #include "ScratchDirectory.h"
 
 #include <crumple/base/FileBytes.h>
@@ -56,17 +57,7 @@ struct CampbellCar
 
     BodyState State(double inSpeed) const
     {
-        BodyState car;
-        car.mMass = cMass;
-        const Vec3 size = 2.0 * mHalf;
-        car.mInverseInertiaWorld = Vec3(12.0 / (cMass * (size.y() * size.y() + size.z() * size.z())),
-                                        12.0 / (cMass * (size.x() * size.x() + size.z() * size.z())),
-                                        12.0 / (cMass * (size.x() * size.x() + size.y() * size.y())))
-                                       .asDiagonal();
-        car.mTransform.mTranslation = Vec3(-mHalf.x(), 0.0, 0.0);
-        car.mCenterOfMass = car.mTransform.mTranslation;
-        car.mLinearVelocity = Vec3(inSpeed, 0.0, 0.0);
-        return car;
+        return common::BoxCarBeforeWall(cMass, mHalf, inSpeed);
     }
 
     // Hits the wall at inSpeed with contacts spread over inContactWidth (m) across the front face.
