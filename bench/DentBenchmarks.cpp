@@ -28,10 +28,15 @@ const Vec3 cHalfExtents(2.1, 0.9, 0.7); // a 4.2 m x 1.8 m x 1.4 m car body
 
 // The car body split along its length into inZones zones of inControls each.
 // inControls 0: the default lattice, controls from DeformableObjectSettings::mFittedControlSpacing.
-DeformableObject MakeCar(int inTriangles, int inZones, int inControls, ECrushModel inModel = ECrushModel::ImpulseFactor)
+// inRounded (m): the front (+x) set back by inRounded (y / half width)^2, fading to nothing at the rear: a
+// nose rounded across the width.
+DeformableObject MakeCar(int inTriangles, int inZones, int inControls, ECrushModel inModel = ECrushModel::ImpulseFactor,
+                         double inRounded = 0.0)
 {
     DeformableObjectSettings settings;
     settings.mMesh = common::MakeBoxMesh(cHalfExtents, common::BoxSegmentsForTriangles(cHalfExtents, inTriangles));
+    for (Vec3& p : settings.mMesh.mPositions)
+        p.x() -= inRounded * (p.x() + cHalfExtents.x()) / (2.0 * cHalfExtents.x()) * std::pow(p.y() / cHalfExtents.y(), 2);
     // ImpulseFactor: the D4MD dent (direct manipulation of the contact points); Campbell: the default
     // material's crush (footprint scan, then the control field written directly).
     settings.mMaterial.mModel = inModel;
@@ -268,10 +273,14 @@ void ScalingCase(BenchTable& ioTable, int inSmall, int inLarge, int inRepetition
 // form's: the error is its distance from CampbellCrushDepth over the footprint's width. inWallFace: one
 // contact column and the wall's shape (MakeWallColumnCollision), whose footprint is the whole front: the
 // error is then the distance from the closed form over the body's width.
-void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWallFace = false)
+// inRounded: the same with the nose rounded by 0.3 m across the width (MakeCar), so that the face's footprint
+// search integrates a profile at each candidate; no closed form there, so the error is how flat the wall left
+// the front: the spread along the crush of the struck front's vertices the crush reached at the middle
+// height (|z| < 0.3 m, rest depth behind the nose below the plan's depth less a spacing), relative to the depth.
+void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWallFace = false, bool inRounded = false)
 {
     const Collision collision = inWallFace ? MakeWallColumnCollision() : MakeFrontCollision(64);
-    const DeformableObject pristine = MakeCar(inTriangles, 1, 0, ECrushModel::Campbell);
+    const DeformableObject pristine = MakeCar(inTriangles, 1, 0, ECrushModel::Campbell, inRounded ? 0.3 : 0.0);
     DeformableObject car = pristine;
     std::optional<CrushPlan> plan;
     ffd::DentReport report;
@@ -287,10 +296,27 @@ void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWa
         throw std::runtime_error("crush_plan: the collision planned no crush");
     const double width = inWallFace ? 2.0 * cHalfExtents.y() : plan->mWidth;
     const double law = CampbellCrushDepth(pristine.GetMaterial(), width, collision.mCrushEnergyB);
-    ioTable.Add({"crush_plan", std::to_string(inTriangles / 1000) + "k_tris/campbell/" + (inWallFace ? "wall_face_1_column" : "64_contacts"),
-                 timing[0].mWallMs,
-                 std::abs(plan->mDepth - law) / law, "rel_depth_vs_flat_law",
-                 "plan_cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";apply_collision_ms=" + FormatExtra(timing[1].mWallMs) +
+    double error = std::abs(plan->mDepth - law) / law;
+    if (inRounded)
+    {
+        const std::vector<Vec3>& rest = pristine.GetDeformer().GetRestMesh().mPositions;
+        const std::vector<Vec3>& now = car.GetDeformer().GetPositions();
+        const double spacing = pristine.GetDeformer().GetMinSpacing();
+        double low = 1.0e9, high = -1.0e9;
+        for (std::size_t v = 0; v < rest.size(); ++v)
+            if (std::abs(rest[v].z()) < 0.3 && cHalfExtents.x() - rest[v].x() < plan->mDepth - spacing &&
+                rest[v].x() > cHalfExtents.x() - 0.3 - 1.0e-9)
+            {
+                low = std::min(low, now[v].x());
+                high = std::max(high, now[v].x());
+            }
+        error = (high - low) / plan->mDepth;
+    }
+    ioTable.Add({"crush_plan",
+                 std::to_string(inTriangles / 1000) + "k_tris/campbell/" +
+                     (inRounded ? "rounded_wall_face_1_column" : inWallFace ? "wall_face_1_column" : "64_contacts"),
+                 timing[0].mWallMs, error, inRounded ? "front_spread_vs_depth" : "rel_depth_vs_flat_law",
+                 "plan_cpu_ms=" + FormatExtra(timing[0].mCpuMs) + ";depth_m=" + FormatExtra(plan->mDepth) + ";width_m=" + FormatExtra(plan->mWidth) + ";apply_collision_ms=" + FormatExtra(timing[1].mWallMs) +
                      ";apply_collision_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";plan_share_cpu=" +
                      FormatExtra(timing[0].mCpuMs / timing[1].mCpuMs) + ";large_triangles=" +
                      std::to_string(pristine.GetCrushBody().mLargeTriangles.size()) + ";vertices_updated=" +
@@ -329,6 +355,7 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     // Its plan alone, beside the whole crush.
     PlanCase(ioTable, triangles, repetitions);
     PlanCase(ioTable, triangles, repetitions, true);
+    PlanCase(ioTable, triangles, repetitions, true, true);
 
     // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
     ScalingCase(ioTable, triangles, 4 * triangles, repetitions);

@@ -185,10 +185,12 @@ CrossRect FootprintAtDepth(const CrossRect& inContacts, const CrossRect& inFace,
 
 // A crush against an impactor whose face reaches past the contacts (a wall before a rounded nose): the
 // footprint grows to the surface the face reaches as it advances, and a wider footprint takes the energy at a
-// shallower crush. Solves C = Depth(Footprint(C)) by bisection: Footprint grows with C and Depth falls with
-// the width, from the contacts' own crush (C0, Footprint(0) = the contacts' widened footprint) down. Leaves
-// the footprint on ioPlan (the one of the upper bracket, which holds every column the answer crushes) and
-// returns the crush. inContacts: the contacts' span, not widened.
+// shallower crush. The footprint changes only where C passes the depth t of a bin in the face: between two
+// such depths it is fixed, F_j (the bins no deeper than t_j), and its crush h(F_j) falls as j grows. The
+// crush is h(F_j) for the first j whose crush does not reach the next bin depth t_(j+1): a fixed point
+// C = h(Footprint(C)) where one exists, else the jump across t_j (the bins at t_j then count in the width but
+// crush nothing). Found by binary search over the sorted depths, a dozen profile integrals at most. Leaves
+// that footprint on ioPlan and returns the crush. inContacts: the contacts' span, not widened.
 double ConformToImpactor(CrushPlan& ioPlan, const CrossRect& inContacts, const CrossRect& inFace, const SurfaceBins& inBins,
                          const DamageMaterial& inMaterial, double inPrevious, double inEnergy)
 {
@@ -205,16 +207,41 @@ double ConformToImpactor(CrushPlan& ioPlan, const CrossRect& inContacts, const C
             return flat;
         return ProfileCrushDepth(ioPlan, inMaterial, inPrevious, inEnergy, flat);
     };
-    double high = depth_over(FootprintAtDepth(inContacts, inFace, inBins, 0.0, min_width));
-    double low = 0.0;
-    if (!(high > 0.0))
-        return high;
-    for (int i = 0; i < 48 && high - low > 1.0e-9 * (1.0 + high); ++i)
+    // F_-1: the contacts' own footprint (no bin is reached before the crush begins).
+    const double contacts_crush = depth_over(FootprintAtDepth(inContacts, inFace, inBins, 0.0, min_width));
+    if (!(contacts_crush > 0.0))
+        return contacts_crush;
+    // The depths t_j of the face's bins that the contacts' own crush reaches (no larger crush can follow).
+    std::vector<double> depths;
+    const double half = 0.5 * inBins.mBin;
+    for (int j = 0; j < inBins.mThirdCount; ++j)
+        for (int i = 0; i < inBins.mSideCount; ++i)
+        {
+            const double third = inBins.mThirdOrigin + j * inBins.mBin, side = inBins.mSideOrigin + i * inBins.mBin;
+            const double depth = inBins.mDepth[static_cast<std::size_t>(j) * static_cast<std::size_t>(inBins.mSideCount) + static_cast<std::size_t>(i)];
+            if (third + half > inFace.mThirdMin && third - half < inFace.mThirdMax && side + half > inFace.mSideMin &&
+                side - half < inFace.mSideMax && depth < contacts_crush)
+                depths.push_back(depth);
+        }
+    std::sort(depths.begin(), depths.end());
+    depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
+    // F_j holds the bins with depth <= t_j: the footprint of any C in (t_j, t_(j+1)].
+    auto footprint = [&](std::size_t inJ) {
+        return FootprintAtDepth(inContacts, inFace, inBins, std::nextafter(depths[inJ], std::numeric_limits<double>::infinity()), min_width);
+    };
+    // The first j (-1 .. n-1) with h(F_j) < t_(j+1), t_n = +inf; j = -1 fails when the contacts' crush reaches t_0.
+    if (depths.empty() || contacts_crush < depths.front())
+        return depth_over(FootprintAtDepth(inContacts, inFace, inBins, 0.0, min_width));
+    std::size_t low = 0, high = depths.size() - 1; // the answer's j lies in [low, high]
+    while (low < high)
     {
-        const double middle = 0.5 * (low + high);
-        (depth_over(FootprintAtDepth(inContacts, inFace, inBins, middle, min_width)) >= middle ? low : high) = middle;
+        const std::size_t middle = low + (high - low) / 2;
+        if (depth_over(footprint(middle)) < depths[middle + 1])
+            high = middle;
+        else
+            low = middle + 1;
     }
-    return depth_over(FootprintAtDepth(inContacts, inFace, inBins, high, min_width));
+    return depth_over(footprint(low));
 }
 
 // The occupant cell's limit on a planned crush (CrushPlan): active when the crush runs within 60 degrees of

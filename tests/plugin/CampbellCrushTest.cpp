@@ -623,12 +623,13 @@ TEST_CASE("Stress: random slanted and rounded fronts, directions, energies and m
     // 24 seeded bodies: boxes of car-like size whose front is slanted and rounded (the shape fading to
     // nothing at the rear), a crushed-length fraction of 0.1-0.4 and a crush zone of 0.2-0.5 of the length,
     // hit on the front by 1-6 contacts whose crush runs up to 40 degrees off the length, with 1 kJ to 1 MJ
-    // (the largest clamped at 1.5 m). Every crush must be finite, turn no triangle over, move no vertex out
+    // (the largest clamped at 1.5 m), every other one against a wall whose shape is known (the impactor's
+    // face: the crush spreads over the front the wall reaches). Every crush must be finite, turn no triangle over, move no vertex out
     // against the crush by more than 1 cm, and (a crush along the length, with a cell) move the cell by at
     // most 2 % of the front crush.
     std::mt19937_64 random(20261204);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    int stacked = 0, conformed = 0;
+    int stacked = 0, conformed = 0, widened = 0;
     for (int seed = 0; seed < 24; ++seed)
     {
         const Vec3 half(1.5 + unit(random), 0.7 + 0.3 * unit(random), 0.5 + 0.3 * unit(random));
@@ -665,6 +666,22 @@ TEST_CASE("Stress: random slanted and rounded fronts, directions, energies and m
             collision.mContacts.push_back(contact);
         }
         collision.mCrushEnergyA = std::pow(10.0, 3.0 + 3.0 * unit(random));
+        if (seed % 2 == 1)
+        {
+            // A wall whose shape is known (Collision::mShapeOfBOnA): 2 m thick behind the plane through the
+            // first contact, square to the crush, 10 m wide, 6 m tall. The footprint then grows to the front
+            // the wall reaches, past the contacts.
+            const Vec3 out = -inward, across = Vec3::UnitZ().cross(out).normalized();
+            collision.mShapeOfBOnA.mCenter = collision.mContacts.front().mLocalPointOnA + out;
+            collision.mShapeOfBOnA.mHalfAxes.col(0) = out;
+            collision.mShapeOfBOnA.mHalfAxes.col(1) = 5.0 * across;
+            collision.mShapeOfBOnA.mHalfAxes.col(2) = 3.0 * Vec3::UnitZ();
+            collision.mShapeOfBOnA.mKnown = true;
+            const std::optional<CrushPlan> plan = PlanCampbellCrush(collision, ECollisionSide::A, collision.mCrushEnergyA, object.GetMaterial(),
+                                                                    object.GetUpAxis(), object.GetDeformer());
+            widened += plan && plan->mWidth > CrushWidth(collision, ECollisionSide::A, object.GetUpAxis(),
+                                                         object.GetMaterial().mMinCrushWidth) + 1.0e-9 ? 1 : 0;
+        }
         const ffd::DentReport report = object.ApplyCollision(collision, ECollisionSide::A);
         stacked += report.mStackedUp;
 
@@ -716,4 +733,5 @@ TEST_CASE("Stress: random slanted and rounded fronts, directions, energies and m
     // The set reaches what it is for: stacked-up crushes, and fronts flattened.
     CHECK(stacked >= 3);
     CHECK(conformed >= 3);
+    CHECK(widened >= 3); // walls whose face reached past the contacts
 }
