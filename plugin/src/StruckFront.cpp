@@ -49,19 +49,44 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
     // Every vertex marks the bin its column falls in as met by the body (a column met only behind the slab,
     // above a bonnet say, must hold the slab's depth, not its neighbours') and lowers it to its own depth.
     const double inverse = 1.0 / bin;
+    // intent: the plan's axes and front in locals, and the grids by raw pointer: the stores into the grids
+    // may alias the plan's doubles as far as the compiler knows, which reloaded all of them per vertex (the
+    // same operations, so the same bits)
+    const Vec3 side_axis = inPlan.mSide, third_axis = inPlan.mThird, direction = inPlan.mDirection;
+    const double plan_front = inPlan.mFront;
+    double* const front_bins = front.data();
+    std::uint8_t* const met_bins = met.data();
+    const double side_count = ns, third_count = nt;
+    // Neighbouring vertices mostly share a bin: their least depth is kept in a register while they do, and
+    // written when the bin changes (a minimum, so in any grouping the same value), rather than each vertex
+    // waiting on the store of the one before.
+    constexpr std::size_t cNoBin = std::numeric_limits<std::size_t>::max();
+    std::size_t run_bin = cNoBin;
+    double run_least = 0.0;
     for (const Vec3& p : inDeformer.GetCurrentPositions())
     {
         // Bin coordinates plus a half, so that truncation rounds to the nearest centre.
-        const double u = (inPlan.mSide.dot(p) - side0) * inverse + 0.5;
-        if (!(u >= 0.0 && u < ns))
+        const double u = (side_axis.dot(p) - side0) * inverse + 0.5;
+        if (!(u >= 0.0 && u < side_count))
             continue;
-        const double w = (inPlan.mThird.dot(p) - third0) * inverse + 0.5;
-        if (!(w >= 0.0 && w < nt))
+        const double w = (third_axis.dot(p) - third0) * inverse + 0.5;
+        if (!(w >= 0.0 && w < third_count))
             continue;
         const std::size_t b = index(static_cast<int>(u), static_cast<int>(w));
-        met[b] = 1;
-        front[b] = std::min(front[b], std::max(inPlan.mDirection.dot(p) - inPlan.mFront, 0.0));
+        const double depth_here = std::max(direction.dot(p) - plan_front, 0.0);
+        if (b == run_bin)
+        {
+            run_least = std::min(run_least, depth_here);
+            continue;
+        }
+        if (run_bin != cNoBin)
+            front_bins[run_bin] = std::min(front_bins[run_bin], run_least);
+        met_bins[b] = 1;
+        run_bin = b;
+        run_least = depth_here;
     }
+    if (run_bin != cNoBin)
+        front_bins[run_bin] = std::min(front_bins[run_bin], run_least);
     // A triangle larger than half a bin can hold a bin centre none of its vertices stands for: its depth
     // there, where it reaches into the slab.
     const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
