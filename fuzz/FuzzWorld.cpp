@@ -40,8 +40,15 @@ FuzzWorld::FuzzWorld() : mCarSettings(CarSettings()), mWorldOwner(Must(plugin::D
     car.mMass = 1200.0;
     car.mInverseInertiaWorld = Mat3::Identity() * (1.0 / 1500.0);
     car.mLinearVelocity = Vec3(15.0, 0.0, 0.0);
+    // Both bodies state their shapes, so the seed recordings carry known shape boxes (replay format 11).
+    car.mHasShapeBounds = true;
+    car.mShapeMin = -cHalfExtents;
+    car.mShapeMax = cHalfExtents;
     plugin::BodyState wall;
     wall.mMotionType = plugin::EMotionType::Static;
+    wall.mHasShapeBounds = true;
+    wall.mShapeMin = Vec3(cHalfExtents.x(), -5.0, -3.0);
+    wall.mShapeMax = Vec3(cHalfExtents.x() + 2.0, 5.0, 3.0);
     mCar = Must(mWorld.CreateBody(car));
     mWall = Must(mWorld.CreateBody(wall));
     (void)Must(mWorld.CreateDeformableObject(mCar, mCarSettings));
