@@ -55,7 +55,8 @@ struct CRUMPLE_API StruckFront
 /// nose's tip, the edge of an offset wall), but the impactor's face meets more of the body as it advances. With
 /// the shape known the footprint is the contacts' span and every bin of the struck surface (below) within the
 /// impactor's box across d, and within the body's rest bounds, that lies less than C behind s0; C is the
-/// crush that footprint's width takes the energy at (a fixed point, by bisection). A wall wider than the car
+/// crush that footprint's width takes the energy at (a fixed point, found by binary search over the bins'
+/// depths, where alone the footprint changes). A wall wider than the car
 /// therefore crushes the whole front it reaches, an offset wall only its own share, a pole its own width (or
 /// the minimum width) however tall. The box is the shape's bounding box: a fence's rails count as a wall.
 ///
