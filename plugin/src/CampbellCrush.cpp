@@ -153,13 +153,11 @@ std::optional<CrossRect> ImpactorFace(const CrushPlan& inPlan, const ShapeBox& i
     return face;
 }
 
-// The footprint of a crush C deep against the impactor's face: the rectangle the contacts span and the
-// face's bins whose surface lies less than C behind the front (the impactor, advancing C, reaches them), each
-// bin counted whole where it overlaps the face, widened to inMinWidth as the contacts' own footprint is.
-CrossRect FootprintAtDepth(const CrossRect& inContacts, const CrossRect& inFace, const SurfaceBins& inBins, double inDepth,
-                           double inMinWidth)
+// Calls inVisit(side, third, depth) for each bin of inBins that overlaps inFace: its centre across d (m) and
+// its surface's depth behind the front (SurfaceBins).
+template <class Visit>
+void ForEachFaceBin(const CrossRect& inFace, const SurfaceBins& inBins, Visit&& inVisit)
 {
-    CrossRect footprint = inContacts;
     const double half = 0.5 * inBins.mBin;
     for (int j = 0; j < inBins.mThirdCount; ++j)
     {
@@ -169,15 +167,29 @@ CrossRect FootprintAtDepth(const CrossRect& inContacts, const CrossRect& inFace,
         for (int i = 0; i < inBins.mSideCount; ++i)
         {
             const double side = inBins.mSideOrigin + i * inBins.mBin;
-            if (!(side + half > inFace.mSideMin && side - half < inFace.mSideMax) ||
-                !(inBins.mDepth[static_cast<std::size_t>(j) * static_cast<std::size_t>(inBins.mSideCount) + static_cast<std::size_t>(i)] < inDepth))
-                continue;
-            footprint.mSideMin = std::min(footprint.mSideMin, std::max(side - half, inFace.mSideMin));
-            footprint.mSideMax = std::max(footprint.mSideMax, std::min(side + half, inFace.mSideMax));
-            footprint.mThirdMin = std::min(footprint.mThirdMin, std::max(third - half, inFace.mThirdMin));
-            footprint.mThirdMax = std::max(footprint.mThirdMax, std::min(third + half, inFace.mThirdMax));
+            if (side + half > inFace.mSideMin && side - half < inFace.mSideMax)
+                inVisit(side, third,
+                        inBins.mDepth[static_cast<std::size_t>(j) * static_cast<std::size_t>(inBins.mSideCount) + static_cast<std::size_t>(i)]);
         }
     }
+}
+
+// The footprint of a crush C deep against the impactor's face: the rectangle the contacts span and the
+// face's bins whose surface lies less than C behind the front (the impactor, advancing C, reaches them), each
+// bin counted whole where it overlaps the face, widened to inMinWidth as the contacts' own footprint is.
+CrossRect FootprintAtDepth(const CrossRect& inContacts, const CrossRect& inFace, const SurfaceBins& inBins, double inDepth,
+                           double inMinWidth)
+{
+    CrossRect footprint = inContacts;
+    const double half = 0.5 * inBins.mBin;
+    ForEachFaceBin(inFace, inBins, [&](double inSide, double inThird, double inBinDepth) {
+        if (!(inBinDepth < inDepth))
+            return;
+        footprint.mSideMin = std::min(footprint.mSideMin, std::max(inSide - half, inFace.mSideMin));
+        footprint.mSideMax = std::max(footprint.mSideMax, std::min(inSide + half, inFace.mSideMax));
+        footprint.mThirdMin = std::min(footprint.mThirdMin, std::max(inThird - half, inFace.mThirdMin));
+        footprint.mThirdMax = std::max(footprint.mThirdMax, std::min(inThird + half, inFace.mThirdMax));
+    });
     Widen(footprint.mSideMin, footprint.mSideMax, inMinWidth);
     Widen(footprint.mThirdMin, footprint.mThirdMax, inMinWidth);
     return footprint;
@@ -213,16 +225,10 @@ double ConformToImpactor(CrushPlan& ioPlan, const CrossRect& inContacts, const C
         return contacts_crush;
     // The depths t_j of the face's bins that the contacts' own crush reaches (no larger crush can follow).
     std::vector<double> depths;
-    const double half = 0.5 * inBins.mBin;
-    for (int j = 0; j < inBins.mThirdCount; ++j)
-        for (int i = 0; i < inBins.mSideCount; ++i)
-        {
-            const double third = inBins.mThirdOrigin + j * inBins.mBin, side = inBins.mSideOrigin + i * inBins.mBin;
-            const double depth = inBins.mDepth[static_cast<std::size_t>(j) * static_cast<std::size_t>(inBins.mSideCount) + static_cast<std::size_t>(i)];
-            if (third + half > inFace.mThirdMin && third - half < inFace.mThirdMax && side + half > inFace.mSideMin &&
-                side - half < inFace.mSideMax && depth < contacts_crush)
-                depths.push_back(depth);
-        }
+    ForEachFaceBin(inFace, inBins, [&](double, double, double inBinDepth) {
+        if (inBinDepth < contacts_crush)
+            depths.push_back(inBinDepth);
+    });
     std::sort(depths.begin(), depths.end());
     depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
     // F_j holds the bins with depth <= t_j: the footprint of any C in (t_j, t_(j+1)].
@@ -231,7 +237,7 @@ double ConformToImpactor(CrushPlan& ioPlan, const CrossRect& inContacts, const C
     };
     // The first j (-1 .. n-1) with h(F_j) < t_(j+1), t_n = +inf; j = -1 fails when the contacts' crush reaches t_0.
     if (depths.empty() || contacts_crush < depths.front())
-        return depth_over(FootprintAtDepth(inContacts, inFace, inBins, 0.0, min_width));
+        return contacts_crush; // ioPlan still holds F_-1, its last depth_over
     std::size_t low = 0, high = depths.size() - 1; // the answer's j lies in [low, high]
     while (low < high)
     {
@@ -394,9 +400,13 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
 {
     if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inMaterial))
         return std::nullopt;
-    const std::optional<ffd::SurfaceProbe> footprint = FootprintOf(inCollision, inSide, inUp, inMaterial.mMinCrushWidth);
-    if (!footprint)
+    // The contacts' own span, then the footprint: that span widened to the material's minimum width.
+    const std::optional<ffd::SurfaceProbe> span = FootprintOf(inCollision, inSide, inUp, 0.0);
+    if (!span)
         return std::nullopt;
+    std::optional<ffd::SurfaceProbe> footprint = span;
+    Widen(footprint->mSideMin, footprint->mSideMax, inMaterial.mMinCrushWidth);
+    Widen(footprint->mThirdMin, footprint->mThirdMax, inMaterial.mMinCrushWidth);
     CrushPlan plan;
     plan.mDirection = footprint->mDirection;
     plan.mSide = footprint->mSide;
@@ -443,12 +453,8 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     const double wall_slope = 2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01));
     const ShapeBox& impactor = inSide == ECollisionSide::A ? inCollision.mShapeOfBOnA : inCollision.mShapeOfAOnB;
     const CrossRect contacts{plan.mSideMin, plan.mSideMax, plan.mThirdMin, plan.mThirdMax};
-    std::optional<CrossRect> face = impactor.mKnown ? ImpactorFace(plan, impactor, body) : std::nullopt;
-    CrossRect touched; // the contacts' own span, not widened
-    if (const std::optional<ffd::SurfaceProbe> span = face ? FootprintOf(inCollision, inSide, inUp, 0.0) : std::nullopt)
-        touched = CrossRect{span->mSideMin, span->mSideMax, span->mThirdMin, span->mThirdMax};
-    else
-        face.reset();
+    const std::optional<CrossRect> face = impactor.mKnown ? ImpactorFace(plan, impactor, body) : std::nullopt;
+    const CrossRect touched{span->mSideMin, span->mSideMax, span->mThirdMin, span->mThirdMax}; // not widened
     for (double slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * depth + 2.0 * spacing); depth > 0.0;)
     {
         plan.mRamp = std::max(2.0 * spacing, slab / wall_slope);
