@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace crumple::plugin
@@ -48,6 +50,7 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
     // The positions dents work on (GetCurrentPositions: a deferred dent is ahead of what the game sees).
     // Every vertex marks the bin its column falls in as met by the body (a column met only behind the slab,
     // above a bonnet say, must hold the slab's depth, not its neighbours') and lowers it to its own depth.
+    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
     const double inverse = 1.0 / bin;
     // intent: the plan's axes and front in locals, and the grids by raw pointer: the stores into the grids
     // may alias the plan's doubles as far as the compiler knows, which reloaded all of them per vertex (the
@@ -58,38 +61,78 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
     std::uint8_t* const met_bins = met.data();
     const double side_count = ns, third_count = nt;
     // Neighbouring vertices mostly share a bin: their least depth is kept in a register while they do, and
-    // written when the bin changes (a minimum, so in any grouping the same value), rather than each vertex
-    // waiting on the store of the one before.
-    constexpr std::size_t cNoBin = std::numeric_limits<std::size_t>::max();
-    std::size_t run_bin = cNoBin;
-    double run_least = 0.0;
-    for (const Vec3& p : inDeformer.GetCurrentPositions())
-    {
-        // Bin coordinates plus a half, so that truncation rounds to the nearest centre.
-        const double u = (side_axis.dot(p) - side0) * inverse + 0.5;
-        if (!(u >= 0.0 && u < side_count))
-            continue;
-        const double w = (third_axis.dot(p) - third0) * inverse + 0.5;
-        if (!(w >= 0.0 && w < third_count))
-            continue;
-        const std::size_t b = index(static_cast<int>(u), static_cast<int>(w));
-        const double depth_here = std::max(direction.dot(p) - plan_front, 0.0);
-        if (b == run_bin)
+    // written when the bin changes (a minimum, so in any grouping and order the same value), rather than each
+    // vertex waiting on the store of the one before.
+    auto scan = [&](std::span<const std::uint32_t> inVertices) {
+        constexpr std::size_t cNoBin = std::numeric_limits<std::size_t>::max();
+        std::size_t run_bin = cNoBin;
+        double run_least = 0.0;
+        for (std::uint32_t v : inVertices)
         {
-            run_least = std::min(run_least, depth_here);
-            continue;
+            const Vec3& p = positions[v];
+            // Bin coordinates plus a half, so that truncation rounds to the nearest centre.
+            const double u = (side_axis.dot(p) - side0) * inverse + 0.5;
+            if (!(u >= 0.0 && u < side_count))
+                continue;
+            const double w = (third_axis.dot(p) - third0) * inverse + 0.5;
+            if (!(w >= 0.0 && w < third_count))
+                continue;
+            const std::size_t b = index(static_cast<int>(u), static_cast<int>(w));
+            const double depth_here = std::max(direction.dot(p) - plan_front, 0.0);
+            if (b == run_bin)
+            {
+                run_least = std::min(run_least, depth_here);
+                continue;
+            }
+            if (run_bin != cNoBin)
+                front_bins[run_bin] = std::min(front_bins[run_bin], run_least);
+            met_bins[b] = 1;
+            run_bin = b;
+            run_least = depth_here;
         }
         if (run_bin != cNoBin)
             front_bins[run_bin] = std::min(front_bins[run_bin], run_least);
-        met_bins[b] = 1;
-        run_bin = b;
-        run_least = depth_here;
-    }
-    if (run_bin != cNoBin)
-        front_bins[run_bin] = std::min(front_bins[run_bin], run_least);
+    };
+    // intent: the vertices cell by cell, the foremost cells first (FfdDeformer::ForEachVertexGroup), skipping
+    // a cell that cannot change the grid, so a plan does not read the whole body: a cell whose box lies beside
+    // the grid holds no vertex in it; a cell whose box's columns are all met already, none deeper than the
+    // nearest its vertices can be, would only mark them met again and leave their depths (bins are a minimum
+    // and a flag, so neither the order nor the skip changes a bit). Most of a car's cells go at once: its
+    // sides, top and bottom stand behind the struck front in the same columns.
+    inDeformer.ForEachVertexGroup(direction, [&](const ffd::VertexGroup& inGroup) {
+        if (!inGroup.mBounded)
+        {
+            scan(inGroup.mVertices);
+            return;
+        }
+        // [least, most] of axis.p over the box moved by its bound, widened by a hair far over the rounding of a
+        // vertex's own dot product (so no vertex's computed value falls outside)
+        const Vec3 centre = 0.5 * (inGroup.mLow + inGroup.mHigh), half = 0.5 * (inGroup.mHigh - inGroup.mLow);
+        const double margin = inGroup.mMoved + 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff() + inGroup.mMoved);
+        auto reach = [&](const Vec3& inAxis) {
+            const double middle = inAxis.dot(centre), extent = inAxis.cwiseAbs().dot(half) + margin;
+            return std::array<double, 2>{middle - extent, middle + extent};
+        };
+        const std::array<double, 2> side = reach(side_axis), third = reach(third_axis);
+        // The same operations as a vertex's, which are monotone: its bin lies in the box's range.
+        const double u0 = (side[0] - side0) * inverse + 0.5, u1 = (side[1] - side0) * inverse + 0.5;
+        const double w0 = (third[0] - third0) * inverse + 0.5, w1 = (third[1] - third0) * inverse + 0.5;
+        if (!(u1 >= 0.0 && u0 < side_count && w1 >= 0.0 && w0 < third_count))
+            return; // beside the grid
+        // A vertex's depth is at least this (a bin at or above it keeps its value).
+        const double nearest = reach(direction)[0] - plan_front;
+        const int i0 = static_cast<int>(std::max(u0, 0.0)), i1 = static_cast<int>(std::min(u1, side_count - 1.0));
+        const int j0 = static_cast<int>(std::max(w0, 0.0)), j1 = static_cast<int>(std::min(w1, third_count - 1.0));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i)
+                if (met_bins[index(i, j)] == 0 || front_bins[index(i, j)] > nearest)
+                {
+                    scan(inGroup.mVertices);
+                    return;
+                }
+    });
     // A triangle larger than half a bin can hold a bin centre none of its vertices stands for: its depth
     // there, where it reaches into the slab.
-    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
     const std::vector<std::array<std::uint32_t, 3>>& triangles = inDeformer.GetRestMesh().mTriangles;
     for (std::uint32_t triangle : inLargeTriangles)
     {
@@ -145,56 +188,81 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
         any = any || m != 0;
     if (!any)
         return grid;
-    for (bool open = true; open;)
-    {
-        open = false;
-        std::vector<std::uint8_t> next = met;
-        for (int j = 0; j < nt; ++j)
-            for (int i = 0; i < ns; ++i)
+    // intent: layer by layer from the met bins outward, each bin visited once (a pass over the whole grid per
+    // ring cost a plan 0.05 ms on a car's front): a layer's bins take the least depth of their neighbours met
+    // in earlier layers, and join the met ones together. mark: 0 unmet, 1 met, 2 in the next layer.
+    std::vector<std::uint8_t>& mark = met;
+    std::vector<std::size_t> layer, next_layer;
+    auto queue_unmet_neighbours = [&](int inI, int inJ) {
+        for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di)
             {
-                if (met[index(i, j)] != 0)
-                    continue;
-                double least = std::numeric_limits<double>::infinity();
-                for (int dj = -1; dj <= 1; ++dj)
-                    for (int di = -1; di <= 1; ++di)
-                    {
-                        const int ii = i + di, jj = j + dj;
-                        if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && met[index(ii, jj)] != 0)
-                            least = std::min(least, front[index(ii, jj)]);
-                    }
-                if (std::isfinite(least))
+                const int ii = inI + di, jj = inJ + dj;
+                if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && mark[index(ii, jj)] == 0)
                 {
-                    front[index(i, j)] = least;
-                    next[index(i, j)] = 1;
+                    mark[index(ii, jj)] = 2;
+                    next_layer.push_back(index(ii, jj));
                 }
-                else
-                    open = true;
             }
-        met.swap(next);
-    }
-    // Chamfer sweeps: no bin deeper than a neighbour's depth plus the slope times their distance.
-    const double straight = inSlope * bin, diagonal = inSlope * bin * std::numbers::sqrt2;
-    auto relax = [&](int inI, int inJ, int inDi, int inDj, double inStep) {
-        const int ii = inI + inDi, jj = inJ + inDj;
-        if (ii >= 0 && ii < ns && jj >= 0 && jj < nt)
-            front[index(inI, inJ)] = std::min(front[index(inI, inJ)], front[index(ii, jj)] + inStep);
     };
     for (int j = 0; j < nt; ++j)
         for (int i = 0; i < ns; ++i)
+            if (mark[index(i, j)] == 1)
+                queue_unmet_neighbours(i, j);
+    while (!next_layer.empty())
+    {
+        layer.swap(next_layer);
+        next_layer.clear();
+        for (std::size_t k : layer)
         {
-            relax(i, j, -1, 0, straight);
-            relax(i, j, 0, -1, straight);
-            relax(i, j, -1, -1, diagonal);
-            relax(i, j, 1, -1, diagonal);
+            const int i = static_cast<int>(k % static_cast<std::size_t>(ns)), j = static_cast<int>(k / static_cast<std::size_t>(ns));
+            double least = std::numeric_limits<double>::infinity();
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di)
+                {
+                    const int ii = i + di, jj = j + dj;
+                    if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && mark[index(ii, jj)] == 1)
+                        least = std::min(least, front[index(ii, jj)]);
+                }
+            front[k] = least; // read by no other bin of this layer: they read met ones only
         }
-    for (int j = nt - 1; j >= 0; --j)
-        for (int i = ns - 1; i >= 0; --i)
+        for (std::size_t k : layer)
+            mark[k] = 1;
+        for (std::size_t k : layer)
+            queue_unmet_neighbours(static_cast<int>(k % static_cast<std::size_t>(ns)), static_cast<int>(k / static_cast<std::size_t>(ns)));
+    }
+    // Chamfer sweeps: no bin deeper than a neighbour's depth plus the slope times their distance.
+    const double straight = inSlope * bin, diagonal = inSlope * bin * std::numbers::sqrt2;
+    // intent: each sweep row by row, first from the row it follows (independent bins, so the loop runs wide),
+    // then along the row from the bin before: a bin ends as the least of itself and the same four relaxed
+    // neighbours as one bin at a time gives (a minimum is exact in any order)
+    auto sweep_row = [&](double* ioRow, const double* inFrom, bool inForward) {
+        const int last = ns - 1;
+        for (int i = 0; i < ns; ++i)
         {
-            relax(i, j, 1, 0, straight);
-            relax(i, j, 0, 1, straight);
-            relax(i, j, 1, 1, diagonal);
-            relax(i, j, -1, 1, diagonal);
+            double least = std::min(ioRow[i], inFrom[i] + straight);
+            if (i > 0)
+                least = std::min(least, inFrom[i - 1] + diagonal);
+            if (i < last)
+                least = std::min(least, inFrom[i + 1] + diagonal);
+            ioRow[i] = least;
         }
+        if (inForward)
+            for (int i = 1; i < ns; ++i)
+                ioRow[i] = std::min(ioRow[i], ioRow[i - 1] + straight);
+        else
+            for (int i = last - 1; i >= 0; --i)
+                ioRow[i] = std::min(ioRow[i], ioRow[i + 1] + straight);
+    };
+    double* const bins = front.data();
+    for (int i = 1; i < ns; ++i)
+        bins[i] = std::min(bins[i], bins[i - 1] + straight);
+    for (int j = 1; j < nt; ++j)
+        sweep_row(bins + index(0, j), bins + index(0, j - 1), true);
+    for (int i = ns - 2; i >= 0; --i)
+        bins[index(i, nt - 1)] = std::min(bins[index(i, nt - 1)], bins[index(i + 1, nt - 1)] + straight);
+    for (int j = nt - 2; j >= 0; --j)
+        sweep_row(bins + index(0, j), bins + index(0, j + 1), false);
     bool flat = true;
     for (double f : front)
         flat = flat && f == 0.0;

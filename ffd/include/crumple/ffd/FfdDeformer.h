@@ -12,10 +12,12 @@
 #include <crumple/ffd/PointDisplacement.h>
 #include <crumple/ffd/SurfaceProbe.h>
 #include <crumple/ffd/TriangleMesh.h>
+#include <crumple/ffd/VertexGroup.h>
 #include <crumple/ffd/VertexRange.h>
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <span>
@@ -119,6 +121,15 @@ public:
     /// moved, meets the prism, nearest first: cells behind the front found so far are skipped, and so are
     /// their vertices once no vertex there can have moved further. A probe that is not finite finds nothing.
     SurfaceProbeResult ProbeSurface(const SurfaceProbe& inProbe) const;
+
+    /// Hands inVisit the vertices in groups, each with a box that holds their current positions
+    /// (GetCurrentPositions; VertexGroup): the vertices of each lattice cell that holds any, with the cell's
+    /// reach box (CellSurfaceIndex) and the farthest any of them moved from rest, zone by zone, in slices
+    /// across the lattice axis nearest inFirstAlong, the slice foremost along it first (so a scan that keeps a
+    /// front meets it early); then the vertices in no zone (unbounded: they never moved). Every vertex comes
+    /// once. For a scan over the surface that skips what a box rules out (plugin's struck front), as
+    /// ProbeSurface does.
+    void ForEachVertexGroup(const Vec3& inFirstAlong, const std::function<void(const VertexGroup&)>& inVisit) const;
 
     /// Vertex ranges changed since the last call, then forgets them (for the game's buffer upload).
     std::vector<VertexRange> TakeDirtyRanges();
