@@ -1,0 +1,57 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "TwoZoneBox.h"
+
+#include <crumple/ffd/FfdDeformer.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+using namespace crumple;
+using namespace crumple::ffd;
+
+TEST_CASE("Vertex groups hand over every vertex once, each inside its group's box moved by its bound", "[ffd]")
+{
+    // Two zones and a loose rear (TwoZoneBox), dented at random points so cells have moved by different amounts.
+    const Vec3 half(2.0, 0.9, 0.7);
+    FfdDeformer deformer = test::TwoZoneBox(half, {40, 18, 14}, {8, 6, 5}, {6, 5, 5}, 0.8);
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int dent = 0; dent < 4; ++dent)
+    {
+        const PointDisplacement push{Vec3(half.x() - 1.2 * unit(random), half.y(), half.z() * (2.0 * unit(random) - 1.0)),
+                                     Vec3(0.0, -0.2 * unit(random), 0.05)};
+        REQUIRE(deformer.ApplyDent(std::span<const PointDisplacement>(&push, 1)));
+    }
+    const std::vector<Vec3>& positions = deformer.GetCurrentPositions();
+    for (const Vec3& along : {Vec3(-1.0, 0.0, 0.0), Vec3(0.3, 0.9, -0.2).normalized()})
+    {
+        std::vector<int> seen(positions.size(), 0);
+        int groups = 0, unbounded = 0, moved_groups = 0, outside = 0;
+        deformer.ForEachVertexGroup(along, [&](const VertexGroup& inGroup) {
+            ++groups;
+            unbounded += inGroup.mBounded ? 0 : 1;
+            moved_groups += inGroup.mMoved > 0.0 ? 1 : 0;
+            for (std::uint32_t v : inGroup.mVertices)
+            {
+                ++seen[v];
+                if (!inGroup.mBounded)
+                {
+                    outside += positions[v] == deformer.GetRestMesh().mPositions[v] ? 0 : 1; // loose: never moved
+                    continue;
+                }
+                // Distance from the box, which must not exceed the bound (a hair for the rounding of the sum).
+                const Vec3 nearest = positions[v].cwiseMax(inGroup.mLow).cwiseMin(inGroup.mHigh);
+                outside += (positions[v] - nearest).norm() <= inGroup.mMoved * (1.0 + 1.0e-12) + 1.0e-15 ? 0 : 1;
+            }
+        });
+        CHECK(std::all_of(seen.begin(), seen.end(), [](int inCount) { return inCount == 1; }));
+        CHECK(outside == 0);
+        CHECK(unbounded == 1); // the rear 0.2 m
+        CHECK(groups == 43); // the two lattices hold 5 x 3 x 2 and 3 x 2 x 2 cells, each with vertices, and the rear
+        CHECK(moved_groups > 10); // the dents moved some cells: the bound is tested, not only the rest box
+    }
+}
