@@ -14,12 +14,14 @@ void AscendingIndexSet::TakeAscending(std::vector<std::uint32_t>& ioIndices)
     std::size_t count = 0;
     for (std::size_t w = mLowWord; w <= mHighWord; ++w)
         count += static_cast<std::size_t>(std::popcount(mWords[w]));
-    ioIndices.reserve(ioIndices.size() + count);
+    const std::size_t first = ioIndices.size();
+    ioIndices.resize(first + count);
+    std::uint32_t* out = ioIndices.data() + first;
     for (std::size_t w = mLowWord; w <= mHighWord; ++w)
     {
         // intent: lowest set bit first, cleared as it is taken
         for (std::uint64_t bits = mWords[w]; bits != 0; bits &= bits - 1)
-            ioIndices.push_back(static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+            *out++ = static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
         mWords[w] = 0;
     }
     mLowWord = SIZE_MAX;

@@ -31,6 +31,30 @@ public:
         mHighWord = word > mHighWord ? word : mHighWord;
     }
 
+    /// Inserts inIndices, ascending (a cell's list): the bits of one word are gathered in a register and
+    /// stored once, instead of each insert waiting on the store of the one before.
+    void InsertAscending(const std::uint32_t* inBegin, const std::uint32_t* inEnd)
+    {
+        if (inBegin == inEnd)
+            return;
+        CRUMPLE_ASSERT((inEnd[-1] >> 6) < mWords.size(), "AscendingIndexSet::InsertAscending: an index past the set's bound");
+        std::size_t word = *inBegin >> 6;
+        mLowWord = word < mLowWord ? word : mLowWord;
+        std::uint64_t bits = 0;
+        for (const std::uint32_t* index = inBegin; index != inEnd; ++index)
+        {
+            const std::size_t here = *index >> 6;
+            if (here != word)
+            {
+                mWords[word] |= bits;
+                word = here;
+                bits = 0;
+            }
+            bits |= std::uint64_t{1} << (*index & 63);
+        }
+        mWords[word] |= bits;
+        mHighWord = word > mHighWord ? word : mHighWord;
+    }
     /// Appends the members to ioIndices in ascending order and empties the set.
     void TakeAscending(std::vector<std::uint32_t>& ioIndices);
 

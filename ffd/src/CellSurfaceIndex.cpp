@@ -134,15 +134,17 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
 void CellSurfaceIndex::InsertTriangles(std::span<const int> inCells, AscendingIndexSet& ioTriangles) const
 {
     for (int cell : inCells)
-        for (std::uint32_t t : TrianglesOf(cell))
-            ioTriangles.Insert(t);
+    {
+        const std::span<const std::uint32_t> triangles = TrianglesOf(cell);
+        ioTriangles.InsertAscending(triangles.data(), triangles.data() + triangles.size());
+    }
 }
 
 void CellSurfaceIndex::InsertRing(std::span<const int> inCells, AscendingIndexSet& ioVertices) const
 {
     for (int cell : inCells)
-        for (std::uint32_t r = mRingStart[static_cast<std::size_t>(cell)]; r < mRingStart[static_cast<std::size_t>(cell) + 1]; ++r)
-            ioVertices.Insert(mRing[r]);
+        ioVertices.InsertAscending(mRing.data() + mRingStart[static_cast<std::size_t>(cell)],
+                                   mRing.data() + mRingStart[static_cast<std::size_t>(cell) + 1]);
 }
 
 } // namespace crumple::ffd

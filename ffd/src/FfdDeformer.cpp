@@ -8,6 +8,7 @@
 
 #include "AscendingIndexSet.h"
 #include "CellSurfaceIndex.h"
+#include "TensorProductSum.h"
 #include "ZonePoints.h"
 
 #include <algorithm>
@@ -526,14 +527,20 @@ void FfdDeformer::TouchCells(int inZone, std::span<const int> inControls)
     const std::array<int, 3>& cells = zone.GetCellCount();
 
     // intent: the box of the changed controls, and the cells it can reach (a control reaches cells a-3..a)
+    // intent: each control's (a, b, c) worked out once, with two divisions (they were most of this call)
+    std::vector<std::array<int, 3>>& decoded = mTouchedControls;
+    decoded.resize(inControls.size());
     std::array<int, 3> low{n[0], n[1], n[2]}, high{-1, -1, -1};
-    for (int control : inControls)
+    const int plane = n[0] * n[1];
+    for (std::size_t k = 0; k < inControls.size(); ++k)
     {
-        const std::array<int, 3> abc{control % n[0], (control / n[0]) % n[1], control / (n[0] * n[1])};
+        const int c = inControls[k] / plane, rest = inControls[k] - c * plane;
+        const int b = rest / n[0];
+        decoded[k] = {rest - b * n[0], b, c};
         for (std::size_t axis = 0; axis < 3; ++axis)
         {
-            low[axis] = std::min(low[axis], abc[axis]);
-            high[axis] = std::max(high[axis], abc[axis]);
+            low[axis] = std::min(low[axis], decoded[k][axis]);
+            high[axis] = std::max(high[axis], decoded[k][axis]);
         }
     }
     std::array<int, 3> cell_low{}, cell_high{}, extent{};
@@ -556,21 +563,31 @@ void FfdDeformer::TouchCells(int inZone, std::span<const int> inControls)
     std::vector<std::uint8_t>& swept = mDilation[1];
     mask.assign(box, 0);
     swept.assign(box, 0);
-    for (int control : inControls)
-        mask[at(control % n[0] - cell_low[0], (control / n[0]) % n[1] - cell_low[1], control / (n[0] * n[1]) - cell_low[2])] = 1;
+    for (const std::array<int, 3>& abc : decoded)
+        mask[at(abc[0] - cell_low[0], abc[1] - cell_low[1], abc[2] - cell_low[2])] = 1;
+    // intent: along each axis, the box as blocks of lines across it (the stride of the axis is the length of a
+    // contiguous block): a cell at coordinate x takes the OR of x .. x + 3 that lie in the box, block by block,
+    // so the inner loop runs over contiguous bytes
+    const std::array<std::size_t, 3> stride{1, static_cast<std::size_t>(extent[0]),
+                                            static_cast<std::size_t>(extent[0]) * static_cast<std::size_t>(extent[1])};
     for (std::size_t axis = 0; axis < 3; ++axis)
     {
-        const std::array<int, 3> step{axis == 0 ? 1 : 0, axis == 1 ? 1 : 0, axis == 2 ? 1 : 0};
-        for (int k = 0; k < extent[2]; ++k)
-            for (int j = 0; j < extent[1]; ++j)
-                for (int i = 0; i < extent[0]; ++i)
+        const std::size_t block = stride[axis], length = static_cast<std::size_t>(extent[axis]);
+        const std::size_t outer = box / (block * length);
+        for (std::size_t o = 0; o < outer; ++o)
+            for (std::size_t x = 0; x < length; ++x)
+            {
+                const std::uint8_t* from = mask.data() + (o * length + x) * block;
+                std::uint8_t* to = swept.data() + (o * length + x) * block;
+                const std::size_t reach = std::min<std::size_t>(4, length - x);
+                for (std::size_t i = 0; i < block; ++i)
                 {
-                    const std::array<int, 3> ijk{i, j, k};
-                    std::uint8_t any = 0;
-                    for (int d = 0; d < 4 && ijk[axis] + d < extent[axis]; ++d)
-                        any |= mask[at(i + d * step[0], j + d * step[1], k + d * step[2])];
-                    swept[at(i, j, k)] = any;
+                    std::uint8_t any = from[i];
+                    for (std::size_t d = 1; d < reach; ++d)
+                        any |= from[i + d * block];
+                    to[i] = any;
                 }
+            }
         mask.swap(swept);
     }
 
@@ -709,7 +726,13 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
     std::vector<double> piece_bound(static_cast<std::size_t>(pieces), 0.0);
     const std::vector<LatticeLocation>& locations = mBucketLocations[static_cast<std::size_t>(inZone)];
     const std::vector<Vec3>& rest = mBucketRest[static_cast<std::size_t>(inZone)];
+    // intent: a cell's vertices share its 64 controls: with AVX they are copied once per cell, aligned, and each
+    // vertex sums the copy (WidePackedTensorProductSum: the same operations as Displacement, so the same bits)
+    const bool packed = HasWideTensorProductSum();
+    const std::vector<Vec3>& controls = zone.GetControlDisplacements();
+    const std::ptrdiff_t row = zone.GetSettings().mControlCount[0], plane = row * zone.GetSettings().mControlCount[1];
     ParallelFor(mJobs, pieces, [&](int inPiece) {
+        PackedCellControls cell_controls;
         double largest = 0.0;
         for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
         {
@@ -720,11 +743,18 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             double cell_largest = 0.0, cell_moved = 0.0;
             // intent: the cell's bucket, read in memory order; only the outputs are scattered
             const std::size_t first = start[static_cast<std::size_t>(mTouchedCells[c] - offset)];
+            if (packed && run[c + 1] > run[c])
+            {
+                const std::array<int, 3>& cell = locations[first].mCell;
+                PackCellControls(&controls[static_cast<std::size_t>(zone.ControlIndex(cell[0], cell[1], cell[2]))], row, plane,
+                                 cell_controls);
+            }
             for (std::size_t i = run[c]; i < run[c + 1]; ++i)
             {
                 const std::uint32_t v = inVertices[i];
                 const std::size_t k = first + (i - run[c]);
-                const Vec3 displacement = zone.Displacement(locations[k]);
+                const Vec3 displacement = packed ? WidePackedTensorProductSum(cell_controls, CellWeightsAt(locations[k].mT))
+                                                 : zone.Displacement(locations[k]);
                 const Vec3 position = rest[k] + displacement;
                 mPositions[v] = position;
                 cell_largest = std::max(cell_largest, displacement.squaredNorm());

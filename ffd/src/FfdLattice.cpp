@@ -107,9 +107,6 @@ Vec3 FfdLattice::RestControlPosition(int inA, int inB, int inC) const
 
 Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation, std::span<const Vec3> inControls) const
 {
-    const std::array<double, 4> wx = CubicBSplineWeights(inLocation.mT.x());
-    const std::array<double, 4> wy = CubicBSplineWeights(inLocation.mT.y());
-    const std::array<double, 4> wz = CubicBSplineWeights(inLocation.mT.z());
     const int nx = mSettings.mControlCount[0];
     const int nxy = nx * mSettings.mControlCount[1];
     const int base = ControlIndex(inLocation.mCell[0], inLocation.mCell[1], inLocation.mCell[2]);
@@ -119,7 +116,7 @@ Vec3 FfdLattice::Displacement(const LatticeLocation& inLocation, std::span<const
                    "FfdLattice::Displacement: a location outside the lattice or controls of another lattice");
 
     // intent: the wide sum reads one double past the cell's last control, so not in the lattice's last cell
-    const CellWeights weights{wx, wy, wz};
+    const CellWeights weights = CellWeightsAt(inLocation.mT);
     const Vec3* first = &inControls[static_cast<std::size_t>(base)];
     const auto last = static_cast<std::size_t>(base + 3 * nxy + 3 * nx + 3);
     if (mWideSum && last + 1 < inControls.size())

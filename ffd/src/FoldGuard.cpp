@@ -120,16 +120,22 @@ std::vector<int> FoldGuard(const FfdLattice& inLattice, std::span<const Vec3> in
     std::vector<double> q;
     std::vector<double> k;
     std::vector<std::size_t> members;
+    // intent: each changed control's offset from the first control of its line along each axis (a, b n0,
+    // c n0 n1), with two divisions per control instead of two per control and axis
+    std::vector<std::array<int, 3>> offsets(inChanged.size());
+    for (std::size_t i = 0; i < inChanged.size(); ++i)
+    {
+        const int c = inChanged[i] / stride[2], rest = inChanged[i] - c * stride[2];
+        const int b = rest / n[0];
+        offsets[i] = {rest - b * n[0], b * stride[1], c * stride[2]};
+    }
     for (int axis = 0; axis < 3; ++axis)
     {
         // intent: the lines along this axis through a changed control, named by their first control
         lines.clear();
         AscendingIndexSet line_set(line_bits);
-        for (int control : inChanged)
-        {
-            const int coordinate = (control / stride[static_cast<std::size_t>(axis)]) % n[static_cast<std::size_t>(axis)];
-            line_set.Insert(static_cast<std::uint32_t>(control - coordinate * stride[static_cast<std::size_t>(axis)]));
-        }
+        for (std::size_t i = 0; i < inChanged.size(); ++i)
+            line_set.Insert(static_cast<std::uint32_t>(inChanged[i] - offsets[i][static_cast<std::size_t>(axis)]));
         line_set.TakeAscending(lines);
 
         const Vec3 direction = axes.col(axis);

@@ -30,6 +30,21 @@ Vec3 TensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t 
     return sum;
 }
 
+void PackCellControls(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t inPlane, PackedCellControls& outPacked)
+{
+    for (std::ptrdiff_t c = 0; c < 4; ++c)
+        for (std::ptrdiff_t b = 0; b < 4; ++b)
+            for (std::ptrdiff_t a = 0; a < 4; ++a)
+            {
+                const Vec3& control = inFirst[c * inPlane + b * inRow + a];
+                double* packed = outPacked.mControls[16 * c + 4 * b + a];
+                packed[0] = control.x();
+                packed[1] = control.y();
+                packed[2] = control.z();
+                packed[3] = 0.0;
+            }
+}
+
 #ifdef CRUMPLE_FFD_WIDE_SUM
 
 // intent: AVX without FMA (and the build's -ffp-contract=off): every product is rounded before its sum, as in
@@ -60,6 +75,30 @@ __attribute__((target("avx"))) Vec3 WideTensorProductSum(const Vec3* inFirst, st
     return Vec3(lanes[0], lanes[1], lanes[2]);
 }
 
+__attribute__((target("avx"))) Vec3 WidePackedTensorProductSum(const PackedCellControls& inPacked, const CellWeights& inWeights)
+{
+    const __m256d w0 = _mm256_set1_pd(inWeights.mX[0]), w1 = _mm256_set1_pd(inWeights.mX[1]);
+    const __m256d w2 = _mm256_set1_pd(inWeights.mX[2]), w3 = _mm256_set1_pd(inWeights.mX[3]);
+    __m256d sum = _mm256_setzero_pd();
+    for (std::size_t c = 0; c < 4; ++c)
+    {
+        __m256d plane = _mm256_setzero_pd();
+        for (std::size_t b = 0; b < 4; ++b)
+        {
+            const double(*row)[4] = inPacked.mControls + 16 * c + 4 * b;
+            __m256d line = _mm256_mul_pd(w0, _mm256_load_pd(row[0]));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w1, _mm256_load_pd(row[1])));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w2, _mm256_load_pd(row[2])));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w3, _mm256_load_pd(row[3])));
+            plane = _mm256_add_pd(plane, _mm256_mul_pd(_mm256_set1_pd(inWeights.mY[b]), line));
+        }
+        sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(inWeights.mZ[c]), plane));
+    }
+    alignas(32) double lanes[4];
+    _mm256_store_pd(lanes, sum);
+    return Vec3(lanes[0], lanes[1], lanes[2]);
+}
+
 bool HasWideTensorProductSum()
 {
     // intent: asked once; the answer (the processor's and the OS's AVX support) cannot change in a process. The
@@ -72,6 +111,12 @@ bool HasWideTensorProductSum()
 }
 
 #else
+
+Vec3 WidePackedTensorProductSum(const PackedCellControls& inPacked, const CellWeights& inWeights)
+{
+    CRUMPLE_ASSERT(false, "WidePackedTensorProductSum: not built for this processor");
+    return Vec3::Zero();
+}
 
 Vec3 WideTensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t inPlane, const CellWeights& inWeights)
 {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Math.h>
+#include <crumple/ffd/CubicBSplineWeights.h>
 
 #include <array>
 #include <cstddef>
@@ -15,6 +16,12 @@ struct CellWeights
 {
     std::array<double, 4> mX, mY, mZ;
 };
+
+/// The weights at local parameter inT of a cell (LatticeLocation::mT)
+inline CellWeights CellWeightsAt(const Vec3& inT)
+{
+    return {CubicBSplineWeights(inT.x()), CubicBSplineWeights(inT.y()), CubicBSplineWeights(inT.z())};
+}
 
 /// The tensor-product sum over a cell's 4 x 4 x 4 controls, sum_c wz[c] sum_b wy[b] sum_a wx[a] P(a, b, c),
 /// in the fixed order (c, b, a) that makes it bitwise reproducible: each line ((w0 P0 + w1 P1) + w2 P2) + w3 P3,
@@ -30,6 +37,21 @@ Vec3 TensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t 
 /// discarded): the cell's last control P(3, 3, 3) must therefore not be the last element of its array.
 /// Call only where HasWideTensorProductSum().
 Vec3 WideTensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t inPlane, const CellWeights& inWeights);
+
+/// A cell's 4 x 4 x 4 controls copied for WidePackedTensorProductSum: P(a, b, c) at mControls[16 c + 4 b + a]
+/// as (x, y, z, 0), each on its own 32-byte boundary. The vertices of a cell share its controls: copied once,
+/// each vertex's 64 reads are aligned, where three packed doubles apart half of them straddle a cache line.
+struct alignas(32) PackedCellControls
+{
+    double mControls[64][4];
+};
+
+/// Copies the cell whose first control is inFirst (strides as TensorProductSum's).
+void PackCellControls(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t inPlane, PackedCellControls& outPacked);
+
+/// WideTensorProductSum over a packed cell: the same operations in the same order, so the same bits. Call only
+/// where HasWideTensorProductSum().
+Vec3 WidePackedTensorProductSum(const PackedCellControls& inPacked, const CellWeights& inWeights);
 
 /// Whether this build and this processor run WideTensorProductSum (x86-64 with AVX, GCC or Clang). Constant
 /// for the process.

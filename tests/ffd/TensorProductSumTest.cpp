@@ -112,6 +112,38 @@ TEST_CASE("The wide tensor-product sum gives the scalar sum's bits", "[ffd]")
     CHECK(differing == 0);
 }
 
+TEST_CASE("The wide sum over a cell's packed controls gives the scalar sum's bits, the last cell included", "[ffd]")
+{
+    if (!HasWideTensorProductSum())
+        common::SkipTest("this processor (or build) has no AVX: FfdDeformer sums each vertex with the scalar sum");
+    std::mt19937_64 random(6);
+    const int nx = 7, ny = 6, nz = 5;
+    std::vector<Vec3> controls(static_cast<std::size_t>(nx * ny * nz));
+    int compared = 0, differing = 0;
+    PackedCellControls packed;
+    for (int fill = 0; fill < 20; ++fill)
+    {
+        for (Vec3& control : controls)
+            control = Vec3(AnyValue(random), AnyValue(random), AnyValue(random));
+        for (int k = 0; k < nz - 3; ++k)
+            for (int j = 0; j < ny - 3; ++j)
+                for (int i = 0; i < nx - 3; ++i)
+                {
+                    const Vec3* first = &controls[static_cast<std::size_t>(i + nx * (j + ny * k))];
+                    PackCellControls(first, nx, nx * ny, packed);
+                    for (int point = 0; point < 4; ++point)
+                    {
+                        const CellWeights w{CubicBSplineWeights(AnyT(random)), CubicBSplineWeights(AnyT(random)),
+                                            CubicBSplineWeights(AnyT(random))};
+                        ++compared;
+                        differing += SameBytes(TensorProductSum(first, nx, nx * ny, w), WidePackedTensorProductSum(packed, w)) ? 0 : 1;
+                    }
+                }
+    }
+    CHECK(compared == 20 * 4 * 3 * 2 * 4);
+    CHECK(differing == 0);
+}
+
 TEST_CASE("Displacement is the same field in the lattice's last cell (scalar sum) as in the others (wide sum)", "[ffd]")
 {
     // A field linear in the control index is reproduced exactly up to round-off by the cubic B-spline: the

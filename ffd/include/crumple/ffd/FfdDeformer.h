@@ -207,6 +207,7 @@ private:
     std::vector<int> mTouchedCells;         ///< The cells a change reaches (TouchCells), ascending
     int mTouchedZone = 0;                   ///< The zone of mTouchedCells
     std::vector<std::uint8_t> mDilation[2]; ///< TouchCells' masks over the changed controls' box
+    std::vector<std::array<int, 3>> mTouchedControls; ///< TouchCells' (a, b, c) of each changed control
     std::vector<std::uint64_t> mVertexBits;   ///< One bit per vertex (AscendingIndexSet)
     std::vector<std::uint64_t> mTriangleBits; ///< One bit per triangle (AscendingIndexSet)
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
