@@ -25,7 +25,11 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     mWorld->getSolverInfo().m_splitImpulsePenetrationThreshold = btScalar(-0.005);
     mWorld->setGravity(btVector3(0, 0, btScalar(inSettings.mFloating ? 0.0 : -9.81)));
     if (inSettings.mAttach)
-        mAdapter = std::move(bullet::BulletAdapter::Create(*mWorld, mDamage).Get());
+    {
+        bullet::BulletAdapterSettings adapter;
+        adapter.mMeasureCpuTime = inSettings.mMeasureAdapterTime;
+        mAdapter = std::move(bullet::BulletAdapter::Create(*mWorld, mDamage, adapter).Get());
+    }
 
     // Bullet bounces a pair by the product of the two bodies' restitutions: sqrt(e) on every body of the
     // crash makes each pair rebound as Crumple's impulses assume (DamageWorldSettings::mRestitution), so the

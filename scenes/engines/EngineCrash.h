@@ -54,6 +54,7 @@ struct EngineCrashSettings
     /// its front edge into the ground
     double mGroundFriction = 0.015;
     bool mAttach = true;               ///< Attach Crumple; false gives the bare engine scene, for overhead ratios
+    bool mMeasureAdapterTime = false;  ///< The adapter measures its CPU time per step (its settings' mMeasureCpuTime)
     /// The car's render mesh in its body frame (x forward, z up, centred on the box); empty: a box mesh of
     /// mHalfExtents with about mTriangles triangles. The collision shape is always the box.
     std::optional<ffd::TriangleMesh> mCarMesh;

@@ -34,7 +34,11 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
     // (within 4 % and 7 % at 5 km/h).
     dWorldSetQuickStepNumIterations(mWorld, cQuickStepIterations);
     if (inSettings.mAttach)
-        mAdapter = std::move(ode::OdeAdapter::Create(mDamage).Get());
+    {
+        ode::OdeAdapterSettings adapter;
+        adapter.mMeasureCpuTime = inSettings.mMeasureAdapterTime;
+        mAdapter = std::move(ode::OdeAdapter::Create(mDamage, adapter).Get());
+    }
 
     if (!inSettings.mFloating)
         dCreatePlane(mSpace, 0, 0, 1, 0);

@@ -168,6 +168,7 @@ TEST_CASE("Bullet: a car driving on flat ground gets no damage", "[bullet]")
     settings.mDriveOnly = true;
     settings.mSpeed = 25.0;
     settings.mDuration = 1.0;
+    settings.mMeasureAdapterTime = true;
     BulletWallCrash drive(settings);
     const EngineCrashResult result = drive.Run();
     CHECK(result.mMaxDent == 0.0);
@@ -176,6 +177,12 @@ TEST_CASE("Bullet: a car driving on flat ground gets no damage", "[bullet]")
     const double seconds = drive.GetAdapter().GetLastStepStats().mSeconds;
     CHECK(seconds > 0.0);
     CHECK(seconds < 1.0 / 60.0);
+    // Unless asked for, the time is not measured (the clock is a system call): the same drive reports none.
+    settings.mMeasureAdapterTime = false;
+    BulletWallCrash unmeasured(settings);
+    unmeasured.Run();
+    CHECK(unmeasured.GetAdapter().GetLastStepStats().mContactsReported > 0);
+    CHECK(unmeasured.GetAdapter().GetLastStepStats().mSeconds == 0.0);
 }
 
 TEST_CASE("Bullet: a compound chassis maps its children's contacts to its body", "[bullet]")

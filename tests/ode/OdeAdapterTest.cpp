@@ -156,6 +156,7 @@ TEST_CASE("ODE: a car driving on flat ground gets no damage", "[ode]")
     settings.mDriveOnly = true;
     settings.mSpeed = 25.0;
     settings.mDuration = 1.0;
+    settings.mMeasureAdapterTime = true;
     OdeWallCrash drive(settings);
     const EngineCrashResult result = drive.Run();
     CHECK(result.mMaxDent == 0.0);
@@ -165,6 +166,12 @@ TEST_CASE("ODE: a car driving on flat ground gets no damage", "[ode]")
     const double seconds = drive.GetAdapter().GetLastStepStats().mSeconds;
     CHECK(seconds > 0.0);
     CHECK(seconds < 1.0 / 60.0);
+    // Unless asked for, the time is not measured (the clock is a system call): the same drive reports none.
+    settings.mMeasureAdapterTime = false;
+    OdeWallCrash unmeasured(settings);
+    unmeasured.Run();
+    CHECK(unmeasured.GetAdapter().GetLastStepStats().mContactsReported > 0);
+    CHECK(unmeasured.GetAdapter().GetLastStepStats().mSeconds == 0.0);
 }
 
 TEST_CASE("ODE: the same crash twice gives bitwise identical meshes", "[ode][determinism]")

@@ -299,7 +299,8 @@ Result<btConvexHullShape*> BulletAdapter::CreateFollowingHull(ObjectId inObject,
 
 void BulletAdapter::PreTick(double)
 {
-    const double start = ThreadCpuSeconds();
+    const bool timed = mSettings.mMeasureCpuTime;
+    const double start = timed ? ThreadCpuSeconds() : 0.0;
     // Pre-solve snapshot of every awake mapped body; sleeping bodies keep their last (resting) state.
     int snapshotted = 0;
     for (const MappedBody& mapped : mBodies)
@@ -311,12 +312,13 @@ void BulletAdapter::PreTick(double)
     }
     mLastStats = {};
     mLastStats.mBodiesSnapshotted = snapshotted;
-    mLastStats.mSeconds = ThreadCpuSeconds() - start;
+    mLastStats.mSeconds = timed ? ThreadCpuSeconds() - start : 0.0;
 }
 
 void BulletAdapter::PostTick(double inTimeStep)
 {
-    const double start = ThreadCpuSeconds();
+    const bool timed = mSettings.mMeasureCpuTime;
+    const double start = timed ? ThreadCpuSeconds() : 0.0;
     mTime += inTimeStep;
 
     // Manifold points of mapped pairs that touch, in the dispatcher's (deterministic) order.
@@ -358,7 +360,8 @@ void BulletAdapter::PostTick(double inTimeStep)
     if (!mHulls.empty() && mDamage.GetShapeRevision() != mHullRevision)
         UpdateHulls();
     HoldProps();
-    mLastStats.mSeconds += ThreadCpuSeconds() - start;
+    if (timed)
+        mLastStats.mSeconds += ThreadCpuSeconds() - start;
 }
 
 void BulletAdapter::UpdateHulls()

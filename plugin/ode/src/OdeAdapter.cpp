@@ -14,14 +14,14 @@ namespace crumple::ode
 
 using namespace crumple::plugin;
 
-Result<std::unique_ptr<OdeAdapter>> OdeAdapter::Create(DamageWorld& inDamage)
+Result<std::unique_ptr<OdeAdapter>> OdeAdapter::Create(DamageWorld& inDamage, const OdeAdapterSettings& inSettings)
 {
     BodyState environment;
     environment.mMotionType = EMotionType::Static;
     Result<BodyId> body = inDamage.CreateBody(environment);
     if (!body)
         return body.GetError();
-    return std::unique_ptr<OdeAdapter>(new OdeAdapter(inDamage, body.Get()));
+    return std::unique_ptr<OdeAdapter>(new OdeAdapter(inDamage, body.Get(), inSettings));
 }
 
 Result<BodyId> OdeAdapter::AddBody(dBodyID inBody)
@@ -295,22 +295,24 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
                                  std::size_t inStride, const dContact* inFull, double inFriction)
 {
     // intent: a pair with a body the adapter was not given (a game's crate on the ground) leaves before the
-    // clock is read: the thread's CPU time is a system call on some hosts (vDSO fallback, about a
-    // microsecond), and a scene's unregistered pairs can outnumber its registered ones a hundred to one
+    // clock is read (when it is: OdeAdapterSettings::mMeasureCpuTime): the thread's CPU time is a system call
+    // on some hosts (vDSO fallback, about a microsecond), and a scene's unregistered pairs can outnumber its
+    // registered ones a hundred to one
     auto known = [this](dGeomID inGeom) {
         const dBodyID body = dGeomGetBody(inGeom);
         return body == nullptr || mBodies.contains(body);
     };
     if (inCount == 0 || !known(inGeom1) || !known(inGeom2))
         return;
-    const double start = ThreadCpuSeconds();
+    const double start = CpuSeconds();
     // intent: every return below passes through this, so the step's time has all of its calls
     struct AddTime
     {
+        const OdeAdapter& mAdapter;
         double mStart;
         double& mSeconds;
-        ~AddTime() { mSeconds += ThreadCpuSeconds() - mStart; }
-    } add_time{start, mCurrent.mSeconds};
+        ~AddTime() { mSeconds += mAdapter.CpuSeconds() - mStart; }
+    } add_time{*this, start, mCurrent.mSeconds};
     const BodyId a = BodyOfGeom(inGeom1);
     const BodyId b = BodyOfGeom(inGeom2);
     if (!a.IsValid() || !b.IsValid() || a == b)
@@ -336,9 +338,14 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
     }
 }
 
+double OdeAdapter::CpuSeconds() const
+{
+    return mSettings.mMeasureCpuTime ? ThreadCpuSeconds() : 0.0;
+}
+
 void OdeAdapter::AfterStep(double inTimeStep)
 {
-    const double start = ThreadCpuSeconds();
+    const double start = CpuSeconds();
     mTime += inTimeStep;
     for (ContactEvent& event : mEvents)
         event.mTime = mTime;
@@ -348,7 +355,7 @@ void OdeAdapter::AfterStep(double inTimeStep)
         mCurrent.mContactsRefused = static_cast<int>(mEvents.size());
     mCurrent.mUpdate = mDamage.Update(mTime);
     HoldProps();
-    mCurrent.mSeconds += ThreadCpuSeconds() - start;
+    mCurrent.mSeconds += CpuSeconds() - start;
 
     // Ready for the next step.
     mLastStats = mCurrent;
