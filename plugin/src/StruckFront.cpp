@@ -108,9 +108,9 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
         // [least, most] of axis.p over the box moved by its bound, widened by a hair far over the rounding of a
         // vertex's own dot product (so no vertex's computed value falls outside)
         const Vec3 centre = 0.5 * (inGroup.mLow + inGroup.mHigh), half = 0.5 * (inGroup.mHigh - inGroup.mLow);
-        const double margin = inGroup.mMoved + 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff() + inGroup.mMoved);
+        const double widening = inGroup.mMoved + 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff() + inGroup.mMoved);
         auto reach = [&](const Vec3& inAxis) {
-            const double middle = inAxis.dot(centre), extent = inAxis.cwiseAbs().dot(half) + margin;
+            const double middle = inAxis.dot(centre), extent = inAxis.cwiseAbs().dot(half) + widening;
             return std::array<double, 2>{middle - extent, middle + extent};
         };
         const std::array<double, 2> side = reach(side_axis), third = reach(third_axis);
@@ -192,18 +192,30 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
     // ring cost a plan 0.05 ms on a car's front): a layer's bins take the least depth of their neighbours met
     // in earlier layers, and join the met ones together. mark: 0 unmet, 1 met, 2 in the next layer.
     std::vector<std::uint8_t>& mark = met;
-    std::vector<std::size_t> layer, next_layer;
+    struct Bin
+    {
+        int mI, mJ;
+    };
+    std::vector<Bin> layer, next_layer;
+    layer.reserve(count);
+    next_layer.reserve(count);
+    // intent: the 3 x 3 bins around (i, j) within the grid, the bin itself included (it is never met while
+    // asked about), by index; the range is clipped once instead of each neighbour being checked
+    auto around = [&](int inI, int inJ, auto&& inVisit) {
+        const int i0 = std::max(inI - 1, 0), i1 = std::min(inI + 1, ns - 1);
+        const int j0 = std::max(inJ - 1, 0), j1 = std::min(inJ + 1, nt - 1);
+        for (int jj = j0; jj <= j1; ++jj)
+            for (int ii = i0; ii <= i1; ++ii)
+                inVisit(ii, jj, index(ii, jj));
+    };
     auto queue_unmet_neighbours = [&](int inI, int inJ) {
-        for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di)
+        around(inI, inJ, [&](int inII, int inJJ, std::size_t inK) {
+            if (mark[inK] == 0)
             {
-                const int ii = inI + di, jj = inJ + dj;
-                if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && mark[index(ii, jj)] == 0)
-                {
-                    mark[index(ii, jj)] = 2;
-                    next_layer.push_back(index(ii, jj));
-                }
+                mark[inK] = 2;
+                next_layer.push_back({inII, inJJ});
             }
+        });
     };
     for (int j = 0; j < nt; ++j)
         for (int i = 0; i < ns; ++i)
@@ -213,23 +225,19 @@ StruckFront MeasureStruckFront(const CrushPlan& inPlan, const CrossRect& inRegio
     {
         layer.swap(next_layer);
         next_layer.clear();
-        for (std::size_t k : layer)
+        for (const Bin& b : layer)
         {
-            const int i = static_cast<int>(k % static_cast<std::size_t>(ns)), j = static_cast<int>(k / static_cast<std::size_t>(ns));
             double least = std::numeric_limits<double>::infinity();
-            for (int dj = -1; dj <= 1; ++dj)
-                for (int di = -1; di <= 1; ++di)
-                {
-                    const int ii = i + di, jj = j + dj;
-                    if (ii >= 0 && ii < ns && jj >= 0 && jj < nt && mark[index(ii, jj)] == 1)
-                        least = std::min(least, front[index(ii, jj)]);
-                }
-            front[k] = least; // read by no other bin of this layer: they read met ones only
+            around(b.mI, b.mJ, [&](int, int, std::size_t inK) {
+                if (mark[inK] == 1)
+                    least = std::min(least, front[inK]);
+            });
+            front[index(b.mI, b.mJ)] = least; // read by no other bin of this layer: they read met ones only
         }
-        for (std::size_t k : layer)
-            mark[k] = 1;
-        for (std::size_t k : layer)
-            queue_unmet_neighbours(static_cast<int>(k % static_cast<std::size_t>(ns)), static_cast<int>(k / static_cast<std::size_t>(ns)));
+        for (const Bin& b : layer)
+            mark[index(b.mI, b.mJ)] = 1;
+        for (const Bin& b : layer)
+            queue_unmet_neighbours(b.mI, b.mJ);
     }
     // Chamfer sweeps: no bin deeper than a neighbour's depth plus the slope times their distance.
     const double straight = inSlope * bin, diagonal = inSlope * bin * std::numbers::sqrt2;
