@@ -47,10 +47,14 @@ void PackCellControls(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t 
 
 #ifdef CRUMPLE_FFD_WIDE_SUM
 
+namespace
+{
+
 // intent: AVX without FMA (and the build's -ffp-contract=off): every product is rounded before its sum, as in
-// the scalar sum above
-__attribute__((target("avx"))) Vec3 WideTensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow,
-                                                         std::ptrdiff_t inPlane, const CellWeights& inWeights)
+// the scalar sum. The controls are read four doubles at a time from inFirst: control (a, b, c) starts
+// a inControl + b inRow + c inPlane doubles in (three apart in a lattice's Vec3s, four in a packed cell).
+__attribute__((target("avx"))) Vec3 WideSum(const double* inFirst, std::ptrdiff_t inControl, std::ptrdiff_t inRow,
+                                            std::ptrdiff_t inPlane, const CellWeights& inWeights)
 {
     const __m256d w0 = _mm256_set1_pd(inWeights.mX[0]), w1 = _mm256_set1_pd(inWeights.mX[1]);
     const __m256d w2 = _mm256_set1_pd(inWeights.mX[2]), w3 = _mm256_set1_pd(inWeights.mX[3]);
@@ -60,12 +64,11 @@ __attribute__((target("avx"))) Vec3 WideTensorProductSum(const Vec3* inFirst, st
         __m256d plane = _mm256_setzero_pd();
         for (std::ptrdiff_t b = 0; b < 4; ++b)
         {
-            const double* row = (inFirst + c * inPlane + b * inRow)->data();
-            // intent: a Vec3 is three packed doubles, so control a starts 3 a doubles in
+            const double* row = inFirst + c * inPlane + b * inRow;
             __m256d line = _mm256_mul_pd(w0, _mm256_loadu_pd(row));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w1, _mm256_loadu_pd(row + 3)));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w2, _mm256_loadu_pd(row + 6)));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w3, _mm256_loadu_pd(row + 9)));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w1, _mm256_loadu_pd(row + inControl)));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w2, _mm256_loadu_pd(row + 2 * inControl)));
+            line = _mm256_add_pd(line, _mm256_mul_pd(w3, _mm256_loadu_pd(row + 3 * inControl)));
             plane = _mm256_add_pd(plane, _mm256_mul_pd(_mm256_set1_pd(inWeights.mY[static_cast<std::size_t>(b)]), line));
         }
         sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(inWeights.mZ[static_cast<std::size_t>(c)]), plane));
@@ -75,28 +78,16 @@ __attribute__((target("avx"))) Vec3 WideTensorProductSum(const Vec3* inFirst, st
     return Vec3(lanes[0], lanes[1], lanes[2]);
 }
 
-__attribute__((target("avx"))) Vec3 WidePackedTensorProductSum(const PackedCellControls& inPacked, const CellWeights& inWeights)
+} // namespace
+
+Vec3 WideTensorProductSum(const Vec3* inFirst, std::ptrdiff_t inRow, std::ptrdiff_t inPlane, const CellWeights& inWeights)
 {
-    const __m256d w0 = _mm256_set1_pd(inWeights.mX[0]), w1 = _mm256_set1_pd(inWeights.mX[1]);
-    const __m256d w2 = _mm256_set1_pd(inWeights.mX[2]), w3 = _mm256_set1_pd(inWeights.mX[3]);
-    __m256d sum = _mm256_setzero_pd();
-    for (std::size_t c = 0; c < 4; ++c)
-    {
-        __m256d plane = _mm256_setzero_pd();
-        for (std::size_t b = 0; b < 4; ++b)
-        {
-            const double(*row)[4] = inPacked.mControls + 16 * c + 4 * b;
-            __m256d line = _mm256_mul_pd(w0, _mm256_load_pd(row[0]));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w1, _mm256_load_pd(row[1])));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w2, _mm256_load_pd(row[2])));
-            line = _mm256_add_pd(line, _mm256_mul_pd(w3, _mm256_load_pd(row[3])));
-            plane = _mm256_add_pd(plane, _mm256_mul_pd(_mm256_set1_pd(inWeights.mY[b]), line));
-        }
-        sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(inWeights.mZ[c]), plane));
-    }
-    alignas(32) double lanes[4];
-    _mm256_store_pd(lanes, sum);
-    return Vec3(lanes[0], lanes[1], lanes[2]);
+    return WideSum(inFirst->data(), 3, 3 * inRow, 3 * inPlane, inWeights);
+}
+
+Vec3 WidePackedTensorProductSum(const PackedCellControls& inPacked, const CellWeights& inWeights)
+{
+    return WideSum(inPacked.mControls[0], 4, 16, 64, inWeights);
 }
 
 bool HasWideTensorProductSum()
