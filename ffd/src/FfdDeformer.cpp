@@ -526,8 +526,8 @@ void FfdDeformer::TouchCells(int inZone, std::span<const int> inControls)
     const std::array<int, 3>& n = zone.GetSettings().mControlCount;
     const std::array<int, 3>& cells = zone.GetCellCount();
 
-    // intent: the box of the changed controls, and the cells it can reach (a control reaches cells a-3..a)
-    // intent: each control's (a, b, c) worked out once, with two divisions (they were most of this call)
+    // intent: the box of the changed controls, and the cells it can reach (a control reaches cells a-3..a);
+    // each control's (a, b, c) worked out once, with two divisions (it took three, twice over)
     std::vector<std::array<int, 3>>& decoded = mTouchedControls;
     decoded.resize(inControls.size());
     std::array<int, 3> low{n[0], n[1], n[2]}, high{-1, -1, -1};
