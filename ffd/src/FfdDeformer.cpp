@@ -135,9 +135,11 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         }
     };
     deformer.mVertexZone.assign(vertex_count, -1);
-    deformer.mVertexLocation.assign(vertex_count, LatticeLocation{});
+    // intent: each vertex's location only while the buckets are built; the deformer keeps them in bucket order
+    // (mBucketLocations) and each vertex's place there (mVertexBucket), 4 bytes a vertex instead of 40
+    std::vector<LatticeLocation> vertex_location(vertex_count, LatticeLocation{});
     for (std::uint32_t v = 0; v < vertex_count; ++v)
-        bind(deformer.mRestMesh.mPositions[v], deformer.mVertexZone[v], deformer.mVertexLocation[v]);
+        bind(deformer.mRestMesh.mPositions[v], deformer.mVertexZone[v], vertex_location[v]);
     // A rigid part's vertices all take the lattice location of its rest bounding box's centre: every use of a
     // vertex's location (its displacement, its cell bucket, the surface index, the bounds) then moves the part
     // as one, and a dent touches it exactly when it changes a control that reaches the centre.
@@ -153,7 +155,7 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         for (std::uint32_t v : part)
         {
             deformer.mVertexZone[v] = zone;
-            deformer.mVertexLocation[v] = location;
+            vertex_location[v] = location;
         }
     }
 
@@ -168,14 +170,14 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         start.assign(cells + 1, 0);
         for (std::uint32_t v = 0; v < vertex_count; ++v)
             if (deformer.mVertexZone[v] == static_cast<int>(z))
-                ++start[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell)) + 1];
+                ++start[static_cast<std::size_t>(lattice.CellIndex(vertex_location[v].mCell)) + 1];
         for (std::size_t c = 0; c < cells; ++c)
             start[c + 1] += start[c];
         std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
         deformer.mCellVertices[z].resize(start[cells]);
         for (std::uint32_t v = 0; v < vertex_count; ++v)
             if (deformer.mVertexZone[v] == static_cast<int>(z))
-                deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(deformer.mVertexLocation[v].mCell))]++] = v;
+                deformer.mCellVertices[z][fill[static_cast<std::size_t>(lattice.CellIndex(vertex_location[v].mCell))]++] = v;
     }
 
     // The bucketed vertices' locations and rest positions in bucket order.
@@ -187,10 +189,14 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         rest.reserve(deformer.mCellVertices[z].size());
         for (std::uint32_t v : deformer.mCellVertices[z])
         {
-            locations.push_back(deformer.mVertexLocation[v]);
+            locations.push_back(vertex_location[v]);
             rest.push_back(deformer.mRestMesh.mPositions[v]);
         }
     }
+    deformer.mVertexBucket.assign(vertex_count, 0);
+    for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
+        for (std::size_t k = 0; k < deformer.mCellVertices[z].size(); ++k)
+            deformer.mVertexBucket[deformer.mCellVertices[z][k]] = static_cast<std::uint32_t>(k);
 
     // Cells numbered across zones, and each vertex's, for the surface index (about 70 bytes per cell).
     int cell_total = 0;
@@ -203,7 +209,9 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     for (std::uint32_t v = 0; v < vertex_count; ++v)
         if (const int zone = deformer.mVertexZone[v]; zone >= 0)
             deformer.mVertexCell[v] = deformer.mCellOffset[static_cast<std::size_t>(zone)] +
-                                      deformer.mZones[static_cast<std::size_t>(zone)].CellIndex(deformer.mVertexLocation[v].mCell);
+                                      deformer.mZones[static_cast<std::size_t>(zone)].CellIndex(vertex_location[v].mCell);
+    // intent: given back before the surface index and the normals allocate theirs, which can reuse it
+    std::vector<LatticeLocation>().swap(vertex_location);
     deformer.mSurfaceIndex = std::make_shared<const CellSurfaceIndex>(
         CellSurfaceIndex::Build(deformer.mRestMesh, deformer.mVertexCell, cell_total));
 
@@ -649,6 +657,7 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
         return 1.0;
 
     std::vector<Vec3>& scratch = mScratchControls[static_cast<std::size_t>(inZone)];
+    const std::vector<LatticeLocation>& locations = mBucketLocations[static_cast<std::size_t>(inZone)];
     for (std::size_t k = 0; k < inControls.size(); ++k)
         scratch[static_cast<std::size_t>(inControls[k])] = inDelta.row(static_cast<Eigen::Index>(k)).transpose();
 
@@ -662,7 +671,7 @@ double FfdDeformer::DentScale(int inZone, std::span<const int> inControls, const
         double scale = 1.0;
         for (std::uint32_t v : PieceOf(inVertices, inPiece, pieces))
         {
-            const Vec3 n = zone.Displacement(mVertexLocation[v], scratch);
+            const Vec3 n = zone.Displacement(locations[mVertexBucket[v]], scratch);
             const double n2 = n.squaredNorm();
             if (n2 == 0.0)
                 continue;
@@ -851,7 +860,8 @@ void FfdDeformer::RecomputeAll()
         const int zone = mVertexZone[v];
         const Vec3 position = zone < 0 ? mRestMesh.mPositions[v]
                                        : Vec3(mRestMesh.mPositions[v] +
-                                              mZones[static_cast<std::size_t>(zone)].Displacement(mVertexLocation[v]));
+                                              mZones[static_cast<std::size_t>(zone)].Displacement(
+                                                  mBucketLocations[static_cast<std::size_t>(zone)][mVertexBucket[v]]));
         if (!SameBits(position, mPositions[v]))
             mDirty[v] = 1;
         mPositions[v] = position;
@@ -992,7 +1002,9 @@ Status FfdDeformer::ValidateControlDisplacements(std::span<const std::vector<Vec
         if (z < 0)
             continue;
         const double limit = mSettings.mZones[static_cast<std::size_t>(z)].mMaxTotalDeformation * (1.0 + 1.0e-9);
-        if (mZones[static_cast<std::size_t>(z)].Displacement(mVertexLocation[v], inPerZone[static_cast<std::size_t>(z)]).norm() > limit)
+        if (mZones[static_cast<std::size_t>(z)]
+                .Displacement(mBucketLocations[static_cast<std::size_t>(z)][mVertexBucket[v]], inPerZone[static_cast<std::size_t>(z)])
+                .norm() > limit)
             return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": the state moves vertex " +
                                                           std::to_string(v) + " beyond the zone's maximum total deformation");
     }

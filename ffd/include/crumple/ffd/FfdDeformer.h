@@ -189,7 +189,8 @@ private:
     std::vector<Vec3> mRestNormals;
 
     std::vector<int> mVertexZone;                 ///< #V zone index or -1
-    std::vector<LatticeLocation> mVertexLocation; ///< #V rest lattice location in its zone
+    std::vector<std::uint32_t> mVertexBucket;     ///< #V: the vertex's place in its zone's buckets (mCellVertices,
+                                                  ///< mBucketLocations); 0 for a vertex of no zone
     std::vector<std::vector<std::uint32_t>> mCellStart;    ///< Per zone: CSR offsets, #cells + 1
     std::vector<std::vector<std::uint32_t>> mCellVertices; ///< Per zone: vertices bucketed by cell
     /// Per zone, in mCellVertices order: each vertex's lattice location and rest position, so a dent reads them
