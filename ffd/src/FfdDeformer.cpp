@@ -752,7 +752,9 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             double cell_largest = 0.0, cell_moved = 0.0;
             // intent: the cell's bucket, read in memory order; only the outputs are scattered
             const std::size_t first = start[static_cast<std::size_t>(mTouchedCells[c] - offset)];
-            if (packed && run[c + 1] > run[c])
+            // intent: a cell of one vertex sums from the lattice directly (the copy would cost more than it saves)
+            const bool cell_packed = packed && run[c + 1] - run[c] >= 2;
+            if (cell_packed)
             {
                 const std::array<int, 3>& cell = locations[first].mCell;
                 PackCellControls(&controls[static_cast<std::size_t>(zone.ControlIndex(cell[0], cell[1], cell[2]))], row, plane,
@@ -762,7 +764,7 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             {
                 const std::uint32_t v = inVertices[i];
                 const std::size_t k = first + (i - run[c]);
-                const Vec3 displacement = packed ? WidePackedTensorProductSum(cell_controls, CellWeightsAt(locations[k].mT))
+                const Vec3 displacement = cell_packed ? WidePackedTensorProductSum(cell_controls, CellWeightsAt(locations[k].mT))
                                                  : zone.Displacement(locations[k]);
                 const Vec3 position = rest[k] + displacement;
                 mPositions[v] = position;

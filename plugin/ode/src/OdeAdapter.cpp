@@ -255,7 +255,7 @@ BodyId OdeAdapter::FindBody(dBodyID inBody) const
     return found == mBodies.end() ? BodyId{} : found->second;
 }
 
-BodyId OdeAdapter::BodyOfGeom(dGeomID inGeom)
+BodyId OdeAdapter::FindBodyOfGeom(dGeomID inGeom) const
 {
     dBodyID body = dGeomGetBody(inGeom);
     if (body == nullptr)
@@ -264,20 +264,23 @@ BodyId OdeAdapter::BodyOfGeom(dGeomID inGeom)
         return found == mStaticGeoms.end() ? mEnvironment : found->second;
     }
     const auto found = mBodies.find(body);
-    if (found == mBodies.end())
-        return BodyId{};
-    // Pre-solve snapshot, once per step, only for bodies that are in contact.
-    const BodyId id = found->second;
-    if (mSnapshotted.size() <= id.mValue)
-        mSnapshotted.resize(id.mValue + 1, 0);
-    if (mSnapshotted[id.mValue] == 0)
+    return found == mBodies.end() ? BodyId{} : found->second;
+}
+
+void OdeAdapter::SnapshotOnce(dGeomID inGeom, BodyId inId)
+{
+    dBodyID body = dGeomGetBody(inGeom);
+    if (body == nullptr)
+        return;
+    if (mSnapshotted.size() <= inId.mValue)
+        mSnapshotted.resize(inId.mValue + 1, 0);
+    if (mSnapshotted[inId.mValue] == 0)
     {
-        mSnapshotted[id.mValue] = 1;
-        mSnapshottedList.push_back(id);
-        if (mDamage.SetBodyState(id, OdeBodyState(body)))
+        mSnapshotted[inId.mValue] = 1;
+        mSnapshottedList.push_back(inId);
+        if (mDamage.SetBodyState(inId, OdeBodyState(body)))
             ++mCurrent.mBodiesSnapshotted;
     }
-    return id;
 }
 
 void OdeAdapter::OnCollide(dGeomID inGeom1, dGeomID inGeom2, std::span<const dContactGeom> inContacts, double inFriction)
@@ -297,12 +300,12 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
     // intent: a pair with a body the adapter was not given (a game's crate on the ground) leaves before the
     // clock is read (when it is: OdeAdapterSettings::mMeasureCpuTime): the thread's CPU time is a system call
     // on some hosts (vDSO fallback, about a microsecond), and a scene's unregistered pairs can outnumber its
-    // registered ones a hundred to one
-    auto known = [this](dGeomID inGeom) {
-        const dBodyID body = dGeomGetBody(inGeom);
-        return body == nullptr || mBodies.contains(body);
-    };
-    if (inCount == 0 || !known(inGeom1) || !known(inGeom2))
+    // registered ones a hundred to one. Each geom's body is looked up once.
+    if (inCount == 0)
+        return;
+    const BodyId a = FindBodyOfGeom(inGeom1);
+    const BodyId b = FindBodyOfGeom(inGeom2);
+    if (!a.IsValid() || !b.IsValid())
         return;
     const double start = CpuSeconds();
     // intent: every return below passes through this, so the step's time has all of its calls
@@ -313,9 +316,9 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
         double& mSeconds;
         ~AddTime() { mSeconds += mAdapter.CpuSeconds() - mStart; }
     } add_time{*this, start, mCurrent.mSeconds};
-    const BodyId a = BodyOfGeom(inGeom1);
-    const BodyId b = BodyOfGeom(inGeom2);
-    if (!a.IsValid() || !b.IsValid() || a == b)
+    SnapshotOnce(inGeom1, a);
+    SnapshotOnce(inGeom2, b);
+    if (a == b)
         return;
     for (std::size_t i = 0; i < inCount; ++i)
     {

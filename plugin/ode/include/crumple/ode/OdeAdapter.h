@@ -137,7 +137,11 @@ private:
     }
     // The thread's CPU time where the settings ask for it, else 0 (no clock read).
     double CpuSeconds() const;
-    plugin::BodyId BodyOfGeom(dGeomID inGeom);
+    // The damage body of a geom, with no side effect: a registered body's, a registered static geom's, the
+    // environment for any other geom without a body; invalid for a body the adapter was not given.
+    plugin::BodyId FindBodyOfGeom(dGeomID inGeom) const;
+    // The pre-solve snapshot of a geom's registered body, once per step (only bodies in contact are taken).
+    void SnapshotOnce(dGeomID inGeom, plugin::BodyId inId);
 
     plugin::DamageWorld& mDamage;
     plugin::BodyId mEnvironment;
