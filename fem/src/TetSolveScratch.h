@@ -7,6 +7,9 @@
 #include "TetPassParallel.h"
 #include "TetPreconditioner.h"
 
+#include <crumple/base/Math.h>
+#include <crumple/fem/TetLinearization.h>
+
 #include <vector>
 
 namespace crumple::fem
@@ -25,6 +28,10 @@ struct TetSolveScratch
     std::vector<Vec3> mDeltaV;         ///< #N
     std::vector<Vec3> mPreconditioned; ///< #N
     std::vector<Mat3> mBlocks;         ///< #N diagonal blocks for block Jacobi
+    /// ContactEffectiveMass's linearisation where the solver holds none of its positions (sized on first need)
+    std::vector<TetLinearization> mContactLinearization; ///< #T
+    std::vector<Quat> mContactRotations;                 ///< #T
+    std::vector<Vec3> mContactForces;                    ///< #N
 
     /// Sizes every #N vector to inNodeCount (allocates only when the count grows past the capacity)
     void Resize(std::size_t inNodeCount)

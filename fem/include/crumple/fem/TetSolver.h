@@ -98,6 +98,23 @@ public:
     /// > 0, or a symplectic step that needs more sub-steps than TetSolverSettings::mMaxSubSteps. Changes
     /// nothing; lets a caller that steps several solvers (props::PropWorld) refuse a step before any moved.
     Status CheckStep(double inDeltaTime) const;
+    /// The mass a contact meets in one implicit Euler step of inDeltaTime (s) from the current state (kg): an
+    /// impulse J along inDirection (world, any length), shared among inNodes in proportion to inShares,
+    /// changes those nodes' share-weighted mean velocity along inDirection by J / m, with
+    ///   m = 1 / (w^T A^-1 w),  w_i = (share_i / sum of shares) d,  A = (1 + h alpha) M + (h^2 + h beta) K,
+    /// the implicit step's system (alpha, beta: the material's mass and stiffness damping; K linearised at the
+    /// current positions; anchored nodes held). It lies between the struck nodes' lumped mass (h -> 0) and
+    /// infinity (the anchors, h -> inf). It is what a rigid stand-in for the prop must weigh (a held prop body:
+    /// props::PropWorld::GetContactMass) for an engine's contact to take from the other body the momentum the
+    /// FEM's step then gives the struck nodes. For a symplectic solver it is the same implicit estimate (its
+    /// sub-steps carry a wave no farther than the implicit step's reach). +infinity when every share is on an
+    /// anchored node. Preconditioned conjugate gradient to 1e-8 (the factored system where the solver holds it
+    /// for this step length, else block Jacobi). Changes no state: later steps are bitwise the same.
+    /// Refused for a step length that is not finite and > 0, a direction that is not finite and nonzero,
+    /// nodes and shares of different sizes, a node out of range, a share that is not finite and >= 0, or
+    /// shares that do not sum to a finite value above 0.
+    Result<double> ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
+                                        const Vec3& inDirection, double inDeltaTime);
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):
     /// repeated linearisations K(x) dx = f_elastic(x) + f_ext solved by conjugate gradient, until the
