@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
 #include "BulletWallCrash.h"
+#include "HeldWall.h"
 #include "TurnedBlock.h"
 
 #include <crumple/bullet/BulletAdapter.h>
@@ -527,6 +528,74 @@ TEST_CASE("Bullet: a held prop body stays at its pose without gravity, and its p
     CHECK(adapter->GetConvexBody(free)->getLinearVelocity().z() < -1.0f);
     adapter.reset();
     CHECK(world.mWorld.getNumCollisionObjects() == objects);
+}
+
+namespace
+{
+
+// A ball touching a held wall (1 mm in) at height inY: the impulse it takes in one step of 1/120 s, and the
+// mass the damage world saw the wall with. inContactMass: SetHeldMass's argument (0: none given).
+double BallImpulseInOneStep(double inY, double inContactMass, double& outWallMassSeen)
+{
+    BulletWorld world;
+    world.mWorld.setGravity(btVector3(0, 0, 0));
+    std::unique_ptr<DamageWorld> damage = std::move(DamageWorld::Create().Get());
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
+    const BodyId wall = adapter->CreatePropBody(HeldWall()).Get();
+    ConvexBodySettings ball_settings = WallBall(inY);
+    ball_settings.mPosition.x() = -0.05 - 0.1 + 0.001;
+    const BodyId ball = adapter->CreateConvexBody(ball_settings).Get();
+    if (inContactMass > 0.0)
+        REQUIRE(adapter->SetHeldMass(wall, inContactMass));
+    world.mWorld.stepSimulation(btScalar(1.0 / 120.0), 1, btScalar(1.0 / 120.0));
+    outWallMassSeen = damage->GetBodyState(wall)->mMass;
+    return WallBallImpulse(static_cast<double>(adapter->GetConvexBody(ball)->getLinearVelocity().x()));
+}
+
+} // namespace
+
+TEST_CASE("Bullet: a held prop body given a contact mass meets a blow anywhere as a point mass of it", "[bullet][props]")
+{
+    constexpr double cContactMass = 10.0; // kg
+    double seen = 0.0;
+    // As made (50 kg, turning), a blow 1.5 m from the centre meets 1 / (1/m + r^2 / I_z) = 18.6 kg; impulses
+    // go as the reduced masses (the engine's push out of the 1 mm adds the same to every approach).
+    const double own_inertia_z = HeldWall().mPrincipalInertia.z();
+    const double off_centre_mass = 1.0 / (1.0 / 50.0 + 1.5 * 1.5 / own_inertia_z);
+    const double own_centre = BallImpulseInOneStep(0.0, 0.0, seen);
+    CHECK(seen == Approx(50.0).epsilon(1e-6));
+    const double own_off_centre = BallImpulseInOneStep(1.5, 0.0, seen);
+    CHECK(own_off_centre / own_centre == Approx(WallBallReducedMass(off_centre_mass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    // Given 10 kg: the same 10 kg at the centre and off it, in the engine and in the damage world.
+    const double given_centre = BallImpulseInOneStep(0.0, cContactMass, seen);
+    CHECK(seen == Approx(cContactMass).epsilon(1e-6));
+    const double given_off_centre = BallImpulseInOneStep(1.5, cContactMass, seen);
+    CHECK(seen == Approx(cContactMass).epsilon(1e-6));
+    CHECK(given_centre / own_centre == Approx(WallBallReducedMass(cContactMass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    CHECK(given_off_centre == Approx(given_centre).epsilon(1e-3));
+
+    // 0 gives the body its own mass and inertia back; bad masses and bodies that are not held are refused,
+    // changing nothing.
+    BulletWorld world;
+    std::unique_ptr<DamageWorld> damage = std::move(DamageWorld::Create().Get());
+    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
+    const BodyId wall = adapter->CreatePropBody(HeldWall()).Get();
+    btRigidBody& body = *adapter->GetConvexBody(wall);
+    const btVector3 own_inverse_inertia = body.getInvInertiaDiagLocal();
+    REQUIRE(adapter->SetHeldMass(wall, cContactMass));
+    CHECK(body.getInvMass() == Approx(1.0 / cContactMass).epsilon(1e-6));
+    CHECK(body.getInvInertiaDiagLocal().length() == 0.0f);
+    CHECK(body.getGravity().length() == 0.0f);
+    CHECK(adapter->SetHeldMass(wall, -1.0).GetError().mCode == EError::OutOfRange);
+    CHECK(adapter->SetHeldMass(wall, 2.0e12).GetError().mCode == EError::OutOfRange);
+    CHECK(adapter->SetHeldMass(wall, std::nan("")).GetError().mCode == EError::NonFinite);
+    const BodyId free_body = adapter->CreateConvexBody(WallBall(0.0)).Get();
+    CHECK(adapter->SetHeldMass(free_body, 1.0).GetError().mCode == EError::OutOfRange);
+    CHECK(adapter->SetHeldMass(BodyId{}, 1.0).GetError().mCode == EError::OutOfRange);
+    CHECK(body.getInvMass() == Approx(1.0 / cContactMass).epsilon(1e-6));
+    REQUIRE(adapter->SetHeldMass(wall, 0.0));
+    CHECK(body.getInvMass() == Approx(1.0 / 50.0).epsilon(1e-6));
+    CHECK(body.getInvInertiaDiagLocal() == own_inverse_inertia);
 }
 
 TEST_CASE("Bullet: a body state carries its collision shape's bounds, a plane's out to the state's range", "[bullet]")

@@ -174,6 +174,8 @@ Result<BodyId> BulletAdapter::CreatePropBody(const plugin::PropBodySettings& inS
     btRigidBody::btRigidBodyConstructionInfo info(btScalar(inSettings.mMass), owned.mMotion.get(), owned.mCompound.get(),
                                                   btVector3(btScalar(inertia.x()), btScalar(inertia.y()), btScalar(inertia.z())));
     owned.mRigidBody = std::make_unique<btRigidBody>(info);
+    owned.mOwnMass = info.m_mass;
+    owned.mOwnInertia = info.m_localInertia;
     if (owned.mHeld)
     {
         // intent: the ground holds it, not a contact with the ground (addRigidBody keeps its own gravity)
@@ -227,6 +229,25 @@ Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
     (void)mDamage.ForgetImpacts(owned->mBody); // its velocity is set here, not by the contact solve
     if (!inVelocity.isZero(0.0))
         owned->mRigidBody->activate(true);
+    return Status::Ok();
+}
+
+Status BulletAdapter::SetHeldMass(BodyId inBody, double inMass)
+{
+    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    if (owned == mOwned.end() || !owned->mHeld)
+        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+    if (Status valid = plugin::ValidateHeldMass(inMass); !valid)
+        return valid;
+    btRigidBody& body = *owned->mRigidBody;
+    // intent: a zero local inertia is Bullet's infinite one (zero inverse): the contact meets inMass at any
+    // point, as the FEM's effective mass was measured there
+    if (inMass > 0.0)
+        body.setMassProps(btScalar(inMass), btVector3(0, 0, 0));
+    else
+        body.setMassProps(owned->mOwnMass, owned->mOwnInertia);
+    body.updateInertiaTensor();
+    body.setGravity(btVector3(0, 0, 0)); // setMassProps scales the body's gravity by its mass: a held body has none
     return Status::Ok();
 }
 

@@ -53,4 +53,8 @@ CRUMPLE_API Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPi
 /// Checks a held body's velocity (SetHeldVelocity): finite, at most cMaxBodySpeed (m/s).
 CRUMPLE_API Status ValidateHeldVelocity(const Vec3& inVelocity);
 
+/// Checks a held body's contact mass (SetHeldMass): 0 (the body's own mass and inertia) or in
+/// [1e-12, cMaxBodyMass] kg.
+CRUMPLE_API Status ValidateHeldMass(double inMass);
+
 } // namespace crumple::plugin

@@ -129,6 +129,14 @@ public:
     /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a velocity that is
     /// not finite or beyond plugin::cMaxBodySpeed.
     Status SetHeldVelocity(plugin::BodyId inBody, const Vec3& inVelocity);
+    /// Sets the mass (kg) a held prop body meets the next steps' contacts with, as a point mass that does not
+    /// turn (zero inverse inertia): the prop's effective mass at the material the car strikes
+    /// (props::PropWorld::GetContactMass), so that the engine takes from the car what the prop's FEM then
+    /// gives the struck members; 0: the body's own mass and inertia again (as made: the whole prop, turning
+    /// about its centre of mass). Crumple's impulses see the same mass (the pre-solve snapshot reads it).
+    /// Refused, changing nothing, for a body that is not a held prop body of this adapter or a mass that is
+    /// not 0 or in [1e-12, plugin::cMaxBodyMass].
+    Status SetHeldMass(plugin::BodyId inBody, double inMass);
     /// True for a held prop body this adapter made (CreatePropBody with mHeld): what SetHeldVelocity takes,
     /// and props::HeldPropEngine::mIsHeld asks.
     bool IsHeldPropBody(plugin::BodyId inBody) const;
@@ -177,6 +185,8 @@ private:
         bool mHeld = false;
         btTransform mHome; ///< A held body's pose
         btVector3 mHeldVelocity{0, 0, 0}; ///< A held body's velocity at its pose (SetHeldVelocity)
+        btScalar mOwnMass = 0;            ///< As made (SetHeldMass 0 restores it)
+        btVector3 mOwnInertia{0, 0, 0};
     };
     std::vector<OwnedBody> mOwned; ///< Bodies CreateConvexBody and CreatePropBody made, in creation order
     /// Adds a body made here to both worlds and keeps it; on refusal takes it out again
