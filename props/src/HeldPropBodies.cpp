@@ -32,27 +32,41 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
     };
     const auto prop_count = static_cast<std::size_t>(mProps->GetPropCount());
     mGivenVelocity.resize(prop_count, Vec3::Zero());
+    mGivenMass.resize(prop_count, 0.0);
     const bool new_props = mPropsSeen < prop_count;
 
-    // 1. The struck members' velocity. After a step in which props moved, to every held body (the adapter
-    // also forgets the body's remembered impact: its velocity is set here, not by the contact solve); while
-    // all sleep, only where it changed (a prop that fell asleep gives zero once), so a scene at rest makes no
-    // engine call.
-    if (mEngine.mSetHeldVelocity)
-        for (std::size_t index = 0; index < prop_count; ++index)
+    // 1. The struck members' velocity and mass. The velocity after a step in which props moved, to every held
+    // body (the adapter also forgets the body's remembered impact: its velocity is set here, not by the
+    // contact solve); while all sleep, only where it changed (a prop that fell asleep gives zero once), so a
+    // scene at rest makes no engine call. The mass only where it changed.
+    for (std::size_t index = 0; index < prop_count; ++index)
+    {
+        if (!mEngine.mSetHeldVelocity && !mEngine.mSetHeldMass)
+            break;
+        const PropId prop{static_cast<std::uint32_t>(index)};
+        const Vec3 velocity = mProps->GetContactVelocity(prop);
+        const double mass = mProps->GetContactMass(prop);
+        const bool give_velocity = mEngine.mSetHeldVelocity && (inStepped.mStepped > 0 || velocity != mGivenVelocity[index]);
+        const bool give_mass = mEngine.mSetHeldMass && mass != mGivenMass[index];
+        if (!give_velocity && !give_mass)
+            continue;
+        if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
+            continue; // its body left the world
+        if (mEngine.mIsHeld && !mEngine.mIsHeld(mProps->GetBody(prop)))
+            continue; // a free or static prop body: the engine moves it
+        if (give_mass)
         {
-            const PropId prop{static_cast<std::uint32_t>(index)};
-            const Vec3 velocity = mProps->GetContactVelocity(prop);
-            if (inStepped.mStepped == 0 && velocity == mGivenVelocity[index])
-                continue;
-            if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
-                continue; // its body left the world
-            if (mEngine.mIsHeld && !mEngine.mIsHeld(mProps->GetBody(prop)))
-                continue; // a free or static prop body: the engine moves it
+            if (keep(mEngine.mSetHeldMass(mProps->GetBody(prop), mass)))
+                mGivenMass[index] = mass;
+            ++outUpdate.mMassesGiven;
+        }
+        if (give_velocity)
+        {
             if (keep(mEngine.mSetHeldVelocity(mProps->GetBody(prop), velocity)))
                 mGivenVelocity[index] = velocity;
             ++outUpdate.mVelocitiesGiven;
         }
+    }
     const bool pending = std::find(mShapePending.begin(), mShapePending.end(), std::uint8_t{1}) != mShapePending.end();
     mShapePending.resize(prop_count, 0);
     if (inStepped.mStepped == 0 && !new_props && !pending)

@@ -262,6 +262,7 @@ bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
     prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
+    prop.mSteppedMass = UpdateContactMass(prop, ioFlight.mDeltaTime);
     return !sleeping;
 }
 
@@ -273,7 +274,10 @@ Result<PropStepReport> PropWorld::LandStep()
     InFlight& flight = *mInFlight;
     flight.mActive = false;
     for (std::size_t index = 0; index < flight.mOnTask.size(); ++index)
+    {
         mProps[index].mContactVelocity = mProps[index].mSteppedVelocity;
+        mProps[index].mContactMass = mProps[index].mSteppedMass;
+    }
     mTally.mCollisions += flight.mTally.mCollisions;
     if (mTally.mRefused == 0 && flight.mTally.mRefused > 0)
         mTally.mFirstRefusal = flight.mTally.mFirstRefusal;
@@ -524,6 +528,35 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     // sideways or up with a timber flung so, it would carry the car with it.
     const Vec3 direction = impulse.normalized();
     return *inBodyRotation * (direction.dot(sum / weight) * direction);
+}
+
+double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
+{
+    fem::TetSolver* cpu = ioProp.mProp.GetCpuSolver();
+    if (cpu == nullptr || ioProp.mStruck.empty())
+        return 0.0;
+    // intent: the nodes, shares and direction UpdateContactVelocity weighs (body frame: the solver's), less the
+    // anchored ones: a touch at a footing alone (a piece lying against it) would weigh the whole held body
+    // as the ground, and the next contact with it, the car's, would meet a wall
+    std::vector<int> nodes;
+    std::vector<double> shares;
+    Vec3 impulse = Vec3::Zero();
+    const std::vector<double>& inverse_masses = cpu->GetInverseMasses();
+    for (const NodalImpulse& hit : ioProp.mStruck)
+    {
+        const auto node = static_cast<std::size_t>(hit.mNode);
+        if ((node < ioProp.mTaken.size() && ioProp.mTaken[node] != 0) || inverse_masses[node] == 0.0)
+            continue;
+        nodes.push_back(hit.mNode);
+        shares.push_back(hit.mImpulse.norm());
+        impulse += hit.mImpulse;
+    }
+    if (nodes.empty() || !(impulse.norm() > 0.0))
+        return 0.0;
+    Result<double> mass = cpu->ContactEffectiveMass(nodes, shares, impulse, inDeltaTime);
+    if (!mass)
+        return 0.0; // cannot happen for struck nodes of the prop and a step it took; the held body keeps its own
+    return std::min(mass.Get(), plugin::cMaxBodyMass);
 }
 
 void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::ObjectDent>)

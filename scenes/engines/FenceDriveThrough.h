@@ -29,6 +29,8 @@ struct FenceDriveSettings
     double mSpeed = 64.0 / 3.6;    ///< The car's speed (m/s)
     bool mBreakable = true;        ///< false: the same wood that cannot crack
     bool mMatchVelocity = true;    ///< The held body moves with the struck planks (false: put back at rest)
+    bool mMatchMass = false;       ///< The held body weighs what the struck planks weigh over a step
+                                   ///< (SetHeldMass; false: the whole fence's mass and inertia)
     bool mFence = true;            ///< false: no fence (the drive alone, the baseline of a cost)
     double mDuration = 0.6;        ///< Simulated time (s)
     fem::TetSolverSettings mSolver = props::HeldPropSolverSettings(); ///< The fence FEM's solver
@@ -113,9 +115,12 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             return scene.GetAdapter().SetPropPieces(inBody, inPieces);
         },
         .mSetHeldVelocity = nullptr,
+        .mSetHeldMass = nullptr,
         .mIsHeld = [&](plugin::BodyId inBody) { return scene.GetAdapter().IsHeldPropBody(inBody); }};
     if (inSettings.mMatchVelocity)
         engine.mSetHeldVelocity = [&](plugin::BodyId inBody, const Vec3& inVelocity) { return scene.GetAdapter().SetHeldVelocity(inBody, inVelocity); };
+    if (inSettings.mMatchMass)
+        engine.mSetHeldMass = [&](plugin::BodyId inBody, double inMass) { return scene.GetAdapter().SetHeldMass(inBody, inMass); };
     Result<props::HeldPropBodies> held = props::HeldPropBodies::Create(
         props, std::move(engine), {.mShapeCellSize = cShapeSize, .mShapeTolerance = cShapeTolerance, .mMinPieceMass = cMinBodyMass});
     if (!held)

@@ -175,6 +175,9 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
                      .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
                                .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
                                .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                               // the whole fence's mass: a contact mass (SetHeldMass) follows how many points each
+                               // engine reports, and the engines part (README, known limits)
+                               .mSetHeldMass = nullptr,
                                .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
         cFrame / 4.0, s.mSettings.mPropsOffThread);
     if (!fence)

@@ -210,6 +210,9 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
                      .mHeld = {.mCreatePieceBody = [&bodies, &s](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); },
                                .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
                                .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                               // the whole fence's mass: a contact mass (SetHeldMass) follows how many points each
+                               // engine reports, and the engines part (README, known limits)
+                               .mSetHeldMass = nullptr,
                                .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
         cStep, s.mSettings.mPropsOffThread);
     if (!fence)

@@ -28,6 +28,7 @@ struct CountingEngine
     std::vector<std::vector<std::vector<Vec3>>> mShapes;
     std::vector<Vec3> mVelocities;
     std::vector<BodyId> mVelocityBodies; // the body of each velocity given
+    std::vector<double> mMasses;         // each contact mass given
     bool mRefuseBodies = false;
     bool mRefuseShapes = false;
 
@@ -53,9 +54,14 @@ struct CountingEngine
                         mVelocityBodies.push_back(inBody);
                         return Status::Ok();
                     },
+                .mSetHeldMass =
+                    [this](BodyId, double inMass) {
+                        mMasses.push_back(inMass);
+                        return Status::Ok();
+                    },
                 .mIsHeld = nullptr};
     }
-    std::size_t CallCount() const { return mBodies.size() + mShapes.size() + mVelocities.size(); }
+    std::size_t CallCount() const { return mBodies.size() + mShapes.size() + mVelocities.size() + mMasses.size(); }
 };
 
 // One hard hit of the car at (y, z) of the panel, dispatched at once.
@@ -89,6 +95,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
 
     // Hard hits until pieces leave; after every step the engine learns what the FEM did.
     int pieces = 0;
+    int masses_seen = 0;
     for (int hit = 0; hit < 12 && pieces == 0; ++hit)
     {
         Hit(fixture, hit);
@@ -102,6 +109,13 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
             {
                 REQUIRE(update.mVelocitiesGiven == 1);
                 CHECK(engine.mVelocities.back() == props->GetContactVelocity(wall));
+                // ... and weighs what they weigh over a step (none once the struck nodes left with a piece),
+                // given when it changed
+                CHECK((props->GetContactMass(wall) > 0.0) == !props->GetContactVelocity(wall).isZero(0.0));
+                if (!engine.mMasses.empty())
+                    CHECK(engine.mMasses.back() == props->GetContactMass(wall));
+                CHECK(update.mMassesGiven <= 1);
+                masses_seen += props->GetContactMass(wall) > 0.0 ? 1 : 0;
             }
             const FemProp& prop = *props->GetProp(wall);
             for (const HeldPiece& piece : update.mPieces)
@@ -123,6 +137,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
         }
     }
     REQUIRE(pieces > 0); // the hits knocked pieces out: the checks above ran
+    REQUIRE(masses_seen > 0);
     // The engine's shape is the prop's without the pieces that left (its points follow to the tolerance).
     CHECK(engine.mShapes.back().size() == props->GetCollisionPieces(wall, 0.5).Get().size());
 
@@ -136,6 +151,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
     }
     REQUIRE(asleep);
     CHECK(engine.mVelocities.back() == Vec3::Zero());
+    CHECK(engine.mMasses.back() == 0.0); // its own mass again
     const std::size_t calls = engine.CallCount();
     for (int step = 0; step < 100; ++step)
     {
@@ -143,7 +159,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
         REQUIRE(stepped.mSleeping == 1);
         REQUIRE(held.Update(stepped, update).IsValid());
         CHECK(update.mPieces.empty());
-        CHECK(update.mShapesGiven + update.mVelocitiesGiven == 0);
+        CHECK(update.mShapesGiven + update.mVelocitiesGiven + update.mMassesGiven == 0);
     }
     CHECK(engine.CallCount() == calls);
 }

@@ -217,6 +217,19 @@ public:
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactVelocity : Vec3::Zero();
     }
+    /// The mass the struck material meets a contact with over the next step (kg): the prop's FEM's effective
+    /// mass (fem::TetSolver::ContactEffectiveMass) at the nodes GetContactVelocity follows, weighted as it
+    /// weighs them, along the direction they were struck, at the state after the last landed step and for
+    /// that step's length; at most plugin::cMaxBodyMass (material held by its anchors alone). 0 where
+    /// GetContactVelocity is zero for want of struck nodes (nothing struck the prop yet, it sleeps), for a GPU
+    /// prop (its solver has no implicit system to weigh), or for an unknown prop. A held prop body stands for
+    /// the whole prop: give this to the adapter's SetHeldMass after each Step, with the velocity, so that the
+    /// engine's next contact takes from the car what the FEM's step will give the struck members. A rail
+    /// half-way between posts weighs a fraction of the fence; one beside a post, many times the fence.
+    double GetContactMass(PropId inProp) const
+    {
+        return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactMass : 0.0;
+    }
     /// Collisions that reached a prop so far, and those a prop refused (cannot happen for collisions the
     /// world validated; kept for diagnosis with the first refusal's reason)
     /// (mStepOffThread: counted when they reach the props, on the step's task, and published by LandStep)
@@ -270,6 +283,8 @@ private:
         std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
         Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
+        double mContactMass = 0.0;            ///< GetContactMass (kg; 0: none)
+        double mSteppedMass = 0.0;            ///< The step's, until LandStep publishes it
         double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
         double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
         HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
@@ -331,6 +346,9 @@ private:
     // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
     // body's rotation, zero without one); moves new hits to mStruck.
     static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
+    // GetContactMass's figure after a step of inDeltaTime (s), from the struck nodes UpdateContactVelocity kept
+    // (0 where there are none, or for a GPU prop).
+    static double UpdateContactMass(Prop& ioProp, double inDeltaTime);
     // The fragments of inFragments (inProp's) that TakeLooseFragments hands over, ascending.
     static std::vector<std::size_t> LeavingFragments(const Prop& inProp, const std::vector<fem::TetFragment>& inFragments);
     // TakeChangedShape's test: pieces were taken since the last shape, or a node moved more than inTolerance.
