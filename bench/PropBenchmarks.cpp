@@ -117,6 +117,42 @@ void RunFenceSpread(const char* inEngine, double inContactSpread, BenchTable& io
                  (*high - *low) / std::max(Median(losses), 1e-9), "rel_spread_of_car_loss", extra});
 }
 
+// The 64 km/h drive-through with the held body at the whole fence's mass (as the samples run it) and at the
+// struck planks' contact mass (HeldPropEngine::mSetHeldMass), alternated: what the opt-in does to the car in
+// this engine (the README compares the engines). Error: the engine's change of the car's momentum against
+// Crumple's impulses on it, with the contact mass.
+template <class Scene>
+void RunFenceContactMass(const char* inEngine, BenchTable& ioTable)
+{
+    common::FenceDriveSettings whole;
+    common::FenceDriveSettings matched = whole;
+    matched.mMatchMass = true;
+    std::vector<double> whole_ms, matched_ms;
+    common::FenceRun whole_run, matched_run;
+    for (int rep = 0; rep < 2; ++rep)
+        for (const bool match : {false, true})
+        {
+            const Result<common::FenceRun> run = common::DriveThroughFence<Scene>(match ? matched : whole);
+            if (!run)
+            {
+                std::printf("fence_contact_mass/%s: %s\n", inEngine, run.GetError().mMessage.c_str());
+                return;
+            }
+            (match ? matched_ms : whole_ms).push_back(run.Get().mStepCpuMs / run.Get().mSteps);
+            (match ? matched_run : whole_run) = run.Get();
+        }
+    const double engine_change = 1200.0 * (matched_run.mSpeedAfter - matched_run.mSpeedBefore);
+    ioTable.Add({"fence_contact_mass", std::string(inEngine) + "/wood_fence/64kmh", Median(matched_ms),
+                 matched_run.mCarImpulse != 0.0 ? engine_change / matched_run.mCarImpulse - 1.0 : 0.0, "rel_engine_vs_crumple_car_impulse",
+                 "cpu_ms_per_step=" + FormatExtra(Median(matched_ms)) + ";whole_mass_cpu_ms_per_step=" + FormatExtra(Median(whole_ms)) +
+                     ";car_loss_m_s=" + FormatExtra(matched_run.mSpeedBefore - matched_run.mSpeedAfter) +
+                     ";whole_mass_car_loss_m_s=" + FormatExtra(whole_run.mSpeedBefore - whole_run.mSpeedAfter) +
+                     ";links_broken=" + std::to_string(matched_run.mBrokenLinks) +
+                     ";whole_mass_links_broken=" + std::to_string(whole_run.mBrokenLinks) +
+                     ";fence_impulse_n_s=" + FormatExtra(matched_run.mFenceImpulse) +
+                     ";whole_mass_fence_impulse_n_s=" + FormatExtra(whole_run.mFenceImpulse)});
+}
+
 } // namespace
 #endif
 
@@ -125,14 +161,20 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_BULLET)
     RunFenceBreak<common::BulletWallCrash>("bullet", ioTable, inOptions);
     if (!inOptions.mQuick)
+    {
         for (double spread : {0.0, 0.1})
             RunFenceSpread<common::BulletWallCrash>("bullet", spread, ioTable);
+        RunFenceContactMass<common::BulletWallCrash>("bullet", ioTable);
+    }
 #endif
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_ODE)
     RunFenceBreak<common::OdeWallCrash>("ode", ioTable, inOptions);
     if (!inOptions.mQuick)
+    {
         for (double spread : {0.0, 0.1})
             RunFenceSpread<common::OdeWallCrash>("ode", spread, ioTable);
+        RunFenceContactMass<common::OdeWallCrash>("ode", ioTable);
+    }
 #endif
     (void)ioTable;
     (void)inOptions;

@@ -50,7 +50,7 @@ Status CheckContact(std::span<const int> inNodes, std::span<const double> inShar
 
 } // namespace
 
-Result<double> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
+Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
                                                const Vec3& inDirection, double inDeltaTime)
 {
     if (Status valid = CheckTimeStep(inDeltaTime, "TetSolver::ContactEffectiveMass"); !valid)
@@ -77,7 +77,7 @@ Result<double> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std
         any_free = any_free || inShares[i] > 0.0;
     }
     if (!any_free)
-        return std::numeric_limits<double>::infinity();
+        return TetContactMass{std::numeric_limits<double>::infinity(), 0, true};
 
     // The step's system at the current positions: the last implicit step's linearisation where it is of these
     // positions (then its frames too), else one made here, in the scratch, from the current frames (the
@@ -110,13 +110,14 @@ Result<double> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std
                                           : Vec3::Zero();
     };
 
-    // The factored system where the solver holds it for this step length and connectivity (set to the current
-    // frames, as the step sets it before each solve), else block Jacobi built here.
-    TetFactoredPreconditioner& factor = scratch.mFactor;
-    const bool factored = mSettings.mPreconditioner == EImplicitPreconditioner::RestFactorization &&
-                          factor.IsFactored() && factor.Matches(mElementNodes, mFree, mass_scale, stiffness_scale);
+    // The factored system of this step length and connectivity, set to the current frames as the step sets it
+    // before each solve: the one the solver holds, or, after a crack or a change of anchors, the one its next
+    // step would build (the same bits: a function of the mesh, the anchors and the step), built here. Block
+    // Jacobi where the settings ask for it or the system cannot be factored.
+    TetFactoredPreconditioner* const factor = FactoredRestSystem(input, mass_scale, stiffness_scale);
+    const bool factored = factor != nullptr;
     if (factored)
-        factor.SetNodeRotations(mElementNodes, *rotations, material.mModel == EElasticModel::CorotatedLinear);
+        factor->SetNodeRotations(mElementNodes, *rotations, material.mModel == EElasticModel::CorotatedLinear);
     else
     {
         TetStiffnessDiagonal(input, *linearization, scratch.mBlocks);
@@ -128,13 +129,13 @@ Result<double> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std
     const LinearOperator3 preconditioner = [&](std::span<const Vec3> inR, std::span<Vec3> outZ)
     {
         if (factored)
-            factor.Apply(inR, outZ);
+            factor->Apply(inR, outZ);
         else
             scratch.mJacobi.Apply(inR, outZ);
     };
     std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
-    (void)ConjugateGradient(system, preconditioner, scratch.mResidual, cComplianceTolerance, mSettings.mCgMaxIterations,
-                            scratch.mDeltaV, scratch.mCg);
+    const ConjugateGradientResult cg = ConjugateGradient(system, preconditioner, scratch.mResidual, cComplianceTolerance,
+                                                         mSettings.mCgMaxIterations, scratch.mDeltaV, scratch.mCg);
     mElementWork += products * mActiveElementCount;
 
     // intent: the load's own weights read the response back: w^T d . A^-1 (w d) (s/kg), symmetric in the
@@ -145,7 +146,7 @@ Result<double> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std
     if (!(compliance > 0.0) || !std::isfinite(compliance))
         return MakeError(EError::NonFinite, "TetSolver::ContactEffectiveMass: the step's system gave no finite "
                                             "positive compliance at these nodes");
-    return 1.0 / compliance;
+    return TetContactMass{1.0 / compliance, cg.mIterations, cg.mConverged};
 }
 
 } // namespace crumple::fem

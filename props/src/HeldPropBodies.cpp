@@ -12,6 +12,9 @@ Result<HeldPropBodies> HeldPropBodies::Create(PropWorld& ioProps, HeldPropEngine
 {
     if (!inEngine.mCreatePieceBody || !inEngine.mSetPropPieces)
         return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: the engine's mCreatePieceBody and mSetPropPieces are required");
+    if (inEngine.mSetHeldMass && !ioProps.GetSettings().mContactMass)
+        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mSetHeldMass needs the prop world's contact masses "
+                                                  "(PropWorldSettings::mContactMass)");
     if (!std::isfinite(inSettings.mShapeCellSize) || !(inSettings.mShapeCellSize > 0.0))
         return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mShapeCellSize must be finite and > 0 m");
     if (!std::isfinite(inSettings.mShapeTolerance) || !(inSettings.mShapeTolerance >= 0.0))

@@ -262,7 +262,7 @@ bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
     prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
-    prop.mSteppedMass = UpdateContactMass(prop, ioFlight.mDeltaTime);
+    prop.mSteppedMass = mSettings.mContactMass ? UpdateContactMass(prop, ioFlight.mDeltaTime) : 0.0;
     return !sleeping;
 }
 
@@ -553,10 +553,12 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     }
     if (nodes.empty() || !(impulse.norm() > 0.0))
         return 0.0;
-    Result<double> mass = cpu->ContactEffectiveMass(nodes, shares, impulse, inDeltaTime);
-    if (!mass)
-        return 0.0; // cannot happen for struck nodes of the prop and a step it took; the held body keeps its own
-    return std::min(mass.Get(), plugin::cMaxBodyMass);
+    // intent: refused cannot happen for struck nodes of the prop and a step it took; unconverged (block Jacobi
+    // on a large prop) is no figure to weigh an engine body with: the held body keeps its own mass
+    const Result<fem::TetContactMass> mass = cpu->ContactEffectiveMass(nodes, shares, impulse, inDeltaTime);
+    if (!mass || !mass.Get().mConverged)
+        return 0.0;
+    return std::min(mass.Get().mMass, plugin::cMaxBodyMass);
 }
 
 void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::ObjectDent>)

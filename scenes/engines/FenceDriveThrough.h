@@ -99,7 +99,7 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     settings.mGap = 0.3;
     settings.mTriangles = 2000;
     Scene scene(settings);
-    Result<std::unique_ptr<props::PropWorld>> props_made = props::PropWorld::Create(scene.GetDamage());
+    Result<std::unique_ptr<props::PropWorld>> props_made = props::PropWorld::Create(scene.GetDamage(), {.mContactMass = inSettings.mMatchMass});
     if (!props_made)
         return props_made.GetError();
     props::PropWorld& props = *props_made.Get();

@@ -81,7 +81,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
           "[props]")
 {
     common::WorldFixture fixture;
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = 0.5, .mShapeTolerance = 0.005, .mMinPieceMass = 0.0}).Get();
@@ -169,7 +169,7 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engi
           "[props]")
 {
     common::WorldFixture fixture;
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
 
@@ -185,6 +185,15 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engi
     CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mShapeTolerance = -0.01}).IsValid());
     CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mMinPieceMass = -1.0}).IsValid());
     CHECK_FALSE(HeldPropBodies::Create(*props, engine.Calls(), {.mMinPieceMass = std::numeric_limits<double>::infinity()}).IsValid());
+    // A contact mass needs a world that works it out.
+    {
+        common::WorldFixture other;
+        std::unique_ptr<PropWorld> plain = PropWorld::Create(other.mWorld).Get();
+        CHECK(HeldPropBodies::Create(*plain, engine.Calls()).GetError().mCode == EError::InvalidArgument);
+        HeldPropEngine no_mass = engine.Calls();
+        no_mass.mSetHeldMass = nullptr;
+        CHECK(HeldPropBodies::Create(*plain, no_mass).IsValid());
+    }
     CHECK(engine.CallCount() == 0u);
 
     // Without SetHeldVelocity the held body is put back at rest: no velocity is ever given.
@@ -226,7 +235,7 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engi
 TEST_CASE("HeldPropBodies gives a shape the engine refused again at the next update, even at rest", "[props]")
 {
     common::WorldFixture fixture;
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     CountingEngine engine;
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls()).Get();
@@ -252,7 +261,7 @@ TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), an
 {
     // The wall's prop is held; a second prop on the floor body stands for a free crate the engine moves.
     common::WorldFixture fixture;
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     const PropId crate = props->AddProp(fixture.mFloor, test::WeakPanel()).Get();
     CountingEngine engine;

@@ -29,6 +29,14 @@ namespace crumple::fem
 struct TetElementPassInput; // private to the solvers (src/TetElementPass.h)
 class TetFactoredPreconditioner; // private to the solver (src/TetFactoredPreconditioner.h)
 
+/// What TetSolver::ContactEffectiveMass found.
+struct CRUMPLE_API TetContactMass
+{
+    double mMass = 0.0;      ///< kg; +infinity when every share is on an anchored node
+    int mIterations = 0;     ///< Conjugate-gradient iterations
+    bool mConverged = false; ///< The solve reached its tolerance (else mMass is its last estimate)
+};
+
 /// A tetrahedral finite-element body (destructible prop): linear tetrahedra, lumped masses, the elasticity
 /// model of its FemMaterial, symplectic or implicit Euler. Node and element order are the mesh's; every loop
 /// is serial in that order, so two solvers given the same inputs produce bitwise the same states.
@@ -108,13 +116,17 @@ public:
     /// props::PropWorld::GetContactMass) for an engine's contact to take from the other body the momentum the
     /// FEM's step then gives the struck nodes. For a symplectic solver it is the same implicit estimate (its
     /// sub-steps carry a wave no farther than the implicit step's reach). +infinity when every share is on an
-    /// anchored node. Preconditioned conjugate gradient to 1e-8 (the factored system where the solver holds it
-    /// for this step length, else block Jacobi). Changes no state: later steps are bitwise the same.
+    /// anchored node. Preconditioned conjugate gradient to 1e-8 in at most TetSolverSettings::mCgMaxIterations:
+    /// with EImplicitPreconditioner::RestFactorization (the default) preconditioned by the factored rest
+    /// system of this step length (a few iterations; factored here when the solver holds none for it, as after a
+    /// crack: the one its next step of that length would build and then reuses), with BlockJacobi by block
+    /// Jacobi (a hundred times slower; it may stop short: TetContactMass::mConverged). Changes no state: later
+    /// steps are bitwise the same.
     /// Refused for a step length that is not finite and > 0, a direction that is not finite and nonzero,
     /// nodes and shares of different sizes, a node out of range, a share that is not finite and >= 0, or
     /// shares that do not sum to a finite value above 0.
-    Result<double> ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
-                                        const Vec3& inDirection, double inDeltaTime);
+    Result<TetContactMass> ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
+                                                const Vec3& inDirection, double inDeltaTime);
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):
     /// repeated linearisations K(x) dx = f_elastic(x) + f_ext solved by conjugate gradient, until the

@@ -30,12 +30,11 @@ struct CRUMPLE_API HeldPropEngine
     std::function<Status(plugin::BodyId, const Vec3&)> mSetHeldVelocity;
     /// SetHeldMass: the mass the struck members meet a contact with (kg; 0: the body's own). Empty: held bodies
     /// meet every contact with the whole prop's mass and inertia, whatever they strike (a rail half-way between
-    /// its posts weighs about half the fence over a step, one beside a post many times it). Opt-in, and not
-    /// bound by the samples: the FEM's effective mass is exact for the nodes a contact's impulse lands on, but
-    /// how many those are follows how many points the engine reports (measured on the 64 km/h fence
-    /// drive-through: Bullet's hull pieces touch at 1-4 points and weigh 7 kg, ODE's boxes at 16 and weigh
-    /// 35-48 kg), so the two engines' cars lose 1.4 and 3.1 m/s instead of agreeing within 4 % as they do
-    /// without it (README, known limits).
+    /// its posts weighs about half the fence over a step, one beside a post many times it). Opt-in and
+    /// experimental, not bound by the samples: the FEM's effective mass is exact for the nodes a contact's
+    /// impulse lands on, but one held body has one mass for all its contacts, and how many nodes a contact
+    /// reaches follows how many points the engine reports (README, known limits: on the 64 km/h fence
+    /// drive-through Bullet's car loses 1.96 m/s instead of 2.36, ODE's 12.1 instead of 2.29).
     std::function<Status(plugin::BodyId, double)> mSetHeldMass;
     /// BulletAdapter / OdeAdapter::IsHeldPropBody: which props' bodies are held. Empty: every prop's. A prop
     /// whose body is not held (a free crate, a static sign) gets no held velocity; its pieces and its shape
@@ -84,7 +83,8 @@ class CRUMPLE_API HeldPropBodies
 {
 public:
     /// Keeps ioProps' held bodies (ioProps must outlive the object). Refused for a missing required engine
-    /// call, or a setting that is not finite or out of its range.
+    /// call, mSetHeldMass on a world that does not work out contact masses (PropWorldSettings::mContactMass),
+    /// or a setting that is not finite or out of its range.
     static Result<HeldPropBodies> Create(PropWorld& ioProps, HeldPropEngine inEngine, const HeldPropSettings& inSettings = {});
 
     /// After each PropWorld::Step (inStepped is its report; once per step: pieces and shapes are looked at

@@ -69,6 +69,12 @@ struct CRUMPLE_API PropWorldSettings
     /// props on the task, their element passes on it alone (a task does not call back into the job system).
     /// The task also works out the hand-over that follows its step (PropHandOverStats).
     bool mStepOffThread = false;
+    /// Work out GetContactMass after each step (with the step, on its task off the thread): one linear solve
+    /// per awake CPU prop that something struck, with its factored implicit system where it holds one (1.3 ms
+    /// on the racing fence's 4,000 tetrahedra, 6.5 ms on the drive-through fence's 16,000; crumple-bench
+    /// contact_mass), else block Jacobi (a hundred times that). Off: GetContactMass is 0 and costs nothing.
+    /// HeldPropBodies needs it on to give SetHeldMass.
+    bool mContactMass = false;
 };
 
 /// A piece of a prop that broke loose, handed to the game as a rigid body (PropWorld::TakeLooseFragments).
@@ -220,9 +226,10 @@ public:
     /// The mass the struck material meets a contact with over the next step (kg): the prop's FEM's effective
     /// mass (fem::TetSolver::ContactEffectiveMass) at the nodes GetContactVelocity follows, weighted as it
     /// weighs them, along the direction they were struck, at the state after the last landed step and for
-    /// that step's length; at most plugin::cMaxBodyMass (material held by its anchors alone). 0 where
-    /// GetContactVelocity is zero for want of struck nodes (nothing struck the prop yet, it sleeps), for a GPU
-    /// prop (its solver has no implicit system to weigh), or for an unknown prop. A held prop body stands for
+    /// that step's length. 0 while PropWorldSettings::mContactMass is off, where GetContactVelocity is zero for
+    /// want of struck nodes (nothing struck the prop yet, it sleeps, the struck nodes left with a piece or are
+    /// anchored), for a GPU prop (its solver has no implicit system to weigh), where the solve did not converge,
+    /// or for an unknown prop. A held prop body stands for
     /// the whole prop: give this to the adapter's SetHeldMass after each Step, with the velocity, so that the
     /// engine's next contact takes from the car what the FEM's step will give the struck members. A rail
     /// half-way between posts weighs a fraction of the fence; one beside a post, many times the fence.
