@@ -17,7 +17,8 @@ int main(int argc, char** argv)
     const std::pair<const char*, Group> groups[] = {
         {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
         {"frame_budget", RunFrameBudgetBenchmarks},
-        {"fem", RunFemBenchmarks}, {"fem_refresh", RunFemRefreshBenchmarks}, {"contact_mass", RunContactMassBenchmarks}, {"fem_vs_bullet", RunFemVsBulletBenchmarks},
+        {"fem", RunFemBenchmarks}, {"fem_refresh", RunFemRefreshBenchmarks}, {"contact_mass", RunContactMassBenchmarks},
+        {"fem_vs_bullet", RunFemVsBulletBenchmarks},
         {"barrier", RunBarrierBenchmarks}, {"props", RunPropBenchmarks}, {"crush", RunCrushBenchmarks},
         {"gpu", RunGpuBenchmarks}};
     BenchOptions options;
