@@ -46,9 +46,9 @@ void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// step and conjugate-gradient iterations of each, error: the largest distance of a node from a solve
 /// converged to round-off, over the largest displacement. Empty without crumple::fem.
 void RunFemRefreshBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
-/// The mass a held prop body stands in with (TetSolver::ContactEffectiveMass) at a fence's struck rail, factored
-/// and block Jacobi alternated, in thread CPU and wall time; error: against the mass one converged implicit
-/// step shows a small impulse.
+/// The mass a held prop body stands in with (TetSolver::ContactEffectiveMass) at a fence's struck rail,
+/// factored and block Jacobi alternated, in thread CPU and wall time; error: against the mass one converged
+/// implicit step shows a small impulse.
 void RunContactMassBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// Crumple's implicit FEM against Bullet's implicit deformable solver on the identical cantilever, 1k, 10k

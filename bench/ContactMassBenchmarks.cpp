@@ -101,7 +101,8 @@ void ContactMassCase(BenchTable& ioTable, const FenceCase& inCase, int inRepetit
     (void)probe.Step(cStep);
     double velocity = 0.0;
     for (int node : nodes)
-        velocity += probe.GetVelocities()[static_cast<std::size_t>(node)].y() / static_cast<double>(nodes.size());
+        velocity +=
+            probe.GetVelocities()[static_cast<std::size_t>(node)].y() / static_cast<double>(nodes.size());
     const double shown = 1.0e-3 / velocity;
 
     std::vector<double> wall[2], cpu[2];
@@ -113,7 +114,8 @@ void ContactMassCase(BenchTable& ioTable, const FenceCase& inCase, int inRepetit
         {
             const double cpu_start = ThreadCpuMs();
             const auto wall_start = std::chrono::steady_clock::now();
-            const Result<TetContactMass> result = sides[side].Get().ContactEffectiveMass(nodes, shares, Vec3::UnitY(), cStep);
+            const Result<TetContactMass> result =
+                sides[side].Get().ContactEffectiveMass(nodes, shares, Vec3::UnitY(), cStep);
             wall[side].push_back(ElapsedMs(wall_start));
             cpu[side].push_back(ThreadCpuMs() - cpu_start);
             mass[side] = result ? result.Get().mMass : -1.0;
@@ -123,13 +125,17 @@ void ContactMassCase(BenchTable& ioTable, const FenceCase& inCase, int inRepetit
     const std::string mesh = std::to_string(shape.GetElementNodes().size()) + "_tets";
     const char* names[2] = {"rest_factor", "block_jacobi"};
     for (int side = 0; side < 2; ++side)
-        ioTable.Add({"contact_mass", std::string(inCase.mName) + "/" + mesh + "/mid_rail_0.1m/" + names[side], Median(wall[side]),
-                     mass[side] > 0.0 ? std::abs(mass[side] - shown) / shown : -1.0, "rel_vs_one_converged_step",
+        ioTable.Add({"contact_mass", std::string(inCase.mName) + "/" + mesh + "/mid_rail_0.1m/" + names[side],
+                     Median(wall[side]), mass[side] > 0.0 ? std::abs(mass[side] - shown) / shown : -1.0,
+                     "rel_vs_one_converged_step",
                      "cpu_ms=" + FormatExtra(Median(cpu[side])) + ";mass_kg=" + FormatExtra(mass[side]) +
-                         ";cg_iterations=" + std::to_string(iterations[side]) + ";converged=" + (finished[side] ? "1" : "0") +
-                         ";struck_nodes=" + std::to_string(nodes.size()) + ";struck_nodes_own_kg=" + FormatExtra(lumped) +
+                         ";cg_iterations=" + std::to_string(iterations[side]) + ";converged=" +
+                         (finished[side] ? "1" : "0") + ";struck_nodes=" + std::to_string(nodes.size()) +
+                         ";struck_nodes_own_kg=" + FormatExtra(lumped) +
                          ";whole_fence_kg=" + FormatExtra(whole) +
-                         (side == 1 ? ";cpu_ratio_to_rest_factor=" + FormatExtra(Median(cpu[1]) / std::max(Median(cpu[0]), 1e-9)) : "")});
+                         (side == 1 ? ";cpu_ratio_to_rest_factor=" +
+                                          FormatExtra(Median(cpu[1]) / std::max(Median(cpu[0]), 1e-9))
+                                    : "")});
 }
 
 } // namespace

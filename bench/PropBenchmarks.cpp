@@ -142,15 +142,18 @@ void RunFenceContactMass(const char* inEngine, BenchTable& ioTable)
             (match ? matched_run : whole_run) = run.Get();
         }
     const double engine_change = 1200.0 * (matched_run.mSpeedAfter - matched_run.mSpeedBefore);
-    ioTable.Add({"fence_contact_mass", std::string(inEngine) + "/wood_fence/64kmh", Median(matched_ms),
-                 matched_run.mCarImpulse != 0.0 ? engine_change / matched_run.mCarImpulse - 1.0 : 0.0, "rel_engine_vs_crumple_car_impulse",
-                 "cpu_ms_per_step=" + FormatExtra(Median(matched_ms)) + ";whole_mass_cpu_ms_per_step=" + FormatExtra(Median(whole_ms)) +
-                     ";car_loss_m_s=" + FormatExtra(matched_run.mSpeedBefore - matched_run.mSpeedAfter) +
-                     ";whole_mass_car_loss_m_s=" + FormatExtra(whole_run.mSpeedBefore - whole_run.mSpeedAfter) +
-                     ";links_broken=" + std::to_string(matched_run.mBrokenLinks) +
-                     ";whole_mass_links_broken=" + std::to_string(whole_run.mBrokenLinks) +
-                     ";fence_impulse_n_s=" + FormatExtra(matched_run.mFenceImpulse) +
-                     ";whole_mass_fence_impulse_n_s=" + FormatExtra(whole_run.mFenceImpulse)});
+    ioTable.Add(
+        {"fence_contact_mass", std::string(inEngine) + "/wood_fence/64kmh", Median(matched_ms),
+         matched_run.mCarImpulse != 0.0 ? engine_change / matched_run.mCarImpulse - 1.0 : 0.0,
+         "rel_engine_vs_crumple_car_impulse",
+         "cpu_ms_per_step=" + FormatExtra(Median(matched_ms)) +
+             ";whole_mass_cpu_ms_per_step=" + FormatExtra(Median(whole_ms)) +
+             ";car_loss_m_s=" + FormatExtra(matched_run.mSpeedBefore - matched_run.mSpeedAfter) +
+             ";whole_mass_car_loss_m_s=" + FormatExtra(whole_run.mSpeedBefore - whole_run.mSpeedAfter) +
+             ";links_broken=" + std::to_string(matched_run.mBrokenLinks) +
+             ";whole_mass_links_broken=" + std::to_string(whole_run.mBrokenLinks) +
+             ";fence_impulse_n_s=" + FormatExtra(matched_run.mFenceImpulse) +
+             ";whole_mass_fence_impulse_n_s=" + FormatExtra(whole_run.mFenceImpulse)});
 }
 
 } // namespace

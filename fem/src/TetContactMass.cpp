@@ -37,10 +37,11 @@ Status CheckContact(std::span<const int> inNodes, std::span<const double> inShar
     for (std::size_t i = 0; i < inNodes.size(); ++i)
     {
         if (inNodes[i] < 0 || inNodes[i] >= inNodeCount)
-            return MakeError(EError::OutOfRange, who + "node " + std::to_string(inNodes[i]) + " is outside [0, " +
-                                                     std::to_string(inNodeCount) + ")");
+            return MakeError(EError::OutOfRange, who + "node " + std::to_string(inNodes[i]) +
+                                                     " is outside [0, " + std::to_string(inNodeCount) + ")");
         if (!std::isfinite(inShares[i]) || inShares[i] < 0.0)
-            return MakeError(EError::InvalidArgument, who + "share " + std::to_string(i) + " must be finite and >= 0");
+            return MakeError(EError::InvalidArgument,
+                             who + "share " + std::to_string(i) + " must be finite and >= 0");
         sum += inShares[i];
     }
     if (!(sum > 0.0) || !std::isfinite(sum))
@@ -50,12 +51,14 @@ Status CheckContact(std::span<const int> inNodes, std::span<const double> inShar
 
 } // namespace
 
-Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
-                                               const Vec3& inDirection, double inDeltaTime)
+Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNodes,
+                                                       std::span<const double> inShares,
+                                                       const Vec3& inDirection, double inDeltaTime)
 {
     if (Status valid = CheckTimeStep(inDeltaTime, "TetSolver::ContactEffectiveMass"); !valid)
         return valid.GetError();
-    if (Status valid = CheckContact(inNodes, inShares, inDirection, static_cast<int>(mPositions.size())); !valid)
+    if (Status valid = CheckContact(inNodes, inShares, inDirection, static_cast<int>(mPositions.size()));
+        !valid)
         return valid.GetError();
     const std::size_t node_count = mPositions.size();
     const Vec3 direction = inDirection.normalized();
@@ -106,8 +109,9 @@ Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNo
         TetStiffnessProduct(input, *linearization, inX, outY);
         ++products;
         for (std::size_t node = 0; node < outY.size(); ++node)
-            outY[node] = mFree[node] != 0 ? Vec3(mass_scale * mMasses[node] * inX[node] + stiffness_scale * outY[node])
-                                          : Vec3::Zero();
+            outY[node] = mFree[node] != 0
+                             ? Vec3(mass_scale * mMasses[node] * inX[node] + stiffness_scale * outY[node])
+                             : Vec3::Zero();
     };
 
     // The factored system of this step length and connectivity, set to the current frames as the step sets it
@@ -117,13 +121,15 @@ Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNo
     TetFactoredPreconditioner* const factor = FactoredRestSystem(input, mass_scale, stiffness_scale);
     const bool factored = factor != nullptr;
     if (factored)
-        factor->SetNodeRotations(mElementNodes, *rotations, material.mModel == EElasticModel::CorotatedLinear);
+        factor->SetNodeRotations(mElementNodes, *rotations,
+                                 material.mModel == EElasticModel::CorotatedLinear);
     else
     {
         TetStiffnessDiagonal(input, *linearization, scratch.mBlocks);
         mElementWork += mActiveElementCount;
         for (std::size_t node = 0; node < node_count; ++node)
-            scratch.mBlocks[node] = mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
+            scratch.mBlocks[node] =
+                mass_scale * mMasses[node] * Mat3::Identity() + stiffness_scale * scratch.mBlocks[node];
         scratch.mJacobi.Build(system, scratch.mBlocks, mPositions, mFree);
     }
     const LinearOperator3 preconditioner = [&](std::span<const Vec3> inR, std::span<Vec3> outZ)
@@ -134,8 +140,9 @@ Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNo
             scratch.mJacobi.Apply(inR, outZ);
     };
     std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
-    const ConjugateGradientResult cg = ConjugateGradient(system, preconditioner, scratch.mResidual, cComplianceTolerance,
-                                                         mSettings.mCgMaxIterations, scratch.mDeltaV, scratch.mCg);
+    const ConjugateGradientResult cg =
+        ConjugateGradient(system, preconditioner, scratch.mResidual, cComplianceTolerance,
+                          mSettings.mCgMaxIterations, scratch.mDeltaV, scratch.mCg);
     mElementWork += products * mActiveElementCount;
 
     // intent: the load's own weights read the response back: w^T d . A^-1 (w d) (s/kg), symmetric in the
@@ -144,8 +151,9 @@ Result<TetContactMass> TetSolver::ContactEffectiveMass(std::span<const int> inNo
     for (std::size_t node = 0; node < node_count; ++node)
         compliance += scratch.mResidual[node].dot(scratch.mDeltaV[node]);
     if (!(compliance > 0.0) || !std::isfinite(compliance))
-        return MakeError(EError::NonFinite, "TetSolver::ContactEffectiveMass: the step's system gave no finite "
-                                            "positive compliance at these nodes");
+        return MakeError(EError::NonFinite,
+                         "TetSolver::ContactEffectiveMass: the step's system gave no finite "
+                         "positive compliance at these nodes");
     return TetContactMass{1.0 / compliance, cg.mIterations, cg.mConverged};
 }
 

@@ -28,7 +28,8 @@ struct TetSolveScratch
     std::vector<Vec3> mDeltaV;         ///< #N
     std::vector<Vec3> mPreconditioned; ///< #N
     std::vector<Mat3> mBlocks;         ///< #N diagonal blocks for block Jacobi
-    /// ContactEffectiveMass's linearisation where the solver holds none of its positions (sized on first need)
+    /// ContactEffectiveMass's linearisation where the solver holds none of its positions (sized on first
+    /// need)
     std::vector<TetLinearization> mContactLinearization; ///< #T
     std::vector<Quat> mContactRotations;                 ///< #T
     std::vector<Vec3> mContactForces;                    ///< #N

@@ -117,7 +117,8 @@ Status ValidateHeldMass(double inMass)
     if (!std::isfinite(inMass))
         return MakeError(EError::NonFinite, "SetHeldMass: the mass must be finite");
     if (!(inMass == 0.0 || (inMass >= 1.0e-12 && inMass <= cMaxBodyMass)))
-        return MakeError(EError::OutOfRange, "SetHeldMass: the mass must be 0 (the body's own) or in [1e-12, 1e12] kg");
+        return MakeError(EError::OutOfRange,
+                         "SetHeldMass: the mass must be 0 (the body's own) or in [1e-12, 1e12] kg");
     return Status::Ok();
 }
 

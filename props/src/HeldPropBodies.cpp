@@ -13,8 +13,9 @@ Result<HeldPropBodies> HeldPropBodies::Create(PropWorld& ioProps, HeldPropEngine
     if (!inEngine.mCreatePieceBody || !inEngine.mSetPropPieces)
         return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: the engine's mCreatePieceBody and mSetPropPieces are required");
     if (inEngine.mSetHeldMass && !ioProps.GetSettings().mContactMass)
-        return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mSetHeldMass needs the prop world's contact masses "
-                                                  "(PropWorldSettings::mContactMass)");
+        return MakeError(EError::InvalidArgument,
+                         "HeldPropBodies::Create: mSetHeldMass needs the prop world's contact masses "
+                         "(PropWorldSettings::mContactMass)");
     if (!std::isfinite(inSettings.mShapeCellSize) || !(inSettings.mShapeCellSize > 0.0))
         return MakeError(EError::InvalidArgument, "HeldPropBodies::Create: mShapeCellSize must be finite and > 0 m");
     if (!std::isfinite(inSettings.mShapeTolerance) || !(inSettings.mShapeTolerance >= 0.0))
@@ -49,7 +50,8 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
         const PropId prop{static_cast<std::uint32_t>(index)};
         const Vec3 velocity = mProps->GetContactVelocity(prop);
         const double mass = mProps->GetContactMass(prop);
-        const bool give_velocity = mEngine.mSetHeldVelocity && (inStepped.mStepped > 0 || velocity != mGivenVelocity[index]);
+        const bool give_velocity =
+            mEngine.mSetHeldVelocity && (inStepped.mStepped > 0 || velocity != mGivenVelocity[index]);
         const bool give_mass = mEngine.mSetHeldMass && mass != mGivenMass[index];
         if (!give_velocity && !give_mass)
             continue;

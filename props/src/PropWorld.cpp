@@ -535,9 +535,9 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     fem::TetSolver* cpu = ioProp.mProp.GetCpuSolver();
     if (cpu == nullptr || ioProp.mStruck.empty())
         return 0.0;
-    // intent: the nodes, shares and direction UpdateContactVelocity weighs (body frame: the solver's), less the
-    // anchored ones: a touch at a footing alone (a piece lying against it) would weigh the whole held body
-    // as the ground, and the next contact with it, the car's, would meet a wall
+    // intent: the nodes, shares and direction UpdateContactVelocity weighs (body frame: the solver's), less
+    // the anchored ones: a touch at a footing alone (a piece lying against it) would weigh the whole held
+    // body as the ground, and the next contact with it, the car's, would meet a wall
     std::vector<int> nodes;
     std::vector<double> shares;
     Vec3 impulse = Vec3::Zero();
@@ -553,8 +553,8 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     }
     if (nodes.empty() || !(impulse.norm() > 0.0))
         return 0.0;
-    // intent: refused cannot happen for struck nodes of the prop and a step it took; unconverged (block Jacobi
-    // on a large prop) is no figure to weigh an engine body with: the held body keeps its own mass
+    // intent: refused cannot happen for struck nodes of the prop and a step it took; unconverged (block
+    // Jacobi on a large prop) is no figure to weigh an engine body with: the held body keeps its own mass
     const Result<fem::TetContactMass> mass = cpu->ContactEffectiveMass(nodes, shares, impulse, inDeltaTime);
     if (!mass || !mass.Get().mConverged)
         return 0.0;

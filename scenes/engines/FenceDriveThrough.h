@@ -99,7 +99,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     settings.mGap = 0.3;
     settings.mTriangles = 2000;
     Scene scene(settings);
-    Result<std::unique_ptr<props::PropWorld>> props_made = props::PropWorld::Create(scene.GetDamage(), {.mContactMass = inSettings.mMatchMass});
+    Result<std::unique_ptr<props::PropWorld>> props_made =
+        props::PropWorld::Create(scene.GetDamage(), {.mContactMass = inSettings.mMatchMass});
     if (!props_made)
         return props_made.GetError();
     props::PropWorld& props = *props_made.Get();
@@ -109,8 +110,11 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     props::PropId fence_prop;
     Vec3 fence_position = Vec3::Zero();
     props::HeldPropEngine engine{
-        .mCreatePieceBody = [&](const plugin::ConvexBodySettings& inBody) { return scene.MakeDebrisBody(inBody); },
-        .mSetPropPieces = [&](plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) {
+        .mCreatePieceBody = [&](const plugin::ConvexBodySettings& inBody)
+        { return scene.MakeDebrisBody(inBody); },
+        .mSetPropPieces =
+            [&](plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+        {
             run.mPiecesAfter = inPieces.size();
             return scene.GetAdapter().SetPropPieces(inBody, inPieces);
         },
@@ -120,7 +124,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     if (inSettings.mMatchVelocity)
         engine.mSetHeldVelocity = [&](plugin::BodyId inBody, const Vec3& inVelocity) { return scene.GetAdapter().SetHeldVelocity(inBody, inVelocity); };
     if (inSettings.mMatchMass)
-        engine.mSetHeldMass = [&](plugin::BodyId inBody, double inMass) { return scene.GetAdapter().SetHeldMass(inBody, inMass); };
+        engine.mSetHeldMass = [&](plugin::BodyId inBody, double inMass)
+        { return scene.GetAdapter().SetHeldMass(inBody, inMass); };
     Result<props::HeldPropBodies> held = props::HeldPropBodies::Create(
         props, std::move(engine), {.mShapeCellSize = cShapeSize, .mShapeTolerance = cShapeTolerance, .mMinPieceMass = cMinBodyMass});
     if (!held)

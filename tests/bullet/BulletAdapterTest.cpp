@@ -540,7 +540,8 @@ double BallImpulseInOneStep(double inY, double inContactMass, double& outWallMas
     BulletWorld world;
     world.mWorld.setGravity(btVector3(0, 0, 0));
     std::unique_ptr<DamageWorld> damage = std::move(DamageWorld::Create().Get());
-    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
+    std::unique_ptr<bullet::BulletAdapter> adapter =
+        std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
     const BodyId wall = adapter->CreatePropBody(HeldWall()).Get();
     ConvexBodySettings ball_settings = WallBall(inY);
     ball_settings.mPosition.x() = -0.05 - 0.1 + 0.001;
@@ -554,7 +555,8 @@ double BallImpulseInOneStep(double inY, double inContactMass, double& outWallMas
 
 } // namespace
 
-TEST_CASE("Bullet: a held prop body given a contact mass meets a blow anywhere as a point mass of it", "[bullet][props]")
+TEST_CASE("Bullet: a held prop body given a contact mass meets a blow anywhere as a point mass of it",
+          "[bullet][props]")
 {
     constexpr double cContactMass = 10.0; // kg
     double seen = 0.0;
@@ -565,20 +567,23 @@ TEST_CASE("Bullet: a held prop body given a contact mass meets a blow anywhere a
     const double own_centre = BallImpulseInOneStep(0.0, 0.0, seen);
     CHECK(seen == Approx(50.0).epsilon(1e-6));
     const double own_off_centre = BallImpulseInOneStep(1.5, 0.0, seen);
-    CHECK(own_off_centre / own_centre == Approx(WallBallReducedMass(off_centre_mass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    CHECK(own_off_centre / own_centre ==
+          Approx(WallBallReducedMass(off_centre_mass) / WallBallReducedMass(50.0)).epsilon(0.01));
     // Given 10 kg: the same 10 kg at the centre and off it, in the engine and in the damage world.
     const double given_centre = BallImpulseInOneStep(0.0, cContactMass, seen);
     CHECK(seen == Approx(cContactMass).epsilon(1e-6));
     const double given_off_centre = BallImpulseInOneStep(1.5, cContactMass, seen);
     CHECK(seen == Approx(cContactMass).epsilon(1e-6));
-    CHECK(given_centre / own_centre == Approx(WallBallReducedMass(cContactMass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    CHECK(given_centre / own_centre ==
+          Approx(WallBallReducedMass(cContactMass) / WallBallReducedMass(50.0)).epsilon(0.01));
     CHECK(given_off_centre == Approx(given_centre).epsilon(1e-3));
 
     // 0 gives the body its own mass and inertia back; bad masses and bodies that are not held are refused,
     // changing nothing.
     BulletWorld world;
     std::unique_ptr<DamageWorld> damage = std::move(DamageWorld::Create().Get());
-    std::unique_ptr<bullet::BulletAdapter> adapter = std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
+    std::unique_ptr<bullet::BulletAdapter> adapter =
+        std::move(bullet::BulletAdapter::Create(world.mWorld, *damage).Get());
     const BodyId wall = adapter->CreatePropBody(HeldWall()).Get();
     btRigidBody& body = *adapter->GetConvexBody(wall);
     const btVector3 own_inverse_inertia = body.getInvInertiaDiagLocal();

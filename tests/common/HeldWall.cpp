@@ -8,8 +8,8 @@ namespace crumple::common
 namespace
 {
 
-constexpr double cBallMass = 10.0;  // kg
-constexpr double cBallSpeed = 5.0;  // m/s
+constexpr double cBallMass = 10.0; // kg
+constexpr double cBallSpeed = 5.0; // m/s
 
 } // namespace
 

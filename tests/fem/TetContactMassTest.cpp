@@ -23,7 +23,8 @@ namespace
 // stepped implicitly with the step's solves converged far below the test's tolerance (inNewtonIterations: at
 // most so many linearisations per step; 1 is the linearly implicit step, whose response to an impulse is
 // exactly the mass's system however far the step moves).
-TetSolver MakeFence(EImplicitPreconditioner inPreconditioner, std::vector<int>* outGround = nullptr, int inNewtonIterations = 30)
+TetSolver MakeFence(EImplicitPreconditioner inPreconditioner, std::vector<int>* outGround = nullptr,
+                    int inNewtonIterations = 30)
 {
     TetFenceSettings fence;
     fence.mLength = 2.0;
@@ -39,7 +40,9 @@ TetSolver MakeFence(EImplicitPreconditioner inPreconditioner, std::vector<int>* 
     settings.mCgMaxIterations = 100000;
     settings.mImplicitTolerance = 1.0e-14;
     settings.mImplicitMaxIterations = inNewtonIterations;
-    TetSolver solver = TetSolver::Create(made.mMesh, MakePropMaterialPreset(EPropMaterial::Wood).Get().mMaterial, settings).Get();
+    TetSolver solver =
+        TetSolver::Create(made.mMesh, MakePropMaterialPreset(EPropMaterial::Wood).Get().mMaterial, settings)
+            .Get();
     REQUIRE(solver.SetNodesFixed(made.mGroundNodes, true));
     if (outGround != nullptr)
         *outGround = made.mGroundNodes;
@@ -67,8 +70,9 @@ void Footprint(const TetSolver& inSolver, const Vec3& inPoint, double inRadius, 
 // The mass the next step shows: two copies stepped, one after a push of inImpulse (N s) along inDirection
 // shared as the shares; the shares' mean velocity along the direction differs by inImpulse / m (the step is
 // linear in so small a push about any state).
-double MassNextStepShows(const TetSolver& inSolver, const std::vector<int>& inNodes, const std::vector<double>& inShares,
-                         const Vec3& inDirection, double inImpulse, double inStep)
+double MassNextStepShows(const TetSolver& inSolver, const std::vector<int>& inNodes,
+                         const std::vector<double>& inShares, const Vec3& inDirection, double inImpulse,
+                         double inStep)
 {
     TetSolver without = inSolver;
     TetSolver with = inSolver;
@@ -94,7 +98,8 @@ double MassNextStepShows(const TetSolver& inSolver, const std::vector<int>& inNo
 TEST_CASE("ContactEffectiveMass is the mass one implicit step shows an impulse, and changes nothing", "[fem]")
 {
     constexpr double cStep = 1.0 / 120.0;
-    for (const EImplicitPreconditioner preconditioner : {EImplicitPreconditioner::RestFactorization, EImplicitPreconditioner::BlockJacobi})
+    for (const EImplicitPreconditioner preconditioner :
+         {EImplicitPreconditioner::RestFactorization, EImplicitPreconditioner::BlockJacobi})
     {
         TetSolver solver = MakeFence(preconditioner);
         REQUIRE(solver.Prepare(cStep));
@@ -104,21 +109,25 @@ TEST_CASE("ContactEffectiveMass is the mass one implicit step shows an impulse, 
             Vec3 mPoint;
             double mRadius;
             Vec3 mDirection;
-        } contacts[] = {{{1.0, 0.0, 0.4}, 0.01, {0, 1, 0}}, {{1.0, 0.0, 0.4}, 0.1, {0, 1, 0}},
-                        {{0.15, 0.0, 0.4}, 0.2, {0, 1, 0}}, {{0.7, 0.1, 0.8}, 0.1, {0.3, -1.0, 0.2}}};
+        } contacts[] = {{{1.0, 0.0, 0.4}, 0.01, {0, 1, 0}},
+                        {{1.0, 0.0, 0.4}, 0.1, {0, 1, 0}},
+                        {{0.15, 0.0, 0.4}, 0.2, {0, 1, 0}},
+                        {{0.7, 0.1, 0.8}, 0.1, {0.3, -1.0, 0.2}}};
         std::vector<int> nodes;
         std::vector<double> shares;
         for (const auto& contact : contacts)
         {
             Footprint(solver, contact.mPoint, contact.mRadius, nodes, shares);
             const TetSolver untouched = solver;
-            const Result<TetContactMass> found = solver.ContactEffectiveMass(nodes, shares, contact.mDirection, cStep);
+            const Result<TetContactMass> found =
+                solver.ContactEffectiveMass(nodes, shares, contact.mDirection, cStep);
             REQUIRE(found.IsValid());
             REQUIRE(found.Get().mConverged);
             const Result<double> mass = found.Get().mMass;
             // A small impulse keeps the corotated step linear: the step shows the same mass.
             const double shown = MassNextStepShows(solver, nodes, shares, contact.mDirection, 1.0e-3, cStep);
-            INFO("at " << contact.mPoint.transpose() << ", radius " << contact.mRadius << ": " << mass.Get() << " kg, one step shows " << shown);
+            INFO("at " << contact.mPoint.transpose() << ", radius " << contact.mRadius << ": " << mass.Get()
+                       << " kg, one step shows " << shown);
             CHECK(mass.Get() == Approx(shown).epsilon(1.0e-6));
             // More than the struck nodes' own mass (the rail's stiffness and the posts hold them back).
             double lumped = 0.0;
@@ -142,11 +151,13 @@ TEST_CASE("ContactEffectiveMass is the mass one implicit step shows an impulse, 
         for (int step = 0; step < 3; ++step)
             REQUIRE(solver.Step(cStep).IsValid());
         const double moving = solver.ContactEffectiveMass(nodes, shares, Vec3::UnitY(), cStep).Get().mMass;
-        CHECK(moving == Approx(MassNextStepShows(solver, nodes, shares, Vec3::UnitY(), 1.0e-3, cStep)).epsilon(1.0e-4));
+        CHECK(moving ==
+              Approx(MassNextStepShows(solver, nodes, shares, Vec3::UnitY(), 1.0e-3, cStep)).epsilon(1.0e-4));
     }
 }
 
-TEST_CASE("ContactEffectiveMass: the node's own mass for a vanishing step, more for a longer one, infinite at an anchor",
+TEST_CASE("ContactEffectiveMass: the node's own mass for a vanishing step, more for a longer one, infinite "
+          "at an anchor",
           "[fem]")
 {
     std::vector<int> ground;
@@ -158,7 +169,8 @@ TEST_CASE("ContactEffectiveMass: the node's own mass for a vanishing step, more 
     const double own = solver.GetMasses()[static_cast<std::size_t>(nodes[0])];
     // h -> 0: A = M, the node alone. The stiffness damping's h beta K is first order in h (4e-5 of the node's
     // mass at 1 ns), so the limit is taken at 1 ps.
-    CHECK(solver.ContactEffectiveMass(nodes, shares, Vec3::UnitY(), 1.0e-12).Get().mMass == Approx(own).epsilon(1.0e-6));
+    CHECK(solver.ContactEffectiveMass(nodes, shares, Vec3::UnitY(), 1.0e-12).Get().mMass ==
+          Approx(own).epsilon(1.0e-6));
     // Longer steps reach more of the fence and the posts behind it.
     double previous = own;
     for (const double step : {1.0e-4, 1.0e-3, 1.0 / 120.0, 1.0 / 30.0})
@@ -171,13 +183,16 @@ TEST_CASE("ContactEffectiveMass: the node's own mass for a vanishing step, more 
     // A contact on anchored nodes alone meets the ground.
     const std::vector<int> footing{ground[0], ground[1]};
     const std::vector<double> footing_shares{1.0, 2.0};
-    CHECK(solver.ContactEffectiveMass(footing, footing_shares, Vec3::UnitY(), 1.0 / 120.0).Get().mMass == std::numeric_limits<double>::infinity());
-    // Shares on anchored nodes take nothing from the free ones' response: the free node alone, weighted by its
-    // share of the load (w = 1/3: the mass is 9 times the node's effective mass, as w^2 scales the compliance).
+    CHECK(solver.ContactEffectiveMass(footing, footing_shares, Vec3::UnitY(), 1.0 / 120.0).Get().mMass ==
+          std::numeric_limits<double>::infinity());
+    // Shares on anchored nodes take nothing from the free ones' response: the free node alone, weighted by
+    // its share of the load (w = 1/3: the mass is 9 times the node's effective mass, as w^2 scales the
+    // compliance).
     const double alone = solver.ContactEffectiveMass(nodes, shares, Vec3::UnitY(), 1.0 / 120.0).Get().mMass;
     const std::vector<int> mixed{nodes[0], ground[0]};
     const std::vector<double> mixed_shares{1.0, 2.0};
-    CHECK(solver.ContactEffectiveMass(mixed, mixed_shares, Vec3::UnitY(), 1.0 / 120.0).Get().mMass == Approx(9.0 * alone).epsilon(1.0e-9));
+    CHECK(solver.ContactEffectiveMass(mixed, mixed_shares, Vec3::UnitY(), 1.0 / 120.0).Get().mMass ==
+          Approx(9.0 * alone).epsilon(1.0e-9));
 }
 
 TEST_CASE("ContactEffectiveMass refuses bad input and changes nothing", "[fem]")
@@ -191,9 +206,11 @@ TEST_CASE("ContactEffectiveMass refuses bad input and changes nothing", "[fem]")
     CHECK_FALSE(solver.ContactEffectiveMass(node, one, Vec3::UnitY(), nan).IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(node, one, Vec3::Zero(), 0.01).IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(node, one, Vec3(nan, 1.0, 0.0), 0.01).IsValid());
-    CHECK_FALSE(solver.ContactEffectiveMass(node, std::vector<double>{1.0, 1.0}, Vec3::UnitY(), 0.01).IsValid());
+    CHECK_FALSE(
+        solver.ContactEffectiveMass(node, std::vector<double>{1.0, 1.0}, Vec3::UnitY(), 0.01).IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(std::vector<int>{-1}, one, Vec3::UnitY(), 0.01).IsValid());
-    CHECK_FALSE(solver.ContactEffectiveMass(std::vector<int>{solver.GetNodeCount()}, one, Vec3::UnitY(), 0.01).IsValid());
+    CHECK_FALSE(solver.ContactEffectiveMass(std::vector<int>{solver.GetNodeCount()}, one, Vec3::UnitY(), 0.01)
+                    .IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(node, std::vector<double>{-1.0}, Vec3::UnitY(), 0.01).IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(node, std::vector<double>{nan}, Vec3::UnitY(), 0.01).IsValid());
     CHECK_FALSE(solver.ContactEffectiveMass(node, std::vector<double>{0.0}, Vec3::UnitY(), 0.01).IsValid());
@@ -206,8 +223,9 @@ TEST_CASE("ContactEffectiveMass refuses bad input and changes nothing", "[fem]")
 TEST_CASE("ContactEffectiveMass after a crack: the factor the next step would build, converged", "[fem]")
 {
     constexpr double cStep = 1.0 / 120.0;
-    // One linearisation per step: the blow moves the rail fast, and a converged step's Newton iterations would
-    // move its linearisation away from the start's (4.5 % in the mass here), which is not what is tested.
+    // One linearisation per step: the blow moves the rail fast, and a converged step's Newton iterations
+    // would move its linearisation away from the start's (4.5 % in the mass here), which is not what is
+    // tested.
     TetSolver solver = MakeFence(EImplicitPreconditioner::RestFactorization, nullptr, 1);
     REQUIRE(solver.Prepare(cStep));
     std::vector<int> nodes;
@@ -227,11 +245,13 @@ TEST_CASE("ContactEffectiveMass after a crack: the factor the next step would bu
     const int factored_before = solver.GetFactorizationCount();
     const TetContactMass found = solver.ContactEffectiveMass(nodes, shares, Vec3::UnitY(), cStep).Get();
     CHECK(found.mConverged);
-    CHECK(found.mIterations < 100); // the rest factor at moved frames: tens of iterations, not block Jacobi's 1,000s
+    CHECK(found.mIterations <
+          100); // the rest factor at moved frames: tens of iterations, not block Jacobi's 1,000s
     CHECK(solver.GetFactorizationCount() == factored_before + 1);
     // It is the mass the next step shows.
     INFO(broken << " links broken after " << steps << " steps");
-    CHECK(found.mMass == Approx(MassNextStepShows(solver, nodes, shares, Vec3::UnitY(), 1.0e-3, cStep)).epsilon(1.0e-4));
+    CHECK(found.mMass ==
+          Approx(MassNextStepShows(solver, nodes, shares, Vec3::UnitY(), 1.0e-3, cStep)).epsilon(1.0e-4));
     // The step that follows reuses the factor the call built: no factorisation more than without the call.
     REQUIRE(solver.Step(cStep).IsValid());
     CHECK(solver.GetFactorizationCount() == factored_before + 1);

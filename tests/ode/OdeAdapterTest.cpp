@@ -367,10 +367,12 @@ struct WallBallScene
         const int n = dCollide(inA, inB, 8, &contacts[0].geom, sizeof(dContact));
         for (int i = 0; i < n; ++i)
             contacts[static_cast<std::size_t>(i)].surface.mode = dContactApprox1_1;
-        scene->mAdapter->OnCollide(inA, inB, std::span<const dContact>(contacts.data(), static_cast<std::size_t>(n)));
+        scene->mAdapter->OnCollide(inA, inB,
+                                   std::span<const dContact>(contacts.data(), static_cast<std::size_t>(n)));
         for (int i = 0; i < n; ++i)
-            dJointAttach(dJointCreateContact(scene->mWorld, scene->mJoints, &contacts[static_cast<std::size_t>(i)]),
-                         dGeomGetBody(inA), dGeomGetBody(inB));
+            dJointAttach(
+                dJointCreateContact(scene->mWorld, scene->mJoints, &contacts[static_cast<std::size_t>(i)]),
+                dGeomGetBody(inA), dGeomGetBody(inB));
     }
     dWorldID mWorld = nullptr;
     dJointGroupID mJoints = nullptr;
@@ -411,7 +413,8 @@ double BallImpulseInOneStep(double inY, double inContactMass, double& outWallMas
 
 } // namespace
 
-TEST_CASE("ODE: a held prop body given a contact mass meets a blow anywhere as a point mass of it", "[ode][props]")
+TEST_CASE("ODE: a held prop body given a contact mass meets a blow anywhere as a point mass of it",
+          "[ode][props]")
 {
     constexpr double cContactMass = 10.0; // kg
     double seen = 0.0;
@@ -422,14 +425,16 @@ TEST_CASE("ODE: a held prop body given a contact mass meets a blow anywhere as a
     const double own_centre = BallImpulseInOneStep(0.0, 0.0, seen);
     CHECK(seen == Approx(50.0).epsilon(1e-9));
     const double own_off_centre = BallImpulseInOneStep(1.5, 0.0, seen);
-    CHECK(own_off_centre / own_centre == Approx(WallBallReducedMass(off_centre_mass) / WallBallReducedMass(50.0)).epsilon(0.01));
-    // Given 10 kg: the same 10 kg at the centre and off it (within the 1 % ODE's finite inertia leaves), in the
-    // engine and in the damage world.
+    CHECK(own_off_centre / own_centre ==
+          Approx(WallBallReducedMass(off_centre_mass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    // Given 10 kg: the same 10 kg at the centre and off it (within the 1 % ODE's finite inertia leaves), in
+    // the engine and in the damage world.
     const double given_centre = BallImpulseInOneStep(0.0, cContactMass, seen);
     CHECK(seen == Approx(cContactMass).epsilon(1e-9));
     const double given_off_centre = BallImpulseInOneStep(1.5, cContactMass, seen);
     CHECK(seen == Approx(cContactMass).epsilon(1e-9));
-    CHECK(given_centre / own_centre == Approx(WallBallReducedMass(cContactMass) / WallBallReducedMass(50.0)).epsilon(0.01));
+    CHECK(given_centre / own_centre ==
+          Approx(WallBallReducedMass(cContactMass) / WallBallReducedMass(50.0)).epsilon(0.01));
     CHECK(given_off_centre == Approx(given_centre).epsilon(0.01));
 
     // 0 gives the body its own mass and inertia back; bad masses and bodies that are not held are refused,
@@ -442,7 +447,8 @@ TEST_CASE("ODE: a held prop body given a contact mass meets a blow anywhere as a
         std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(*damage).Get());
         const BodyId wall = adapter->CreatePropBody(world, space, HeldWall()).Get();
         dBodyID body = adapter->GetConvexBody(wall);
-        const auto mass_of = [body] {
+        const auto mass_of = [body]
+        {
             dMass mass;
             dBodyGetMass(body, &mass);
             return mass;

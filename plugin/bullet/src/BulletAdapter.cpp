@@ -234,9 +234,11 @@ Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 
 Status BulletAdapter::SetHeldMass(BodyId inBody, double inMass)
 {
-    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    const auto owned =
+        std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
     if (owned == mOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) +
+                                                 " is not a held prop body of this adapter");
     if (Status valid = plugin::ValidateHeldMass(inMass); !valid)
         return valid;
     btRigidBody& body = *owned->mRigidBody;
@@ -247,7 +249,8 @@ Status BulletAdapter::SetHeldMass(BodyId inBody, double inMass)
     else
         body.setMassProps(owned->mOwnMass, owned->mOwnInertia);
     body.updateInertiaTensor();
-    body.setGravity(btVector3(0, 0, 0)); // setMassProps scales the body's gravity by its mass: a held body has none
+    // intent: setMassProps scales the body's gravity by its mass; a held body has none
+    body.setGravity(btVector3(0, 0, 0));
     return Status::Ok();
 }
 

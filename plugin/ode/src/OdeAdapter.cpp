@@ -199,19 +199,22 @@ Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 
 Status OdeAdapter::SetHeldMass(BodyId inBody, double inMass)
 {
-    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
+    const auto owned =
+        std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
     if (owned == mOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) +
+                                                 " is not a held prop body of this adapter");
     if (Status valid = plugin::ValidateHeldMass(inMass); !valid)
         return valid;
     // intent: ODE has no infinite inertia. Each axis gets inMass times 100 R^2, R^2 the body's own
-    // sum of squared radii of gyration (I_x + I_y + I_z) / m, so a contact within R of the centre of mass meets
-    // inMass within 1 %; a million times R^2 made dWorldStep's LCP fail (measured: the fence drive-through's
-    // car thrown back at 91 m/s)
+    // sum of squared radii of gyration (I_x + I_y + I_z) / m, so a contact within R of the centre of mass
+    // meets inMass within 1 %; a million times R^2 made dWorldStep's LCP fail (measured: the fence
+    // drive-through's car thrown back at 91 m/s)
     constexpr double cStiffTurn = 100.0;
     const double radius_squared = owned->mOwnInertia.sum() / owned->mOwnMass;
     const double mass = inMass > 0.0 ? inMass : owned->mOwnMass;
-    const Vec3 inertia = inMass > 0.0 ? Vec3::Constant(inMass * cStiffTurn * radius_squared) : owned->mOwnInertia;
+    const Vec3 inertia =
+        inMass > 0.0 ? Vec3::Constant(inMass * cStiffTurn * radius_squared) : owned->mOwnInertia;
     dMass ode_mass;
     dMassSetParameters(&ode_mass, mass, 0.0, 0.0, 0.0, inertia.x(), inertia.y(), inertia.z(), 0.0, 0.0, 0.0);
     dBodySetMass(owned->mOdeBody, &ode_mass);

@@ -110,23 +110,24 @@ public:
     /// impulse J along inDirection (world, any length), shared among inNodes in proportion to inShares,
     /// changes those nodes' share-weighted mean velocity along inDirection by J / m, with
     ///   m = 1 / (w^T A^-1 w),  w_i = (share_i / sum of shares) d,  A = (1 + h alpha) M + (h^2 + h beta) K,
-    /// the implicit step's system (alpha, beta: the material's mass and stiffness damping; K linearised at the
-    /// current positions; anchored nodes held). It lies between the struck nodes' lumped mass (h -> 0) and
-    /// infinity (the anchors, h -> inf). It is what a rigid stand-in for the prop must weigh (a held prop body:
-    /// props::PropWorld::GetContactMass) for an engine's contact to take from the other body the momentum the
-    /// FEM's step then gives the struck nodes. For a symplectic solver it is the same implicit estimate (its
-    /// sub-steps carry a wave no farther than the implicit step's reach). +infinity when every share is on an
-    /// anchored node. Preconditioned conjugate gradient to 1e-8 in at most TetSolverSettings::mCgMaxIterations:
-    /// with EImplicitPreconditioner::RestFactorization (the default) preconditioned by the factored rest
-    /// system of this step length (a few iterations; factored here when the solver holds none for it, as after a
-    /// crack: the one its next step of that length would build and then reuses), with BlockJacobi by block
-    /// Jacobi (a hundred times slower; it may stop short: TetContactMass::mConverged). Changes no state: later
-    /// steps are bitwise the same.
-    /// Refused for a step length that is not finite and > 0, a direction that is not finite and nonzero,
-    /// nodes and shares of different sizes, a node out of range, a share that is not finite and >= 0, or
-    /// shares that do not sum to a finite value above 0.
-    Result<TetContactMass> ContactEffectiveMass(std::span<const int> inNodes, std::span<const double> inShares,
-                                                const Vec3& inDirection, double inDeltaTime);
+    /// the implicit step's system (alpha, beta: the material's mass and stiffness damping; K linearised at
+    /// the current positions; anchored nodes held). It lies between the struck nodes' lumped mass (h -> 0)
+    /// and infinity (the anchors, h -> inf). It is what a rigid stand-in for the prop must weigh (a held prop
+    /// body: props::PropWorld::GetContactMass) for an engine's contact to take from the other body the
+    /// momentum the FEM's step then gives the struck nodes. For a symplectic solver it is the same implicit
+    /// estimate (its sub-steps carry a wave no farther than the implicit step's reach). +infinity when every
+    /// share is on an anchored node. Preconditioned conjugate gradient to 1e-8 in at most
+    /// TetSolverSettings::mCgMaxIterations: with EImplicitPreconditioner::RestFactorization (the default)
+    /// preconditioned by the factored rest system of this step length (a few iterations; factored here when
+    /// the solver holds none for it, as after a crack: the one its next step of that length would build and
+    /// then reuses), with BlockJacobi by block Jacobi (a hundred times slower; it may stop short:
+    /// TetContactMass::mConverged). Changes no state: later steps are bitwise the same. Refused for a step
+    /// length that is not finite and > 0, a direction that is not finite and nonzero, nodes and shares of
+    /// different sizes, a node out of range, a share that is not finite and >= 0, or shares that do not sum
+    /// to a finite value above 0.
+    Result<TetContactMass> ContactEffectiveMass(std::span<const int> inNodes,
+                                                std::span<const double> inShares, const Vec3& inDirection,
+                                                double inDeltaTime);
 
     /// Moves the body to static equilibrium under gravity and the external forces (velocities become 0):
     /// repeated linearisations K(x) dx = f_elastic(x) + f_ext solved by conjugate gradient, until the

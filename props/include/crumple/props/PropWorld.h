@@ -227,12 +227,12 @@ public:
     /// mass (fem::TetSolver::ContactEffectiveMass) at the nodes GetContactVelocity follows less the anchored
     /// ones, weighted as it weighs them, along the direction they were struck, at the state after the last
     /// landed step and for that step's length. 0 while PropWorldSettings::mContactMass is off, where
-    /// GetContactVelocity is zero for want of struck nodes (nothing struck the prop yet, it sleeps, the struck
-    /// nodes left with a piece or are anchored), for a GPU prop (its solver has no implicit system to weigh),
-    /// where the solve did not converge, or for an unknown prop. A held prop body stands for the whole prop:
-    /// give this to the adapter's SetHeldMass after each Step, with the velocity, so that the engine's next
-    /// contact takes from the car what the FEM's step will give the struck members. A rail half-way between
-    /// posts weighs a fraction of the fence; one beside a post, many times the fence.
+    /// GetContactVelocity is zero for want of struck nodes (nothing struck the prop yet, it sleeps, the
+    /// struck nodes left with a piece or are anchored), for a GPU prop (its solver has no implicit system to
+    /// weigh), where the solve did not converge, or for an unknown prop. A held prop body stands for the
+    /// whole prop: give this to the adapter's SetHeldMass after each Step, with the velocity, so that the
+    /// engine's next contact takes from the car what the FEM's step will give the struck members. A rail
+    /// half-way between posts weighs a fraction of the fence; one beside a post, many times the fence.
     double GetContactMass(PropId inProp) const
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactMass : 0.0;
@@ -353,8 +353,8 @@ private:
     // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
     // body's rotation, zero without one); moves new hits to mStruck.
     static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
-    // GetContactMass's figure after a step of inDeltaTime (s), from the struck nodes UpdateContactVelocity kept
-    // (0 where there are none, or for a GPU prop).
+    // GetContactMass's figure after a step of inDeltaTime (s), from the struck nodes UpdateContactVelocity
+    // kept (0 where there are none, or for a GPU prop).
     static double UpdateContactMass(Prop& ioProp, double inDeltaTime);
     // The fragments of inFragments (inProp's) that TakeLooseFragments hands over, ascending.
     static std::vector<std::size_t> LeavingFragments(const Prop& inProp, const std::vector<fem::TetFragment>& inFragments);

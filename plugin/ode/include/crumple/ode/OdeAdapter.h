@@ -99,12 +99,11 @@ public:
     /// Sets the mass (kg) a held prop body meets the next steps' contacts with, as a point mass that hardly
     /// turns: the prop's effective mass at the material the car strikes (props::PropWorld::GetContactMass),
     /// so that the engine takes from the car what the prop's FEM then gives the struck members; 0: the body's
-    /// own mass and inertia again (as made). ODE needs a positive definite inertia: it is inMass times 100 R^2
-    /// about each axis (R^2 = (I_x + I_y + I_z) / m of the body as made), so a contact within R of the centre
-    /// of mass meets inMass within 1 % (more would upset dWorldStep's LCP). Crumple's
-    /// impulses see the same mass and inertia (the pre-solve snapshot reads them). Refused, changing nothing,
-    /// for a body that is not a held prop body of this adapter or a mass that is not 0 or in
-    /// [1e-12, plugin::cMaxBodyMass].
+    /// own mass and inertia again (as made). ODE needs a positive definite inertia: it is inMass times 100
+    /// R^2 about each axis (R^2 = (I_x + I_y + I_z) / m of the body as made), so a contact within R of the
+    /// centre of mass meets inMass within 1 % (more would upset dWorldStep's LCP). Crumple's impulses see the
+    /// same mass and inertia (the pre-solve snapshot reads them). Refused, changing nothing, for a body that
+    /// is not a held prop body of this adapter or a mass that is not 0 or in [1e-12, plugin::cMaxBodyMass].
     Status SetHeldMass(plugin::BodyId inBody, double inMass);
     /// True for a held prop body this adapter made (CreatePropBody with mHeld): what SetHeldVelocity takes,
     /// and props::HeldPropEngine::mIsHeld asks.
