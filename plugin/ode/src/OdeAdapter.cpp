@@ -91,6 +91,17 @@ dGeomID MakeBoundingBox(dSpaceID inSpace, dBodyID inBody, const std::vector<Vec3
     return geom;
 }
 
+// The held prop body inBody among an adapter's owned bodies, or the error inCaller gives for any other body.
+template <class Owned>
+Result<Owned*> FindHeldBody(std::vector<Owned>& ioOwned, BodyId inBody, const char* inCaller)
+{
+    const auto owned = std::find_if(ioOwned.begin(), ioOwned.end(), [&](const Owned& o) { return o.mBody == inBody; });
+    if (owned == ioOwned.end() || !owned->mHeld)
+        return MakeError(EError::OutOfRange, std::string(inCaller) + ": body " + std::to_string(inBody.mValue) +
+                                                 " is not a held prop body of this adapter");
+    return &*owned;
+}
+
 } // namespace
 
 OdeAdapter::~OdeAdapter()
@@ -182,9 +193,10 @@ bool OdeAdapter::IsHeldPropBody(BodyId inBody) const
 
 Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 {
-    const auto owned = std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
-    if (owned == mOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, "SetHeldVelocity: body " + std::to_string(inBody.mValue) + " is not a held prop body of this adapter");
+    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldVelocity");
+    if (!found)
+        return found.GetError();
+    OwnedBody* const owned = found.Get();
     if (Status valid = plugin::ValidateHeldVelocity(inVelocity); !valid)
         return valid;
     owned->mHeldVelocity = inVelocity;
@@ -199,11 +211,10 @@ Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 
 Status OdeAdapter::SetHeldMass(BodyId inBody, double inMass)
 {
-    const auto owned =
-        std::find_if(mOwned.begin(), mOwned.end(), [&](const OwnedBody& o) { return o.mBody == inBody; });
-    if (owned == mOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, "SetHeldMass: body " + std::to_string(inBody.mValue) +
-                                                 " is not a held prop body of this adapter");
+    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldMass");
+    if (!found)
+        return found.GetError();
+    OwnedBody* const owned = found.Get();
     if (Status valid = plugin::ValidateHeldMass(inMass); !valid)
         return valid;
     // intent: ODE has no infinite inertia. Each axis gets inMass times 100 R^2, R^2 the body's own
