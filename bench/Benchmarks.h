@@ -75,7 +75,8 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// The FEM on the CPU (double) and as compute shaders (float) in one run: time per 1/60 s step of the steel
-/// cantilever against tet count (1k to 1M) and the tip error of each; without an EGL device it says so.
+/// cantilever against tet count (1k to 1M) and the tip error of each, explicit, and the implicit step side by
+/// side (gpu_implicit rows, GpuImplicitBenchmarks.h); without an EGL device it says so.
 void RunGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 } // namespace crumple::bench

@@ -5,6 +5,7 @@
 
 #if defined(CRUMPLE_BENCH_GPU)
 #include "CantileverScene.h"
+#include "GpuImplicitBenchmarks.h"
 
 #include <crumple/gpu/GpuTetSolver.h>
 
@@ -128,6 +129,7 @@ void RunGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                          ";steps_per_s=" + FormatExtra(1000.0 / (gpu_ms * per_frame)) +
                          ";gpu_vs_cpu_time=" + FormatExtra(gpu_ms / cpu_ms) + ";device=" + device_name + start});
     }
+    RunGpuImplicitCases(ioTable, inOptions, device.Get(), device_name);
 }
 
 #else

@@ -5,5 +5,6 @@ crumple_add_test(gpu
     gpu/ComputeDeviceTest.cpp
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
+    gpu/GpuImplicitStepTest.cpp
     gpu/GpuTetSolverTest.cpp
     LINK crumple::gpu crumple_scenes_fem)

@@ -129,19 +129,21 @@ TEST_CASE("FemProp falls back to the CPU for what the GPU solver lacks, and refu
     CHECK(FemProp::Create(nullptr, Bar(), negative, Explicit(), FemPropSettings{}).HasError());
 }
 
-TEST_CASE("FemProp on the GPU steps like the CPU within float limits", "[props]")
+TEST_CASE("FemProp on the GPU steps like the CPU within float limits, explicit and implicit", "[props]")
 {
     Devices provider;
     FemPropSettings settings;
     settings.mBackend = EFemBackend::Gpu;
-    Result<FemProp> prop = FemProp::Create(provider.Get(), Bar(), Soft(), Explicit(), settings);
+    const TetSolverSettings solver = GENERATE(Explicit(), TetSolverSettings{});
+    CAPTURE(ToString(solver.mIntegrator));
+    Result<FemProp> prop = FemProp::Create(provider.Get(), Bar(), Soft(), solver, settings);
     REQUIRE(prop.IsValid());
     if (prop.Get().GetBackend() != EFemBackend::Gpu)
     {
         WARN("skipped: no compute device: " << prop.Get().GetFallbackReason());
         return;
     }
-    TetSolver plain = TetSolver::Create(Bar(), Soft(), Explicit()).Get();
+    TetSolver plain = TetSolver::Create(Bar(), Soft(), solver).Get();
     REQUIRE(prop.Get().ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
     REQUIRE(plain.ApplyImpulse(20, Vec3(0.0, 0.0, 1.0)).IsValid());
     for (int step = 0; step < 5; ++step)

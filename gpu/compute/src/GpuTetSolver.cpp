@@ -9,6 +9,7 @@
 #include <crumple/gpu/GpuTetSolver.h>
 
 #include "EmbeddedShaders.h"
+#include "GpuImplicitStep.h"
 
 #include <algorithm>
 #include <array>
@@ -112,10 +113,13 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
 {
     if (!inDevice)
         return MakeError(EError::InvalidArgument, "GpuTetSolver: no compute device");
-    if (inSettings.mIntegrator != fem::EIntegrator::SymplecticEuler)
-        return MakeError(EError::InvalidArgument,
-                         "GpuTetSolver: implicit Euler is not implemented on the GPU; use "
-                         "EIntegrator::SymplecticEuler (the CPU's stable sub-steps) or the CPU solver");
+    if (inSettings.mIntegrator == fem::EIntegrator::ImplicitEuler &&
+        inMaterial.mModel != fem::EElasticModel::CorotatedLinear)
+        return MakeError(
+            EError::InvalidArgument,
+            "GpuTetSolver: implicit Euler is implemented on the GPU for the corotated model only; use "
+            "EElasticModel::CorotatedLinear, EIntegrator::SymplecticEuler or the CPU solver for St. "
+            "Venant-Kirchhoff");
     const fem::TetSolver& cpu = inReference;
     const fem::FemMaterial& material = cpu.GetMaterial();
     if (material.IsPlastic())
@@ -156,6 +160,14 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     for (const auto& program : programs)
         if (Status status = Compile(inDevice, *program.mProgram, program.mName, program.mSource); status.HasError())
             return status.GetError();
+    if (inSettings.mIntegrator == fem::EIntegrator::ImplicitEuler)
+    {
+        // intent: an explicit prop compiles and allocates nothing of the implicit step
+        Result<GpuImplicitStep> implicit = GpuImplicitStep::Create(inDevice);
+        if (implicit.HasError())
+            return implicit.GetError();
+        solver.mImplicit = std::make_unique<GpuImplicitStep>(std::move(implicit.Get()));
+    }
 
     // Per-element data that never changes.
     std::vector<Float4> rest, rotations(solver.mElementCount, Float4{0.0f, 0.0f, 0.0f, 1.0f});
@@ -219,6 +231,11 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
         return status.GetError();
     return solver;
 }
+
+GpuTetSolver::GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
+GpuTetSolver::~GpuTetSolver() = default;
+GpuTetSolver::GpuTetSolver(GpuTetSolver&& ioOther) noexcept = default;
+GpuTetSolver& GpuTetSolver::operator=(GpuTetSolver&& ioOther) noexcept = default;
 
 Status GpuTetSolver::UploadTopology(const std::vector<fem::TetIndices>& inElementNodes, const std::vector<Float4>& inPositions,
                                     const std::vector<Float4>& inVelocities, const std::vector<Float4>& inForces)
@@ -515,45 +532,90 @@ void GpuTetSolver::Reconnect()
     }
 }
 
-bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks, double& outKineticEnergy)
+void GpuTetSolver::SetElementPassUniforms(double inStiffnessDamping) const
 {
-    const double dt = inDeltaTime / inSubSteps;
-    BindAll();
-    const std::uint32_t zero[3] = {0, 0, 0};
-    mStatus.Upload(0, sizeof(zero), zero);
-    const float damping_scale = static_cast<float>(1.0 / (1.0 + mMaterial.mMassDamping * dt));
     mElementPass.Use();
     mElementPass.SetUInt("uElementCount", mElementCount);
     mElementPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
     mElementPass.SetFloat("uLambda", mLambda);
     mElementPass.SetFloat("uMu", mMu);
-    mElementPass.SetFloat("uBeta", static_cast<float>(mMaterial.mStiffnessDamping));
-    mNodePass.Use();
-    mNodePass.SetFloat("uDeltaTime", static_cast<float>(dt));
-    mNodePass.SetFloat("uDampingScale", damping_scale);
-    mNodePass.SetVec3("uGravity", mSettings.mGravity);
-    mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+    mElementPass.SetFloat("uBeta", static_cast<float>(inStiffnessDamping));
+}
+
+void GpuTetSolver::FractureAfterSubStep(int& ioBrokenLinks)
+{
+    const int opened = Fracture();
+    ioBrokenLinks += opened;
+    if (opened > 0)
+    {
+        // Fracture added nodes (and used other programs): the node pass needs the new count.
+        mNodePass.Use();
+        mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+    }
+}
+
+bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepResult& ioResult,
+                             int& ioBrokenLinks, double& outKineticEnergy)
+{
+    const double dt = inDeltaTime / inSubSteps;
+    BindAll();
+    const std::uint32_t zero[3] = {0, 0, 0};
+    mStatus.Upload(0, sizeof(zero), zero);
     if (mBreakable)
         SetFractureUniforms();
-    for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
+    bool stepped = true;
+    if (IsImplicit())
     {
-        mElementPass.Use();
-        mElementPass.Dispatch(mElementCount);
-        mNodePass.Use();
-        mNodePass.Dispatch(static_cast<std::uint32_t>(mMasses.size()));
-        if (mBreakable)
+        // intent: inSubSteps implicit steps, each followed by the fracture passes
+        SetElementPassUniforms(0.0);
+        for (int piece = 0; piece < inSubSteps && stepped; ++piece)
         {
-            const int opened = Fracture();
-            ioBrokenLinks += opened;
-            if (opened > 0)
-            {
-                // Fracture added nodes (and used other programs): the node pass needs the new count.
-                mNodePass.Use();
-                mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
-            }
+            GpuImplicitStepInput input;
+            input.mDeltaTime = dt;
+            input.mMassDamping = mMaterial.mMassDamping;
+            input.mStiffnessDamping = mMaterial.mStiffnessDamping;
+            input.mLambda = mLambda;
+            input.mMu = mMu;
+            input.mGravity = mSettings.mGravity;
+            input.mSettings = &mSettings;
+            input.mInverseMasses = mInverseMasses;
+            input.mMasses = mMasses;
+            input.mElementCount = mElementCount;
+            input.mForcePass = &mElementPass;
+            input.mPositions = &mPositions;
+            input.mVelocities = &mVelocities;
+            const GpuImplicitStepStats stats = mImplicit->Step(input);
+            mElementWork += stats.mElementPasses * mElementCount;
+            ioResult.mNewtonIterations += stats.mNewtonIterations;
+            ioResult.mSolverIterations += stats.mSolverIterations;
+            ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, stats.mSolverResidual);
+            if (!stats.mConverged)
+                ioResult.mEvents = ioResult.mEvents | fem::ETetStepEvent::SolverNotConverged;
+            stepped = stats.mAllocated && !stats.mDiverged;
+            if (stepped && mBreakable)
+                FractureAfterSubStep(ioBrokenLinks); // rebinds the node buffers a crack replaced
         }
     }
-    mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
+    else
+    {
+        SetElementPassUniforms(mMaterial.mStiffnessDamping);
+        const float damping_scale = static_cast<float>(1.0 / (1.0 + mMaterial.mMassDamping * dt));
+        mNodePass.Use();
+        mNodePass.SetFloat("uDeltaTime", static_cast<float>(dt));
+        mNodePass.SetFloat("uDampingScale", damping_scale);
+        mNodePass.SetVec3("uGravity", mSettings.mGravity);
+        mNodePass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
+        for (int sub_step = 0; sub_step < inSubSteps; ++sub_step)
+        {
+            mElementPass.Use();
+            mElementPass.Dispatch(mElementCount);
+            mNodePass.Use();
+            mNodePass.Dispatch(static_cast<std::uint32_t>(mMasses.size()));
+            if (mBreakable)
+                FractureAfterSubStep(ioBrokenLinks);
+        }
+        mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
+    }
 
     // The kinetic energy, then the step's one status read: divergence flag and energy.
     mEnergyPass.Use();
@@ -564,7 +626,7 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLi
     float energy = 0.0f;
     std::memcpy(&energy, &words[2], sizeof(energy));
     outKineticEnergy = energy;
-    return words[0] == 0 && std::isfinite(energy);
+    return stepped && words[0] == 0 && std::isfinite(energy);
 }
 
 // The GPU side of fem::TetStepper's policy: the node state saved and restored by buffer copies on the device
@@ -576,7 +638,7 @@ public:
 
     Result<int> SubStepsFor(double inDeltaTime) const override { return mSolver.SubStepCount(inDeltaTime); }
 
-    bool IsExplicit() const override { return true; }
+    bool IsExplicit() const override { return !mSolver.IsImplicit(); }
 
     Status SaveStepStart() override
     {
@@ -620,11 +682,12 @@ public:
         s.mRotations.CopyFrom(s.mSavedRotations);
     }
 
-    fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult&) override
+    fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult& ioResult) override
     {
         fem::TetStepAttempt attempt;
         mSolver.mIntegrated = true; // what the step leaves is not known without a readback
-        attempt.mDiverged = !mSolver.Integrate(inDeltaTime, inPieces, attempt.mBrokenLinks, attempt.mKineticEnergy);
+        attempt.mDiverged =
+            !mSolver.Integrate(inDeltaTime, inPieces, ioResult, attempt.mBrokenLinks, attempt.mKineticEnergy);
         return attempt;
     }
 
@@ -663,6 +726,8 @@ private:
 
 Result<int> GpuTetSolver::SubStepCount(double inDeltaTime) const
 {
+    if (IsImplicit())
+        return 1;
     const double count = std::ceil(inDeltaTime / mStableTimeStep);
     if (!(count <= static_cast<double>(mSettings.mMaxSubSteps)))
     {

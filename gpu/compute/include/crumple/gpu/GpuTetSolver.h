@@ -27,6 +27,8 @@
 namespace crumple::gpu
 {
 
+class GpuImplicitStep; // private (src/GpuImplicitStep.h)
+
 /// The tetrahedral FEM of fem::TetSolver as GLSL compute shaders (the GPU destruction paper, section IV, in
 /// compute form), in single precision: the same mesh, material and settings structs, the same symplectic
 /// Euler with the same proven stable sub-step (fem::StableTimeStep), the same corotated or St. Venant-Kirchhoff
@@ -50,12 +52,24 @@ namespace crumple::gpu
 /// Sleep as on the CPU (TetSolverSettings::mSleepSpeed, mSleepStepCount): the kinetic energy comes from a
 /// one-work-group reduction with the step's status; a sleeping prop dispatches nothing until an input changes.
 ///
-/// Not on the GPU, refused by Create with a clear message: implicit Euler and plasticity. Divergence is
-/// detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A refused input changes
-/// nothing.
+/// Implicit Euler (EIntegrator::ImplicitEuler, the default: one step per game step, stable for steel) runs
+/// as the CPU's StepImplicit does, Newton on the end velocity with the same convergence test, for the
+/// corotated model; each linear solve is a conjugate gradient preconditioned by the nodes' 3x3 diagonal
+/// blocks (block Jacobi: TetSolverSettings::mPreconditioner and mFactorRefreshIterations are the CPU's
+/// choices, the factored rest system needing sequential triangular solves), with its scalars kept on the GPU
+/// and read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep).
+/// A breakable prop runs the fracture passes after each implicit step, as after a sub-step.
+///
+/// Not on the GPU, refused by Create with a clear message: plasticity, and implicit Euler for the St.
+/// Venant-Kirchhoff model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an
+/// energy gain). A refused input changes nothing.
 class CRUMPLE_API GpuTetSolver
 {
 public:
+    ~GpuTetSolver();
+    GpuTetSolver(GpuTetSolver&& ioOther) noexcept;
+    GpuTetSolver& operator=(GpuTetSolver&& ioOther) noexcept;
+
     /// Validates like fem::TetSolver::Create and uploads the mesh. inDevice comes from a ComputeDeviceProvider.
     static Result<GpuTetSolver> Create(std::shared_ptr<ComputeDevice> inDevice, const fem::TetMesh& inMesh,
                                        const fem::FemMaterialSettings& inMaterial,
@@ -81,10 +95,11 @@ public:
     /// Replaces all node positions (m), #N.
     Status SetPositions(std::span<const Vec3> inPositions);
 
-    /// Advances by inDeltaTime (s) in ceil(dt / GetStableTimeStep()) symplectic sub-steps, refused beyond
-    /// mMaxSubSteps. A step whose state becomes NaN or Inf is retried split into 2, 4, ... as many sub-steps
-    /// (up to 2^mMaxStepSplits within mMaxSubSteps); if all fail the state is restored to the start of the
-    /// step and ETetStepEvent::Diverged is reported.
+    /// Advances by inDeltaTime (s): one implicit step, or ceil(dt / GetStableTimeStep()) symplectic
+    /// sub-steps, refused beyond mMaxSubSteps. A step whose state becomes NaN or Inf is retried split into 2,
+    /// 4, ... as many pieces (up to 2^mMaxStepSplits, explicit ones within mMaxSubSteps); if all fail the
+    /// state is restored to the start of the step and ETetStepEvent::Diverged is reported. An implicit step
+    /// reports its Newton and CG iterations and residual as the CPU's does.
     Result<fem::TetStepResult> Step(double inDeltaTime);
     /// What Step(inDeltaTime) would refuse before doing anything (a step length that is not finite and > 0, or
     /// more than mMaxSubSteps sub-steps), as fem::TetSolver::CheckStep. Changes nothing.
@@ -146,7 +161,7 @@ public:
 private:
     // Sub-steps of a step of inDeltaTime, refused beyond mMaxSubSteps.
     Result<int> SubStepCount(double inDeltaTime) const;
-    explicit GpuTetSolver(const fem::TetMesh& inMesh) : mMesh(inMesh) {}
+    explicit GpuTetSolver(const fem::TetMesh& inMesh); // out of line: mImplicit's type is private
 
     // Create() on a CPU solver already validated for this mesh, material and settings (its rest data, masses,
     // stable step and links are read from it): CreateFrom() passes the prop's own solver instead of building
@@ -156,9 +171,17 @@ private:
                                                     const fem::TetSolverSettings& inSettings,
                                                     const fem::TetSolver& inReference);
 
-    // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps, then the kinetic energy reduction; returns true
-    // when the state stayed finite and sets outKineticEnergy (J). Counts the links opened in ioBrokenLinks.
-    bool Integrate(double inDeltaTime, int inSubSteps, int& ioBrokenLinks, double& outKineticEnergy);
+    // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps (implicit: inSubSteps implicit steps, their
+    // solver statistics added to ioResult), then the kinetic energy reduction; returns true when the state
+    // stayed finite and sets outKineticEnergy (J). Counts the links opened in ioBrokenLinks.
+    bool Integrate(double inDeltaTime, int inSubSteps, fem::TetStepResult& ioResult, int& ioBrokenLinks,
+                   double& outKineticEnergy);
+    // The force pass's uniforms, with Kelvin-Voigt damping inStiffnessDamping (s; 0 for the implicit step,
+    // which carries beta in its system).
+    void SetElementPassUniforms(double inStiffnessDamping) const;
+    // The fracture passes after a sub-step or implicit step, the node count updated where links opened.
+    void FractureAfterSubStep(int& ioBrokenLinks);
+    bool IsImplicit() const { return mSettings.mIntegrator == fem::EIntegrator::ImplicitEuler; }
     // An input changed: wake up.
     void InputChanged();
     // The fracture passes after a sub-step; returns the number of links opened.
@@ -211,6 +234,7 @@ private:
     std::vector<std::uint8_t> mSavedBroken;
     std::vector<double> mSavedMasses, mSavedInverseMasses;
     ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass;
+    std::unique_ptr<GpuImplicitStep> mImplicit; // the implicit step's programs and vectors; null if explicit
     StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
         mIncident, mStatus;
     StorageBuffer mStress, mGroupOffsets, mGroupElements, mPrincipal, mLinkBuffer, mLinkFaces, mLinkNormals,

@@ -1,0 +1,41 @@
+#version 430
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// Element pass of the implicit step: the corotated stiffness K = R K0 R^T (the CPU's TetStiffnessProduct with
+// the frames the last force pass left) applied to a direction d, written per corner (the node passes gather
+// them in a fixed order): dF = dD_s D_m^-1, dP = R C:sym(R^T dF), corner products V0 dP D_m^-T (K = -df/dx).
+layout(local_size_x = 64) in;
+
+layout(std430, binding = 2) readonly buffer Elements { ivec4 elements[]; };        // current node indices
+layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };                 // 3 per element: columns
+                                                                                   // of D_m^-1, w = V0 (m^3)
+layout(std430, binding = 4) readonly buffer Rotations { vec4 rotations[]; };       // unit quaternions
+layout(std430, binding = 26) writeonly buffer Products { vec4 products[]; };       // 4 per element (N or N/s)
+layout(std430, binding = 28) readonly buffer Direction { vec4 direction[]; };      // #N (m or m/s)
+
+uniform uint uElementCount;
+uniform float uLambda; // Lame lambda (Pa)
+uniform float uMu;     // shear modulus (Pa)
+
+#include "TetMath.glsl"
+
+void main()
+{
+    uint element = gl_GlobalInvocationID.x;
+    if (element >= uElementCount)
+        return;
+    ivec4 n = elements[element];
+    mat3 rest_inverse = mat3(rest[3u * element].xyz, rest[3u * element + 1u].xyz, rest[3u * element + 2u].xyz);
+    float volume = rest[3u * element].w;
+    vec3 d0 = direction[n.x].xyz;
+    mat3 d_f = mat3(direction[n.y].xyz - d0, direction[n.z].xyz - d0, direction[n.w].xyz - d0) * rest_inverse;
+    mat3 frame = RotationMatrix(rotations[element]);
+    mat3 local = transpose(frame) * d_f;
+    mat3 d_p = frame * IsotropicStress(0.5 * (local + transpose(local)), uLambda, uMu);
+    mat3 h = volume * (d_p * transpose(rest_inverse));
+    uint base = 4u * element;
+    products[base] = vec4(-(h[0] + h[1] + h[2]), 0.0);
+    products[base + 1u] = vec4(h[0], 0.0);
+    products[base + 2u] = vec4(h[1], 0.0);
+    products[base + 3u] = vec4(h[2], 0.0);
+}

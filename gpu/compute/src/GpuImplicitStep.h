@@ -1,0 +1,90 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/base/Result.h>
+#include <crumple/fem/TetSolverSettings.h>
+#include <crumple/gpu/ComputeDevice.h>
+#include <crumple/gpu/ComputeProgram.h>
+#include <crumple/gpu/StorageBuffer.h>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace crumple::gpu
+{
+
+/// What one implicit step reads besides the buffers GpuTetSolver binds (positions, velocities, elements,
+/// rest, rotations, corners, external forces, adjacency, status at bindings 0-9).
+struct GpuImplicitStepInput
+{
+    double mDeltaTime = 0.0;                           ///< h (s)
+    double mMassDamping = 0.0;                         ///< Rayleigh alpha (1/s)
+    double mStiffnessDamping = 0.0;                    ///< Rayleigh beta (s)
+    float mLambda = 0.0f;                              ///< Lame lambda (Pa)
+    float mMu = 0.0f;                                  ///< shear modulus (Pa)
+    Vec3 mGravity = Vec3::Zero();                      ///< m/s^2, world
+    const fem::TetSolverSettings* mSettings = nullptr; ///< Newton and CG tolerances and limits
+    std::span<const double> mInverseMasses;            ///< #N host copy (1/kg), 0 = anchored
+    std::span<const double> mMasses;                   ///< #N host copy (kg)
+    std::uint32_t mElementCount = 0;                   ///< #T
+    /// The solver's force pass (TetElementForces) with its uniforms set and uBeta 0: elastic forces and the
+    /// corotated frames at the current positions
+    const ComputeProgram* mForcePass = nullptr;
+    const StorageBuffer* mPositions = nullptr;  ///< #N, copied to x0 at the start
+    const StorageBuffer* mVelocities = nullptr; ///< #N, copied to v0 at the start; the K v direction
+};
+
+/// What one implicit step did.
+struct GpuImplicitStepStats
+{
+    int mNewtonIterations = 0;        ///< Linear solves
+    int mSolverIterations = 0;        ///< Conjugate-gradient iterations, all solves
+    double mSolverResidual = 0.0;     ///< Largest final relative residual sqrt(r.z / b.Pb) of a solve
+    bool mConverged = true;           ///< Every solve and the Newton test converged
+    std::uint64_t mElementPasses = 0; ///< Element evaluations / #T (forces, products, diagonal blocks)
+    bool mAllocated = true; ///< False when the step's buffers could not be made (nothing was stepped)
+    bool mDiverged = false; ///< A residual was not finite (the step stopped there)
+};
+
+/// fem::TetSolver::StepImplicit as compute shaders: backward Euler with Rayleigh damping for the corotated
+/// model, Newton on the end velocity (forces and frames re-evaluated at x0 + h v per iteration) with the same
+/// convergence test (the energy of the remaining correction, 1/2 r.Br, against mImplicitTolerance of the
+/// step's kinetic and load energy), each linear solve a conjugate gradient preconditioned by the nodes' 3x3
+/// diagonal blocks (block Jacobi; the CPU's factored rest system needs sequential triangular solves). The
+/// scalars of an iteration stay on the GPU: the host reads them back once per Newton iteration and at CG
+/// iterations 1, 2, 4, 8, then every 8th (a sync each), so a solve may run up to 7 iterations past its
+/// tolerance. Deterministic: fixed-order gathers and reductions, no float atomics.
+class GpuImplicitStep
+{
+public:
+    /// Compiles the step's programs on inDevice.
+    static Result<GpuImplicitStep> Create(std::shared_ptr<ComputeDevice> inDevice);
+    GpuImplicitStep() = default;
+
+    /// One step from the current positions and velocities (the caller's buffers bound, see
+    /// GpuImplicitStepInput); writes the new positions and velocities and raises the status flag on a
+    /// non-finite state.
+    GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
+
+private:
+    // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
+    Status Reserve(std::size_t inNodes, std::size_t inElements);
+    // a . b into the scalars in inMode (TetDot).
+    void Dot(const StorageBuffer& inA, const StorageBuffer& inB, std::uint32_t inMode) const;
+    // One TetConjugateGradient operation over the nodes.
+    void NodeOperation(std::uint32_t inOperation) const;
+    // K inDirection into the product corners.
+    void StiffnessProduct(const StorageBuffer& inDirection) const;
+
+    std::shared_ptr<ComputeDevice> mDevice;
+    ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale;
+    StorageBuffer mStartPositions, mStartVelocities, mResidualVector, mPreconditioned, mDirection,
+        mOperatorProduct, mSolution, mBlocks, mProducts, mScalars;
+    std::size_t mNodeCount = 0, mElementCount = 0;
+    std::uint32_t mRunNodeCount = 0, mRunElementCount = 0; // of the step running
+};
+
+} // namespace crumple::gpu
