@@ -4,10 +4,10 @@
 // Node passes of the implicit step's preconditioned conjugate gradient (fem::ConjugateGradient from a zero
 // guess, block-Jacobi preconditioned) and of its Newton update, one per uOperation. The scalars (alpha, beta)
 // stay on the GPU, written by TetDot, so an iteration needs no readback:
-//   0 start:     z = B r, p = z, dv = 0
-//   1 operator:  Ap = (1 + h alpha) m p + (h^2 + h beta) K p (K p gathered from the product corners)
+//   0 start:     z = B r, p = 0, dv = 0 (with beta = 0 from TetDot's start, the first direction is z)
+//   1 operator:  p = z + beta p, Ap = (1 + h alpha) m p + (h^2 + h beta_R) K p (K p gathered from the product
+//                corners, which TetStiffnessProduct made from the same z + beta p)
 //   2 update:    dv += alpha p, r -= alpha Ap, z = B r
-//   3 direction: p = z + beta p
 //   4 advance:   v += dv, x = x0 + h v; a non-finite result raises the status flag
 // Anchored nodes (1/m = 0) keep 0 in every vector and do not move.
 layout(local_size_x = 64) in;
@@ -46,21 +46,22 @@ void main()
     float inverse_mass = positions[node].w;
     if (uOperation == 0u)
     {
-        vec3 z = Precondition(node, residual[node].xyz);
-        preconditioned[node] = vec4(z, 0.0);
-        direction[node] = vec4(z, 0.0);
+        preconditioned[node] = vec4(Precondition(node, residual[node].xyz), 0.0);
+        direction[node] = vec4(0.0);
         solution[node] = vec4(0.0);
     }
     else if (uOperation == 1u)
     {
+        vec3 p = preconditioned[node].xyz + scalars[3] * direction[node].xyz;
         vec3 ap = vec3(0.0);
         if (inverse_mass != 0.0)
         {
             vec3 kp = vec3(0.0);
             for (uint entry = offsets[node]; entry < offsets[node + 1u]; ++entry)
                 kp += products[incident[entry]].xyz;
-            ap = uMassScale / inverse_mass * direction[node].xyz + uStiffnessScale * kp;
+            ap = uMassScale / inverse_mass * p + uStiffnessScale * kp;
         }
+        direction[node] = vec4(p, 0.0);
         product[node] = vec4(ap, 0.0);
     }
     else if (uOperation == 2u)
@@ -71,8 +72,6 @@ void main()
         residual[node] = vec4(r, 0.0);
         preconditioned[node] = vec4(Precondition(node, r), 0.0);
     }
-    else if (uOperation == 3u)
-        direction[node] = vec4(preconditioned[node].xyz + scalars[3] * direction[node].xyz, 0.0);
     else if (inverse_mass != 0.0)
     {
         vec3 v = velocities[node].xyz + solution[node].xyz;

@@ -6,7 +6,7 @@
 // a fixed order (deterministic, no float atomics); invocation 0 writes the scalars. Scalars:
 //   [0] rz (current r . z), [1] the first r . z of the solve (the scale of its relative residual),
 //   [2] alpha, [3] beta, [4] 1 once a direction had no positive curvature (the solve stops there).
-// uMode 0: a solve starts (a . b = r . z): [0] = [1] = sum, [4] = 0.
+// uMode 0: a solve starts (a . b = r . z): [0] = [1] = sum, [3] = 0 (the first direction is z), [4] = 0.
 //       1: curvature p . Ap: alpha = rz / sum, or 0 and [4] = 1 when sum is not > 0.
 //       2: new r . z: beta = sum / rz (0 when rz is 0), rz = sum.
 layout(local_size_x = 256) in;
@@ -41,6 +41,7 @@ void main()
     {
         scalars[0] = total;
         scalars[1] = total;
+        scalars[3] = 0.0;
         scalars[4] = 0.0;
     }
     else if (uMode == 1u)

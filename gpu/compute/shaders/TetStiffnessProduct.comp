@@ -12,10 +12,20 @@ layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };              
 layout(std430, binding = 4) readonly buffer Rotations { vec4 rotations[]; };       // unit quaternions
 layout(std430, binding = 26) writeonly buffer Products { vec4 products[]; };       // 4 per element (N or N/s)
 layout(std430, binding = 28) readonly buffer Direction { vec4 direction[]; };      // #N (m or m/s)
+layout(std430, binding = 21) readonly buffer Preconditioned { vec4 preconditioned[]; }; // z, #N
+layout(std430, binding = 27) readonly buffer Scalars { float scalars[]; };         // [3]: beta
 
 uniform uint uElementCount;
-uniform float uLambda; // Lame lambda (Pa)
-uniform float uMu;     // shear modulus (Pa)
+uniform float uLambda;     // Lame lambda (Pa)
+uniform float uMu;         // shear modulus (Pa)
+uniform int uNewDirection; // 1: the direction is the conjugate gradient's next, z + beta p (p bound as d)
+
+// The direction at a node: d, or the next conjugate direction z + beta p (TetConjugateGradient's operator
+// pass stores the same value: one dispatch per iteration saved).
+vec3 DirectionAt(int node)
+{
+    return uNewDirection != 0 ? preconditioned[node].xyz + scalars[3] * direction[node].xyz : direction[node].xyz;
+}
 
 #include "TetMath.glsl"
 
@@ -27,8 +37,8 @@ void main()
     ivec4 n = elements[element];
     mat3 rest_inverse = mat3(rest[3u * element].xyz, rest[3u * element + 1u].xyz, rest[3u * element + 2u].xyz);
     float volume = rest[3u * element].w;
-    vec3 d0 = direction[n.x].xyz;
-    mat3 d_f = mat3(direction[n.y].xyz - d0, direction[n.z].xyz - d0, direction[n.w].xyz - d0) * rest_inverse;
+    vec3 d0 = DirectionAt(n.x);
+    mat3 d_f = mat3(DirectionAt(n.y) - d0, DirectionAt(n.z) - d0, DirectionAt(n.w) - d0) * rest_inverse;
     mat3 frame = RotationMatrix(rotations[element]);
     mat3 local = transpose(frame) * d_f;
     mat3 d_p = frame * IsotropicStress(0.5 * (local + transpose(local)), uLambda, uMu);

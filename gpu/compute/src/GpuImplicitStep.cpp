@@ -38,7 +38,6 @@ enum EOperation : std::uint32_t
     cStart = 0,
     cOperator = 1,
     cUpdate = 2,
-    cNewDirection = 3,
     cAdvance = 4,
 };
 enum EDotMode : std::uint32_t
@@ -141,10 +140,11 @@ void GpuImplicitStep::NodeOperation(std::uint32_t inOperation) const
     mConjugateGradient.Dispatch(mRunNodeCount);
 }
 
-void GpuImplicitStep::StiffnessProduct(const StorageBuffer& inDirection) const
+void GpuImplicitStep::StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const
 {
     inDirection.Bind(cProductInput);
     mProduct.Use();
+    mProduct.SetInt("uNewDirection", inNewDirection ? 1 : 0);
     mProduct.Dispatch(mRunElementCount);
 }
 
@@ -228,7 +228,7 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         const double kv_scale = (first ? h : 0.0) + inInput.mStiffnessDamping;
         if (kv_scale > 0.0)
         {
-            StiffnessProduct(*inInput.mVelocities);
+            StiffnessProduct(*inInput.mVelocities, false);
             ++stats.mElementPasses;
         }
         mResidual.Use();
@@ -279,7 +279,8 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         bool solved = !(rz > 0.0);
         while (!solved && cg_iterations < settings.mCgMaxIterations)
         {
-            StiffnessProduct(mDirection);
+            // intent: the next direction z + beta p made inside the product and operator passes
+            StiffnessProduct(mDirection, true);
             NodeOperation(cOperator);
             Dot(mDirection, mOperatorProduct, cCurvature);
             NodeOperation(cUpdate);
@@ -293,7 +294,6 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
                 if (solved || scalars[cNoCurvature] != 0.0f || !std::isfinite(relative))
                     break;
             }
-            NodeOperation(cNewDirection);
         }
         stats.mElementPasses += static_cast<std::uint64_t>(cg_iterations);
         stats.mSolverIterations += cg_iterations;

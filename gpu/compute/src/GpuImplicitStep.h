@@ -76,8 +76,8 @@ private:
     void Dot(const StorageBuffer& inA, const StorageBuffer& inB, std::uint32_t inMode) const;
     // One TetConjugateGradient operation over the nodes.
     void NodeOperation(std::uint32_t inOperation) const;
-    // K inDirection into the product corners.
-    void StiffnessProduct(const StorageBuffer& inDirection) const;
+    // K inDirection into the product corners; with inNewDirection, K (z + beta inDirection).
+    void StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const;
 
     std::shared_ptr<ComputeDevice> mDevice;
     ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale;
