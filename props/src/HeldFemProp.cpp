@@ -18,7 +18,8 @@ fem::TetSolverSettings HeldPropSolverSettings()
 
 Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
                                 std::span<const int> inAnchoredNodes, const fem::TetSolverSettings& inSolver,
-                                double inContactSpread)
+                                double inContactSpread, const FemPropSettings& inPropSettings,
+                                gpu::ComputeDeviceProvider* ioProvider)
 {
     // intent: refused, not overridden: a game that set a gravity meant something the held body cannot do
     if (!(inSolver.mGravity.array() == 0.0).all())
@@ -27,28 +28,35 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
                          "up; loose pieces fall in the engine); start from HeldPropSolverSettings()");
     if (Status radius = CheckContactSpreadRadius(inContactSpread, "MakeHeldFemProp"); radius.HasError())
         return radius.GetError();
-    Result<FemProp> prop = FemProp::Create(nullptr, inBodyMesh, inMaterial, inSolver, FemPropSettings{});
+    Result<FemProp> prop = FemProp::Create(ioProvider, inBodyMesh, inMaterial, inSolver, inPropSettings);
     if (!prop)
         return prop;
     (void)prop.Get().SetContactSpread(inContactSpread); // checked above
+    // intent: every anchor checked, then all set at once (node by node, a GPU prop would sync per node)
     for (int node : inAnchoredNodes)
-        if (Status fixed = prop.Get().SetNodeFixed(node, true); !fixed)
-            return MakeError(fixed.GetError().mCode, "MakeHeldFemProp: anchored node " + std::to_string(node) + ": " +
-                                                         fixed.GetError().mMessage);
+        if (node < 0 || node >= prop.Get().GetNodeCount())
+            return MakeError(EError::OutOfRange, "MakeHeldFemProp: anchored node " + std::to_string(node) +
+                                                     " is outside [0, " +
+                                                     std::to_string(prop.Get().GetNodeCount()) + ")");
+    if (Status fixed = prop.Get().SetNodesFixed(inAnchoredNodes, true); !fixed)
+        return MakeError(fixed.GetError().mCode, "MakeHeldFemProp: anchoring: " + fixed.GetError().mMessage);
     return prop;
 }
 
-Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
-                             std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
-                             const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
-                             const fem::TetSolverSettings& inSolver, double inContactSpread)
+Result<HeldProp>
+AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
+            std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
+            const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
+            const fem::TetSolverSettings& inSolver, double inContactSpread,
+            const FemPropSettings& inPropSettings, gpu::ComputeDeviceProvider* ioProvider)
 {
     if (!inMakeBody)
         return MakeError(EError::InvalidArgument, "AddHeldProp: no function to make the engine body");
     Result<PropBody> made = MakePropBody(inMesh, inMaterial.mDensity, inPose, true, inShapeCellSize);
     if (!made)
         return made.GetError();
-    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver, inContactSpread);
+    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver,
+                                           inContactSpread, inPropSettings, ioProvider);
     if (!prop)
         return prop.GetError();
     // intent: what AddProp would refuse of the prop itself (a failed or closed recorder) is refused before the

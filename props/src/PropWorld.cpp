@@ -261,6 +261,7 @@ bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ++(sleeping ? ioFlight.mReport.mSleeping : ioFlight.mReport.mStepped);
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
+    ioFlight.mReport.mNotConverged += fem::HasEvent(events, fem::ETetStepEvent::SolverNotConverged) ? 1 : 0;
     prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
     prop.mSteppedMass = mSettings.mContactMass ? UpdateContactMass(prop, ioFlight.mDeltaTime) : 0.0;
     return !sleeping;

@@ -35,6 +35,8 @@ struct FenceDriveSettings
     double mDuration = 0.6;        ///< Simulated time (s)
     fem::TetSolverSettings mSolver = props::HeldPropSolverSettings(); ///< The fence FEM's solver
     double mContactSpread = 0.0;   ///< The fence FEM's contact spread radius (m; FemProp::SetContactSpread)
+    props::EFemBackend mBackend = props::EFemBackend::Cpu; ///< Where the fence's FEM runs (asked)
+    gpu::ComputeDeviceProvider* mProvider = nullptr;       ///< The device for mBackend Gpu (none: the CPU)
 };
 
 /// What a drive through the fence did, and what it cost.
@@ -62,6 +64,8 @@ struct FenceRun
     double mHandOverCpuMs = 0.0; ///< Of it HeldPropBodies::Update: velocity, pieces and their bodies, shape
     double mWallMs = 0.0;        ///< Wall time of the steps
     double mPrepareCpuMs = 0.0;  ///< PropWorld::Prepare before the drive (level load; not in the steps)
+    props::EFemBackend mBackend = props::EFemBackend::Cpu; ///< Where the fence's FEM ran
+    int mNotConverged = 0; ///< Steps whose implicit solve stopped at its iteration limits
 };
 
 /// A 4 m wooden fence across the car's path: 5 cm planks in cubes of 2.5 cm (two across each plank: fracture
@@ -139,9 +143,10 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         if (!inSettings.mBreakable)
             wood.Get().mMaterial.mTensileStrength = std::numeric_limits<double>::infinity();
         Result<props::HeldProp> added = props::AddHeldProp(
-            props, fence.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes, DriveThroughFencePose(), cShapeSize,
-            [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); }, inSettings.mSolver,
-            inSettings.mContactSpread);
+            props, fence.Get().mMesh, wood.Get().mMaterial, fence.Get().mGroundNodes, DriveThroughFencePose(),
+            cShapeSize, [&](const plugin::PropBodySettings& inBody) { return scene.MakePropBody(inBody); },
+            inSettings.mSolver, inSettings.mContactSpread, {.mBackend = inSettings.mBackend, .mLog = nullptr},
+            inSettings.mProvider);
         if (!added)
             return added.GetError();
         fence_body = added.Get().mBody;
@@ -173,6 +178,7 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
                 return stepped.GetError();
             const double hand_over_start = ThreadCpuMs();
             run.mPropsCpuMs += hand_over_start - props_start;
+            run.mNotConverged += stepped.Get().mNotConverged;
             props::HeldPropUpdate update;
             run.mPiecesAccepted = held.Get().Update(stepped.Get(), update).IsValid() && run.mPiecesAccepted;
             run.mHandOverCpuMs += ThreadCpuMs() - hand_over_start;
@@ -199,7 +205,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     {
         run.mFenceMoved = (scene.GetDamage().GetBodyState(fence_body)->mCenterOfMass - fence_position).norm();
         run.mFenceImpulse = ImpulseOnBody(scene.GetCounter().mLog, fence_body).x();
-        run.mBrokenLinks = props.GetProp(fence_prop)->GetCpuSolver()->GetBrokenLinkCount();
+        run.mBrokenLinks = props.GetProp(fence_prop)->GetBrokenLinkCount();
+        run.mBackend = props.GetProp(fence_prop)->GetBackend();
         run.mRevision = props.GetShapeRevision(fence_prop);
     }
     return run;

@@ -4,12 +4,14 @@
 // the GPU lacks) runs on the CPU with its reason logged and visible, and bad input is an error either way.
 #include <crumple/fem/TetGrid.h>
 #include <crumple/props/FemProp.h>
+#include <crumple/props/HeldFemProp.h>
 #if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
 #include <crumple/gpu/ComputeDevice.h>
 #endif
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -206,4 +208,54 @@ TEST_CASE("FemProp takes a dispatched collision on either backend and reports it
     if (results.size() == 2)
         for (std::size_t node = 0; node < results[0].size(); ++node)
             CHECK((results[1][node] - results[0][node]).norm() < 1e-5);
+}
+
+TEST_CASE("MakeHeldFemProp on the GPU: anchored as on the CPU, a struck wall moves as the CPU's", "[props]")
+{
+    Devices provider;
+    // A 1 m x 0.2 m x 1 m wall of 0.2 m cubes standing on its footings (z = 0), the held prop's implicit
+    // solver.
+    TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.2, 1.0);
+    grid.mCellCount = {5, 1, 5};
+    const TetMesh mesh = TetGrid(grid).Get();
+    std::vector<int> footings;
+    for (int node = 0; node < mesh.GetNodeCount(); ++node)
+        if (mesh.GetRestPositions()[static_cast<std::size_t>(node)].z() < 1.0e-9)
+            footings.push_back(node);
+    FemMaterialSettings material = Soft();
+    Result<FemProp> on_gpu = MakeHeldFemProp(mesh, material, footings, HeldPropSolverSettings(), 0.0,
+                                             {.mBackend = EFemBackend::Gpu, .mLog = nullptr}, provider.Get());
+    REQUIRE(on_gpu.IsValid());
+    if (on_gpu.Get().GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << on_gpu.Get().GetFallbackReason());
+        return;
+    }
+    FemProp on_cpu = MakeHeldFemProp(mesh, material, footings).Get();
+    REQUIRE(on_cpu.GetBackend() == EFemBackend::Cpu);
+    CHECK(on_gpu.Get().GetInverseMasses() ==
+          on_cpu.GetInverseMasses()); // the footings, and only they, anchored
+    CHECK(std::count(on_cpu.GetInverseMasses().begin(), on_cpu.GetInverseMasses().end(), 0.0) ==
+          static_cast<std::ptrdiff_t>(footings.size()));
+
+    const int struck = mesh.GetNodeCount() - 1; // a top corner
+    for (FemProp* prop : {&on_gpu.Get(), &on_cpu})
+    {
+        REQUIRE(prop->ApplyImpulse(struck, Vec3(0.0, 20.0, 0.0)).IsValid());
+        for (int step = 0; step < 10; ++step)
+            REQUIRE(prop->Step(1.0 / 60.0).IsValid());
+    }
+    std::vector<Vec3> gpu_positions, cpu_positions;
+    on_gpu.Get().ReadPositions(gpu_positions);
+    on_cpu.ReadPositions(cpu_positions);
+    double gap = 0.0, motion = 0.0;
+    for (std::size_t node = 0; node < gpu_positions.size(); ++node)
+    {
+        gap = std::max(gap, (gpu_positions[node] - cpu_positions[node]).norm());
+        motion = std::max(motion, (cpu_positions[node] - mesh.GetRestPositions()[node]).norm());
+    }
+    INFO("gap " << gap << " m over " << motion << " m of motion");
+    REQUIRE(motion > 1.0e-3);
+    CHECK(gap < 1.0e-3 * motion); // float against double, as the bar above
 }

@@ -23,16 +23,21 @@ namespace crumple::props
 CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
 
 /// The FEM of a prop whose engine body is held (PropBodySettings::mHeld, a fence or a barrier anchored to the
-/// ground): a CPU prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
+/// ground): a prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
 /// zero, as in HeldPropSolverSettings()) and the nodes of inAnchoredNodes fixed (its footings:
 /// TetFence::mGroundNodes), spreading each contact's impulse over inContactSpread (FemProp::SetContactSpread,
 /// m; 0: the containing element's nodes). Refused, in this order: a gravity that is not zero; a spread radius
 /// that is not finite and >= 0; the first reason for a mesh, material or solver settings FemProp::Create
-/// refuses; an anchored node out of range.
-CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMaterialSettings& inMaterial,
+/// refuses; an anchored node out of range. inPropSettings and ioProvider choose the backend as for
+/// FemProp::Create (the CPU by default; a GPU request without a device, or for what the GPU solver lacks,
+/// runs on the CPU and says why); the anchors are set in one SetNodesFixed (one read and write on the GPU).
+CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh,
+                                            const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes,
                                             const fem::TetSolverSettings& inSolver = HeldPropSolverSettings(),
-                                            double inContactSpread = 0.0);
+                                            double inContactSpread = 0.0,
+                                            const FemPropSettings& inPropSettings = {},
+                                            gpu::ComputeDeviceProvider* ioProvider = nullptr);
 
 /// A held prop that AddHeldProp put in a PropWorld.
 struct CRUMPLE_API HeldProp
@@ -43,16 +48,18 @@ struct CRUMPLE_API HeldProp
 };
 
 /// Everything that puts a prop anchored to the ground into a game: MakePropBody (held, shape of cubes of
-/// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed), the
-/// engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The FEM is
-/// made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine body, so
-/// bad input (mesh, material, solver settings, pose, anchors) or state creates nothing; a body that inMakeBody made stays the
-/// adapter's only if AddProp still refuses it (an adapter of another world, or a write error).
-/// inSolver and inContactSpread: the FEM's solver settings and contact spread radius, as for MakeHeldFemProp.
-CRUMPLE_API Result<HeldProp> AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
-                                         std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
-                                         const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
-                                         const fem::TetSolverSettings& inSolver = HeldPropSolverSettings(),
-                                         double inContactSpread = 0.0);
+/// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed),
+/// the engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The
+/// FEM is made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine
+/// body, so bad input (mesh, material, solver settings, pose, anchors) or state creates nothing; a body that
+/// inMakeBody made stays the adapter's only if AddProp still refuses it (an adapter of another world, or a
+/// write error). inSolver, inContactSpread, inPropSettings and ioProvider: the FEM's solver settings, contact
+/// spread radius and backend, as for MakeHeldFemProp.
+CRUMPLE_API Result<HeldProp>
+AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
+            std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
+            const std::function<Result<plugin::BodyId>(const plugin::PropBodySettings&)>& inMakeBody,
+            const fem::TetSolverSettings& inSolver = HeldPropSolverSettings(), double inContactSpread = 0.0,
+            const FemPropSettings& inPropSettings = {}, gpu::ComputeDeviceProvider* ioProvider = nullptr);
 
 } // namespace crumple::props

@@ -37,6 +37,8 @@ struct CRUMPLE_API PropStepReport
     int mSleeping = 0;   ///< Props that were asleep and did nothing (no element work)
     int mFractured = 0;  ///< Props in which links broke this step
     int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
+    int mNotConverged = 0; ///< Props whose implicit solve stopped at its iteration limits and was kept
+                           ///< (fem::ETetStepEvent::SolverNotConverged)
 };
 
 /// Where the hand-over's answers came from (PropWorld::GetHandOverStats). Off the game's thread the step's
