@@ -19,7 +19,8 @@ int main(int argc, char** argv)
         {"frame_budget", RunFrameBudgetBenchmarks},
         {"fem", RunFemBenchmarks}, {"fem_refresh", RunFemRefreshBenchmarks}, {"contact_mass", RunContactMassBenchmarks},
         {"fem_vs_bullet", RunFemVsBulletBenchmarks},
-        {"barrier", RunBarrierBenchmarks}, {"props", RunPropBenchmarks}, {"crush", RunCrushBenchmarks},
+        {"barrier", RunBarrierBenchmarks}, {"props", RunPropBenchmarks}, {"props_gpu", RunPropGpuBenchmarks},
+        {"crush", RunCrushBenchmarks},
         {"gpu", RunGpuBenchmarks}};
     BenchOptions options;
     std::string csv, only;

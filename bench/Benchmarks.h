@@ -68,6 +68,10 @@ void RunBarrierBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// the conjugate-gradient tolerance at 1e-6, 1e-7 and 1e-8 and with the factor refresh, links broken and the
 /// car's loss of speed of each; error: the spread of that loss. Empty without crumple::props or an engine.
 void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+/// The same 64 km/h drive-through in Bullet with the fence's FEM on the CPU and on the GPU backend (llvmpipe
+/// where there is no GPU), alternated: game-thread CPU per step, the FEM's share, wall time, links broken and
+/// pieces; error: the GPU's car loss of speed against the CPU's. Empty, with a note, without a device.
+void RunPropGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// Full-width rigid-wall crashes of the box car and the shipped meshes in Bullet and ODE at 20-64 km/h with the
 /// default material: median run time of a 0.3 s crash against the worst crush error relative to Campbell's law

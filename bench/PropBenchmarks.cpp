@@ -10,6 +10,9 @@
 #if defined(CRUMPLE_BENCH_ODE)
 #include "OdeWallCrash.h"
 #endif
+#if defined(CRUMPLE_BENCH_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#endif
 #endif
 
 #include <algorithm>
@@ -156,6 +159,56 @@ void RunFenceContactMass(const char* inEngine, BenchTable& ioTable)
              ";whole_mass_fence_impulse_n_s=" + FormatExtra(whole_run.mFenceImpulse)});
 }
 
+#if defined(CRUMPLE_BENCH_GPU)
+// The 64 km/h drive-through with the fence's FEM on the CPU (double, factored rest system) and on the GPU
+// (float, block-Jacobi conjugate gradient; llvmpipe where there is no GPU), one 0.3 s run each (llvmpipe
+// takes seconds per step of this 17,600-tet fence), CPU first: the game thread's CPU per step and the FEM's
+// share of it, wall time per step, the outcome of each. Error: the GPU's car loss of speed against the CPU's,
+// relative.
+template <class Scene>
+void RunFenceBackends(const char* inEngine, gpu::ComputeDeviceProvider& ioProvider, BenchTable& ioTable)
+{
+    common::FenceDriveSettings cpu;
+    cpu.mDuration = 0.3;
+    common::FenceDriveSettings on_gpu = cpu;
+    on_gpu.mBackend = props::EFemBackend::Gpu;
+    on_gpu.mProvider = &ioProvider;
+    common::FenceRun runs[2];
+    for (int side = 0; side < 2; ++side)
+    {
+        const Result<common::FenceRun> run = common::DriveThroughFence<Scene>(side == 0 ? cpu : on_gpu);
+        if (!run)
+        {
+            std::printf("fence_backend/%s: %s\n", inEngine, run.GetError().mMessage.c_str());
+            return;
+        }
+        runs[side] = run.Get();
+    }
+    if (runs[1].mBackend != props::EFemBackend::Gpu)
+    {
+        std::printf("fence_backend/%s: the fence ran on the CPU (no device)\n", inEngine);
+        return;
+    }
+    const double cpu_loss = runs[0].mSpeedBefore - runs[0].mSpeedAfter;
+    for (int side = 0; side < 2; ++side)
+    {
+        const common::FenceRun& run = runs[side];
+        const double loss = run.mSpeedBefore - run.mSpeedAfter;
+        ioTable.Add(
+            {"fence_backend", std::string(inEngine) + "/wood_fence/64kmh/" + (side == 0 ? "cpu" : "gpu"),
+             run.mWallMs / run.mSteps, side == 0 ? 0.0 : (loss - cpu_loss) / cpu_loss, "rel_car_loss_vs_cpu",
+             "game_thread_cpu_ms_per_step=" + FormatExtra(run.mStepCpuMs / run.mSteps) +
+                 ";fem_game_thread_cpu_ms_per_step=" + FormatExtra(run.mPropsCpuMs / run.mSteps) +
+                 ";worst_step_cpu_ms=" + FormatExtra(run.mWorstStepCpuMs) + ";tets=" +
+                 std::to_string(run.mFenceTets) + ";links_broken=" + std::to_string(run.mBrokenLinks) +
+                 ";pieces_loose=" + std::to_string(run.mLoose) +
+                 ";steps_not_converged=" + std::to_string(run.mNotConverged) + "_of_" +
+                 std::to_string(run.mSteps) + ";car_loss_m_s=" + FormatExtra(loss) +
+                 (side == 1 ? ";device=" + ioProvider.Acquire().Get()->GetDescription() : std::string())});
+    }
+}
+#endif
+
 } // namespace
 #endif
 
@@ -178,6 +231,21 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
             RunFenceSpread<common::OdeWallCrash>("ode", spread, ioTable);
         RunFenceContactMass<common::OdeWallCrash>("ode", ioTable);
     }
+#endif
+    (void)ioTable;
+    (void)inOptions;
+}
+
+void RunPropGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
+{
+#if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_GPU) && defined(CRUMPLE_BENCH_BULLET)
+    gpu::ComputeDeviceProvider provider;
+    if (Result<std::shared_ptr<gpu::ComputeDevice>> device = provider.Acquire(); device.HasError())
+        std::printf("fence_backend: skipped, no compute device: %s\n", device.GetError().mMessage.c_str());
+    else
+        RunFenceBackends<common::BulletWallCrash>("bullet", provider, ioTable);
+#else
+    std::printf("fence_backend: skipped: this build has no GPU backend, no props or no Bullet\n");
 #endif
     (void)ioTable;
     (void)inOptions;
