@@ -29,15 +29,6 @@ namespace
 constexpr double cFrameTime = 1.0 / 60.0; ///< One game step (s)
 constexpr int cSteps = 10;                ///< Steps from the sudden load (fem_realtime's measure)
 
-// Mean downward displacement of the tip nodes (m).
-double TipDeflection(const common::CantileverScene& inBeam, const std::vector<Vec3>& inPositions)
-{
-    double sum = 0.0;
-    for (int node : inBeam.GetTipNodes())
-        sum += inBeam.GetSolver().GetMesh().GetRestPositions()[node].z() - inPositions[node].z();
-    return sum / static_cast<double>(inBeam.GetTipNodes().size());
-}
-
 common::CantileverSettings BeamSettings(int inLengthCells, int inSectionCells,
                                         fem::EImplicitPreconditioner inPreconditioner)
 {
@@ -123,7 +114,7 @@ void RunGpuImplicitCases(BenchTable& ioTable, const BenchOptions& inOptions,
         std::vector<Vec3> gpu_positions;
         gpu.Get().ReadPositions(gpu_positions);
         const double tips[3] = {factored.TipDeflection(), jacobi.TipDeflection(),
-                                TipDeflection(factored, gpu_positions)};
+                                factored.TipDeflection(gpu_positions)};
         const char* names[3] = {"cpu_double/factored", "cpu_double/block_jacobi", "gpu_float/block_jacobi"};
         const int tets = factored.GetSolver().GetMesh().GetTetCount();
         const double factored_ms =

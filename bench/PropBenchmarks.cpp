@@ -239,6 +239,12 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 void RunPropGpuBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 {
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_GPU) && defined(CRUMPLE_BENCH_BULLET)
+    if (inOptions.mQuick)
+    {
+        // intent: the smoke run stays short; llvmpipe takes minutes for this drive
+        std::printf("fence_backend: skipped with --quick (minutes on a software device)\n");
+        return;
+    }
     gpu::ComputeDeviceProvider provider;
     if (Result<std::shared_ptr<gpu::ComputeDevice>> device = provider.Acquire(); device.HasError())
         std::printf("fence_backend: skipped, no compute device: %s\n", device.GetError().mMessage.c_str());

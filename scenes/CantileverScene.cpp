@@ -65,12 +65,16 @@ Result<CantileverScene> CantileverScene::Create(const CantileverSettings& inSett
 
 double CantileverScene::TipDeflection() const
 {
+    return TipDeflection(mSolver.GetPositions());
+}
+
+double CantileverScene::TipDeflection(std::span<const Vec3> inPositions) const
+{
     double deflection = 0.0;
     for (std::size_t i = 0; i < mTip.size(); ++i)
     {
         const int node = mTip[i];
-        deflection -=
-            mWeights[i] * (mSolver.GetPositions()[node].z() - mSolver.GetMesh().GetRestPositions()[node].z());
+        deflection -= mWeights[i] * (inPositions[node].z() - mSolver.GetMesh().GetRestPositions()[node].z());
     }
     return deflection;
 }

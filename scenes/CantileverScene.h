@@ -4,6 +4,7 @@
 
 #include <crumple/fem/TetSolver.h>
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -42,6 +43,8 @@ public:
 
     /// Area-weighted mean vertical displacement of the tip face (m, positive down)
     double TipDeflection() const;
+    /// The same of inPositions (#N, m: another solver's state of this beam, e.g. read back from the GPU)
+    double TipDeflection(std::span<const Vec3> inPositions) const;
 
     /// The beam's solver: step it, solve statics, read positions
     fem::TetSolver& GetSolver() { return mSolver; }
