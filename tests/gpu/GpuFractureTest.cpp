@@ -4,6 +4,7 @@
 // out, and a wall hit on the GPU breaks where it is hit, the same way every run.
 #include <crumple/fem/TetGrid.h>
 #include "GpuTestDevice.h"
+#include "GpuTestScenes.h"
 
 #include <crumple/gpu/GpuTetSolver.h>
 
@@ -98,22 +99,9 @@ TEST_CASE("GPU fracture: a wall hit at one spot breaks there as on the CPU, the 
     // the front face of cell (7, 0, 3).
     auto run = [&](std::vector<TetFragment>& outFragments, std::vector<std::uint8_t>& outBroken, bool inGpu)
     {
-        TetGridSettings grid;
-        grid.mSize = Vec3(2.0, 0.2, 1.0);
-        grid.mCellCount = {10, 1, 5};
-        FemMaterialSettings material = BrittleMaterial(EFractureMode::CrackPlane);
-        material.mYoungsModulus = 1.0e10;
-        material.mPoissonRatio = 0.2;
-        material.mMassDamping = 2.0;
         TetSolverSettings settings = Explicit();
         settings.mGravity = Vec3(0.0, 0.0, -9.81);
-        TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
-        for (int i = 0; i <= 10; ++i)
-            for (int j = 0; j <= 1; ++j)
-                REQUIRE(cpu.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
-        for (int k = 3; k <= 4; ++k)
-            for (int i = 7; i <= 8; ++i)
-                REQUIRE(cpu.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 25.0, 0.0)).IsValid());
+        TetSolver cpu = test::StruckBrittleWall(settings, 100.0);
         if (inGpu)
         {
             GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();

@@ -5,8 +5,7 @@
 // exists; skips without EGL.
 #include "CantileverScene.h"
 #include "GpuTestDevice.h"
-
-#include <BrittleMaterial.h>
+#include "GpuTestScenes.h"
 
 #include <crumple/fem/TetGrid.h>
 #include <crumple/gpu/GpuTetSolver.h>
@@ -15,7 +14,6 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -24,18 +22,8 @@ using namespace crumple::gpu;
 namespace
 {
 
-// A 0.6 m x 0.2 m x 0.2 m bar of 6 x 2 x 2 cubes clamped at x = 0, implicit, sleep off.
-TetSolver ClampedBar(const FemMaterialSettings& inMaterial, const TetSolverSettings& inSettings)
-{
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.2, 0.2);
-    grid.mCellCount = {6, 2, 2};
-    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), inMaterial, inSettings).Get();
-    for (int k = 0; k <= 2; ++k)
-        for (int j = 0; j <= 2; ++j)
-            REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
-    return solver;
-}
+using test::ClampedBar;
+using test::MaxDistance;
 
 FemMaterialSettings Soft()
 {
@@ -56,16 +44,8 @@ TetSolverSettings Implicit()
 }
 
 // The tip corner node and an impulse that bends and twists the bar (N s).
-constexpr int cTipNode = 6 + 7 * (2 + 3 * 2); // node (6, 2, 2)
+constexpr int cTipNode = test::cBarTipNode;
 const Vec3 cHit(1.5, -10.0, 20.0);
-
-double MaxDistance(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    double largest = 0.0;
-    for (std::size_t node = 0; node < inA.size(); ++node)
-        largest = std::max(largest, (inA[node] - inB[node]).norm());
-    return largest;
-}
 
 } // namespace
 
@@ -184,22 +164,7 @@ TEST_CASE("GPU implicit step: a wall hit at one spot at a game step breaks there
     // explicit test's 100 N s cracks nothing within an implicit step (it reaches the whole wall at once).
     // Measured: the same 11 links open on both. At 8 kN s the float and double runs part (38 and 41 links,
     // 36 in both): a crack that opens changes the next stress, so the paths diverge past the first cracks.
-    TetGridSettings grid;
-    grid.mSize = Vec3(2.0, 0.2, 1.0);
-    grid.mCellCount = {10, 1, 5};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
-    material.mMassDamping = 2.0;
-    TetSolverSettings settings = Implicit();
-    TetSolver cpu = TetSolver::Create(TetGrid(grid).Get(), material, settings).Get();
-    for (int i = 0; i <= 10; ++i)
-        for (int j = 0; j <= 1; ++j)
-            REQUIRE(cpu.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
-    for (int k = 3; k <= 4; ++k)
-        for (int i = 7; i <= 8; ++i)
-            REQUIRE(
-                cpu.ApplyImpulse(TetGridNode(grid.mCellCount, i, 0, k), Vec3(0.0, 1000.0, 0.0)).IsValid());
+    TetSolver cpu = test::StruckBrittleWall(Implicit(), 4000.0);
     const auto run_gpu = [&]
     {
         GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
@@ -240,37 +205,12 @@ TEST_CASE("GPU implicit step: random blows up to 1e5 N s at 1/30 s never leave a
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     TetSolver cpu = ClampedBar(Soft(), Implicit());
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
-    std::mt19937_64 random(11);
-    std::vector<Vec3> positions, previous;
-    gpu.ReadPositions(previous);
-    int diverged = 0, moved = 0;
-    for (int step = 0; step < 20; ++step)
-    {
-        const double magnitude = std::pow(10.0, -3.0 + 8.0 * static_cast<double>(random() >> 11) * 0x1.0p-53);
-        const int node = static_cast<int>(random() % static_cast<std::uint64_t>(gpu.GetNodeCount()));
-        REQUIRE(gpu.ApplyImpulse(node, magnitude * Vec3(0.6, -0.48, 0.64)).IsValid());
-        const Result<TetStepResult> stepped = gpu.Step(1.0 / 30.0);
-        REQUIRE(stepped.IsValid());
-        diverged += HasEvent(stepped.Get().mEvents, ETetStepEvent::Diverged) ? 1 : 0;
-        gpu.ReadPositions(positions);
-        for (const Vec3& x : positions)
-            REQUIRE(IsFinite(x));
-        moved += positions != previous ? 1 : 0;
-        previous = positions;
-    }
-    INFO(diverged << " of 20 steps diverged (restored), " << moved << " moved the bar");
-    CHECK(diverged <= 2);
-    CHECK(moved >= 18);
-
+    const test::BlowCounts blows = test::RandomBlows(gpu, 1.0 / 30.0, 11);
+    INFO(blows.mDiverged << " of 20 steps diverged (restored), " << blows.mMoved << " moved the bar");
+    CHECK(blows.mDiverged <= 2);
+    CHECK(blows.mMoved >= 18);
     // 1e30 N s overflows float: the step is retried, then restored bit for bit and reported.
-    std::vector<Vec3> before, after;
-    gpu.ReadPositions(before);
-    REQUIRE(gpu.ApplyImpulse(cTipNode, Vec3(0.0, 0.0, 1.0e30)).IsValid());
-    const Result<TetStepResult> blown = gpu.Step(1.0 / 60.0);
-    REQUIRE(blown.IsValid());
-    CHECK(HasEvent(blown.Get().mEvents, ETetStepEvent::Diverged));
-    gpu.ReadPositions(after);
-    CHECK(after == before);
+    test::CheckBlowUpRestored(gpu, cTipNode);
 }
 
 TEST_CASE("GPU implicit step: the same inputs give bitwise the same state", "[gpu]")

@@ -6,5 +6,6 @@ crumple_add_test(gpu
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
     gpu/GpuImplicitStepTest.cpp
+    gpu/GpuTestScenes.cpp
     gpu/GpuTetSolverTest.cpp
     LINK crumple::gpu crumple_scenes_fem)
