@@ -300,6 +300,35 @@ TEST_CASE("PropWorld::Prepare factors every implicit prop ahead of its first hit
     CHECK(solver.GetFactorizationCount() == 1);
 }
 
+TEST_CASE("PropWorld::Step counts the props whose implicit solve stopped at its limits", "[props]")
+{
+    // The same hit on two anchored panels: one solved to its tolerances, one allowed a single CG iteration
+    // with block Jacobi (which cannot converge in one), so only the second is reported.
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    TetSolverSettings starved;
+    starved.mGravity = Vec3::Zero();
+    starved.mPreconditioner = EImplicitPreconditioner::BlockJacobi;
+    starved.mCgMaxIterations = 1;
+    FemProp limited = FemProp::Create(nullptr, test::WallPanelMesh({1, 10, 10}), FemMaterialSettings{}, starved,
+                                      FemPropSettings{})
+                          .Get();
+    FemProp solved = Panel(true);
+    for (int node = 0; node < solved.GetNodeCount(); ++node)
+        if (solved.GetInverseMasses()[static_cast<std::size_t>(node)] == 0.0)
+            REQUIRE(limited.SetNodeFixed(node, true).IsValid());
+    const int struck = solved.GetNodeCount() - 1;
+    REQUIRE(solved.ApplyImpulse(struck, Vec3(10.0, 0.0, 0.0)).IsValid());
+    REQUIRE(limited.ApplyImpulse(struck, Vec3(10.0, 0.0, 0.0)).IsValid());
+    REQUIRE(props->AddProp(fixture.mWall, std::move(solved)).IsValid());
+    REQUIRE(props->AddProp(fixture.mFloor, std::move(limited)).IsValid());
+    const Result<PropStepReport> stepped = props->Step(1.0 / 60.0);
+    REQUIRE(stepped.IsValid());
+    CHECK(stepped.Get().mStepped == 2);
+    CHECK(stepped.Get().mDiverged == 0);
+    CHECK(stepped.Get().mNotConverged == 1);
+}
+
 TEST_CASE("PropWorld::Step refuses a step one prop cannot take before any prop steps or a recording takes it", "[props]")
 {
     common::WorldFixture fixture;
