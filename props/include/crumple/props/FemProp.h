@@ -32,8 +32,9 @@ CRUMPLE_API bool HasGpuBackend();
 enum class EFemBackend : std::uint8_t
 {
     Cpu, ///< fem::TetSolver, double precision: every feature
-    Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic Euler, elasticity and damping (only in
-         ///< builds with crumple::gpu; elsewhere a GPU request runs on the CPU with that reason)
+    Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic and implicit Euler (implicit for the
+         ///< corotated model), elasticity, damping and fracture, no plasticity (only in builds with
+         ///< crumple::gpu; elsewhere a GPU request runs on the CPU with that reason)
 };
 
 /// Short name of an EFemBackend, for messages.
@@ -86,7 +87,7 @@ public:
     Result<fem::TetStepResult> Step(double inDeltaTime);
     /// What Step(inDeltaTime) would refuse before doing anything (fem::TetSolver::CheckStep). Changes nothing.
     Status CheckStep(double inDeltaTime) const;
-    /// fem::TetSolver::Prepare on the CPU (the GPU solver has nothing to prepare: it only checks the step)
+    /// fem::TetSolver::Prepare on the CPU (the GPU solver factors nothing: it only checks the step)
     Status Prepare(double inDeltaTime);
     /// How far each contact's impulse spreads over the prop's nodes (ContactSpread::mRadius, m, finite, >= 0;
     /// 0, the default: the containing element's four nodes). Set it before the prop is recorded (PropWorld::

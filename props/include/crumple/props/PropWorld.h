@@ -230,8 +230,8 @@ public:
     /// ones, weighted as it weighs them, along the direction they were struck, at the state after the last
     /// landed step and for that step's length. 0 while PropWorldSettings::mContactMass is off, where
     /// GetContactVelocity is zero for want of struck nodes (nothing struck the prop yet, it sleeps, the
-    /// struck nodes left with a piece or are anchored), for a GPU prop (its solver has no implicit system to
-    /// weigh), where the solve did not converge, or for an unknown prop. A held prop body stands for the
+    /// struck nodes left with a piece or are anchored), for a GPU prop (the effective-mass solve is the CPU
+    /// solver's), where the solve did not converge, or for an unknown prop. A held prop body stands for the
     /// whole prop: give this to the adapter's SetHeldMass after each Step, with the velocity, so that the
     /// engine's next contact takes from the car what the FEM's step will give the struck members. A rail
     /// half-way between posts weighs a fraction of the fence; one beside a post, many times the fence.
