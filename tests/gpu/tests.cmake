@@ -6,6 +6,7 @@ crumple_add_test(gpu
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
     gpu/GpuImplicitStepTest.cpp
+    gpu/GpuPlasticityTest.cpp
     gpu/GpuTestScenes.cpp
     gpu/GpuTetSolverTest.cpp
     LINK crumple::gpu crumple_scenes_fem)

@@ -3,8 +3,8 @@
 // SPDX-License-Identifier: MIT
 // Element pass (the paper's "finite element update", section IV.A, in compute form): per tetrahedron the
 // deformation gradient F = D_s D_m^-1, the corotated frame R (warm-started polar decomposition, the CPU's
-// PolarRotation in float) or none (St. Venant-Kirchhoff), the first Piola-Kirchhoff stress of the elastic and
-// viscous strain, and the four corner forces -V0 P D_m^-T, written per corner (no float atomics: the node
+// PolarRotation in float) or none (St. Venant-Kirchhoff), the first Piola-Kirchhoff stress of the elastic
+// (less the plastic) and viscous strain, and the four corner forces -V0 P D_m^-T, written per corner (no float atomics: the node
 // pass gathers them in a fixed order).
 layout(local_size_x = 64) in;
 
@@ -15,12 +15,14 @@ layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };             /
                                                                                // D_m^-1; rest[3e].w = V0 (m^3)
 layout(std430, binding = 4) buffer Rotations { vec4 rotations[]; };            // unit quaternion (x, y, z, w)
 layout(std430, binding = 5) writeonly buffer Corners { vec4 corners[]; };      // 4 per element: force (N)
+layout(std430, binding = 31) readonly buffer PlasticStrains { vec4 plasticStrains[]; }; // 3 per element
 
 uniform uint uElementCount;
 uniform int uCorotated;   // 1: corotated linear, 0: St. Venant-Kirchhoff
 uniform float uLambda;    // Lame lambda (Pa)
 uniform float uMu;        // shear modulus (Pa)
 uniform float uBeta;      // Rayleigh stiffness damping (s); 0 = none
+uniform int uPlastic;     // 1: subtract each element's plastic strain (in the model's frame)
 
 #include "TetMath.glsl"
 
@@ -51,6 +53,9 @@ void main()
         frame = f;
         strain = 0.5 * (transpose(f) * f - mat3(1.0));
     }
+    if (uPlastic != 0)
+        strain -= mat3(plasticStrains[3u * element].xyz, plasticStrains[3u * element + 1u].xyz,
+                       plasticStrains[3u * element + 2u].xyz);
     mat3 p = frame * IsotropicStress(strain, uLambda, uMu);
 
     // Kelvin-Voigt viscous stress beta C:strain_rate in the same frame.

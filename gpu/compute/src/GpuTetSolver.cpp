@@ -122,9 +122,6 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
             "Venant-Kirchhoff");
     const fem::TetSolver& cpu = inReference;
     const fem::FemMaterial& material = cpu.GetMaterial();
-    if (material.IsPlastic())
-        return MakeError(EError::InvalidArgument, "GpuTetSolver: plasticity is not implemented on the GPU; use the "
-                                                  "CPU solver for a plastic material");
 
     GpuTetSolver solver(inMesh);
     solver.mDevice = inDevice;
@@ -139,6 +136,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     solver.mStableTimeStep = cpu.GetStableTimeStep();
     solver.mMadeRestPositions = cpu.GetNodeRestPositions();
     solver.mBreakable = material.IsBreakable();
+    solver.mPlastic = material.IsPlastic();
     if (solver.mBreakable)
     {
         solver.mLinks = cpu.GetFractureLinks();
@@ -160,6 +158,10 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     for (const auto& program : programs)
         if (Status status = Compile(inDevice, *program.mProgram, program.mName, program.mSource); status.HasError())
             return status.GetError();
+    if (solver.mPlastic)
+        if (Status status = Compile(inDevice, solver.mPlasticPass, "TetPlasticFlow", cShaderTetPlasticFlow);
+            status.HasError())
+            return status.GetError();
     if (inSettings.mIntegrator == fem::EIntegrator::ImplicitEuler)
     {
         // intent: an explicit prop compiles and allocates nothing of the implicit step
@@ -177,7 +179,8 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
         rest.push_back(ToFloat4(element.mRestEdgeInverse.col(1)));
         rest.push_back(ToFloat4(element.mRestEdgeInverse.col(2)));
     }
-    const std::uint32_t status_words[3] = {0, 0, 0}; // divergence flag, links opened, kinetic energy bits
+    // divergence flag, links opened, kinetic energy bits, elements that flowed plastically
+    const std::uint32_t status_words[4] = {0, 0, 0, 0};
     if (Status status = Assign(solver.mRestBuffer, MakeBuffer(inDevice, rest)); status.HasError())
         return status.GetError();
     if (Status status = Assign(solver.mRotations, MakeBuffer(inDevice, rotations)); status.HasError())
@@ -188,6 +191,15 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
         status.HasError())
         return status.GetError();
     if (Status status = Assign(solver.mStatus, StorageBuffer::Create(inDevice, sizeof(status_words), status_words));
+        status.HasError())
+        return status.GetError();
+    // Plastic strains, 3 columns per element, zero as made (one dummy element when the material has none).
+    const std::size_t plastic_bytes =
+        (solver.mPlastic ? 3 * static_cast<std::size_t>(solver.mElementCount) : 1) * sizeof(Float4);
+    if (Status status = Assign(solver.mPlasticStrains, StorageBuffer::Create(inDevice, plastic_bytes));
+        status.HasError())
+        return status.GetError();
+    if (Status status = Assign(solver.mSavedPlasticStrains, StorageBuffer::Create(inDevice, plastic_bytes));
         status.HasError())
         return status.GetError();
 
@@ -291,6 +303,18 @@ Result<GpuTetSolver> GpuTetSolver::CreateFrom(std::shared_ptr<ComputeDevice> inD
         return status.GetError();
     solver.mRotations.Upload(0, rotations.size() * sizeof(Float4), rotations.data());
     solver.mElementWork = inSolver.GetElementWorkCount(); // a stepped prop stays one (recordings refuse it)
+    if (solver.mPlastic)
+    {
+        // The CPU's plastic set, as the shaders read it (columns).
+        std::vector<Float4> plastic;
+        for (const Mat3& strain : inSolver.GetPlasticStrains())
+        {
+            for (int column = 0; column < 3; ++column)
+                plastic.push_back(ToFloat4(strain.col(column)));
+            solver.mPlasticSet = solver.mPlasticSet || !strain.isZero(0.0);
+        }
+        solver.mPlasticStrains.Upload(0, plastic.size() * sizeof(Float4), plastic.data());
+    }
     if (solver.mBreakable)
     {
         solver.mBroken = inSolver.GetBrokenLinks();
@@ -443,6 +467,7 @@ void GpuTetSolver::BindAll() const
     mLinkFaces.Bind(15);
     mLinkNormals.Bind(16);
     mBrokenBuffer.Bind(17);
+    mPlasticStrains.Bind(31); // the implicit step's own buffers take 18-30
 }
 
 void GpuTetSolver::SetFractureUniforms() const
@@ -453,6 +478,7 @@ void GpuTetSolver::SetFractureUniforms() const
     mStressPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
     mStressPass.SetFloat("uLambda", mLambda);
     mStressPass.SetFloat("uMu", mMu);
+    mStressPass.SetInt("uPlastic", mPlastic ? 1 : 0);
     mGroupPass.Use();
     mGroupPass.SetUInt("uGroupCount", static_cast<std::uint32_t>(mLinks.GetGroupCount()));
     mCrackPass.Use();
@@ -540,10 +566,33 @@ void GpuTetSolver::SetElementPassUniforms(double inStiffnessDamping) const
     mElementPass.SetFloat("uLambda", mLambda);
     mElementPass.SetFloat("uMu", mMu);
     mElementPass.SetFloat("uBeta", static_cast<float>(inStiffnessDamping));
+    mElementPass.SetInt("uPlastic", mPlastic ? 1 : 0);
 }
 
-void GpuTetSolver::FractureAfterSubStep(int& ioBrokenLinks)
+void GpuTetSolver::SetPlasticUniforms(double inDeltaTime) const
 {
+    mPlasticPass.Use();
+    mPlasticPass.SetUInt("uElementCount", mElementCount);
+    mPlasticPass.SetInt("uCorotated", mMaterial.mModel == fem::EElasticModel::CorotatedLinear ? 1 : 0);
+    mPlasticPass.SetFloat("uMu", mMu);
+    mPlasticPass.SetFloat("uYieldStress", static_cast<float>(mMaterial.mYieldStress));
+    mPlasticPass.SetFloat("uCreepFraction",
+                          static_cast<float>(std::min(1.0, mMaterial.mCreepRate * inDeltaTime)));
+    mPlasticPass.SetFloat("uMaxPlasticStrain", static_cast<float>(mMaterial.mMaxPlasticStrain));
+}
+
+void GpuTetSolver::AfterSubStep(int& ioBrokenLinks)
+{
+    // intent: plastic flow, then fracture, on the state at the end of the (sub-)step, as the CPU's
+    // AfterSubStep
+    if (mPlastic)
+    {
+        mPlasticPass.Use();
+        mPlasticPass.Dispatch(mElementCount);
+        mElementWork += mElementCount;
+    }
+    if (!mBreakable)
+        return;
     const int opened = Fracture();
     ioBrokenLinks += opened;
     if (opened > 0)
@@ -555,14 +604,16 @@ void GpuTetSolver::FractureAfterSubStep(int& ioBrokenLinks)
 }
 
 bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepResult& ioResult,
-                             int& ioBrokenLinks, double& outKineticEnergy)
+                             fem::TetStepAttempt& ioAttempt)
 {
     const double dt = inDeltaTime / inSubSteps;
     BindAll();
-    const std::uint32_t zero[3] = {0, 0, 0};
+    const std::uint32_t zero[4] = {0, 0, 0, 0};
     mStatus.Upload(0, sizeof(zero), zero);
     if (mBreakable)
         SetFractureUniforms();
+    if (mPlastic)
+        SetPlasticUniforms(dt);
     bool stepped = true;
     if (IsImplicit())
     {
@@ -592,8 +643,8 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
             if (!stats.mConverged)
                 ioResult.mEvents = ioResult.mEvents | fem::ETetStepEvent::SolverNotConverged;
             stepped = stats.mAllocated && !stats.mDiverged;
-            if (stepped && mBreakable)
-                FractureAfterSubStep(ioBrokenLinks); // rebinds the node buffers a crack replaced
+            if (stepped)
+                AfterSubStep(ioAttempt.mBrokenLinks); // rebinds the node buffers a crack replaced
         }
     }
     else
@@ -611,8 +662,7 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
             mElementPass.Dispatch(mElementCount);
             mNodePass.Use();
             mNodePass.Dispatch(static_cast<std::uint32_t>(mMasses.size()));
-            if (mBreakable)
-                FractureAfterSubStep(ioBrokenLinks);
+            AfterSubStep(ioAttempt.mBrokenLinks);
         }
         mElementWork += static_cast<std::uint64_t>(inSubSteps) * mElementCount;
     }
@@ -621,11 +671,12 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
     mEnergyPass.Use();
     mEnergyPass.SetUInt("uNodeCount", static_cast<std::uint32_t>(mMasses.size()));
     mEnergyPass.Dispatch(mEnergyPass.GetLocalSize()); // exactly one work group
-    std::uint32_t words[3] = {0, 0, 0};
+    std::uint32_t words[4] = {0, 0, 0, 0};
     mStatus.Download(0, sizeof(words), words);
     float energy = 0.0f;
     std::memcpy(&energy, &words[2], sizeof(energy));
-    outKineticEnergy = energy;
+    ioAttempt.mKineticEnergy = energy;
+    ioAttempt.mPlasticElements = static_cast<int>(words[3]);
     return stepped && words[0] == 0 && std::isfinite(energy);
 }
 
@@ -654,6 +705,7 @@ public:
         save(s.mSavedVelocities, s.mVelocities);
         save(s.mSavedExternal, s.mExternal);
         save(s.mSavedRotations, s.mRotations);
+        save(s.mSavedPlasticStrains, s.mPlasticStrains);
         s.mSavedElementNodes = s.mElementNodes;
         s.mSavedBroken = s.mBroken;
         s.mSavedMasses = s.mMasses;
@@ -680,14 +732,14 @@ public:
         s.mVelocities.CopyFrom(s.mSavedVelocities);
         s.mExternal.CopyFrom(s.mSavedExternal);
         s.mRotations.CopyFrom(s.mSavedRotations);
+        s.mPlasticStrains.CopyFrom(s.mSavedPlasticStrains);
     }
 
     fem::TetStepAttempt Attempt(double inDeltaTime, int inPieces, fem::TetStepResult& ioResult) override
     {
         fem::TetStepAttempt attempt;
         mSolver.mIntegrated = true; // what the step leaves is not known without a readback
-        attempt.mDiverged =
-            !mSolver.Integrate(inDeltaTime, inPieces, ioResult, attempt.mBrokenLinks, attempt.mKineticEnergy);
+        attempt.mDiverged = !mSolver.Integrate(inDeltaTime, inPieces, ioResult, attempt);
         return attempt;
     }
 
@@ -698,8 +750,8 @@ public:
     // same); after it, knowing would need a readback per step, and the GPU solver counts quiet steps instead.
     bool IsAtRestUnloaded() const override
     {
-        if (mSolver.mIntegrated)
-            return false;
+        if (mSolver.mIntegrated || mSolver.mPlasticSet)
+            return false; // a plastic set strains the rest positions
         const bool pulled = !mSolver.mSettings.mGravity.isZero(0.0) &&
                             std::any_of(mSolver.mInverseMasses.begin(), mSolver.mInverseMasses.end(),
                                         [](double inInverseMass) { return inInverseMass > 0.0; });
@@ -805,6 +857,19 @@ void GpuTetSolver::ReadVelocities(std::vector<Vec3>& outVelocities) const
 {
     if (ReadNodeBuffer(mVelocities, outVelocities).HasError())
         outVelocities.assign(mMasses.size(), Vec3::Zero());
+}
+
+void GpuTetSolver::ReadPlasticStrains(std::vector<Mat3>& outStrains) const
+{
+    outStrains.clear();
+    if (!mPlastic || mDevice->MakeCurrent().HasError())
+        return;
+    std::vector<Float4> columns(3 * static_cast<std::size_t>(mElementCount));
+    mPlasticStrains.Download(0, columns.size() * sizeof(Float4), columns.data());
+    outStrains.resize(mElementCount);
+    for (std::size_t element = 0; element < outStrains.size(); ++element)
+        for (int column = 0; column < 3; ++column)
+            outStrains[element].col(column) = ToVec3(columns[3 * element + static_cast<std::size_t>(column)]);
 }
 
 void GpuTetSolver::ReadExternalForces(std::vector<Vec3>& outForces) const

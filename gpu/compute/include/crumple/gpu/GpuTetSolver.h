@@ -60,8 +60,12 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 /// and read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep).
 /// A breakable prop runs the fracture passes after each implicit step, as after a sub-step.
 ///
-/// Not on the GPU, refused by Create with a clear message: plasticity, and implicit Euler for the St.
-/// Venant-Kirchhoff model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an
+/// Plasticity as the CPU's (von Mises, radial return at the creep rate, capped): a plastic-strain buffer the
+/// force and stress passes subtract, and a flow pass after each sub-step or implicit step, before fracture;
+/// its event count comes back with the step's status.
+///
+/// Not on the GPU, refused by Create with a clear message: implicit Euler for the St. Venant-Kirchhoff
+/// model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an
 /// energy gain). A refused input changes nothing.
 class CRUMPLE_API GpuTetSolver
 {
@@ -123,6 +127,10 @@ public:
     void ReadPositions(std::vector<Vec3>& outPositions) const;
     /// Reads the node velocities back (m/s), #N; zeros as ReadPositions.
     void ReadVelocities(std::vector<Vec3>& outVelocities) const;
+    /// Reads each element's plastic strain back (in the model's frame, 3 by 3 symmetric), #T, as the GPU
+    /// holds them (float); empty for a material without plasticity or when the device could not be made
+    /// current.
+    void ReadPlasticStrains(std::vector<Mat3>& outStrains) const;
     /// Reads the external forces back (N), #N, as the GPU holds them (float); zeros as ReadPositions.
     void ReadExternalForces(std::vector<Vec3>& outForces) const;
     /// The three reads above, or the device's error (the outputs then empty): for a caller that must not take
@@ -173,14 +181,17 @@ private:
 
     // Runs inSubSteps sub-steps of inDeltaTime / inSubSteps (implicit: inSubSteps implicit steps, their
     // solver statistics added to ioResult), then the kinetic energy reduction; returns true when the state
-    // stayed finite and sets outKineticEnergy (J). Counts the links opened in ioBrokenLinks.
-    bool Integrate(double inDeltaTime, int inSubSteps, fem::TetStepResult& ioResult, int& ioBrokenLinks,
-                   double& outKineticEnergy);
+    // stayed finite. Sets ioAttempt's kinetic energy (J) and plastic flow events, adds the links opened.
+    bool Integrate(double inDeltaTime, int inSubSteps, fem::TetStepResult& ioResult,
+                   fem::TetStepAttempt& ioAttempt);
     // The force pass's uniforms, with Kelvin-Voigt damping inStiffnessDamping (s; 0 for the implicit step,
     // which carries beta in its system).
     void SetElementPassUniforms(double inStiffnessDamping) const;
-    // The fracture passes after a sub-step or implicit step, the node count updated where links opened.
-    void FractureAfterSubStep(int& ioBrokenLinks);
+    // Plastic flow and the fracture passes after a sub-step or implicit step (the node count updated where
+    // links opened; their count added to ioBrokenLinks).
+    void AfterSubStep(int& ioBrokenLinks);
+    // The plastic flow pass's uniforms for sub-steps of inDeltaTime (s).
+    void SetPlasticUniforms(double inDeltaTime) const;
     bool IsImplicit() const { return mSettings.mIntegrator == fem::EIntegrator::ImplicitEuler; }
     // An input changed: wake up.
     void InputChanged();
@@ -210,6 +221,8 @@ private:
     fem::FractureLinks mLinks;                  // empty when unbreakable
     std::vector<std::uint8_t> mBroken;          // host copy of the broken flags, #L
     bool mBreakable = false;
+    bool mPlastic = false;    // the material flows plastically (mPlasticPass, mPlasticStrains)
+    bool mPlasticSet = false; // made from a CPU solver with a plastic set (not at rest, whatever its state)
     fem::TetSolverSettings mSettings;
     fem::FemMaterialSettings mMaterial;
     float mLambda = 0.0f;
@@ -233,13 +246,14 @@ private:
     std::vector<fem::TetIndices> mSavedElementNodes;
     std::vector<std::uint8_t> mSavedBroken;
     std::vector<double> mSavedMasses, mSavedInverseMasses;
-    ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass;
+    ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass, mPlasticPass;
     std::unique_ptr<GpuImplicitStep> mImplicit; // the implicit step's programs and vectors; null if explicit
     StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
         mIncident, mStatus;
     StorageBuffer mStress, mGroupOffsets, mGroupElements, mPrincipal, mLinkBuffer, mLinkFaces, mLinkNormals,
         mBrokenBuffer;
     StorageBuffer mSavedPositions, mSavedVelocities, mSavedRotations, mSavedExternal;
+    StorageBuffer mPlasticStrains, mSavedPlasticStrains; // #T x 3 columns (a dummy without plasticity)
 };
 
 } // namespace crumple::gpu
