@@ -33,7 +33,7 @@ enum class EFemBackend : std::uint8_t
 {
     Cpu, ///< fem::TetSolver, double precision: every feature
     Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic and implicit Euler (implicit for the
-         ///< corotated model), elasticity, damping and fracture, no plasticity (only in builds with
+         ///< corotated model), elasticity, damping, plasticity and fracture (only in builds with
          ///< crumple::gpu; elsewhere a GPU request runs on the CPU with that reason)
 };
 
