@@ -47,9 +47,10 @@ enum EDotMode : std::uint32_t
     cNewResidual = 2,
 };
 
-// The scalars TetDot and TetImplicitScale write (floats).
+// The scalars TetDot and TetImplicitScale write (floats; slots 1-3, the first r.z and the step lengths, are
+// the shaders' own).
 constexpr std::size_t cScalarCount = 16;
-constexpr std::size_t cRz = 0, cFirstRz = 1, cNoCurvature = 4, cKinetic = 5, cMomentum = 6, cLoad = 9;
+constexpr std::size_t cRz = 0, cNoCurvature = 4, cKinetic = 5, cMomentum = 6, cLoad = 9;
 
 // Energy added to the step's scale so a body at rest has one (J), the CPU's.
 constexpr double cEnergyFloor = 1.0e-12;
