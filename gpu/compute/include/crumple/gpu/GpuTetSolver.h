@@ -38,8 +38,9 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 ///
 /// Structure of arrays on the GPU: positions with the inverse mass in w, velocities, external forces (vec4
 /// each), element nodes (ivec4), rest data (three vec4 per element), rotations (quaternions), corner forces,
-/// adjacency offsets and entries. Nothing is read back per step except a status word (the divergence flag);
-/// positions are read only when asked (ReadPositions).
+/// adjacency offsets and entries. Nothing is read back per explicit step except the status words (the
+/// divergence flag, links opened, kinetic energy, plastic flow events; the implicit step also reads its
+/// scalars, below); positions are read only when asked (ReadPositions).
 ///
 /// Fracture (breakable materials) runs the CPU's criterion after every sub-step in three more passes:
 /// element Cauchy stress, group principal stress (closed-form eigen solution), and the links that open
@@ -65,8 +66,8 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 /// its event count comes back with the step's status.
 ///
 /// Not on the GPU, refused by Create with a clear message: implicit Euler for the St. Venant-Kirchhoff
-/// model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an
-/// energy gain). A refused input changes nothing.
+/// model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A
+/// refused input changes nothing.
 class CRUMPLE_API GpuTetSolver
 {
 public:
