@@ -2,25 +2,30 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 // Node pass of the implicit step: each free node's block-Jacobi preconditioner, the inverse of its 3x3
-// diagonal block of A = (1 + h alpha) M + (h^2 + h beta) K, K the corotated stiffness at the frames of the
-// last force pass. A corner with shape gradient g (a row of D_m^-1, or minus their sum for corner 0) adds
-// V0 [(lambda + mu) (R g)(R g)^T + mu |g|^2 I] to its node's block (K_aa of an isotropic element). Gathered
-// in element order; anchored nodes get 0.
+// diagonal block of A = (1 + h alpha) M + (h^2 + h beta) K, K the linearised stiffness of TetStiffnessProduct.
+// A corner with shape gradient g (a row of D_m^-1, or minus their sum for corner 0) adds K_aa of an isotropic
+// element to its node's block: V0 [(lambda + mu) (R g)(R g)^T + mu |g|^2 I] (corotated, the frames of the last
+// force pass) or V0 [(lambda + mu) (F g)(F g)^T + mu |g|^2 F F^T + (g . S+ g) I] (St. Venant-Kirchhoff).
+// Gathered in element order; anchored nodes get 0.
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };     // w = 1/m (1/kg)
+layout(std430, binding = 2) readonly buffer Elements { ivec4 elements[]; };       // current node indices
 layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };               // 3 per element
 layout(std430, binding = 4) readonly buffer Rotations { vec4 rotations[]; };     // unit quaternions
 layout(std430, binding = 7) readonly buffer Offsets { uint offsets[]; };
 layout(std430, binding = 8) readonly buffer Incident { uint incident[]; };
 layout(std430, binding = 25) writeonly buffer Blocks { vec4 blocks[]; };         // 3 per node: columns of the
                                                                                  // inverse block (1/kg)
+layout(std430, binding = 31) readonly buffer PlasticStrains { vec4 plasticStrains[]; }; // 3 per element
 
 uniform uint uNodeCount;
 uniform float uMassScale;      // 1 + h alpha
 uniform float uStiffnessScale; // h^2 + h beta (s^2)
 uniform float uLambda;         // Pa
 uniform float uMu;             // Pa
+uniform int uCorotated;        // 1: corotated, 0: St. Venant-Kirchhoff
+uniform int uPlastic;          // 1: the elastic strain is the model's less the element's plastic strain
 
 #include "TetMath.glsl"
 
@@ -44,9 +49,24 @@ void main()
         mat3 rest_inverse = mat3(rest[3u * element].xyz, rest[3u * element + 1u].xyz, rest[3u * element + 2u].xyz);
         mat3 rows = transpose(rest_inverse); // rows[i] = row i of D_m^-1
         vec3 g = corner == 0u ? -(rows[0] + rows[1] + rows[2]) : rows[corner - 1u];
-        vec3 h = RotationMatrix(rotations[element]) * g;
         float volume = rest[3u * element].w;
-        stiffness += volume * ((uLambda + uMu) * outerProduct(h, h) + uMu * dot(g, g) * mat3(1.0));
+        if (uCorotated != 0)
+        {
+            vec3 h = RotationMatrix(rotations[element]) * g;
+            stiffness += volume * ((uLambda + uMu) * outerProduct(h, h) + uMu * dot(g, g) * mat3(1.0));
+            continue;
+        }
+        ivec4 n = elements[element];
+        vec3 x0 = positions[n.x].xyz;
+        mat3 f = mat3(positions[n.y].xyz - x0, positions[n.z].xyz - x0, positions[n.w].xyz - x0) * rest_inverse;
+        mat3 strain = 0.5 * (transpose(f) * f - mat3(1.0));
+        if (uPlastic != 0)
+            strain -= mat3(plasticStrains[3u * element].xyz, plasticStrains[3u * element + 1u].xyz,
+                           plasticStrains[3u * element + 2u].xyz);
+        mat3 positive = PositivePart(IsotropicStress(strain, uLambda, uMu));
+        vec3 h = f * g;
+        stiffness += volume * ((uLambda + uMu) * outerProduct(h, h) + uMu * dot(g, g) * f * transpose(f) +
+                               dot(g, positive * g) * mat3(1.0));
     }
     mat3 block = uMassScale / inverse_mass * mat3(1.0) + uStiffnessScale * stiffness;
     mat3 inverse_block = inverse(block);

@@ -49,3 +49,34 @@ mat3 IsotropicStress(mat3 e, float lambda, float mu)
 {
     return lambda * (e[0][0] + e[1][1] + e[2][2]) * mat3(1.0) + 2.0 * mu * e;
 }
+
+// The positive part of symmetric s (its eigenvalues clamped at 0, fem::TetElementPass's PositivePart) by
+// cyclic Jacobi rotations (six sweeps: float round-off for a 3x3), so repeated eigenvalues need no care.
+mat3 PositivePart(mat3 s)
+{
+    mat3 a = s;
+    mat3 v = mat3(1.0);
+    for (int sweep = 0; sweep < 6; ++sweep)
+        for (int pair = 0; pair < 3; ++pair)
+        {
+            int p = pair == 2 ? 1 : 0;
+            int q = pair == 0 ? 1 : 2;
+            float apq = a[q][p];
+            if (abs(apq) <= 1.0e-30 * (abs(a[p][p]) + abs(a[q][q])) || apq == 0.0)
+                continue;
+            float theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            float t = sign(theta) / (abs(theta) + sqrt(theta * theta + 1.0));
+            if (theta == 0.0)
+                t = 1.0;
+            float c = inversesqrt(t * t + 1.0);
+            mat3 j = mat3(1.0);
+            j[p][p] = c;
+            j[q][q] = c;
+            j[q][p] = t * c;
+            j[p][q] = -t * c;
+            a = transpose(j) * a * j;
+            v = v * j;
+        }
+    return v * mat3(max(a[0][0], 0.0), 0.0, 0.0, 0.0, max(a[1][1], 0.0), 0.0, 0.0, 0.0, max(a[2][2], 0.0)) *
+           transpose(v);
+}

@@ -191,6 +191,8 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
     mProduct.SetUInt("uElementCount", mRunElementCount);
     mProduct.SetFloat("uLambda", inInput.mLambda);
     mProduct.SetFloat("uMu", inInput.mMu);
+    mProduct.SetInt("uCorotated", inInput.mCorotated ? 1 : 0);
+    mProduct.SetInt("uPlastic", inInput.mPlastic ? 1 : 0);
     mResidual.Use();
     mResidual.SetUInt("uNodeCount", mRunNodeCount);
     mResidual.SetFloat("uDeltaTime", h_float);
@@ -202,6 +204,8 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
     mJacobi.SetFloat("uStiffnessScale", static_cast<float>(stiffness_scale));
     mJacobi.SetFloat("uLambda", inInput.mLambda);
     mJacobi.SetFloat("uMu", inInput.mMu);
+    mJacobi.SetInt("uCorotated", inInput.mCorotated ? 1 : 0);
+    mJacobi.SetInt("uPlastic", inInput.mPlastic ? 1 : 0);
     mConjugateGradient.Use();
     mConjugateGradient.SetUInt("uNodeCount", mRunNodeCount);
     mConjugateGradient.SetFloat("uDeltaTime", h_float);

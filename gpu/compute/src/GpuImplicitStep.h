@@ -26,6 +26,8 @@ struct GpuImplicitStepInput
     float mLambda = 0.0f;                              ///< Lame lambda (Pa)
     float mMu = 0.0f;                                  ///< shear modulus (Pa)
     Vec3 mGravity = Vec3::Zero();                      ///< m/s^2, world
+    bool mCorotated = true;                            ///< Corotated (else St. Venant-Kirchhoff)
+    bool mPlastic = false;                             ///< The elastic strain less the plastic strains
     const fem::TetSolverSettings* mSettings = nullptr; ///< Newton and CG tolerances and limits
     std::span<const double> mInverseMasses;            ///< #N host copy (1/kg), 0 = anchored
     std::span<const double> mMasses;                   ///< #N host copy (kg)
@@ -49,9 +51,9 @@ struct GpuImplicitStepStats
     bool mDiverged = false; ///< A residual was not finite (the step stopped there)
 };
 
-/// fem::TetSolver::StepImplicit as compute shaders: backward Euler with Rayleigh damping for the corotated
-/// model, Newton on the end velocity (forces and frames re-evaluated at x0 + h v per iteration) with the same
-/// convergence test (the energy of the remaining correction, 1/2 r.Br, against mImplicitTolerance of the
+/// fem::TetSolver::StepImplicit as compute shaders: backward Euler with Rayleigh damping for both elastic
+/// models, Newton on the end velocity (forces and frames re-evaluated at x0 + h v per iteration) with the
+/// same convergence test (the energy of the remaining correction, 1/2 r.Br, against mImplicitTolerance of the
 /// step's kinetic and load energy), each linear solve a conjugate gradient preconditioned by the nodes' 3x3
 /// diagonal blocks (block Jacobi; the CPU's factored rest system needs sequential triangular solves). The
 /// scalars of an iteration stay on the GPU: the host reads them back once per Newton iteration and at CG

@@ -113,13 +113,6 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
 {
     if (!inDevice)
         return MakeError(EError::InvalidArgument, "GpuTetSolver: no compute device");
-    if (inSettings.mIntegrator == fem::EIntegrator::ImplicitEuler &&
-        inMaterial.mModel != fem::EElasticModel::CorotatedLinear)
-        return MakeError(
-            EError::InvalidArgument,
-            "GpuTetSolver: implicit Euler is implemented on the GPU for the corotated model only; use "
-            "EElasticModel::CorotatedLinear, EIntegrator::SymplecticEuler or the CPU solver for St. "
-            "Venant-Kirchhoff");
     const fem::TetSolver& cpu = inReference;
     const fem::FemMaterial& material = cpu.GetMaterial();
 
@@ -628,6 +621,8 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
             input.mLambda = mLambda;
             input.mMu = mMu;
             input.mGravity = mSettings.mGravity;
+            input.mCorotated = mMaterial.mModel == fem::EElasticModel::CorotatedLinear;
+            input.mPlastic = mPlastic;
             input.mSettings = &mSettings;
             input.mInverseMasses = mInverseMasses;
             input.mMasses = mMasses;

@@ -32,9 +32,9 @@ CRUMPLE_API bool HasGpuBackend();
 enum class EFemBackend : std::uint8_t
 {
     Cpu, ///< fem::TetSolver, double precision: every feature
-    Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic and implicit Euler (implicit for the
-         ///< corotated model), elasticity, damping, plasticity and fracture (only in builds with
-         ///< crumple::gpu; elsewhere a GPU request runs on the CPU with that reason)
+    Gpu, ///< gpu::GpuTetSolver, float, compute shaders: symplectic and implicit Euler, both elastic models,
+         ///< damping, plasticity and fracture (only in builds with crumple::gpu; elsewhere a GPU request runs
+         ///< on the CPU with that reason)
 };
 
 /// Short name of an EFemBackend, for messages.
@@ -44,18 +44,17 @@ CRUMPLE_API const char* ToString(EFemBackend inBackend);
 struct CRUMPLE_API FemPropSettings
 {
     EFemBackend mBackend = EFemBackend::Cpu; ///< The wanted backend
-    /// Called once with the reason when a GPU prop falls back to the CPU (no device, or a feature the GPU
-    /// solver lacks); empty: no log. The reason is also in GetFallbackReason().
+    /// Called once with the reason when a GPU prop falls back to the CPU (no device, or programs the device
+    /// cannot build); empty: no log. The reason is also in GetFallbackReason().
     std::function<void(std::string_view)> mLog;
 };
 
 /// A destructible prop's solver on the CPU or the GPU behind one interface, so a game can balance load per
-/// prop. A prop that asks for the GPU where there is none (or for what the GPU solver cannot do) runs on the
-/// CPU instead: GetBackend() says which, GetFallbackReason() why. Bad input (mesh, material, settings) is an
-/// error either way, never a fallback. A CPU prop never touches the device provider, so a scene without GPU
-/// props makes no EGL context, and a game built without crumple::gpu (CRUMPLE_WITH_GPU off) links this type
-/// without EGL or OpenGL: the GPU backend is compiled in only where crumple::gpu is
-/// (HasGpuBackend()).
+/// prop. A prop that asks for the GPU where there is none (or whose programs the device cannot build) runs on
+/// the CPU instead: GetBackend() says which, GetFallbackReason() why. Bad input (mesh, material, settings) is
+/// an error either way, never a fallback. A CPU prop never touches the device provider, so a scene without
+/// GPU props makes no EGL context, and a game built without crumple::gpu (CRUMPLE_WITH_GPU off) links this
+/// type without EGL or OpenGL: the GPU backend is compiled in only where crumple::gpu is (HasGpuBackend()).
 ///
 /// Lives in crumple::props, the layer that knows both the damage core (plugin::Collision) and the FEM: the
 /// FEM itself depends on Eigen only.

@@ -54,20 +54,20 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 /// one-work-group reduction with the step's status; a sleeping prop dispatches nothing until an input changes.
 ///
 /// Implicit Euler (EIntegrator::ImplicitEuler, the default: one step per game step, stable for steel) runs
-/// as the CPU's StepImplicit does, Newton on the end velocity with the same convergence test, for the
-/// corotated model; each linear solve is a conjugate gradient preconditioned by the nodes' 3x3 diagonal
-/// blocks (block Jacobi: TetSolverSettings::mPreconditioner and mFactorRefreshIterations are the CPU's
-/// choices, the factored rest system needing sequential triangular solves), with its scalars kept on the GPU
-/// and read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep).
-/// A breakable prop runs the fracture passes after each implicit step, as after a sub-step.
+/// as the CPU's StepImplicit does, Newton on the end velocity with the same convergence test, for either
+/// model (St. Venant-Kirchhoff linearised with the positive part of its stress, as the CPU); each linear
+/// solve is a conjugate gradient preconditioned by the nodes' 3x3 diagonal blocks (block Jacobi:
+/// TetSolverSettings::mPreconditioner and mFactorRefreshIterations are the CPU's choices, the factored rest
+/// system needing sequential triangular solves), with its scalars kept on the GPU and read back once per
+/// Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep). A breakable prop runs
+/// the fracture passes after each implicit step, as after a sub-step.
 ///
 /// Plasticity as the CPU's (von Mises, radial return at the creep rate, capped): a plastic-strain buffer the
 /// force and stress passes subtract, and a flow pass after each sub-step or implicit step, before fracture;
 /// its event count comes back with the step's status.
 ///
-/// Not on the GPU, refused by Create with a clear message: implicit Euler for the St. Venant-Kirchhoff
-/// model. Divergence is detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A
-/// refused input changes nothing.
+/// Divergence is detected as a NaN or Inf in the state (the CPU also checks for an energy gain). A refused
+/// input changes nothing.
 class CRUMPLE_API GpuTetSolver
 {
 public:
