@@ -111,10 +111,13 @@ TEST_CASE("GPU implicit step: the bar hit at its tip moves as on the CPU, step b
     // at 1e-6; St. Venant-Kirchhoff, whose clamped stress makes Newton converge linearly, 1.31e-4 / 1.31e-4
     // and 8.76e-5 / 8.74e-5), bounded at eight ulps more (a wrong term puts the GPU a motion's order away).
     CHECK(gpu_error < cpu_error + 8.0 * ulp);
-    if (model == EElasticModel::CorotatedLinear)
+    if (model == EElasticModel::CorotatedLinear || newton_tolerance > 1.0e-4)
     {
-        // Corotated, the two stop at the same iterate: GPU and CPU 7.8e-8 m apart (about one ulp) at both
-        // tolerances, bounded at eight.
+        // Where both take the same Newton iterations (corotated at both tolerances, St. Venant-Kirchhoff at the
+        // default one) their linearisations must agree: 7.8e-8 m (about one ulp) corotated, 2.0e-7 m St.
+        // Venant-Kirchhoff, bounded at eight ulps (without its dF S+ term the GPU's St. Venant-Kirchhoff is
+        // 1.0e-4 m away). At 1e-6 St. Venant-Kirchhoff's CPU takes 42 iterations to the GPU's 41: compared
+        // with the converged answer above.
         CHECK(gap < 8.0 * ulp);
     }
 }
