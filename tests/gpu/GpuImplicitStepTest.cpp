@@ -127,18 +127,11 @@ TEST_CASE("GPU implicit step: a steel cantilever at 1/60 s settles on the CPU's 
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     // The issue's steel beam (1 m, 0.1 m square, 1 kN at the tip), one implicit step per 1/60 s frame where
     // the explicit path needs thousands of sub-steps; mass damping critical for the first bending mode.
-    common::CantileverSettings settings;
-    settings.mLengthCells = 20;
-    settings.mSectionCells = 2;
-    settings.mMaterial.mMassDamping =
-        2.0 * 2.0 * 3.14159265358979 * common::EulerBernoulliFrequency(settings);
-    common::CantileverScene scene = common::CantileverScene::Create(settings).Get();
-    Result<GpuTetSolver> created = GpuTetSolver::CreateFrom(device, scene.GetSolver());
-    REQUIRE(created.IsValid());
-    GpuTetSolver& gpu = created.Get();
-
-    common::CantileverScene reference = common::CantileverScene::Create(settings).Get();
-    REQUIRE(reference.GetSolver().SolveStatic().IsValid());
+    test::DampedCantilever beam = test::MakeDampedCantilever(device, common::CantileverSettings{});
+    const common::CantileverSettings& settings = beam.mScene.GetSettings();
+    const common::CantileverScene& scene = beam.mScene;
+    const common::CantileverScene& reference = beam.mStatic;
+    GpuTetSolver& gpu = beam.mGpu;
     int cg_iterations = 0;
     for (int step = 0; step < 60; ++step)
     {

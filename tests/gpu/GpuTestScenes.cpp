@@ -48,6 +48,21 @@ fem::TetSolver StruckBrittleWall(const fem::TetSolverSettings& inSettings, doubl
     return wall;
 }
 
+DampedCantilever MakeDampedCantilever(const std::shared_ptr<gpu::ComputeDevice>& inDevice,
+                                      common::CantileverSettings inSettings)
+{
+    inSettings.mLengthCells = 20;
+    inSettings.mSectionCells = 2;
+    inSettings.mMaterial.mMassDamping =
+        2.0 * 2.0 * 3.14159265358979 * common::EulerBernoulliFrequency(inSettings);
+    common::CantileverScene scene = common::CantileverScene::Create(inSettings).Get();
+    Result<gpu::GpuTetSolver> gpu = gpu::GpuTetSolver::CreateFrom(inDevice, scene.GetSolver());
+    REQUIRE(gpu.IsValid());
+    common::CantileverScene solved = common::CantileverScene::Create(inSettings).Get();
+    REQUIRE(solved.GetSolver().SolveStatic().IsValid());
+    return DampedCantilever{std::move(scene), std::move(gpu.Get()), std::move(solved)};
+}
+
 double MaxDistance(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 {
     double largest = 0.0;

@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "CantileverScene.h"
+
 #include <crumple/fem/TetSolver.h>
 #include <crumple/gpu/GpuTetSolver.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace crumple::test
@@ -21,6 +24,17 @@ inline constexpr int cBarTipNode = 6 + 7 * (2 + 3 * 2);
 /// 1/s) anchored along its base, its front face struck with inImpulse (N s, along +y) shared by the four
 /// nodes of cell (7, 0, 3)'s front face.
 fem::TetSolver StruckBrittleWall(const fem::TetSolverSettings& inSettings, double inImpulse);
+
+/// A cantilever of inSettings on 20 x 2 x 2 cells with mass damping critical for its first bending mode, as
+/// a scene (its solver at rest: the reference positions), on the GPU, and solved to statics on the CPU.
+struct DampedCantilever
+{
+    common::CantileverScene mScene;
+    gpu::GpuTetSolver mGpu;
+    common::CantileverScene mStatic;
+};
+DampedCantilever MakeDampedCantilever(const std::shared_ptr<gpu::ComputeDevice>& inDevice,
+                                      common::CantileverSettings inSettings);
 
 /// Largest distance between the matching points of inA and inB (m).
 double MaxDistance(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB);

@@ -118,17 +118,11 @@ TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float l
     settings.mMaterial.mYoungsModulus = 1.0e7;
     settings.mMaterial.mDensity = 1000.0;
     settings.mLoad = 1.0;
-    settings.mLengthCells = 20;
-    settings.mSectionCells = 2;
     settings.mSolver.mIntegrator = EIntegrator::SymplecticEuler;
-    settings.mMaterial.mMassDamping = 2.0 * 2.0 * 3.14159265358979 * common::EulerBernoulliFrequency(settings);
-    common::CantileverScene scene = common::CantileverScene::Create(settings).Get();
-    Result<GpuTetSolver> created = GpuTetSolver::CreateFrom(device, scene.GetSolver());
-    REQUIRE(created.IsValid());
-    GpuTetSolver& gpu = created.Get();
-
-    common::CantileverScene reference = common::CantileverScene::Create(settings).Get();
-    REQUIRE(reference.GetSolver().SolveStatic().IsValid());
+    test::DampedCantilever beam = test::MakeDampedCantilever(device, settings);
+    const common::CantileverScene& scene = beam.mScene;
+    const common::CantileverScene& reference = beam.mStatic;
+    GpuTetSolver& gpu = beam.mGpu;
     for (int step = 0; step < 90; ++step)
         REQUIRE(gpu.Step(1.0 / 60.0).IsValid());
     std::vector<Vec3> positions;
