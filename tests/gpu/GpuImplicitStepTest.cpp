@@ -25,16 +25,7 @@ namespace
 using test::ClampedBar;
 using test::MaxDistance;
 
-FemMaterialSettings Soft()
-{
-    FemMaterialSettings material;
-    material.mYoungsModulus = 1.0e7;
-    material.mPoissonRatio = 0.3;
-    material.mDensity = 1000.0;
-    material.mMassDamping = 1.0;
-    material.mStiffnessDamping = 1.0e-4;
-    return material;
-}
+using test::SoftBarMaterial;
 
 TetSolverSettings Implicit()
 {
@@ -58,7 +49,7 @@ TEST_CASE("GPU implicit step: the bar hit at its tip moves as on the CPU, step b
     CAPTURE(newton_tolerance, ToString(model));
     TetSolverSettings settings = Implicit();
     settings.mImplicitTolerance = newton_tolerance;
-    FemMaterialSettings material = Soft();
+    FemMaterialSettings material = SoftBarMaterial();
     material.mModel = model;
     TetSolver cpu = ClampedBar(material, settings);
     Result<GpuTetSolver> created = GpuTetSolver::CreateFrom(device, cpu);
@@ -214,7 +205,7 @@ TEST_CASE("GPU implicit step: random blows up to 1e5 N s at 1/30 s never leave a
           "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    TetSolver cpu = ClampedBar(Soft(), Implicit());
+    TetSolver cpu = ClampedBar(SoftBarMaterial(), Implicit());
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
     const test::BlowCounts blows = test::RandomBlows(gpu, 1.0 / 30.0, 11);
     INFO(blows.mDiverged << " of 20 steps diverged (restored), " << blows.mMoved << " moved the bar");
@@ -229,7 +220,7 @@ TEST_CASE("GPU implicit step: the same inputs give bitwise the same state", "[gp
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
     const auto run = [&]
     {
-        GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, ClampedBar(Soft(), Implicit())).Get();
+        GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, ClampedBar(SoftBarMaterial(), Implicit())).Get();
         REQUIRE(gpu.ApplyImpulse(cTipNode, cHit).IsValid());
         for (int step = 0; step < 10; ++step)
             REQUIRE(gpu.Step(1.0 / 60.0).IsValid());
@@ -240,6 +231,7 @@ TEST_CASE("GPU implicit step: the same inputs give bitwise the same state", "[gp
     };
     const auto first = run();
     CHECK(first == run());
-    CHECK(first.first !=
-          GpuTetSolver::CreateFrom(device, ClampedBar(Soft(), Implicit())).Get().GetMadeRestPositions());
+    CHECK(first.first != GpuTetSolver::CreateFrom(device, ClampedBar(SoftBarMaterial(), Implicit()))
+                             .Get()
+                             .GetMadeRestPositions());
 }

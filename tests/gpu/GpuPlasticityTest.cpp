@@ -23,11 +23,9 @@ namespace
 // A soft, ductile bar: E 10 MPa, yield at 20 kPa (about 0.2 % strain), flowing at once, damped so it settles.
 FemMaterialSettings Ductile()
 {
-    FemMaterialSettings material;
-    material.mYoungsModulus = 1.0e7;
-    material.mPoissonRatio = 0.3;
-    material.mDensity = 1000.0;
+    FemMaterialSettings material = test::SoftBarMaterial();
     material.mMassDamping = 20.0;
+    material.mStiffnessDamping = 0.0;
     material.mYieldStress = 2.0e4;
     return material;
 }

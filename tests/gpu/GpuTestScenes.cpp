@@ -14,6 +14,18 @@
 namespace crumple::test
 {
 
+fem::FemMaterialSettings SoftBarMaterial(fem::EElasticModel inModel)
+{
+    fem::FemMaterialSettings material;
+    material.mYoungsModulus = 1.0e7;
+    material.mPoissonRatio = 0.3;
+    material.mDensity = 1000.0;
+    material.mMassDamping = 1.0;
+    material.mStiffnessDamping = 1.0e-4;
+    material.mModel = inModel;
+    return material;
+}
+
 fem::TetSolver ClampedBar(const fem::FemMaterialSettings& inMaterial,
                           const fem::TetSolverSettings& inSettings)
 {

@@ -14,6 +14,10 @@
 namespace crumple::test
 {
 
+/// The bar tests' soft material: E 10 MPa, Poisson 0.3, 1000 kg/m^3, Rayleigh alpha 1 1/s and beta 1e-4 s
+/// (a few hundred explicit sub-steps per frame), of model inModel.
+fem::FemMaterialSettings SoftBarMaterial(fem::EElasticModel inModel = fem::EElasticModel::CorotatedLinear);
+
 /// A 0.6 m x 0.2 m x 0.2 m bar of 6 x 2 x 2 cubes clamped at x = 0 (its nine nodes there anchored).
 fem::TetSolver ClampedBar(const fem::FemMaterialSettings& inMaterial,
                           const fem::TetSolverSettings& inSettings);

@@ -24,18 +24,7 @@ using namespace crumple::gpu;
 namespace
 {
 
-// A soft 0.6 m x 0.2 m x 0.2 m bar of 6 x 2 x 2 cubes clamped at x = 0: a few hundred sub-steps per frame.
-FemMaterialSettings Soft(EElasticModel inModel)
-{
-    FemMaterialSettings material;
-    material.mYoungsModulus = 1.0e7;
-    material.mPoissonRatio = 0.3;
-    material.mDensity = 1000.0;
-    material.mMassDamping = 1.0;
-    material.mStiffnessDamping = 1.0e-4;
-    material.mModel = inModel;
-    return material;
-}
+using test::SoftBarMaterial;
 
 using test::ClampedBar;
 
@@ -45,7 +34,7 @@ TetSolver ClampedBar(EElasticModel inModel)
     TetSolverSettings settings;
     settings.mIntegrator = EIntegrator::SymplecticEuler;
     settings.mSleepSpeed = 0.0;
-    return ClampedBar(Soft(inModel), settings);
+    return ClampedBar(SoftBarMaterial(inModel), settings);
 }
 
 // Explicit, no gravity, sleep on: the sleep tests' bar.
@@ -234,7 +223,7 @@ TEST_CASE("GPU sleep: a prop made at rest, unloaded, sleeps at its first step wi
     // The held racing fence: made still, anchored, no gravity. Before, it integrated 30 quiet steps of
     // nothing (the GPU cannot see its state without reading it back) before it fell asleep.
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    const FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
+    const FemMaterialSettings material = SoftBarMaterial(EElasticModel::CorotatedLinear);
 
     // Still: asleep at the first step, no element work.
     const TetSolver cpu = ClampedBarWithoutGravity(material);
@@ -281,7 +270,7 @@ TEST_CASE("GPU sleep: a prop made at rest, unloaded, sleeps at its first step wi
 TEST_CASE("GPU sleep: a prop at rest stops dispatching until an input wakes it", "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
-    FemMaterialSettings material = Soft(EElasticModel::CorotatedLinear);
+    FemMaterialSettings material = SoftBarMaterial(EElasticModel::CorotatedLinear);
     material.mMassDamping = 20.0; // comes to rest within a second
     const TetSolver cpu = ClampedBarWithoutGravity(material);
     GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
