@@ -539,8 +539,10 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     // intent: the nodes, shares and direction UpdateContactVelocity weighs (body frame: the solver's), less
     // the anchored ones: a touch at a footing alone (a piece lying against it) would weigh the whole held
     // body as the ground, and the next contact with it, the car's, would meet a wall
-    std::vector<int> nodes;
-    std::vector<double> shares;
+    std::vector<int>& nodes = ioProp.mMassNodes;
+    std::vector<double>& shares = ioProp.mMassShares;
+    nodes.clear();
+    shares.clear();
     Vec3 impulse = Vec3::Zero();
     const std::vector<double>& inverse_masses = cpu->GetInverseMasses();
     for (const NodalImpulse& hit : ioProp.mStruck)

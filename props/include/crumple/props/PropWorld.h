@@ -294,11 +294,13 @@ private:
         Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
         double mContactMass = 0.0;            ///< GetContactMass (kg; 0: none)
         double mSteppedMass = 0.0;            ///< The step's, until LandStep publishes it
+        std::vector<int> mMassNodes{};        ///< UpdateContactMass's scratch: struck free nodes ...
+        std::vector<double> mMassShares{};    ///< ... and their shares (kept: no allocation per step)
         double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
         double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
         HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
-        // A step's task writes mProp, mHits, mStruck, mSteppedVelocity and mForecast of the props it steps,
-        // nothing else.
+        // A step's task writes mProp, mHits, mStruck, mSteppedVelocity, mSteppedMass, the mass scratch and
+        // mForecast of the props it steps, nothing else.
     };
     // Collisions that reached props, and those refused (the first one's reason kept).
     struct CollisionTally
