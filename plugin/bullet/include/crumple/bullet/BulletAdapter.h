@@ -66,11 +66,13 @@ struct CRUMPLE_API BulletStepStats
 ///
 /// Each point's friction is the coefficient Bullet's solver uses for it (btManifoldPoint::m_combinedFriction,
 /// the product of the two objects' frictions), and Crumple's impulse solves it on Coulomb's isotropic cone.
-/// Bullet's default solver works along one tangent per contact (the slip's direction when the point appeared),
-/// so after an offset or corner hit whose contact then slips across that tangent the engine's sideways
-/// momentum change can differ from Crumple's impulse (tests/engines/CrossEngineTest.cpp measures it; ODE's
-/// friction pyramid agrees to 0.1 %). SOLVER_USE_2_FRICTION_DIRECTIONS in the world's solver mode brings
-/// Bullet closer (measured on the crash scenes: 23 of 24 frictional crashes within 3 % instead of 21).
+/// Bullet's default solver works along one tangent per contact (the slip's direction when the point
+/// appeared), so after an offset or corner hit whose contact then slips across that tangent the engine's
+/// sideways momentum change can differ from Crumple's impulse (tests/engines/CrossEngineTest.cpp measures it;
+/// ODE's friction pyramid agrees to 0.1 %). SOLVER_USE_2_FRICTION_DIRECTIONS (with
+/// SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION: ODE's pyramid) in the world's solver mode brings
+/// Bullet closer: the crash scenes set both, and 27 of their 28 frictional crashes agree within 3 % (25
+/// without).
 class CRUMPLE_API BulletAdapter
 {
 public:
