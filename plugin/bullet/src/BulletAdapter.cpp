@@ -48,17 +48,6 @@ btTransform ToBulletPose(const Mat3& inRotation, const Vec3& inPosition)
     return btTransform(basis, btVector3(btScalar(inPosition.x()), btScalar(inPosition.y()), btScalar(inPosition.z())));
 }
 
-// The held prop body inBody among an adapter's owned bodies, or the error inCaller gives for any other body.
-template <class Owned>
-Result<Owned*> FindHeldBody(std::vector<Owned>& ioOwned, BodyId inBody, const char* inCaller)
-{
-    const auto owned = std::find_if(ioOwned.begin(), ioOwned.end(), [&](const Owned& o) { return o.mBody == inBody; });
-    if (owned == ioOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, std::string(inCaller) + ": body " + std::to_string(inBody.mValue) +
-                                                 " is not a held prop body of this adapter");
-    return &*owned;
-}
-
 } // namespace
 
 Result<std::unique_ptr<BulletAdapter>> BulletAdapter::Create(btDiscreteDynamicsWorld& inWorld, DamageWorld& inDamage,
@@ -227,7 +216,7 @@ bool BulletAdapter::IsHeldPropBody(BodyId inBody) const
 
 Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 {
-    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldVelocity");
+    Result<OwnedBody*> found = FindHeldPropBody(mOwned, inBody, "SetHeldVelocity");
     if (!found)
         return found.GetError();
     OwnedBody* const owned = found.Get();
@@ -246,7 +235,7 @@ Status BulletAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 
 Status BulletAdapter::SetHeldMass(BodyId inBody, double inMass)
 {
-    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldMass");
+    Result<OwnedBody*> found = FindHeldPropBody(mOwned, inBody, "SetHeldMass");
     if (!found)
         return found.GetError();
     OwnedBody* const owned = found.Get();

@@ -91,17 +91,6 @@ dGeomID MakeBoundingBox(dSpaceID inSpace, dBodyID inBody, const std::vector<Vec3
     return geom;
 }
 
-// The held prop body inBody among an adapter's owned bodies, or the error inCaller gives for any other body.
-template <class Owned>
-Result<Owned*> FindHeldBody(std::vector<Owned>& ioOwned, BodyId inBody, const char* inCaller)
-{
-    const auto owned = std::find_if(ioOwned.begin(), ioOwned.end(), [&](const Owned& o) { return o.mBody == inBody; });
-    if (owned == ioOwned.end() || !owned->mHeld)
-        return MakeError(EError::OutOfRange, std::string(inCaller) + ": body " + std::to_string(inBody.mValue) +
-                                                 " is not a held prop body of this adapter");
-    return &*owned;
-}
-
 } // namespace
 
 OdeAdapter::~OdeAdapter()
@@ -193,7 +182,7 @@ bool OdeAdapter::IsHeldPropBody(BodyId inBody) const
 
 Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 {
-    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldVelocity");
+    Result<OwnedBody*> found = FindHeldPropBody(mOwned, inBody, "SetHeldVelocity");
     if (!found)
         return found.GetError();
     OwnedBody* const owned = found.Get();
@@ -211,7 +200,7 @@ Status OdeAdapter::SetHeldVelocity(BodyId inBody, const Vec3& inVelocity)
 
 Status OdeAdapter::SetHeldMass(BodyId inBody, double inMass)
 {
-    Result<OwnedBody*> found = FindHeldBody(mOwned, inBody, "SetHeldMass");
+    Result<OwnedBody*> found = FindHeldPropBody(mOwned, inBody, "SetHeldMass");
     if (!found)
         return found.GetError();
     OwnedBody* const owned = found.Get();

@@ -6,7 +6,10 @@
 
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
+#include <crumple/plugin/Ids.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 namespace crumple::plugin
@@ -56,5 +59,19 @@ CRUMPLE_API Status ValidateHeldVelocity(const Vec3& inVelocity);
 /// Checks a held body's contact mass (SetHeldMass): 0 (the body's own mass and inertia) or in
 /// [1e-12, cMaxBodyMass] kg.
 CRUMPLE_API Status ValidateHeldMass(double inMass);
+
+/// For the adapters: the held prop body inBody among the bodies an adapter owns (each an Owned with its
+/// damage body mBody and mHeld), or the error inCaller reports for any other body (OutOfRange).
+template <class Owned>
+Result<Owned*> FindHeldPropBody(std::vector<Owned>& ioOwned, BodyId inBody, const char* inCaller)
+{
+    const auto owned = std::find_if(ioOwned.begin(), ioOwned.end(),
+                                    [&](const Owned& inOwned) { return inOwned.mBody == inBody; });
+    if (owned == ioOwned.end() || !owned->mHeld)
+        return MakeError(EError::OutOfRange, std::string(inCaller) + ": body " +
+                                                 std::to_string(inBody.mValue) +
+                                                 " is not a held prop body of this adapter");
+    return &*owned;
+}
 
 } // namespace crumple::plugin
