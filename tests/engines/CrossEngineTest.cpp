@@ -144,7 +144,11 @@ TEST_CASE("A collision's impulse is the engine's change of the car's momentum wi
 // offset or corner hit slid across it, sideways 133 N s where Crumple's impulse takes 449 N s and ODE's
 // engine 448 N s at 20 km/h offset, 339 against 531 N s at 20 km/h into a corner, 641 against 1,067 N s at
 // 40 km/h into a corner). The one left: the 40 km/h 40 % offset hit takes 1,451 N s sideways in Bullet
-// against Crumple's 903 and ODE's 897, with the same pyramid.
+// against Crumple's 903 and ODE's 897, with the same pyramid. That is Bullet's solver stopping at its default
+// 10 iterations: with 50 or more it takes 900 N s. Converged (100 and 200 iterations) Bullet takes 4.2 % more
+// than Crumple at the 20 km/h 45-degree wall (6,367 against 6,111 N s along x), where ODE agrees with
+// Crumple to 0.1 %; 30 iterations pass all 28, unconverged. No count passes for the right reason, so the
+// scene keeps Bullet's default (measured in a scratch build of this test).
 TEST_CASE("With friction a collision's impulse is Bullet's change of the car's momentum within 3 %", "[bullet][!mayfail]")
 {
     CheckImpulseIsMomentumChange<BulletWallCrash>("Bullet", 0.5);
