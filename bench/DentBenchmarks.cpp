@@ -72,7 +72,11 @@ Collision MakeFrontCollision(int inContacts)
     std::uniform_real_distribution<double> y(-0.85, 0.85), z(-0.65, 0.65);
     std::vector<ImpulseContact> contacts;
     for (int i = 0; i < inContacts; ++i)
-        contacts.push_back({Vec3(cHalfExtents.x(), y(random), z(random)), -Vec3::UnitX()});
+    {
+        const double pz = z(random),
+                     py = y(random); // sequenced, last argument first (the tests' common::DrawVec3)
+        contacts.push_back({Vec3(cHalfExtents.x(), py, pz), -Vec3::UnitX()});
+    }
     const std::vector<double> impulses = SimultaneousImpulses(car, wall, contacts, 0.1, 0.5);
 
     Collision collision;

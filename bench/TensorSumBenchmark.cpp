@@ -28,7 +28,11 @@ void RunTensorSumCase(BenchTable& ioTable, const BenchOptions& inOptions)
     std::uniform_real_distribution<double> value(-0.1, 0.1), unit(0.0, 1.0);
     std::vector<Vec3> controls(static_cast<std::size_t>(nx * ny * nz));
     for (Vec3& control : controls)
-        control = Vec3(value(random), value(random), value(random));
+    {
+        const double z = value(random), y = value(random),
+                     x = value(random); // sequenced, last argument first (the tests' common::DrawVec3)
+        control = Vec3(x, y, z);
+    }
     struct Point
     {
         std::size_t mFirst;

@@ -52,7 +52,9 @@ void RunWideImpactCases(BenchTable& ioTable, const BenchOptions& inOptions)
     std::vector<PointDisplacement> front, ring;
     for (int i = 0; i < 64; ++i)
     {
-        const Vec3 point(2.1, y(random), z(random));
+        const double pz = z(random),
+                     py = y(random); // sequenced, last argument first (the tests' common::DrawVec3)
+        const Vec3 point(2.1, py, pz);
         front.push_back({point, AffineDisplacement(point)});
     }
     constexpr int cRing = 150;

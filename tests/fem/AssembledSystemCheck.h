@@ -4,6 +4,7 @@
 // is from the matrix-free implicit operator a M + b K on a random direction.
 #pragma once
 
+#include "DrawVec3.h"
 #include "NodeBlockCholesky.h"
 #include "TetElementPass.h"
 
@@ -53,7 +54,7 @@ inline OperatorDifference AssembledAgainstMatrixFree(const fem::TetElementPassIn
     for (std::size_t node = 0; node < node_count; ++node)
         if (inFreeIndex[node] >= 0)
         {
-            direction[node] = Vec3(unit(ioRandom), unit(ioRandom), unit(ioRandom));
+            direction[node] = common::DrawVec3([&] { return unit(ioRandom); });
             gathered.segment<3>(3 * inFreeIndex[node]) = direction[node];
         }
     std::vector<Vec3> product(node_count);

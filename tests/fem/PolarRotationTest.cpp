@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/fem/PolarRotation.h>
 
+#include "DrawVec3.h"
+
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -15,7 +17,9 @@ namespace
 Quat RandomRotation(std::mt19937& ioRandom)
 {
     std::normal_distribution<double> normal;
-    return Quat(normal(ioRandom), normal(ioRandom), normal(ioRandom), normal(ioRandom)).normalized();
+    // sequenced, last argument first (common::DrawVec3)
+    const double z = normal(ioRandom), y = normal(ioRandom), x = normal(ioRandom), w = normal(ioRandom);
+    return Quat(w, x, y, z).normalized();
 }
 
 // Deviation of a matrix from a proper rotation: |R^T R - I| + |det R - 1|.
@@ -36,7 +40,7 @@ TEST_CASE("PolarRotation recovers R from F = R S from a cold start", "[fem]")
         // Symmetric positive definite stretch with principal values in [0.5, 2] along random axes.
         const Mat3 axes = RandomRotation(random).toRotationMatrix();
         const Mat3 s =
-            axes * Vec3(stretch(random), stretch(random), stretch(random)).asDiagonal() * axes.transpose();
+            axes * common::DrawVec3([&] { return stretch(random); }).asDiagonal() * axes.transpose();
         const Quat r = RandomRotation(random);
         const Mat3 f = r.toRotationMatrix() * s;
 

@@ -6,6 +6,7 @@
 // one.
 #include "AllocationCounter.h"
 #include "AssembledSystemCheck.h"
+#include "DrawVec3.h"
 #include "NodeBlockCholesky.h"
 #include "TetElementPass.h"
 #include "TetFactoredPreconditioner.h"
@@ -33,7 +34,9 @@ namespace
 Quat RandomRotation(std::mt19937& ioRandom)
 {
     std::normal_distribution<double> normal;
-    Eigen::Vector4d q(normal(ioRandom), normal(ioRandom), normal(ioRandom), normal(ioRandom));
+    // sequenced, last component first (common::DrawVec3)
+    const double d = normal(ioRandom), c = normal(ioRandom), b = normal(ioRandom), a = normal(ioRandom);
+    Eigen::Vector4d q(a, b, c, d);
     return Quat(q.normalized());
 }
 
@@ -157,7 +160,7 @@ TEST_CASE("NodeBlockCholesky: Refactor of the same pattern is bitwise a fresh Fa
         std::uniform_real_distribution<double> unit(-1.0, 1.0);
         std::vector<Vec3> rhs(static_cast<std::size_t>(n));
         for (Vec3& value : rhs)
-            value = Vec3(unit(random), unit(random), unit(random));
+            value = common::DrawVec3([&] { return unit(random); });
         std::vector<Vec3> a = rhs, b = rhs;
         reused.Solve(a);
         fresh.Solve(b);
@@ -203,7 +206,7 @@ TEST_CASE("Rest system at element frames: the assembled blocks apply the corotat
     const int node_count = mesh.GetNodeCount();
     std::vector<Vec3> positions = mesh.GetRestPositions();
     for (Vec3& position : positions)
-        position += 0.06 * Vec3(unit(random), unit(random), unit(random));
+        position += 0.06 * common::DrawVec3([&] { return unit(random); });
     std::vector<Quat> rotations(rest.size(), Quat::Identity());
     std::vector<TetLinearization> linearization(rest.size());
     std::vector<Vec3> forces(static_cast<std::size_t>(node_count));

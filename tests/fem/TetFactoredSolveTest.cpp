@@ -5,8 +5,9 @@
 #include "AllocationCounter.h"
 #include "AssembledSystemCheck.h"
 #include "CantileverScene.h"
-#include "TetElementPass.h"
+#include "DrawVec3.h"
 #include "NodeBlockCholesky.h"
+#include "TetElementPass.h"
 #include "TetRestSystemBlocks.h"
 
 #include <crumple/fem/FemMaterial.h>
@@ -237,7 +238,7 @@ TEST_CASE("NodeBlockCholesky: solves random sparse SPD block systems as a dense 
         Eigen::VectorXd rhs(3 * n);
         for (int node = 0; node < n; ++node)
         {
-            x[node] = Vec3(unit(random), unit(random), unit(random));
+            x[node] = common::DrawVec3([&] { return unit(random); });
             rhs.segment<3>(3 * node) = x[node];
         }
         cholesky.Solve(x);

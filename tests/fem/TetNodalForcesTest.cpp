@@ -10,6 +10,8 @@
 #include <crumple/fem/TetNodalForces.h>
 #include <crumple/fem/TetVolume.h>
 
+#include "DrawVec3.h"
+
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -70,7 +72,7 @@ TEST_CASE("TetNodalForces are minus the energy gradient, balanced and torque fre
                 Eigen::AngleAxisd(0.3 * trial, Vec3(1, 2, 3).normalized()).toRotationMatrix();
             std::array<Vec3, 4> x;
             for (int corner = 0; corner < 4; ++corner)
-                x[corner] = rotation * (rest[corner] + Vec3(jitter(random), jitter(random), jitter(random)));
+                x[corner] = rotation * (rest[corner] + common::DrawVec3([&] { return jitter(random); }));
             const Mat3 f = DeformationGradient(x[0], x[1], x[2], x[3], dm_inverse);
             const Mat3 r = PolarRotation(f, Quat::Identity()).toRotationMatrix();
             const std::array<Vec3, 4> forces =

@@ -36,7 +36,11 @@ std::vector<PointDisplacement> FrontPoints(int inCount, double inHalfWidth, doub
     std::uniform_real_distribution<double> across(-inHalfWidth, inHalfWidth);
     std::vector<PointDisplacement> points;
     for (int i = 0; i < inCount; ++i)
-        points.push_back({Vec3(2.0, across(random), across(random)), Vec3(-inDepth, 0.0, 0.0)});
+    {
+        const double z = across(random),
+                     y = across(random); // sequenced, last argument first (common::DrawVec3)
+        points.push_back({Vec3(2.0, y, z), Vec3(-inDepth, 0.0, 0.0)});
+    }
     return points;
 }
 

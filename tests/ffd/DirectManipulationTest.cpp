@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/DirectManipulation.h>
 
+#include "DrawVec3.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
 #include <catch2/catch.hpp>
@@ -30,7 +32,10 @@ std::vector<LatticeLocation> RandomLocations(const FfdLattice& inLattice, int in
     std::vector<LatticeLocation> locations;
     const auto& cells = inLattice.GetCellCount();
     for (int i = 0; i < inCount; ++i)
-        locations.push_back(inLattice.Locate(Vec3(unit(ioRandom) * cells[0], unit(ioRandom) * cells[1], unit(ioRandom) * cells[2])));
+    {
+        const Vec3 u = common::DrawVec3([&] { return unit(ioRandom); });
+        locations.push_back(inLattice.Locate(Vec3(u.x() * cells[0], u.y() * cells[1], u.z() * cells[2])));
+    }
     return locations;
 }
 
@@ -185,7 +190,7 @@ TEST_CASE("The Gram solve equals a dense SVD pseudo-inverse on random sets", "[f
             // Many points in one cell: more rows than the 64 columns they reach.
             std::uniform_real_distribution<double> unit(0.0, 1.0);
             for (int i = 0; i < count; ++i)
-                locations.push_back(lattice.Locate(Vec3(unit(random), unit(random), unit(random))));
+                locations.push_back(lattice.Locate(common::DrawVec3([&] { return unit(random); })));
         }
         else
             locations = RandomLocations(lattice, count, random);

@@ -130,7 +130,10 @@ TEST_CASE("Incremental update equals a full recompute", "[ffd]")
         std::vector<PointDisplacement> points;
         const double side = dent % 2 == 0 ? 2.0 : -2.0;
         for (int i = 0; i < 1 + dent % 5; ++i)
-            points.push_back({Vec3(side, y(random), z(random)), Vec3(-side / 2.0 * depth(random), 0.0, 0.0)});
+        {
+            const double pz = z(random), py = y(random); // sequenced, last argument first (common::DrawVec3)
+            points.push_back({Vec3(side, py, pz), Vec3(-side / 2.0 * depth(random), 0.0, 0.0)});
+        }
         REQUIRE(deformer.ApplyDent(points));
     }
     FfdDeformer reference = deformer;
@@ -470,7 +473,11 @@ TEST_CASE("Dents are bitwise identical on 1, 2 and 4 worker threads", "[ffd]")
         {
             std::vector<PointDisplacement> points;
             for (int i = 0; i < 12; ++i)
-                points.push_back({Vec3(2.1, y(random), z(random)), Vec3(-0.05 - 0.01 * i, 0.0, 0.0)});
+            {
+                const double pz = z(random),
+                             py = y(random); // sequenced, last argument first (common::DrawVec3)
+                points.push_back({Vec3(2.1, py, pz), Vec3(-0.05 - 0.01 * i, 0.0, 0.0)});
+            }
             moved += deformer.ApplyDent(points, 0.06).Get().mVerticesMoved;
         }
         return std::tuple{deformer.GetPositions(), deformer.GetNormals(), moved};

@@ -3,6 +3,8 @@
 #include <crumple/ffd/CubicBSplineWeights.h>
 #include <crumple/ffd/FfdLattice.h>
 
+#include "DrawVec3.h"
+
 #include <catch2/catch.hpp>
 
 #include <limits>
@@ -105,7 +107,8 @@ TEST_CASE("An undeformed lattice reproduces every point", "[ffd]")
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < 2000; ++i)
     {
-        const Vec3 p = s.mOrigin + s.mAxes * Vec3(unit(random), unit(random), unit(random)).cwiseProduct(s.mSize);
+        const Vec3 p =
+            s.mOrigin + s.mAxes * common::DrawVec3([&] { return unit(random); }).cwiseProduct(s.mSize);
         const LatticeLocation location = lattice.Locate(lattice.LatticeCoordinate(p));
         // Displacement form: exactly zero, so rest + displacement is the rest point bit for bit.
         REQUIRE(lattice.Displacement(location) == Vec3::Zero());

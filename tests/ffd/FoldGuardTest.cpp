@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/FoldGuard.h>
 
+#include "DrawVec3.h"
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
@@ -80,12 +82,12 @@ TEST_CASE("FoldGuard changes nothing when no pair violates", "[ffd]")
         std::uniform_real_distribution<double> small(-0.05, 0.05); // gaps stay above 0.5 h
         std::vector<Vec3> before(count, Vec3::Zero());
         for (Vec3& d : before)
-            d = Vec3(small(random), small(random), small(random));
+            d = common::DrawVec3([&] { return small(random); });
         std::vector<Vec3> after = before;
         std::vector<int> changed;
         for (int control = 3; control < static_cast<int>(count); control += 7)
         {
-            after[static_cast<std::size_t>(control)] += Vec3(small(random), small(random), small(random));
+            after[static_cast<std::size_t>(control)] += common::DrawVec3([&] { return small(random); });
             changed.push_back(control);
         }
         REQUIRE(MinRelativeGap(lattice, after) > cMinSpacing);

@@ -88,7 +88,9 @@ TEST_CASE("The direct-manipulation factor of clustered points on a face has the 
     {
         const double a = y(random), b = z(random);
         locations.push_back(lattice.Locate(crumple::Vec3(12.5, a, b)));
-        locations.push_back(lattice.Locate(crumple::Vec3(12.5, a + jitter(random), b + jitter(random))));
+        // sequenced, last argument first (common::DrawVec3)
+        const double near_b = b + jitter(random), near_a = a + jitter(random);
+        locations.push_back(lattice.Locate(crumple::Vec3(12.5, near_a, near_b)));
     }
     const DirectManipulationData data = DirectManipulationPrecompute(lattice, locations);
     REQUIRE(data.mGramOfPoints);

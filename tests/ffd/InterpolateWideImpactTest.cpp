@@ -164,7 +164,8 @@ TEST_CASE("Samples closer than half the pitch are dropped, and the face stays co
     std::vector<PointDisplacement> contacts;
     for (int i = 0; i < 64; ++i)
     {
-        const Vec3 point(2.0, y(random), z(random));
+        const double pz = z(random), py = y(random); // sequenced, last argument first (common::DrawVec3)
+        const Vec3 point(2.0, py, pz);
         contacts.push_back({point, Affine(point)});
     }
     const double spacing = 0.15;

@@ -3,6 +3,7 @@
 // SeamTwins (white box): each vertex's lowest index at the same position (==, so 0.0 and -0.0 are one),
 // against a scan of every pair, on seeded sets full of duplicates, signed zeros and near misses.
 #include "SeamTwins.h"
+#include "DrawVec3.h"
 
 #include <catch2/catch.hpp>
 
@@ -23,7 +24,7 @@ TEST_CASE("SeamTwins equals a scan of every pair: duplicates, signed zeros, neig
         const int count = 50 + 40 * trial;
         for (int v = 0; v < count; ++v)
         {
-            Vec3 p(0.25 * coordinate(random), 0.25 * coordinate(random), 0.25 * coordinate(random));
+            Vec3 p = 0.25 * common::DrawVec3([&] { return coordinate(random); });
             const int kind = choice(random);
             if (kind == 0)
                 p.x() = p.x() == 0.0 ? -0.0 : p.x(); // a signed zero, equal by ==

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "DrawVec3.h"
 #include "TwoZoneBox.h"
 
 #include <crumple/ffd/FfdDeformer.h>
@@ -101,7 +102,7 @@ SurfaceProbe RandomProbe(std::mt19937_64& ioRandom)
     std::normal_distribution<double> normal;
     std::uniform_real_distribution<double> centre(-1.2, 1.2), width(0.01, 2.5);
     SurfaceProbe probe;
-    probe.mDirection = Vec3(normal(ioRandom), normal(ioRandom), normal(ioRandom)).normalized();
+    probe.mDirection = common::DrawVec3([&] { return normal(ioRandom); }).normalized();
     // Half of the probes along a body axis, as crushes mostly are.
     if (ioRandom() % 2 == 0)
         probe.mDirection = Vec3::Unit(static_cast<Eigen::Index>(ioRandom() % 3)) * (ioRandom() % 2 == 0 ? 1.0 : -1.0);
@@ -153,9 +154,24 @@ TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and 
         {
             std::vector<PointDisplacement> points;
             for (int i = 0; i < 3; ++i)
-                points.push_back(dent % 3 == 0   ? PointDisplacement{Vec3(2.0, y(random), z(random)), Vec3(-depth(random), 0.0, 0.0)}
-                                 : dent % 3 == 1 ? PointDisplacement{Vec3(0.8 * y(random), 0.9, z(random)), Vec3(0.0, -depth(random), 0.0)}
-                                                 : PointDisplacement{Vec3(2.0 * y(random), y(random), 0.7), Vec3(0.0, 0.0, -depth(random))});
+            {
+                // Draws sequenced, last argument first (common::DrawVec3).
+                if (dent % 3 == 0)
+                {
+                    const double pz = z(random), py = y(random);
+                    points.push_back({Vec3(2.0, py, pz), Vec3(-depth(random), 0.0, 0.0)});
+                }
+                else if (dent % 3 == 1)
+                {
+                    const double pz = z(random), px = 0.8 * y(random);
+                    points.push_back({Vec3(px, 0.9, pz), Vec3(0.0, -depth(random), 0.0)});
+                }
+                else
+                {
+                    const double py = y(random), px = 2.0 * y(random);
+                    points.push_back({Vec3(px, py, 0.7), Vec3(0.0, 0.0, -depth(random))});
+                }
+            }
             REQUIRE(deformer.ApplyDent(points));
             CheckSameAsBruteForce(deformer, random, 100, hits);
         }

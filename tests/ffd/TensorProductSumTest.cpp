@@ -4,6 +4,7 @@
 // scalar sum's bits (so a dent, a replay and a golden hash are the same on every x86-64 machine), and the
 // scalar sum is the B-spline sum itself.
 #include "TensorProductSum.h"
+#include "DrawVec3.h"
 
 #include <SkipTest.h>
 
@@ -63,7 +64,7 @@ TEST_CASE("The scalar tensor-product sum is the triple sum of the B-spline weigh
     const int nx = 6, ny = 5, nz = 4;
     std::vector<Vec3> controls(static_cast<std::size_t>(nx * ny * nz));
     for (Vec3& control : controls)
-        control = Vec3(value(random), value(random), value(random));
+        control = common::DrawVec3([&] { return value(random); });
     for (int trial = 0; trial < 200; ++trial)
     {
         const int i = static_cast<int>(random() % (nx - 3)), j = static_cast<int>(random() % (ny - 3)), k = static_cast<int>(random() % (nz - 3));
@@ -91,7 +92,7 @@ TEST_CASE("The wide tensor-product sum gives the scalar sum's bits", "[ffd]")
     for (int fill = 0; fill < 20; ++fill)
     {
         for (Vec3& control : controls)
-            control = Vec3(AnyValue(random), AnyValue(random), AnyValue(random));
+            control = common::DrawVec3([&] { return AnyValue(random); });
         // intent: every cell but the last (its last control ends the array: the wide sum reads one past it)
         for (int k = 0; k < nz - 3; ++k)
             for (int j = 0; j < ny - 3; ++j)
@@ -124,7 +125,7 @@ TEST_CASE("The wide sum over a cell's packed controls gives the scalar sum's bit
     for (int fill = 0; fill < 20; ++fill)
     {
         for (Vec3& control : controls)
-            control = Vec3(AnyValue(random), AnyValue(random), AnyValue(random));
+            control = common::DrawVec3([&] { return AnyValue(random); });
         for (int k = 0; k < nz - 3; ++k)
             for (int j = 0; j < ny - 3; ++j)
                 for (int i = 0; i < nx - 3; ++i)

@@ -22,8 +22,9 @@ TEST_CASE("Vertex groups hand over every vertex once, each inside its group's bo
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int dent = 0; dent < 4; ++dent)
     {
-        const PointDisplacement push{Vec3(half.x() - 1.2 * unit(random), half.y(), half.z() * (2.0 * unit(random) - 1.0)),
-                                     Vec3(0.0, -0.2 * unit(random), 0.05)};
+        // sequenced, last argument first (common::DrawVec3)
+        const double z = half.z() * (2.0 * unit(random) - 1.0), x = half.x() - 1.2 * unit(random);
+        const PointDisplacement push{Vec3(x, half.y(), z), Vec3(0.0, -0.2 * unit(random), 0.05)};
         REQUIRE(deformer.ApplyDent(std::span<const PointDisplacement>(&push, 1)));
     }
     const std::vector<Vec3>& positions = deformer.GetCurrentPositions();

@@ -4,6 +4,7 @@
 // (max norm, in cells), exactly as the linear scan it replaced, point for point; ThinZonePoints merges what
 // is left on coarser bins until it fits and keeps the weighted means.
 #include "ZonePoints.h"
+#include "DrawVec3.h"
 
 #include <catch2/catch.hpp>
 
@@ -54,9 +55,10 @@ TEST_CASE("ZonePointSet merges as the linear scan does, point for point and bit 
     std::vector<std::pair<Vec3, Vec3>> input;
     for (int cluster = 0; cluster < 60; ++cluster)
     {
-        const Vec3 middle(centre(random), centre(random), centre(random));
+        const Vec3 middle = common::DrawVec3([&] { return centre(random); });
         for (int i = 0; i < 12; ++i)
-            input.push_back({middle + Vec3(jitter(random), jitter(random), jitter(random)), Vec3(push(random), push(random), push(random))});
+            input.push_back({middle + common::DrawVec3([&] { return jitter(random); }),
+                             common::DrawVec3([&] { return push(random); })});
     }
     for (double merge : {0.0, 0.05, 0.1, 0.35, 0.999})
     {
@@ -86,7 +88,9 @@ TEST_CASE("ThinZonePoints fits a zone's points under the cap with their weighted
     int weight = 0;
     for (int i = 0; i < 5000; ++i)
     {
-        const ZonePoint point{Vec3(coordinate(random), coordinate(random), 0.5), Vec3(push(random), 0.0, 0.0), 1 + i % 3};
+        const double y = coordinate(random),
+                     x = coordinate(random); // sequenced, last argument first (common::DrawVec3)
+        const ZonePoint point{Vec3(x, y, 0.5), Vec3(push(random), 0.0, 0.0), 1 + i % 3};
         weighted_sum += point.mMergedCount * point.mDisplacement;
         weight += point.mMergedCount;
         points.push_back(point);

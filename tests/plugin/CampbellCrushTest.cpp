@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "DrawVec3.h"
 #include "ImpulseBodies.h"
 #include "ScratchDirectory.h"
 
@@ -357,7 +358,8 @@ TEST_CASE("A crush plan changes exactly the controls its field reaches, as a sca
     for (int i = 0; i < 60; ++i)
     {
         CrushPlan plan;
-        plan.mDirection = i % 3 == 0 ? Vec3(-1.0, 0.0, 0.0) : Vec3(normal(random), normal(random), normal(random)).normalized();
+        plan.mDirection =
+            i % 3 == 0 ? Vec3(-1.0, 0.0, 0.0) : common::DrawVec3([&] { return normal(random); }).normalized();
         plan.mSide = WidthAxisForTest(plan.mDirection);
         plan.mThird = plan.mDirection.cross(plan.mSide);
         const double s = 2.0 * unit(random) - 1.0, t = 2.0 * unit(random) - 1.0;
@@ -374,7 +376,8 @@ TEST_CASE("A crush plan changes exactly the controls its field reaches, as a sca
         {
             // An occupant cell whose face crosses the body somewhere, its axis within 60 degrees of d.
             plan.mCellActive = true;
-            plan.mCellAxis = (plan.mDirection + 0.5 * Vec3(normal(random), normal(random), normal(random))).normalized();
+            plan.mCellAxis =
+                (plan.mDirection + 0.5 * common::DrawVec3([&] { return normal(random); })).normalized();
             if (plan.mCellAxis.dot(plan.mDirection) < 0.5)
                 plan.mCellAxis = plan.mDirection;
             plan.mCellFace = plan.mCellAxis.dot(Vec3(-1.5 + 2.0 * unit(random), 0.0, 0.0));
@@ -632,7 +635,8 @@ TEST_CASE("Stress: random slanted and rounded fronts, directions, energies and m
     int stacked = 0, conformed = 0, widened = 0;
     for (int seed = 0; seed < 24; ++seed)
     {
-        const Vec3 half(1.5 + unit(random), 0.7 + 0.3 * unit(random), 0.5 + 0.3 * unit(random));
+        const Vec3 half = Vec3(1.5, 0.7, 0.5) +
+                          Vec3(1.0, 0.3, 0.3).cwiseProduct(common::DrawVec3([&] { return unit(random); }));
         const double slant = 0.4 * unit(random), round = 0.4 * unit(random);
         auto shape = [&](const Vec3& inP) {
             const double fade = (inP.x() + half.x()) / (2.0 * half.x());

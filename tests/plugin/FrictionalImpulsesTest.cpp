@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/FrictionalImpulses.h>
 
+#include "DrawVec3.h"
 #include "ImpulseBodies.h"
 
 #include <catch2/catch.hpp>
@@ -24,16 +25,23 @@ BodyState RandomFaller(std::mt19937& ioRandom)
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     BodyState body;
     body.mMass = 10.0 + 1000.0 * (unit(ioRandom) + 1.0);
-    const Vec3 sides(1.0 + unit(ioRandom) * 0.5, 2.0 + unit(ioRandom), 0.5 + 0.3 * unit(ioRandom));
+    // Draws sequenced, last argument first (common::DrawVec3).
+    const double sz = 0.5 + 0.3 * unit(ioRandom), sy = 2.0 + unit(ioRandom), sx = 1.0 + unit(ioRandom) * 0.5;
+    const Vec3 sides(sx, sy, sz);
     const Vec3 inertia = body.mMass / 12.0 *
                          Vec3(sides.y() * sides.y() + sides.z() * sides.z(), sides.x() * sides.x() + sides.z() * sides.z(),
                               sides.x() * sides.x() + sides.y() * sides.y());
-    const Mat3 rotation = Eigen::AngleAxisd(3.0 * unit(ioRandom), Vec3(unit(ioRandom), unit(ioRandom), 1.0).normalized()).toRotationMatrix();
+    const double ay = unit(ioRandom), ax = unit(ioRandom), angle = 3.0 * unit(ioRandom);
+    const Mat3 rotation = Eigen::AngleAxisd(angle, Vec3(ax, ay, 1.0).normalized()).toRotationMatrix();
     body.mInverseInertiaWorld = rotation * inertia.cwiseInverse().asDiagonal() * rotation.transpose();
-    body.mCenterOfMass = Vec3(0.2 * unit(ioRandom), 0.2 * unit(ioRandom), 0.3 + 0.2 * (unit(ioRandom) + 1.0));
+    const double cz = 0.3 + 0.2 * (unit(ioRandom) + 1.0), cy = 0.2 * unit(ioRandom),
+                 cx = 0.2 * unit(ioRandom);
+    body.mCenterOfMass = Vec3(cx, cy, cz);
     body.mTransform.mTranslation = body.mCenterOfMass;
-    body.mLinearVelocity = Vec3(8.0 * unit(ioRandom), 8.0 * unit(ioRandom), -1.0 - 5.0 * (unit(ioRandom) + 1.0));
-    body.mAngularVelocity = 2.0 * Vec3(unit(ioRandom), unit(ioRandom), unit(ioRandom));
+    const double vz = -1.0 - 5.0 * (unit(ioRandom) + 1.0), vy = 8.0 * unit(ioRandom),
+                 vx = 8.0 * unit(ioRandom);
+    body.mLinearVelocity = Vec3(vx, vy, vz);
+    body.mAngularVelocity = 2.0 * common::DrawVec3([&] { return unit(ioRandom); });
     return body;
 }
 
@@ -75,8 +83,10 @@ TEST_CASE("Without friction the frictional solve is the frictionless one, bit fo
         std::vector<ImpulseContact> contacts(static_cast<std::size_t>(1 + trial % 12));
         for (ImpulseContact& c : contacts)
         {
-            c.mPoint = Vec3(unit(random), unit(random), 0.0);
-            c.mNormal = Vec3(0.2 * unit(random), 0.2 * unit(random), 1.0).normalized();
+            const double y = unit(random), x = unit(random); // sequenced (common::DrawVec3)
+            c.mPoint = Vec3(x, y, 0.0);
+            const double ny = unit(random), nx = unit(random);
+            c.mNormal = Vec3(0.2 * nx, 0.2 * ny, 1.0).normalized();
         }
         const std::vector<double> reference = SimultaneousImpulses(a, b, contacts, 0.1, 0.01);
         const std::vector<ContactImpulse> frictional = FrictionalImpulses(a, b, contacts, 0.1, 0.01);
@@ -194,8 +204,11 @@ TEST_CASE("A box landing on its face while sliding and spinning meets Coulomb's 
                                        .asDiagonal();
         box.mCenterOfMass = Vec3(0.0, 0.0, half.z());
         box.mTransform.mTranslation = box.mCenterOfMass;
-        box.mLinearVelocity = Vec3(10.0 * unit(random), 10.0 * unit(random), -1.0 - 4.0 * (unit(random) + 1.0));
-        box.mAngularVelocity = Vec3(0.5 * unit(random), 0.5 * unit(random), 2.0 * unit(random));
+        const double vz = -1.0 - 4.0 * (unit(random) + 1.0), vy = 10.0 * unit(random),
+                     vx = 10.0 * unit(random); // sequenced (common::DrawVec3)
+        box.mLinearVelocity = Vec3(vx, vy, vz);
+        box.mAngularVelocity =
+            Vec3(0.5, 0.5, 2.0).cwiseProduct(common::DrawVec3([&] { return unit(random); }));
         const double mu = 0.75 * (unit(random) + 1.0), e = trial % 2 == 0 ? 0.0 : 0.3;
         std::vector<ImpulseContact> contacts;
         for (double x : {-half.x(), half.x()})
@@ -229,8 +242,9 @@ TEST_CASE("On random contact sets friction stays in its cone and makes no energy
         std::vector<ImpulseContact> contacts(static_cast<std::size_t>(1 + trial % 16));
         for (ImpulseContact& c : contacts)
         {
-            c.mPoint = Vec3(unit(random), unit(random), 0.05 * unit(random));
-            c.mNormal = Vec3(0.3 * unit(random), 0.3 * unit(random), 1.0).normalized();
+            c.mPoint = Vec3(1.0, 1.0, 0.05).cwiseProduct(common::DrawVec3([&] { return unit(random); }));
+            const double ny = unit(random), nx = unit(random); // sequenced (common::DrawVec3)
+            c.mNormal = Vec3(0.3 * nx, 0.3 * ny, 1.0).normalized();
             c.mFriction = trial % 5 == 0 ? std::numeric_limits<double>::infinity() : 0.8 * (unit(random) + 1.0);
         }
         const std::vector<ContactImpulse> j = FrictionalImpulses(a, b, contacts, e, 0.0);

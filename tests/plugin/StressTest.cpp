@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "DrawVec3.h"
 #include "WorldFixture.h"
 
 #include <catch2/catch.hpp>
@@ -24,7 +25,7 @@ TEST_CASE("10,000 random impacts leave no NaN and no vertex beyond the maximum t
     auto random_direction = [&]() {
         Vec3 d;
         do
-            d = Vec3(symmetric(random), symmetric(random), symmetric(random));
+            d = common::DrawVec3([&] { return symmetric(random); });
         while (d.norm() < 1.0e-3 || d.norm() > 1.0);
         return Vec3(d.normalized());
     };
@@ -45,19 +46,21 @@ TEST_CASE("10,000 random impacts leave no NaN and no vertex beyond the maximum t
         const Vec3 normal = random_direction();
         const int kind = impact % 4;
         const int count = 1 + static_cast<int>(unit(random) * 63.0);
-        const Vec3 centre = car_state.mTransform.ToWorld(half.cwiseProduct(Vec3(symmetric(random), symmetric(random), symmetric(random))));
+        const Vec3 centre = car_state.mTransform.ToWorld(
+            half.cwiseProduct(common::DrawVec3([&] { return symmetric(random); })));
         std::vector<ContactEvent> contacts;
         for (int i = 0; i < count; ++i)
         {
             Vec3 p;
             if (kind == 0) // scattered
-                p = car_state.mTransform.ToWorld(half.cwiseProduct(Vec3(symmetric(random), symmetric(random), symmetric(random))));
+                p = car_state.mTransform.ToWorld(
+                    half.cwiseProduct(common::DrawVec3([&] { return symmetric(random); })));
             else if (kind == 1) // all coincident
                 p = centre;
             else if (kind == 2) // collinear
                 p = centre + 0.05 * i * Vec3::UnitY();
             else // nearly coincident
-                p = centre + 1.0e-9 * Vec3(symmetric(random), symmetric(random), symmetric(random));
+                p = centre + 1.0e-9 * common::DrawVec3([&] { return symmetric(random); });
             ContactEvent contact;
             contact.mBodyA = fixture.mCar;
             contact.mBodyB = fixture.mWall;

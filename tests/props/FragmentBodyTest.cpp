@@ -6,6 +6,8 @@
 #include <crumple/fem/TetSolver.h>
 #include <crumple/props/FragmentBody.h>
 
+#include "DrawVec3.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -77,7 +79,7 @@ TEST_CASE("A loose fragment's rigid body: exact mass, inertia and momentum, its 
         {
             std::vector<Vec3> v(x.size());
             for (Vec3& velocity : v)
-                velocity = Vec3(normal(random), normal(random), normal(random));
+                velocity = common::DrawVec3([&] { return normal(random); });
             const FragmentRigidBody body = FragmentBody(fragment, x, v, m, prop).Get();
             CHECK(body.mBody.mMass == fragment.mMass);
             const Mat3 world_inertia = rotation * fragment.mInertia * rotation.transpose();

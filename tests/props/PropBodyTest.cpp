@@ -3,6 +3,7 @@
 // A prop as an engine body: its exact mass frame, its mesh moved into it, and its collision pieces, which
 // lose what breaks loose and follow what its FEM does.
 #include "BrittlePanel.h"
+#include "DrawVec3.h"
 #include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
@@ -188,7 +189,7 @@ TEST_CASE("PropCollisionPieces equals the cube map it stands for, near the origi
     std::uniform_real_distribution<double> jitter(-0.04, 0.04);
     std::vector<Vec3> positions = slab.GetRestPositions();
     for (Vec3& position : positions)
-        position += Vec3(jitter(random), jitter(random), jitter(random));
+        position += common::DrawVec3([&] { return jitter(random); });
     std::vector<std::uint8_t> left_out(slab.GetTets().size(), 0);
     for (std::size_t element = 0; element < left_out.size(); element += 3)
         left_out[element] = 1;
