@@ -189,7 +189,10 @@ TEST_CASE("A box landing on its face while sliding and spinning meets Coulomb's 
 {
     // The contact set an engine reports for a box on the ground (its four bottom corners, one normal), with
     // random slip, spin and tilt rates, friction 0-1.5 and restitution 0 or 0.3: the conditions hold to 1e-6
-    // of the approach speed.
+    // of the approach speed. Not for every such box: drawn in the other order (clang's, before the draws were
+    // sequenced), 3 of 400 boxes whose friction stops their slip right at the cone's edge stop at the sweep
+    // bound 4.8e-6 of the approach speed off in the normal velocity, 1.9e-3 m/s of slip left (README, known
+    // limits).
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     CoulombTally tally;
