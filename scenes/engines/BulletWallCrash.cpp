@@ -24,8 +24,9 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     mWorld->getSolverInfo().m_splitImpulse = 1;
     mWorld->getSolverInfo().m_splitImpulsePenetrationThreshold = btScalar(-0.005);
     // Bullet's solver limits friction along one tangent per contact by default (the slip's direction when the
-    // point appeared): a corner that then slides across it meets no friction, and a 20 km/h car into a wall
-    // turned 60 degrees kept 12 % more momentum than Crumple's Coulomb impulse says. Two fixed tangents
+    // point appeared): a corner that then slides across it meets no friction, and from a 20 km/h car glancing
+    // off a wall turned 60 degrees the engine took 12 % less momentum than Crumple's Coulomb impulse says
+    // (crumple-crash's impulse_momentum check failed). Two fixed tangents
     // perpendicular to the normal, each bounded by mu times the normal impulse, are the friction pyramid of
     // ODE's contacts in the ODE scene (dContactApprox1, no dContactFDir1), so both engines solve one model.
     mWorld->getSolverInfo().m_solverMode |=
