@@ -10,14 +10,14 @@
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };     // w = 1/m (1/kg)
-layout(std430, binding = 2) readonly buffer Elements { ivec4 elements[]; };       // current node indices
 layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };               // 3 per element
 layout(std430, binding = 4) readonly buffer Rotations { vec4 rotations[]; };     // unit quaternions
 layout(std430, binding = 7) readonly buffer Offsets { uint offsets[]; };
 layout(std430, binding = 8) readonly buffer Incident { uint incident[]; };
 layout(std430, binding = 25) writeonly buffer Blocks { vec4 blocks[]; };         // 3 per node: columns of the
                                                                                  // inverse block (1/kg)
-layout(std430, binding = 31) readonly buffer PlasticStrains { vec4 plasticStrains[]; }; // 3 per element
+layout(std430, binding = 29) readonly buffer Linearization { vec4 linearization[]; }; // StVK: 6 per element,
+                                                                                      // F and S+ (TetStvkLinearization)
 
 uniform uint uNodeCount;
 uniform float uMassScale;      // 1 + h alpha
@@ -25,7 +25,6 @@ uniform float uStiffnessScale; // h^2 + h beta (s^2)
 uniform float uLambda;         // Pa
 uniform float uMu;             // Pa
 uniform int uCorotated;        // 1: corotated, 0: St. Venant-Kirchhoff
-uniform int uPlastic;          // 1: the elastic strain is the model's less the element's plastic strain
 
 #include "TetMath.glsl"
 
@@ -56,14 +55,9 @@ void main()
             stiffness += volume * ((uLambda + uMu) * outerProduct(h, h) + uMu * dot(g, g) * mat3(1.0));
             continue;
         }
-        ivec4 n = elements[element];
-        vec3 x0 = positions[n.x].xyz;
-        mat3 f = mat3(positions[n.y].xyz - x0, positions[n.z].xyz - x0, positions[n.w].xyz - x0) * rest_inverse;
-        mat3 strain = 0.5 * (transpose(f) * f - mat3(1.0));
-        if (uPlastic != 0)
-            strain -= mat3(plasticStrains[3u * element].xyz, plasticStrains[3u * element + 1u].xyz,
-                           plasticStrains[3u * element + 2u].xyz);
-        mat3 positive = PositivePart(IsotropicStress(strain, uLambda, uMu));
+        uint base = 6u * element;
+        mat3 f = mat3(linearization[base].xyz, linearization[base + 1u].xyz, linearization[base + 2u].xyz);
+        mat3 positive = mat3(linearization[base + 3u].xyz, linearization[base + 4u].xyz, linearization[base + 5u].xyz);
         vec3 h = f * g;
         stiffness += volume * ((uLambda + uMu) * outerProduct(h, h) + uMu * dot(g, g) * f * transpose(f) +
                                dot(g, positive * g) * mat3(1.0));

@@ -5,10 +5,10 @@
 // direction d, written per corner (the node passes gather them in a fixed order): dF = dD_s D_m^-1, corner
 // products V0 dP D_m^-T (K = -df/dx) with dP = R C:sym(R^T dF) (corotated, the frames the last force pass
 // left) or dP = F C:sym(F^T dF) + dF S+ (St. Venant-Kirchhoff at the current positions, S+ the positive part
-// of the second Piola-Kirchhoff stress of the elastic strain, so the system stays positive definite).
+// of the second Piola-Kirchhoff stress of the elastic strain, so the system stays positive definite; F and S+
+// as TetStvkLinearization left them for this Newton iteration).
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };      // x (m)
 layout(std430, binding = 2) readonly buffer Elements { ivec4 elements[]; };        // current node indices
 layout(std430, binding = 3) readonly buffer Rest { vec4 rest[]; };                 // 3 per element: columns
                                                                                    // of D_m^-1, w = V0 (m^3)
@@ -17,14 +17,14 @@ layout(std430, binding = 26) writeonly buffer Products { vec4 products[]; };    
 layout(std430, binding = 28) readonly buffer Direction { vec4 direction[]; };      // #N (m or m/s)
 layout(std430, binding = 21) readonly buffer Preconditioned { vec4 preconditioned[]; }; // z, #N
 layout(std430, binding = 27) readonly buffer Scalars { float scalars[]; };         // [3]: beta
-layout(std430, binding = 31) readonly buffer PlasticStrains { vec4 plasticStrains[]; }; // 3 per element
+layout(std430, binding = 29) readonly buffer Linearization { vec4 linearization[]; }; // StVK: 6 per element,
+                                                                                      // F and S+ (TetStvkLinearization)
 
 uniform uint uElementCount;
 uniform float uLambda;     // Lame lambda (Pa)
 uniform float uMu;         // shear modulus (Pa)
 uniform int uNewDirection; // 1: the direction is the conjugate gradient's next, z + beta p (p bound as d)
 uniform int uCorotated;    // 1: corotated, 0: St. Venant-Kirchhoff
-uniform int uPlastic;      // 1: the elastic strain is the model's less the element's plastic strain
 
 // The direction at a node: d, or the next conjugate direction z + beta p (TetConjugateGradient's operator
 // pass stores the same value: one dispatch per iteration saved).
@@ -54,15 +54,11 @@ void main()
     }
     else
     {
-        vec3 x0 = positions[n.x].xyz;
-        mat3 f = mat3(positions[n.y].xyz - x0, positions[n.z].xyz - x0, positions[n.w].xyz - x0) * rest_inverse;
-        mat3 strain = 0.5 * (transpose(f) * f - mat3(1.0));
-        if (uPlastic != 0)
-            strain -= mat3(plasticStrains[3u * element].xyz, plasticStrains[3u * element + 1u].xyz,
-                           plasticStrains[3u * element + 2u].xyz);
+        uint base = 6u * element;
+        mat3 f = mat3(linearization[base].xyz, linearization[base + 1u].xyz, linearization[base + 2u].xyz);
+        mat3 positive = mat3(linearization[base + 3u].xyz, linearization[base + 4u].xyz, linearization[base + 5u].xyz);
         mat3 local = transpose(f) * d_f;
-        d_p = f * IsotropicStress(0.5 * (local + transpose(local)), uLambda, uMu) +
-              d_f * PositivePart(IsotropicStress(strain, uLambda, uMu));
+        d_p = f * IsotropicStress(0.5 * (local + transpose(local)), uLambda, uMu) + d_f * positive;
     }
     mat3 h = volume * (d_p * transpose(rest_inverse));
     uint base = 4u * element;

@@ -30,6 +30,9 @@ enum EBinding : std::uint32_t
     cProductInput = 28,
     cDotA = 29,
     cDotB = 30,
+    // TetStvkLinearization's output, read by the product and the Jacobi blocks: TetDot's first operand
+    // binding, which every dot rebinds for itself
+    cLinearization = 29,
 };
 
 // TetConjugateGradient's operations and TetDot's modes.
@@ -65,10 +68,12 @@ using Float4 = std::array<float, 4>;
 
 } // namespace
 
-Result<GpuImplicitStep> GpuImplicitStep::Create(std::shared_ptr<ComputeDevice> inDevice)
+Result<GpuImplicitStep> GpuImplicitStep::Create(std::shared_ptr<ComputeDevice> inDevice,
+                                                bool inStVenantKirchhoff)
 {
     GpuImplicitStep step;
     step.mDevice = inDevice;
+    step.mStVenantKirchhoff = inStVenantKirchhoff;
     const struct
     {
         ComputeProgram* mProgram;
@@ -86,6 +91,14 @@ Result<GpuImplicitStep> GpuImplicitStep::Create(std::shared_ptr<ComputeDevice> i
         if (compiled.HasError())
             return compiled.GetError();
         *program.mProgram = std::move(compiled.Get());
+    }
+    if (inStVenantKirchhoff)
+    {
+        Result<ComputeProgram> compiled =
+            ComputeProgram::Create(inDevice, "TetStvkLinearization", cShaderTetStvkLinearization);
+        if (compiled.HasError())
+            return compiled.GetError();
+        step.mLinearize = std::move(compiled.Get());
     }
     const std::array<float, cScalarCount> zeros{};
     Result<StorageBuffer> scalars = StorageBuffer::Create(inDevice, sizeof(zeros), zeros.data());
@@ -105,16 +118,20 @@ Status GpuImplicitStep::Reserve(std::size_t inNodes, std::size_t inElements)
     {
         StorageBuffer* mBuffer;
         Result<StorageBuffer> mResult;
-    } made[] = {{&mStartPositions, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mStartVelocities, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mResidualVector, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mPreconditioned, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mDirection, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mOperatorProduct, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mSolution, StorageBuffer::Create(mDevice, node_bytes)},
-                {&mBlocks, StorageBuffer::Create(mDevice, 3 * node_bytes)},
-                {&mProducts,
-                 StorageBuffer::Create(mDevice, 4 * std::max<std::size_t>(1, inElements) * sizeof(Float4))}};
+    } made[] = {
+        {&mStartPositions, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mStartVelocities, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mResidualVector, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mPreconditioned, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mDirection, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mOperatorProduct, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mSolution, StorageBuffer::Create(mDevice, node_bytes)},
+        {&mBlocks, StorageBuffer::Create(mDevice, 3 * node_bytes)},
+        {&mProducts,
+         StorageBuffer::Create(mDevice, 4 * std::max<std::size_t>(1, inElements) * sizeof(Float4))},
+        {&mLinearization,
+         StorageBuffer::Create(mDevice, (mStVenantKirchhoff ? 6 * std::max<std::size_t>(1, inElements) : 1) *
+                                            sizeof(Float4))}};
     for (const auto& buffer : made)
         if (buffer.mResult.HasError())
             return buffer.mResult.GetError();
@@ -141,9 +158,16 @@ void GpuImplicitStep::NodeOperation(std::uint32_t inOperation) const
     mConjugateGradient.Dispatch(mRunNodeCount);
 }
 
+void GpuImplicitStep::BindLinearization() const
+{
+    if (mStVenantKirchhoff)
+        mLinearization.Bind(cLinearization);
+}
+
 void GpuImplicitStep::StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const
 {
     inDirection.Bind(cProductInput);
+    BindLinearization();
     mProduct.Use();
     mProduct.SetInt("uNewDirection", inNewDirection ? 1 : 0);
     mProduct.Dispatch(mRunElementCount);
@@ -192,7 +216,6 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
     mProduct.SetFloat("uLambda", inInput.mLambda);
     mProduct.SetFloat("uMu", inInput.mMu);
     mProduct.SetInt("uCorotated", inInput.mCorotated ? 1 : 0);
-    mProduct.SetInt("uPlastic", inInput.mPlastic ? 1 : 0);
     mResidual.Use();
     mResidual.SetUInt("uNodeCount", mRunNodeCount);
     mResidual.SetFloat("uDeltaTime", h_float);
@@ -205,7 +228,14 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
     mJacobi.SetFloat("uLambda", inInput.mLambda);
     mJacobi.SetFloat("uMu", inInput.mMu);
     mJacobi.SetInt("uCorotated", inInput.mCorotated ? 1 : 0);
-    mJacobi.SetInt("uPlastic", inInput.mPlastic ? 1 : 0);
+    if (mStVenantKirchhoff)
+    {
+        mLinearize.Use();
+        mLinearize.SetUInt("uElementCount", mRunElementCount);
+        mLinearize.SetFloat("uLambda", inInput.mLambda);
+        mLinearize.SetFloat("uMu", inInput.mMu);
+        mLinearize.SetInt("uPlastic", inInput.mPlastic ? 1 : 0);
+    }
     mConjugateGradient.Use();
     mConjugateGradient.SetUInt("uNodeCount", mRunNodeCount);
     mConjugateGradient.SetFloat("uDeltaTime", h_float);
@@ -230,6 +260,14 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         inInput.mForcePass->Use();
         inInput.mForcePass->Dispatch(mRunElementCount);
         ++stats.mElementPasses;
+        if (mStVenantKirchhoff)
+        {
+            // intent: F and S+ of this iterate once, for every product and Jacobi block that follows
+            BindLinearization();
+            mLinearize.Use();
+            mLinearize.Dispatch(mRunElementCount);
+            ++stats.mElementPasses;
+        }
         const double kv_scale = (first ? h : 0.0) + inInput.mStiffnessDamping;
         if (kv_scale > 0.0)
         {
@@ -239,6 +277,7 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         mResidual.Use();
         mResidual.SetFloat("uKvScale", static_cast<float>(kv_scale));
         mResidual.Dispatch(mRunNodeCount);
+        BindLinearization();
         mJacobi.Use();
         mJacobi.Dispatch(mRunNodeCount);
         ++stats.mElementPasses;

@@ -62,14 +62,15 @@ struct GpuImplicitStepStats
 class GpuImplicitStep
 {
 public:
-    /// Compiles the step's programs on inDevice.
-    static Result<GpuImplicitStep> Create(std::shared_ptr<ComputeDevice> inDevice);
-    GpuImplicitStep() = default;
+  /// Compiles the step's programs on inDevice; with inStVenantKirchhoff also the pass that keeps each
+  /// element's F and S+ per Newton iteration (the model the solver steps).
+  static Result<GpuImplicitStep> Create(std::shared_ptr<ComputeDevice> inDevice, bool inStVenantKirchhoff);
+  GpuImplicitStep() = default;
 
-    /// One step from the current positions and velocities (the caller's buffers bound, see
-    /// GpuImplicitStepInput); writes the new positions and velocities and raises the status flag on a
-    /// non-finite state.
-    GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
+  /// One step from the current positions and velocities (the caller's buffers bound, see
+  /// GpuImplicitStepInput); writes the new positions and velocities and raises the status flag on a
+  /// non-finite state.
+  GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
 
 private:
     // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
@@ -82,9 +83,13 @@ private:
     void StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const;
 
     std::shared_ptr<ComputeDevice> mDevice;
-    ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale;
+    // Binds the St. Venant-Kirchhoff linearisation for the next pass that reads it (its binding is shared).
+    void BindLinearization() const;
+
+    bool mStVenantKirchhoff = false;
+    ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale, mLinearize;
     StorageBuffer mStartPositions, mStartVelocities, mResidualVector, mPreconditioned, mDirection,
-        mOperatorProduct, mSolution, mBlocks, mProducts, mScalars;
+        mOperatorProduct, mSolution, mBlocks, mProducts, mScalars, mLinearization;
     std::size_t mNodeCount = 0, mElementCount = 0;
     std::uint32_t mRunNodeCount = 0, mRunElementCount = 0; // of the step running
 };

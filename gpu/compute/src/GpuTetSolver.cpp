@@ -158,7 +158,8 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     if (inSettings.mIntegrator == fem::EIntegrator::ImplicitEuler)
     {
         // intent: an explicit prop compiles and allocates nothing of the implicit step
-        Result<GpuImplicitStep> implicit = GpuImplicitStep::Create(inDevice);
+        Result<GpuImplicitStep> implicit =
+            GpuImplicitStep::Create(inDevice, inMaterial.mModel == fem::EElasticModel::StVenantKirchhoff);
         if (implicit.HasError())
             return implicit.GetError();
         solver.mImplicit = std::make_unique<GpuImplicitStep>(std::move(implicit.Get()));
