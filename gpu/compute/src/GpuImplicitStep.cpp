@@ -114,24 +114,24 @@ Status GpuImplicitStep::Reserve(std::size_t inNodes, std::size_t inElements)
     if (inNodes == mNodeCount && inElements == mElementCount)
         return Status::Ok();
     const std::size_t node_bytes = std::max<std::size_t>(1, inNodes) * sizeof(Float4);
+    // F and S+ per element for St. Venant-Kirchhoff (TetStvkLinearization), else a one-vector dummy
+    const std::size_t linearization_bytes =
+        (mStVenantKirchhoff ? 6 * std::max<std::size_t>(1, inElements) : 1) * sizeof(Float4);
     struct
     {
         StorageBuffer* mBuffer;
         Result<StorageBuffer> mResult;
-    } made[] = {
-        {&mStartPositions, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mStartVelocities, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mResidualVector, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mPreconditioned, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mDirection, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mOperatorProduct, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mSolution, StorageBuffer::Create(mDevice, node_bytes)},
-        {&mBlocks, StorageBuffer::Create(mDevice, 3 * node_bytes)},
-        {&mProducts,
-         StorageBuffer::Create(mDevice, 4 * std::max<std::size_t>(1, inElements) * sizeof(Float4))},
-        {&mLinearization,
-         StorageBuffer::Create(mDevice, (mStVenantKirchhoff ? 6 * std::max<std::size_t>(1, inElements) : 1) *
-                                            sizeof(Float4))}};
+    } made[] = {{&mStartPositions, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mStartVelocities, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mResidualVector, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mPreconditioned, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mDirection, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mOperatorProduct, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mSolution, StorageBuffer::Create(mDevice, node_bytes)},
+                {&mBlocks, StorageBuffer::Create(mDevice, 3 * node_bytes)},
+                {&mProducts,
+                 StorageBuffer::Create(mDevice, 4 * std::max<std::size_t>(1, inElements) * sizeof(Float4))},
+                {&mLinearization, StorageBuffer::Create(mDevice, linearization_bytes)}};
     for (const auto& buffer : made)
         if (buffer.mResult.HasError())
             return buffer.mResult.GetError();

@@ -62,15 +62,15 @@ struct GpuImplicitStepStats
 class GpuImplicitStep
 {
 public:
-  /// Compiles the step's programs on inDevice; with inStVenantKirchhoff also the pass that keeps each
-  /// element's F and S+ per Newton iteration (the model the solver steps).
-  static Result<GpuImplicitStep> Create(std::shared_ptr<ComputeDevice> inDevice, bool inStVenantKirchhoff);
-  GpuImplicitStep() = default;
+    /// Compiles the step's programs on inDevice; with inStVenantKirchhoff also the pass that keeps each
+    /// element's F and S+ per Newton iteration (the model the solver steps).
+    static Result<GpuImplicitStep> Create(std::shared_ptr<ComputeDevice> inDevice, bool inStVenantKirchhoff);
+    GpuImplicitStep() = default;
 
-  /// One step from the current positions and velocities (the caller's buffers bound, see
-  /// GpuImplicitStepInput); writes the new positions and velocities and raises the status flag on a
-  /// non-finite state.
-  GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
+    /// One step from the current positions and velocities (the caller's buffers bound, see
+    /// GpuImplicitStepInput); writes the new positions and velocities and raises the status flag on a
+    /// non-finite state.
+    GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
 
 private:
     // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
@@ -81,12 +81,11 @@ private:
     void NodeOperation(std::uint32_t inOperation) const;
     // K inDirection into the product corners; with inNewDirection, K (z + beta inDirection).
     void StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const;
-
-    std::shared_ptr<ComputeDevice> mDevice;
     // Binds the St. Venant-Kirchhoff linearisation for the next pass that reads it (its binding is shared).
     void BindLinearization() const;
 
-    bool mStVenantKirchhoff = false;
+    std::shared_ptr<ComputeDevice> mDevice;
+    bool mStVenantKirchhoff = false; // the model the solver steps: TetStvkLinearization runs
     ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale, mLinearize;
     StorageBuffer mStartPositions, mStartVelocities, mResidualVector, mPreconditioned, mDirection,
         mOperatorProduct, mSolution, mBlocks, mProducts, mScalars, mLinearization;
