@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/base/Assert.h>
 #include <crumple/base/TimeStep.h>
+#include <crumple/fem/CrackSafeEnergy.h>
 #include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/LumpedNodeMass.h>
 #include <crumple/fem/OpenCracks.h>
@@ -67,6 +68,9 @@ Status ValidateSettings(const TetSolverSettings& inSettings)
         return SettingError("mImplicitMaxIterations", inSettings.mImplicitMaxIterations, "must be >= 1");
     if (!(inSettings.mImplicitTolerance > 0.0 && inSettings.mImplicitTolerance < 1.0))
         return SettingError("mImplicitTolerance", inSettings.mImplicitTolerance, "must lie in (0, 1)");
+    if (!(inSettings.mCrackStressTolerance > 0.0))
+        return SettingError("mCrackStressTolerance", inSettings.mCrackStressTolerance,
+                            "must be > 0 (a fraction of the tensile strength; infinity for no bound)");
     if (!(inSettings.mSleepSpeed >= 0.0) || !std::isfinite(inSettings.mSleepSpeed))
         return SettingError("mSleepSpeed", inSettings.mSleepSpeed, "must be finite and >= 0 m/s");
     if (inSettings.mSleepStepCount < 1)
@@ -151,6 +155,8 @@ TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,
         mBroken.assign(mLinks.GetLinkCount(), 0);
         mElementStress.resize(mRest.size());
         mPrincipal.resize(mLinks.GetGroupCount());
+        mCrackSafeEnergy = CrackSafeEnergy(mMaterial.GetSettings(), SmallestGroupVolume(mLinks, mMesh),
+                                           mSettings.mCrackStressTolerance);
         // Groups that touch only along an edge or at a corner have no face to judge a crack by, and such a
         // joint carries no stress: they are separate pieces from the start.
         Result<FractureConnectivity> intact = FractureTopology(mMesh, mLinks, mBroken);
@@ -731,14 +737,16 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                                        material.mModel == EElasticModel::CorotatedLinear);
 
         // Converged when the energy of the remaining Newton correction, 1/2 r^T A^-1 r (A^-1 estimated by the
-        // preconditioner), is a small fraction of the step's energy scale.
+        // preconditioner), is a small fraction of the step's energy scale and, for a breakable material, too
+        // small to move a group's stress by more than mCrackStressTolerance of the strength (its elastic
+        // part, h^2 dv^T K dv / 2, is the strain energy of the remaining position error).
         if (!first)
         {
             preconditioner(scratch.mResidual, scratch.mPreconditioned);
             double residual_energy = 0.0;
             for (std::size_t node = 0; node < node_count; ++node)
                 residual_energy += 0.5 * scratch.mResidual[node].dot(scratch.mPreconditioned[node]);
-            if (residual_energy <= mSettings.mImplicitTolerance * energy_scale)
+            if (residual_energy <= std::min(mSettings.mImplicitTolerance * energy_scale, mCrackSafeEnergy))
             {
                 converged = true;
                 break;

@@ -26,7 +26,10 @@ constexpr std::uint32_t cRefreshSettingsTag = 0x48534652u;
 // Marks a contact spread radius (FemProp::SetContactSpread, "SPRD"), written after the refresh settings only
 // when it is not 0, so that a prop that does not spread records the same bytes as before it existed.
 constexpr std::uint32_t cContactSpreadTag = 0x44525053u;
-
+// Marks the crack stress tolerance (TetSolverSettings::mCrackStressTolerance, "CRCK"), written after the
+// refresh settings and the spread only when it is finite: a record without it was made before the Newton test
+// had that bound, and replays with none.
+constexpr std::uint32_t cCrackToleranceTag = 0x4B435243u;
 
 // Refuses a count that the remaining bytes cannot hold at inBytesEach bytes per item.
 bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& outCount)
@@ -235,6 +238,11 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
         writer.WriteU32(cContactSpreadTag);
         writer.WriteDouble(inSetup.mContactSpread);
     }
+    if (std::isfinite(inSetup.mSettings.mCrackStressTolerance))
+    {
+        writer.WriteU32(cCrackToleranceTag);
+        writer.WriteDouble(inSetup.mSettings.mCrackStressTolerance);
+    }
     return writer.TakeBytes();
 }
 
@@ -272,9 +280,11 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         setup.mGroups.push_back(static_cast<int>(reader.ReadU32()));
     }
     // intent: a record that ends here was written before mFactorRefreshIterations existed, when the factor
-    // was never refreshed; 0 replays it as it ran
+    // was never refreshed, and before the crack stress tolerance, when Newton had no such bound; 0 and
+    // infinity replay it as it ran
     setup.mSettings.mFactorRefreshIterations = 0;
-    if (!reader.Failed() && (reader.Remaining() == 8 || reader.Remaining() == 8 + 12))
+    setup.mSettings.mCrackStressTolerance = std::numeric_limits<double>::infinity();
+    if (!reader.Failed() && reader.Remaining() >= 8 && reader.Remaining() <= 8 + 12 + 12)
     {
         if (reader.ReadU32() != cRefreshSettingsTag)
             return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
@@ -282,15 +292,29 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
             return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
         setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
-        // A record cut by exactly the 12 bytes of a spread reads as one without; the replay file's CRC per
-        // record is what catches such a cut.
-        if (reader.Remaining() == 12)
+        // intent: the optional tagged settings, each 12 bytes, in the order they are written. A record cut by
+        // exactly their bytes reads as one without them; the replay file's CRC per record is what catches
+        // such a cut.
+        std::uint32_t last_tag = cRefreshSettingsTag;
+        while (reader.Remaining() == 12 || reader.Remaining() == 24)
         {
-            if (reader.ReadU32() != cContactSpreadTag)
+            const std::uint32_t tag = reader.ReadU32();
+            const double value = reader.ReadDouble();
+            if (tag == cContactSpreadTag && last_tag == cRefreshSettingsTag)
+            {
+                if (!std::isfinite(value) || value <= 0.0)
+                    return MakeError(EError::CorruptData, "prop record: contact spread radius out of range");
+                setup.mContactSpread = value;
+            }
+            else if (tag == cCrackToleranceTag && last_tag != cCrackToleranceTag)
+            {
+                if (!std::isfinite(value) || value <= 0.0)
+                    return MakeError(EError::CorruptData, "prop record: crack stress tolerance out of range");
+                setup.mSettings.mCrackStressTolerance = value;
+            }
+            else
                 return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
-            setup.mContactSpread = reader.ReadDouble();
-            if (!std::isfinite(setup.mContactSpread) || setup.mContactSpread <= 0.0)
-                return MakeError(EError::CorruptData, "prop record: contact spread radius out of range");
+            last_tag = tag;
         }
     }
     if (reader.Failed() || reader.Remaining() != 0)

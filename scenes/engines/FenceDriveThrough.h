@@ -14,8 +14,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace crumple::common
 {
@@ -66,6 +68,8 @@ struct FenceRun
     double mPrepareCpuMs = 0.0;  ///< PropWorld::Prepare before the drive (level load; not in the steps)
     props::EFemBackend mBackend = props::EFemBackend::Cpu; ///< Where the fence's FEM ran
     int mNotConverged = 0; ///< Steps whose implicit solve stopped at its iteration limits
+    /// #L of the fence's links, 1 where one broke (empty on the GPU backend)
+    std::vector<std::uint8_t> mBroken;
 };
 
 /// A 4 m wooden fence across the car's path: 5 cm planks in cubes of 2.5 cm (two across each plank: fracture
@@ -206,6 +210,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         run.mFenceMoved = (scene.GetDamage().GetBodyState(fence_body)->mCenterOfMass - fence_position).norm();
         run.mFenceImpulse = ImpulseOnBody(scene.GetCounter().mLog, fence_body).x();
         run.mBrokenLinks = props.GetProp(fence_prop)->GetBrokenLinkCount();
+        if (const fem::TetSolver* cpu = props.GetProp(fence_prop)->GetCpuSolver())
+            run.mBroken = cpu->GetBrokenLinks();
         run.mBackend = props.GetProp(fence_prop)->GetBackend();
         run.mRevision = props.GetShapeRevision(fence_prop);
     }

@@ -8,6 +8,7 @@
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
+#include <crumple/fem/TetGrid.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
@@ -18,6 +19,9 @@
 #endif
 
 #include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -395,6 +399,8 @@ TEST_CASE("Props in a recording: the factor refresh setting is recorded; a recor
     common::WorldFixture fixture;
     FemProp panel = BrittlePanel();
     PropSetup setup = MakePropSetup(fixture.mWall, panel).Get();
+    // With no crack stress bound the record ends at the refresh setting (the bound has a test of its own).
+    setup.mSettings.mCrackStressTolerance = std::numeric_limits<double>::infinity();
     for (int refresh : {0, 1, 7})
     {
         setup.mSettings.mFactorRefreshIterations = refresh;
@@ -454,6 +460,8 @@ TEST_CASE("Props in a recording: a contact spread is recorded and replays bit fo
     // The record: 0 writes nothing more (the bytes of a prop before the spread existed); a radius adds a
     // tagged double, and a bad one is refused both ways.
     PropSetup setup = MakePropSetup(fixture.mWall, BrittlePanel()).Get();
+    setup.mSettings.mCrackStressTolerance =
+        std::numeric_limits<double>::infinity(); // the spread ends the record
     CHECK(setup.mContactSpread == 0.0);
     const std::vector<std::byte> plain = EncodePropSetup(setup).Get();
     setup.mContactSpread = 0.35;
@@ -470,4 +478,54 @@ TEST_CASE("Props in a recording: a contact spread is recorded and replays bit fo
     CHECK(DecodePropSetup(other_tag).GetError().mCode == EError::CorruptData);
     setup.mContactSpread = -1.0;
     CHECK(EncodePropSetup(setup).HasError());
+}
+
+TEST_CASE("Props in a recording: the crack stress bound is recorded; a record written before it replays "
+          "without one",
+          "[props][replay]")
+{
+    common::WorldFixture fixture;
+    PropSetup setup = MakePropSetup(fixture.mWall, BrittlePanel()).Get();
+    CHECK(setup.mSettings.mCrackStressTolerance == TetSolverSettings{}.mCrackStressTolerance);
+    const double infinity = std::numeric_limits<double>::infinity();
+    const auto decoded = [](const std::vector<std::byte>& inBytes)
+    { return DecodePropSetup(inBytes).Get().mSettings.mCrackStressTolerance; };
+
+    // No bound writes nothing (the bytes of a prop before the bound existed), and such a record replays with
+    // none.
+    setup.mSettings.mCrackStressTolerance = infinity;
+    const std::vector<std::byte> none = EncodePropSetup(setup).Get();
+    CHECK(decoded(none) == infinity);
+    setup.mSettings.mCrackStressTolerance = 0.5;
+    const std::vector<std::byte> bound = EncodePropSetup(setup).Get();
+    CHECK(bound.size() == none.size() + 12);
+    CHECK(std::equal(none.begin(), none.end(), bound.begin()));
+    CHECK(decoded(bound) == 0.5);
+    // After a contact spread, in the order they are written.
+    setup.mContactSpread = 0.35;
+    const std::vector<std::byte> both = EncodePropSetup(setup).Get();
+    CHECK(decoded(both) == 0.5);
+    CHECK(DecodePropSetup(both).Get().mContactSpread == 0.35);
+
+    // Refused: a value that is not > 0, an unknown tag, the two tagged settings swapped, one given twice.
+    std::vector<std::byte> negative = bound;
+    negative[negative.size() - 1] |= std::byte{0x80}; // the double's sign bit
+    CHECK(DecodePropSetup(negative).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> other_tag = bound;
+    other_tag[other_tag.size() - 12] ^= std::byte{1};
+    CHECK(DecodePropSetup(other_tag).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> swapped(both.begin(), both.end() - 24);
+    swapped.insert(swapped.end(), both.end() - 12, both.end());
+    swapped.insert(swapped.end(), both.end() - 24, both.end() - 12);
+    CHECK(DecodePropSetup(swapped).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> twice = bound;
+    twice.insert(twice.end(), bound.end() - 12, bound.end());
+    CHECK(DecodePropSetup(twice).GetError().mCode == EError::CorruptData);
+    // A solver refuses the same values the record does.
+    for (double value : {0.0, -0.5, std::nan("")})
+    {
+        TetSolverSettings settings;
+        settings.mCrackStressTolerance = value;
+        CHECK(TetSolver::Create(TetGrid({}).Get(), FemMaterialSettings{}, settings).HasError());
+    }
 }

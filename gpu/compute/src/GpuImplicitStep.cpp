@@ -309,7 +309,8 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
             stats.mConverged = false;
             return stats;
         }
-        if (!first && 0.5 * rz <= settings.mImplicitTolerance * energy_scale)
+        if (!first &&
+            0.5 * rz <= std::min(settings.mImplicitTolerance * energy_scale, inInput.mCrackSafeEnergy))
         {
             converged = true;
             break;

@@ -10,6 +10,7 @@
 #include <crumple/gpu/StorageBuffer.h>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -29,6 +30,9 @@ struct GpuImplicitStepInput
     bool mCorotated = true;                            ///< Corotated (else St. Venant-Kirchhoff)
     bool mPlastic = false;                             ///< The elastic strain less the plastic strains
     const fem::TetSolverSettings* mSettings = nullptr; ///< Newton and CG tolerances and limits
+    /// J: Newton also goes on until the remaining correction's energy is below it (a breakable material's
+    /// fem::TetSolver::GetCrackSafeEnergy(); infinity: no such bound)
+    double mCrackSafeEnergy = std::numeric_limits<double>::infinity();
     std::span<const double> mInverseMasses;            ///< #N host copy (1/kg), 0 = anchored
     std::span<const double> mMasses;                   ///< #N host copy (kg)
     std::uint32_t mElementCount = 0;                   ///< #T
@@ -54,11 +58,11 @@ struct GpuImplicitStepStats
 /// fem::TetSolver::StepImplicit as compute shaders: backward Euler with Rayleigh damping for both elastic
 /// models, Newton on the end velocity (forces and frames re-evaluated at x0 + h v per iteration) with the
 /// same convergence test (the energy of the remaining correction, 1/2 r.Br, against mImplicitTolerance of the
-/// step's kinetic and load energy), each linear solve a conjugate gradient preconditioned by the nodes' 3x3
-/// diagonal blocks (block Jacobi; the CPU's factored rest system needs sequential triangular solves). The
-/// scalars of an iteration stay on the GPU: the host reads them back once per Newton iteration and at CG
-/// iterations 1, 2, 4, 8, then every 8th (a sync each), so a solve may run up to 7 iterations past its
-/// tolerance. Deterministic: fixed-order gathers and reductions, no float atomics.
+/// step's kinetic and load energy and the crack-safe energy), each linear solve a conjugate gradient
+/// preconditioned by the nodes' 3x3 diagonal blocks (block Jacobi; the CPU's factored rest system needs
+/// sequential triangular solves). The scalars of an iteration stay on the GPU: the host reads them back once
+/// per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (a sync each), so a solve may run up
+/// to 7 iterations past its tolerance. Deterministic: fixed-order gathers and reductions, no float atomics.
 class GpuImplicitStep
 {
 public:

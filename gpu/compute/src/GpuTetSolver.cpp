@@ -134,6 +134,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     {
         solver.mLinks = cpu.GetFractureLinks();
         solver.mBroken = cpu.GetBrokenLinks();
+        solver.mCrackSafeEnergy = cpu.GetCrackSafeEnergy();
     }
 
     // Programs.
@@ -625,6 +626,7 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
             input.mCorotated = mMaterial.mModel == fem::EElasticModel::CorotatedLinear;
             input.mPlastic = mPlastic;
             input.mSettings = &mSettings;
+            input.mCrackSafeEnergy = mCrackSafeEnergy;
             input.mInverseMasses = mInverseMasses;
             input.mMasses = mMasses;
             input.mElementCount = mElementCount;

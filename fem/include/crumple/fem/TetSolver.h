@@ -20,6 +20,7 @@
 #include <crumple/fem/TetStepper.h>
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -185,6 +186,9 @@ public:
     const std::vector<std::uint8_t>& GetBrokenLinks() const { return mBroken; }
     /// Number of broken links
     int GetBrokenLinkCount() const;
+    /// The strain energy (J) below which the implicit step's Newton test also stops for a breakable material
+    /// (CrackSafeEnergy() of the smallest group and mCrackStressTolerance); infinity when unbreakable
+    double GetCrackSafeEnergy() const { return mCrackSafeEnergy; }
     /// Largest principal stress of each group's mean stress at the end of the last step, #G (empty for an
     /// unbreakable material, zeros before the first step)
     const std::vector<PrincipalStress>& GetGroupPrincipalStress() const { return mPrincipal; }
@@ -317,6 +321,7 @@ private:
     std::vector<std::uint8_t> mBroken;       // #L
     std::vector<Mat3> mElementStress;        // #T scratch of the fracture pass
     std::vector<PrincipalStress> mPrincipal; // #G
+    double mCrackSafeEnergy = std::numeric_limits<double>::infinity(); // J, GetCrackSafeEnergy()
     double mStableTimeStep = 0.0;
     double mFreeMass = 0.0;
     int mStepPlasticElements = 0; // plastic flow events of the current step attempt

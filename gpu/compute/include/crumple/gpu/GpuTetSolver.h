@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -220,6 +221,8 @@ private:
     std::vector<fem::TetElementRest> mRest;
     std::vector<fem::TetIndices> mElementNodes; // host copy of the current connectivity
     fem::FractureLinks mLinks;                  // empty when unbreakable
+    // J: fem::TetSolver::GetCrackSafeEnergy() of the solver it was made from
+    double mCrackSafeEnergy = std::numeric_limits<double>::infinity();
     std::vector<std::uint8_t> mBroken;          // host copy of the broken flags, #L
     bool mBreakable = false;
     bool mPlastic = false;    // the material flows plastically (mPlasticPass, mPlasticStrains)
