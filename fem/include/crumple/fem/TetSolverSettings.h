@@ -51,10 +51,10 @@ struct CRUMPLE_API TetSolverSettings
     /// tetrahedra, 5 refreshes) spent 63-76 instead of 72-80 ms in its FEM over the session, ODE's (28
     /// refreshes, 4x fewer iterations in a traced build) 390-496 instead of 376-475 ms; a soft rail of 6,400
     /// tetrahedra took a third of the iterations but 19 instead of 14 ms per step (crumple-bench --only
-    /// fem_refresh), its refresh costing about 13 iterations. 0 (the
-    /// default) never refreshes: results stay those of earlier versions bit for bit, which a cracking prop
-    /// needs for now (where it cracks depends on round-off at the solver's tolerance; see the README's
-    /// known limits). >= 0.
+    /// fem_refresh), its refresh costing about 13 iterations. 0 (the default) never refreshes: results stay
+    /// those of earlier versions bit for bit. With mCrackStressTolerance a cracking prop's links no longer
+    /// depend on it (the racing fence breaks the same 156 links at 0, 3 and 6; the README's racing
+    /// figures). >= 0.
     int mFactorRefreshIterations = 0;
     /// Implicit Euler: at most this many Newton iterations (linear solves) per step, >= 1. The first is the
     /// classic one-solve linearised step; further ones re-evaluate forces and rotations at the new positions,
