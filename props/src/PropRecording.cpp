@@ -205,6 +205,12 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
         return valid.GetError();
     if (Status radius = CheckContactSpreadRadius(inSetup.mContactSpread, "PropSetup"); radius.HasError())
         return radius.GetError();
+    // intent: what the reader would refuse is not written (infinity is written as no tag)
+    if (!(inSetup.mSettings.mCrackStressTolerance > 0.0))
+        return MakeError(EError::InvalidArgument,
+                         "PropSetup: crack stress tolerance " +
+                             std::to_string(inSetup.mSettings.mCrackStressTolerance) +
+                             " must be > 0 (infinity for no bound)");
     ByteWriter writer;
     writer.WriteU32(inSetup.mBody.mValue);
     writer.WriteU32(inSetup.mBody.mGeneration);

@@ -235,3 +235,39 @@ TEST_CASE("GPU implicit step: the same inputs give bitwise the same state", "[gp
                              .Get()
                              .GetMadeRestPositions());
 }
+
+TEST_CASE("GPU implicit step: a breakable prop's Newton step goes on to the CPU's crack-safe energy", "[gpu]")
+{
+    // The brittle wall struck with 4 kN s: the energy test alone (1e-3 of a step energy scale swollen by the
+    // blow) stops the GPU's Newton after one solve; the crack-safe bound (the CPU solver's
+    // GetCrackSafeEnergy, handed to the GPU at creation) makes it go on, as on the CPU. Measured (Newton
+    // solves in the struck step, GPU / CPU): 1 / 1 without the bound and at 0.5 (0.09 J), 2 / 2 at 0.1
+    // (0.0036 J), 12 / 2 at 0.03 (3.2e-4 J: the GPU's float residual does not get there, and it stops at the
+    // iteration limit).
+    const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();
+    const auto newton_iterations = [&](double inFraction, double& outSafeEnergy)
+    {
+        TetSolverSettings settings = Implicit();
+        settings.mCrackStressTolerance = inFraction;
+        settings.mImplicitMaxIterations = 12;
+        TetSolver cpu = test::StruckBrittleWall(settings, 4000.0);
+        outSafeEnergy = cpu.GetCrackSafeEnergy();
+        GpuTetSolver gpu = GpuTetSolver::CreateFrom(device, cpu).Get();
+        const Result<TetStepResult> stepped = gpu.Step(1.0 / 60.0);
+        REQUIRE(stepped.IsValid());
+        const Result<TetStepResult> on_cpu = cpu.Step(1.0 / 60.0);
+        REQUIRE(on_cpu.IsValid());
+        INFO("fraction " << inFraction << ": Newton iterations GPU " << stepped.Get().mNewtonIterations
+                         << ", CPU " << on_cpu.Get().mNewtonIterations);
+        CHECK(std::abs(stepped.Get().mNewtonIterations - on_cpu.Get().mNewtonIterations) <= 1);
+        return stepped.Get().mNewtonIterations;
+    };
+    double unbounded_energy = 0.0, bounded_energy = 0.0;
+    const int unbounded = newton_iterations(std::numeric_limits<double>::infinity(), unbounded_energy);
+    const int bounded = newton_iterations(0.1, bounded_energy);
+    INFO("crack-safe energy " << bounded_energy << " J; Newton iterations " << unbounded << " without, "
+                              << bounded << " with");
+    CHECK(std::isinf(unbounded_energy));
+    CHECK(bounded_energy > 0.0);
+    CHECK(bounded > unbounded);
+}

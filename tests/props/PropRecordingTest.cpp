@@ -521,9 +521,11 @@ TEST_CASE("Props in a recording: the crack stress bound is recorded; a record wr
     std::vector<std::byte> twice = bound;
     twice.insert(twice.end(), bound.end() - 12, bound.end());
     CHECK(DecodePropSetup(twice).GetError().mCode == EError::CorruptData);
-    // A solver refuses the same values the record does.
+    // A solver and the record's writer refuse the same values the reader does.
     for (double value : {0.0, -0.5, std::nan("")})
     {
+        setup.mSettings.mCrackStressTolerance = value;
+        CHECK(EncodePropSetup(setup).HasError());
         TetSolverSettings settings;
         settings.mCrackStressTolerance = value;
         CHECK(TetSolver::Create(TetGrid({}).Get(), FemMaterialSettings{}, settings).HasError());
