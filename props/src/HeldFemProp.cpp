@@ -13,6 +13,7 @@ fem::TetSolverSettings HeldPropSolverSettings()
 {
     fem::TetSolverSettings solver;
     solver.mGravity = Vec3::Zero();
+    solver.mFactorRefreshIterations = 6;
     return solver;
 }
 

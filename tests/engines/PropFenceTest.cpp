@@ -104,9 +104,9 @@ TEST_CASE("Bullet and ODE: the same fence hit breaks the same links", "[bullet][
     // The engines meet different shapes of the same fence (Bullet: the hull of each 0.25 m piece; ODE: its
     // box) and report different contacts, but the links the FEM breaks are those of its converged solve
     // (mCrackStressTolerance), not of where its Newton test stopped. Measured (Bullet / ODE / in both / in
-    // either): 64 km/h 220 / 179 / 178 / 221, 40 km/h 134 / 117 / 116 / 135: ODE's links are Bullet's but
+    // either): 64 km/h 220 / 179 / 178 / 221, 40 km/h 128 / 117 / 117 / 128: ODE's links are Bullet's but
     // one, and Bullet breaks a few more where its car touches the rails one step longer (the README's known
-    // limits); 81 % and 86 % of the links that break in either break in both. With the Newton test alone
+    // limits); 81 % and 91 % of the links that break in either break in both. With the Newton test alone
     // 381 of 1,681 and 148 of 1,477 (23 % and 10 %). Bounds: 70 % of the links in either break in both, and
     // 95 % of the fewer engine's links are the other's too.
     for (double speed : {64.0 / 3.6, 40.0 / 3.6})
@@ -134,12 +134,12 @@ TEST_CASE("Known limit: Bullet and ODE take the same speed from the car at the h
           "[bullet][ode][props][!shouldfail]")
 {
     // Expected to fail until the held prop's coupling is mended (README, known limits); it reports when it
-    // starts to hold. Measured: the car loses 2.587 m/s in Bullet and 2.285 in ODE (12 % apart; bound 10 %).
-    // At the scene's 120 Hz the car moves 15 cm a step into a 5 cm fence: the held body's shape never gets
-    // ahead of it (the contacts reach 0.79 m deep), the car passes the fence bent but whole, and the engines
-    // lose the rails' contact one step apart (445 N s). At 240 Hz the held body stops the car instead (6.5
-    // and 10.3 m/s lost). This passed (2.39 and 2.29 m/s) while the Newton test's error cracked the fence
-    // apart, and fails as well with that error and Bullet's ground as a box (3.13 and 2.29).
+    // starts to hold. Measured: the car loses 2.547 m/s in Bullet and 2.285 in ODE (10.3 % apart; bound 10
+    // %). At the scene's 120 Hz the car moves 15 cm a step into a 5 cm fence: the held body's shape never
+    // gets ahead of it (the contacts reach 0.79 m deep), the car passes the fence bent but whole, and the
+    // engines lose the rails' contact one step apart (445 N s). At 240 Hz the held body stops the car instead
+    // (6.5 and 10.3 m/s lost). This passed (2.39 and 2.29 m/s) while the Newton test's error cracked the
+    // fence apart, and fails as well with that error and Bullet's ground as a box (3.13 and 2.29).
     const double speed = 64.0 / 3.6;
     const FenceRun bullet = DriveThrough<BulletWallCrash>(speed, true);
     const FenceRun ode = DriveThrough<OdeWallCrash>(speed, true);
