@@ -74,8 +74,9 @@ struct CRUMPLE_API TetSolverSettings
     /// which a hit makes huge (an impulse on a few light nodes: 1.2e7 J at the racing fence's first contact),
     /// and alone it stopped where the links its error cracked depended on the engine, the ground's shape and
     /// the CG tolerance (the drive-through fence at 64 km/h: Bullet 1,228 links, ODE 834, 381 the same). With
-    /// 0.5: 231 and 179, 178 the same, and the same links at 0.02-0.2 (the Bullet run 234); 0.5 costs one
-    /// Newton iteration more in a hit's steps (the README's racing figures). > 0; infinity leaves only the
+    /// 0.5: 220 and 179, 178 the same (Bullet 220-228 at 0.3-1; on the scene's former plane ground the same
+    /// 234 links at 0.02-0.2); 0.5 costs one Newton iteration more in a hit's steps (the README's racing
+    /// figures). > 0; infinity leaves only the
     /// energy test (the behaviour before this setting, and that of recordings made before it).
     double mCrackStressTolerance = 0.5;
 
