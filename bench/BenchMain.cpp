@@ -14,14 +14,20 @@ int main(int argc, char** argv)
 {
     using namespace crumple::bench;
     using Group = void (*)(BenchTable&, const BenchOptions&);
-    const std::pair<const char*, Group> groups[] = {
-        {"dent", RunDentBenchmarks}, {"impulse", RunImpulseBenchmarks}, {"adapter", RunAdapterBenchmarks},
-        {"frame_budget", RunFrameBudgetBenchmarks},
-        {"fem", RunFemBenchmarks}, {"fem_refresh", RunFemRefreshBenchmarks}, {"contact_mass", RunContactMassBenchmarks},
-        {"fem_vs_bullet", RunFemVsBulletBenchmarks},
-        {"barrier", RunBarrierBenchmarks}, {"props", RunPropBenchmarks}, {"props_gpu", RunPropGpuBenchmarks},
-        {"crush", RunCrushBenchmarks},
-        {"gpu", RunGpuBenchmarks}};
+    const std::pair<const char*, Group> groups[] = {{"dent", RunDentBenchmarks},
+                                                    {"impulse", RunImpulseBenchmarks},
+                                                    {"adapter", RunAdapterBenchmarks},
+                                                    {"frame_budget", RunFrameBudgetBenchmarks},
+                                                    {"fem", RunFemBenchmarks},
+                                                    {"fem_refresh", RunFemRefreshBenchmarks},
+                                                    {"fem_cracks", RunCrackBoundBenchmarks},
+                                                    {"contact_mass", RunContactMassBenchmarks},
+                                                    {"fem_vs_bullet", RunFemVsBulletBenchmarks},
+                                                    {"barrier", RunBarrierBenchmarks},
+                                                    {"props", RunPropBenchmarks},
+                                                    {"props_gpu", RunPropGpuBenchmarks},
+                                                    {"crush", RunCrushBenchmarks},
+                                                    {"gpu", RunGpuBenchmarks}};
     BenchOptions options;
     std::string csv, only;
     for (int i = 1; i < argc; ++i)

@@ -46,6 +46,12 @@ void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// step and conjugate-gradient iterations of each, error: the largest distance of a node from a solve
 /// converged to round-off, over the largest displacement. Empty without crumple::fem.
 void RunFemRefreshBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+/// The crack-safe Newton bound (TetSolverSettings::mCrackStressTolerance, default 0.5) against the energy
+/// test alone, on the pushed wooden rail (scenes/PushedRail.h; 200 and 300 N s per push step, --quick the
+/// first), the two stepped alternately: time per step in thread CPU and wall time, Newton and CG iterations;
+/// error: the links whose state differs from a solve converged to round-off, over the links it cracked. Empty
+/// without crumple::fem.
+void RunCrackBoundBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// The mass a held prop body stands in with (TetSolver::ContactEffectiveMass) at a fence's struck rail,
 /// factored and block Jacobi alternated, in thread CPU and wall time; error: against the mass one converged
 /// implicit step shows a small impulse.

@@ -33,4 +33,15 @@ std::vector<int> PushedRailNodes(std::span<const Vec3> inPositions)
     return struck;
 }
 
+Result<fem::TetSolver> MakePushedRailSolver(const fem::TetSolverSettings& inSettings)
+{
+    const PushedRail rail = MakePushedRail();
+    Result<fem::TetSolver> solver = fem::TetSolver::Create(rail.mMesh, rail.mMaterial, inSettings);
+    if (!solver)
+        return solver;
+    if (Status anchored = solver.Get().SetNodesFixed(rail.mAnchoredNodes, true); !anchored)
+        return anchored.GetError();
+    return solver;
+}
+
 } // namespace crumple::common

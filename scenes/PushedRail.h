@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterialSettings.h>
 #include <crumple/fem/TetMesh.h>
+#include <crumple/fem/TetSolver.h>
 
 #include <span>
 #include <vector>
@@ -32,5 +34,23 @@ PushedRail MakePushedRail();
 /// The struck nodes: those of the rail's front face (y = 0) within 0.15 m of its middle, read from a solver's
 /// current positions (a breakable solver numbers its nodes after its first reconnection).
 std::vector<int> PushedRailNodes(std::span<const Vec3> inPositions);
+
+/// The pushed rail's CPU solver with inSettings, its base anchored (the struck nodes: PushedRailNodes()).
+Result<fem::TetSolver> MakePushedRailSolver(const fem::TetSolverSettings& inSettings);
+
+/// Before step inStep (0-based) of the push: inImpulse (N s) along +y shared by inStruck when inStep <
+/// cPushSteps, else nothing. Works on any solver with ApplyImpulse(int, Vec3) (the CPU's and the GPU's).
+template <class Solver>
+Status PushRailBeforeStep(Solver& ioSolver, std::span<const int> inStruck, int inStep, double inImpulse)
+{
+    if (inStep >= cPushSteps)
+        return Status::Ok();
+    for (int node : inStruck)
+        if (Status applied =
+                ioSolver.ApplyImpulse(node, Vec3(0.0, inImpulse / static_cast<double>(inStruck.size()), 0.0));
+            !applied)
+            return applied;
+    return Status::Ok();
+}
 
 } // namespace crumple::common

@@ -21,18 +21,12 @@ namespace
 // The pushed rail (scenes/PushedRail.h) with inImpulse (N s) per push step; returns the broken links.
 std::vector<std::uint8_t> PushRail(const TetSolverSettings& inSettings, double inImpulse)
 {
-    const common::PushedRail rail = common::MakePushedRail();
-    TetSolver solver = TetSolver::Create(rail.mMesh, rail.mMaterial, inSettings).Get();
-    REQUIRE(solver.SetNodesFixed(rail.mAnchoredNodes, true).IsValid());
+    TetSolver solver = common::MakePushedRailSolver(inSettings).Get();
     const std::vector<int> struck = common::PushedRailNodes(solver.GetPositions());
     REQUIRE(struck.size() > 10u);
     for (int step = 0; step < common::cPushedRailSteps; ++step)
     {
-        if (step < common::cPushSteps)
-            for (int node : struck)
-                REQUIRE(
-                    solver.ApplyImpulse(node, Vec3(0.0, inImpulse / static_cast<double>(struck.size()), 0.0))
-                        .IsValid());
+        REQUIRE(common::PushRailBeforeStep(solver, struck, step, inImpulse).IsValid());
         REQUIRE(solver.Step(common::cPushedRailStep).IsValid());
     }
     return solver.GetBrokenLinks();
