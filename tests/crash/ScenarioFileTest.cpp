@@ -268,6 +268,12 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/target/angle_rad: unknown key; angles are angle_deg"},
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "min": 1, "mean": 2}])"),
          EError::InvalidArgument, "/expectations/0/mean: unknown key (known: quantity, zone, min, max)"},
+        // A quantity the target does not have
+        {Minimal(mass, speed,
+                 R"("target": {"type": "pole"}, "expectations": [{"quantity": "collisions", "min": 1}, )"
+                 R"({"quantity": "wall_gap_m", "max": 0.1}])"),
+         EError::InvalidArgument,
+         "/expectations/1/quantity: wall_gap_m needs a rigid_wall target (a full-width flat wall)"},
         // Wrong types
         {Minimal(mass, speed, R"("duration_s": "0.6")"), EError::InvalidArgument,
          "/duration_s: must be a number, got string"},

@@ -16,7 +16,7 @@ add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.c
     ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp ${CMAKE_CURRENT_LIST_DIR}/src/FloatingBarrierCrash.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/RecutCarMesh.cpp ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistoryPlots.cpp)
+    ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistoryPlots.cpp ${CMAKE_CURRENT_LIST_DIR}/src/WallGap.cpp)
 target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_scenes_pictures
     PRIVATE nlohmann_json::nlohmann_json crumple::compile_options)
 if(TARGET crumple_scenes_bullet)
@@ -49,7 +49,7 @@ if(CRUMPLE_BUILD_TESTS)
         ${PROJECT_SOURCE_DIR}/tests/crash/CrushModelTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/TimeHistoryTest.cpp
         ${PROJECT_SOURCE_DIR}/tests/crash/ChartsTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/RigidWheelsTest.cpp
         ${PROJECT_SOURCE_DIR}/tests/crash/OutputFoldersTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/MeshPreparationTest.cpp
-        ${PROJECT_SOURCE_DIR}/tests/crash/SanityChecksTest.cpp)
+        ${PROJECT_SOURCE_DIR}/tests/crash/SanityChecksTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/WallGapTest.cpp)
     target_compile_definitions(test_crash_run PRIVATE CRUMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
     target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)

@@ -153,6 +153,11 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                {"C_m", inOutcome.mFrontProfile.mC},
                                {"average_m", inOutcome.mFrontProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
+    if (const std::optional<WallGap>& gap = inOutcome.mWallGap)
+        report["wall_gap"] = {
+            {"mean_m", gap->mMean}, {"largest_m", gap->mLargest}, {"squares", gap->mSquares}};
+    else
+        report["wall_gap"] = nullptr;
     report["limited_dents"] = inOutcome.mLimitedDents;
     report["stacked_up_dents"] = inOutcome.mStackedUpDents;
     const TimeHistory& history = inFindings.mHistory;
@@ -211,6 +216,11 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
                  inOutcome.mTotalImpulse, inOutcome.mPeakImpulse);
     std::fprintf(inStream, "  outward displacement %.3f m (largest forward move of a vertex, against the crush)\n",
                  inOutcome.mOutwardDisplacement);
+    if (const std::optional<WallGap>& gap = inOutcome.mWallGap)
+        std::fprintf(inStream,
+                     "  wall gap %.3f m mean, %.3f m largest over %d squares of 10 cm (how far the struck "
+                     "front ended behind the wall's final plane)\n",
+                     gap->mMean, gap->mLargest, gap->mSquares);
     if (const std::optional<MeshPreparation>& mesh = inOutcome.mMeshPreparation)
         std::fprintf(inStream, "  %s\n", MeshPreparationText(*mesh).c_str());
     for (const std::string& warning : inOutcome.mWarnings)
@@ -296,6 +306,10 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));
     row("crushes stacked up against the occupant cell", std::to_string(inOutcome.mStackedUpDents));
     row("outward displacement", Number(inOutcome.mOutwardDisplacement, 3) + " m");
+    if (const std::optional<WallGap>& gap = inOutcome.mWallGap)
+        row("wall gap (struck front behind the wall's final plane)",
+            Number(gap->mMean, 3) + " m mean, " + Number(gap->mLargest, 3) + " m largest over " +
+                std::to_string(gap->mSquares) + " squares of 10 cm");
     const TimeHistory& history = inFindings.mHistory;
     row("peak deceleration", Number(history.mPeakDeceleration / 9.80665, 1) + " g over " +
                                  std::to_string(history.mPulseSteps) + " engine steps (" +

@@ -348,6 +348,15 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         outcome.mOutwardDisplacement = OutwardDisplacement(
             outcome.mRestMesh, outcome.mPositions,
             outcome.mStartTransform.DirectionToBody(outcome.mStartVelocity / start_speed));
+    if (inTarget.mType == ETarget::RigidWall)
+    {
+        // The wall's face is the plane n . x = 0, n pointing into the wall (SanityChecks' NoTunnelling); in
+        // the body frame as the car met it (the dents are planned in the body frame at the collision).
+        const double angle = inTarget.mAngleDegrees * std::numbers::pi / 180.0;
+        const Vec3 into_wall(std::cos(angle), std::sin(angle), 0.0);
+        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
+                                          outcome.mStartTransform.DirectionToBody(into_wall));
+    }
     if (scene.GetTargetObject().IsValid())
     {
         const ffd::FfdDeformer& target = scene.GetDamage().GetObject(scene.GetTargetObject())->GetDeformer();
@@ -392,6 +401,8 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return mFrontProfile.Average();
     case EQuantity::OutwardDisplacement:
         return mOutwardDisplacement;
+    case EQuantity::WallGap:
+        return mWallGap ? mWallGap->mMean : std::numeric_limits<double>::quiet_NaN();
     }
     return std::numeric_limits<double>::quiet_NaN();
 }

@@ -43,6 +43,8 @@ const char* ToString(EQuantity inQuantity)
         return "peak_deceleration_m_s2";
     case EQuantity::TimeToZeroVelocity:
         return "time_to_zero_velocity_s";
+    case EQuantity::WallGap:
+        return "wall_gap_m";
     }
     return "unknown";
 }

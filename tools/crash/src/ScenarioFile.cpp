@@ -453,6 +453,12 @@ class ScenarioReader
             expectations != inRoot.end() &&
             !ReadExpectations(*expectations, "/expectations", ioScenario.mExpectations))
             return false;
+        // intent: a quantity the run cannot measure for this target is refused now, not failed as NaN later
+        for (std::size_t i = 0; i < ioScenario.mExpectations.size(); ++i)
+            if (ioScenario.mExpectations[i].mQuantity == EQuantity::WallGap &&
+                ioScenario.mTarget.mType != ETarget::RigidWall)
+                return Fail(EError::InvalidArgument, "/expectations/" + std::to_string(i) + "/quantity",
+                            "wall_gap_m needs a rigid_wall target (a full-width flat wall)");
         if (const auto outputs = inRoot.find("outputs"); outputs != inRoot.end())
         {
             if (!ExpectObject(*outputs, "/outputs") || !CheckKeys(*outputs, "/outputs", {{"pictures"}, {}}) ||
@@ -907,18 +913,22 @@ class ScenarioReader
     {
         // The file's quantity names; delta_v_km_h is DeltaV with its bounds converted to m/s
         constexpr std::size_t delta_v_km_h = 2;
-        static constexpr std::array<EQuantity, 12> quantities{
-            EQuantity::ResidualCrush,  EQuantity::DeltaV,         EQuantity::DeltaV,
-            EQuantity::TotalImpulse,   EQuantity::EnergyAbsorbed, EQuantity::Collisions,
-            EQuantity::FoldedVertices, EQuantity::OutwardDisplacement, EQuantity::FoldedTriangles,
-            EQuantity::CrushAverage,   EQuantity::PeakDeceleration, EQuantity::TimeToZeroVelocity};
+        static constexpr std::array<EQuantity, 13> quantities{
+            EQuantity::ResidualCrush,    EQuantity::DeltaV,
+            EQuantity::DeltaV,           EQuantity::TotalImpulse,
+            EQuantity::EnergyAbsorbed,   EQuantity::Collisions,
+            EQuantity::FoldedVertices,   EQuantity::OutwardDisplacement,
+            EQuantity::FoldedTriangles,  EQuantity::CrushAverage,
+            EQuantity::PeakDeceleration, EQuantity::TimeToZeroVelocity,
+            EQuantity::WallGap};
         std::size_t quantity = 0;
         if (!ExpectObject(inItem, inPointer) ||
             !CheckKeys(inItem, inPointer, {{"quantity", "zone", "min", "max"}, {}}) ||
             !ReadEnum(inItem, inPointer, "quantity",
                       {"residual_crush_m", "delta_v_m_s", "delta_v_km_h", "total_impulse_N_s",
                        "energy_absorbed_J", "collisions", "folded_vertices", "outward_displacement_m",
-                       "folded_triangles", "crush_average_m", "peak_deceleration_m_s2", "time_to_zero_velocity_s"},
+                       "folded_triangles", "crush_average_m", "peak_deceleration_m_s2",
+                       "time_to_zero_velocity_s", "wall_gap_m"},
                       {{"residual_crush", "residual crush is residual_crush_m"},
                        {"delta_v", "delta-v is delta_v_m_s or delta_v_km_h"},
                        {"total_impulse", "impulses are total_impulse_N_s"},

@@ -1,0 +1,38 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/ffd/TriangleMesh.h>
+
+#include <span>
+
+namespace crumple::crash
+{
+
+/// How far the surface a flat rigid wall struck ended behind the wall's final plane: a flat wall leaves a
+/// flat front, so this is the crushed front's departure from it (a dome where a rounded nose's sides were
+/// pushed past the plane, a wavy face).
+struct WallGap
+{
+    double mMean = 0.0;    ///< Mean over the squares below of their gap (m, >= 0)
+    double mLargest = 0.0; ///< The largest gap of a square (m, >= 0)
+    int mSquares = 0;      ///< Squares the wall met the body in (0: no vertex moved)
+};
+
+/// The wall's gap for a car body (its rest mesh and deformed positions, #V, body frame, m). inIntoWall: the
+/// wall's normal into the wall, a unit direction in the body frame; inRestNormals: the vertex normals at rest
+/// (#V, either winding).
+/// The moved vertices are those that moved more than 1 cm; the wall's final plane is the foremost of their
+/// positions along inIntoWall. The wall met the foremost surface of each column across it that reached ahead
+/// of that plane at rest, so that surface should end on the plane: across the wall in squares of 10 cm, each
+/// square's gap is the plane's distance ahead of the foremost final position among the moved vertices in it
+/// that lay ahead of the plane at rest on a surface facing the wall (the rest normal within 75 degrees of the
+/// wall's normal, either way). Only the foremost counts, and surfaces seen edge-on (a body's sides, its
+/// underside) do not: the crush packs what lies behind the struck face behind the wall, as real structure
+/// folds. A lattice of control spacing h cannot bend the field within h, so where the crush changes across
+/// the front (a nose's flanks, the edge of a bumper) the gap is of the order of h times the surface's slope.
+WallGap MeasureWallGap(const ffd::TriangleMesh& inRest, std::span<const Vec3> inRestNormals,
+                       std::span<const Vec3> inPositions, const Vec3& inIntoWall);
+
+} // namespace crumple::crash
