@@ -273,7 +273,7 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
                  R"("target": {"type": "pole"}, "expectations": [{"quantity": "collisions", "min": 1}, )"
                  R"({"quantity": "wall_gap_m", "max": 0.1}])"),
          EError::InvalidArgument,
-         "/expectations/1/quantity: wall_gap_m needs a rigid_wall target (a full-width flat wall)"},
+         "/expectations/1/quantity: wall_gap_m needs a rigid_wall or offset_wall target (a flat wall)"},
         // Wrong types
         {Minimal(mass, speed, R"("duration_s": "0.6")"), EError::InvalidArgument,
          "/duration_s: must be a number, got string"},

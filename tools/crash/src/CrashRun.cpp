@@ -36,6 +36,9 @@ namespace
 
 // The collision window of a crash run (s).
 constexpr double cCrashPulseWindow = 0.15;
+// m: how far inside an offset wall's edge its wall gap is measured (MeasureWallGap's WallReach): the crush
+// field fades across the footprint's edge over about the default control spacing.
+constexpr double cWallEdgeMargin = 0.15;
 
 // Principal moments (the diagonal) of a uniform thin shell of mass inMass over the mesh's triangles, about
 // inCentre: a triangle of area A and corners x_i has integral x x^T dA = A / 12 (sum x_i x_i^T + s s^T),
@@ -356,6 +359,18 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         const Vec3 into_wall(std::cos(angle), std::sin(angle), 0.0);
         outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
                                           outcome.mStartTransform.DirectionToBody(into_wall));
+    }
+    if (inTarget.mType == ETarget::OffsetWall)
+    {
+        // The offset wall's face is x = 0 (n = +x) where y >= its edge (common::CrashWallLeftEdge). A point p
+        // of the body at the start is at y = (R^T e_y) . p + t_y there; the field fades across the edge over
+        // about a control spacing, so the wall's reach starts that far inside it.
+        const Transform& start = outcome.mStartTransform;
+        const WallReach reach{start.DirectionToBody(Vec3::UnitY()), common::CrashWallLeftEdge(inSettings) +
+                                                                        cWallEdgeMargin -
+                                                                        start.mTranslation.y()};
+        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
+                                          start.DirectionToBody(Vec3::UnitX()), &reach);
     }
     if (scene.GetTargetObject().IsValid())
     {

@@ -456,9 +456,10 @@ class ScenarioReader
         // intent: a quantity the run cannot measure for this target is refused now, not failed as NaN later
         for (std::size_t i = 0; i < ioScenario.mExpectations.size(); ++i)
             if (ioScenario.mExpectations[i].mQuantity == EQuantity::WallGap &&
-                ioScenario.mTarget.mType != ETarget::RigidWall)
+                ioScenario.mTarget.mType != ETarget::RigidWall &&
+                ioScenario.mTarget.mType != ETarget::OffsetWall)
                 return Fail(EError::InvalidArgument, "/expectations/" + std::to_string(i) + "/quantity",
-                            "wall_gap_m needs a rigid_wall target (a full-width flat wall)");
+                            "wall_gap_m needs a rigid_wall or offset_wall target (a flat wall)");
         if (const auto outputs = inRoot.find("outputs"); outputs != inRoot.end())
         {
             if (!ExpectObject(*outputs, "/outputs") || !CheckKeys(*outputs, "/outputs", {{"pictures"}, {}}) ||

@@ -13,13 +13,17 @@ namespace crumple::crash
 {
 
 WallGap MeasureWallGap(const ffd::TriangleMesh& inRest, std::span<const Vec3> inRestNormals,
-                       std::span<const Vec3> inPositions, const Vec3& inIntoWall)
+                       std::span<const Vec3> inPositions, const Vec3& inIntoWall, const WallReach* inReach)
 {
     constexpr double cMoved2 = 0.01 * 0.01;         // m^2: a move shallower than 1 cm is not the wall's
     constexpr double cSquare = 0.1;                 // m: the squares across the wall
     constexpr double cFacing = 0.25881904510252074; // cos 75 degrees
+    // The wall's vertices: moved more than 1 cm, and within the wall's reach.
     auto moved = [&](std::size_t inVertex)
-    { return (inPositions[inVertex] - inRest.mPositions[inVertex]).squaredNorm() > cMoved2; };
+    {
+        return (inPositions[inVertex] - inRest.mPositions[inVertex]).squaredNorm() > cMoved2 &&
+               (inReach == nullptr || inReach->mAcross.dot(inRest.mPositions[inVertex]) >= inReach->mFrom);
+    };
     // intent: the wall's final plane, the foremost moved point
     double plane = -std::numeric_limits<double>::infinity();
     for (std::size_t vertex = 0; vertex < inPositions.size(); ++vertex)

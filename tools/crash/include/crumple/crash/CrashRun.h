@@ -58,7 +58,7 @@ struct CrashOutcome
     std::optional<MeshPreparation> mMeshPreparation; ///< A mesh body's re-cut; empty for the procedural box
     CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
-    /// A rigid wall's gap behind its final plane (MeasureWallGap); empty for other targets
+    /// A rigid or offset wall's gap behind its final plane (MeasureWallGap); empty for other targets
     std::optional<WallGap> mWallGap;
     int mLimitedDents = 0;                  ///< Dents that a material bound clamped or scaled (any object)
     int mStackedUpDents = 0;                ///< Crushes that stacked up against the occupant cell (any object)

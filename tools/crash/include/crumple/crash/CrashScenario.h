@@ -138,7 +138,7 @@ enum class EQuantity : std::uint8_t
     PeakDeceleration, ///< Largest deceleration of the car along its initial travel (m/s^2): CFC 60 (SAE J211)
                       ///< when the engine step samples at >= 600 Hz, else the unfiltered step differences
     TimeToZeroVelocity, ///< First time the car's velocity along its initial travel reaches 0 (s); infinite: never
-    WallGap, ///< Rigid wall targets only: the mean distance the struck front ended behind the wall's final
+    WallGap, ///< Rigid and offset walls only: the mean distance the struck front ended behind the wall's final
              ///< plane (m, MeasureWallGap's mMean): a flat wall leaves a flat front, so this is its dome
 };
 

@@ -20,6 +20,15 @@ struct WallGap
     int mSquares = 0;      ///< Squares the wall met the body in (0: no vertex moved)
 };
 
+/// The part of a body a wall that does not span it covers (an offset wall): the rest points p (body frame)
+/// with mAcross . p >= mFrom.
+struct WallReach
+{
+    Vec3 mAcross =
+        Vec3::UnitY();  ///< Unit direction across the wall's edge, into the wall's span (body frame)
+    double mFrom = 0.0; ///< m
+};
+
 /// The wall's gap for a car body (its rest mesh and deformed positions, #V, body frame, m). inIntoWall: the
 /// wall's normal into the wall, a unit direction in the body frame; inRestNormals: the vertex normals at rest
 /// (#V, either winding).
@@ -32,7 +41,10 @@ struct WallGap
 /// underside) do not: the crush packs what lies behind the struck face behind the wall, as real structure
 /// folds. A lattice of control spacing h cannot bend the field within h, so where the crush changes across
 /// the front (a nose's flanks, the edge of a bumper) the gap is of the order of h times the surface's slope.
+/// inReach: for a wall that covers part of the body only, the vertices it covers (the others, however they
+/// moved, are not the wall's to flatten); null: the wall spans the body.
 WallGap MeasureWallGap(const ffd::TriangleMesh& inRest, std::span<const Vec3> inRestNormals,
-                       std::span<const Vec3> inPositions, const Vec3& inIntoWall);
+                       std::span<const Vec3> inPositions, const Vec3& inIntoWall,
+                       const WallReach* inReach = nullptr);
 
 } // namespace crumple::crash
