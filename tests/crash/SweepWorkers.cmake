@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # cmake -DCRASH=<crumple-crash> -DSCENARIO=<file> -DOUT=<dir> -P SweepWorkers.cmake
-# The same sweep in 1 and in 3 worker processes writes the same sweep.csv, with one ok row per case, and a plot.
+# The same sweep in 1 and in 3 worker processes writes the same sweep.csv, with one ok row per case (each with
+# its wall gap), and a plot.
 set(sweep "speeds_km_h=20,35,50;angles_deg=0,20;offsets_m=0,0.4")
 foreach(workers 1 3)
     file(REMOVE_RECURSE ${OUT}/w${workers})
@@ -23,3 +24,17 @@ list(LENGTH rows count)
 if(NOT count EQUAL 12)
     message(FATAL_ERROR "${count} ok rows, expected 12")
 endif()
+# A wall's sweep gives every case its wall gap (column wall_gap_m, the mean in metres), a number >= 0.
+file(STRINGS ${OUT}/w1/sweep.csv header LIMIT_COUNT 1)
+string(REPLACE "," ";" columns "${header}")
+list(FIND columns "wall_gap_m" gap_column)
+if(NOT gap_column EQUAL 10)
+    message(FATAL_ERROR "sweep.csv's header has wall_gap_m at ${gap_column}, expected 10: ${header}")
+endif()
+foreach(row IN LISTS rows)
+    string(REPLACE "," ";" fields "${row}")
+    list(GET fields 10 gap)
+    if(NOT gap MATCHES "^[0-9][0-9.eE+-]*$")
+        message(FATAL_ERROR "a wall sweep's row has no wall gap: ${row}")
+    endif()
+endforeach()

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -85,7 +86,8 @@ void RunCase(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std:
     std::string status; // the row's last field
     if (outcome.HasError())
     {
-        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,,,,,,,", inCase, speed * cKmhPerMs, angle, offset);
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,,,,,,,,", inCase, speed * cKmhPerMs, angle,
+                      offset);
         status = "failed: " + outcome.GetError().mMessage;
     }
     else
@@ -100,10 +102,14 @@ void RunCase(const CrashScenario& inScenario, const CrashSweepSpec& inSpec, std:
         for (const SanityResult& check : findings.mSanity)
             if (!check.mPassed)
                 failures += (failures.empty() ? "sanity " : "; sanity ") + check.mName;
-        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,", inCase,
+        // The wall gap's mean where the target is a wall, an empty field otherwise.
+        char gap[32] = "";
+        if (o.mWallGap)
+            std::snprintf(gap, sizeof(gap), "%.9g", o.mWallGap->mMean);
+        std::snprintf(row, sizeof(row), "%zu,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%zu,%s,", inCase,
                       speed * cKmhPerMs, angle, offset, o.mResidualCrush[static_cast<int>(EZone::Front)],
-                      o.mResidualCrush[static_cast<int>(EZone::Any)], o.DeltaV() * cKmhPerMs, o.EnergyAbsorbed(),
-                      o.mTotalImpulse, o.mCollisions.size());
+                      o.mResidualCrush[static_cast<int>(EZone::Any)], o.DeltaV() * cKmhPerMs,
+                      o.EnergyAbsorbed(), o.mTotalImpulse, o.mCollisions.size(), gap);
         status = findings.Passed() ? std::string("ok") : "failed: " + failures;
     }
     // The status is one CSV field: no commas or line breaks inside it.
@@ -278,7 +284,7 @@ Result<int> MergeCrashSweep(const CrashScenario& inScenario, const CrashSweepSpe
     const std::size_t total = inSpec.GetCaseCount();
     // Rows in case order, then the plot.
     std::string csv = "case,speed_km_h,wall_angle_deg,offset_m,front_crush_m,max_crush_m,delta_v_km_h,"
-                      "energy_absorbed_J,total_impulse_N_s,collisions,status\n";
+                      "energy_absorbed_J,total_impulse_N_s,collisions,wall_gap_m,status\n";
     int failed = 0;
     std::vector<std::array<double, 2>> points, failed_points;
     for (std::size_t index = 0; index < total; ++index)
@@ -287,7 +293,7 @@ Result<int> MergeCrashSweep(const CrashScenario& inScenario, const CrashSweepSpe
         if (row.HasError())
         {
             ++failed;
-            csv += std::to_string(index) + ",,,,,,,,,,failed: the worker wrote no row\n";
+            csv += std::to_string(index) + ",,,,,,,,,,,failed: the worker wrote no row\n";
             continue;
         }
         const std::string text(reinterpret_cast<const char*>(row.Get().data()), row.Get().size());
