@@ -93,6 +93,14 @@ TEST_CASE("Wall gap: only moves over 1 cm count, and only what lay ahead of the 
     Front shallow;
     shallow.Crush(0.995);
     CHECK(shallow.Gap().mSquares == 0);
+    // Arrays of different lengths: nothing measured, nothing read past an end.
+    Front short_normals;
+    short_normals.Crush(0.7);
+    short_normals.mNormals.pop_back();
+    const WallGap mismatched = short_normals.Gap();
+    CHECK(mismatched.mSquares == 0);
+    CHECK(std::isnan(mismatched.mMean));
+    CHECK(std::isnan(mismatched.mLargest));
     // A part of the face that the wall did not reach (it stayed at x = 1, behind no plane) is not in it, and
     // the side packed behind a plane 0.3 m back is not either: the face's other half, pushed onto it,
     // conforms.

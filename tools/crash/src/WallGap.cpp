@@ -18,6 +18,9 @@ WallGap MeasureWallGap(const ffd::TriangleMesh& inRest, std::span<const Vec3> in
     constexpr double cMoved2 = 0.01 * 0.01;         // m^2: a move shallower than 1 cm is not the wall's
     constexpr double cSquare = 0.1;                 // m: the squares across the wall
     constexpr double cFacing = 0.25881904510252074; // cos 75 degrees
+    // intent: arrays of different lengths measure nothing (NaN), rather than read past one of them
+    if (inRestNormals.size() != inPositions.size() || inRest.mPositions.size() != inPositions.size())
+        return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0};
     // The wall's vertices: moved more than 1 cm, and within the wall's reach.
     auto moved = [&](std::size_t inVertex)
     {

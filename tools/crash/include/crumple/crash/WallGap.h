@@ -42,7 +42,8 @@ struct WallReach
 /// folds. A lattice of control spacing h cannot bend the field within h, so where the crush changes across
 /// the front (a nose's flanks, the edge of a bumper) the gap is of the order of h times the surface's slope.
 /// inReach: for a wall that covers part of the body only, the vertices it covers (the others, however they
-/// moved, are not the wall's to flatten); null: the wall spans the body.
+/// moved, are not the wall's to flatten); null: the wall spans the body. Rest positions, rest normals and
+/// positions of different lengths give NaN mean and largest over 0 squares.
 WallGap MeasureWallGap(const ffd::TriangleMesh& inRest, std::span<const Vec3> inRestNormals,
                        std::span<const Vec3> inPositions, const Vec3& inIntoWall,
                        const WallReach* inReach = nullptr);
