@@ -5,21 +5,33 @@
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <span>
+#include <vector>
 
 namespace crumple::common
 {
 
-/// Vertices whose normal now points against their rest normal (dot < 0): the surface has folded over
-/// there. Vertex normals are area-weighted over the vertex's triangles, so a sliver triangle that a smooth
+/// A vertex's area-weighted normal is its own only when its triangles do not cancel: below this fraction of
+/// their summed areas the sum is round-off (a double-sided sheet whose two sides share vertices, a sheet
+/// folded flat onto itself) and points anywhere.
+inline constexpr double cSheetCancellation = 1.0e-3;
+
+/// Vertices whose normal now points against their rest normal (area-weighted over the vertex's triangles,
+/// at rest and at inPositions; dot < 0): the surface has folded over there. A sliver triangle that a smooth
 /// dent tips over (a thin triangle of a real mesh can) does not count; a sound dent, however deep, turns no
-/// vertex over.
-/// @param[in] inRestNormals  #V unit vertex normals before
-/// @param[in] inNormals      #V unit vertex normals after
-int FoldedVertices(std::span<const Vec3> inRestNormals, std::span<const Vec3> inNormals);
+/// vertex over. Vertices whose rest normal is round-off (cSheetCancellation: both sides of a double-sided
+/// sheet on the same vertices) have no direction to turn against and are not counted (FoldedTriangles sees
+/// their triangles). Positions of another length than the rest mesh's count nothing.
+int FoldedVertices(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
 
 /// Triangles whose face normal the dents turned over (its dot product with the rest face normal < 0): a
 /// fold of the surface itself. Triangles of zero rest area are skipped. Unlike FoldedVertices it does not
 /// count a vertex on a sharp ridge whose averaged normal tips over when the crush compacts the ridge.
 int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
+
+/// inNormals (unit vertex normals of inRest, e.g. a deformer's at rest) with each vertex whose area-weighted
+/// normal is round-off (cSheetCancellation) given the unit normal of its largest triangle instead, either
+/// side: which way the surface there faces, for tests that take either winding. Other vertices keep
+/// theirs bit for bit; inNormals of another length than the mesh's are returned as they are.
+std::vector<Vec3> SheetSafeNormals(const ffd::TriangleMesh& inRest, std::vector<Vec3> inNormals);
 
 } // namespace crumple::common

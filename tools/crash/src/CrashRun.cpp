@@ -342,7 +342,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     outcome.mNormals = car.GetNormals();
     for (EZone zone : {EZone::Any, EZone::Front, EZone::Rear, EZone::Left, EZone::Right, EZone::Roof})
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
-    outcome.mFoldedVertices = common::FoldedVertices(outcome.mRestNormals, outcome.mNormals);
+    outcome.mFoldedVertices = common::FoldedVertices(outcome.mRestMesh, outcome.mPositions);
     outcome.mFoldedTriangles = common::FoldedTriangles(outcome.mRestMesh, outcome.mPositions);
     outcome.mFrontProfile = FrontCrushProfile(outcome.mRestMesh, outcome.mPositions);
     // intent: the car's initial travel in its own frame; a standing car (a target hitting it) has none
@@ -357,8 +357,9 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         // the body frame as the car met it (the dents are planned in the body frame at the collision).
         const double angle = inTarget.mAngleDegrees * std::numbers::pi / 180.0;
         const Vec3 into_wall(std::cos(angle), std::sin(angle), 0.0);
-        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
-                                          outcome.mStartTransform.DirectionToBody(into_wall));
+        outcome.mWallGap = MeasureWallGap(
+            outcome.mRestMesh, common::SheetSafeNormals(outcome.mRestMesh, outcome.mRestNormals),
+            outcome.mPositions, outcome.mStartTransform.DirectionToBody(into_wall));
     }
     if (inTarget.mType == ETarget::OffsetWall)
     {
@@ -369,8 +370,9 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         const WallReach reach{start.DirectionToBody(Vec3::UnitY()), common::CrashWallLeftEdge(inSettings) +
                                                                         cWallEdgeMargin -
                                                                         start.mTranslation.y()};
-        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
-                                          start.DirectionToBody(Vec3::UnitX()), &reach);
+        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh,
+                                          common::SheetSafeNormals(outcome.mRestMesh, outcome.mRestNormals),
+                                          outcome.mPositions, start.DirectionToBody(Vec3::UnitX()), &reach);
     }
     if (scene.GetTargetObject().IsValid())
     {
