@@ -356,6 +356,14 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     if (mesh.mTriangles.empty())
         return MakeError(EError::DegenerateGeometry, inSettings.mPath.string() + " has no triangles");
 
+    // intent: a coordinate the file spells as nan or inf is named here; past the centring every vertex
+    // would be NaN and the first one blamed
+    for (std::size_t v = 0; v < mesh.mPositions.size(); ++v)
+        if (!IsFinite(mesh.mPositions[v]))
+            return MakeError(EError::NonFinite,
+                             inSettings.mPath.string() + ": vertex " + std::to_string(v) +
+                                 " of the loaded mesh is not finite (nan or inf in the file)");
+
     // Centre on the bounding box and scale by the unit or to the wanted length.
     const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);
     const Vec3 lo = bounds.mMin, hi = bounds.mMax;
@@ -369,7 +377,8 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     for (Vec3& p : mesh.mPositions)
         p = scale * (p - centre);
     if (Status valid = ffd::ValidateTriangleMesh(mesh); !valid)
-        return valid.GetError();
+        return MakeError(valid.GetError().mCode,
+                         inSettings.mPath.string() + ": " + valid.GetError().mMessage);
     return body;
 }
 

@@ -71,7 +71,8 @@ set(crash_malformed
     "preset_not_regular|not a regular file"
     "preset_duplicate_key|crush_A_N_per_m: duplicate key"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
-    "mesh_face_index_beyond|mIndices\\[2\\] is out of range")
+    "mesh_face_index_beyond|mIndices\\[2\\] is out of range"
+    "mesh_nan_vertex|nan_vertex.obj: vertex [0-9]+ of the loaded mesh is not finite")
 # Campbell's line comes from full-frontal rigid-wall tests: --calibrate refuses a pole scenario, and a sweep.
 add_test(NAME "crash: --calibrate refuses a scenario that is not a full-frontal rigid wall"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/pole_frontal_32kmh.json
