@@ -16,11 +16,12 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     mConfiguration = std::make_unique<btDefaultCollisionConfiguration>();
     mDispatcher = std::make_unique<btCollisionDispatcher>(mConfiguration.get());
     mBroadphase = std::make_unique<btDbvtBroadphase>();
-    mSolver = std::make_unique<btSequentialImpulseConstraintSolver>();
+    mSolver = std::make_unique<ImpactSplitSolver>();
     mWorld = std::make_unique<btDiscreteDynamicsWorld>(mDispatcher.get(), mBroadphase.get(), mSolver.get(), mConfiguration.get());
     // Bullet pushes a body out of a penetration shallower than 4 cm (its default) by adding velocity
     // (Baumgarte), which rebounds a 20 km/h car at twice the restitution. Split impulses correct position
-    // without velocity; resting contacts (under 5 mm) keep Baumgarte, which holds a parked car still.
+    // without velocity; resting contacts with the ground (under 5 mm) keep Baumgarte, which holds a parked
+    // car still; every other contact splits however shallow (ImpactSplitSolver).
     mWorld->getSolverInfo().m_splitImpulse = 1;
     mWorld->getSolverInfo().m_splitImpulsePenetrationThreshold = btScalar(-0.005);
     // Bullet's solver limits friction along one tangent per contact by default (the slip's direction when the
@@ -65,8 +66,11 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     // sinks (3.2 cm and 0.105 rad/s over 0.6 s at 64 km/h); the box-box detector gives the whole face each
     // step. 400 m square, its top at z = 0.
     if (!inSettings.mFloating)
+    {
         add_static(std::make_unique<btBoxShape>(btVector3(200, 200, 1)), btVector3(0, 0, -1),
                    friction > 0 ? btScalar(inSettings.mGroundFriction) / friction : btScalar(0));
+        mSolver->SetGround(mObjects.back().get());
+    }
     if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.

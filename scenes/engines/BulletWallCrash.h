@@ -3,6 +3,7 @@
 #pragma once
 
 #include "EngineCrash.h"
+#include "ImpactSplitSolver.h"
 
 #include <crumple/bullet/BulletAdapter.h>
 #include <crumple/bullet/BulletBodyState.h>
@@ -50,7 +51,7 @@ private:
     std::unique_ptr<btDefaultCollisionConfiguration> mConfiguration;
     std::unique_ptr<btCollisionDispatcher> mDispatcher;
     std::unique_ptr<btDbvtBroadphase> mBroadphase;
-    std::unique_ptr<btSequentialImpulseConstraintSolver> mSolver;
+    std::unique_ptr<ImpactSplitSolver> mSolver;
     std::unique_ptr<btDiscreteDynamicsWorld> mWorld;
     std::vector<std::unique_ptr<btCollisionShape>> mShapes;
     std::vector<std::unique_ptr<btCollisionObject>> mObjects;

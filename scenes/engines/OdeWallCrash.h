@@ -25,6 +25,9 @@ public:
     /// Sweeps of ODE's quick step per step, ODE's default: 20, 100 and 500 gave the same impulses within 0.2 %
     /// on 30-60 degree hits, and 100 made a step with 100 resting crates cost five times dWorldStep's
     static constexpr int cQuickStepIterations = 20;
+    /// The least error reduction of a contact that is not the ground's (a restitution of 0 would leave a
+    /// penetration uncorrected): its push-out is then at most 2 % of the approach speed
+    static constexpr double cMinWallErp = 0.02;
     explicit OdeWallCrash(const EngineCrashSettings& inSettings);
     ~OdeWallCrash();
     OdeWallCrash(const OdeWallCrash&) = delete;
