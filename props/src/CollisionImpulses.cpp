@@ -157,8 +157,13 @@ Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugin::Collision
 Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<const Vec3> inVelocities,
                           std::span<const double> inInverseMasses, double inLimit)
 {
-    // intent: each struck node's velocity after all its impulses, in the order they would be added
+    const auto within = [inLimit](const Vec3& inVelocity)
+    { return IsFinite(inVelocity) && inVelocity.cwiseAbs().maxCoeff() <= inLimit; };
+    // intent: each struck node's velocity after each of its impulses, added in order as the solver will add
+    // them: a solver refuses an impulse that leaves a node too fast on the way, even where a later one would
+    // bring it back (two pushes of 0.6e100 m/s and one pull: the second was refused after the first landed)
     std::map<int, Vec3> after;
+    int passed_on_the_way = -1;
     for (const NodalImpulse& impulse : inImpulses)
     {
         const auto node = static_cast<std::size_t>(impulse.mNode);
@@ -166,12 +171,19 @@ Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<co
             return MakeError(EError::OutOfRange, "CheckNodalImpulses: no node " + std::to_string(impulse.mNode));
         const auto [entry, inserted] = after.try_emplace(impulse.mNode, inVelocities[node]);
         entry->second += inInverseMasses[node] * impulse.mImpulse;
+        if (passed_on_the_way < 0 && !within(entry->second))
+            passed_on_the_way = impulse.mNode;
     }
     for (const auto& [node, velocity] : after)
-        if (!IsFinite(velocity) || !(velocity.cwiseAbs().maxCoeff() <= inLimit))
+        if (!within(velocity))
             return MakeError(IsFinite(velocity) ? EError::OutOfRange : EError::NonFinite,
                              "CheckNodalImpulses: the impulses would leave node " + std::to_string(node) +
                                  " moving faster than its solver holds");
+    if (passed_on_the_way >= 0)
+        return MakeError(EError::OutOfRange,
+                         "CheckNodalImpulses: the impulses would take node " +
+                             std::to_string(passed_on_the_way) +
+                             " faster than its solver holds before the last of them lands");
     return Status::Ok();
 }
 

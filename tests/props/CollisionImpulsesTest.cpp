@@ -124,6 +124,41 @@ TEST_CASE("Nodal impulses refuse an element naming a node that is not there, and
     CHECK(panel.GetVelocities() == velocities);
 }
 
+TEST_CASE(
+    "Nodal impulses that pass a node's velocity limit on the way are refused whole, even if the last pulls "
+    "it back",
+    "[props]")
+{
+    // Three contacts on one node, each 0.6e100 m/s of its velocity: +x, +x, then -x. The sum (0.6e100 m/s) is
+    // within the solver's 1e100 m/s, the second step (1.2e100) is not, and the solver refuses that impulse
+    // once the first has landed: found by a bad-input audit, where node 1 was left at 6e99 m/s.
+    TetSolver panel = Panel();
+    const std::vector<Vec3> velocities = panel.GetVelocities();
+    const int node = 1;
+    const double mass = 1.0 / panel.GetInverseMasses()[node];
+    Collision pushes;
+    pushes.mBodyA = BodyId{3};
+    pushes.mBodyB = BodyId{7};
+    for (const double sign : {1.0, 1.0, -1.0})
+    {
+        CollisionContact contact;
+        contact.mLocalPointOnA = panel.GetPositions()[node];
+        contact.mLocalNormalOnA = sign * Vec3::UnitX();
+        contact.mImpulse = 0.6e100 * mass;
+        pushes.mContacts.push_back(contact);
+    }
+    const Result<std::vector<NodalImpulse>> impulses =
+        CollisionNodalImpulses(pushes, BodyId{3}, panel.GetElementNodes(), panel.GetPositions());
+    REQUIRE(impulses);
+    const Status checked = CheckNodalImpulses(impulses.Get(), panel.GetVelocities(), panel.GetInverseMasses(),
+                                              TetSolver::cMaxStateMagnitude);
+    CHECK(checked.HasError());
+    const Status refused = ApplyCollision(panel, pushes, BodyId{3});
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mCode == EError::OutOfRange);
+    CHECK(panel.GetVelocities() == velocities);
+}
+
 TEST_CASE("A collision dispatched by a DamageWorld moves a free prop by exactly its impulse", "[props]")
 {
     // The fixture's car hits its static wall; a listener hands the wall's side of every collision to a FEM

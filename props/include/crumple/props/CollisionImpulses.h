@@ -71,9 +71,10 @@ CRUMPLE_API Result<std::vector<NodalImpulse>> CollisionNodalImpulses(const plugi
                                                          std::span<const Vec3> inPositions,
                                                          const ContactSpread& inSpread);
 
-/// Whether nodal impulses can all be applied: refused, naming the node, when one would leave a node's velocity
-/// (inVelocities + inInverseMasses x the node's impulses) not finite or, in any component, beyond inLimit (m/s;
-/// a GPU solver's float range). Lets an application be all or nothing.
+/// Whether nodal impulses can all be applied: refused, naming the node, when one would leave a node's
+/// velocity (inVelocities + inInverseMasses x its impulses so far, added in order as a solver adds them) not
+/// finite or, in any component, beyond inLimit (m/s; a GPU solver's float range). Lets an application be all
+/// or nothing.
 CRUMPLE_API Status CheckNodalImpulses(std::span<const NodalImpulse> inImpulses, std::span<const Vec3> inVelocities,
                                       std::span<const double> inInverseMasses, double inLimit);
 
