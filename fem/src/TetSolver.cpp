@@ -53,6 +53,15 @@ Status ValidateSettings(const TetSolverSettings& inSettings)
                             "is not an EIntegrator");
     if (!IsFinite(inSettings.mGravity))
         return MakeError(EError::NonFinite, "TetSolverSettings.mGravity must be finite");
+    // intent: the bound SetGravity holds it to (a gravity of 1e150 m/s^2 took nodes past every velocity
+    // bound)
+    if (!(inSettings.mGravity.cwiseAbs().maxCoeff() <= TetSolver::cMaxStateMagnitude))
+        return MakeError(EError::OutOfRange,
+                         "TetSolverSettings.mGravity beyond 1e100 m/s^2 (cMaxStateMagnitude)");
+    if (inSettings.mPreconditioner != EImplicitPreconditioner::RestFactorization &&
+        inSettings.mPreconditioner != EImplicitPreconditioner::BlockJacobi)
+        return SettingError("mPreconditioner", static_cast<double>(inSettings.mPreconditioner),
+                            "is not an EImplicitPreconditioner");
     if (!(inSettings.mStabilitySafetyFactor > 0.0 && inSettings.mStabilitySafetyFactor <= 1.0))
         return SettingError("mStabilitySafetyFactor", inSettings.mStabilitySafetyFactor,
                             "must lie in (0, 1]; above 1 symplectic Euler is not proven stable");

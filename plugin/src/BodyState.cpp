@@ -45,6 +45,11 @@ Status ValidateBodyState(const BodyState& inState)
                              "BodyState.mMass = " + std::to_string(inState.mMass) + " kg: a dynamic body needs mass > 0");
         if (!(inState.mMass <= cMaxBodyMass))
             return MakeError(EError::OutOfRange, "BodyState.mMass is above 1e12 kg");
+        // intent: a subnormal mass (4.9e-324 kg) passed as > 0 and had an infinite inverse: its contacts then
+        // made no collision at all
+        if (!(inState.mMass >= cMinBodyMass))
+            return MakeError(EError::OutOfRange, "BodyState.mMass = " + std::to_string(inState.mMass) +
+                                                     " kg: a dynamic body needs at least 1e-12 kg");
         if (!(inState.mInverseInertiaWorld.cwiseAbs().maxCoeff() <= cMaxInverseInertia))
             return MakeError(EError::OutOfRange, "BodyState.mInverseInertiaWorld has an entry above 1e12 1/(kg m^2)");
         const Mat3& inverse_inertia = inState.mInverseInertiaWorld;

@@ -111,6 +111,11 @@ TEST_CASE("TetSolver::Create refuses bad material and settings, naming the field
     refused([](TetSolverSettings& s) { s.mDivergenceEnergyRatio = 1.0; }, "mDivergenceEnergyRatio = 1");
     refused([](TetSolverSettings& s) { s.mMaxStepSplits = -1; }, "mMaxStepSplits");
     refused([](TetSolverSettings& s) { s.mIntegrator = static_cast<EIntegrator>(9); }, "mIntegrator");
+    // Found by a bad-input audit: accepted before, and stepped past every velocity bound (gravity 1e150
+    // m/s^2) or treated as block Jacobi (an unknown preconditioner)
+    refused([](TetSolverSettings& s) { s.mGravity.z() = -1.0e150; }, "mGravity beyond 1e100");
+    refused([](TetSolverSettings& s) { s.mPreconditioner = static_cast<EImplicitPreconditioner>(7); },
+            "mPreconditioner");
 }
 
 TEST_CASE("TetSolver refuses bad input and changes nothing", "[fem]")

@@ -23,6 +23,16 @@ TEST_CASE("ValidateBodyState accepts a normal body and names bad fields", "[plug
     CHECK(refused.GetError().mCode == EError::InvalidArgument);
     CHECK(refused.GetError().mMessage.find("mMass") != std::string::npos);
 
+    // A subnormal mass is > 0 but has an infinite inverse (found by a bad-input audit: its contacts made no
+    // collision); the least dynamic mass is the engines' bodies' (ConvexBodySettings), 1e-12 kg.
+    BodyState subnormal = state;
+    subnormal.mMass = std::numeric_limits<double>::denorm_min();
+    CHECK(ValidateBodyState(subnormal).GetError().mCode == EError::OutOfRange);
+    subnormal.mMass = 0.9e-12;
+    CHECK(ValidateBodyState(subnormal).GetError().mCode == EError::OutOfRange);
+    subnormal.mMass = cMinBodyMass;
+    CHECK(ValidateBodyState(subnormal).IsValid());
+
     BodyState nan = state;
     nan.mAngularVelocity.y() = std::numeric_limits<double>::quiet_NaN();
     CHECK(ValidateBodyState(nan).GetError().mCode == EError::NonFinite);

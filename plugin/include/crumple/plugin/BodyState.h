@@ -23,7 +23,7 @@ enum class EMotionType
 struct CRUMPLE_API BodyState
 {
     EMotionType mMotionType = EMotionType::Dynamic; ///< See EMotionType
-    double mMass = 1.0;                         ///< Mass (kg), > 0 for dynamic bodies; ignored otherwise
+    double mMass = 1.0; ///< Mass (kg), in [cMinBodyMass, cMaxBodyMass] for dynamic bodies; ignored otherwise
     Mat3 mInverseInertiaWorld = Mat3::Identity(); ///< Inverse inertia tensor about the centre of mass, world frame
                                                   ///< (1/(kg m^2)), symmetric positive semi-definite; ignored unless dynamic
     Transform mTransform;                       ///< Body frame (the frame of its mesh and FFD zones) to world
@@ -54,6 +54,7 @@ struct CRUMPLE_API BodyState
 /// Accepted ranges of a body state, far beyond any simulated vehicle or prop, and far enough inside the double
 /// range that impulses (at most about 1e28 N s) and the energies of dents (about 1e44 J) cannot overflow.
 constexpr double cMaxBodyMass = 1.0e12;       ///< kg
+constexpr double cMinBodyMass = 1.0e-12; ///< kg, of a dynamic body (a subnormal mass has an infinite inverse)
 constexpr double cMaxBodySpeed = 1.0e6;       ///< m/s, of the centre of mass
 constexpr double cMaxBodyAngularSpeed = 1.0e6; ///< rad/s
 constexpr double cMaxBodyPosition = 1.0e9;    ///< m, any coordinate of the centre of mass or the frame
