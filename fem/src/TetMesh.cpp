@@ -43,9 +43,16 @@ Result<TetMesh> TetMesh::Create(std::vector<Vec3> inRestPositions, std::vector<T
 
     // Finite node positions.
     for (int node = 0; node < node_count; ++node)
+    {
         if (!IsFinite(inRestPositions[node]))
             return MakeError(EError::NonFinite,
                              "TetMesh: node " + std::to_string(node) + " has a non-finite position");
+        // intent: the bound every solver state is held to (TetSolver::cMaxStateMagnitude); past it a volume
+        // overflows and the element was refused as degenerate
+        if (!(inRestPositions[node].cwiseAbs().maxCoeff() <= 1.0e100))
+            return MakeError(EError::OutOfRange,
+                             "TetMesh: node " + std::to_string(node) + " lies beyond 1e100 m");
+    }
 
     // Indices in range and distinct, then orientation and shape.
     std::vector<char> used(inRestPositions.size(), 0);

@@ -123,7 +123,20 @@ Result<TetSolver> TetSolver::Create(const TetMesh& inMesh, const FemMaterialSett
         return material.GetError();
     if (Status status = ValidateSettings(inSettings); status.HasError())
         return status.GetError();
-    return TetSolver(inMesh, material.Get(), inSettings);
+    TetSolver solver(inMesh, material.Get(), inSettings);
+    // intent: a mesh of 1e-104 m elements has subnormal node masses (infinite inverses) and one of 1e102 m
+    // elements masses near the double range: every step of either diverged to NaN. Such a body is refused
+    // here, naming the node, rather than made and never stepped.
+    for (std::size_t node = 0; node < solver.mMasses.size(); ++node)
+        if (!std::isnormal(solver.mMasses[node]) || !std::isfinite(solver.mInverseMasses[node]) ||
+            !(solver.mMasses[node] <= cMaxStateMagnitude))
+            return MakeError(
+                EError::DegenerateGeometry,
+                "TetSolver::Create: node " + std::to_string(node) + " has a mass of " +
+                    std::to_string(solver.mMasses[node]) +
+                    " kg, outside what a step can hold (its elements are too small or too large for "
+                    "the material's density)");
+    return solver;
 }
 
 TetSolver::TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial,

@@ -116,6 +116,29 @@ TEST_CASE("TetSolver::Create refuses bad material and settings, naming the field
     refused([](TetSolverSettings& s) { s.mGravity.z() = -1.0e150; }, "mGravity beyond 1e100");
     refused([](TetSolverSettings& s) { s.mPreconditioner = static_cast<EImplicitPreconditioner>(7); },
             "mPreconditioner");
+
+    // Meshes a step cannot hold (found by the same audit: accepted, then every step diverged to NaN): one
+    // element 1e-105 m across has subnormal node masses, one 1e40 m across (1e102 m in the audit) masses past
+    // what a step holds (1e100 kg), and
+    // a node beyond 1e100 m overflowed the volume and was refused as degenerate.
+    const auto one_tet = [](double inSize)
+    {
+        return TetMesh::Create(
+            {Vec3::Zero(), Vec3(inSize, 0.0, 0.0), Vec3(0.0, inSize, 0.0), Vec3(0.0, 0.0, inSize)},
+            {TetIndices{0, 1, 2, 3}});
+    };
+    for (const double size : {1.0e-105, 1.0e40})
+    {
+        INFO("an element " << size << " m across");
+        REQUIRE(one_tet(size));
+        const Result<TetSolver> solver =
+            TetSolver::Create(one_tet(size).Get(), FemMaterialSettings(), TetSolverSettings());
+        REQUIRE(solver.HasError());
+        CHECK(solver.GetError().mCode == EError::DegenerateGeometry);
+        CHECK(solver.GetError().mMessage.find("mass") != std::string::npos);
+    }
+    CHECK(TetSolver::Create(one_tet(1.0e-3).Get(), FemMaterialSettings(), TetSolverSettings()));
+    CHECK(one_tet(1.0e101).GetError().mCode == EError::OutOfRange);
 }
 
 TEST_CASE("TetSolver refuses bad input and changes nothing", "[fem]")
