@@ -292,6 +292,29 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
     // Zero controls move no vertex by even an ulp (FfdLattice), so the positions are the rest mesh as
     // copied above: only the normals need computing.
     deformer.RecomputeNormals();
+    // intent: a vertex whose triangles' normals cancel to within 1e-3 of their summed areas has no normal of
+    // its own (a double-sided sheet on shared vertices: its sum is round-off and points anywhere, and a
+    // renderer shades it as noise); it takes its largest triangle's, either side, as a surface facing one way
+    // would
+    bool any_sheet = false;
+    deformer.mSheetVertices.assign(vertex_count, 0);
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+    {
+        Vec3 sum = Vec3::Zero();
+        double area = 0.0;
+        for (std::uint32_t i = deformer.mVertexTriangleStart[v]; i < deformer.mVertexTriangleStart[v + 1];
+             ++i)
+        {
+            sum += deformer.mFaceNormals[deformer.mVertexTriangles[i]];
+            area += deformer.mFaceNormals[deformer.mVertexTriangles[i]].norm();
+        }
+        if (area > 0.0 && !(sum.norm() > 1.0e-3 * area))
+            deformer.mSheetVertices[v] = any_sheet = true;
+    }
+    if (any_sheet)
+        deformer.RecomputeNormals();
+    else
+        std::vector<std::uint8_t>().swap(deformer.mSheetVertices);
     deformer.mRestNormals = deformer.mNormals;
     std::fill(deformer.mDirty.begin(), deformer.mDirty.end(), std::uint8_t{0});
     deformer.mVertexEvaluations = 0;
@@ -793,6 +816,19 @@ Vec3 FfdDeformer::FaceNormal(std::uint32_t inTriangle) const
 
 Vec3 FfdDeformer::VertexNormal(std::uint32_t inVertex) const
 {
+    if (!mSheetVertices.empty() && mSheetVertices[inVertex] != 0)
+    {
+        // The largest triangle's normal, as it faces now; of two within round-off of each other (a sheet's
+        // two sides) the first in the mesh's order, so that a sheet faces one way throughout, not side by
+        // side at random.
+        Vec3 largest = Vec3::Zero();
+        for (std::uint32_t i = mVertexTriangleStart[inVertex]; i < mVertexTriangleStart[inVertex + 1]; ++i)
+            if (const Vec3& face = mFaceNormals[mVertexTriangles[i]];
+                face.squaredNorm() > (1.0 + 1.0e-6) * largest.squaredNorm())
+                largest = face;
+        const double length = largest.norm();
+        return length > 0.0 ? Vec3(largest / length) : Vec3::Zero();
+    }
     Vec3 sum = Vec3::Zero();
     for (std::uint32_t i = mVertexTriangleStart[inVertex]; i < mVertexTriangleStart[inVertex + 1]; ++i)
         sum += mFaceNormals[mVertexTriangles[i]];

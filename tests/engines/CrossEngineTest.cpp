@@ -200,8 +200,8 @@ TEST_CASE(
 {
     // (at 3 km/h the 60-degree wall is met at 0.42 m/s along its normal: resting, DamageWorldSettings::
     // mRestingSpeed, no impact)
-    for (const auto [km_h, angle] : {std::pair{3.0, 0.0}, std::pair{5.0, 0.0}, std::pair{10.0, 0.0},
-                                     std::pair{5.0, 60.0}, std::pair{10.0, 60.0}})
+    for (const auto& [km_h, angle] : {std::pair{3.0, 0.0}, std::pair{5.0, 0.0}, std::pair{10.0, 0.0},
+                                      std::pair{5.0, 60.0}, std::pair{10.0, 60.0}})
     {
         EngineCrashSettings low;
         low.mSpeed = km_h / 3.6;

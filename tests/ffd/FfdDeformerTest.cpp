@@ -713,3 +713,61 @@ TEST_CASE("A recompute that turns a rest coordinate's -0.0 into +0.0 marks the v
         CHECK(SameBytes(published.GetNormals(), plain.GetNormals()));
     }
 }
+
+TEST_CASE("A double-sided sheet on shared vertices faces one way, dented or not; other vertices keep the "
+          "area-weighted normal",
+          "[ffd]")
+{
+    // A 2 m square sheet in z = 0, off the binary grid (its two sides' normals cancel to round-off, as a
+    // modelled mesh's do), every triangle also the other way round on the same vertices, the +z side first.
+    // The sum of a vertex's triangles' normals points anywhere there (a renderer shaded it as noise); its
+    // largest triangle's, the first of the two sides, faces +z.
+    TriangleMesh sheet;
+    const int cells = 10;
+    const auto index = [](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i)
+            sheet.mPositions.emplace_back(0.2 * i + 1.0e-3 * std::sin(1.7 * i + 2.3 * j),
+                                          0.2 * j + 1.0e-3 * std::cos(0.9 * i - 1.3 * j),
+                                          1.0e-3 * std::sin(0.7 * i * j));
+    std::vector<std::array<std::uint32_t, 3>> front, back;
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i)
+        {
+            front.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+            front.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+        }
+    for (const auto& t : front)
+        back.push_back({t[2], t[1], t[0]});
+    sheet.mTriangles = front;
+    sheet.mTriangles.insert(sheet.mTriangles.end(), back.begin(), back.end());
+    FfdDeformerSettings settings;
+    settings.mZones.push_back(plugin::FitZoneToMesh(sheet, {8, 8, 4}, 0.5));
+    FfdDeformer deformer = FfdDeformer::Create(sheet, settings).Get();
+    const auto all_face_up = [&](const char* inWhen)
+    {
+        int down = 0;
+        for (const Vec3& n : deformer.GetNormals())
+            down += n.z() > 0.9 ? 0 : 1;
+        INFO(inWhen << ": " << down << " of " << deformer.GetNormals().size() << " normals not facing +z");
+        CHECK(down == 0);
+    };
+    all_face_up("at rest");
+    // A gentle dent (2 cm over the middle) keeps the sheet facing up.
+    REQUIRE(deformer.ApplyDent(std::vector<PointDisplacement>{{Vec3(1.0, 1.0, 0.0), Vec3(0.0, 0.0, -0.02)}}));
+    all_face_up("dented");
+
+    // The single-sided sheet keeps the area-weighted normal, bit for bit as before: no vertex is a sheet's.
+    TriangleMesh single = sheet;
+    single.mTriangles = front;
+    const FfdDeformer one_side = FfdDeformer::Create(single, settings).Get();
+    for (std::uint32_t v = 0; v < single.mPositions.size(); ++v)
+    {
+        Vec3 sum = Vec3::Zero();
+        for (const auto& t : single.mTriangles)
+            if (t[0] == v || t[1] == v || t[2] == v)
+                sum += (single.mPositions[t[1]] - single.mPositions[t[0]])
+                           .cross(single.mPositions[t[2]] - single.mPositions[t[0]]);
+        CHECK((one_side.GetNormals()[v] - sum.normalized()).norm() < 1.0e-12);
+    }
+}

@@ -203,6 +203,10 @@ private:
     std::vector<std::vector<std::uint8_t>> mControlReaches; ///< Per zone, per control: 1 when it moves a vertex
     std::vector<std::uint32_t> mVertexTriangleStart;       ///< CSR offsets, #V + 1
     std::vector<std::uint32_t> mVertexTriangles;           ///< Triangles around each vertex
+    /// #V, or empty where there is none: 1 where the vertex's triangles' rest normals cancel (both sides of a
+    /// double-sided sheet on the same vertices): such a vertex takes its largest triangle's normal, not the
+    /// round-off of their sum
+    std::vector<std::uint8_t> mSheetVertices;
 
     // Scratch, all zero (marks) or empty between calls.
     std::vector<int> mTouchedCells;         ///< The cells a change reaches (TouchCells), ascending
