@@ -72,25 +72,4 @@ int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPos
     return folded;
 }
 
-std::vector<Vec3> SheetSafeNormals(const ffd::TriangleMesh& inRest, std::vector<Vec3> inNormals)
-{
-    if (inNormals.size() != inRest.mPositions.size())
-        return inNormals;
-    std::vector<Vec3> sum;
-    std::vector<double> area;
-    SumFaceNormals(inRest, inRest.mPositions, sum, &area);
-    std::vector<Vec3> largest(inNormals.size(), Vec3::Zero());
-    for (const auto& triangle : inRest.mTriangles)
-    {
-        const Vec3 normal = FaceNormal(inRest.mPositions, triangle);
-        for (std::uint32_t v : triangle)
-            if (normal.squaredNorm() > largest[v].squaredNorm())
-                largest[v] = normal;
-    }
-    for (std::size_t vertex = 0; vertex < inNormals.size(); ++vertex)
-        if (IsSheetVertex(sum[vertex], area[vertex]) && !largest[vertex].isZero(0.0))
-            inNormals[vertex] = largest[vertex].normalized();
-    return inNormals;
-}
-
 } // namespace crumple::common

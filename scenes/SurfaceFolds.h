@@ -5,7 +5,6 @@
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <span>
-#include <vector>
 
 namespace crumple::common
 {
@@ -27,11 +26,5 @@ int FoldedVertices(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPosi
 /// fold of the surface itself. Triangles of zero rest area are skipped. Unlike FoldedVertices it does not
 /// count a vertex on a sharp ridge whose averaged normal tips over when the crush compacts the ridge.
 int FoldedTriangles(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
-
-/// inNormals (unit vertex normals of inRest, e.g. a deformer's at rest) with each vertex whose area-weighted
-/// normal is round-off (cSheetCancellation) given the unit normal of its largest triangle instead, either
-/// side: which way the surface there faces, for tests that take either winding. Other vertices keep
-/// theirs bit for bit; inNormals of another length than the mesh's are returned as they are.
-std::vector<Vec3> SheetSafeNormals(const ffd::TriangleMesh& inRest, std::vector<Vec3> inNormals);
 
 } // namespace crumple::common

@@ -132,24 +132,6 @@ TEST_CASE("Folds: a double-sided sheet on shared vertices has no vertex normals 
     CHECK(FoldedTriangles(sheet, FoldedOver(sheet)) >= 2 * 3 * 7 * 2);
 }
 
-TEST_CASE("Folds: sheet-safe normals face the way the sheet does and leave other vertices bit for bit",
-          "[crash][folds]")
-{
-    const ffd::TriangleMesh single = Sheet(4, false);
-    const std::vector<Vec3> normals = UnitNormals(single);
-    const std::vector<Vec3> kept = SheetSafeNormals(single, normals);
-    REQUIRE(kept.size() == normals.size());
-    for (std::size_t v = 0; v < normals.size(); ++v)
-        CHECK(kept[v] == normals[v]);
-
-    const ffd::TriangleMesh both = Sheet(4, true);
-    const std::vector<Vec3> repaired = SheetSafeNormals(both, UnitNormals(both));
-    for (const Vec3& n : repaired)
-        CHECK(std::abs(std::abs(n.z()) - 1.0) < 1e-12); // either side of z = 0
-    // Normals of another length are handed back as they are.
-    CHECK(SheetSafeNormals(both, {Vec3::UnitX()}).size() == 1);
-}
-
 TEST_CASE("Folds: a crash of a double-sided car mesh folds no vertex and crushes as the single-sided one",
           "[crash][folds]")
 {

@@ -357,9 +357,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         // the body frame as the car met it (the dents are planned in the body frame at the collision).
         const double angle = inTarget.mAngleDegrees * std::numbers::pi / 180.0;
         const Vec3 into_wall(std::cos(angle), std::sin(angle), 0.0);
-        outcome.mWallGap = MeasureWallGap(
-            outcome.mRestMesh, common::SheetSafeNormals(outcome.mRestMesh, outcome.mRestNormals),
-            outcome.mPositions, outcome.mStartTransform.DirectionToBody(into_wall));
+        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
+                                          outcome.mStartTransform.DirectionToBody(into_wall));
     }
     if (inTarget.mType == ETarget::OffsetWall)
     {
@@ -370,9 +369,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         const WallReach reach{start.DirectionToBody(Vec3::UnitY()), common::CrashWallLeftEdge(inSettings) +
                                                                         cWallEdgeMargin -
                                                                         start.mTranslation.y()};
-        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh,
-                                          common::SheetSafeNormals(outcome.mRestMesh, outcome.mRestNormals),
-                                          outcome.mPositions, start.DirectionToBody(Vec3::UnitX()), &reach);
+        outcome.mWallGap = MeasureWallGap(outcome.mRestMesh, outcome.mRestNormals, outcome.mPositions,
+                                          start.DirectionToBody(Vec3::UnitX()), &reach);
     }
     if (scene.GetTargetObject().IsValid())
     {
