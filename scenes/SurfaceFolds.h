@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/ffd/FfdDeformer.h>
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <span>
@@ -9,10 +10,9 @@
 namespace crumple::common
 {
 
-/// A vertex's area-weighted normal is its own only when its triangles do not cancel: below this fraction of
-/// their summed areas the sum is round-off (a double-sided sheet whose two sides share vertices, a sheet
-/// folded flat onto itself) and points anywhere.
-inline constexpr double cSheetCancellation = 1.0e-3;
+/// Below this fraction of their summed areas a vertex's triangles' normals cancel: the rule the deformer's
+/// own normals follow (ffd::cSheetCancellation), read here so that the two agree.
+inline constexpr double cSheetCancellation = ffd::cSheetCancellation;
 
 /// Vertices whose normal now points against their rest normal (area-weighted over the vertex's triangles,
 /// at rest and at inPositions; dot < 0): the surface has folded over there. A sliver triangle that a smooth

@@ -308,7 +308,7 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
             sum += deformer.mFaceNormals[deformer.mVertexTriangles[i]];
             area += deformer.mFaceNormals[deformer.mVertexTriangles[i]].norm();
         }
-        if (area > 0.0 && !(sum.norm() > 1.0e-3 * area))
+        if (area > 0.0 && !(sum.norm() > cSheetCancellation * area))
             deformer.mSheetVertices[v] = any_sheet = true;
     }
     if (any_sheet)

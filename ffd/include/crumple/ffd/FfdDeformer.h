@@ -26,6 +26,11 @@
 namespace crumple::ffd
 {
 
+/// A vertex whose triangles' normals cancel to within this fraction of their summed areas has no normal of
+/// its own (both sides of a double-sided sheet on the same vertices: the sum is round-off and points
+/// anywhere): FfdDeformer gives it its largest triangle's.
+inline constexpr double cSheetCancellation = 1.0e-3;
+
 class CellSurfaceIndex;
 
 /// Dents a render mesh through one or more FFD zones by direct manipulation (D4MD section 6.2).
