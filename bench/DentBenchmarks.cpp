@@ -165,15 +165,16 @@ void ApplyCase(BenchTable& ioTable, const std::string& inBenchmark, int inTriang
     const Collision collision = MakeFrontCollision(inContacts);
     DeformableObject car = pristine;
     DeformableObject full = pristine;
-    full.ApplyCollision(collision, ECollisionSide::B);
+    full.ApplyCollision(collision, ECollisionSide::B).Get();
     VertexFloor floor(pristine, full);
     ffd::DentReport report;
     // The incremental dent, a full recompute of the mesh after the same dent and the memory floor of the
     // vertices it changed, interleaved.
     const std::vector<Timing> timing = InterleavedMedians(
-        inRepetitions, {{[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }},
-                        {[] {}, [&] { full.GetDeformer().RecomputeAll(); }},
-                        {[] {}, [&] { floor.Run(); }}});
+        inRepetitions,
+        {{[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B).Get(); }},
+         {[] {}, [&] { full.GetDeformer().RecomputeAll(); }},
+         {[] {}, [&] { floor.Run(); }}});
     // A case that dents nothing times an early return, not a dent: refuse to print it.
     if (report.mVerticesMoved == 0)
         throw std::runtime_error("dent benchmark " + inBenchmark + ": the collision moved no vertex");
@@ -221,12 +222,14 @@ void ThreadsCase(BenchTable& ioTable, int inTriangles, int inControls, int inCon
     DeformableObject alone = pristine, split = pristine;
     ffd::DentReport report;
     const std::vector<Timing> timing = InterleavedMedians(
-        inRepetitions, {{[&] { alone = pristine; }, [&] { report = alone.ApplyCollision(collision, ECollisionSide::B); }},
-                        {[&] {
+        inRepetitions, {{[&] { alone = pristine; },
+                         [&] { report = alone.ApplyCollision(collision, ECollisionSide::B).Get(); }},
+                        {[&]
+                         {
                              split = pristine;
                              split.GetDeformer().SetJobSystem(&two.Get());
                          },
-                         [&] { split.ApplyCollision(collision, ECollisionSide::B); }}});
+                         [&] { split.ApplyCollision(collision, ECollisionSide::B).Get(); }}});
     // The split dent must be the same bytes, or the timing compares different work.
     const bool same = alone.GetDeformer().GetPositions() == split.GetDeformer().GetPositions() &&
                       alone.GetDeformer().GetNormals() == split.GetDeformer().GetNormals();
@@ -251,9 +254,10 @@ void ScalingCase(BenchTable& ioTable, int inSmall, int inLarge, int inRepetition
     DeformableObject small = small_pristine, large = large_pristine;
     ffd::DentReport small_report, large_report;
     const std::vector<Timing> timing = InterleavedMedians(
-        inRepetitions,
-        {{[&] { small = small_pristine; }, [&] { small_report = small.ApplyCollision(collision, ECollisionSide::B); }},
-         {[&] { large = large_pristine; }, [&] { large_report = large.ApplyCollision(collision, ECollisionSide::B); }}});
+        inRepetitions, {{[&] { small = small_pristine; },
+                         [&] { small_report = small.ApplyCollision(collision, ECollisionSide::B).Get(); }},
+                        {[&] { large = large_pristine; },
+                         [&] { large_report = large.ApplyCollision(collision, ECollisionSide::B).Get(); }}});
     if (small_report.mVerticesMoved == 0 || large_report.mVerticesMoved == 0)
         throw std::runtime_error("dent_scaling: the collision moved no vertex");
     const double small_per_vertex = timing[0].mCpuMs / small_report.mVerticesMoved;
@@ -291,11 +295,13 @@ void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWa
     const std::vector<Timing> timing = InterleavedMedians(
         inRepetitions,
         {{[] {},
-          [&] {
+          [&]
+          {
               plan = PlanCampbellCrush(collision, ECollisionSide::B, collision.mCrushEnergyB, pristine.GetMaterial(),
                                        pristine.GetUpAxis(), pristine.GetDeformer(), &pristine.GetCrushBody());
           }},
-         {[&] { car = pristine; }, [&] { report = car.ApplyCollision(collision, ECollisionSide::B); }}});
+         {[&] { car = pristine; },
+          [&] { report = car.ApplyCollision(collision, ECollisionSide::B).Get(); }}});
     if (!plan)
         throw std::runtime_error("crush_plan: the collision planned no crush");
     const double width = inWallFace ? 2.0 * cHalfExtents.y() : plan->mWidth;

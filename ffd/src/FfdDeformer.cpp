@@ -351,8 +351,9 @@ Result<DentReport> FfdDeformer::ApplyDent(std::span<const PointDisplacement> inP
         if (!(inPoints[i].mDisplacement.cwiseAbs().maxCoeff() <= cMaxMeshCoordinate))
             return MakeError(EError::OutOfRange, "ApplyDent: point " + std::to_string(i) + " moves further than 1e6 m");
     }
-    if (!(inMaxStep >= 0.0))
-        return MakeError(EError::InvalidArgument, "ApplyDent: the maximum step must be >= 0 m");
+    if (!(inMaxStep >= 0.0)) // +inf: no bound
+        return MakeError(std::isnan(inMaxStep) ? EError::NonFinite : EError::InvalidArgument,
+                         "ApplyDent: the maximum step must be >= 0 m (or +inf)");
 
     DentReport report;
     const bool any_motion = std::any_of(inPoints.begin(), inPoints.end(),
@@ -1025,7 +1026,8 @@ Status FfdDeformer::ValidateControlDisplacements(std::span<const std::vector<Vec
         for (std::size_t c = 0; c < inPerZone[z].size(); ++c)
         {
             if (!IsFinite(inPerZone[z][c]))
-                return MakeError(EError::InvalidArgument, "zone " + std::to_string(z) + ": a control displacement is not finite");
+                return MakeError(EError::NonFinite,
+                                 "zone " + std::to_string(z) + ": a control displacement is not finite");
             // A dent never stores a value in a control that reaches no vertex: a state with one was not
             // written by this library (and would steer later crushes from a control that moves nothing).
             if (mControlReaches[z][c] == 0 && !inPerZone[z][c].isZero(0.0))

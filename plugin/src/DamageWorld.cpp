@@ -33,6 +33,14 @@ ShapeBox ShapeBoxIn(const BodyState& inOf, const BodyState& inIn)
     return box;
 }
 
+// The dent of a collision this world grouped: its contacts were validated on submission and its impulses and
+// energies come from bodies within BodyState's ranges, so DeformableObject::ApplyCollision cannot refuse it.
+ffd::DentReport DispatchedDent(const Result<ffd::DentReport>& inDent)
+{
+    CRUMPLE_ASSERT(inDent.IsValid(), "a collision the world grouped was refused");
+    return inDent ? inDent.Get() : ffd::DentReport{};
+}
+
 } // namespace
 
 Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettings& inSettings)
@@ -72,7 +80,8 @@ void DamageWorld::RunDeferredDents(void* inInFlight)
     auto* flight = static_cast<InFlight*>(inInFlight);
     for (std::size_t i = 0; i < flight->mCollisions.size(); ++i)
         for (const DentTarget& target : flight->mTargets[i])
-            flight->mDents[i].push_back({target.mObject, target.mDeformable->ApplyCollision(flight->mCollisions[i], target.mSide)});
+            flight->mDents[i].push_back({target.mObject, DispatchedDent(target.mDeformable->ApplyCollision(
+                                                             flight->mCollisions[i], target.mSide))});
 }
 
 void DamageWorld::Land()
@@ -285,7 +294,8 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
         !IsFinite(inContact.mPenetrationDepth) || !IsFinite(inContact.mTime))
         return MakeError(EError::NonFinite, where() + "has a NaN or Inf field");
     if (!(inContact.mFriction >= 0.0)) // NaN too; +inf is a surface that never slides
-        return MakeError(EError::InvalidArgument, where() + "mFriction must be >= 0 (or +inf)");
+        return MakeError(std::isnan(inContact.mFriction) ? EError::NonFinite : EError::InvalidArgument,
+                         where() + "mFriction must be >= 0 (or +inf)");
     if (std::abs(inContact.mNormal.norm() - 1.0) > 1.0e-3)
         return MakeError(EError::InvalidArgument, where() + "mNormal must be a unit vector");
     // Within twice the bodies' range (BodyState.h), so lever arms and impulses stay far from overflow.
@@ -312,7 +322,8 @@ DamageWorld::ImpactMemory* DamageWorld::FindImpactMemory(BodyId inA, BodyId inB)
 Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep)
 {
     if (!(std::isfinite(inTimeStep) && inTimeStep >= 0.0))
-        return MakeError(EError::InvalidArgument, "SubmitContacts: the time step must be finite and >= 0 s");
+        return MakeError(std::isfinite(inTimeStep) ? EError::InvalidArgument : EError::NonFinite,
+                         "SubmitContacts: the time step must be finite and >= 0 s");
     // Validate everything first: a refused batch changes nothing.
     for (std::size_t i = 0; i < inContacts.size(); ++i)
         if (Status valid = ValidateContact(inContacts[i], i); !valid)
@@ -543,7 +554,8 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ObjectId id : mBodies[body.mValue].mObjects)
             {
-                const ffd::DentReport dent = mObjects[id.mValue].mObject.front().ApplyCollision(collision, side);
+                const ffd::DentReport dent =
+                    DispatchedDent(mObjects[id.mValue].mObject.front().ApplyCollision(collision, side));
                 report.mVerticesMoved += dent.mVerticesMoved;
                 if (dent.mVerticesMoved > 0)
                     ++report.mObjectsDented;

@@ -1,6 +1,5 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include <crumple/base/Assert.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/InterpolateWideImpact.h>
 #include <crumple/plugin/CampbellCrush.h>
@@ -132,14 +131,19 @@ std::vector<ffd::PointDisplacement> DeformableObject::DentFor(const Collision& i
     return dent;
 }
 
-ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, ECollisionSide inSide)
+Result<ffd::DentReport> DeformableObject::ApplyCollision(const Collision& inCollision, ECollisionSide inSide)
 {
+    if (inSide != ECollisionSide::A && inSide != ECollisionSide::B)
+        return MakeError(EError::InvalidArgument,
+                         "DeformableObject::ApplyCollision: the side is not an ECollisionSide value");
+    if (Status valid = ValidateCollision(inCollision); !valid)
+        return valid.GetError();
     if (mMaterial.mModel == ECrushModel::Campbell)
     {
         const double energy = inSide == ECollisionSide::A ? inCollision.mCrushEnergyA : inCollision.mCrushEnergyB;
         const std::optional<CrushPlan> plan = PlanCampbellCrush(inCollision, inSide, energy, mMaterial, mUp, mDeformer, &mCrushBody);
         if (!plan)
-            return {};
+            return ffd::DentReport{};
         ffd::DentReport report = ApplyCrushPlan(*plan, mMaterial.mMaxInstantDeformation, mDeformer);
         report.mContactsClamped = plan->mClamped ? 1 : 0;
         report.mStackedUp = plan->mStackedUp ? 1 : 0;
@@ -148,14 +152,13 @@ ffd::DentReport DeformableObject::ApplyCollision(const Collision& inCollision, E
     int clamped = 0;
     const std::vector<ffd::PointDisplacement> dent = DentFor(inCollision, inSide, &clamped);
     if (dent.empty())
-        return {};
-    // Collisions are validated when their contacts are submitted, so the dent is finite.
+        return ffd::DentReport{};
+    // The collision is finite and bounded, so the dent is (ApplyDent checks it again and refuses the whole
+    // dent).
     Result<ffd::DentReport> report = mDeformer.ApplyDent(dent, mMaterial.mMaxInstantDeformation);
-    CRUMPLE_ASSERT(report.IsValid(), "a validated collision produced a non-finite dent");
-    if (!report)
-        return {};
-    report.Get().mContactsClamped = clamped;
-    return report.Get();
+    if (report)
+        report.Get().mContactsClamped = clamped;
+    return report;
 }
 
 } // namespace crumple::plugin

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/base/Assert.h>
 #include <crumple/plugin/ReplayDamage.h>
 
 #include <algorithm>
@@ -35,27 +36,40 @@ Result<std::vector<ReplayedObject>> CreateReplayedObjects(const Replay& inReplay
     return objects;
 }
 
-void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
-                             const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision)
+Status ApplyReplayedCollisions(
+    const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
+    const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision)
 {
+    // intent: all refused before any is applied, so a bad replay changes no object
+    for (std::size_t index = 0; index < inReplay.mCollisions.size(); ++index)
+        if (Status valid = ValidateCollision(inReplay.mCollisions[index]); !valid)
+            return MakeError(valid.GetError().mCode, "replayed collision " + std::to_string(index) + ": " +
+                                                         valid.GetError().mMessage);
     for (std::size_t index = 0; index < inReplay.mCollisions.size(); ++index)
     {
         const Collision& collision = inReplay.mCollisions[index];
         for (const auto& [body, side] : {std::pair{collision.mBodyA, ECollisionSide::A}, std::pair{collision.mBodyB, ECollisionSide::B}})
             for (ReplayedObject& object : ioObjects)
                 if (object.mBody == body && index >= object.mFirstCollision)
-                    object.mDeformable.ApplyCollision(collision, side);
+                {
+                    // Validated above: the dent cannot be refused.
+                    const Result<ffd::DentReport> dent = object.mDeformable.ApplyCollision(collision, side);
+                    CRUMPLE_ASSERT(dent.IsValid(), "a validated collision was refused");
+                }
         if (inAfterCollision)
             inAfterCollision(index, ioObjects);
     }
+    return Status::Ok();
 }
 
 Result<std::vector<ReplayedObject>> ReplayDamage(
     const Replay& inReplay, const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision)
 {
     Result<std::vector<ReplayedObject>> objects = CreateReplayedObjects(inReplay);
-    if (objects)
-        ApplyReplayedCollisions(inReplay, objects.Get(), inAfterCollision);
+    if (!objects)
+        return objects;
+    if (Status applied = ApplyReplayedCollisions(inReplay, objects.Get(), inAfterCollision); !applied)
+        return applied.GetError();
     return objects;
 }
 

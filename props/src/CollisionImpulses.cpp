@@ -61,8 +61,9 @@ std::vector<std::pair<int, double>> FootprintShares(const Vec3& inPoint, std::sp
 Status CheckContactSpreadRadius(double inRadius, const char* inWho)
 {
     if (!std::isfinite(inRadius) || inRadius < 0.0)
-        return MakeError(EError::InvalidArgument,
-                         std::string(inWho) + ": the contact spread radius must be finite and >= 0 m, not " + std::to_string(inRadius));
+        return MakeError(std::isfinite(inRadius) ? EError::InvalidArgument : EError::NonFinite,
+                         std::string(inWho) + ": the contact spread radius must be finite and >= 0 m, not " +
+                             std::to_string(inRadius));
     return Status::Ok();
 }
 

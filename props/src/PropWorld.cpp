@@ -47,8 +47,8 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
 {
     WaitForStep(); // intent: the list of props may grow (move) only while no task steps them
     if (mWorld->GetBodyState(inBody) == nullptr)
-        return MakeError(EError::InvalidArgument,
-                         "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " is not in the world");
+        return MakeError(EError::OutOfRange, "PropWorld::AddProp: body " + std::to_string(inBody.mValue) +
+                                                 " is not in the world");
     if (FindProp(inBody).IsValid())
         return MakeError(EError::InvalidArgument,
                          "PropWorld::AddProp: body " + std::to_string(inBody.mValue) + " already has a prop");
@@ -465,7 +465,8 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     if (Status valid = ValidateShapeQuery(inProp, inCellSize, "TakeChangedShape"); !valid)
         return valid.GetError();
     if (!std::isfinite(inTolerance) || !(inTolerance >= 0.0))
-        return MakeError(EError::InvalidArgument, "PropWorld::TakeChangedShape: the tolerance must be finite and >= 0 m");
+        return MakeError(std::isfinite(inTolerance) ? EError::InvalidArgument : EError::NonFinite,
+                         "PropWorld::TakeChangedShape: the tolerance must be finite and >= 0 m");
     WaitForStep();
     // intent: the positions read once; the pieces built only when the shape changed (called every step)
     Prop& prop = mProps[inProp.mValue];

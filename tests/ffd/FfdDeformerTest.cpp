@@ -284,6 +284,16 @@ TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
         CHECK(report.GetError().mMessage.find("point 2") != std::string::npos);
         CHECK(SameBytes(deformer.GetPositions(), positions));
         CHECK(SameBytes(deformer.GetZones()[0].GetControlDisplacements(), controls));
+        // The step bound: NaN is a diverged caller, a negative one a wrong call, +inf no bound.
+        CHECK(deformer.ApplyDent(FrontDent(0.05), nan).GetError().mCode == EError::NonFinite);
+        CHECK(deformer.ApplyDent(FrontDent(0.05), -0.1).GetError().mCode == EError::InvalidArgument);
+        CHECK(SameBytes(deformer.GetPositions(), positions));
+        // A control state with a NaN.
+        std::vector<std::vector<Vec3>> state{controls};
+        state[0][state[0].size() / 2].x() = nan;
+        CHECK(deformer.SetControlDisplacements(state).GetError().mCode == EError::NonFinite);
+        CHECK(SameBytes(deformer.GetPositions(), positions));
+        CHECK(SameBytes(deformer.GetZones()[0].GetControlDisplacements(), controls));
     }
     SECTION("a mesh index out of range")
     {

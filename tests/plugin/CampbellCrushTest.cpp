@@ -686,7 +686,7 @@ TEST_CASE("Stress: random slanted and rounded fronts, directions, energies and m
             widened += plan && plan->mWidth > CrushWidth(collision, ECollisionSide::A, object.GetUpAxis(),
                                                          object.GetMaterial().mMinCrushWidth) + 1.0e-9 ? 1 : 0;
         }
-        const ffd::DentReport report = object.ApplyCollision(collision, ECollisionSide::A);
+        const ffd::DentReport report = object.ApplyCollision(collision, ECollisionSide::A).Get();
         stacked += report.mStackedUp;
 
         const std::vector<Vec3>& now = object.GetDeformer().GetPositions();

@@ -155,6 +155,14 @@ TEST_CASE("DamageWorld refuses bad contacts whole and changes nothing", "[plugin
         batch[0].mTime = std::numeric_limits<double>::infinity();
         CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::NonFinite);
     }
+    SECTION("a NaN, infinite or negative time step")
+    {
+        CHECK(fixture.mWorld.SubmitContacts(batch, nan).GetError().mCode == EError::NonFinite);
+        CHECK(
+            fixture.mWorld.SubmitContacts(batch, std::numeric_limits<double>::infinity()).GetError().mCode ==
+            EError::NonFinite);
+        CHECK(fixture.mWorld.SubmitContacts(batch, -1.0).GetError().mCode == EError::InvalidArgument);
+    }
     SECTION("an unknown body")
     {
         batch[1].mBodyB = BodyId{99};
@@ -178,7 +186,7 @@ TEST_CASE("DamageWorld refuses bad contacts whole and changes nothing", "[plugin
         CHECK(negative.GetError().mCode == EError::InvalidArgument);
         CHECK(negative.GetError().mMessage.find("mFriction") != std::string::npos);
         batch[1].mFriction = nan;
-        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::InvalidArgument);
+        CHECK(fixture.mWorld.SubmitContacts(batch).GetError().mCode == EError::NonFinite);
     }
     CHECK(fixture.mWorld.GetOpenCollisionCount() == 0);
     CHECK(fixture.mWorld.Flush().mCollisionsDispatched == 0);

@@ -113,8 +113,8 @@ TEST_CASE("Dent depth does not depend on how many points report the same impact"
     for (int i = 0; i < 4; ++i)
         for (int k = 0; k < 4; ++k)
             grid.push_back({Vec3(2.1, -0.6 + 0.4 * i, -0.4 + 0.8 * k / 3.0), 9000.0 / 16.0});
-    four.ApplyCollision(FrontCollision(corners), ECollisionSide::B);
-    sixteen.ApplyCollision(FrontCollision(grid), ECollisionSide::B);
+    REQUIRE(four.ApplyCollision(FrontCollision(corners), ECollisionSide::B).IsValid());
+    REQUIRE(sixteen.ApplyCollision(FrontCollision(grid), ECollisionSide::B).IsValid());
     const auto& rest = four.GetDeformer().GetRestMesh().mPositions;
     double max_four = 0.0, max_sixteen = 0.0;
     for (std::size_t v = 0; v < rest.size(); ++v)
@@ -138,8 +138,8 @@ TEST_CASE("A wide impact makes one coherent dent", "[plugin]")
                                          {Vec3(2.1, -0.6, 0.4), 1000.0}, {Vec3(2.1, 0.6, 0.4), 1000.0}});
     DeformableObject coherent = MakeCar(material, true, {16, 16, 16});
     DeformableObject spiky = MakeCar(material, false, {16, 16, 16});
-    coherent.ApplyCollision(corners, ECollisionSide::B);
-    spiky.ApplyCollision(corners, ECollisionSide::B);
+    REQUIRE(coherent.ApplyCollision(corners, ECollisionSide::B).IsValid());
+    REQUIRE(spiky.ApplyCollision(corners, ECollisionSide::B).IsValid());
     auto centre_depth = [](const DeformableObject& inObject) {
         const ffd::FfdLattice& zone = inObject.GetDeformer().GetZones()[0];
         return -zone.Displacement(zone.Locate(zone.LatticeCoordinate(Vec3(2.1, 0.0, 0.0)))).x();
@@ -157,10 +157,12 @@ TEST_CASE("A dent the material's maximum clamps is reported as limited", "[plugi
     // 2,000 N s asks for 0.02 m: within the bound. 20,000 N s asks for 0.2 m: clamped to 0.05 m.
     DeformableObject soft = MakeCar(material);
     DeformableObject hard = MakeCar(material);
-    const ffd::DentReport within = soft.ApplyCollision(FrontCollision({{Vec3(2.1, 0.0, 0.0), 2000.0}}), ECollisionSide::B);
+    const ffd::DentReport within =
+        soft.ApplyCollision(FrontCollision({{Vec3(2.1, 0.0, 0.0), 2000.0}}), ECollisionSide::B).Get();
     const ffd::DentReport clamped =
         hard.ApplyCollision(FrontCollision({{Vec3(2.1, 0.0, 0.0), 15000.0}, {Vec3(2.1, 0.3, 0.0), 5000.0}}),
-                            ECollisionSide::B);
+                            ECollisionSide::B)
+            .Get();
     REQUIRE(within.mPointsApplied > 0); // both dents happened
     REQUIRE(clamped.mPointsApplied > 0);
     CHECK(within.mContactsClamped == 0);

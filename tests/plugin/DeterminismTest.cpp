@@ -85,7 +85,11 @@ TEST_CASE("Replaying dispatched collisions on fresh objects reproduces the live 
     // A copy of the fresh world's car, dented by hand outside any world.
     DeformableObject replayed = *fresh.GetWorld().GetObject(fresh.GetCarObject());
     for (const Collision& collision : recorder.mCollisions)
-        replayed.ApplyCollision(collision, collision.mBodyA == fresh.GetCar() ? ECollisionSide::A : ECollisionSide::B);
+        // (Every collision the world dispatched passes ValidateCollision, which ApplyCollision runs first.)
+        REQUIRE(replayed
+                    .ApplyCollision(collision, collision.mBodyA == fresh.GetCar() ? ECollisionSide::A
+                                                                                  : ECollisionSide::B)
+                    .IsValid());
     CHECK(SameBytes(replayed.GetDeformer().GetPositions(),
                     live.GetWorld().GetObject(live.GetCarObject())->GetDeformer().GetPositions()));
 }

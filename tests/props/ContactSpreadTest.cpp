@@ -213,7 +213,10 @@ TEST_CASE("A bad contact spread is refused and changes nothing", "[props]")
     REQUIRE(prop.Get().SetContactSpread(0.3).IsValid());
     for (double radius : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     {
-        CHECK(prop.Get().SetContactSpread(radius).HasError());
+        const Status refused = prop.Get().SetContactSpread(radius);
+        REQUIRE(refused.HasError());
+        CHECK(refused.GetError().mCode ==
+              (std::isfinite(radius) ? EError::InvalidArgument : EError::NonFinite));
         CHECK(prop.Get().GetContactSpread() == 0.3);
     }
 }

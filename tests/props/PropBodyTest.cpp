@@ -215,7 +215,9 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::BrittlePanel({1, 8, 8}, 1.0e9, 0.1)).Get();
     CHECK(props->GetCollisionPieces(PropId{7}, 0.25).HasError());
-    CHECK(props->TakeChangedShape(wall, 0.25, -1.0).HasError());
+    CHECK(props->TakeChangedShape(wall, 0.25, -1.0).GetError().mCode == EError::InvalidArgument);
+    CHECK(props->TakeChangedShape(wall, 0.25, std::numeric_limits<double>::quiet_NaN()).GetError().mCode ==
+          EError::NonFinite);
     // The first call gives the shape; with nothing moved, the next gives nothing.
     const std::optional<std::vector<std::vector<Vec3>>> first = props->TakeChangedShape(wall, 0.25, 0.01).Get();
     REQUIRE(first);

@@ -265,7 +265,7 @@ TEST_CASE("PropWorld refuses an unknown body, a second prop on a body and a bad 
 {
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    CHECK(props->AddProp(BodyId{999}, Panel(false)).HasError());
+    CHECK(props->AddProp(BodyId{999}, Panel(false)).GetError().mCode == EError::OutOfRange);
     REQUIRE(props->AddProp(fixture.mWall, Panel(false)).IsValid());
     CHECK(props->AddProp(fixture.mWall, Panel(false)).HasError());
     CHECK(props->GetPropCount() == 1);

@@ -5,6 +5,7 @@
 #include <crumple/base/Export.h>
 
 #include <crumple/base/Math.h>
+#include <crumple/base/Result.h>
 #include <crumple/plugin/Ids.h>
 
 #include <array>
@@ -106,5 +107,20 @@ struct CRUMPLE_API Collision
         return total;
     }
 };
+
+/// What a collision can hold: bodies within BodyState's ranges give impulses of at most about 1e28 N s and
+/// energies of about 1e44 J; the bounds leave room above those and keep sums over a collision's contacts
+/// finite.
+inline constexpr double cMaxCollisionImpulse = 1.0e30; ///< N s
+inline constexpr double cMaxCollisionEnergy = 1.0e50;  ///< J
+/// Shape boxes within BodyState's ranges, seen from a body within them, lie within a few 1e9 m.
+inline constexpr double cMaxShapeBoxCoordinate = 1.0e10; ///< m
+
+/// Checks a collision made outside a DamageWorld (by hand, or read from a file) before it dents anything:
+/// every field finite (else EError::NonFinite), impulses, absorbed and crush energies >= 0 and friction
+/// coefficients >= 0 (EError::InvalidArgument), within cMaxCollisionImpulse, cMaxCollisionEnergy and
+/// cMaxShapeBoxCoordinate (EError::OutOfRange), body-frame normals of unit length to 1e-6 and friction
+/// impulses inside their cone (EError::InvalidArgument). Every collision a DamageWorld dispatches passes.
+CRUMPLE_API Status ValidateCollision(const Collision& inCollision);
 
 } // namespace crumple::plugin

@@ -36,7 +36,9 @@ public:
     /// mMaxInstantDeformation in one collision. ECrushModel::Campbell: the collision's crush energy for this
     /// side (Collision::mCrushEnergyA/B) crushes the footprint (PlanCampbellCrush, ApplyCrushPlan); a depth
     /// cut to the instantaneous maximum counts as one clamped contact.
-    ffd::DentReport ApplyCollision(const Collision& inCollision, ECollisionSide inSide);
+    /// A collision that ValidateCollision refuses (a hand-made one with a NaN, say) returns its error and
+    /// changes nothing; every collision a DamageWorld dispatches passes.
+    Result<ffd::DentReport> ApplyCollision(const Collision& inCollision, ECollisionSide inSide);
 
     const DamageMaterial& GetMaterial() const { return mMaterial; }
     bool GetInterpolateWideImpacts() const { return mInterpolate; }

@@ -31,9 +31,12 @@ CRUMPLE_API Result<std::vector<ReplayedObject>> CreateReplayedObjects(const Repl
 /// Applies each recorded collision to ioObjects (from CreateReplayedObjects of the same recording): the
 /// objects of body A, then of body B, in object id order, exactly as DamageWorld dispatched them; an
 /// object created mid-run only takes the collisions recorded after it.
+/// A replay made by hand whose collisions ValidateCollision refuses returns the first one's error, naming
+/// its index, before any collision is applied (DecodeReplay has checked a read one).
 /// @param[in] inAfterCollision called after each collision with its index and the objects; may be empty
-CRUMPLE_API void ApplyReplayedCollisions(const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
-                             const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
+CRUMPLE_API Status ApplyReplayedCollisions(
+    const Replay& inReplay, std::vector<ReplayedObject>& ioObjects,
+    const std::function<void(std::size_t, const std::vector<ReplayedObject>&)>& inAfterCollision = {});
 
 /// Replays a recording without any physics engine: rebuilds every object (restoring its initial damage),
 /// then applies each collision to the objects of body A, then of body B, in object id order, exactly as
