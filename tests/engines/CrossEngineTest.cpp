@@ -271,3 +271,40 @@ TEST_CASE("A car sliding on the crash scenes' ground keeps its height and does n
         }
     }
 }
+
+// A game steps its engine at 30-480 Hz; the crush must not depend on which. The same crashes at five steps,
+// in both engines: each crush within 1 % of the 120 Hz one (the crash tests' step) of the same engine
+// (measured: 0.12 % at most; the Campbell crush takes the collision's absorbed energy, which the step does
+// not change).
+TEST_CASE("The crush does not depend on the engine's time step (30 to 480 Hz), in Bullet and ODE", "[bullet][ode]")
+{
+    std::vector<std::pair<std::string, EngineCrashSettings>> crashes;
+    EngineCrashSettings base;
+    base.mSpeed = 56.0 / 3.6;
+    base.mDuration = 0.3;
+    base.mTriangles = 2000;
+    crashes.emplace_back("frontal", base);
+    EngineCrashSettings offset = base;
+    offset.mOverlapFraction = 0.4;
+    crashes.emplace_back("40 % offset", offset);
+    EngineCrashSettings pole = base;
+    pole.mPoleRadius = 0.127;
+    crashes.emplace_back("pole", pole);
+    for (const auto& [name, crash] : crashes)
+        for (const char* engine : {"Bullet", "ODE"})
+        {
+            const auto crush_at = [&, engine = std::string(engine)](double inTimeStep) {
+                EngineCrashSettings settings = crash;
+                settings.mTimeStep = inTimeStep;
+                return engine == "Bullet" ? BulletWallCrash(settings).Run().mMaxDent : OdeWallCrash(settings).Run().mMaxDent;
+            };
+            const double reference = crush_at(1.0 / 120.0);
+            REQUIRE(reference > 0.2); // a real crush, not two empty runs agreeing
+            for (double hz : {30.0, 60.0, 240.0, 480.0})
+            {
+                const double crush = crush_at(1.0 / hz);
+                INFO(name << " in " << engine << " at " << hz << " Hz: " << crush << " m, at 120 Hz " << reference << " m");
+                CHECK(std::abs(crush - reference) <= 0.01 * reference);
+            }
+        }
+}
