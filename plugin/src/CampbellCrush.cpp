@@ -375,7 +375,12 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
         // intent: a side whose material is not valid (a direct caller's) crushes nothing, as a rigid one
         if (inSide.mMaterial == nullptr || !ValidateDamageMaterial(*inSide.mMaterial))
             return std::numeric_limits<double>::infinity();
-        return inSide.mMaterial->mCrushB * CrushWidth(ioCollision, inWhich, inSide.mUp, inSide.mMaterial->mMinCrushWidth);
+        const double b = inSide.mLength != nullptr
+                             ? CrushMaterialAlong(*inSide.mMaterial, CrushDirection(ioCollision, inWhich),
+                                                  *inSide.mLength, inSide.mUp)
+                                   .mCrushB
+                             : inSide.mMaterial->mCrushB;
+        return b * CrushWidth(ioCollision, inWhich, inSide.mUp, inSide.mMaterial->mMinCrushWidth);
     };
     const double k_a = stiffness(inA, ECollisionSide::A), k_b = stiffness(inB, ECollisionSide::B);
     ioCollision.mCrushEnergyA = 0.0;
@@ -394,19 +399,35 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
     }
 }
 
-std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide, double inEnergy,
-                                           const DamageMaterial& inMaterial, const Vec3& inUp,
-                                           const ffd::FfdDeformer& inDeformer, const CrushBody* inBody)
+DamageMaterial CrushMaterialAlong(const DamageMaterial& inMaterial, const Vec3& inDirection,
+                                  const BodyLength& inLength, const Vec3& inUp)
 {
-    if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inMaterial))
+    if (!inMaterial.mHasSideStiffness)
+        return inMaterial;
+    const Vec3 width = inUp.cross(inLength.mAxis);
+    if (!(std::abs(inDirection.dot(width)) > std::abs(inDirection.dot(inLength.mAxis))))
+        return inMaterial;
+    DamageMaterial side = inMaterial;
+    side.mCrushA = inMaterial.mSideCrushA;
+    side.mCrushB = inMaterial.mSideCrushB;
+    side.mCrushG = inMaterial.mSideCrushG;
+    return side;
+}
+
+std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide,
+                                           double inEnergy, const DamageMaterial& inBodyMaterial,
+                                           const Vec3& inUp, const ffd::FfdDeformer& inDeformer,
+                                           const CrushBody* inBody)
+{
+    if (!(inEnergy > 0.0) || !ValidateDamageMaterial(inBodyMaterial))
         return std::nullopt;
     // The contacts' own span, then the footprint: that span widened to the material's minimum width.
     const std::optional<ffd::SurfaceProbe> span = FootprintOf(inCollision, inSide, inUp, 0.0);
     if (!span)
         return std::nullopt;
     std::optional<ffd::SurfaceProbe> footprint = span;
-    Widen(footprint->mSideMin, footprint->mSideMax, inMaterial.mMinCrushWidth);
-    Widen(footprint->mThirdMin, footprint->mThirdMax, inMaterial.mMinCrushWidth);
+    Widen(footprint->mSideMin, footprint->mSideMax, inBodyMaterial.mMinCrushWidth);
+    Widen(footprint->mThirdMin, footprint->mThirdMax, inBodyMaterial.mMinCrushWidth);
     CrushPlan plan;
     plan.mDirection = footprint->mDirection;
     plan.mSide = footprint->mSide;
@@ -429,33 +450,35 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     if (inBody == nullptr)
         measured = MeasureCrushBody(inDeformer, inUp);
     const CrushBody& body = inBody != nullptr ? *inBody : *measured;
+    // The stiffness this crush meets: the sides' when it runs across the body and the material has one.
+    const DamageMaterial material = CrushMaterialAlong(inBodyMaterial, plan.mDirection, body.mLength, inUp);
     const double front = surface.mFront;
     // A move shallower than the material's smallest dent (the fade of a neighbouring crush) is no crush: it
     // must not waive the no-damage energy G of an undamaged front.
     double previous = surface.mMoved;
-    if (!(previous >= std::max(inMaterial.mMinDeformation, 1.0e-9)))
+    if (!(previous >= std::max(material.mMinDeformation, 1.0e-9)))
         previous = 0.0;
     plan.mFront = front;
     plan.mPreviousCrush = previous;
 
     // Campbell's energy balance from the crush already there: the structure has absorbed what that crush
     // took, and this collision's energy takes it further.
-    const double absorbed = CampbellCrushEnergy(inMaterial, plan.mWidth, previous);
-    double depth = CampbellCrushDepth(inMaterial, plan.mWidth, absorbed + inEnergy) - previous;
+    const double absorbed = CampbellCrushEnergy(material, plan.mWidth, previous);
+    double depth = CampbellCrushDepth(material, plan.mWidth, absorbed + inEnergy) - previous;
     // The struck surface's shape across the footprint (a rounded nose, a front at an angle to the crush),
     // measured within a slab twice the flat front's depth (and the field's widest reach for it), then the
     // depth its profile needs for the energy; a deeper answer measures again in a deeper slab. A column met
     // only behind the slab holds the slab's depth, which the answer does not reach, so the slab changes
     // nothing but the cost (racing dents are centimetres deep; the surface scan is most of a plan's time).
-    plan.mKappa = inMaterial.mCrushedLengthFraction;
+    plan.mKappa = material.mCrushedLengthFraction;
     plan.mSpacing = spacing;
     plan.mFlatLayer = spacing;
-    const double wall_slope = 2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01));
+    const double wall_slope = 2.0 * std::sqrt(std::max(material.mCrushedLengthFraction, 0.01));
     const ShapeBox& impactor = inSide == ECollisionSide::A ? inCollision.mShapeOfBOnA : inCollision.mShapeOfAOnB;
     const CrossRect contacts{plan.mSideMin, plan.mSideMax, plan.mThirdMin, plan.mThirdMax};
     const std::optional<CrossRect> face = impactor.mKnown ? ImpactorFace(plan, impactor, body) : std::nullopt;
     const CrossRect touched{span->mSideMin, span->mSideMax, span->mThirdMin, span->mThirdMax}; // not widened
-    for (double slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * depth + 2.0 * spacing); depth > 0.0;)
+    for (double slab = std::min(material.mMaxInstantDeformation, 2.0 * depth + 2.0 * spacing); depth > 0.0;)
     {
         plan.mRamp = std::max(2.0 * spacing, slab / wall_slope);
         plan.mDepth = slab;
@@ -464,25 +487,27 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
         plan.mStruckFront = MeasureStruckFront(plan, face ? Union(*face, contacts) : contacts, inDeformer, body.mLargeTriangles,
                                                0.5 * wall_slope, face ? &surface_bins : nullptr);
         const double profiled =
-            face ? ConformToImpactor(plan, touched, *face, surface_bins, inMaterial, previous, inEnergy)
-                 : (plan.mStruckFront.mDepth.empty() ? depth : ProfileCrushDepth(plan, inMaterial, previous, inEnergy, depth));
-        if (profiled <= slab || slab >= inMaterial.mMaxInstantDeformation)
+            face ? ConformToImpactor(plan, touched, *face, surface_bins, material, previous, inEnergy)
+                 : (plan.mStruckFront.mDepth.empty()
+                        ? depth
+                        : ProfileCrushDepth(plan, material, previous, inEnergy, depth));
+        if (profiled <= slab || slab >= material.mMaxInstantDeformation)
         {
             depth = profiled;
             break;
         }
-        slab = std::min(inMaterial.mMaxInstantDeformation, 2.0 * profiled);
+        slab = std::min(material.mMaxInstantDeformation, 2.0 * profiled);
     }
-    if (depth > inMaterial.mMaxInstantDeformation)
+    if (depth > material.mMaxInstantDeformation)
     {
-        depth = inMaterial.mMaxInstantDeformation;
+        depth = material.mMaxInstantDeformation;
         plan.mClamped = true;
     }
-    if (!(depth >= inMaterial.mMinDeformation) || !(depth > 0.0))
+    if (!(depth >= material.mMinDeformation) || !(depth > 0.0))
         return std::nullopt;
     plan.mDepth = depth;
     // The lattice cannot compact a layer thinner than a control spacing: a shallow crush fades over one.
-    plan.mZoneLength = std::max(depth / (1.0 - inMaterial.mCrushedLengthFraction), spacing);
+    plan.mZoneLength = std::max(depth / (1.0 - material.mCrushedLengthFraction), spacing);
     // The cubic B-spline blends the field over two spacings on either side of a point: with the compaction
     // starting right at the surface, the struck face would fall short of the impactor by about a fifth of
     // a spacing times the compaction slope (2.8 cm at 56 km/h on a 0.15 m lattice). The outermost spacing is
@@ -493,8 +518,9 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     // was) iff cos^2 t / f - k sin t cos t / f + sin^2 t > 0 for every t, that is iff k < 2 sqrt(f). The walls
     // therefore slope at most 2 sqrt(f) : 1 (1:1 at the default quarter; the 2:1 walls before turned the box
     // car's pocket walls over at 64 km/h), and the fade spans at least two control spacings.
-    plan.mRamp = std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(inMaterial.mCrushedLengthFraction, 0.01))));
-    LimitByCell(inMaterial, body.mLength, inDeformer, plan);
+    plan.mRamp =
+        std::max(2.0 * spacing, depth / (2.0 * std::sqrt(std::max(material.mCrushedLengthFraction, 0.01))));
+    LimitByCell(material, body.mLength, inDeformer, plan);
     return plan;
 }
 

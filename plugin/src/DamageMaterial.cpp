@@ -33,6 +33,16 @@ Status ValidateDamageMaterial(const DamageMaterial& inMaterial)
         return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushB must be in (0, 1e12] N/m^2");
     if (!(material.mCrushG >= 0.0 && material.mCrushG <= 1.0e12))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushG must be in [0, 1e12] J/m");
+    if (material.mHasSideStiffness)
+    {
+        if (!(material.mSideCrushA >= 0.0 && material.mSideCrushA <= 1.0e12))
+            return MakeError(EError::InvalidArgument, "DamageMaterial.mSideCrushA must be in [0, 1e12] N/m");
+        if (!(material.mSideCrushB > 0.0 && material.mSideCrushB <= 1.0e12))
+            return MakeError(EError::InvalidArgument,
+                             "DamageMaterial.mSideCrushB must be in (0, 1e12] N/m^2");
+        if (!(material.mSideCrushG >= 0.0 && material.mSideCrushG <= 1.0e12))
+            return MakeError(EError::InvalidArgument, "DamageMaterial.mSideCrushG must be in [0, 1e12] J/m");
+    }
     if (!(std::isfinite(material.mMinCrushWidth) && material.mMinCrushWidth > 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
     if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))

@@ -498,7 +498,7 @@ CrushSide DamageWorld::CrushSideOf(BodyId inBody) const
     {
         const DeformableObject& object = mObjects[id.mValue].mObject.front();
         if (object.GetMaterial().mModel == ECrushModel::Campbell)
-            return {&object.GetMaterial(), object.GetUpAxis()};
+            return {&object.GetMaterial(), object.GetUpAxis(), &object.GetCrushBody().mLength};
     }
     return {};
 }

@@ -133,6 +133,18 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     // Before version 10 no crush stopped at an occupant cell: 0.5 leaves none. An out-of-range value is left
     // as read, for DeformableObject::Create to refuse with its message.
     settings.mMaterial.mCrushZoneFraction = inVersion >= 10 ? reader.ReadDouble() : 0.5;
+    // Before version 12 no material had the sides' own stiffness. A flag other than 0 or 1 is corrupt; values
+    // out of range are left as read, for DeformableObject::Create to refuse with its message.
+    if (inVersion >= 12)
+    {
+        const std::uint8_t side = reader.ReadU8();
+        if (side > 1)
+            return MakeError(EError::CorruptData, "object record: the side stiffness flag is corrupt");
+        settings.mMaterial.mHasSideStiffness = side == 1;
+        settings.mMaterial.mSideCrushA = reader.ReadDouble();
+        settings.mMaterial.mSideCrushB = reader.ReadDouble();
+        settings.mMaterial.mSideCrushG = reader.ReadDouble();
+    }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "object record: length does not match its contents");
     // The lattices must be exactly as large as the control state the record carries, so a forged zone size
@@ -291,6 +303,10 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
             writer.WriteU32(vertex);
     }
     writer.WriteDouble(settings.mMaterial.mCrushZoneFraction);
+    writer.WriteU8(settings.mMaterial.mHasSideStiffness ? 1 : 0);
+    writer.WriteDouble(settings.mMaterial.mSideCrushA);
+    writer.WriteDouble(settings.mMaterial.mSideCrushB);
+    writer.WriteDouble(settings.mMaterial.mSideCrushG);
     return writer.TakeBytes();
 }
 

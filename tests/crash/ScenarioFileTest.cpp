@@ -212,6 +212,18 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
         ParseCrashScenario(Minimal(R"("mass_kg": 900, "material": {"crush_zone_fraction": 0.3})"), {});
     REQUIRE(zone.IsValid());
     CHECK(zone.Get().mVehicle.mMaterial.mCrushZoneFraction == 0.3);
+    // The sides' own stiffness: off unless all three keys are given
+    CHECK_FALSE(partial.Get().mVehicle.mMaterial.mHasSideStiffness);
+    const Result<CrashScenario> side = ParseCrashScenario(
+        Minimal(
+            R"("mass_kg": 900, "material": {"side_crush_A_N_per_m": 20000, "side_crush_B_N_per_m2": 150000, "side_crush_G_J_per_m": 1333})"),
+        {});
+    REQUIRE(side.IsValid());
+    CHECK(side.Get().mVehicle.mMaterial.mHasSideStiffness);
+    CHECK(side.Get().mVehicle.mMaterial.mSideCrushA == 20000.0);
+    CHECK(side.Get().mVehicle.mMaterial.mSideCrushB == 150000.0);
+    CHECK(side.Get().mVehicle.mMaterial.mSideCrushG == 1333.0);
+    CHECK(side.Get().mVehicle.mMaterial.mCrushB == defaults.mVehicle.mMaterial.mCrushB); // the ends' kept
     CHECK(partial.Get().mVehicle.mMaterial.mDeformationFactor ==
           defaults.mVehicle.mMaterial.mDeformationFactor);
 }
@@ -248,10 +260,13 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
     const std::vector<Case> cases = {
         // Unknown keys, with the known ones and unit hints
         {Minimal(R"("mass_lb": 2600)"), EError::InvalidArgument,
-         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, mesh_unit_m, "
-         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, mesh_flip_deviation_m, mesh_rigid_parts, box_size_m, mass_kg, "
+         "/vehicle/mass_lb: unknown key; masses are mass_kg (known: mesh, mesh_name, mesh_length_m, "
+         "mesh_unit_m, "
+         "mesh_forward_axis, mesh_up_axis, mesh_max_edge_m, mesh_flip_deviation_m, mesh_rigid_parts, "
+         "box_size_m, mass_kg, "
          "inertia_kg_m2, inertia_from, control_count, control_spacing_m, zones, material)"},
-        {Minimal(R"("mass_kg": 1200, "zones": [{"min_m": [0, 0, 0], "max_m": [1, 0, 1]}])"), EError::InvalidArgument,
+        {Minimal(R"("mass_kg": 1200, "zones": [{"min_m": [0, 0, 0], "max_m": [1, 0, 1]}])"),
+         EError::InvalidArgument,
          "/vehicle/zones/0/max_m: must exceed min_m by at least 0.001 m on every axis"},
         {Minimal(R"("mass_kg": 1200, "zones": [{"max_m": [1, 1, 1]}])"), EError::InvalidArgument,
          "/vehicle/zones/0/min_m: required"},
@@ -310,9 +325,11 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions"}])"), EError::InvalidArgument,
          "/expectations/0: needs min, max or both"},
         // Numbers out of range or not finite
-        {Minimal(R"("mass_kg": -5)"), EError::InvalidArgument, "/vehicle/mass_kg: must be in (0, 1e+12], got -5"},
+        {Minimal(R"("mass_kg": -5)"), EError::InvalidArgument,
+         "/vehicle/mass_kg: must be in (0, 1e+12], got -5"},
         // Past the core's ranges: refused with the key, not met by an abort in the scene
-        {Minimal(R"("mass_kg": 1e13)"), EError::InvalidArgument, "/vehicle/mass_kg: must be in (0, 1e+12], got 1e+13"},
+        {Minimal(R"("mass_kg": 1e13)"), EError::InvalidArgument,
+         "/vehicle/mass_kg: must be in (0, 1e+12], got 1e+13"},
         {Minimal(mass, speed, R"("duration_s": 1e999)"), EError::InvalidArgument,
          "/duration_s: must be finite; number overflow parsing '1e999'"},
         {Minimal(R"("mass_kg": 1200, "box_size_m": [4, -1e999, 1])"), EError::InvalidArgument,
@@ -344,6 +361,14 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/vehicle/material/crush_zone_fraction: must be in (0, 0.5], got 0.6"},
         {Minimal(R"("mass_kg": 1, "material": {"crush_zone_fraction": 0})"), EError::InvalidArgument,
          "/vehicle/material/crush_zone_fraction: must be in (0, 0.5], got 0"},
+        {Minimal(R"("mass_kg": 1, "material": {"side_crush_A_N_per_m": 1, "side_crush_B_N_per_m2": 2})"),
+         EError::InvalidArgument,
+         "/vehicle/material/side_crush_A_N_per_m: side_crush_A_N_per_m, side_crush_B_N_per_m2 and "
+         "side_crush_G_J_per_m go "
+         "together: give all three or none"},
+        {Minimal(
+             R"("mass_kg": 1, "material": {"side_crush_A_N_per_m": 1, "side_crush_B_N_per_m2": 0, "side_crush_G_J_per_m": 0})"),
+         EError::InvalidArgument, "/vehicle/material/side_crush_B_N_per_m2: must be in (0, 1e+12], got 0"},
         {Minimal(mass, speed, R"("target": {"angle_deg": 90})"), EError::InvalidArgument,
          "/target/angle_deg: must be in (-90, 90), got 90"},
         {Minimal(mass, speed, R"("expectations": [{"quantity": "collisions", "min": 3, "max": 1}])"),
@@ -353,9 +378,10 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          R"(/engine: must be "bullet" or "ode", got "havok")"},
         {Minimal(mass, speed, R"("target": {"type": "tree"})"), EError::InvalidArgument,
          R"(/target/type: must be one of "rigid_wall", "pole", "offset_wall", "vehicle" or "fem_barrier", got "tree")"},
-        {Minimal(mass, speed, R"("target": {"type": "fem_barrier", "material": "cheese"})"), EError::InvalidArgument,
-         "/target/material: must be one of"},
-        {Minimal(mass, speed, R"("target": {"type": "fem_barrier", "size_m": [0.2, 3, 1.2], "cell_m": 0.001})"),
+        {Minimal(mass, speed, R"("target": {"type": "fem_barrier", "material": "cheese"})"),
+         EError::InvalidArgument, "/target/material: must be one of"},
+        {Minimal(mass, speed,
+                 R"("target": {"type": "fem_barrier", "size_m": [0.2, 3, 1.2], "cell_m": 0.001})"),
          EError::InvalidArgument, "/target/cell_m: makes more than 200 cells"},
         {Minimal(mass, speed, R"("target": {"type": "rigid_wall", "mass_kg": 900})"), EError::InvalidArgument,
          "/target/mass_kg: does not apply to this target type"},
@@ -363,8 +389,8 @@ TEST_CASE("ScenarioFile: each malformed scenario is refused with its JSON pointe
          "/target/speed_km_h: must be in [0, 3600], got -5"},
         {Minimal(mass, speed, R"("target": {"type": "pole", "angle_deg": 10})"), EError::InvalidArgument,
          "/target/angle_deg: does not apply to this target type"},
-        {Minimal(mass, speed, R"("target": {"type": "offset_wall", "overlap_percent": 0})"), EError::InvalidArgument,
-         "/target/overlap_percent: must be in (0, 100]"},
+        {Minimal(mass, speed, R"("target": {"type": "offset_wall", "overlap_percent": 0})"),
+         EError::InvalidArgument, "/target/overlap_percent: must be in (0, 100]"},
         {Minimal(mass, speed,
                  R"("expectations": [{"quantity": "residual_crush_m", "zone": "top", "max": 0}])"),
          EError::InvalidArgument,

@@ -752,16 +752,20 @@ class ScenarioReader
                             UnitHint{"min_crush_width", "widths are min_crush_width_m"}};
         const bool keys_ok =
             inAllowPreset
-                ? CheckKeys(inMaterial, inPointer,
-                            {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
-                              "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
-                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction",
-                              "preset_file"},
-                             hints})
+                ? CheckKeys(
+                      inMaterial, inPointer,
+                      {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
+                        "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
+                        "crush_B_N_per_m2", "crush_G_J_per_m", "side_crush_A_N_per_m",
+                        "side_crush_B_N_per_m2", "side_crush_G_J_per_m", "min_crush_width_m",
+                        "crushed_length_fraction", "crush_zone_fraction", "preset_file"},
+                       hints})
                 : CheckKeys(inMaterial, inPointer,
                             {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
-                              "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
-                              "crush_B_N_per_m2", "crush_G_J_per_m", "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction"},
+                              "impulse_threshold_N_s", "max_total_deformation_m", "crush_model",
+                              "crush_A_N_per_m", "crush_B_N_per_m2", "crush_G_J_per_m",
+                              "side_crush_A_N_per_m", "side_crush_B_N_per_m2", "side_crush_G_J_per_m",
+                              "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction"},
                              hints});
         if (!keys_ok)
             return false;
@@ -789,6 +793,26 @@ class ScenarioReader
             !ReadNumber(inMaterial, inPointer, "crush_zone_fraction", NumberRange{0.0, true, 0.5, false}, false,
                         material.mCrushZoneFraction))
             return false;
+        // The sides' own stiffness: all three keys or none (a preset's set stays unless all three replace
+        // it).
+        const int side_keys = static_cast<int>(inMaterial.contains("side_crush_A_N_per_m")) +
+                              static_cast<int>(inMaterial.contains("side_crush_B_N_per_m2")) +
+                              static_cast<int>(inMaterial.contains("side_crush_G_J_per_m"));
+        if (side_keys != 0 && side_keys != 3)
+            return Fail(EError::InvalidArgument, Child(inPointer, "side_crush_A_N_per_m"),
+                        "side_crush_A_N_per_m, side_crush_B_N_per_m2 and side_crush_G_J_per_m go together: "
+                        "give all three or none");
+        if (side_keys == 3)
+        {
+            if (!ReadNumber(inMaterial, inPointer, "side_crush_A_N_per_m",
+                            NumberRange{0.0, false, 1.0e12, false}, true, material.mSideCrushA) ||
+                !ReadNumber(inMaterial, inPointer, "side_crush_B_N_per_m2",
+                            NumberRange{0.0, true, 1.0e12, false}, true, material.mSideCrushB) ||
+                !ReadNumber(inMaterial, inPointer, "side_crush_G_J_per_m",
+                            NumberRange{0.0, false, 1.0e12, false}, true, material.mSideCrushG))
+                return false;
+            material.mHasSideStiffness = true;
+        }
         std::size_t model = static_cast<std::size_t>(material.mModel);
         if (!ReadEnum(inMaterial, inPointer, "crush_model", {"impulse_factor", "campbell"}, {}, false, model))
             return false;

@@ -133,6 +133,13 @@ struct CRUMPLE_API CrushBody
     Vec3 mRestMax = Vec3::Zero(); ///< crush an impactor's face can meet the body
 };
 
+/// The material a crush along inDirection (body frame, unit) meets: inMaterial itself, or, when it has the
+/// sides' stiffness (DamageMaterial::mHasSideStiffness) and the direction lies nearer the body's width
+/// (inUp x inLength.mAxis) than its length, a copy whose mCrushA, B and G are the sides'. PlanCampbellCrush
+/// and ShareCrushEnergy crush with it.
+CRUMPLE_API DamageMaterial CrushMaterialAlong(const DamageMaterial& inMaterial, const Vec3& inDirection,
+                                              const BodyLength& inLength, const Vec3& inUp);
+
 /// Measures inDeformer's rest mesh for PlanCampbellCrush.
 CRUMPLE_API CrushBody MeasureCrushBody(const ffd::FfdDeformer& inDeformer, const Vec3& inUp);
 
@@ -153,6 +160,9 @@ struct CRUMPLE_API CrushSide
 {
     const DamageMaterial* mMaterial = nullptr;
     Vec3 mUp = Vec3::UnitZ();
+    /// The body's length (CrushBody::mLength), which tells a crush across the body from one along it
+    /// (CrushMaterialAlong); null: the ends' stiffness whatever the direction
+    const BodyLength* mLength = nullptr;
 };
 
 /// Sets the collision's mCrushEnergyA and mCrushEnergyB: its absorbed energy split between the sides in

@@ -52,6 +52,16 @@ struct CRUMPLE_API DamageMaterial
     double mCrushB = 549818.0; ///< Its growth per metre of crush (N/m^2), in (0, 1e12]
     double mCrushG = 2310.0;   ///< Energy per unit width absorbed with no residual crush (J/m), in [0, 1e12]; CRASH3
                                ///< takes A^2 / (2 B)
+    /// The sides' own Campbell stiffness (CRASH3 keeps front, rear and side coefficients apart): when set,
+    /// a crush across the body (its direction nearer the body's width than its length, BodyLength) takes
+    /// mSideCrushA, B and G instead of mCrushA, B and G; the ends (front and rear) and a crush straight down
+    /// keep those. Off by default, with no preset value: a side structure's stiffness varies widely from car
+    /// to car and is not predicted by its class, size or mass (SAE 2017-01-1415 and 2020-01-0640 derive it
+    /// per vehicle from its side crash tests), so it belongs to the vehicle's data, not to a class preset.
+    bool mHasSideStiffness = false;
+    double mSideCrushA = 0.0; ///< The sides' A (N/m), in [0, 1e12]; read only with mHasSideStiffness
+    double mSideCrushB = 1.0; ///< The sides' B (N/m^2), in (0, 1e12]
+    double mSideCrushG = 0.0; ///< The sides' G (J/m), in [0, 1e12]
     /// Narrowest width a crush is spread over (m), > 0: a car's bumper beam and longitudinal rails carry
     /// a pole's load over more than the pole's diameter. An assumption to set per vehicle, not a measured value.
     double mMinCrushWidth = 0.5;

@@ -46,19 +46,20 @@ struct CRUMPLE_API Replay
 };
 
 /// Replay file format version. Readers refuse other versions. 2: the material's impulse threshold.
-/// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain bound.
-/// 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up axis;
-/// per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's one-sided
-/// dents flag; extension records. 7: ids carry their generation (u32 after each object and body index).
-/// 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its u32
-/// vertices). 9: per contact the friction coefficient and the friction impulse (world, on A's body frame, on
-/// B's body frame) after the time. 10: the material's crush zone fraction (f64 after the rigid parts).
-/// 11: per collision, after the crush energies, the shape boxes of B on A and of A on B (each u8 known, the
+/// 3: the deformer's minimum control spacing. 4: the deformer's direct-manipulation prior and control gain
+/// bound. 5: the crush model (material: model, Campbell A, B, G, minimum width, crushed fraction; the up
+/// axis; per contact the absorbed energy; per collision the crush energy of each side). 6: the deformer's
+/// one-sided dents flag; extension records. 7: ids carry their generation (u32 after each object and body
+/// index). 8: the deformer's rigid parts (after the object's control state: u32 parts, each u32 count and its
+/// u32 vertices). 9: per contact the friction coefficient and the friction impulse (world, on A's body frame,
+/// on B's body frame) after the time. 10: the material's crush zone fraction (f64 after the rigid parts). 11:
+/// per collision, after the crush energies, the shape boxes of B on A and of A on B (each u8 known, the
 /// centre and three half axes as f64 Vec3s).
-/// Written: 11. Read: 11 down to 7 (whose contacts are frictionless, objects have no rigid parts before 8,
-/// no occupant cell (fraction 0.5) before 10 and collisions no shape boxes before 11, so their recordings
-/// still replay as they were made).
-constexpr std::uint32_t cReplayVersion = 11;
+/// 12: the material's side stiffness (u8 flag, then A, B and G as f64, after the crush zone fraction).
+/// Written: 12. Read: 12 down to 7 (whose contacts are frictionless, objects have no rigid parts before 8,
+/// no occupant cell (fraction 0.5) before 10, collisions no shape boxes before 11 and materials no side
+/// stiffness before 12, so their recordings still replay as they were made).
+constexpr std::uint32_t cReplayVersion = 12;
 /// The oldest version DecodeReplay still reads.
 constexpr std::uint32_t cOldestReplayVersion = 7;
 
