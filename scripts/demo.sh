@@ -15,6 +15,18 @@ bin="$CRUMPLE_BUILD_DIR/samples"
 crash="$CRUMPLE_BUILD_DIR/tools/crash/crumple-crash"
 replay="$CRUMPLE_BUILD_DIR/tools/replay/crumple-replay"
 mkdir -p "$out"
+
+# A replayed mesh must be the live one byte for byte: same_mesh LIVE REPLAYED WHAT...
+same_mesh() {
+    local live="$1" replayed="$2"
+    shift 2
+    if cmp -s "$live" "$replayed"; then
+        echo "replayed $* mesh is byte-identical to the live one"
+    else
+        echo "replayed $* mesh differs from the live one" >&2
+        exit 1
+    fi
+}
 if [ ! -x "$bin/crumple-racing-bullet" ] || [ ! -x "$crash" ]; then
     echo "crumple demo: the racing samples were not built (see the configure messages above)" >&2
     exit 1
@@ -23,12 +35,7 @@ fi
 echo "== Crash test: the shipped Toy Car, full frontal into a rigid barrier at 56 km/h"
 "$crash" "$CRUMPLE_ROOT/samples/scenarios/frontal_rigid_barrier_56kmh.json" --out "$out/crash-frontal-56"
 "$replay" "$out/crash-frontal-56/replay.crumple" --out "$out/crash-frontal-56/replay" > /dev/null
-if cmp -s "$out/crash-frontal-56/deformed.obj" "$out/crash-frontal-56/replay/object0.obj"; then
-    echo "replayed crash mesh is byte-identical to the live one"
-else
-    echo "replayed crash mesh differs from the live one" >&2
-    exit 1
-fi
+same_mesh "$out/crash-frontal-56/deformed.obj" "$out/crash-frontal-56/replay/object0.obj" crash
 
 echo; echo "== Bullet racing session"
 "$bin/crumple-racing-bullet" --out "$out/racing-bullet"
@@ -41,26 +48,12 @@ echo "   the fence's FEM off the game's thread (a different run: each lands a st
 "$bin/crumple-racing-bullet" --threads 2 --defer-dents --props-off-thread --no-pictures --out "$out/racing-bullet-jobs" |
     grep -E "^(fence:|physics frames|wrote)"
 "$replay" "$out/racing-bullet-jobs/race.crumple" --out "$out/racing-bullet-jobs/replay" > /dev/null
-if cmp -s "$out/racing-bullet-jobs/car.obj" "$out/racing-bullet-jobs/replay/object0.obj"; then
-    echo "replayed car mesh of the threaded session is byte-identical to the live one"
-else
-    echo "replayed car mesh of the threaded session differs from the live one" >&2
-    exit 1
-fi
+same_mesh "$out/racing-bullet-jobs/car.obj" "$out/racing-bullet-jobs/replay/object0.obj" "threaded session's car"
 
 echo; echo "== Headless replay of the Bullet recording (no physics engine)"
 "$replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
-for pair in "car.obj object0.obj car" "fence.obj prop0.obj fence (cracks and pieces)"; do
-    set -- $pair
-    live="$1" replayed="$2"
-    shift 2
-    if cmp -s "$out/racing-bullet/$live" "$out/replay/$replayed"; then
-        echo "replayed $* mesh is byte-identical to the live one"
-    else
-        echo "replayed $* mesh differs from the live one" >&2
-        exit 1
-    fi
-done
+same_mesh "$out/racing-bullet/car.obj" "$out/replay/object0.obj" car
+same_mesh "$out/racing-bullet/fence.obj" "$out/replay/prop0.obj" "fence (cracks and pieces)"
 
 echo
 echo "crumple demo: crash report: $out/crash-frontal-56/report.html (report.json, pictures, deformed.obj, replay.crumple beside it)"
