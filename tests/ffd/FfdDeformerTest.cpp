@@ -4,6 +4,7 @@
 #include "ThreadJobSystem.h"
 #include "TwoZoneBox.h"
 
+#include <crumple/base/Assert.h>
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/ffd/OneSidedControls.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
@@ -388,6 +389,19 @@ TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
         CHECK(deformer.SetControlDisplacements(state).GetError().mCode == EError::InvalidArgument);
         CHECK(SameBytes(deformer.GetPositions(), positions));
     }
+}
+
+TEST_CASE("GetVertexZone answers -1 (no zone) for an index past the mesh", "[ffd]")
+{
+    const FfdDeformer deformer = MakeDeformer();
+    const auto past = static_cast<std::uint32_t>(deformer.GetPositions().size());
+    // An assertions build reports the caller's error first; a handler that goes on reaches the release
+    // answer.
+    SetAssertHandler([](const char*, const char*, const char*, int) { return false; });
+    const int zone = deformer.GetVertexZone(past);
+    SetAssertHandler(nullptr);
+    CHECK(zone == -1);
+    CHECK(deformer.GetVertexZone(past - 1) == 0);
 }
 
 TEST_CASE("Points outside every zone are ignored, near ones captured", "[ffd]")

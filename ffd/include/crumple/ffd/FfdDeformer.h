@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <crumple/base/Assert.h>
 #include <crumple/base/Export.h>
 
 #include <crumple/base/JobSystem.h>
@@ -115,8 +116,14 @@ public:
     /// Zones, in settings order
     const std::vector<FfdLattice>& GetZones() const { return mZones; }
     const FfdDeformerSettings& GetSettings() const { return mSettings; }
-    /// Index of the zone a vertex is bound to, -1 when it is in none (it never moves)
-    int GetVertexZone(std::uint32_t inVertex) const { return mVertexZone[inVertex]; }
+    /// Index of the zone a vertex is bound to, -1 when it is in none (it never moves). An index past the mesh
+    /// is a caller's error: the assertions build stops there, a release build answers -1 (no zone moves it)
+    /// instead of reading past the array.
+    int GetVertexZone(std::uint32_t inVertex) const
+    {
+        CRUMPLE_ASSERT(inVertex < mVertexZone.size(), "GetVertexZone: the vertex index is past the mesh");
+        return inVertex < mVertexZone.size() ? mVertexZone[inVertex] : -1;
+    }
     /// Smallest control spacing over all zones (m): the scale below which contacts need no interpolation
     double GetMinSpacing() const;
 
