@@ -115,6 +115,11 @@ add_test(NAME "crash: --strict refuses a sideways mesh"
 add_test(NAME "crash: a mesh with its axes and unit stated runs clean under --strict"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stated_mesh_axes.json
             -DOUT=${crash_out}/stated-axes -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING -P ${crash_script})
+# CAD exports come as STL: an ASCII STL box car in millimetres crashes clean under --strict (Campbell's band).
+add_test(NAME "crash: an STL car body in millimetres runs clean under --strict"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stl_mesh.json
+            -DOUT=${crash_out}/stl -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING
+            "-DEXPECT_TEXT=12 triangles and 24 vertices from the file" -P ${crash_script})
 # A rigid-part name fragment that finds no part (a typo) runs with a warning that lists the parts found;
 # --strict refuses it.
 add_test(NAME "crash: a rigid-part name that matches nothing runs with a warning"
@@ -128,6 +133,7 @@ add_test(NAME "crash: --strict refuses a rigid-part name that matches nothing"
             -P ${crash_script})
 set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
     "crash: a mesh with its axes and unit stated runs clean under --strict"
+    "crash: an STL car body in millimetres runs clean under --strict"
     "crash: a rigid-part name that matches nothing runs with a warning"
     "crash: --strict refuses a rigid-part name that matches nothing" PROPERTIES LABELS crash)
 
