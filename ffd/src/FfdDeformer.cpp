@@ -311,8 +311,14 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         if (area > 0.0 && !(sum.norm() > cSheetCancellation * area))
             deformer.mSheetVertices[v] = any_sheet = true;
     }
+    // intent: only the sheet vertices' normals change (the face normals and every other vertex's are as
+    // computed above), so only they are computed again
     if (any_sheet)
-        deformer.RecomputeNormals();
+    {
+        for (std::uint32_t v = 0; v < vertex_count; ++v)
+            if (deformer.mSheetVertices[v] != 0)
+                deformer.mNormals[v] = deformer.VertexNormal(v);
+    }
     else
         std::vector<std::uint8_t>().swap(deformer.mSheetVertices);
     deformer.mRestNormals = deformer.mNormals;
