@@ -52,6 +52,10 @@ Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettin
     if (inSettings.mJobs != nullptr && (inSettings.mJobs->mParallelFor == nullptr || inSettings.mJobs->mWorkerCount < 1))
         return MakeError(EError::InvalidArgument,
                          "DamageWorldSettings.mJobs needs an mParallelFor and an mWorkerCount >= 1 (or pass null)");
+    if (inSettings.mSpeculativeContacts != ESpeculativeContacts::StopAtSurface &&
+        inSettings.mSpeculativeContacts != ESpeculativeContacts::ResolveWhole)
+        return MakeError(EError::InvalidArgument,
+                         "DamageWorldSettings.mSpeculativeContacts is not an ESpeculativeContacts value");
     if (inSettings.mMaxContactsPerPair < 9)
         return MakeError(EError::InvalidArgument, "DamageWorldSettings.mMaxContactsPerPair must be >= 9");
     if (inSettings.mDeferDents && (inSettings.mJobs == nullptr || inSettings.mJobs->mStartTask == nullptr ||
@@ -378,8 +382,21 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             state_b.mLinearVelocity = previous->mLinearB;
             state_b.mAngularVelocity = previous->mAngularB;
         }
-        auto speculative_speed = [&](const CollisionContact& inContact) {
-            return inTimeStep > 0.0 ? std::max(-inContact.mPenetrationDepth, 0.0) / inTimeStep : 0.0;
+        // intent: a contact reported before touching (a gap g within the engine's margin) constrains only the
+        // approach beyond s = g / dt (the rest comes with the next step's contact), unless the engine
+        // resolves a hit it predicts within the step whole (ESpeculativeContacts::ResolveWhole): then such a
+        // contact (closing beyond s faster than resting) is resolved as a touching one, rebound included
+        const bool resolve_whole = mSettings.mSpeculativeContacts == ESpeculativeContacts::ResolveWhole;
+        auto speculative_speed = [&](const CollisionContact& inContact)
+        {
+            if (!(inTimeStep > 0.0))
+                return 0.0;
+            const double s = std::max(-inContact.mPenetrationDepth, 0.0) / inTimeStep;
+            if (!resolve_whole || s == 0.0)
+                return s;
+            const double v = RelativeNormalVelocity(
+                state_a, state_b, 0.5 * (inContact.mPointOnA + inContact.mPointOnB), inContact.mNormal);
+            return v + s < -mSettings.mRestingSpeed ? 0.0 : s;
         };
         if (batch.mContacts.size() > mSettings.mMaxContactsPerPair)
         {

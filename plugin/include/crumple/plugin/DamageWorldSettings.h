@@ -6,6 +6,7 @@
 
 #include <crumple/base/JobSystem.h>
 #include <crumple/plugin/CollisionGrouper.h>
+#include <crumple/plugin/ESpeculativeContacts.h>
 
 #include <cstddef>
 
@@ -30,6 +31,10 @@ struct CRUMPLE_API DamageWorldSettings
     /// several, Bullet's one), and its impulse no longer depends on the engine. Turn it off only for a
     /// coupling that resolves contacts gradually itself and reports each step's share as a full impulse.
     bool mCountImpactOnce = true;
+    /// What the engine's solver does with a hit it predicts from a contact reported before touching (see
+    /// ESpeculativeContacts): StopAtSurface for Bullet (and ODE, which reports none), ResolveWhole for Jolt
+    /// or Box2D. docs/adapters.md says how to tell for another engine.
+    ESpeculativeContacts mSpeculativeContacts = ESpeculativeContacts::StopAtSurface;
     /// The host's job system for the per-vertex work of dents (not owned; it must outlive the world);
     /// null: every dent runs on the thread that calls Update/Flush. Results are bitwise identical either way.
     const JobSystem* mJobs = nullptr;
