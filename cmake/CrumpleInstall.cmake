@@ -16,6 +16,8 @@ install(TARGETS ${crumple_targets} crumple_compile_options EXPORT crumpleTargets
 foreach(dir IN LISTS crumple_include_dirs)
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
+# The contract for joining an engine that has no adapter (docs/adapters.md), beside the headers it explains.
+install(FILES ${PROJECT_SOURCE_DIR}/docs/adapters.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(EXPORT crumpleTargets NAMESPACE crumple:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/crumple)
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/crumpleConfig.cmake.in

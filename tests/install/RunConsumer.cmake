@@ -42,6 +42,9 @@ if(EXISTS ${CRUMPLE_BINARY_DIR}/tools/crash/crumple-crash AND EXISTS ${CRUMPLE_B
     if(NOT EXISTS ${prefix}/share/doc/crumple/scenarios.md)
         message(FATAL_ERROR "cmake --install did not install the scenario schema (docs/scenarios.md)")
     endif()
+    if(NOT EXISTS ${prefix}/share/doc/crumple/adapters.md)
+        message(FATAL_ERROR "cmake --install did not install the engine contract (docs/adapters.md)")
+    endif()
     run(${prefix}/bin/crumple-crash ${prefix}/share/crumple/scenarios/pole_frontal_32kmh.json --no-pictures
         --out ${SCRATCH_DIR}/pole)
     run(${prefix}/bin/crumple-replay ${SCRATCH_DIR}/pole/replay.crumple --out ${SCRATCH_DIR}/pole-replay --no-meshes)
