@@ -26,7 +26,7 @@ Status ValidateBodyState(const BodyState& inState)
     if (!(inState.mCenterOfMass.cwiseAbs().maxCoeff() <= cMaxBodyPosition) ||
         !(inState.mTransform.mTranslation.cwiseAbs().maxCoeff() <= cMaxBodyPosition))
         return MakeError(EError::OutOfRange, "BodyState is farther than 1e9 m from the world's origin");
-    if (!IsRotation(inState.mTransform.mRotation, 1.0e-6))
+    if (!IsRotation(inState.mTransform.mRotation, cRotationTolerance))
         return MakeError(EError::DegenerateGeometry, "BodyState.mTransform.mRotation is not a rotation");
     if (inState.mHasShapeBounds)
     {
@@ -54,7 +54,8 @@ Status ValidateBodyState(const BodyState& inState)
             return MakeError(EError::OutOfRange, "BodyState.mInverseInertiaWorld has an entry above 1e12 1/(kg m^2)");
         const Mat3& inverse_inertia = inState.mInverseInertiaWorld;
         const double scale = inverse_inertia.cwiseAbs().maxCoeff();
-        if ((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() > 1.0e-9 * scale)
+        if (!((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() <=
+              cInverseInertiaAsymmetry * scale))
             return MakeError(EError::InvalidArgument, "BodyState.mInverseInertiaWorld is not symmetric");
         // intent: a Cholesky factorisation that succeeds proves the matrix positive definite, far cheaper than
         // its eigenvalues (this runs for every awake body at every step); only a matrix it refuses (a zero or
@@ -67,6 +68,21 @@ Status ValidateBodyState(const BodyState& inState)
                              "BodyState.mInverseInertiaWorld has a negative eigenvalue: inertia must be positive");
     }
     return Status::Ok();
+}
+
+BodyState CanonicalBodyState(const BodyState& inState)
+{
+    BodyState state = inState;
+    // intent: the strict bounds the library held before it took single-precision input; within them a state
+    // is kept as given, so recordings of double-precision engines keep their bits
+    if (!IsRotation(state.mTransform.mRotation, 1.0e-6))
+        state.mTransform.mRotation = Quat(state.mTransform.mRotation).normalized().toRotationMatrix();
+    // (a copy: the symmetric part written into the matrix it reads would alias)
+    const Mat3 inverse_inertia = state.mInverseInertiaWorld;
+    if ((inverse_inertia - inverse_inertia.transpose()).cwiseAbs().maxCoeff() >
+        1.0e-9 * inverse_inertia.cwiseAbs().maxCoeff())
+        state.mInverseInertiaWorld = 0.5 * (inverse_inertia + inverse_inertia.transpose());
+    return state;
 }
 
 } // namespace crumple::plugin

@@ -153,14 +153,14 @@ Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
         const std::uint32_t index = mFreeBodies.back();
         mFreeBodies.pop_back();
         BodySlot& slot = mBodies[index];
-        slot.mState = inState;
+        slot.mState = CanonicalBodyState(inState);
         slot.mAlive = true;
         slot.mDispatchEachStep = false;
         return BodyId{index, slot.mGeneration};
     }
     if (mBodies.size() >= BodyId::cInvalid)
         return MakeError(EError::OutOfRange, "too many bodies");
-    mBodies.push_back({inState, true, 0, false, {}});
+    mBodies.push_back({CanonicalBodyState(inState), true, 0, false, {}});
     return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1), 0};
 }
 
@@ -170,7 +170,7 @@ Status DamageWorld::SetBodyState(BodyId inBody, const BodyState& inState)
         return MakeError(EError::OutOfRange, "SetBodyState: body " + std::to_string(inBody.mValue) + " does not exist");
     if (Status valid = ValidateBodyState(inState); !valid)
         return valid;
-    mBodies[inBody.mValue].mState = inState;
+    mBodies[inBody.mValue].mState = CanonicalBodyState(inState);
     return Status::Ok();
 }
 

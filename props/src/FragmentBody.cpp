@@ -26,6 +26,8 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
             return MakeError(EError::OutOfRange, "FragmentBody: fragment node " + std::to_string(node) + " is not a node");
     if (Status state = plugin::ValidateBodyState(inPropBody); !state)
         return state.GetError();
+    // intent: a single-precision engine's frame within round-off of a rotation, made one
+    const plugin::BodyState prop_body = plugin::CanonicalBodyState(inPropBody);
     // intent: the nodes' lumped masses are the fragment's mass shared out (the body's momentum is theirs)
     double fragment_nodes_mass = 0.0;
     for (int node : inFragment.mNodes)
@@ -54,7 +56,7 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
     // racing fence's, on the game's thread). Every sum keeps its own terms in node order, so each is bit for bit
     // what a pass of its own gave. The first: momentum, mass centre, angular momentum about c, hull points and
     // the nodes' world kinetic energy (the prop body's motion added to every node as to the body).
-    const Mat3& rotation = inPropBody.mTransform.mRotation;
+    const Mat3& rotation = prop_body.mTransform.mRotation;
     FragmentRigidBody result;
     plugin::ConvexBodySettings& body = result.mBody;
     body.mHullPoints.reserve(inFragment.mNodes.size());
@@ -69,7 +71,8 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
         mass_centre += inMasses[n] * inPositions[n];
         angular += inMasses[n] * (inPositions[n] - c).cross(inVelocities[n]);
         body.mHullPoints.push_back(axes.transpose() * (inPositions[n] - c));
-        const Vec3 world_velocity = rotation * inVelocities[n] + inPropBody.PointVelocity(inPropBody.mTransform.ToWorld(inPositions[n]));
+        const Vec3 world_velocity = rotation * inVelocities[n] +
+                                    prop_body.PointVelocity(prop_body.mTransform.ToWorld(inPositions[n]));
         world_nodal += 0.5 * inMasses[n] * world_velocity.squaredNorm();
     }
     if (!(nodal_mass > 0.0))
@@ -100,11 +103,12 @@ Result<FragmentRigidBody> FragmentBody(const fem::TetFragment& inFragment, std::
     // intent: to the world through the prop body's state
     body.mMass = inFragment.mMass;
     body.mPrincipalInertia = eigen.eigenvalues();
-    body.mPosition = inPropBody.mTransform.ToWorld(c);
+    body.mPosition = prop_body.mTransform.ToWorld(c);
     body.mOrientation = rotation * axes;
-    body.mLinearVelocity = rotation * velocity + inPropBody.PointVelocity(body.mPosition);
-    body.mAngularVelocity = rotation * spin + (inPropBody.mMotionType == plugin::EMotionType::Static ? Vec3::Zero()
-                                                                                                       : inPropBody.mAngularVelocity);
+    body.mLinearVelocity = rotation * velocity + prop_body.PointVelocity(body.mPosition);
+    body.mAngularVelocity =
+        rotation * spin +
+        (prop_body.mMotionType == plugin::EMotionType::Static ? Vec3::Zero() : prop_body.mAngularVelocity);
     result.mNodalKineticEnergy = world_nodal;
     result.mRigidKineticEnergy = 0.5 * body.mMass * body.mLinearVelocity.squaredNorm() +
                                  0.5 * body.mAngularVelocity.dot(body.WorldInertia() * body.mAngularVelocity);

@@ -60,8 +60,22 @@ constexpr double cMaxBodyAngularSpeed = 1.0e6; ///< rad/s
 constexpr double cMaxBodyPosition = 1.0e9;    ///< m, any coordinate of the centre of mass or the frame
 constexpr double cMaxInverseInertia = 1.0e12; ///< 1/(kg m^2), any entry of the world inverse inertia
 
+/// How far from a proper rotation mTransform.mRotation may be (largest entry of R R^T - I), and how far from
+/// symmetric mInverseInertiaWorld (largest entry of M - M^T over M's largest): an engine in single precision
+/// (Jolt, PhysX, Bullet's default build) hands over rotations orthonormal only to about 1.2e-6 and world
+/// inverse inertias R D R^T asymmetric by up to 1.6e-7 (measured over 1e5 random float rotations).
+constexpr double cRotationTolerance = 1.0e-5;
+constexpr double cInverseInertiaAsymmetry = 1.0e-5;
+
 /// Checks a body state at the API boundary: a motion type of the enum, finite values within the ranges above,
-/// positive mass, symmetric PSD inverse inertia and a proper rotation. The message names the offending field.
+/// positive mass, symmetric PSD inverse inertia and a proper rotation (within the tolerances above). The
+/// message names the offending field.
 CRUMPLE_API Status ValidateBodyState(const BodyState& inState);
+
+/// The state as a DamageWorld keeps it: a valid state (ValidateBodyState) whose rotation is farther than 1e-6
+/// from orthonormal comes back re-orthonormalized (through its quaternion), and an inverse inertia farther
+/// than 1e-9 from symmetric comes back as its symmetric part; anything else comes back bit for bit (a double
+/// precision engine's states are never touched).
+CRUMPLE_API BodyState CanonicalBodyState(const BodyState& inState);
 
 } // namespace crumple::plugin
