@@ -377,7 +377,7 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
             return std::numeric_limits<double>::infinity();
         const double b = inSide.mLength != nullptr
                              ? CrushMaterialAlong(*inSide.mMaterial, CrushDirection(ioCollision, inWhich),
-                                                  *inSide.mLength, inSide.mUp)
+                                                  *inSide.mLength, inSide.mUp, inSide.mForward)
                                    .mCrushB
                              : inSide.mMaterial->mCrushB;
         return b * CrushWidth(ioCollision, inWhich, inSide.mUp, inSide.mMaterial->mMinCrushWidth);
@@ -400,18 +400,27 @@ void ShareCrushEnergy(Collision& ioCollision, const CrushSide& inA, const CrushS
 }
 
 DamageMaterial CrushMaterialAlong(const DamageMaterial& inMaterial, const Vec3& inDirection,
-                                  const BodyLength& inLength, const Vec3& inUp)
+                                  const BodyLength& inLength, const Vec3& inUp, const Vec3& inForward)
 {
-    if (!inMaterial.mHasSideStiffness)
+    if (!inMaterial.mHasSideStiffness && !inMaterial.mHasRearStiffness)
         return inMaterial;
     const Vec3 width = inUp.cross(inLength.mAxis);
-    if (!(std::abs(inDirection.dot(width)) > std::abs(inDirection.dot(inLength.mAxis))))
-        return inMaterial;
-    DamageMaterial side = inMaterial;
-    side.mCrushA = inMaterial.mSideCrushA;
-    side.mCrushB = inMaterial.mSideCrushB;
-    side.mCrushG = inMaterial.mSideCrushG;
-    return side;
+    const bool across = std::abs(inDirection.dot(width)) > std::abs(inDirection.dot(inLength.mAxis));
+    DamageMaterial zone = inMaterial;
+    if (inMaterial.mHasSideStiffness && across)
+    {
+        zone.mCrushA = inMaterial.mSideCrushA;
+        zone.mCrushB = inMaterial.mSideCrushB;
+        zone.mCrushG = inMaterial.mSideCrushG;
+    }
+    // intent: a crush into the body along +forward moves the rear forward: a hit from behind
+    else if (inMaterial.mHasRearStiffness && !across && inDirection.dot(inForward) > 0.0)
+    {
+        zone.mCrushA = inMaterial.mRearCrushA;
+        zone.mCrushB = inMaterial.mRearCrushB;
+        zone.mCrushG = inMaterial.mRearCrushG;
+    }
+    return zone;
 }
 
 std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollisionSide inSide,
@@ -451,7 +460,8 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
         measured = MeasureCrushBody(inDeformer, inUp);
     const CrushBody& body = inBody != nullptr ? *inBody : *measured;
     // The stiffness this crush meets: the sides' when it runs across the body and the material has one.
-    const DamageMaterial material = CrushMaterialAlong(inBodyMaterial, plan.mDirection, body.mLength, inUp);
+    const DamageMaterial material =
+        CrushMaterialAlong(inBodyMaterial, plan.mDirection, body.mLength, inUp, body.mForward);
     const double front = surface.mFront;
     // A move shallower than the material's smallest dent (the fade of a neighbouring crush) is no crush: it
     // must not waive the no-damage energy G of an undamaged front.

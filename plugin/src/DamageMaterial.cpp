@@ -43,6 +43,16 @@ Status ValidateDamageMaterial(const DamageMaterial& inMaterial)
         if (!(material.mSideCrushG >= 0.0 && material.mSideCrushG <= 1.0e12))
             return MakeError(EError::InvalidArgument, "DamageMaterial.mSideCrushG must be in [0, 1e12] J/m");
     }
+    if (material.mHasRearStiffness)
+    {
+        if (!(material.mRearCrushA >= 0.0 && material.mRearCrushA <= 1.0e12))
+            return MakeError(EError::InvalidArgument, "DamageMaterial.mRearCrushA must be in [0, 1e12] N/m");
+        if (!(material.mRearCrushB > 0.0 && material.mRearCrushB <= 1.0e12))
+            return MakeError(EError::InvalidArgument,
+                             "DamageMaterial.mRearCrushB must be in (0, 1e12] N/m^2");
+        if (!(material.mRearCrushG >= 0.0 && material.mRearCrushG <= 1.0e12))
+            return MakeError(EError::InvalidArgument, "DamageMaterial.mRearCrushG must be in [0, 1e12] J/m");
+    }
     if (!(std::isfinite(material.mMinCrushWidth) && material.mMinCrushWidth > 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
     if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))

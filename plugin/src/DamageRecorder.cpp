@@ -63,6 +63,7 @@ void DamageRecorder::RecordNewObjects()
         record.mSettings.mDeformer = object.GetDeformer().GetSettings();
         record.mSettings.mInterpolateWideImpacts = object.GetInterpolateWideImpacts();
         record.mSettings.mUpAxis = object.GetUpAxis();
+        record.mSettings.mForwardAxis = object.GetCrushBody().mForward;
         for (const ffd::FfdLattice& zone : object.GetDeformer().GetZones())
             record.mInitialControls.push_back(zone.GetControlDisplacements());
         Write(EncodeReplayRecord(EReplayRecord::Object, EncodeRecordedObject(record)));

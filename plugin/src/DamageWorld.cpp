@@ -515,7 +515,8 @@ CrushSide DamageWorld::CrushSideOf(BodyId inBody) const
     {
         const DeformableObject& object = mObjects[id.mValue].mObject.front();
         if (object.GetMaterial().mModel == ECrushModel::Campbell)
-            return {&object.GetMaterial(), object.GetUpAxis(), &object.GetCrushBody().mLength};
+            return {&object.GetMaterial(), object.GetUpAxis(), &object.GetCrushBody().mLength,
+                    object.GetCrushBody().mForward};
     }
     return {};
 }

@@ -62,6 +62,13 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     if (!(IsFinite(inSettings.mUpAxis) && std::abs(inSettings.mUpAxis.norm() - 1.0) <= 1.0e-3))
         return MakeError(EError::InvalidArgument, "DeformableObjectSettings.mUpAxis must be a unit vector");
 
+    // intent: the forward axis matters only to a material with the rear's stiffness; others keep any value
+    if (material.mHasRearStiffness &&
+        !(IsFinite(inSettings.mForwardAxis) && std::abs(inSettings.mForwardAxis.norm() - 1.0) <= 1.0e-3 &&
+          std::abs(inSettings.mForwardAxis.dot(inSettings.mUpAxis)) <= 1.0e-3))
+        return MakeError(EError::InvalidArgument,
+                         "DeformableObjectSettings.mForwardAxis must be a unit vector across mUpAxis (the "
+                         "material has the rear's stiffness)");
     if (!(std::isfinite(inSettings.mFittedControlSpacing) && inSettings.mFittedControlSpacing > 0.0))
         return MakeError(EError::InvalidArgument, "DeformableObjectSettings.mFittedControlSpacing must be finite and > 0 m");
 
@@ -80,6 +87,7 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     // The up axis as given (within 1e-3 of unit): a recording keeps it bit for bit, and the crush only
     // takes its direction.
     CrushBody body = MeasureCrushBody(deformer.Get(), inSettings.mUpAxis);
+    body.mForward = inSettings.mForwardAxis;
     return DeformableObject(material, inSettings.mInterpolateWideImpacts, inSettings.mUpAxis, std::move(body), std::move(deformer).Get());
 }
 

@@ -145,6 +145,20 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
         settings.mMaterial.mSideCrushB = reader.ReadDouble();
         settings.mMaterial.mSideCrushG = reader.ReadDouble();
     }
+    // Before version 13 no material had the rear's own stiffness (and the forward axis told nothing). As the
+    // sides': a flag other than 0 or 1 is corrupt, values out of range are DeformableObject::Create's to
+    // refuse.
+    if (inVersion >= 13)
+    {
+        const std::uint8_t rear = reader.ReadU8();
+        if (rear > 1)
+            return MakeError(EError::CorruptData, "object record: the rear stiffness flag is corrupt");
+        settings.mMaterial.mHasRearStiffness = rear == 1;
+        settings.mMaterial.mRearCrushA = reader.ReadDouble();
+        settings.mMaterial.mRearCrushB = reader.ReadDouble();
+        settings.mMaterial.mRearCrushG = reader.ReadDouble();
+        settings.mForwardAxis = reader.ReadVec3();
+    }
     if (reader.Failed() || reader.Remaining() != 0)
         return MakeError(EError::CorruptData, "object record: length does not match its contents");
     // The lattices must be exactly as large as the control state the record carries, so a forged zone size
@@ -307,6 +321,11 @@ std::vector<std::byte> EncodeRecordedObject(const RecordedObject& inObject)
     writer.WriteDouble(settings.mMaterial.mSideCrushA);
     writer.WriteDouble(settings.mMaterial.mSideCrushB);
     writer.WriteDouble(settings.mMaterial.mSideCrushG);
+    writer.WriteU8(settings.mMaterial.mHasRearStiffness ? 1 : 0);
+    writer.WriteDouble(settings.mMaterial.mRearCrushA);
+    writer.WriteDouble(settings.mMaterial.mRearCrushB);
+    writer.WriteDouble(settings.mMaterial.mRearCrushG);
+    writer.WriteVec3(settings.mForwardAxis);
     return writer.TakeBytes();
 }
 

@@ -224,6 +224,22 @@ TEST_CASE("ScenarioFile: defaults apply to keys left out", "[crash]")
     CHECK(side.Get().mVehicle.mMaterial.mSideCrushB == 150000.0);
     CHECK(side.Get().mVehicle.mMaterial.mSideCrushG == 1333.0);
     CHECK(side.Get().mVehicle.mMaterial.mCrushB == defaults.mVehicle.mMaterial.mCrushB); // the ends' kept
+    // The rear's own stiffness alike
+    CHECK_FALSE(partial.Get().mVehicle.mMaterial.mHasRearStiffness);
+    const Result<CrashScenario> rear = ParseCrashScenario(
+        Minimal(
+            R"("mass_kg": 900, "material": {"rear_crush_A_N_per_m": 30000, "rear_crush_B_N_per_m2": 250000, "rear_crush_G_J_per_m": 1800})"),
+        {});
+    REQUIRE(rear.IsValid());
+    CHECK(rear.Get().mVehicle.mMaterial.mHasRearStiffness);
+    CHECK(rear.Get().mVehicle.mMaterial.mRearCrushA == 30000.0);
+    CHECK(rear.Get().mVehicle.mMaterial.mRearCrushB == 250000.0);
+    CHECK(rear.Get().mVehicle.mMaterial.mRearCrushG == 1800.0);
+    CHECK_FALSE(rear.Get().mVehicle.mMaterial.mHasSideStiffness);
+    const Result<CrashScenario> rear_partial =
+        ParseCrashScenario(Minimal(R"("mass_kg": 900, "material": {"rear_crush_B_N_per_m2": 250000})"), {});
+    REQUIRE(rear_partial.HasError());
+    CHECK(rear_partial.GetError().mMessage.find("go together") != std::string::npos);
     CHECK(partial.Get().mVehicle.mMaterial.mDeformationFactor ==
           defaults.mVehicle.mMaterial.mDeformationFactor);
 }

@@ -4,6 +4,7 @@
 // one along the body keeps the ends' stiffness, the energy split between two cars follows it, and a
 // recording keeps it.
 #include "BoxMesh.h"
+#include "FaceCrushCollision.h"
 #include "ImpulseBodies.h"
 #include "ScratchDirectory.h"
 
@@ -39,37 +40,12 @@ DamageMaterial SoftSides()
 
 DeformableObject MakeCar(const DamageMaterial& inMaterial)
 {
-    DeformableObjectSettings settings;
-    settings.mMesh = common::MakeBoxMesh(cHalf, common::BoxSegmentsForTriangles(cHalf, 12000));
-    settings.mMaterial = inMaterial;
-    settings.mFittedMaxTotalDeformation = 1.5;
-    return DeformableObject::Create(settings).Get();
+    return common::MakeCrushBoxCar(cHalf, inMaterial);
 }
 
-// Four contacts on the car's face whose outward normal is inOutward (+x: the front, +y: the left side), the
-// car body B of the collision (its normal from B to A is the face's outward normal), with inEnergy for the
-// car.
 Collision FaceCollision(const Vec3& inOutward, double inEnergy)
 {
-    const Vec3 along = inOutward.x() != 0.0 ? Vec3::UnitY() : Vec3::UnitX();
-    Collision collision;
-    collision.mBodyA = BodyId{0};
-    collision.mBodyB = BodyId{1};
-    collision.mCrushEnergyB = inEnergy;
-    for (double s : {-0.6, 0.6})
-        for (double z : {-0.3, 0.3})
-        {
-            CollisionContact contact;
-            contact.mLocalPointOnB =
-                Vec3(inOutward.x() * cHalf.x(), inOutward.y() * cHalf.y(), z) + s * along;
-            contact.mLocalPointOnA = contact.mLocalPointOnB;
-            contact.mLocalNormalOnB = inOutward;
-            contact.mLocalNormalOnA = -inOutward;
-            contact.mImpulse = 2000.0;
-            contact.mAbsorbedEnergy = inEnergy / 4.0;
-            collision.mContacts.push_back(contact);
-        }
-    return collision;
+    return common::FaceCrushCollision(cHalf, inOutward, inEnergy);
 }
 
 } // namespace

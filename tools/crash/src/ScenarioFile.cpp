@@ -757,7 +757,8 @@ class ScenarioReader
                       {{"deformation_factor_m_per_N_s", "min_deformation_m", "max_deformation_m",
                         "impulse_threshold_N_s", "max_total_deformation_m", "crush_model", "crush_A_N_per_m",
                         "crush_B_N_per_m2", "crush_G_J_per_m", "side_crush_A_N_per_m",
-                        "side_crush_B_N_per_m2", "side_crush_G_J_per_m", "min_crush_width_m",
+                        "side_crush_B_N_per_m2", "side_crush_G_J_per_m", "rear_crush_A_N_per_m",
+                        "rear_crush_B_N_per_m2", "rear_crush_G_J_per_m", "min_crush_width_m",
                         "crushed_length_fraction", "crush_zone_fraction", "preset_file"},
                        hints})
                 : CheckKeys(inMaterial, inPointer,
@@ -765,6 +766,7 @@ class ScenarioReader
                               "impulse_threshold_N_s", "max_total_deformation_m", "crush_model",
                               "crush_A_N_per_m", "crush_B_N_per_m2", "crush_G_J_per_m",
                               "side_crush_A_N_per_m", "side_crush_B_N_per_m2", "side_crush_G_J_per_m",
+                              "rear_crush_A_N_per_m", "rear_crush_B_N_per_m2", "rear_crush_G_J_per_m",
                               "min_crush_width_m", "crushed_length_fraction", "crush_zone_fraction"},
                              hints});
         if (!keys_ok)
@@ -793,26 +795,33 @@ class ScenarioReader
             !ReadNumber(inMaterial, inPointer, "crush_zone_fraction", NumberRange{0.0, true, 0.5, false}, false,
                         material.mCrushZoneFraction))
             return false;
-        // The sides' own stiffness: all three keys or none (a preset's set stays unless all three replace
-        // it).
-        const int side_keys = static_cast<int>(inMaterial.contains("side_crush_A_N_per_m")) +
-                              static_cast<int>(inMaterial.contains("side_crush_B_N_per_m2")) +
-                              static_cast<int>(inMaterial.contains("side_crush_G_J_per_m"));
-        if (side_keys != 0 && side_keys != 3)
-            return Fail(EError::InvalidArgument, Child(inPointer, "side_crush_A_N_per_m"),
-                        "side_crush_A_N_per_m, side_crush_B_N_per_m2 and side_crush_G_J_per_m go together: "
-                        "give all three or none");
-        if (side_keys == 3)
+        // A zone's own stiffness (the sides', the rear's): all three keys or none (a preset's set stays
+        // unless all three replace it).
+        const auto read_zone =
+            [&](const std::string& inZone, bool& outHas, double& outA, double& outB, double& outG)
         {
-            if (!ReadNumber(inMaterial, inPointer, "side_crush_A_N_per_m",
-                            NumberRange{0.0, false, 1.0e12, false}, true, material.mSideCrushA) ||
-                !ReadNumber(inMaterial, inPointer, "side_crush_B_N_per_m2",
-                            NumberRange{0.0, true, 1.0e12, false}, true, material.mSideCrushB) ||
-                !ReadNumber(inMaterial, inPointer, "side_crush_G_J_per_m",
-                            NumberRange{0.0, false, 1.0e12, false}, true, material.mSideCrushG))
+            const std::string a = inZone + "_crush_A_N_per_m", b = inZone + "_crush_B_N_per_m2",
+                              g = inZone + "_crush_G_J_per_m";
+            const int keys = static_cast<int>(inMaterial.contains(a)) +
+                             static_cast<int>(inMaterial.contains(b)) +
+                             static_cast<int>(inMaterial.contains(g));
+            if (keys != 0 && keys != 3)
+                return Fail(EError::InvalidArgument, Child(inPointer, a),
+                            a + ", " + b + " and " + g + " go together: give all three or none");
+            if (keys == 0)
+                return true;
+            if (!ReadNumber(inMaterial, inPointer, a, NumberRange{0.0, false, 1.0e12, false}, true, outA) ||
+                !ReadNumber(inMaterial, inPointer, b, NumberRange{0.0, true, 1.0e12, false}, true, outB) ||
+                !ReadNumber(inMaterial, inPointer, g, NumberRange{0.0, false, 1.0e12, false}, true, outG))
                 return false;
-            material.mHasSideStiffness = true;
-        }
+            outHas = true;
+            return true;
+        };
+        if (!read_zone("side", material.mHasSideStiffness, material.mSideCrushA, material.mSideCrushB,
+                       material.mSideCrushG) ||
+            !read_zone("rear", material.mHasRearStiffness, material.mRearCrushA, material.mRearCrushB,
+                       material.mRearCrushG))
+            return false;
         std::size_t model = static_cast<std::size_t>(material.mModel);
         if (!ReadEnum(inMaterial, inPointer, "crush_model", {"impulse_factor", "campbell"}, {}, false, model))
             return false;

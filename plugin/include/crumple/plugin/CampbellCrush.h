@@ -131,14 +131,19 @@ struct CRUMPLE_API CrushBody
     std::vector<std::uint32_t> mLargeTriangles; ///< Ascending
     Vec3 mRestMin = Vec3::Zero(); ///< The rest mesh's bounding box in the body frame (m): how far across a
     Vec3 mRestMax = Vec3::Zero(); ///< crush an impactor's face can meet the body
+    /// The body's forward direction (DeformableObjectSettings::mForwardAxis; MeasureCrushBody leaves +x):
+    /// tells its rear from its front (CrushMaterialAlong)
+    Vec3 mForward = Vec3::UnitX();
 };
 
-/// The material a crush along inDirection (body frame, unit) meets: inMaterial itself, or, when it has the
-/// sides' stiffness (DamageMaterial::mHasSideStiffness) and the direction lies nearer the body's width
-/// (inUp x inLength.mAxis) than its length, a copy whose mCrushA, B and G are the sides'. PlanCampbellCrush
-/// and ShareCrushEnergy crush with it.
+/// The material a crush along inDirection (body frame, unit, into the body) meets: inMaterial itself, or a
+/// copy whose mCrushA, B and G are the sides' when it has them (DamageMaterial::mHasSideStiffness) and the
+/// direction lies nearer the body's width (inUp x inLength.mAxis) than its length, or the rear's when it has
+/// them (mHasRearStiffness), the direction lies along the length and pushes the body forward (inDirection .
+/// inForward > 0: a hit from behind). PlanCampbellCrush and ShareCrushEnergy crush with it.
 CRUMPLE_API DamageMaterial CrushMaterialAlong(const DamageMaterial& inMaterial, const Vec3& inDirection,
-                                              const BodyLength& inLength, const Vec3& inUp);
+                                              const BodyLength& inLength, const Vec3& inUp,
+                                              const Vec3& inForward = Vec3::UnitX());
 
 /// Measures inDeformer's rest mesh for PlanCampbellCrush.
 CRUMPLE_API CrushBody MeasureCrushBody(const ffd::FfdDeformer& inDeformer, const Vec3& inUp);
@@ -163,6 +168,7 @@ struct CRUMPLE_API CrushSide
     /// The body's length (CrushBody::mLength), which tells a crush across the body from one along it
     /// (CrushMaterialAlong); null: the ends' stiffness whatever the direction
     const BodyLength* mLength = nullptr;
+    Vec3 mForward = Vec3::UnitX(); ///< The body's forward direction, which tells its rear from its front
 };
 
 /// Sets the collision's mCrushEnergyA and mCrushEnergyB: its absorbed energy split between the sides in

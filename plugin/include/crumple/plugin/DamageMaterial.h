@@ -62,6 +62,16 @@ struct CRUMPLE_API DamageMaterial
     double mSideCrushA = 0.0; ///< The sides' A (N/m), in [0, 1e12]; read only with mHasSideStiffness
     double mSideCrushB = 1.0; ///< The sides' B (N/m^2), in (0, 1e12]
     double mSideCrushG = 0.0; ///< The sides' G (J/m), in [0, 1e12]
+    /// The rear's own Campbell stiffness: when set, a crush along the body that pushes it forward (a hit from
+    /// behind: the crush direction within 90 degrees of DeformableObjectSettings::mForwardAxis) takes
+    /// mRearCrushA, B and G; the front keeps mCrushA, B and G, and across the body the sides' take precedence
+    /// (mHasSideStiffness). A car's rear structure is not its front (SAE 2010-01-0069 measured both on one
+    /// model and found that CRASH3's default coefficients did not capture the difference). Off by default,
+    /// with no preset value, as for the sides: the rear's coefficients belong to the vehicle's data.
+    bool mHasRearStiffness = false;
+    double mRearCrushA = 0.0; ///< The rear's A (N/m), in [0, 1e12]; read only with mHasRearStiffness
+    double mRearCrushB = 1.0; ///< The rear's B (N/m^2), in (0, 1e12]
+    double mRearCrushG = 0.0; ///< The rear's G (J/m), in [0, 1e12]
     /// Narrowest width a crush is spread over (m), > 0: a car's bumper beam and longitudinal rails carry
     /// a pole's load over more than the pole's diameter. An assumption to set per vehicle, not a measured value.
     double mMinCrushWidth = 0.5;

@@ -33,6 +33,10 @@ struct CRUMPLE_API DeformableObjectSettings
     bool mInterpolateWideImpacts = true; ///< Fill gaps between contacts wider than the lattice spacing
     /// The body's up direction (body frame, unit): the Campbell crush measures its width across it
     Vec3 mUpAxis = Vec3::UnitZ();
+    /// The body's forward direction (body frame, unit, across mUpAxis): tells a hit from behind from a
+    /// frontal one, for a material with the rear's own stiffness (DamageMaterial::mHasRearStiffness; checked
+    /// only then)
+    Vec3 mForwardAxis = Vec3::UnitX();
 };
 
 /// Controls per axis for a lattice of inSize (m) with at most inSpacing (m) between controls: ceil(size /

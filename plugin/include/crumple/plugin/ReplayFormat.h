@@ -56,10 +56,12 @@ struct CRUMPLE_API Replay
 /// per collision, after the crush energies, the shape boxes of B on A and of A on B (each u8 known, the
 /// centre and three half axes as f64 Vec3s).
 /// 12: the material's side stiffness (u8 flag, then A, B and G as f64, after the crush zone fraction).
-/// Written: 12. Read: 12 down to 7 (whose contacts are frictionless, objects have no rigid parts before 8,
-/// no occupant cell (fraction 0.5) before 10, collisions no shape boxes before 11 and materials no side
-/// stiffness before 12, so their recordings still replay as they were made).
-constexpr std::uint32_t cReplayVersion = 12;
+/// 13: the material's rear stiffness (u8 flag, then A, B and G as f64) and the object's forward axis (a f64
+/// Vec3), after the side stiffness.
+/// Written: 13. Read: 13 down to 7 (whose contacts are frictionless, objects have no rigid parts before 8,
+/// no occupant cell (fraction 0.5) before 10, collisions no shape boxes before 11, materials no side
+/// stiffness before 12 and no rear stiffness before 13, so their recordings still replay as they were made).
+constexpr std::uint32_t cReplayVersion = 13;
 /// The oldest version DecodeReplay still reads.
 constexpr std::uint32_t cOldestReplayVersion = 7;
 
