@@ -25,8 +25,8 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 #if defined(CRUMPLE_BENCH_CRASH)
     // Full-width rigid-wall crashes of every body in each engine, default material (Campbell's law, mid-size
     // class). The error: the energy CRASH3 reads from the residual crush profile (six stations C1..C6 across
-    // the damage width, FrontCrushProfile) against the energy the collision absorbed, E = (1 - e^2) m v^2 / 2
-    // (Baraff's impulse at restitution e): how faithfully the dent stores the energy, whatever the front's
+    // the damage width, StruckCrushProfile) against the energy the collision absorbed, E = (1 - e^2) m v^2 /
+    // 2 (Baraff's impulse at restitution e): how faithfully the dent stores the energy, whatever the front's
     // shape. Beside it the largest front crush against the law's answer for a flat front as wide as the body,
     // C(E / w) (a rounded or slanted front crushes deeper where it meets the wall first), and against the
     // oracle's nominal mid-size line (shared/data/crash/campbell_oracle.csv, b0 = 2.173 m/s, b1 = 24.07 1/s),
@@ -67,7 +67,7 @@ void RunCrushBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
                 const double line = (v - 2.173) / 24.07;
                 // CRASH3: linear crush between stations, E = sum over the five segments of
                 // (L / 5) (A (Ci + Cj) / 2 + B (Ci^2 + Ci Cj + Cj^2) / 6 + G).
-                const CrushProfile& profile = outcome.Get().mFrontProfile;
+                const CrushProfile& profile = outcome.Get().mCrushProfile;
                 const plugin::DamageMaterial& m = body.mVehicle.mMaterial;
                 double crash3 = 0.0;
                 for (std::size_t i = 0; i + 1 < profile.mC.size(); ++i)

@@ -196,8 +196,8 @@ TEST_CASE("Crush model: engines agree, crush grows with speed and width, the roo
             for (EEngine engine : {EEngine::Bullet, EEngine::Ode})
             {
                 const Run& run = Find(body.mName, "full wall", 56.0, engine);
-                INFO(body.mName << ", " << ToString(engine) << ": front " << run.mFront << " m, CRASH3 average "
-                                << run.mOutcome.mFrontProfile.Average() << " m");
+                INFO(body.mName << ", " << ToString(engine) << ": front " << run.mFront
+                                << " m, CRASH3 average " << run.mOutcome.mCrushProfile.Average() << " m");
                 CHECK(run.mFront >= 0.369);
                 CHECK(run.mFront <= 0.742);
             }

@@ -149,9 +149,10 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
                                       {"cap_split_vertices", mesh->mCapSplitVertices}};
     else
         report["mesh_preparation"] = nullptr;
-    report["crush_profile"] = {{"damage_width_m", inOutcome.mFrontProfile.mDamageWidth},
-                               {"C_m", inOutcome.mFrontProfile.mC},
-                               {"average_m", inOutcome.mFrontProfile.Average()}};
+    report["crush_profile"] = {{"face", CarFaceName(inOutcome.mCrushProfile.mFace)},
+                               {"damage_width_m", inOutcome.mCrushProfile.mDamageWidth},
+                               {"C_m", inOutcome.mCrushProfile.mC},
+                               {"average_m", inOutcome.mCrushProfile.Average()}};
     report["outward_displacement_m"] = inOutcome.mOutwardDisplacement;
     if (const std::optional<WallGap>& gap = inOutcome.mWallGap)
         report["wall_gap"] = {
@@ -225,10 +226,11 @@ void PrintSummary(std::FILE* inStream, const CrashScenario& inScenario, const Cr
         std::fprintf(inStream, "  %s\n", MeshPreparationText(*mesh).c_str());
     for (const std::string& warning : inOutcome.mWarnings)
         std::fprintf(inStream, "  WARNING %s\n", warning.c_str());
-    const CrushProfile& profile = inOutcome.mFrontProfile;
-    std::fprintf(inStream, "  front crush profile over %.2f m: C1..C6 %.3f %.3f %.3f %.3f %.3f %.3f m, average %.3f m\n",
-                 profile.mDamageWidth, profile.mC[0], profile.mC[1], profile.mC[2], profile.mC[3], profile.mC[4],
-                 profile.mC[5], profile.Average());
+    const CrushProfile& profile = inOutcome.mCrushProfile;
+    std::fprintf(inStream,
+                 "  %s crush profile over %.2f m: C1..C6 %.3f %.3f %.3f %.3f %.3f %.3f m, average %.3f m\n",
+                 CarFaceName(profile.mFace), profile.mDamageWidth, profile.mC[0], profile.mC[1],
+                 profile.mC[2], profile.mC[3], profile.mC[4], profile.mC[5], profile.Average());
     if (inOutcome.mLimitedDents > 0)
         std::fprintf(inStream, "  %d dent(s) clamped by the material's maximum deformation: the crush is a lower bound\n",
                      inOutcome.mLimitedDents);
@@ -295,12 +297,13 @@ Status WriteReportHtml(const std::filesystem::path& inPath, const CrashScenario&
     row("folded vertices (normal turned over)", std::to_string(inOutcome.mFoldedVertices) + " of " +
                                                      std::to_string(inOutcome.mRestMesh.mPositions.size()));
     {
-        const CrushProfile& profile = inOutcome.mFrontProfile;
+        const CrushProfile& profile = inOutcome.mCrushProfile;
         std::string stations;
         for (double c : profile.mC)
             stations += Number(c, 3) + " ";
-        row("front crush profile C1..C6 (CRASH3)", stations + "m over " + Number(profile.mDamageWidth, 2) +
-                                                       " m, average " + Number(profile.Average(), 3) + " m");
+        row(std::string(CarFaceName(profile.mFace)) + " crush profile C1..C6 (CRASH3)",
+            stations + "m over " + Number(profile.mDamageWidth, 2) + " m, average " +
+                Number(profile.Average(), 3) + " m");
     }
     row("dents clamped by a material bound", std::to_string(inOutcome.mLimitedDents) +
                                                  (inOutcome.mLimitedDents > 0 ? " (the crush is a lower bound)" : ""));

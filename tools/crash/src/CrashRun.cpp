@@ -344,7 +344,7 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         outcome.mResidualCrush[static_cast<int>(zone)] = ResidualCrush(outcome.mRestMesh, outcome.mPositions, zone);
     outcome.mFoldedVertices = common::FoldedVertices(outcome.mRestMesh, outcome.mPositions);
     outcome.mFoldedTriangles = common::FoldedTriangles(outcome.mRestMesh, outcome.mPositions);
-    outcome.mFrontProfile = FrontCrushProfile(outcome.mRestMesh, outcome.mPositions);
+    outcome.mCrushProfile = StruckCrushProfile(outcome.mRestMesh, outcome.mPositions);
     // intent: the car's initial travel in its own frame; a standing car (a target hitting it) has none
     const double start_speed = outcome.mStartVelocity.norm();
     if (start_speed > 0.0)
@@ -413,7 +413,7 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
         return time < 0.0 ? std::numeric_limits<double>::infinity() : time;
     }
     case EQuantity::CrushAverage:
-        return mFrontProfile.Average();
+        return mCrushProfile.Average();
     case EQuantity::OutwardDisplacement:
         return mOutwardDisplacement;
     case EQuantity::WallGap:
@@ -422,18 +422,45 @@ double CrashOutcome::Measure(const Expectation& inExpectation) const
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)
+const char* CarFaceName(ECarFace inFace)
+{
+    switch (inFace)
+    {
+    case ECarFace::Front:
+        return "front";
+    case ECarFace::Rear:
+        return "rear";
+    case ECarFace::Left:
+        return "left";
+    case ECarFace::Right:
+        return "right";
+    }
+    return "unknown";
+}
+
+CrushProfile FaceCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions,
+                              ECarFace inFace)
 {
     constexpr double cDamaged = 0.01; // m: a move shallower than this is not damage
+    // intent: the face's normal axis and outward sign, and the axis across it that the stations run along
+    const bool end = inFace == ECarFace::Front || inFace == ECarFace::Rear;
+    const int normal = end ? 0 : 1, across = end ? 1 : 0;
+    const double outward = inFace == ECarFace::Front || inFace == ECarFace::Left ? 1.0 : -1.0;
     const ffd::AlignedBox bounds = ffd::BoundingBox(inRest.mPositions);
-    const double front_start = bounds.mMax.x() - 0.25 * (bounds.mMax.x() - bounds.mMin.x());
+    const double extent = bounds.mMax[normal] - bounds.mMin[normal];
+    const double face = outward > 0.0 ? bounds.mMax[normal] : bounds.mMin[normal];
+    const auto in_quarter = [&](const Vec3& inRestPoint)
+    { return outward * (face - inRestPoint[normal]) <= 0.25 * extent; };
+    const auto inward = [&](std::size_t inVertex)
+    { return outward * (inRest.mPositions[inVertex][normal] - inPositions[inVertex][normal]); };
     CrushProfile profile;
+    profile.mFace = inFace;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t v = 0; v < inPositions.size(); ++v)
-        if (inRest.mPositions[v].x() >= front_start && inRest.mPositions[v].x() - inPositions[v].x() > cDamaged)
+        if (in_quarter(inRest.mPositions[v]) && inward(v) > cDamaged)
         {
-            lo = std::min(lo, inRest.mPositions[v].y());
-            hi = std::max(hi, inRest.mPositions[v].y());
+            lo = std::min(lo, inRest.mPositions[v][across]);
+            hi = std::max(hi, inRest.mPositions[v][across]);
         }
     if (!(hi > lo))
         return profile;
@@ -443,11 +470,11 @@ CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const 
     for (std::size_t v = 0; v < inPositions.size(); ++v)
     {
         const Vec3& rest = inRest.mPositions[v];
-        if (rest.x() < front_start)
+        if (!in_quarter(rest))
             continue;
-        const double crush = rest.x() - inPositions[v].x();
+        const double crush = inward(v);
         for (std::size_t station = 0; station < 6; ++station)
-            if (std::abs(rest.y() - (lo + static_cast<double>(station) * spacing)) <= 0.5 * spacing)
+            if (std::abs(rest[across] - (lo + static_cast<double>(station) * spacing)) <= 0.5 * spacing)
             {
                 profile.mC[station] = measured[station] ? std::max(profile.mC[station], crush) : crush;
                 measured[station] = true;
@@ -466,6 +493,16 @@ CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const 
         profile.mC[station] = (1.0 - t) * profile.mC[left] + t * profile.mC[right];
     }
     return profile;
+}
+
+CrushProfile StruckCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions)
+{
+    CrushProfile struck = FaceCrushProfile(inRest, inPositions, ECarFace::Front);
+    for (ECarFace face : {ECarFace::Rear, ECarFace::Left, ECarFace::Right})
+        if (CrushProfile profile = FaceCrushProfile(inRest, inPositions, face);
+            profile.Average() > struck.Average())
+            struck = profile;
+    return struck;
 }
 
 double OutwardDisplacement(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, const Vec3& inForward)

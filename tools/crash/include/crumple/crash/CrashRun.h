@@ -37,12 +37,26 @@ struct CarSample
     Vec3 mVelocity = Vec3::Zero();      ///< Linear velocity (m/s)
 };
 
+/// A face of the car's body box (body frame: x forward, y to the left, z up).
+enum class ECarFace
+{
+    Front, ///< +x
+    Rear,  ///< -x
+    Left,  ///< +y
+    Right, ///< -y
+};
+
+/// The face's name in reports ("front", "rear", "left", "right").
+const char* CarFaceName(ECarFace inFace);
+
 /// The crush profile as accident reconstruction measures it (CRASH3/WinSMASH): six equally spaced crush
-/// depths across the damaged width of the front, C1 at the car's right (-y), C6 at its left (+y).
+/// depths across the damaged width of a face, in the order of the body axis across it (the ends: C1 at the
+/// car's right, -y, C6 at its left; the sides: C1 at the rear, -x, C6 at the front).
 struct CrushProfile
 {
-    double mDamageWidth = 0.0;      ///< Width of the front whose crush exceeds 1 cm (m); 0: no damage
-    std::array<double, 6> mC{};     ///< Crush depth at the six stations (m), backward along -x
+    ECarFace mFace = ECarFace::Front; ///< The face measured
+    double mDamageWidth = 0.0;        ///< Width of the face whose crush exceeds 1 cm (m); 0: no damage
+    std::array<double, 6> mC{};       ///< Crush depth at the six stations (m), inward across the face
     /// CRASH3's average, (C1/2 + C2 + C3 + C4 + C5 + C6/2) / 5 (m): the crush of the same energy spread
     /// uniformly over the damage width
     double Average() const { return (0.5 * mC[0] + mC[1] + mC[2] + mC[3] + mC[4] + 0.5 * mC[5]) / 5.0; }
@@ -56,7 +70,7 @@ struct CrashOutcome
     int mFoldedTriangles = 0;               ///< Car body triangles turned over (common::FoldedTriangles)
     std::vector<std::string> mWarnings;     ///< What the run doubts about its input (a sideways mesh)
     std::optional<MeshPreparation> mMeshPreparation; ///< A mesh body's re-cut; empty for the procedural box
-    CrushProfile mFrontProfile;             ///< The front's crush profile (FrontCrushProfile)
+    CrushProfile mCrushProfile;                      ///< The struck face's crush profile (StruckCrushProfile)
     double mOutwardDisplacement = 0.0;      ///< Largest outward residual displacement (OutwardDisplacement, m)
     /// A rigid or offset wall's gap behind its final plane (MeasureWallGap); empty for other targets
     std::optional<WallGap> mWallGap;
@@ -115,10 +129,17 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
 /// also shows in left and right.
 double ResidualCrush(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions, EZone inZone);
 
-/// The front's crush profile: the vertices of the front quarter (rest x within a quarter of the length of the
-/// front) whose backward move exceeds 1 cm span the damage width; each of six equally spaced stations across
-/// it takes the deepest backward move of the front-quarter vertices within half a station spacing of it.
-CrushProfile FrontCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
+/// A face's crush profile: the vertices of the face's outer quarter (rest position within a quarter of the
+/// body's length, for an end, or width, for a side, of the face) whose inward move exceeds 1 cm span the
+/// damage width; each of six equally spaced stations across it takes the deepest inward move of the quarter's
+/// vertices within half a station spacing of it.
+CrushProfile FaceCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions,
+                              ECarFace inFace);
+
+/// The profile of the face a crash struck: of the four faces', the one of the largest CRASH3 average (the
+/// front on a tie, and when nothing moved). A reverse into a wall is measured at the rear, a side pole at
+/// the struck side.
+CrushProfile StruckCrushProfile(const ffd::TriangleMesh& inRest, std::span<const Vec3> inPositions);
 
 /// Largest residual displacement of a vertex along inForward (a unit direction in the body frame: the car's
 /// initial direction of travel relative to the target), 0 when no vertex moved forward (m). The target

@@ -124,22 +124,24 @@ struct ImpactSpec
 /// A number the run measures, to check against an expectation.
 enum class EQuantity : std::uint8_t
 {
-    ResidualCrush,  ///< Largest residual vertex displacement in a zone (m)
-    DeltaV,         ///< Change of the car's velocity over the run, |v_end - v_start| (m/s)
-    TotalImpulse,   ///< Sum of the car's collision impulses (N s)
-    EnergyAbsorbed, ///< Kinetic energy lost, 1/2 m (|v_start|^2 - |v_end|^2) (J)
-    Collisions,     ///< Number of collisions involving the car
-    FoldedVertices, ///< Car body vertices whose surface normal the dents turned over (a fold): count
+    ResidualCrush,       ///< Largest residual vertex displacement in a zone (m)
+    DeltaV,              ///< Change of the car's velocity over the run, |v_end - v_start| (m/s)
+    TotalImpulse,        ///< Sum of the car's collision impulses (N s)
+    EnergyAbsorbed,      ///< Kinetic energy lost, 1/2 m (|v_start|^2 - |v_end|^2) (J)
+    Collisions,          ///< Number of collisions involving the car
+    FoldedVertices,      ///< Car body vertices whose surface normal the dents turned over (a fold): count
     OutwardDisplacement, ///< Largest residual displacement of a car vertex forward, along the car's initial
                          ///< direction of travel (m): a crush pushes the struck surface back, so a vertex
                          ///< moved forward is damage that leaked out of the dent (a ripple, a bulge)
-    FoldedTriangles, ///< Car body triangles whose face normal the dents turned over: count
-    CrushAverage,    ///< CRASH3 average of the front's crush profile C1..C6 (m)
+    FoldedTriangles,     ///< Car body triangles whose face normal the dents turned over: count
+    CrushAverage,        ///< CRASH3 average of the struck face's crush profile C1..C6 (m; StruckCrushProfile)
     PeakDeceleration, ///< Largest deceleration of the car along its initial travel (m/s^2): CFC 60 (SAE J211)
                       ///< when the engine step samples at >= 600 Hz, else the unfiltered step differences
-    TimeToZeroVelocity, ///< First time the car's velocity along its initial travel reaches 0 (s); infinite: never
-    WallGap, ///< Rigid and offset walls only: the mean distance the struck front ended behind the wall's final
-             ///< plane (m, MeasureWallGap's mMean): a flat wall leaves a flat front, so this is its dome
+    TimeToZeroVelocity, ///< First time the car's velocity along its initial travel reaches 0 (s); infinite:
+                        ///< never
+    WallGap, ///< Rigid and offset walls only: the mean distance the struck front ended behind the wall's
+             ///< final plane (m, MeasureWallGap's mMean): a flat wall leaves a flat front, so this is its
+             ///< dome
 };
 
 /// Where on the body a ResidualCrush is measured: the outer quarter of the body box along an axis (the
