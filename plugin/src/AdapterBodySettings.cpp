@@ -39,7 +39,8 @@ Status ValidateRigidBody(const std::string& inName, double inMass, const Vec3& i
                                                                "principal moment above the sum of the other two");
     if (!Within(inPosition, cMaxBodyPosition))
         return MakeError(EError::InvalidArgument, inName + ".mPosition must be finite, each coordinate within 1e9 m");
-    if (!IsRotation(inOrientation, 1.0e-6))
+    // intent: within single-precision round-off, as a body state's (the engines normalize their rotations)
+    if (!IsRotation(inOrientation, cRotationTolerance))
         return MakeError(EError::InvalidArgument, inName + ".mOrientation must be a rotation");
     if (!Within(inLinearVelocity, cMaxBodySpeed))
         return MakeError(EError::InvalidArgument, inName + ".mLinearVelocity must be finite, within 1e6 m/s");

@@ -127,8 +127,13 @@ Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, cons
         return MakeError(EError::InvalidArgument, "MakePropBody: the density must be finite and > 0 kg/m^3");
     if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
         return MakeError(EError::InvalidArgument, "MakePropBody: the cell size must be finite and > 0 m");
-    if (!IsFinite(inPose.mTranslation) || !IsRotation(inPose.mRotation, 1.0e-6))
+    if (!IsFinite(inPose.mTranslation) || !IsRotation(inPose.mRotation, plugin::cRotationTolerance))
         return MakeError(EError::InvalidArgument, "MakePropBody: the pose must be a finite rigid transform");
+    // intent: a pose from an engine in single precision, orthonormal only to float round-off, made a rotation
+    // (plugin::CanonicalBodyState's rule: kept bit for bit within 1e-6)
+    Transform pose = inPose;
+    if (!IsRotation(pose.mRotation, 1.0e-6))
+        pose.mRotation = Quat(pose.mRotation).normalized().toRotationMatrix();
 
     // intent: mass, first and second moments over the tetrahedra (exact for a uniform density)
     const std::vector<Vec3>& rest = inMesh.GetRestPositions();
@@ -169,8 +174,8 @@ Result<PropBody> MakePropBody(const fem::TetMesh& inMesh, double inDensity, cons
     plugin::PropBodySettings body;
     body.mMass = mass;
     body.mPrincipalInertia = eigen.eigenvalues();
-    body.mPosition = inPose.ToWorld(centre);
-    body.mOrientation = inPose.mRotation * axes;
+    body.mPosition = pose.ToWorld(centre);
+    body.mOrientation = pose.mRotation * axes;
     body.mHeld = inHeld;
     Result<std::vector<std::vector<Vec3>>> pieces = PropCollisionPieces(moved, inMesh.GetTets(), {}, inCellSize);
     if (pieces.HasError())

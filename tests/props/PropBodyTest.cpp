@@ -120,6 +120,17 @@ TEST_CASE("MakePropBody and PropCollisionPieces refuse bad input and leave out w
     Transform skewed = Pose();
     skewed.mRotation(0, 0) += 0.1;
     CHECK(MakePropBody(slab, 500.0, skewed, true, 0.25).HasError());
+    // A pose from an engine in single precision (orthonormal to about 1e-6) is taken, made a rotation, and
+    // gives the body of the exact pose to float round-off.
+    Transform single = Pose();
+    single.mRotation = Pose().mRotation.cast<float>().cast<double>() * (1.0 + 2.0e-6);
+    REQUIRE_FALSE(IsRotation(single.mRotation, 1.0e-6));
+    const Result<PropBody> from_float = MakePropBody(slab, 500.0, single, true, 0.25);
+    REQUIRE(from_float);
+    const PropBody exact = MakePropBody(slab, 500.0, Pose(), true, 0.25).Get();
+    CHECK(IsRotation(from_float.Get().mBody.mOrientation, 1.0e-9));
+    CHECK((from_float.Get().mBody.mOrientation - exact.mBody.mOrientation).cwiseAbs().maxCoeff() <= 1.0e-6);
+    CHECK((from_float.Get().mBody.mPosition - exact.mBody.mPosition).norm() <= 1.0e-6);
 
     // In the slab's own frame its cubes are the grid's: one piece per cube, its eight corners. Leaving out the
     // first cube's five tetrahedra removes its piece, and only that one.
