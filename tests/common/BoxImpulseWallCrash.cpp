@@ -12,7 +12,7 @@ using namespace crumple::plugin;
 
 bool BoxImpulseWallCrash::Supports(const EngineCrashSettings& inSettings)
 {
-    return !inSettings.mTargetVehicle && inSettings.mSceneryBoxes == 0 && inSettings.mAttach;
+    return inSettings.mSceneryBoxes == 0 && inSettings.mAttach;
 }
 
 namespace
@@ -64,7 +64,21 @@ BoxImpulseWallCrash::BoxImpulseWallCrash(const EngineCrashSettings& inSettings,
     if (!inSettings.mFloating)
         add_static(EImpulseShape::Box, Vec3(200.0, 200.0, 1.0), place(Vec3(0.0, 0.0, -1.0), 0.0),
                    friction > 0.0 ? inSettings.mGroundFriction / friction : 0.0);
-    if (!inSettings.mDriveOnly && !inSettings.mFloating)
+    if (inSettings.mTargetVehicle)
+    {
+        // A second car, a dynamic box on the ground, deformable too.
+        const TargetVehicleSettings& target = *inSettings.mTargetVehicle;
+        const double yaw = target.mYawDegrees * std::numbers::pi / 180.0;
+        ImpulseBodySettings body;
+        body.mDynamic = true;
+        body.mMass = target.mMass;
+        body.mHalfExtents = target.mHalfExtents;
+        body.mPose = TargetVehicleStart(target);
+        body.mLinearVelocity = target.mSpeed * Vec3(std::cos(yaw), std::sin(yaw), 0.0);
+        body.mFriction = friction;
+        mTarget = mEngine.AddBody(body);
+    }
+    else if (!inSettings.mDriveOnly && !inSettings.mFloating)
     {
         if (inSettings.mPoleRadius > 0.0)
             add_static(EImpulseShape::Cylinder, Vec3(inSettings.mPoleRadius, inSettings.mPoleRadius, 3.0),
@@ -89,12 +103,17 @@ BoxImpulseWallCrash::BoxImpulseWallCrash(const EngineCrashSettings& inSettings,
     car.mFriction = friction;
     mCar = mEngine.AddBody(car);
 
-    // Every engine body becomes a Crumple body; the car carries the deformable object.
+    // Every engine body becomes a Crumple body; the car (and the target vehicle) carry deformable objects.
     for (int body = 0; body <= mCar; ++body)
         mIds.push_back(mDamage.CreateBody(StateOf(body)).Get());
     mCarObject =
         mDamage.CreateDeformableObject(mIds[static_cast<std::size_t>(mCar)], CrashCarObject(inSettings))
             .Get();
+    if (mTarget >= 0)
+        mTargetObject = mDamage
+                            .CreateDeformableObject(mIds[static_cast<std::size_t>(mTarget)],
+                                                    TargetVehicleObject(*inSettings.mTargetVehicle))
+                            .Get();
     mDamage.AddListener(&mCounter);
 }
 
@@ -124,12 +143,29 @@ BodyState BoxImpulseWallCrash::GetCarState() const
     return StateOf(mCar);
 }
 
+double BoxImpulseWallCrash::KineticEnergy() const
+{
+    double energy = 0.0;
+    for (const int body : {mCar, mTarget})
+        if (body >= 0)
+        {
+            const BodyState state = StateOf(body);
+            energy += 0.5 * state.mMass * state.mLinearVelocity.squaredNorm() +
+                      0.5 * state.mAngularVelocity.dot(state.mInverseInertiaWorld.inverse() *
+                                                       state.mAngularVelocity);
+        }
+    return energy;
+}
+
 void BoxImpulseWallCrash::Step()
 {
     // intent: the contacts at the step's start, the car's velocities before the solver changes them (a
     // Baraff impulse needs pre-solve velocities), then the step, then its contacts and the time
     const std::vector<ImpulseContact>& contacts = mEngine.DetectContacts();
-    mRefusedCalls += mDamage.SetBodyState(mIds[static_cast<std::size_t>(mCar)], StateOf(mCar)) ? 0 : 1;
+    for (const int body : {mCar, mTarget})
+        if (body >= 0)
+            mRefusedCalls +=
+                mDamage.SetBodyState(mIds[static_cast<std::size_t>(body)], StateOf(body)) ? 0 : 1;
     mEngine.SolveAndIntegrate(mSettings.mTimeStep);
     mTime += mSettings.mTimeStep;
     mEvents.clear();

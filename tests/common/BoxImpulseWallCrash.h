@@ -14,12 +14,12 @@ namespace crumple::common
 /// EngineCrashSettings run in BoxImpulseEngine, an engine Crumple has no adapter for, joined to Crumple
 /// through its engine-agnostic calls alone (docs/adapters.md): each step the car's pre-solve state
 /// (DamageWorld::SetBodyState), the step's contacts (SubmitContacts) and the time (Update). The walls, the
-/// offset wall, the pole, the ground, a floating car and a drive without a wall are built as in the Bullet
-/// and ODE scenes; a target vehicle and scenery crates are not (Supports).
+/// offset wall, the pole, the target vehicle, the ground, a floating car and a drive without a wall are built
+/// as in the Bullet and ODE scenes; scenery crates are not (Supports).
 class BoxImpulseWallCrash
 {
   public:
-    /// False for the settings this scene does not build (a target vehicle, scenery crates, a bare scene).
+    /// False for the settings this scene does not build (scenery crates, a bare scene).
     static bool Supports(const EngineCrashSettings& inSettings);
 
     /// The crash in an engine of inEngine's contact and solver settings (its gravity and restitution the
@@ -34,8 +34,12 @@ class BoxImpulseWallCrash
 
     plugin::DamageWorld& GetDamage() { return mDamage; }
     plugin::ObjectId GetCarObject() const { return mCarObject; }
+    /// The target vehicle's deformable object (invalid without one)
+    plugin::ObjectId GetTargetObject() const { return mTargetObject; }
     /// The car's state as Crumple reads it (mass, world inertia, frame, velocities)
     plugin::BodyState GetCarState() const;
+    /// The moving bodies' kinetic energy, the car's and the target vehicle's (J)
+    double KineticEnergy() const;
     CrashCounter& GetCounter() { return mCounter; }
     const BoxImpulseEngine& GetEngine() const { return mEngine; }
     /// SetBodyState and SubmitContacts calls Crumple refused (none, unless the engine's output is bad)
@@ -52,8 +56,10 @@ class BoxImpulseWallCrash
     std::unique_ptr<plugin::DamageWorld> mDamageOwner; ///< On the heap: the world never moves
     plugin::DamageWorld& mDamage;
     int mCar = -1;
+    int mTarget = -1;                 ///< The target vehicle's engine body, -1 without one
     std::vector<plugin::BodyId> mIds; ///< Crumple's id of each engine body
     plugin::ObjectId mCarObject;
+    plugin::ObjectId mTargetObject;
     CrashCounter mCounter;
     double mTime = 0.0;
     int mRefusedCalls = 0;
