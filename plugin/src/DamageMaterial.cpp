@@ -5,6 +5,7 @@
 #include <crumple/ffd/TriangleMesh.h>
 
 #include <cmath>
+#include <string>
 
 namespace crumple::plugin
 {
@@ -33,26 +34,28 @@ Status ValidateDamageMaterial(const DamageMaterial& inMaterial)
         return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushB must be in (0, 1e12] N/m^2");
     if (!(material.mCrushG >= 0.0 && material.mCrushG <= 1.0e12))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mCrushG must be in [0, 1e12] J/m");
-    if (material.mHasSideStiffness)
+    // intent: a zone's own A, B and G (the sides', the rear's), checked only when the material has them
+    const auto zone = [](bool inHas, const char* inName, double inA, double inB, double inG) -> Status
     {
-        if (!(material.mSideCrushA >= 0.0 && material.mSideCrushA <= 1.0e12))
-            return MakeError(EError::InvalidArgument, "DamageMaterial.mSideCrushA must be in [0, 1e12] N/m");
-        if (!(material.mSideCrushB > 0.0 && material.mSideCrushB <= 1.0e12))
-            return MakeError(EError::InvalidArgument,
-                             "DamageMaterial.mSideCrushB must be in (0, 1e12] N/m^2");
-        if (!(material.mSideCrushG >= 0.0 && material.mSideCrushG <= 1.0e12))
-            return MakeError(EError::InvalidArgument, "DamageMaterial.mSideCrushG must be in [0, 1e12] J/m");
-    }
-    if (material.mHasRearStiffness)
-    {
-        if (!(material.mRearCrushA >= 0.0 && material.mRearCrushA <= 1.0e12))
-            return MakeError(EError::InvalidArgument, "DamageMaterial.mRearCrushA must be in [0, 1e12] N/m");
-        if (!(material.mRearCrushB > 0.0 && material.mRearCrushB <= 1.0e12))
-            return MakeError(EError::InvalidArgument,
-                             "DamageMaterial.mRearCrushB must be in (0, 1e12] N/m^2");
-        if (!(material.mRearCrushG >= 0.0 && material.mRearCrushG <= 1.0e12))
-            return MakeError(EError::InvalidArgument, "DamageMaterial.mRearCrushG must be in [0, 1e12] J/m");
-    }
+        if (!inHas)
+            return Status::Ok();
+        const std::string field = std::string("DamageMaterial.m") + inName + "Crush";
+        if (!(inA >= 0.0 && inA <= 1.0e12))
+            return MakeError(EError::InvalidArgument, field + "A must be in [0, 1e12] N/m");
+        if (!(inB > 0.0 && inB <= 1.0e12))
+            return MakeError(EError::InvalidArgument, field + "B must be in (0, 1e12] N/m^2");
+        if (!(inG >= 0.0 && inG <= 1.0e12))
+            return MakeError(EError::InvalidArgument, field + "G must be in [0, 1e12] J/m");
+        return Status::Ok();
+    };
+    if (Status side = zone(material.mHasSideStiffness, "Side", material.mSideCrushA, material.mSideCrushB,
+                           material.mSideCrushG);
+        !side)
+        return side;
+    if (Status rear = zone(material.mHasRearStiffness, "Rear", material.mRearCrushA, material.mRearCrushB,
+                           material.mRearCrushG);
+        !rear)
+        return rear;
     if (!(std::isfinite(material.mMinCrushWidth) && material.mMinCrushWidth > 0.0))
         return MakeError(EError::InvalidArgument, "DamageMaterial.mMinCrushWidth must be finite and > 0 m");
     if (!(material.mCrushedLengthFraction >= 0.0 && material.mCrushedLengthFraction < 1.0))

@@ -133,30 +133,27 @@ Result<RecordedObject> DecodeRecordedObject(std::span<const std::byte> inPayload
     // Before version 10 no crush stopped at an occupant cell: 0.5 leaves none. An out-of-range value is left
     // as read, for DeformableObject::Create to refuse with its message.
     settings.mMaterial.mCrushZoneFraction = inVersion >= 10 ? reader.ReadDouble() : 0.5;
-    // Before version 12 no material had the sides' own stiffness. A flag other than 0 or 1 is corrupt; values
-    // out of range are left as read, for DeformableObject::Create to refuse with its message.
-    if (inVersion >= 12)
+    // Before version 12 no material had the sides' own stiffness, before 13 the rear's (nor told its forward
+    // axis). A flag other than 0 or 1 is corrupt; values out of range are left as read, for
+    // DeformableObject::Create to refuse with its message.
+    const auto read_zone = [&reader](bool& outHas, double& outA, double& outB, double& outG)
     {
-        const std::uint8_t side = reader.ReadU8();
-        if (side > 1)
-            return MakeError(EError::CorruptData, "object record: the side stiffness flag is corrupt");
-        settings.mMaterial.mHasSideStiffness = side == 1;
-        settings.mMaterial.mSideCrushA = reader.ReadDouble();
-        settings.mMaterial.mSideCrushB = reader.ReadDouble();
-        settings.mMaterial.mSideCrushG = reader.ReadDouble();
-    }
-    // Before version 13 no material had the rear's own stiffness (and the forward axis told nothing). As the
-    // sides': a flag other than 0 or 1 is corrupt, values out of range are DeformableObject::Create's to
-    // refuse.
+        const std::uint8_t has = reader.ReadU8();
+        outHas = has == 1;
+        outA = reader.ReadDouble();
+        outB = reader.ReadDouble();
+        outG = reader.ReadDouble();
+        return has <= 1;
+    };
+    DamageMaterial& material = settings.mMaterial;
+    if (inVersion >= 12 && !read_zone(material.mHasSideStiffness, material.mSideCrushA, material.mSideCrushB,
+                                      material.mSideCrushG))
+        return MakeError(EError::CorruptData, "object record: the side stiffness flag is corrupt");
     if (inVersion >= 13)
     {
-        const std::uint8_t rear = reader.ReadU8();
-        if (rear > 1)
+        if (!read_zone(material.mHasRearStiffness, material.mRearCrushA, material.mRearCrushB,
+                       material.mRearCrushG))
             return MakeError(EError::CorruptData, "object record: the rear stiffness flag is corrupt");
-        settings.mMaterial.mHasRearStiffness = rear == 1;
-        settings.mMaterial.mRearCrushA = reader.ReadDouble();
-        settings.mMaterial.mRearCrushB = reader.ReadDouble();
-        settings.mMaterial.mRearCrushG = reader.ReadDouble();
         settings.mForwardAxis = reader.ReadVec3();
     }
     if (reader.Failed() || reader.Remaining() != 0)

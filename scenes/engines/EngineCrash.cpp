@@ -60,6 +60,41 @@ void CrashCounter::OnCollision(const Collision& inCollision, std::span<const Obj
     mLog.push_back(inCollision);
 }
 
+std::vector<std::pair<std::string, EngineCrashSettings>> ImpactMatrix(double inKmH, double inFriction)
+{
+    EngineCrashSettings base;
+    base.mSpeed = inKmH / 3.6;
+    base.mDuration = 0.3;
+    base.mTriangles = 2000;
+    base.mFriction = inFriction; // the wall's and the other car's; with 0 the normal impulses act alone
+    base.mGroundFriction = 0.0;
+    const std::string speed = std::to_string(static_cast<int>(inKmH)) + " km/h ";
+    std::vector<std::pair<std::string, EngineCrashSettings>> crashes{{speed + "frontal", base}};
+    EngineCrashSettings offset = base;
+    offset.mOverlapFraction = 0.4;
+    crashes.emplace_back(speed + "40 % offset", offset);
+    EngineCrashSettings angled = base;
+    angled.mWallAngleDegrees = 30.0;
+    crashes.emplace_back(speed + "30-degree wall", angled);
+    // Glancing: with friction the corner slides along the wall through the whole impact.
+    EngineCrashSettings glancing = base;
+    glancing.mWallAngleDegrees = 45.0;
+    crashes.emplace_back(speed + "45-degree wall", glancing);
+    EngineCrashSettings pole = base;
+    pole.mPoleRadius = 0.127;
+    crashes.emplace_back(speed + "pole", pole);
+    // A racing hit: into the rear corner of a parked car, and into its side (two dynamic bodies).
+    EngineCrashSettings rear_end = base;
+    rear_end.mTargetVehicle = TargetVehicleSettings{};
+    rear_end.mTargetVehicle->mYawDegrees = 0.0;
+    rear_end.mTargetVehicle->mOffset = 0.8;
+    crashes.emplace_back(speed + "rear-end into a parked car's corner", rear_end);
+    EngineCrashSettings side = base;
+    side.mTargetVehicle = TargetVehicleSettings{};
+    crashes.emplace_back(speed + "into a parked car's side", side);
+    return crashes;
+}
+
 DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
 {
     DeformableObjectSettings object;

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace crumple::common
@@ -129,6 +131,11 @@ EngineCrashResult RunEngineCrash(Scene& ioScene, const EngineCrashSettings& inSe
     return SummarizeCrash(ioScene.GetDamage(), ioScene.GetCarObject(), ioScene.GetCounter().mCollisions,
                           ioScene.GetCounter().mTotalImpulse);
 }
+
+/// The impacts the engine-independence checks run at inKmH, named: frontal, 40 % offset, 30- and 45-degree
+/// walls, a pole, and into a parked car's rear corner and its side; 0.3 s, a 2,000-triangle box car, friction
+/// inFriction on every contact but the ground's (0 there: the car slides freely before the hit).
+std::vector<std::pair<std::string, EngineCrashSettings>> ImpactMatrix(double inKmH, double inFriction);
 
 /// The car's render mesh and deformable-object settings shared by every engine scene.
 plugin::DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings);

@@ -318,8 +318,11 @@ void BoxImpulseEngine::SolveAndIntegrate(double inDeltaTime)
         std::array<Row, 3> row{make_row(contact, contact.mNormal), make_row(contact, tangents[0]),
                                make_row(contact, tangents[1])};
         const double closing = speed(contact, row[0], false);
-        // intent: an impact rebounds by the restitution; a gap within the margin may close in this step
-        if (closing < -mSettings.mBounceSpeed)
+        // intent: a gap within the margin may close in this step (an approach up to gap / dt is free); an
+        // impact, touching or predicted from a gap the approach closes within the step, rebounds by the
+        // restitution now (Jolt's rule for speculative contacts)
+        const double free_approach = std::max(-contact.mDepth, 0.0) / inDeltaTime;
+        if (closing < -mSettings.mBounceSpeed && closing < -free_approach)
             row[0].mTarget = -mSettings.mRestitution * closing;
         else if (contact.mDepth < 0.0)
             row[0].mTarget = contact.mDepth / inDeltaTime;
