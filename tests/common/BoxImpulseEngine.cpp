@@ -70,6 +70,32 @@ Mat3 BoxImpulseEngine::InverseInertiaWorld(int inBody) const
     return r * body.mInverseInertia.asDiagonal() * r.transpose();
 }
 
+ImpulseBodySettings BoxImpulseEngine::ReportedBody(int inBody) const
+{
+    ImpulseBodySettings body = mBodies[static_cast<std::size_t>(inBody)].mState;
+    if (!mSettings.mSinglePrecision)
+        return body;
+    const auto single = [](const auto& inValue)
+    { return inValue.template cast<float>().template cast<double>().eval(); };
+    // intent: a float engine's rotation comes from its float quaternion
+    body.mPose.mRotation =
+        Quat(body.mPose.mRotation).cast<float>().normalized().toRotationMatrix().cast<double>();
+    body.mPose.mTranslation = single(body.mPose.mTranslation);
+    body.mLinearVelocity = single(body.mLinearVelocity);
+    body.mAngularVelocity = single(body.mAngularVelocity);
+    return body;
+}
+
+Mat3 BoxImpulseEngine::ReportedInverseInertiaWorld(int inBody) const
+{
+    if (!mSettings.mSinglePrecision)
+        return InverseInertiaWorld(inBody);
+    const Body& body = mBodies[static_cast<std::size_t>(inBody)];
+    const Eigen::Matrix3f r = ReportedBody(inBody).mPose.mRotation.cast<float>();
+    const Eigen::Vector3f moments = body.mInverseInertia.cast<float>();
+    return (r * moments.asDiagonal() * r.transpose()).eval().cast<double>();
+}
+
 void BoxImpulseEngine::SetVelocity(int inBody, const Vec3& inLinear, const Vec3& inAngular)
 {
     mBodies[static_cast<std::size_t>(inBody)].mState.mLinearVelocity = inLinear;

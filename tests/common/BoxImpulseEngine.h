@@ -54,6 +54,9 @@ struct BoxImpulseEngineSettings
     /// depth (true), as engines that reduce a manifold to one point report it
     bool mOnePointPerPair = false;
     bool mOnePointIsDeepest = false;
+    /// The engine hands its states over in single precision (as Jolt, PhysX or Bullet's default build): the
+    /// reported pose, velocities and world inverse inertia (computed as R D R^T in float) are float values
+    bool mSinglePrecision = false;
     int mVelocityIterations = 30;       ///< Sequential-impulse sweeps over the contacts per step
     int mPositionIterations = 10;       ///< Sweeps of the split-impulse position correction per step
     double mPositionCorrection = 0.2;   ///< Share of a penetration removed per step, by position only
@@ -86,6 +89,10 @@ class BoxImpulseEngine
     }
     /// World inverse inertia (1/(kg m^2)); zero for a static body
     Mat3 InverseInertiaWorld(int inBody) const;
+    /// The body's state as the engine reports it to a game (its float values with mSinglePrecision): pose,
+    /// velocities, and the world inverse inertia
+    ImpulseBodySettings ReportedBody(int inBody) const;
+    Mat3 ReportedInverseInertiaWorld(int inBody) const;
     double InverseMass(int inBody) const { return mBodies[static_cast<std::size_t>(inBody)].mInverseMass; }
     void SetVelocity(int inBody, const Vec3& inLinear, const Vec3& inAngular);
 

@@ -119,11 +119,12 @@ BoxImpulseWallCrash::BoxImpulseWallCrash(const EngineCrashSettings& inSettings,
 
 BodyState BoxImpulseWallCrash::StateOf(int inBody) const
 {
-    const ImpulseBodySettings& body = mEngine.GetBody(inBody);
+    // intent: what the engine reports, float values as they are for a single-precision engine
+    const ImpulseBodySettings body = mEngine.ReportedBody(inBody);
     BodyState state;
     state.mMotionType = body.mDynamic ? EMotionType::Dynamic : EMotionType::Static;
     state.mMass = body.mDynamic ? body.mMass : 1.0;
-    state.mInverseInertiaWorld = body.mDynamic ? mEngine.InverseInertiaWorld(inBody) : Mat3::Zero();
+    state.mInverseInertiaWorld = body.mDynamic ? mEngine.ReportedInverseInertiaWorld(inBody) : Mat3::Zero();
     state.mTransform = body.mPose;
     state.mCenterOfMass = body.mPose.mTranslation;
     state.mLinearVelocity = body.mLinearVelocity;
