@@ -459,7 +459,8 @@ std::optional<CrushPlan> PlanCampbellCrush(const Collision& inCollision, ECollis
     if (inBody == nullptr)
         measured = MeasureCrushBody(inDeformer, inUp);
     const CrushBody& body = inBody != nullptr ? *inBody : *measured;
-    // The stiffness this crush meets: the sides' when it runs across the body and the material has one.
+    // The stiffness this crush meets: the sides' when it runs across the body, the rear's when it pushes the
+    // body forward (a hit from behind), when the material has them (CrushMaterialAlong).
     const DamageMaterial material =
         CrushMaterialAlong(inBodyMaterial, plan.mDirection, body.mLength, inUp, body.mForward);
     const double front = surface.mFront;
