@@ -260,9 +260,12 @@ TEST_CASE("The crush does not depend on the engine's time step (30 to 480 Hz), i
     EngineCrashSettings pole = base;
     pole.mPoleRadius = 0.127;
     crashes.emplace_back("pole", pole);
-    for (const auto& [name, crash] : crashes)
+    // (a named pair, not a structured binding: clang before 16 refuses a binding captured by a lambda)
+    for (const std::pair<std::string, EngineCrashSettings>& entry : crashes)
         for (const char* engine : {"Bullet", "ODE"})
         {
+            const std::string& name = entry.first;
+            const EngineCrashSettings& crash = entry.second;
             const auto crush_at = [&, engine = std::string(engine)](double inTimeStep) {
                 EngineCrashSettings settings = crash;
                 settings.mTimeStep = inTimeStep;
