@@ -70,28 +70,28 @@ std::vector<std::pair<std::string, EngineCrashSettings>> ImpactMatrix(double inK
     base.mGroundFriction = 0.0;
     const std::string speed = std::to_string(static_cast<int>(inKmH)) + " km/h ";
     std::vector<std::pair<std::string, EngineCrashSettings>> crashes{{speed + "frontal", base}};
-    EngineCrashSettings offset = base;
-    offset.mOverlapFraction = 0.4;
-    crashes.emplace_back(speed + "40 % offset", offset);
-    EngineCrashSettings angled = base;
-    angled.mWallAngleDegrees = 30.0;
-    crashes.emplace_back(speed + "30-degree wall", angled);
+    // intent: each other impact is the frontal one with what makes it that impact
+    const auto add = [&](const std::string& inName, const auto& inChange)
+    {
+        EngineCrashSettings crash = base;
+        inChange(crash);
+        crashes.emplace_back(speed + inName, crash);
+    };
+    add("40 % offset", [](EngineCrashSettings& ioCrash) { ioCrash.mOverlapFraction = 0.4; });
+    add("30-degree wall", [](EngineCrashSettings& ioCrash) { ioCrash.mWallAngleDegrees = 30.0; });
     // Glancing: with friction the corner slides along the wall through the whole impact.
-    EngineCrashSettings glancing = base;
-    glancing.mWallAngleDegrees = 45.0;
-    crashes.emplace_back(speed + "45-degree wall", glancing);
-    EngineCrashSettings pole = base;
-    pole.mPoleRadius = 0.127;
-    crashes.emplace_back(speed + "pole", pole);
+    add("45-degree wall", [](EngineCrashSettings& ioCrash) { ioCrash.mWallAngleDegrees = 45.0; });
+    add("pole", [](EngineCrashSettings& ioCrash) { ioCrash.mPoleRadius = 0.127; });
     // A racing hit: into the rear corner of a parked car, and into its side (two dynamic bodies).
-    EngineCrashSettings rear_end = base;
-    rear_end.mTargetVehicle = TargetVehicleSettings{};
-    rear_end.mTargetVehicle->mYawDegrees = 0.0;
-    rear_end.mTargetVehicle->mOffset = 0.8;
-    crashes.emplace_back(speed + "rear-end into a parked car's corner", rear_end);
-    EngineCrashSettings side = base;
-    side.mTargetVehicle = TargetVehicleSettings{};
-    crashes.emplace_back(speed + "into a parked car's side", side);
+    add("rear-end into a parked car's corner",
+        [](EngineCrashSettings& ioCrash)
+        {
+            ioCrash.mTargetVehicle = TargetVehicleSettings{};
+            ioCrash.mTargetVehicle->mYawDegrees = 0.0;
+            ioCrash.mTargetVehicle->mOffset = 0.8;
+        });
+    add("into a parked car's side",
+        [](EngineCrashSettings& ioCrash) { ioCrash.mTargetVehicle = TargetVehicleSettings{}; });
     return crashes;
 }
 

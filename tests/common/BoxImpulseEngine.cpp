@@ -96,12 +96,6 @@ Mat3 BoxImpulseEngine::ReportedInverseInertiaWorld(int inBody) const
     return (r * moments.asDiagonal() * r.transpose()).eval().cast<double>();
 }
 
-void BoxImpulseEngine::SetVelocity(int inBody, const Vec3& inLinear, const Vec3& inAngular)
-{
-    mBodies[static_cast<std::size_t>(inBody)].mState.mLinearVelocity = inLinear;
-    mBodies[static_cast<std::size_t>(inBody)].mState.mAngularVelocity = inAngular;
-}
-
 const std::vector<ImpulseContact>& BoxImpulseEngine::DetectContacts()
 {
     mContacts.clear();
@@ -121,26 +115,20 @@ const std::vector<ImpulseContact>& BoxImpulseEngine::DetectContacts()
                 BoxCylinderContacts(static_cast<int>(a), static_cast<int>(b));
             if (mSettings.mOnePointPerPair && mContacts.size() > first + 1)
             {
+                // intent: the centroid of the points at their mean depth, the normal their mean
                 const auto begin = mContacts.begin() + static_cast<std::ptrdiff_t>(first);
-                ImpulseContact one =
-                    *std::max_element(begin, mContacts.end(),
-                                      [](const ImpulseContact& inX, const ImpulseContact& inY)
-                                      { return inX.mDepth < inY.mDepth; });
-                if (!mSettings.mOnePointIsDeepest)
+                const double count = static_cast<double>(mContacts.size() - first);
+                ImpulseContact one = *begin;
+                one.mPointOnA = one.mPointOnB = one.mNormal = Vec3::Zero();
+                one.mDepth = 0.0;
+                for (auto c = begin; c != mContacts.end(); ++c)
                 {
-                    // intent: the centroid of the points at their mean depth, the normal their mean
-                    const double count = static_cast<double>(mContacts.size() - first);
-                    one.mPointOnA = one.mPointOnB = one.mNormal = Vec3::Zero();
-                    one.mDepth = 0.0;
-                    for (auto c = begin; c != mContacts.end(); ++c)
-                    {
-                        one.mPointOnA += c->mPointOnA / count;
-                        one.mPointOnB += c->mPointOnB / count;
-                        one.mNormal += c->mNormal;
-                        one.mDepth += c->mDepth / count;
-                    }
-                    one.mNormal.normalize();
+                    one.mPointOnA += c->mPointOnA / count;
+                    one.mPointOnB += c->mPointOnB / count;
+                    one.mNormal += c->mNormal;
+                    one.mDepth += c->mDepth / count;
                 }
+                one.mNormal.normalize();
                 mContacts[first] = one;
                 mContacts.resize(first + 1);
             }

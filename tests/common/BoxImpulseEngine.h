@@ -50,10 +50,9 @@ struct BoxImpulseEngineSettings
     double mRestitution = 0.1;      ///< Rebound of contacts that close faster than mBounceSpeed
     double mBounceSpeed = 0.5;      ///< m/s: slower contacts stop without rebound (resting)
     double mContactMargin = 0.002;  ///< Gaps up to this (m) are reported and solved speculatively
-    /// One contact per body pair and step: the deepest point (false), or the manifold's centroid at its mean
-    /// depth (true), as engines that reduce a manifold to one point report it
+    /// One contact per body pair and step: the manifold's centroid at its mean depth, as engines that reduce
+    /// a manifold to one point report it
     bool mOnePointPerPair = false;
-    bool mOnePointIsDeepest = false;
     /// The engine hands its states over in single precision (as Jolt, PhysX or Bullet's default build): the
     /// reported pose, velocities and world inverse inertia (computed as R D R^T in float) are float values
     bool mSinglePrecision = false;
@@ -93,8 +92,6 @@ class BoxImpulseEngine
     /// velocities, and the world inverse inertia
     ImpulseBodySettings ReportedBody(int inBody) const;
     Mat3 ReportedInverseInertiaWorld(int inBody) const;
-    double InverseMass(int inBody) const { return mBodies[static_cast<std::size_t>(inBody)].mInverseMass; }
-    void SetVelocity(int inBody, const Vec3& inLinear, const Vec3& inAngular);
 
   private:
     struct Body

@@ -41,7 +41,6 @@ class BoxImpulseWallCrash
     /// The moving bodies' kinetic energy, the car's and the target vehicle's (J)
     double KineticEnergy() const;
     CrashCounter& GetCounter() { return mCounter; }
-    const BoxImpulseEngine& GetEngine() const { return mEngine; }
     /// SetBodyState and SubmitContacts calls Crumple refused (none, unless the engine's output is bad)
     int GetRefusedCalls() const { return mRefusedCalls; }
     /// The contacts the engine reported in the last step

@@ -23,12 +23,6 @@ using namespace crumple::common;
 namespace
 {
 
-// The crash scenes' impacts (ImpactMatrix), all of which the third engine builds.
-std::vector<std::pair<std::string, EngineCrashSettings>> ThirdEngineCrashes(double inKmH, double inFriction)
-{
-    return ImpactMatrix(inKmH, inFriction);
-}
-
 // Three ways an engine reports its contacts: a clipped manifold (Bullet's box-box), one point per body pair
 // and step (the manifold's centroid at its mean depth, as an engine that reduces its manifolds reports it),
 // and gaps of up to 5 cm reported ahead of the touch (a large speculative margin, whose hit the engine
@@ -97,7 +91,7 @@ TEST_CASE("A third engine: a collision's impulse is the engine's change of the c
     for (const auto& [reports, engine_settings] : ContactReporting())
         for (double friction : {0.0, 0.5})
             for (double km_h : {20.0, 40.0, 56.0, 64.0})
-                for (const auto& [name, settings] : ThirdEngineCrashes(km_h, friction))
+                for (const auto& [name, settings] : ImpactMatrix(km_h, friction))
                 {
                     BoxImpulseWallCrash scene(settings, engine_settings);
                     const int steps = static_cast<int>(std::lround(settings.mDuration / settings.mTimeStep));
@@ -144,7 +138,7 @@ TEST_CASE("A third engine: the crush energy is the kinetic energy the engine too
 {
     for (const auto& [reports, engine_settings] : ContactReporting())
         for (double km_h : {20.0, 40.0, 56.0, 64.0})
-            for (const auto& [name, settings] : ThirdEngineCrashes(km_h, 0.0))
+            for (const auto& [name, settings] : ImpactMatrix(km_h, 0.0))
             {
                 BoxImpulseWallCrash scene(settings, engine_settings);
                 const double before = scene.KineticEnergy();
@@ -176,7 +170,7 @@ TEST_CASE("A third engine in single precision: its float states are taken and cr
           "[engines]")
 {
     for (double km_h : {20.0, 64.0})
-        for (const auto& [name, settings] : ThirdEngineCrashes(km_h, 0.5))
+        for (const auto& [name, settings] : ImpactMatrix(km_h, 0.5))
         {
             BoxImpulseWallCrash exact(settings);
             const EngineCrashResult double_run = exact.Run();
@@ -197,7 +191,7 @@ TEST_CASE("A third engine crushes as Bullet and ODE do, and deeper at higher spe
         reporting.size()); // [reporting][crash][speed]
     for (double km_h : {20.0, 40.0, 56.0, 64.0})
     {
-        const auto crashes = ThirdEngineCrashes(km_h, 0.5);
+        const auto crashes = ImpactMatrix(km_h, 0.5);
         for (std::size_t c = 0; c < crashes.size(); ++c)
         {
             const auto& [name, settings] = crashes[c];
