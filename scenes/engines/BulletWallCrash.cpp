@@ -32,7 +32,7 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
     // ODE's contacts in the ODE scene (dContactApprox1, no dContactFDir1), so both engines solve one model.
     mWorld->getSolverInfo().m_solverMode |=
         SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION;
-    mWorld->setGravity(btVector3(0, 0, btScalar(inSettings.mFloating ? 0.0 : -9.81)));
+    mWorld->setGravity(btVector3(0, 0, btScalar(inSettings.mFloating ? 0.0 : -cCrashGravity)));
     if (inSettings.mAttach)
     {
         bullet::BulletAdapterSettings adapter;

@@ -16,6 +16,9 @@
 namespace crumple::common
 {
 
+/// Gravity of the crash scenes, along -z (m/s^2)
+inline constexpr double cCrashGravity = 9.81;
+
 /// The same scripted crash for every engine: a box car on a ground plane driven into a static wall at
 /// x = 0 whose face is the plane x = 0, head-on or at a heading angle. Gravity and ground friction are on,
 /// so the car also has resting contacts with the ground that must make no damage.

@@ -17,7 +17,7 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
 {
     dInitODE2(0); // reference counted by ODE; paired with dCloseODE in the destructor
     mWorld = dWorldCreate();
-    dWorldSetGravity(mWorld, 0, 0, inSettings.mFloating ? 0.0 : -9.81);
+    dWorldSetGravity(mWorld, 0, 0, inSettings.mFloating ? 0.0 : -cCrashGravity);
     mSpace = dHashSpaceCreate(nullptr);
     mContacts = dJointGroupCreate(0);
     // ODE pushes a penetrating body out at ERP x depth / step: a car that sinks 0.13 m into the wall in one

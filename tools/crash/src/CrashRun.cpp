@@ -8,6 +8,7 @@
 #include "SurfaceFolds.h"
 
 #include <crumple/crash/RecutCarMesh.h>
+#include <crumple/crash/StepOverlap.h>
 #include <crumple/crash/TimeHistory.h>
 
 #include <crumple/ffd/BoundingBox.h>
@@ -158,7 +159,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             for (const std::string& name : body.Get().mRigidPartNames)
                 text += " " + name;
             text += body.Get().mRigidPartNames.empty() ? " none)" : ")";
-            if (inOptions.mStrictMesh)
+            if (inOptions.mStrict)
                 return MakeError(EError::InvalidArgument, text + "; refused by --strict");
             outWarnings.push_back(text);
         }
@@ -170,7 +171,7 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
                                      std::string(samples::cMeshAxisNames[static_cast<int>(forward)]) + ", up " +
                                      std::string(samples::cMeshAxisNames[static_cast<int>(up)]) +
                                      "; scenario keys mesh_forward_axis and mesh_up_axis)";
-            if (inOptions.mStrictMesh)
+            if (inOptions.mStrict)
                 return MakeError(EError::InvalidArgument, text + "; refused by --strict");
             outWarnings.push_back(text);
         }
@@ -186,6 +187,14 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             settings.mInertia = ShellInertia(loaded.Get(), 0.5 * (bounds.mMin + bounds.mMax), vehicle.mMass);
         settings.mCarMesh = std::move(loaded.Get());
         settings.mCarRigidParts = std::move(rigid_parts);
+    }
+    if (const std::string warning =
+            StepOverlapWarning(inScenario, MeasureStepOverlap(inScenario, settings.mHalfExtents));
+        !warning.empty())
+    {
+        if (inOptions.mStrict)
+            return MakeError(EError::InvalidArgument, warning + "; refused by --strict");
+        outWarnings.push_back(warning);
     }
     return settings;
 }
@@ -260,6 +269,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
     }
     CrashOutcome outcome;
     outcome.mMass = inSettings.mMass;
+    outcome.mGroundDeceleration =
+        inSettings.mFloating ? 0.0 : inSettings.mGroundFriction * common::cCrashGravity;
     outcome.mStartVelocity = scene.GetCarState().mLinearVelocity;
     outcome.mStartTransform = scene.GetCarState().mTransform;
     outcome.mRestNormals = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer().GetNormals();

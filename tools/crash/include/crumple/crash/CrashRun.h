@@ -79,6 +79,9 @@ struct CrashOutcome
     Vec3 mStartVelocity = Vec3::Zero();     ///< Car velocity at the start (m/s)
     Vec3 mEndVelocity = Vec3::Zero();       ///< Car velocity at the end (m/s)
     double mMass = 0.0;                     ///< kg
+    /// The most the ground's friction can take from the car's speed per second (m/s^2): the scene's ground
+    /// friction coefficient (a tyre's rolling resistance) times gravity
+    double mGroundDeceleration = 0.0;
     double mTotalImpulse = 0.0;             ///< Sum over the car's collisions (N s)
     Vec3 mCarImpulse = Vec3::Zero();        ///< The same impulses as vectors on the car, summed (world, N s)
     std::vector<CarSample> mHistory;        ///< The car at the start and after every engine step
@@ -113,9 +116,10 @@ struct CrashOutcome
 struct CrashRunOptions
 {
     std::filesystem::path mReplayFile;
-    /// Refuse a mesh whose stated forward axis is not its longest horizontal extent (samples::ForwardAxisWarning)
-    /// instead of running it with a warning
-    bool mStrictMesh = false;
+    /// Refuse a scenario that would run with a warning instead of running it: a mesh whose stated forward
+    /// axis is not its longest horizontal extent (samples::ForwardAxisWarning), rigid-part names that match
+    /// no part, a time step too coarse for the car's overlap with its target (StepOverlapWarning)
+    bool mStrict = false;
 };
 
 /// Loads the vehicle mesh (if any), builds the scene in the scenario's engine (a ground plane, the target,
