@@ -259,12 +259,10 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, c
 {
     const double extent = inLength.mMax - inLength.mMin;
     const double along = inLength.mAxis.dot(ioPlan.mDirection);
-    const double axis_spacing = CoarsestSpacingAlong(inDeformer, inLength.mAxis);
-    // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over:
-    // a coarser lattice cannot keep a cell apart from its crush zone, and crushes as without one.
-    constexpr double cMinZoneSpacings = 4.0;
-    if (!(inMaterial.mCrushZoneFraction < 0.5) || !(extent > 0.0) || !(std::abs(along) >= 0.5) ||
-        !(inMaterial.mCrushZoneFraction * extent >= cMinZoneSpacings * axis_spacing))
+    // A coarser lattice than FitOccupantCell allows cannot keep a cell apart from its crush zone, and crushes
+    // as without one.
+    const OccupantCellFit fit = FitOccupantCell(inMaterial, inLength, inDeformer);
+    if (!fit.mHasCell || fit.IsLost() || !(std::abs(along) >= 0.5))
         return;
     ioPlan.mCellActive = true;
     // The struck end is where the oriented axis comes in from; the cell begins a zone's share of the length
@@ -290,6 +288,21 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, c
 }
 
 } // namespace
+
+OccupantCellFit FitOccupantCell(const DamageMaterial& inMaterial, const BodyLength& inLength,
+                                const ffd::FfdDeformer& inDeformer)
+{
+    // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over.
+    constexpr double cMinZoneSpacings = 4.0;
+    OccupantCellFit fit;
+    const double extent = inLength.mMax - inLength.mMin;
+    fit.mHasCell =
+        inMaterial.mModel == ECrushModel::Campbell && inMaterial.mCrushZoneFraction < 0.5 && extent > 0.0;
+    fit.mZoneLength = inMaterial.mCrushZoneFraction * extent;
+    fit.mSpacing = CoarsestSpacingAlong(inDeformer, inLength.mAxis);
+    fit.mMaxSpacing = fit.mZoneLength / cMinZoneSpacings;
+    return fit;
+}
 
 std::array<double, 3> CrushPlan::ColumnCrush(const Vec3& inPoint) const
 {

@@ -540,6 +540,29 @@ TEST_CASE("The occupant cell leaves alone what cannot reach it: a shallow crush,
     const std::optional<CrushPlan> coarse_plan = plan(-Vec3::UnitX(), Vec3(2.2, 0.0, 0.0), coarse_body);
     REQUIRE(coarse_plan);
     CHECK(!coarse_plan->mCellActive);
+
+    // What the object and FitOccupantCell tell of the two lattices: the same rule as the plans'.
+    const OccupantCellFit fine = object.GetOccupantCellFit();
+    CHECK(fine.mHasCell);
+    CHECK_FALSE(fine.IsLost());
+    CHECK(fine.mZoneLength == Approx(0.25 * 4.4));
+    CHECK(fine.mMaxSpacing == Approx(0.25 * 4.4 / 4.0));
+    CHECK(fine.mSpacing == Approx(head_on->mSpacing));
+    const OccupantCellFit lost =
+        FitOccupantCell(object.GetMaterial(), object.GetCrushBody().mLength, coarse_body);
+    CHECK(lost.mHasCell);
+    CHECK(lost.IsLost());
+    CHECK(lost.mSpacing > lost.mMaxSpacing);
+    CHECK(lost.mSpacing == Approx(coarse_plan->mSpacing));
+    // No cell to lose: half the length crushes from each end, or the impulse factor (no cell at all).
+    DamageMaterial factor = object.GetMaterial();
+    factor.mModel = ECrushModel::ImpulseFactor;
+    for (const DamageMaterial& material : {no_cell, factor})
+    {
+        const OccupantCellFit none = FitOccupantCell(material, object.GetCrushBody().mLength, coarse_body);
+        CHECK_FALSE(none.mHasCell);
+        CHECK_FALSE(none.IsLost());
+    }
 }
 
 TEST_CASE("The body's length is its longest horizontal extent", "[plugin]")

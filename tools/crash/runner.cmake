@@ -51,7 +51,7 @@ if(CRUMPLE_BUILD_TESTS)
         ${PROJECT_SOURCE_DIR}/tests/crash/OutputFoldersTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/MeshPreparationTest.cpp
         ${PROJECT_SOURCE_DIR}/tests/crash/SanityChecksTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/WallGapTest.cpp
         ${PROJECT_SOURCE_DIR}/tests/crash/SurfaceFoldsTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/CrushProfileTest.cpp
-        ${PROJECT_SOURCE_DIR}/tests/crash/StepOverlapTest.cpp)
+        ${PROJECT_SOURCE_DIR}/tests/crash/StepOverlapTest.cpp ${PROJECT_SOURCE_DIR}/tests/crash/OccupantCellWarningTest.cpp)
     target_compile_definitions(test_crash_run PRIVATE CRUMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     target_link_libraries(test_crash_run PRIVATE crumple_crash_run Catch2::Catch2 crumple::compile_options)
     target_include_directories(test_crash_run PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)

@@ -268,6 +268,21 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
         recorder = std::move(created.Get());
     }
     CrashOutcome outcome;
+    if (const plugin::OccupantCellFit cell =
+            scene.GetDamage().GetObject(scene.GetCarObject())->GetOccupantCellFit();
+        cell.IsLost())
+    {
+        char text[400];
+        std::snprintf(
+            text, sizeof(text),
+            "the car's lattice is too coarse to keep its occupant cell: its control spacing along the body "
+            "(%.3g m) does not fit four times in a crush zone (%.3g m), so a crush along the body can move "
+            "all of it; control_spacing_m %.3g or finer keeps the cell",
+            cell.mSpacing, cell.mZoneLength, cell.mMaxSpacing);
+        if (inOptions.mStrict)
+            return MakeError(EError::InvalidArgument, std::string(text) + "; refused by --strict");
+        outcome.mWarnings.push_back(text);
+    }
     outcome.mMass = inSettings.mMass;
     outcome.mGroundDeceleration =
         inSettings.mFloating ? 0.0 : inSettings.mGroundFriction * common::cCrashGravity;
@@ -588,7 +603,8 @@ Result<CrashOutcome> RunCrash(const CrashScenario& inScenario, const CrashRunOpt
     }
     if (outcome.HasError())
         return outcome;
-    outcome.Get().mWarnings = std::move(warnings);
+    // intent: the scenario's warnings first, then the scene's
+    outcome.Get().mWarnings.insert(outcome.Get().mWarnings.begin(), warnings.begin(), warnings.end());
     outcome.Get().mMeshPreparation = preparation;
     return outcome;
 }

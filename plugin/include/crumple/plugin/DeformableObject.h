@@ -47,6 +47,13 @@ public:
     /// What a Campbell crush plan measures of the body once (MeasureCrushBody): its length, where the
     /// occupant cell lies, and its large triangles
     const CrushBody& GetCrushBody() const { return mCrushBody; }
+    /// Whether the object's lattice keeps its occupant cell apart from its crush zones (FitOccupantCell): a
+    /// lost cell (OccupantCellFit::IsLost) lets a crush along the body move the whole body; a finer lattice
+    /// (mFittedControlSpacing, or zones of that spacing along the length) keeps it
+    OccupantCellFit GetOccupantCellFit() const
+    {
+        return FitOccupantCell(mMaterial, mCrushBody.mLength, mDeformer);
+    }
     const ffd::FfdDeformer& GetDeformer() const { return mDeformer; }
     ffd::FfdDeformer& GetDeformer() { return mDeformer; }
 
