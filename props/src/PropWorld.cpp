@@ -229,7 +229,8 @@ void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
 {
     const auto mine = [&ioFlight, inOnTask](std::size_t inProp) { return (ioFlight.mOnTask[inProp] != 0) == inOnTask; };
     for (const QueuedCollision& collision : ioFlight.mCollisions)
-        ApplyToProps(collision.mCollision, collision.mPropCount, mine, ioFlight.mTally);
+        ApplyToProps(collision.mCollision, collision.mPropCount, mine, collision.mStrikerSpeeds,
+                     ioFlight.mTally);
     for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
         if (mine(index))
         {
@@ -498,6 +499,8 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     {
         ioProp.mStruck.swap(ioProp.mHits);
         ioProp.mHits.clear();
+        ioProp.mStruckStrikerSpeed = ioProp.mHitsStrikerSpeed;
+        ioProp.mHitsStrikerSpeed = 0.0;
     }
     if (inSleeping)
         ioProp.mStruck.clear();
@@ -529,7 +532,13 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     // intent: only along the direction the material was struck. The held body stands for the whole prop: moved
     // sideways or up with a timber flung so, it would carry the car with it.
     const Vec3 direction = impulse.normalized();
-    return *inBodyRotation * (direction.dot(sum / weight) * direction);
+    // intent: no faster than what struck it, either way. The engine met the struck members with the whole
+    // prop's mass, and the FEM hands those impulses to the few nodes they landed on: where those outran
+    // their striker, the held body would carry the whole prop's mass at their speed into the next contact
+    // (a car pressing a fence that held at 43 km/h met it at up to 59 m/s, 70 dents in 0.3 s).
+    const double cap = ioProp.mStruckStrikerSpeed;
+    const double speed = std::clamp(direction.dot(sum / weight), -cap, cap);
+    return *inBodyRotation * (speed * direction);
 }
 
 double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
@@ -569,21 +578,58 @@ void PropWorld::OnCollision(const plugin::Collision&, std::span<const plugin::Ob
 {
 }
 
+PropWorld::StrikerSpeeds PropWorld::MeasureStrikerSpeeds(const plugin::Collision& inCollision) const
+{
+    // The normal impulses on A (+j n; -j n on B) and their impulse-weighted point, in the world.
+    Vec3 on_a = Vec3::Zero(), point = Vec3::Zero();
+    double weight = 0.0;
+    for (const plugin::CollisionContact& contact : inCollision.mContacts)
+    {
+        on_a += contact.mImpulse * contact.mNormal;
+        point += contact.mImpulse * 0.5 * (contact.mPointOnA + contact.mPointOnB);
+        weight += contact.mImpulse;
+    }
+    StrikerSpeeds speeds{0.0, 0.0};
+    if (!(weight > 0.0) || !(on_a.norm() > 0.0))
+        return speeds;
+    point /= weight;
+    // intent: the world's state now (after the collision's own steps): how fast the striker pushes the
+    // struck members on
+    const auto pushing = [&](plugin::BodyId inStriker, const Vec3& inPush)
+    {
+        const plugin::BodyState* striker = mWorld->GetBodyState(inStriker);
+        if (striker == nullptr)
+            return 0.0;
+        const Vec3 velocity = striker->mLinearVelocity +
+                              striker->mAngularVelocity.cross(point - striker->mTransform.mTranslation);
+        const double speed = velocity.dot(inPush.normalized());
+        return std::isfinite(speed) ? std::max(speed, 0.0) : 0.0;
+    };
+    speeds[0] = pushing(inCollision.mBodyB, on_a);
+    speeds[1] = pushing(inCollision.mBodyA, -on_a);
+    return speeds;
+}
+
 void PropWorld::OnBeforeCollision(const plugin::Collision& inCollision)
 {
     // intent: off the game's thread, a collision of a prop's body waits for the next StartStep (a task may be
     // stepping the prop now); others are no prop's business
+    if (!FindProp(inCollision.mBodyA).IsValid() && !FindProp(inCollision.mBodyB).IsValid())
+        return;
     if (mSettings.mStepOffThread)
     {
-        if (FindProp(inCollision.mBodyA).IsValid() || FindProp(inCollision.mBodyB).IsValid())
-            mQueued.push_back({inCollision, mProps.size()});
+        mQueued.push_back({inCollision, mProps.size(), MeasureStrikerSpeeds(inCollision)});
         return;
     }
-    ApplyToProps(inCollision, mProps.size(), [](std::size_t) { return true; }, mTally);
+    ApplyToProps(
+        inCollision, mProps.size(), [](std::size_t) { return true; }, MeasureStrikerSpeeds(inCollision),
+        mTally);
 }
 
 template <class Which>
-void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount, const Which& inWhich, CollisionTally& ioTally)
+void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount,
+                             const Which& inWhich, const StrikerSpeeds& inStrikerSpeeds,
+                             CollisionTally& ioTally)
 {
     // Both bodies may carry a prop (a car hitting a fence carries none; two crates hitting each other two).
     for (const plugin::BodyId body : {inCollision.mBodyA, inCollision.mBodyB})
@@ -597,7 +643,10 @@ void PropWorld::ApplyToProps(const plugin::Collision& inCollision, std::size_t i
         {
             if (ioTally.mRefused++ == 0)
                 ioTally.mFirstRefusal = status;
+            continue;
         }
+        hit.mHitsStrikerSpeed =
+            std::max(hit.mHitsStrikerSpeed, inStrikerSpeeds[body == inCollision.mBodyA ? 0 : 1]);
     }
 }
 

@@ -11,6 +11,7 @@
 #include <crumple/props/FemProp.h>
 #include <crumple/props/FragmentBody.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -211,16 +212,20 @@ public:
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mPiecesTaken : 0;
     }
     /// How fast the prop's material that the latest collisions struck is moving after the step, along the
-    /// direction it was struck (world frame, m/s): the mean velocity of the nodes that took the impulses of the
-    /// latest step that had any, weighted by each node's share (nodes of pieces handed over left out), projected
-    /// on the direction of their total impulse (the held body stands for the whole prop: moved sideways or up
-    /// with a timber flung so, it would carry the car with it); zero before anything struck it and while
-    /// it sleeps (or for an unknown prop). Collisions reach a prop when the world dispatches them, which may
-    /// be steps after the contact, so the latest hits stand until new ones arrive. A held prop body stands
-    /// for the whole prop but a car meets only the members it touches: give this to the adapter's
-    /// SetHeldVelocity after each Step (LandStep publishes a step's), so that the engine's next contact sees the struck timbers moving as
-    /// the FEM moves them (a timber already pushed to the car's speed takes no new impulse; one its posts
-    /// hold back takes what holds it back).
+    /// direction it was struck (world frame, m/s): the mean velocity of the nodes that took the impulses of
+    /// the latest step that had any, weighted by each node's share (nodes of pieces handed over left out),
+    /// projected on the direction of their total impulse (the held body stands for the whole prop: moved
+    /// sideways or up with a timber flung so, it would carry the car with it); zero before anything struck it
+    /// and while it sleeps (or for an unknown prop). Collisions reach a prop when the world dispatches them,
+    /// which may be steps after the contact, so the latest hits stand until new ones arrive. A held prop body
+    /// stands for the whole prop but a car meets only the members it touches: give this to the adapter's
+    /// SetHeldVelocity after each Step (LandStep publishes a step's), so that the engine's next contact sees
+    /// the struck timbers moving as the FEM moves them (a timber already pushed to the car's speed takes no
+    /// new impulse; one its posts hold back takes what holds it back). Its speed is bounded by how fast the
+    /// fastest striker of those hits pushed on along its push when its collision was dispatched: the engine
+    /// met the struck members with the whole prop's mass, the FEM hands those impulses to the few nodes they
+    /// landed on, and where those outran their striker (300 m/s for a car at 2 m/s against an 8 kg panel,
+    /// tests/props) the held body would carry the whole prop at their speed into the next contact.
     Vec3 GetContactVelocity(PropId inProp) const
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mContactVelocity : Vec3::Zero();
@@ -290,6 +295,8 @@ private:
         std::vector<Vec3> mShapePositions{}; ///< Node positions at the last TakeChangedShape
         std::vector<NodalImpulse> mHits{};   ///< Nodal impulses of the collisions since the last Step
         std::vector<NodalImpulse> mStruck{}; ///< Those of the latest step that had any (GetContactVelocity)
+        double mHitsStrikerSpeed = 0.0;   ///< Fastest striker of mHits' collisions along its push (m/s, >= 0)
+        double mStruckStrikerSpeed = 0.0; ///< ... of mStruck's (GetContactVelocity's bound)
         Vec3 mContactVelocity = Vec3::Zero(); ///< GetContactVelocity (world frame, m/s)
         Vec3 mSteppedVelocity = Vec3::Zero(); ///< The step's, until LandStep publishes it
         double mContactMass = 0.0;            ///< GetContactMass (kg; 0: none)
@@ -309,12 +316,17 @@ private:
         std::uint64_t mRefused = 0;
         Status mFirstRefusal;
     };
+    // How fast each body of a collision pushes the other on, along the collision's normal impulses on that
+    // other (m/s, >= 0): [0] how fast B pushes A, [1] how fast A pushes B. UpdateContactVelocity's bound for
+    // a prop on that body.
+    using StrikerSpeeds = std::array<double, 2>;
     // A collision waiting for the next step, and how many props there were when it was dispatched (those it
     // reaches, as it would have when dispatched).
     struct QueuedCollision
     {
         plugin::Collision mCollision;
         std::size_t mPropCount = 0;
+        StrikerSpeeds mStrikerSpeeds{}; ///< Taken at dispatch, on the game's thread
     };
     // A step from StartStep to LandStep: what the task needs and what it made. Stable address for the task.
     struct InFlight
@@ -340,10 +352,14 @@ private:
     // The flight's collisions onto, then the step of, the props on the task (inOnTask) or off it, in PropId
     // order, stopping at a prop that fails.
     void RunPart(InFlight& ioFlight, bool inOnTask);
-    // Applies a collision to the props of its bodies among the first inPropCount for which inWhich(prop index)
-    // holds (hits kept for the contact velocity), counted in ioTally.
+    // Applies a collision to the props of its bodies among the first inPropCount for which inWhich(prop
+    // index) holds (hits kept for the contact velocity), counted in ioTally. A collision's StrikerSpeeds from
+    // the world's states now (at the contacts' impulse-weighted point; 0 for a static or unknown body). Reads
+    // the world: the game's thread only.
+    StrikerSpeeds MeasureStrikerSpeeds(const plugin::Collision& inCollision) const;
     template <class Which>
-    void ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount, const Which& inWhich, CollisionTally& ioTally);
+    void ApplyToProps(const plugin::Collision& inCollision, std::size_t inPropCount, const Which& inWhich,
+                      const StrikerSpeeds& inStrikerSpeeds, CollisionTally& ioTally);
     // Returns when no task is writing the props (a const call may read them then).
     void WaitForStep() const;
     // mStepOffThread with a job system that can start tasks: steps run as tasks.
