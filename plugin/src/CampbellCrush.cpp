@@ -289,18 +289,25 @@ void LimitByCell(const DamageMaterial& inMaterial, const BodyLength& inLength, c
 
 } // namespace
 
-OccupantCellFit FitOccupantCell(const DamageMaterial& inMaterial, const BodyLength& inLength,
-                                const ffd::FfdDeformer& inDeformer)
+double OccupantCellMaxSpacing(const DamageMaterial& inMaterial, double inLength)
 {
     // A zone must hold the flat layer, the spacing kept clear of the cell and two spacings to compact over.
     constexpr double cMinZoneSpacings = 4.0;
+    if (!(inMaterial.mModel == ECrushModel::Campbell && inMaterial.mCrushZoneFraction < 0.5 &&
+          inLength > 0.0))
+        return std::numeric_limits<double>::infinity();
+    return inMaterial.mCrushZoneFraction * inLength / cMinZoneSpacings;
+}
+
+OccupantCellFit FitOccupantCell(const DamageMaterial& inMaterial, const BodyLength& inLength,
+                                const ffd::FfdDeformer& inDeformer)
+{
     OccupantCellFit fit;
     const double extent = inLength.mMax - inLength.mMin;
-    fit.mHasCell =
-        inMaterial.mModel == ECrushModel::Campbell && inMaterial.mCrushZoneFraction < 0.5 && extent > 0.0;
+    fit.mMaxSpacing = OccupantCellMaxSpacing(inMaterial, extent);
+    fit.mHasCell = std::isfinite(fit.mMaxSpacing);
     fit.mZoneLength = inMaterial.mCrushZoneFraction * extent;
     fit.mSpacing = CoarsestSpacingAlong(inDeformer, inLength.mAxis);
-    fit.mMaxSpacing = fit.mZoneLength / cMinZoneSpacings;
     return fit;
 }
 

@@ -57,3 +57,27 @@ TEST_CASE("Occupant cell: a lattice too coarse to keep it is warned of and refus
     CHECK(Zone(fine.Get(), EZone::Front) > 0.3);
     CHECK(Zone(fine.Get(), EZone::Roof) <= 0.02 * Zone(fine.Get(), EZone::Front));
 }
+
+TEST_CASE("Occupant cell: a short body's fitted lattice is fine enough for its cell unless the scenario "
+          "chose the spacing",
+          "[crash]")
+{
+    // A 2 m car: crush zones of 0.5 m, so the default 0.15 m spacing (0.146 m fitted) loses the cell. Left to
+    // the runner the fitted zone takes 0.125 m; given 0.15 m, the scenario's choice stands and is warned of.
+    CrashScenario scenario = WallCrash();
+    scenario.mVehicle.mBoxSize = Vec3(2.0, 1.2, 1.0);
+    scenario.mVehicle.mMass = 300.0;
+    const Result<CrashOutcome> fitted =
+        RunCrash(scenario, CrashRunOptions{.mReplayFile = {}, .mStrict = true});
+    REQUIRE(fitted.IsValid());
+    CHECK(fitted.Get().mWarnings.empty());
+    CHECK(Zone(fitted.Get(), EZone::Front) > 0.05);
+    CHECK(Zone(fitted.Get(), EZone::Roof) <= 0.02 * Zone(fitted.Get(), EZone::Front));
+    CHECK(Zone(fitted.Get(), EZone::Rear) <= 0.02 * Zone(fitted.Get(), EZone::Front));
+
+    scenario.mVehicle.mControlSpacingGiven = true; // control_spacing_m 0.15 in the file
+    const Result<CrashOutcome> chosen = RunCrash(scenario, CrashRunOptions{});
+    REQUIRE(chosen.IsValid());
+    REQUIRE(chosen.Get().mWarnings.size() == 1);
+    CHECK(chosen.Get().mWarnings[0].find("control_spacing_m 0.125") != std::string::npos);
+}

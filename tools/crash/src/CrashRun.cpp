@@ -188,6 +188,21 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         settings.mCarMesh = std::move(loaded.Get());
         settings.mCarRigidParts = std::move(rigid_parts);
     }
+    // intent: a body shorter than 2.4 m needs a finer lattice than the default to keep its occupant cell
+    // (FitOccupantCell); unless the scenario chose the lattice, the fitted zone gets it
+    if (!vehicle.mControlSpacingGiven && vehicle.mControlCount == std::array<int, 3>{0, 0, 0} &&
+        vehicle.mZones.empty())
+    {
+        double length = 2.0 * std::max(settings.mHalfExtents.x(), settings.mHalfExtents.y());
+        if (settings.mCarMesh)
+        {
+            const plugin::BodyLength body =
+                plugin::MeasureBodyLength(settings.mCarMesh->mPositions, Vec3::UnitZ());
+            length = body.mMax - body.mMin;
+        }
+        settings.mControlSpacing =
+            std::min(vehicle.mControlSpacing, plugin::OccupantCellMaxSpacing(vehicle.mMaterial, length));
+    }
     if (const std::string warning =
             StepOverlapWarning(inScenario, MeasureStepOverlap(inScenario, settings.mHalfExtents));
         !warning.empty())

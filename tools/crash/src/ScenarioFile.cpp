@@ -593,6 +593,7 @@ class ScenarioReader
             !ReadNumber(inVehicle, inPointer, "control_spacing_m", NumberRange::Positive(), false,
                         ioVehicle.mControlSpacing))
             return false;
+        ioVehicle.mControlSpacingGiven = inVehicle.contains("control_spacing_m");
         // Zones: [{"min_m": [x, y, z], "max_m": [x, y, z], "control_count": [...], "max_total_deformation_m": d}]
         if (const auto zones = inVehicle.find("zones"); zones != inVehicle.end())
         {

@@ -140,6 +140,11 @@ struct CRUMPLE_API OccupantCellFit
     bool IsLost() const { return mHasCell && !(mSpacing <= mMaxSpacing); }
 };
 
+/// The coarsest control spacing along a body of length inLength (m) that keeps its occupant cell with
+/// inMaterial (a quarter of a crush zone, OccupantCellFit::mMaxSpacing); infinity when the material leaves no
+/// cell (the impulse factor, a crush zone of half the length or more) or the length is not > 0.
+CRUMPLE_API double OccupantCellMaxSpacing(const DamageMaterial& inMaterial, double inLength);
+
 /// The occupant cell's fit for a body of length inLength dented by inDeformer's lattice with inMaterial
 /// (PlanCampbellCrush keeps a cell exactly when mHasCell and not IsLost(), for crushes within 60 degrees of
 /// the length). DeformableObject::GetOccupantCellFit gives an object's.
