@@ -600,9 +600,7 @@ PropWorld::StrikerSpeeds PropWorld::MeasureStrikerSpeeds(const plugin::Collision
         const plugin::BodyState* striker = mWorld->GetBodyState(inStriker);
         if (striker == nullptr)
             return 0.0;
-        const Vec3 velocity = striker->mLinearVelocity +
-                              striker->mAngularVelocity.cross(point - striker->mTransform.mTranslation);
-        const double speed = velocity.dot(inPush.normalized());
+        const double speed = striker->PointVelocity(point).dot(inPush.normalized());
         return std::isfinite(speed) ? std::max(speed, 0.0) : 0.0;
     };
     speeds[0] = pushing(inCollision.mBodyB, on_a);
