@@ -273,16 +273,8 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
             return created.GetError();
         barrier.emplace(std::move(created.Get()));
     }
-    std::unique_ptr<plugin::DamageRecorder> recorder;
-    if (!inOptions.mReplayFile.empty())
-    {
-        Result<std::unique_ptr<plugin::DamageRecorder>> created =
-            plugin::DamageRecorder::Create(inOptions.mReplayFile, scene.GetDamage());
-        if (created.HasError())
-            return created.GetError();
-        recorder = std::move(created.Get());
-    }
-    CrashOutcome outcome;
+    // intent: refused before anything is written (the recorder below opens its file)
+    std::vector<std::string> scene_warnings;
     if (const plugin::OccupantCellFit cell =
             scene.GetDamage().GetObject(scene.GetCarObject())->GetOccupantCellFit();
         cell.IsLost())
@@ -296,8 +288,19 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
             cell.mSpacing, cell.mZoneLength, cell.mMaxSpacing);
         if (inOptions.mStrict)
             return MakeError(EError::InvalidArgument, std::string(text) + "; refused by --strict");
-        outcome.mWarnings.push_back(text);
+        scene_warnings.push_back(text);
     }
+    std::unique_ptr<plugin::DamageRecorder> recorder;
+    if (!inOptions.mReplayFile.empty())
+    {
+        Result<std::unique_ptr<plugin::DamageRecorder>> created =
+            plugin::DamageRecorder::Create(inOptions.mReplayFile, scene.GetDamage());
+        if (created.HasError())
+            return created.GetError();
+        recorder = std::move(created.Get());
+    }
+    CrashOutcome outcome;
+    outcome.mWarnings = std::move(scene_warnings);
     outcome.mMass = inSettings.mMass;
     outcome.mGroundDeceleration =
         inSettings.mFloating ? 0.0 : inSettings.mGroundFriction * common::cCrashGravity;
