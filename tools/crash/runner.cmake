@@ -15,6 +15,7 @@ add_library(crumple_crash_run STATIC ${CMAKE_CURRENT_LIST_DIR}/src/Calibration.c
     ${CMAKE_CURRENT_LIST_DIR}/src/SlurmSweep.cpp ${CMAKE_CURRENT_LIST_DIR}/src/OutputFolders.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/FemBarrierCoupling.cpp ${CMAKE_CURRENT_LIST_DIR}/src/FloatingBarrierCrash.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/RecutCarMesh.cpp ${CMAKE_CURRENT_LIST_DIR}/src/SanityChecks.cpp ${CMAKE_CURRENT_LIST_DIR}/src/ShippedCars.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/StepOverlap.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistory.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/TimeHistoryPlots.cpp ${CMAKE_CURRENT_LIST_DIR}/src/WallGap.cpp)
 target_link_libraries(crumple_crash_run PUBLIC crumple_crash_scenario crumple_scenes_pictures

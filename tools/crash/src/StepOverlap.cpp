@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/crash/StepOverlap.h>
 
+#include "EngineCrash.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -51,10 +53,12 @@ StepOverlap MeasureStepOverlap(const CrashScenario& inScenario, const Vec3& inHa
     case ETarget::OffsetWall:
     {
         // It covers mOverlapPercent of the car's width on the car's left (+y) side and everything beyond, so
-        // only a move to the right clears it (the engine scenes' edge: CrashWallLeftEdge).
-        const double edge =
-            impact.mOffset + inHalfExtents.y() - 2.0 * inHalfExtents.y() * target.mOverlapPercent / 100.0;
-        result.mOverlap = high - edge;
+        // only a move to the right clears it; its edge is the one the engine scenes build.
+        common::EngineCrashSettings crash;
+        crash.mOffset = impact.mOffset;
+        crash.mHalfExtents = inHalfExtents;
+        crash.mOverlapFraction = target.mOverlapPercent / 100.0;
+        result.mOverlap = high - common::CrashWallLeftEdge(crash);
         break;
     }
     case ETarget::Vehicle:
