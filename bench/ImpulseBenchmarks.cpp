@@ -1,6 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
+#include "CarOnHeldFence.h"
+#include "WedgedPiece.h"
 #include "WorldFixture.h"
 
 #include <crumple/plugin/BaraffImpulse.h>
@@ -8,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace crumple::bench
@@ -95,6 +99,75 @@ void FrictionCase(BenchTable& ioTable, int inGrid, int inRepetitions)
     const double error = std::max(std::abs(normal - expected), (friction + mu * expected * Vec3::UnitX()).norm()) / expected;
     ioTable.Add({"friction_solve", std::to_string(contacts.size()) + "_sliding_contacts", timing.mWallMs / cInner, error,
                  "rel_impulse", "analytic=(1+e)mv=" + std::to_string(expected) + ",mu_times_it;cpu_ms=" + FormatExtra(timing.mCpuMs / cInner)});
+}
+
+// One contact set solved by projected Gauss-Seidel alone and with subspace steps, interleaved; the error of
+// each is the struck body's velocity change against Gauss-Seidel run to convergence without a sweep bound
+// (an independent answer: the same model, another path to it), relative to the largest of the two bodies'.
+void FrictionCrawlCase(BenchTable& ioTable, const std::string& inName, const BodyState& inA,
+                       const BodyState& inB, const std::vector<ImpulseContact>& inContacts,
+                       double inRestitution, double inClosingSpeed, int inRepetitions)
+{
+    const auto change_of = [&](const std::vector<ContactImpulse>& inImpulses)
+    {
+        Eigen::Matrix<double, 12, 1> change = Eigen::Matrix<double, 12, 1>::Zero();
+        for (std::size_t i = 0; i < inContacts.size(); ++i)
+        {
+            const Vec3 p = inImpulses[i].mNormal * inContacts[i].mNormal + inImpulses[i].mFriction;
+            change.segment<3>(0) += inA.InverseMass() * p;
+            change.segment<3>(3) +=
+                inA.InverseInertia() * (inContacts[i].mPoint - inA.mCenterOfMass).cross(p);
+            change.segment<3>(6) -= inB.InverseMass() * p;
+            change.segment<3>(9) -=
+                inB.InverseInertia() * (inContacts[i].mPoint - inB.mCenterOfMass).cross(p);
+        }
+        return change;
+    };
+    FrictionSolveStats reference_stats;
+    const auto reference =
+        change_of(FrictionalImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed,
+                                     {.mMaxSweeps = 1000000, .mSubspaceInterval = 0}, &reference_stats));
+    if (!reference_stats.mConverged)
+        throw std::runtime_error("friction_crawl " + inName + ": the reference did not converge");
+    const FrictionSolveSettings plain{.mSubspaceInterval = 0}, subspace{};
+    std::vector<ContactImpulse> plain_impulses, subspace_impulses;
+    FrictionSolveStats plain_stats, subspace_stats;
+    constexpr int cInner = 5;
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions, {{[] {},
+                         [&]
+                         {
+                             for (int i = 0; i < cInner; ++i)
+                                 plain_impulses = FrictionalImpulses(inA, inB, inContacts, inRestitution,
+                                                                     inClosingSpeed, plain, &plain_stats);
+                         }},
+                        {[] {},
+                         [&]
+                         {
+                             for (int i = 0; i < cInner; ++i)
+                                 subspace_impulses =
+                                     FrictionalImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed,
+                                                        subspace, &subspace_stats);
+                         }}});
+    const double scale = std::max(reference.lpNorm<Eigen::Infinity>(), std::numeric_limits<double>::min());
+    const double plain_error = (change_of(plain_impulses) - reference).lpNorm<Eigen::Infinity>() / scale;
+    const double subspace_error =
+        (change_of(subspace_impulses) - reference).lpNorm<Eigen::Infinity>() / scale;
+    const std::string contacts = std::to_string(inContacts.size()) + "_contacts";
+    ioTable.Add({"friction_crawl", inName + "/" + contacts + "/gauss_seidel", timing[0].mWallMs / cInner,
+                 plain_error, "rel_velocity_change",
+                 "sweeps=" + std::to_string(plain_stats.mSweeps) +
+                     ";converged=" + std::to_string(plain_stats.mConverged) +
+                     ";reference_sweeps=" + std::to_string(reference_stats.mSweeps) +
+                     ";cpu_ms=" + FormatExtra(timing[0].mCpuMs / cInner)});
+    ioTable.Add({"friction_crawl", inName + "/" + contacts + "/subspace_steps", timing[1].mWallMs / cInner,
+                 subspace_error, "rel_velocity_change",
+                 "sweeps=" + std::to_string(subspace_stats.mSweeps) +
+                     ";subspace_steps=" + std::to_string(subspace_stats.mSubspaceSteps) +
+                     ";converged=" + std::to_string(subspace_stats.mConverged) +
+                     ";cpu_ms=" + FormatExtra(timing[1].mCpuMs / cInner) +
+                     ";speedup_cpu=" + FormatExtra(timing[0].mCpuMs / timing[1].mCpuMs) +
+                     ";speedup_wall=" + FormatExtra(timing[0].mWallMs / timing[1].mWallMs)});
 }
 
 // Frames without impacts: an empty frame and a car resting on four wheel contacts.
@@ -194,6 +267,20 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         ImpulseCase(ioTable, grid, repetitions);
     for (int grid : {2, 4, 8})
         FrictionCase(ioTable, grid, repetitions);
+    // Gauss-Seidel's slow cases: the piece wedged in the racing fence (the solve that ended at the sweep
+    // bound at the fence hit), the car pressing the held fence just before (no exact answer for its states:
+    // the subspace steps' cost when they all fail) and the sliding box's grids, each contact sliding.
+    const common::WedgedPiece wedged = common::MakeWedgedPiece();
+    FrictionCrawlCase(ioTable, "wedged_piece", wedged.mFence, wedged.mPiece, wedged.mContacts,
+                      wedged.mRestitution, wedged.mClosingSpeed, repetitions);
+    const common::CarOnHeldFence pressing = common::MakeCarOnHeldFence();
+    FrictionCrawlCase(ioTable, "car_on_held_fence", pressing.mCar, pressing.mFence, pressing.mContacts,
+                      pressing.mRestitution, pressing.mClosingSpeed, repetitions);
+    BodyState ground;
+    ground.mMotionType = EMotionType::Static;
+    for (int grid : {2, 4, 8})
+        FrictionCrawlCase(ioTable, "sliding_box", FallingBox(Vec3(10.0, 0.0, -5.0)), ground,
+                          BottomGrid(grid, 0.5), 0.1, 0.5, repetitions);
     for (int contacts : {10, 100, 1000, 10000})
         ManifoldCase(ioTable, contacts, inOptions.mQuick ? 3 : 11);
     IdleCases(ioTable, repetitions);

@@ -19,25 +19,58 @@ struct CRUMPLE_API ContactImpulse
     Vec3 mFriction = Vec3::Zero(); ///< Tangential impulse on A (N s), perpendicular to n, |mFriction| <= mu mNormal
 };
 
+/// How the joint friction solve is bounded and sped up (FrictionalImpulses).
+struct CRUMPLE_API FrictionSolveSettings
+{
+    int mMaxSweeps = 1000; ///< Gauss-Seidel sweeps at most (>= 1): crowds of redundant contacts can crawl
+    int mSubspaceInterval =
+        20; ///< Sweeps before the first subspace step (0: none), each later one twice as many
+            ///< as the one before: a step solves the nonlinear system of the contacts' current
+            ///< states (pushing, sticking, sliding) by Newton's method and is kept when it keeps
+            ///< those states and meets Coulomb's conditions better. Where Gauss-Seidel crawls this
+            ///< ends it; where no such answer exists the doubling bounds the steps' cost
+            ///< (crumple-bench friction_crawl rows)
+    int mSubspaceMaxContacts =
+        16; ///< Pairs of more contacts take no subspace steps: a step costs O((3N)^3), at 64
+            ///< sliding contacts 2.5 times the 143 sweeps it saved; DamageWorldSettings'
+            ///< mMaxContactsPerPair (16) reduces an engine's manifold to this many
+};
+
+/// What one joint friction solve did.
+struct CRUMPLE_API FrictionSolveStats
+{
+    int mSweeps = 0; ///< Gauss-Seidel sweeps run (0: no friction acted, the frictionless answer stands)
+    int mSubspaceSteps = 0; ///< subspace steps kept
+    bool mConverged = true; ///< false: stopped at FrictionSolveSettings::mMaxSweeps while a sweep still moved
+                            ///< a contact point's velocity by more than 1e-12 of the largest approach speed
+};
+
 /// Impulses with Coulomb friction of contacts that one engine step reported together for the same body pair.
 ///
-/// Normal impulses are SimultaneousImpulses' (closing contacts only, K j = -(1+e) v, minimum norm, pushing
-/// only), and each contact's friction impulse t stops its sliding (zero relative tangential velocity after
-/// the impulses, no tangential restitution) where Coulomb's isotropic cone |t| <= mu j allows; otherwise it
-/// slides and t is cut back onto the cone. Friction at a lever arm changes the normal approach speeds, and the
-/// normal impulses bound friction, so the two are solved in turn until neither changes (staggered projections:
-/// Kaufman, Sueda, James and Pai 2008, "Staggered projections for frictional contact in multibody systems").
-/// Each friction solve is a projected Gauss-Seidel over the contacts' 2x2 tangent blocks of the impulse
-/// response, warm-started by the previous round. The restitution target stays the approach speed before any
-/// impulse: after the solve each pushing contact separates at e times the speed it closed with.
-/// With mu = 0 on every contact the normal impulses are SimultaneousImpulses' bit for bit and friction is zero.
+/// Starts from SimultaneousImpulses' normal impulses (closing contacts only, K j = -(1+e) v, minimum norm,
+/// pushing only). Each contact's friction impulse t then stops its sliding (zero relative tangential velocity
+/// after the impulses, no tangential restitution) where Coulomb's isotropic cone |t| <= mu j allows;
+/// otherwise it slides and t lies on the cone against the slip (maximal dissipation). Friction at a lever arm
+/// changes the normal approach speeds and the normal impulses bound friction, so both are solved together:
+/// projected Gauss-Seidel over every contact's normal row and 2x2 tangent block, as engines solve contact,
+/// until a sweep moves no contact point's velocity by more than 1e-12 of the largest approach speed, with a
+/// subspace minimization step (Silcowitz-Hansen, Niebe and Erleben 2010) every
+/// FrictionSolveSettings::mSubspaceInterval sweeps. Every contact joins, so one that friction presses onto
+/// the other body is held too. The restitution target stays the approach speed before any impulse: after the
+/// solve each pushing contact separates at e times the speed it closed with. With mu = 0 on every contact the
+/// normal impulses are SimultaneousImpulses' bit for bit and friction is zero. Deterministic: the same input
+/// gives the same bits.
 /// @param[in] inContacts       contacts with their mu (ImpulseContact::mFriction, >= 0, +inf for no sliding)
 /// @param[in] inRestitution    coefficient of restitution e in [0, 1]
 /// @param[in] inClosingSpeed   contacts approaching slower than this (m/s, >= 0), after their speculative
 ///                             speed, count as resting: zero impulse, normal and tangential
+/// @param[in] inSettings       the solve's sweep bound and subspace interval
+/// @param[out] outStats        when not null, what the solve did
 /// @return one ContactImpulse per contact, in order
 CRUMPLE_API std::vector<ContactImpulse> FrictionalImpulses(const BodyState& inA, const BodyState& inB,
                                                            std::span<const ImpulseContact> inContacts,
-                                                           double inRestitution, double inClosingSpeed);
+                                                           double inRestitution, double inClosingSpeed,
+                                                           const FrictionSolveSettings& inSettings = {},
+                                                           FrictionSolveStats* outStats = nullptr);
 
 } // namespace crumple::plugin

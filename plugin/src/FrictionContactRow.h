@@ -1,0 +1,137 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The joint friction solve's contact rows, shared by its Gauss-Seidel sweeps (FrictionalImpulses.cpp) and its
+// subspace step (FrictionSubspaceStep.cpp). Private to the plugin.
+
+#include <crumple/plugin/BodyState.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace crumple::plugin
+{
+
+// The radius of a contact's friction cone, mu j (N s): zero without a normal impulse, also for mu = +inf.
+inline double ConeRadius(double inFriction, double inNormal)
+{
+    return inNormal > 0.0 ? inFriction * inNormal : 0.0;
+}
+
+// The pair's velocity changes from the impulses applied so far (the bodies' own velocities stay in their
+// states).
+struct VelocityChange
+{
+    Vec3 mLinearA = Vec3::Zero(), mAngularA = Vec3::Zero(), mLinearB = Vec3::Zero(), mAngularB = Vec3::Zero();
+
+    // intent: impulse inImpulse on A at inPoint, its opposite on B
+    void Apply(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inImpulse)
+    {
+        mLinearA += inA.InverseMass() * inImpulse;
+        mAngularA += inA.InverseInertia() * (inPoint - inA.mCenterOfMass).cross(inImpulse);
+        mLinearB -= inB.InverseMass() * inImpulse;
+        mAngularB -= inB.InverseInertia() * (inPoint - inB.mCenterOfMass).cross(inImpulse);
+    }
+    // intent: A's-minus-B's velocity change at inPoint
+    Vec3 At(const BodyState& inA, const BodyState& inB, const Vec3& inPoint) const
+    {
+        return mLinearA + mAngularA.cross(inPoint - inA.mCenterOfMass) - mLinearB -
+               mAngularB.cross(inPoint - inB.mCenterOfMass);
+    }
+};
+
+// Change of A's-minus-B's velocity at inPoint per unit impulse vector at the same point (s/kg), 3 by 3:
+// W = (1/m_A + 1/m_B) I - [r_A]x I_A^-1 [r_A]x - [r_B]x I_B^-1 [r_B]x.
+inline Mat3 PointResponse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint)
+{
+    Mat3 response;
+    const Vec3 r_a = inPoint - inA.mCenterOfMass, r_b = inPoint - inB.mCenterOfMass;
+    for (int k = 0; k < 3; ++k)
+    {
+        const Vec3 e = Vec3::Unit(k);
+        response.col(k) = (inA.InverseMass() + inB.InverseMass()) * e +
+                          (inA.InverseInertia() * r_a.cross(e)).cross(r_a) +
+                          (inB.InverseInertia() * r_b.cross(e)).cross(r_b);
+    }
+    return response;
+}
+
+// The impulse in a disc of radius r that leaves the least kinetic energy: t minimizing 1/2 t^T M t + t^T c
+// over |t| <= r, with c the slip the other impulses leave (Coulomb friction by the principle of maximal
+// dissipation: the slip after, c + M t, is then zero or points against t). Inside the disc t = -M^-1 c; on
+// its rim t = -(M + lambda I)^-1 c with lambda > 0 the root of 1/|t(lambda)| = 1/r, found by Newton's method
+// on that nearly linear secular function (More and Sorensen 1983, the trust-region subproblem), in M's
+// eigenbasis. M is positive definite (ContactRow leaves friction out where it is not); its factor and
+// eigenbasis are worked out once per contact, as every sweep solves with the same M.
+class LeastEnergyInDisc
+{
+  public:
+    LeastEnergyInDisc() = default;
+    explicit LeastEnergyInDisc(const Eigen::Matrix2d& inResponse) : mFactor(inResponse), mEigen(inResponse) {}
+
+    Eigen::Vector2d Solve(const Eigen::Vector2d& inSlip, double inRadius) const
+    {
+        if (!(inRadius > 0.0))
+            return Eigen::Vector2d::Zero();
+        const Eigen::Vector2d free = -mFactor.solve(inSlip);
+        if (!(free.norm() > inRadius))
+            return free;
+        const Eigen::Vector2d d = mEigen.eigenvalues();
+        const Eigen::Vector2d c = mEigen.eigenvectors().transpose() * inSlip;
+        // |t(lambda)|^2 = sum c_k^2 / (d_k + lambda)^2; phi(lambda) = 1/|t| - 1/r rises from phi(0) < 0.
+        double lambda = 0.0;
+        for (int iteration = 0; iteration < 100; ++iteration)
+        {
+            const Eigen::Vector2d t = (c.array() / (d.array() + lambda)).matrix();
+            const double norm = t.norm();
+            const double derivative_of_norm =
+                -(c.array().square() / (d.array() + lambda).cube()).sum() / norm;
+            const double phi = 1.0 / norm - 1.0 / inRadius;
+            const double next = lambda - phi / (-derivative_of_norm / (norm * norm));
+            if (!(next > lambda) || next - lambda <= 1.0e-15 * (lambda + d.maxCoeff()))
+            {
+                lambda = std::max(next, lambda);
+                break;
+            }
+            lambda = next;
+        }
+        Eigen::Vector2d t = -(mEigen.eigenvectors() * (c.array() / (d.array() + lambda)).matrix());
+        // intent: on the rim exactly, whatever the last Newton step left
+        t *= inRadius / t.norm();
+        return t;
+    }
+
+  private:
+    Eigen::LDLT<Eigen::Matrix2d> mFactor;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> mEigen;
+};
+
+// One contact in the joint solve: its normal row and its friction block.
+struct ContactRow
+{
+    Vec3 mPoint = Vec3::Zero(), mNormal = Vec3::UnitZ(), mTangent1 = Vec3::UnitX(), mTangent2 = Vec3::UnitY();
+    double mNormalResponse = 0.0; // n . W n (s/kg); zero: nothing can move the contact
+    Eigen::Matrix2d mTangentResponse =
+        Eigen::Matrix2d::Zero(); // T^T W T, symmetric positive definite or zero
+    LeastEnergyInDisc mDisc;     // its friction step, where mFriction > 0
+    double mTarget = 0.0;        // the least normal velocity change the contact must take (m/s)
+    double mFriction = 0.0;      // mu; zero where friction cannot act
+    double mNormalImpulse = 0.0;
+    Vec3 mFrictionImpulse = Vec3::Zero();
+};
+
+// The velocity change that inRows' impulses make together.
+inline VelocityChange ChangeOfRows(const BodyState& inA, const BodyState& inB,
+                                   const std::vector<ContactRow>& inRows)
+{
+    VelocityChange change;
+    for (const ContactRow& row : inRows)
+        change.Apply(inA, inB, row.mPoint, row.mNormalImpulse * row.mNormal + row.mFrictionImpulse);
+    return change;
+}
+
+} // namespace crumple::plugin
