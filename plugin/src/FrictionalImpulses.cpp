@@ -25,6 +25,9 @@ namespace
 // converged case): that coupling amplifies even such differences.
 constexpr double cRelativeChange = 1.0e-12;
 
+// Kinetic energy made beyond this fraction of the sum of its terms' magnitudes is not round-off.
+constexpr double cEnergyRoundOff = 1.0e-12;
+
 // Projected Gauss-Seidel over every contact's normal row and friction block together, as engines solve
 // contact (Bullet's sequential impulses, ODE's quick step), from ioRows' impulses: a normal impulse j >= 0
 // takes the contact's normal velocity change to at least its target (zero impulse where it is more), then the
@@ -99,6 +102,27 @@ FrictionSolveStats SolveJointly(const BodyState& inA, const BodyState& inB, doub
     return stats;
 }
 
+// The change of the pair's kinetic energy that inRows' impulses make (J): with p_i the impulse on A at point
+// i, v_i the A-minus-B velocity there before and u_i the change all impulses make there, dE = sum_i p_i .
+// (v_i + u_i / 2), exactly (the energy is quadratic in the impulses), with no inertia inverted. outScale: the
+// sum of the terms' magnitudes (J), the scale of the sum's round-off.
+double KineticEnergyChange(const BodyState& inA, const BodyState& inB, const std::vector<ContactRow>& inRows,
+                           double& outScale)
+{
+    const VelocityChange change = ChangeOfRows(inA, inB, inRows);
+    double made = 0.0;
+    outScale = 0.0;
+    for (const ContactRow& row : inRows)
+    {
+        const Vec3 impulse = row.mNormalImpulse * row.mNormal + row.mFrictionImpulse;
+        const Vec3 before = inA.PointVelocity(row.mPoint) - inB.PointVelocity(row.mPoint);
+        const Vec3 half_change = 0.5 * change.At(inA, inB, row.mPoint);
+        made += impulse.dot(before + half_change);
+        outScale += std::abs(impulse.dot(before)) + std::abs(impulse.dot(half_change));
+    }
+    return made;
+}
+
 } // namespace
 
 std::vector<ContactImpulse> FrictionalImpulses(const BodyState& inA, const BodyState& inB,
@@ -162,7 +186,27 @@ std::vector<ContactImpulse> FrictionalImpulses(const BodyState& inA, const BodyS
     double speed_scale = std::numeric_limits<double>::min();
     for (const ContactRow& row : rows)
         speed_scale = std::max(speed_scale, std::abs(row.mTarget));
-    const FrictionSolveStats stats = SolveJointly(inA, inB, speed_scale, inSettings, rows);
+    FrictionSolveStats stats = SolveJointly(inA, inB, speed_scale, inSettings, rows);
+    // intent: a solve stopped at its bound may have made kinetic energy (measured: 10 of 20,000 adversarial
+    // sets with mu = +inf gained up to 144 %, whose impulses would dent as a much harder hit); then the
+    // frictionless answer stands where it makes less
+    if (!stats.mConverged)
+    {
+        std::vector<ContactRow> frictionless = rows;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+            frictionless[i].mNormalImpulse = impulses[i].mNormal;
+            frictionless[i].mFrictionImpulse = Vec3::Zero();
+        }
+        double scale = 0.0, frictionless_scale = 0.0;
+        const double made = KineticEnergyChange(inA, inB, rows, scale);
+        if (made > cEnergyRoundOff * scale &&
+            KineticEnergyChange(inA, inB, frictionless, frictionless_scale) < made)
+        {
+            rows = std::move(frictionless);
+            stats.mFrictionDropped = true;
+        }
+    }
     if (outStats != nullptr)
         *outStats = stats;
     for (std::size_t i = 0; i < rows.size(); ++i)

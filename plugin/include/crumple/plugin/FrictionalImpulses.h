@@ -22,18 +22,18 @@ struct CRUMPLE_API ContactImpulse
 /// How the joint friction solve is bounded and sped up (FrictionalImpulses).
 struct CRUMPLE_API FrictionSolveSettings
 {
-    int mMaxSweeps = 1000; ///< Gauss-Seidel sweeps at most (>= 1): crowds of redundant contacts can crawl
-    int mSubspaceInterval =
-        20; ///< Sweeps before the first subspace step (0: none), each later one twice as many
-            ///< as the one before: a step solves the nonlinear system of the contacts' current
-            ///< states (pushing, sticking, sliding) by Newton's method and is kept when it keeps
-            ///< those states and meets Coulomb's conditions better. Where Gauss-Seidel crawls this
-            ///< ends it; where no such answer exists the doubling bounds the steps' cost
-            ///< (crumple-bench friction_crawl rows)
-    int mSubspaceMaxContacts =
-        16; ///< Pairs of more contacts take no subspace steps: a step costs O((3N)^3), at 64
-            ///< sliding contacts 2.5 times the 143 sweeps it saved; DamageWorldSettings'
-            ///< mMaxContactsPerPair (16) reduces an engine's manifold to this many
+    /// Gauss-Seidel sweeps at most (>= 1): crowds of redundant contacts can crawl.
+    int mMaxSweeps = 1000;
+    /// Sweeps before the first subspace step (0: none), each later one twice as many as the one before. A
+    /// step solves the nonlinear system of the contacts' current states (pushing, sticking, sliding) by
+    /// Newton's method and is kept when it keeps those states and meets Coulomb's conditions better. Where
+    /// Gauss-Seidel crawls this ends it; where no such answer exists the doubling bounds the steps' cost
+    /// (crumple-bench friction_crawl rows).
+    int mSubspaceInterval = 20;
+    /// Pairs of more contacts take no subspace steps: a step costs O((3N)^3), at 64 sliding contacts 2.5
+    /// times the 143 sweeps it saved. DamageWorldSettings::mMaxContactsPerPair (16) reduces an engine's
+    /// manifold to this many.
+    int mSubspaceMaxContacts = 16;
 };
 
 /// What one joint friction solve did.
@@ -41,8 +41,12 @@ struct CRUMPLE_API FrictionSolveStats
 {
     int mSweeps = 0; ///< Gauss-Seidel sweeps run (0: no friction acted, the frictionless answer stands)
     int mSubspaceSteps = 0; ///< subspace steps kept
-    bool mConverged = true; ///< false: stopped at FrictionSolveSettings::mMaxSweeps while a sweep still moved
-                            ///< a contact point's velocity by more than 1e-12 of the largest approach speed
+    /// False: stopped at FrictionSolveSettings::mMaxSweeps while a sweep still moved a contact point's
+    /// velocity by more than 1e-12 of the largest approach speed.
+    bool mConverged = true;
+    /// Stopped at the bound with impulses that made kinetic energy: the frictionless answer
+    /// (SimultaneousImpulses' normal impulses, friction zero) was returned instead, as it made less.
+    bool mFrictionDropped = false;
 };
 
 /// Impulses with Coulomb friction of contacts that one engine step reported together for the same body pair.
@@ -53,13 +57,14 @@ struct CRUMPLE_API FrictionSolveStats
 /// otherwise it slides and t lies on the cone against the slip (maximal dissipation). Friction at a lever arm
 /// changes the normal approach speeds and the normal impulses bound friction, so both are solved together:
 /// projected Gauss-Seidel over every contact's normal row and 2x2 tangent block, as engines solve contact,
-/// until a sweep moves no contact point's velocity by more than 1e-12 of the largest approach speed, with a
-/// subspace minimization step (Silcowitz-Hansen, Niebe and Erleben 2010) every
-/// FrictionSolveSettings::mSubspaceInterval sweeps. Every contact joins, so one that friction presses onto
-/// the other body is held too. The restitution target stays the approach speed before any impulse: after the
-/// solve each pushing contact separates at e times the speed it closed with. With mu = 0 on every contact the
-/// normal impulses are SimultaneousImpulses' bit for bit and friction is zero. Deterministic: the same input
-/// gives the same bits.
+/// until a sweep moves no contact point's velocity by more than 1e-12 of the largest approach speed, with
+/// subspace minimization steps (Silcowitz-Hansen, Niebe and Erleben 2010) between (FrictionSolveSettings). A
+/// solve stopped at its sweep bound whose impulses made kinetic energy returns the frictionless answer where
+/// that makes less (FrictionSolveStats::mFrictionDropped). Every contact joins, so one that friction presses
+/// onto the other body is held too. The restitution target stays the approach speed before any impulse: after
+/// the solve each pushing contact separates at e times the speed it closed with. With mu = 0 on every contact
+/// the normal impulses are SimultaneousImpulses' bit for bit and friction is zero. Deterministic: the same
+/// input gives the same bits.
 /// @param[in] inContacts       contacts with their mu (ImpulseContact::mFriction, >= 0, +inf for no sliding)
 /// @param[in] inRestitution    coefficient of restitution e in [0, 1]
 /// @param[in] inClosingSpeed   contacts approaching slower than this (m/s, >= 0), after their speculative
