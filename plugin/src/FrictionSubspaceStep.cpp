@@ -88,8 +88,8 @@ double MeritOfRows(const BodyState& inA, const BodyState& inB, const std::vector
 // The step solves F(x) = 0 by Newton's method with the states held: for each pushing contact i (impulse
 // p_i = j_i n_i + T_i t_i, velocity change u_i = sum_k W_ik p_k with W_ik the 3x3 response of point i to an
 // impulse at k, slip s_i = T_i^T (v0_i + u_i)):
-//   n_i . u_i - target_i = 0;   sticking: s_i = 0;   sliding: t_i + mu_i j_i s_i / |s_i| = 0;   idle: j_i =
-//   t_i = 0,
+//   n_i . u_i - target_i = 0;   sticking: s_i = 0;   sliding: t_i + mu_i j_i s_i / |s_i| = 0;
+//   idle: j_i = 0, t_i = 0,
 // whose Jacobian takes d(s/|s|) = (I - s^ s^T) ds / |s|. The linear solves are least norm (complete
 // orthogonal decomposition): redundant contacts make the system singular. Then states that the answer breaks
 // change and it solves again.
