@@ -58,6 +58,10 @@ Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettin
                          "DamageWorldSettings.mSpeculativeContacts is not an ESpeculativeContacts value");
     if (inSettings.mMaxContactsPerPair < 9)
         return MakeError(EError::InvalidArgument, "DamageWorldSettings.mMaxContactsPerPair must be >= 9");
+    if (inSettings.mFrictionSolve.mMaxSweeps < 1 || inSettings.mFrictionSolve.mSubspaceInterval < 0 ||
+        inSettings.mFrictionSolve.mSubspaceMaxContacts < 0)
+        return MakeError(EError::InvalidArgument, "DamageWorldSettings.mFrictionSolve needs mMaxSweeps >= 1, "
+                                                  "mSubspaceInterval >= 0 and mSubspaceMaxContacts >= 0");
     if (inSettings.mDeferDents && (inSettings.mJobs == nullptr || inSettings.mJobs->mStartTask == nullptr ||
                                    inSettings.mJobs->mWaitTask == nullptr))
         return MakeError(EError::InvalidArgument,
@@ -413,7 +417,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         for (const CollisionContact& c : batch.mContacts)
             impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c), c.mFriction});
         const std::vector<ContactImpulse> impulses =
-            FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution, mSettings.mRestingSpeed);
+            FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
+                               mSettings.mRestingSpeed, mSettings.mFrictionSolve);
         ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,
                             state_b.mLinearVelocity, state_b.mAngularVelocity};
         bool pushed = false;

@@ -209,7 +209,9 @@ TEST_CASE("DamageWorld refuses bad bodies and objects and changes nothing", "[pl
     DeformableObjectSettings empty; // no mesh
     CHECK(fixture.mWorld.CreateDeformableObject(fixture.mCar, empty).GetError().mCode == EError::DegenerateGeometry);
     CHECK(fixture.mWorld.GetObjectIds().size() == 1);
-    CHECK(DamageWorld::Create({{}, 2.0, 0.5}).HasError());
+    DamageWorldSettings bouncy;
+    bouncy.mRestitution = 2.0;
+    CHECK(DamageWorld::Create(bouncy).HasError());
 }
 
 TEST_CASE("Removing a body removes its objects and open collisions", "[plugin]")
@@ -419,4 +421,49 @@ TEST_CASE("A sliding hit carries friction into its collision, inside the cone, i
     }
     CHECK(on_car.y() < 0.0); // against the slide
     CHECK(on_car.x() < 0.0); // and against the approach
+}
+
+TEST_CASE("DamageWorld refuses friction-solve settings out of range and hands its own to the solve",
+          "[plugin]")
+{
+    for (const FrictionSolveSettings bad :
+         {FrictionSolveSettings{.mMaxSweeps = 0}, FrictionSolveSettings{.mSubspaceInterval = -1},
+          FrictionSolveSettings{.mSubspaceMaxContacts = -2}})
+    {
+        DamageWorldSettings settings;
+        settings.mFrictionSolve = bad;
+        const auto world = DamageWorld::Create(settings);
+        REQUIRE_FALSE(world);
+        CHECK(world.GetError().mCode == EError::InvalidArgument);
+        CHECK(world.GetError().mMessage.find("mFrictionSolve") != std::string::npos);
+    }
+    // A glancing hit on the wall with friction at four corners: one sweep of the joint solve (no subspace
+    // step) leaves other impulses than the converged default, so the world's settings reach the solve.
+    const auto friction_of = [](const FrictionSolveSettings& inSolve)
+    {
+        DamageWorldSettings settings;
+        settings.mFrictionSolve = inSolve;
+        WorldFixture fixture(4000, {8, 6, 6}, settings);
+        RecordingListener listener;
+        fixture.mWorld.AddListener(&listener);
+        BodyState car = fixture.CarState(10.0);
+        car.mLinearVelocity.y() = 6.0;
+        car.mAngularVelocity.z() = 1.5;
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, car));
+        std::vector<ContactEvent> corners = FrontCorners(fixture, 0.0);
+        for (ContactEvent& c : corners)
+            c.mFriction = 0.6;
+        REQUIRE(fixture.mWorld.SubmitContacts(corners));
+        fixture.mWorld.Flush();
+        REQUIRE(listener.mCollisions.size() == 1);
+        Vec3 friction = Vec3::Zero();
+        for (const CollisionContact& c : listener.mCollisions[0].mContacts)
+            friction += c.mFrictionImpulse;
+        return friction;
+    };
+    const Vec3 converged = friction_of({});
+    const Vec3 one_sweep = friction_of({.mMaxSweeps = 1, .mSubspaceInterval = 0});
+    INFO("converged " << converged.transpose() << ", one sweep " << one_sweep.transpose());
+    CHECK(converged.norm() > 0.0);
+    CHECK(one_sweep != converged);
 }

@@ -7,6 +7,7 @@
 #include <crumple/base/JobSystem.h>
 #include <crumple/plugin/CollisionGrouper.h>
 #include <crumple/plugin/ESpeculativeContacts.h>
+#include <crumple/plugin/FrictionalImpulses.h>
 
 #include <cstddef>
 
@@ -25,6 +26,10 @@ struct CRUMPLE_API DamageWorldSettings
     /// Most contacts of one body pair in one step that the impulse solve takes, >= 9: a larger manifold is
     /// reduced to representatives that span its patch (ReduceContacts), so its cost stays bounded
     std::size_t mMaxContactsPerPair = 16;
+    /// The joint friction solve of each pair's contacts (FrictionalImpulses): its sweep bound and subspace
+    /// steps. A game that must bound a frame's worst case may lower mMaxSweeps (a stopped solve keeps
+    /// friction in its cone and makes no energy, but meets Coulomb's conditions only approximately).
+    FrictionSolveSettings mFrictionSolve;
     /// A body pair that took an impulse at the previous engine step solves the next step's contacts from the
     /// velocities that impulse left it with instead of the engine's (see DamageWorld::SubmitContacts). An
     /// impact is then counted once however many steps the engine takes to stop it (ODE's soft contacts take
