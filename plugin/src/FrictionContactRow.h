@@ -44,22 +44,6 @@ struct VelocityChange
     }
 };
 
-// Change of A's-minus-B's velocity at inPoint per unit impulse vector at the same point (s/kg), 3 by 3:
-// W = (1/m_A + 1/m_B) I - [r_A]x I_A^-1 [r_A]x - [r_B]x I_B^-1 [r_B]x.
-inline Mat3 PointResponse(const BodyState& inA, const BodyState& inB, const Vec3& inPoint)
-{
-    Mat3 response;
-    const Vec3 r_a = inPoint - inA.mCenterOfMass, r_b = inPoint - inB.mCenterOfMass;
-    for (int k = 0; k < 3; ++k)
-    {
-        const Vec3 e = Vec3::Unit(k);
-        response.col(k) = (inA.InverseMass() + inB.InverseMass()) * e +
-                          (inA.InverseInertia() * r_a.cross(e)).cross(r_a) +
-                          (inB.InverseInertia() * r_b.cross(e)).cross(r_b);
-    }
-    return response;
-}
-
 // The impulse in a disc of radius r that leaves the least kinetic energy: t minimizing 1/2 t^T M t + t^T c
 // over |t| <= r, with c the slip the other impulses leave (Coulomb friction by the principle of maximal
 // dissipation: the slip after, c + M t, is then zero or points against t). Inside the disc t = -M^-1 c; on

@@ -35,6 +35,23 @@ std::vector<ContactEvent> FrontCorners(const WorldFixture& inFixture, double inT
             inFixture.FrontContact(-0.8, 0.6, inTime), inFixture.FrontContact(0.8, 0.6, inTime)};
 }
 
+// The car in inCar's state hitting the wall at its four front corners with friction inFriction: the one
+// collision this dispatches.
+Collision CornerHit(WorldFixture& ioFixture, const BodyState& inCar, double inFriction)
+{
+    RecordingListener listener;
+    ioFixture.mWorld.AddListener(&listener);
+    REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, inCar));
+    std::vector<ContactEvent> corners = FrontCorners(ioFixture, 0.0);
+    for (ContactEvent& contact : corners)
+        contact.mFriction = inFriction;
+    REQUIRE(ioFixture.mWorld.SubmitContacts(corners));
+    ioFixture.mWorld.Flush();
+    ioFixture.mWorld.RemoveListener(&listener);
+    REQUIRE(listener.mCollisions.size() == 1);
+    return listener.mCollisions[0];
+}
+
 bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 {
     return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
@@ -393,18 +410,9 @@ TEST_CASE("A sliding hit carries friction into its collision, inside the cone, i
     // corners: the collision's contacts take friction against the slide (-y on the car), inside mu j, in the
     // contact plane, given in each body's frame as well; the car's whole impulse is normal plus friction.
     WorldFixture fixture;
-    RecordingListener listener;
-    fixture.mWorld.AddListener(&listener);
     BodyState sliding = fixture.CarState(15.0);
     sliding.mLinearVelocity.y() = 5.0;
-    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, sliding));
-    std::vector<ContactEvent> batch = FrontCorners(fixture, 0.0);
-    for (ContactEvent& contact : batch)
-        contact.mFriction = 0.4;
-    REQUIRE(fixture.mWorld.SubmitContacts(batch));
-    fixture.mWorld.Flush();
-    REQUIRE(listener.mCollisions.size() == 1);
-    const Collision& collision = listener.mCollisions[0];
+    const Collision collision = CornerHit(fixture, sliding, 0.4);
     const bool car_is_a = collision.mBodyA == fixture.mCar;
     Vec3 on_car = Vec3::Zero();
     for (const CollisionContact& c : collision.mContacts)
@@ -444,20 +452,11 @@ TEST_CASE("DamageWorld refuses friction-solve settings out of range and hands it
         DamageWorldSettings settings;
         settings.mFrictionSolve = inSolve;
         WorldFixture fixture(4000, {8, 6, 6}, settings);
-        RecordingListener listener;
-        fixture.mWorld.AddListener(&listener);
         BodyState car = fixture.CarState(10.0);
         car.mLinearVelocity.y() = 6.0;
         car.mAngularVelocity.z() = 1.5;
-        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, car));
-        std::vector<ContactEvent> corners = FrontCorners(fixture, 0.0);
-        for (ContactEvent& c : corners)
-            c.mFriction = 0.6;
-        REQUIRE(fixture.mWorld.SubmitContacts(corners));
-        fixture.mWorld.Flush();
-        REQUIRE(listener.mCollisions.size() == 1);
         Vec3 friction = Vec3::Zero();
-        for (const CollisionContact& c : listener.mCollisions[0].mContacts)
+        for (const CollisionContact& c : CornerHit(fixture, car, 0.6).mContacts)
             friction += c.mFrictionImpulse;
         return friction;
     };
