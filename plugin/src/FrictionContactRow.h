@@ -22,25 +22,50 @@ inline double ConeRadius(double inFriction, double inNormal)
     return inNormal > 0.0 ? inFriction * inNormal : 0.0;
 }
 
+// The pair's inverse masses and world inverse inertias (zero for a body that is not dynamic), read once per
+// solve: every sweep applies impulses with them.
+struct PairInverseMass
+{
+    double mMassA = 0.0, mMassB = 0.0;                       // 1/kg
+    Mat3 mInertiaA = Mat3::Zero(), mInertiaB = Mat3::Zero(); // 1/(kg m^2), world frame
+
+    PairInverseMass(const BodyState& inA, const BodyState& inB)
+        : mMassA(inA.InverseMass()), mMassB(inB.InverseMass()), mInertiaA(inA.InverseInertia()),
+          mInertiaB(inB.InverseInertia())
+    {
+    }
+};
+
+// A point's lever arms from the two centres of mass (m), world frame.
+struct LeverArms
+{
+    Vec3 mA = Vec3::Zero(), mB = Vec3::Zero();
+
+    LeverArms() = default;
+    LeverArms(const BodyState& inA, const BodyState& inB, const Vec3& inPoint)
+        : mA(inPoint - inA.mCenterOfMass), mB(inPoint - inB.mCenterOfMass)
+    {
+    }
+};
+
 // The pair's velocity changes from the impulses applied so far (the bodies' own velocities stay in their
 // states).
 struct VelocityChange
 {
     Vec3 mLinearA = Vec3::Zero(), mAngularA = Vec3::Zero(), mLinearB = Vec3::Zero(), mAngularB = Vec3::Zero();
 
-    // intent: impulse inImpulse on A at inPoint, its opposite on B
-    void Apply(const BodyState& inA, const BodyState& inB, const Vec3& inPoint, const Vec3& inImpulse)
+    // intent: impulse inImpulse on A at the point with lever arms inArms, its opposite on B
+    void Apply(const PairInverseMass& inPair, const LeverArms& inArms, const Vec3& inImpulse)
     {
-        mLinearA += inA.InverseMass() * inImpulse;
-        mAngularA += inA.InverseInertia() * (inPoint - inA.mCenterOfMass).cross(inImpulse);
-        mLinearB -= inB.InverseMass() * inImpulse;
-        mAngularB -= inB.InverseInertia() * (inPoint - inB.mCenterOfMass).cross(inImpulse);
+        mLinearA += inPair.mMassA * inImpulse;
+        mAngularA += inPair.mInertiaA * inArms.mA.cross(inImpulse);
+        mLinearB -= inPair.mMassB * inImpulse;
+        mAngularB -= inPair.mInertiaB * inArms.mB.cross(inImpulse);
     }
-    // intent: A's-minus-B's velocity change at inPoint
-    Vec3 At(const BodyState& inA, const BodyState& inB, const Vec3& inPoint) const
+    // intent: A's-minus-B's velocity change at the point with lever arms inArms
+    Vec3 At(const LeverArms& inArms) const
     {
-        return mLinearA + mAngularA.cross(inPoint - inA.mCenterOfMass) - mLinearB -
-               mAngularB.cross(inPoint - inB.mCenterOfMass);
+        return mLinearA + mAngularA.cross(inArms.mA) - mLinearB - mAngularB.cross(inArms.mB);
     }
 };
 
@@ -98,6 +123,8 @@ class LeastEnergyInDisc
 struct ContactRow
 {
     Vec3 mPoint = Vec3::Zero(), mNormal = Vec3::UnitZ(), mTangent1 = Vec3::UnitX(), mTangent2 = Vec3::UnitY();
+    LeverArms mArms;                     // the point's lever arms
+    Vec3 mVelocityBefore = Vec3::Zero(); // A's-minus-B's velocity at the point before any impulse (m/s)
     double mNormalResponse = 0.0; // n . W n (s/kg); zero: nothing can move the contact
     Eigen::Matrix2d mTangentResponse =
         Eigen::Matrix2d::Zero(); // T^T W T, symmetric positive definite or zero
@@ -109,12 +136,11 @@ struct ContactRow
 };
 
 // The velocity change that inRows' impulses make together.
-inline VelocityChange ChangeOfRows(const BodyState& inA, const BodyState& inB,
-                                   const std::vector<ContactRow>& inRows)
+inline VelocityChange ChangeOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>& inRows)
 {
     VelocityChange change;
     for (const ContactRow& row : inRows)
-        change.Apply(inA, inB, row.mPoint, row.mNormalImpulse * row.mNormal + row.mFrictionImpulse);
+        change.Apply(inPair, row.mArms, row.mNormalImpulse * row.mNormal + row.mFrictionImpulse);
     return change;
 }
 

@@ -54,13 +54,13 @@ struct SubspaceRow
 
 } // namespace
 
-double MeritOfRows(const BodyState& inA, const BodyState& inB, const std::vector<ContactRow>& inRows)
+double MeritOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>& inRows)
 {
-    const VelocityChange change = ChangeOfRows(inA, inB, inRows);
+    const VelocityChange change = ChangeOfRows(inPair, inRows);
     double merit = 0.0;
     for (const ContactRow& row : inRows)
     {
-        const Vec3 change_at = change.At(inA, inB, row.mPoint);
+        const Vec3 change_at = change.At(row.mArms);
         if (row.mNormalResponse > 0.0)
         {
             // intent: a pushing contact meets its target; an idle one only must not fall short of it
@@ -70,7 +70,7 @@ double MeritOfRows(const BodyState& inA, const BodyState& inB, const std::vector
         const double radius = ConeRadius(row.mFriction, row.mNormalImpulse);
         if (!(radius > 0.0))
             continue;
-        const Vec3 velocity = inA.PointVelocity(row.mPoint) - inB.PointVelocity(row.mPoint) + change_at;
+        const Vec3 velocity = row.mVelocityBefore + change_at;
         const Vec3 slip = velocity - row.mNormal.dot(velocity) * row.mNormal;
         if (!IsSliding(row))
         {
@@ -93,8 +93,7 @@ double MeritOfRows(const BodyState& inA, const BodyState& inB, const std::vector
 // whose Jacobian takes d(s/|s|) = (I - s^ s^T) ds / |s|. The linear solves are least norm (complete
 // orthogonal decomposition): redundant contacts make the system singular. Then states that the answer breaks
 // change and it solves again.
-bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inSpeedScale,
-                          std::vector<ContactRow>& ioRows)
+bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, std::vector<ContactRow>& ioRows)
 {
     // intent: the pushing contacts, their states and their unknowns' places
     std::vector<SubspaceRow> rows;
@@ -125,7 +124,7 @@ bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inS
     // intent: the linear part of F: each unknown's unit impulse as the velocity change along each unknown's
     // axis (n, t1, t2) at its point, and those velocities before any impulse
     std::vector<Vec3> axes(static_cast<std::size_t>(n));
-    std::vector<Vec3> points(static_cast<std::size_t>(n));
+    std::vector<const ContactRow*> owners(static_cast<std::size_t>(n));
     for (const SubspaceRow& r : rows)
     {
         const ContactRow& row = ioRows[r.mRow];
@@ -133,7 +132,7 @@ bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inS
         for (Eigen::Index k = 0; k < (r.mFriction ? 3 : 1); ++k)
         {
             axes[static_cast<std::size_t>(r.mFirst + k)] = row_axes[k];
-            points[static_cast<std::size_t>(r.mFirst + k)] = row.mPoint;
+            owners[static_cast<std::size_t>(r.mFirst + k)] = &row;
         }
     }
     Eigen::MatrixXd response(n, n);
@@ -142,11 +141,13 @@ bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inS
     {
         const std::size_t uc = static_cast<std::size_t>(c);
         VelocityChange unit;
-        unit.Apply(inA, inB, points[uc], axes[uc]);
+        unit.Apply(inPair, owners[uc]->mArms, axes[uc]);
         for (Eigen::Index r = 0; r < n; ++r)
-            response(r, c) =
-                axes[static_cast<std::size_t>(r)].dot(unit.At(inA, inB, points[static_cast<std::size_t>(r)]));
-        before[c] = axes[uc].dot(inA.PointVelocity(points[uc]) - inB.PointVelocity(points[uc]));
+        {
+            const std::size_t ur = static_cast<std::size_t>(r);
+            response(r, c) = axes[ur].dot(unit.At(owners[ur]->mArms));
+        }
+        before[c] = axes[uc].dot(owners[uc]->mVelocityBefore);
     }
 
     // intent: F and its Jacobian at x, each equation scaled to a dimensionless size (velocities by the
@@ -290,7 +291,7 @@ bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inS
             row.mFrictionImpulse *=
                 ConeRadius(row.mFriction, row.mNormalImpulse) / row.mFrictionImpulse.norm();
     }
-    if (!(MeritOfRows(inA, inB, candidate) < MeritOfRows(inA, inB, ioRows)))
+    if (!(MeritOfRows(inPair, candidate) < MeritOfRows(inPair, ioRows)))
         return false;
     ioRows = std::move(candidate);
     return true;

@@ -23,12 +23,12 @@ namespace crumple::plugin
 /// @param[in,out] ioRows    the contacts with the current impulses; replaced by the step's only when it is
 /// kept
 /// @return whether ioRows changed
-bool FrictionSubspaceStep(const BodyState& inA, const BodyState& inB, double inSpeedScale,
+bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale,
                           std::vector<ContactRow>& ioRows);
 
 /// How far ioRows' impulses are from Coulomb's conditions (m/s): the largest, over the contacts, of the
 /// normal velocity change missing from a pushing contact's target or an idle one's, the slip of a sticking
 /// contact, and the part of a sliding contact's slip not against its friction.
-double MeritOfRows(const BodyState& inA, const BodyState& inB, const std::vector<ContactRow>& inRows);
+double MeritOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>& inRows);
 
 } // namespace crumple::plugin
