@@ -77,9 +77,15 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
     {
         if (Status mesh = ffd::ValidateTriangleMesh(inSettings.mMesh); !mesh)
             return mesh.GetError();
-        deformer_settings.mZones.push_back(
-            FitZoneToMesh(inSettings.mMesh, inSettings.mFittedControlCount, inSettings.mFittedMaxTotalDeformation,
-                          inSettings.mFittedControlSpacing));
+        // intent: a short body needs a finer lattice than the given spacing to keep its occupant cell
+        double spacing = inSettings.mFittedControlSpacing;
+        if (inSettings.mFitSpacingToOccupantCell)
+        {
+            const BodyLength length = MeasureBodyLength(inSettings.mMesh.mPositions, inSettings.mUpAxis);
+            spacing = std::min(spacing, OccupantCellMaxSpacing(material, length.mMax - length.mMin));
+        }
+        deformer_settings.mZones.push_back(FitZoneToMesh(inSettings.mMesh, inSettings.mFittedControlCount,
+                                                         inSettings.mFittedMaxTotalDeformation, spacing));
     }
     Result<ffd::FfdDeformer> deformer = ffd::FfdDeformer::Create(inSettings.mMesh, deformer_settings);
     if (!deformer)

@@ -104,6 +104,7 @@ DeformableObjectSettings CrashCarObject(const EngineCrashSettings& inSettings)
     object.mMaterial = inSettings.mMaterial;
     object.mFittedControlCount = inSettings.mControlCount;
     object.mFittedControlSpacing = inSettings.mControlSpacing;
+    object.mFitSpacingToOccupantCell = inSettings.mFitSpacingToOccupantCell;
     object.mFittedMaxTotalDeformation = inSettings.mMaxTotalDeformation;
     object.mDeformer.mZones = inSettings.mZones;
     if (inSettings.mCarMesh)

@@ -45,6 +45,9 @@ struct EngineCrashSettings
     int mTriangles = 8000;             ///< Car render mesh size
     std::array<int, 3> mControlCount{{0, 0, 0}}; ///< Controls of the fitted FFD zone; 0: from mControlSpacing
     double mControlSpacing = 0.15;               ///< Control spacing of the fitted zone when mControlCount is 0 (m)
+    /// mControlSpacing or finer, as the car's occupant cell needs (DeformableObjectSettings'); false: as
+    /// given
+    bool mFitSpacingToOccupantCell = true;
     plugin::DamageMaterial mMaterial;  ///< Car body material
     plugin::DamageWorldSettings mWorld; ///< Damage world settings
     bool mDriveOnly = false;           ///< No wall: the car just drives (and rests) on the ground

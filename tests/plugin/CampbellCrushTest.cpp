@@ -40,9 +40,11 @@ DamageMaterial CampbellMaterial()
 // face (0: one point at its centre, as a pole's).
 struct CampbellCar
 {
-    explicit CampbellCar(const DamageWorldSettings& inSettings = {}, const DamageMaterial& inMaterial = CampbellMaterial(),
-                         const Vec3& inUp = Vec3::UnitZ())
-        : mWorldOwner(std::move(DamageWorld::Create(inSettings).Get())), mWorld(*mWorldOwner)
+    explicit CampbellCar(const DamageWorldSettings& inSettings = {},
+                         const DamageMaterial& inMaterial = CampbellMaterial(),
+                         const Vec3& inUp = Vec3::UnitZ(), const Vec3& inHalf = Vec3(2.2, 0.825, 0.7),
+                         bool inFitSpacingToOccupantCell = true)
+        : mHalf(inHalf), mWorldOwner(std::move(DamageWorld::Create(inSettings).Get())), mWorld(*mWorldOwner)
     {
         BodyState wall;
         wall.mMotionType = EMotionType::Static;
@@ -53,6 +55,7 @@ struct CampbellCar
         car.mMaterial = inMaterial;
         car.mFittedMaxTotalDeformation = 1.5;
         car.mUpAxis = inUp;
+        car.mFitSpacingToOccupantCell = inFitSpacingToOccupantCell;
         mObject = mWorld.CreateDeformableObject(mCar, car).Get();
     }
 
@@ -100,7 +103,7 @@ struct CampbellCar
         return deepest;
     }
 
-    Vec3 mHalf{2.2, 0.825, 0.7};
+    Vec3 mHalf;
     std::unique_ptr<DamageWorld> mWorldOwner; // on the heap: the world never moves
     DamageWorld& mWorld;
     BodyId mWall, mCar;
@@ -438,17 +441,15 @@ namespace
 {
 
 // Largest move of a vertex of the occupant cell (rest x within the middle half of the length) and of the
-// front crush, on a CampbellCar hit head-on at inKmh by a pole.
+// front crush, on a CampbellCar as it is.
 struct CellOutcome
 {
     double mFront = 0.0;
     double mCell = 0.0;
 };
 
-CellOutcome PoleHit(double inKmh, const DamageMaterial& inMaterial)
+CellOutcome CellAndFront(const CampbellCar& car)
 {
-    CampbellCar car({}, inMaterial);
-    car.Hit(inKmh / 3.6, 0.0);
     CellOutcome outcome;
     outcome.mFront = car.FrontCrush();
     const ffd::FfdDeformer& deformer = car.Object().GetDeformer();
@@ -459,6 +460,14 @@ CellOutcome PoleHit(double inKmh, const DamageMaterial& inMaterial)
             outcome.mCell = std::max(outcome.mCell, (deformer.GetPositions()[v] - rest).norm());
     }
     return outcome;
+}
+
+// The same on a CampbellCar hit head-on at inKmh by a pole.
+CellOutcome PoleHit(double inKmh, const DamageMaterial& inMaterial)
+{
+    CampbellCar car({}, inMaterial);
+    car.Hit(inKmh / 3.6, 0.0);
+    return CellAndFront(car);
 }
 
 } // namespace
@@ -563,6 +572,37 @@ TEST_CASE("The occupant cell leaves alone what cannot reach it: a shallow crush,
         CHECK_FALSE(none.mHasCell);
         CHECK_FALSE(none.IsLost());
     }
+}
+
+TEST_CASE("A short body's fitted lattice keeps its occupant cell unless its spacing is taken as given",
+          "[plugin]")
+{
+    // A 1.6 m body: a quarter of its 0.4 m crush zone is 0.1 m, finer than the default 0.15 m spacing.
+    const Vec3 half(0.8, 0.6, 0.7);
+    CampbellCar fitted({}, CampbellMaterial(), Vec3::UnitZ(), half);
+    CampbellCar as_given({}, CampbellMaterial(), Vec3::UnitZ(), half, false);
+    const OccupantCellFit kept = fitted.Object().GetOccupantCellFit();
+    const OccupantCellFit lost = as_given.Object().GetOccupantCellFit();
+    CHECK(kept.mHasCell);
+    CHECK(kept.mMaxSpacing == Approx(0.25 * 1.6 / 4.0));
+    CHECK(kept.mSpacing <= kept.mMaxSpacing);
+    CHECK_FALSE(kept.IsLost());
+    CHECK(lost.IsLost());
+    CHECK(lost.mSpacing > 0.1);
+    // The same pole hit: the fitted body crushes its front and leaves its middle half; the other moves it.
+    fitted.Hit(30.0 / 3.6, 0.0);
+    as_given.Hit(30.0 / 3.6, 0.0);
+    const CellOutcome with = CellAndFront(fitted), without = CellAndFront(as_given);
+    INFO("front " << with.mFront << " m, cell " << with.mCell << " m; as given: front " << without.mFront
+                  << " m, cell " << without.mCell << " m");
+    CHECK(with.mFront > 0.1);
+    CHECK(with.mCell <= 0.01 * with.mFront);
+    CHECK(without.mCell > 0.1 * without.mFront);
+    // A 4.4 m body keeps the given spacing: its cell needs no finer one.
+    CampbellCar long_body;
+    const double long_spacing = long_body.Object().GetOccupantCellFit().mSpacing;
+    CHECK(long_spacing <= 0.15);
+    CHECK(long_spacing > 0.14);
 }
 
 TEST_CASE("The body's length is its longest horizontal extent", "[plugin]")

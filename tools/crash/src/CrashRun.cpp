@@ -76,6 +76,9 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
     settings.mZones = vehicle.mZones;
     settings.mControlCount = vehicle.mControlCount;
     settings.mControlSpacing = vehicle.mControlSpacing;
+    // intent: unless the scenario chose the spacing, a body shorter than 2.4 m gets the finer lattice its
+    // occupant cell needs (DeformableObjectSettings::mFitSpacingToOccupantCell)
+    settings.mFitSpacingToOccupantCell = !vehicle.mControlSpacingGiven;
     settings.mSpeed = inScenario.mImpact.mSpeed;
     settings.mYawDegrees = inScenario.mImpact.mHeadingDegrees;
     settings.mOffset = inScenario.mImpact.mOffset;
@@ -187,21 +190,6 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
             settings.mInertia = ShellInertia(loaded.Get(), 0.5 * (bounds.mMin + bounds.mMax), vehicle.mMass);
         settings.mCarMesh = std::move(loaded.Get());
         settings.mCarRigidParts = std::move(rigid_parts);
-    }
-    // intent: a body shorter than 2.4 m needs a finer lattice than the default to keep its occupant cell
-    // (FitOccupantCell); unless the scenario chose the lattice, the fitted zone gets it
-    if (!vehicle.mControlSpacingGiven && vehicle.mControlCount == std::array<int, 3>{0, 0, 0} &&
-        vehicle.mZones.empty())
-    {
-        double length = 2.0 * std::max(settings.mHalfExtents.x(), settings.mHalfExtents.y());
-        if (settings.mCarMesh)
-        {
-            const plugin::BodyLength body =
-                plugin::MeasureBodyLength(settings.mCarMesh->mPositions, Vec3::UnitZ());
-            length = body.mMax - body.mMin;
-        }
-        settings.mControlSpacing =
-            std::min(vehicle.mControlSpacing, plugin::OccupantCellMaxSpacing(vehicle.mMaterial, length));
     }
     if (const std::string warning =
             StepOverlapWarning(inScenario, MeasureStepOverlap(inScenario, settings.mHalfExtents));

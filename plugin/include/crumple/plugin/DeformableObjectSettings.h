@@ -29,6 +29,13 @@ struct CRUMPLE_API DeformableObjectSettings
     /// and moved the roof by half the crush). Finer costs controls, not dent time: the direct-manipulation
     /// solve scales with the points of a dent and the vertices it reaches, not with the lattice.
     double mFittedControlSpacing = 0.15;
+    /// With mFittedControlCount all 0, the fitted zone's spacing is mFittedControlSpacing or finer: as fine
+    /// as the material's occupant cell needs on this body (OccupantCellMaxSpacing of its length across
+    /// mUpAxis, MeasureBodyLength: a quarter of a crush zone, finer than 0.15 m for a Campbell material on a
+    /// body shorter than 2.4 m at the default crush-zone fraction of 0.25), so that a crush of one end cannot
+    /// move the whole body. False: mFittedControlSpacing as given. Materials without a cell (the impulse
+    /// factor, a crush zone of half the body or more) take mFittedControlSpacing either way.
+    bool mFitSpacingToOccupantCell = true;
     double mFittedMaxTotalDeformation = 1.5;          ///< Max total deformation of the fitted zone (m)
     bool mInterpolateWideImpacts = true; ///< Fill gaps between contacts wider than the lattice spacing
     /// The body's up direction (body frame, unit): the Campbell crush measures its width across it

@@ -92,7 +92,8 @@ struct VehicleSpec
     std::array<int, 3> mControlCount{{0, 0, 0}}; ///< FFD controls of the fitted zone, each >= 4; 0: from mControlSpacing
     double mControlSpacing = 0.15; ///< Control spacing (m) of zones without a control count (DeformableObjectSettings)
     /// control_spacing_m was given; without it (and without a control count or zones) the fitted zone's
-    /// spacing is mControlSpacing or finer, as fine as the body's occupant cell needs (RunCrash)
+    /// spacing is mControlSpacing or finer, as fine as the body's occupant cell needs
+    /// (DeformableObjectSettings::mFitSpacingToOccupantCell)
     bool mControlSpacingGiven = false;
     /// Deformation zones (axis-aligned boxes in the body frame, each with its controls and total bound); empty:
     /// one zone fitted around the body with mControlCount and mMaxTotalDeformation
