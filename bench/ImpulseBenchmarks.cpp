@@ -165,6 +165,7 @@ void FrictionCrawlCase(BenchTable& ioTable, const std::string& inName, const Bod
                  "sweeps=" + std::to_string(subspace_stats.mSweeps) +
                      ";subspace_steps=" + std::to_string(subspace_stats.mSubspaceSteps) +
                      ";converged=" + std::to_string(subspace_stats.mConverged) +
+                     ";settled=" + std::to_string(subspace_stats.mSettled) +
                      ";cpu_ms=" + FormatExtra(timing[1].mCpuMs / cInner) +
                      ";speedup_cpu=" + FormatExtra(timing[0].mCpuMs / timing[1].mCpuMs) +
                      ";speedup_wall=" + FormatExtra(timing[0].mWallMs / timing[1].mWallMs)});

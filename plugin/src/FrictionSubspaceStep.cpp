@@ -93,7 +93,8 @@ double MeritOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>&
 // whose Jacobian takes d(s/|s|) = (I - s^ s^T) ds / |s|. The linear solves are least norm (complete
 // orthogonal decomposition): redundant contacts make the system singular. Then states that the answer breaks
 // change and it solves again.
-bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, std::vector<ContactRow>& ioRows)
+ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale,
+                                      std::vector<ContactRow>& ioRows)
 {
     // intent: the pushing contacts, their states and their unknowns' places
     std::vector<SubspaceRow> rows;
@@ -111,7 +112,7 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
         n += friction ? 3 : 1;
     }
     if (rows.empty())
-        return false;
+        return ESubspaceOutcome::Refused;
     Eigen::VectorXd x(n);
     for (const SubspaceRow& r : rows)
     {
@@ -205,6 +206,7 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
 
     Eigen::VectorXd residual(n), trial_residual(n);
     Eigen::MatrixXd jacobian(n, n);
+    bool least_squares = false;
     for (int attempt = 0; attempt <= cMaxStateChanges; ++attempt)
     {
         // intent: Newton's method on F with the states held, its step halved until |F| falls (the sliding
@@ -213,7 +215,7 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
         for (int iteration = 0; iteration < cMaxNewtonIterations && !converged; ++iteration)
         {
             if (!evaluate(x, residual, &jacobian))
-                return false;
+                return ESubspaceOutcome::Refused;
             if (residual.lpNorm<Eigen::Infinity>() <= cConverged)
             {
                 converged = true;
@@ -222,7 +224,7 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
             const Eigen::VectorXd step =
                 Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(jacobian).solve(residual);
             if (!step.allFinite())
-                return false;
+                return ESubspaceOutcome::Refused;
             double fraction = 1.0;
             int halvings = 0;
             while (!(evaluate(x - fraction * step, trial_residual, nullptr) &&
@@ -268,12 +270,15 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
                 changed = true;
             }
         }
-        // intent: states that hold end the search, converged; a least-squares point of states that hold
-        // (redundant sticking contacts a little inconsistent) is no answer: Gauss-Seidel moves off it again
-        if (!changed && converged)
+        // intent: states that hold end the search, converged or at a least-squares point (redundant sticking
+        // contacts a little inconsistent: judged below by how close it comes to Coulomb's conditions)
+        if (!changed)
+        {
+            least_squares = !converged;
             break;
-        if (!changed || attempt == cMaxStateChanges)
-            return false;
+        }
+        if (attempt == cMaxStateChanges)
+            return ESubspaceOutcome::Refused;
     }
 
     // intent: the candidate impulses, kept only where they meet Coulomb's conditions better
@@ -291,10 +296,11 @@ bool FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale, st
             row.mFrictionImpulse *=
                 ConeRadius(row.mFriction, row.mNormalImpulse) / row.mFrictionImpulse.norm();
     }
-    if (!(MeritOfRows(inPair, candidate) < MeritOfRows(inPair, ioRows)))
-        return false;
+    const double merit = MeritOfRows(inPair, candidate);
+    if (!(merit < MeritOfRows(inPair, ioRows)) || (least_squares && !(merit <= cSettledMerit * inSpeedScale)))
+        return ESubspaceOutcome::Refused;
     ioRows = std::move(candidate);
-    return true;
+    return least_squares ? ESubspaceOutcome::Settled : ESubspaceOutcome::Kept;
 }
 
 } // namespace crumple::plugin

@@ -90,10 +90,19 @@ FrictionSolveStats SolveJointly(const PairInverseMass& inPair, double inSpeedSca
         // that finds no answer (states that cannot all hold) costs a bounded share of the sweeps
         if (stats.mSweeps == next_step && subspace)
         {
-            if (FrictionSubspaceStep(inPair, inSpeedScale, ioRows))
+            const ESubspaceOutcome outcome = FrictionSubspaceStep(inPair, inSpeedScale, ioRows);
+            if (outcome != ESubspaceOutcome::Refused)
             {
                 change = ChangeOfRows(inPair, ioRows);
                 ++stats.mSubspaceSteps;
+            }
+            // intent: a least-squares point as close to Coulomb's conditions as the states allow:
+            // Gauss-Seidel would only crawl to a point of its own no closer to them
+            if (outcome == ESubspaceOutcome::Settled)
+            {
+                stats.mConverged = true;
+                stats.mSettled = true;
+                break;
             }
             interval *= 2;
             next_step += interval;

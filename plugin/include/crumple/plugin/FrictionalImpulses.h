@@ -27,7 +27,9 @@ struct CRUMPLE_API FrictionSolveSettings
     /// Sweeps before the first subspace step (0: none), each later one twice as many as the one before. A
     /// step solves the nonlinear system of the contacts' current states (pushing, sticking, sliding) by
     /// Newton's method and is kept when it keeps those states and meets Coulomb's conditions better. Where
-    /// Gauss-Seidel crawls this ends it; where no such answer exists the doubling bounds the steps' cost
+    /// Gauss-Seidel crawls this ends it; where the states overdetermine the velocities a little, the
+    /// least-squares point ends the solve when it meets the conditions to 1e-6 of the approach speed
+    /// (FrictionSolveStats::mSettled); where no such answer exists the doubling bounds the steps' cost
     /// (crumple-bench friction_crawl rows).
     int mSubspaceInterval = 20;
     /// Pairs of more contacts take no subspace steps: a step costs O((3N)^3), at 64 sliding contacts 2.5
@@ -47,6 +49,10 @@ struct CRUMPLE_API FrictionSolveStats
     /// Stopped at the bound with impulses that made kinetic energy: the frictionless answer
     /// (SimultaneousImpulses' normal impulses, friction zero) was returned instead, as it made less.
     bool mFrictionDropped = false;
+    /// Ended (converged) at a subspace step's least-squares point: the contacts' states overdetermine the
+    /// bodies' velocities a little, and the point meets Coulomb's conditions to within 1e-6 of the largest
+    /// approach speed, closer than Gauss-Seidel comes before it stops
+    bool mSettled = false;
 };
 
 /// Impulses with Coulomb friction of contacts that one engine step reported together for the same body pair.
