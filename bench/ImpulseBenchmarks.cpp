@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
 #include "CarOnHeldFence.h"
+#include "PieceOnGround.h"
 #include "WedgedPiece.h"
 #include "WorldFixture.h"
 
@@ -270,13 +271,17 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
         FrictionCase(ioTable, grid, repetitions);
     // Gauss-Seidel's slow cases: the piece wedged in the racing fence (the solve that ended at the sweep
     // bound at the fence hit), the car pressing the held fence just before (no exact answer for its states:
-    // the subspace steps' cost when they all fail) and the sliding box's grids, each contact sliding.
+    // settled at a least-squares point), ODE's piece on the ground (one contact must let go) and the
+    // sliding box's grids, each contact sliding.
     const common::WedgedPiece wedged = common::MakeWedgedPiece();
     FrictionCrawlCase(ioTable, "wedged_piece", wedged.mFence, wedged.mPiece, wedged.mContacts,
                       wedged.mRestitution, wedged.mClosingSpeed, repetitions);
     const common::CarOnHeldFence pressing = common::MakeCarOnHeldFence();
     FrictionCrawlCase(ioTable, "car_on_held_fence", pressing.mCar, pressing.mFence, pressing.mContacts,
                       pressing.mRestitution, pressing.mClosingSpeed, repetitions);
+    const common::PieceOnGround resting = common::MakePieceOnGround();
+    FrictionCrawlCase(ioTable, "piece_on_ground", resting.mGround, resting.mPiece, resting.mContacts,
+                      resting.mRestitution, resting.mClosingSpeed, repetitions);
     BodyState ground;
     ground.mMotionType = EMotionType::Static;
     for (int grid : {2, 4, 8})

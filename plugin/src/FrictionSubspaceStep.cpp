@@ -204,9 +204,29 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
         return true;
     };
 
+    // intent: the impulses of x with the held states, as contact rows
+    const auto candidate_rows = [&]
+    {
+        std::vector<ContactRow> candidate = ioRows;
+        for (const SubspaceRow& r : rows)
+        {
+            ContactRow& row = candidate[r.mRow];
+            const bool idle = r.mState == EContactState::Idle;
+            row.mNormalImpulse = idle ? 0.0 : x[r.mFirst];
+            row.mFrictionImpulse = Vec3::Zero();
+            if (idle || !r.mFriction)
+                continue;
+            row.mFrictionImpulse = x[r.mFirst + 1] * row.mTangent1 + x[r.mFirst + 2] * row.mTangent2;
+            if (r.mState == EContactState::Sliding) // intent: on the rim to round-off
+                row.mFrictionImpulse *=
+                    ConeRadius(row.mFriction, row.mNormalImpulse) / row.mFrictionImpulse.norm();
+        }
+        return candidate;
+    };
+
     Eigen::VectorXd residual(n), trial_residual(n);
     Eigen::MatrixXd jacobian(n, n);
-    bool least_squares = false;
+    bool least_squares = false, released = false;
     for (int attempt = 0; attempt <= cMaxStateChanges; ++attempt)
     {
         // intent: Newton's method on F with the states held, its step halved until |F| falls (the sliding
@@ -270,32 +290,45 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
                 changed = true;
             }
         }
-        // intent: states that hold end the search, converged or at a least-squares point (redundant sticking
-        // contacts a little inconsistent: judged below by how close it comes to Coulomb's conditions)
-        if (!changed)
+        // intent: states that hold end the search, converged or at a least-squares point of states a little
+        // inconsistent (redundant sticking contacts: judged below by how close it comes to Coulomb's
+        // conditions); further off, the pushing contact whose velocity passes its target furthest lets go
+        // (it pushes apart more than it must: a piece on more ground contacts than its velocities need)
+        if (!changed && !converged)
         {
-            least_squares = !converged;
-            break;
+            if (MeritOfRows(inPair, candidate_rows()) <= cSettledMerit * inSpeedScale)
+                least_squares = true;
+            else
+            {
+                SubspaceRow* release = nullptr;
+                double furthest = 0.0;
+                for (SubspaceRow& r : rows)
+                {
+                    const double passed = velocity[r.mFirst] - before[r.mFirst] - ioRows[r.mRow].mTarget;
+                    if (r.mState != EContactState::Idle && passed > furthest)
+                    {
+                        furthest = passed;
+                        release = &r;
+                    }
+                }
+                // intent: one contact let go per step: a crowd that no single release makes consistent
+                // costs Gauss-Seidel's steps one more Newton solve, not one per contact
+                if (release == nullptr || released)
+                    return ESubspaceOutcome::Refused;
+                released = true;
+                release->mState = EContactState::Idle;
+                x.segment(release->mFirst, release->mFriction ? 3 : 1).setZero();
+                changed = true;
+            }
         }
+        if (!changed)
+            break;
         if (attempt == cMaxStateChanges)
             return ESubspaceOutcome::Refused;
     }
 
     // intent: the candidate impulses, kept only where they meet Coulomb's conditions better
-    std::vector<ContactRow> candidate = ioRows;
-    for (const SubspaceRow& r : rows)
-    {
-        ContactRow& row = candidate[r.mRow];
-        const bool idle = r.mState == EContactState::Idle;
-        row.mNormalImpulse = idle ? 0.0 : x[r.mFirst];
-        row.mFrictionImpulse = Vec3::Zero();
-        if (idle || !r.mFriction)
-            continue;
-        row.mFrictionImpulse = x[r.mFirst + 1] * row.mTangent1 + x[r.mFirst + 2] * row.mTangent2;
-        if (r.mState == EContactState::Sliding) // intent: on the rim to round-off
-            row.mFrictionImpulse *=
-                ConeRadius(row.mFriction, row.mNormalImpulse) / row.mFrictionImpulse.norm();
-    }
+    std::vector<ContactRow> candidate = candidate_rows();
     const double merit = MeritOfRows(inPair, candidate);
     if (!(merit < MeritOfRows(inPair, ioRows)) || (least_squares && !(merit <= cSettledMerit * inSpeedScale)))
         return ESubspaceOutcome::Refused;
