@@ -39,7 +39,9 @@ constexpr double cSettledMerit = 1.0e-6;
 /// twelve velocities), Newton ends at a least-squares point that Gauss-Seidel cannot improve on either (it
 /// crawls towards a point of its own no closer to the conditions): that point, when it keeps every state,
 /// misses the conditions by at most cSettledMerit and by less than the current impulses, settles the solve.
-/// Deterministic.
+/// Further off, the pushing contact whose normal velocity passes its target furthest (it pushes the bodies
+/// apart more than it must: a piece on more ground contacts than its velocities need) lets go, once per
+/// step, and Newton solves again. Deterministic.
 /// @param[in] inSpeedScale  the largest approach speed (m/s): the scale of the velocity equations
 /// @param[in,out] ioRows    the contacts with the current impulses; replaced by the step's unless refused
 /// @return what the step did

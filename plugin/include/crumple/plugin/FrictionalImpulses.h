@@ -29,8 +29,9 @@ struct CRUMPLE_API FrictionSolveSettings
     /// Newton's method and is kept when it keeps those states and meets Coulomb's conditions better. Where
     /// Gauss-Seidel crawls this ends it; where the states overdetermine the velocities a little, the
     /// least-squares point ends the solve when it meets the conditions to 1e-6 of the approach speed
-    /// (FrictionSolveStats::mSettled); where no such answer exists the doubling bounds the steps' cost
-    /// (crumple-bench friction_crawl rows).
+    /// (FrictionSolveStats::mSettled), and further off the contact that pushes apart most beyond its target
+    /// lets go; where no such answer exists the doubling bounds the steps' cost (crumple-bench
+    /// friction_crawl rows).
     int mSubspaceInterval = 20;
     /// Pairs of more contacts take no subspace steps: a step costs O((3N)^3), at 64 sliding contacts 2.5
     /// times the 143 sweeps it saved. DamageWorldSettings::mMaxContactsPerPair (16) reduces an engine's
