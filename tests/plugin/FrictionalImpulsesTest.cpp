@@ -296,16 +296,44 @@ TEST_CASE("On random contact sets friction stays in its cone and makes no energy
     CHECK(settled >= 10); // 16 measured: the settled ones were checked at their tolerance
 }
 
+namespace
+{
+
+// A dumped contact set solved by Gauss-Seidel alone (no subspace steps) and with the default settings, which
+// give the same bits again.
+struct TwoSolves
+{
+    std::vector<ContactImpulse> mPlain, mStepped;
+    FrictionSolveStats mPlainStats, mSteppedStats;
+};
+
+TwoSolves SolveBothWays(const BodyState& inA, const BodyState& inB,
+                        std::span<const ImpulseContact> inContacts, double inRestitution,
+                        double inClosingSpeed)
+{
+    TwoSolves solves;
+    solves.mPlain = FrictionalImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed,
+                                       {.mSubspaceInterval = 0}, &solves.mPlainStats);
+    solves.mStepped =
+        FrictionalImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed, {}, &solves.mSteppedStats);
+    const std::vector<ContactImpulse> again =
+        FrictionalImpulses(inA, inB, inContacts, inRestitution, inClosingSpeed);
+    for (std::size_t i = 0; i < again.size(); ++i)
+        CHECK((again[i].mNormal == solves.mStepped[i].mNormal &&
+               again[i].mFriction == solves.mStepped[i].mFriction));
+    return solves;
+}
+
+} // namespace
+
 TEST_CASE("A piece wedged on two faces converges in tens of sweeps, not at the sweep bound", "[plugin]")
 {
     // Known answer: Coulomb's conditions to 1e-9 of the approach speed. Without subspace steps the solve ends
     // at the bound (the case that made them); with them it converges, and both reach the same velocities.
     const common::WedgedPiece w = common::MakeWedgedPiece();
-    FrictionSolveStats crawl, fast;
-    const std::vector<ContactImpulse> plain = FrictionalImpulses(
-        w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed, {.mSubspaceInterval = 0}, &crawl);
-    const std::vector<ContactImpulse> j =
-        FrictionalImpulses(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed, {}, &fast);
+    const TwoSolves solves = SolveBothWays(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed);
+    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
+    const FrictionSolveStats &crawl = solves.mPlainStats, &fast = solves.mSteppedStats;
     CHECK_FALSE(crawl.mConverged);
     CHECK(crawl.mSweeps == 1000);
     CHECK(fast.mConverged);
@@ -318,11 +346,6 @@ TEST_CASE("A piece wedged on two faces converges in tens of sweeps, not at the s
     const auto [fence_crawl, piece_crawl] = After(w.mFence, w.mPiece, w.mContacts, plain);
     CHECK((piece.mLinearVelocity - piece_crawl.mLinearVelocity).norm() <=
           1.0e-6 * w.mPiece.mLinearVelocity.norm());
-    // The same bits again.
-    const std::vector<ContactImpulse> again =
-        FrictionalImpulses(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed);
-    for (std::size_t i = 0; i < j.size(); ++i)
-        CHECK((again[i].mNormal == j[i].mNormal && again[i].mFriction == j[i].mFriction));
 }
 
 TEST_CASE("The car pressing the held fence settles at a least-squares point in tens of sweeps", "[plugin]")
@@ -333,11 +356,9 @@ TEST_CASE("The car pressing the held fence settles at a least-squares point in t
     // same states, found after 20 sweeps, misses them by 8.2e-6 m/s and ends the solve. Known answer: the
     // conditions to 1e-6 of the approach speed, both ways, and the same velocities after to that accuracy.
     const common::CarOnHeldFence c = common::MakeCarOnHeldFence();
-    FrictionSolveStats crawl, settled;
-    const std::vector<ContactImpulse> plain = FrictionalImpulses(
-        c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed, {.mSubspaceInterval = 0}, &crawl);
-    const std::vector<ContactImpulse> j =
-        FrictionalImpulses(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed, {}, &settled);
+    const TwoSolves solves = SolveBothWays(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed);
+    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
+    const FrictionSolveStats &crawl = solves.mPlainStats, &settled = solves.mSteppedStats;
     CHECK(crawl.mConverged);
     CHECK_FALSE(crawl.mSettled);
     CHECK(crawl.mSweeps > 400);
@@ -354,11 +375,6 @@ TEST_CASE("The car pressing the held fence settles at a least-squares point in t
     const auto [car_crawl, fence_crawl] = After(c.mCar, c.mFence, c.mContacts, plain);
     CHECK((car.mLinearVelocity - car_crawl.mLinearVelocity).norm() <= 1.0e-5 * speed);
     CHECK((fence.mLinearVelocity - fence_crawl.mLinearVelocity).norm() <= 1.0e-5 * speed);
-    // The same bits again.
-    const std::vector<ContactImpulse> again =
-        FrictionalImpulses(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed);
-    for (std::size_t i = 0; i < j.size(); ++i)
-        CHECK((again[i].mNormal == j[i].mNormal && again[i].mFriction == j[i].mFriction));
 }
 
 TEST_CASE("A piece on four ground contacts, one of which must let go, converges in tens of sweeps",
@@ -370,11 +386,9 @@ TEST_CASE("A piece on four ground contacts, one of which must let go, converges 
     // three then meet the conditions exactly. Known answer: the conditions to 1e-9 of the approach speed, the
     // fourth contact idle, and Gauss-Seidel's velocities.
     const common::PieceOnGround c = common::MakePieceOnGround();
-    FrictionSolveStats crawl, fast;
-    const std::vector<ContactImpulse> plain = FrictionalImpulses(
-        c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed, {.mSubspaceInterval = 0}, &crawl);
-    const std::vector<ContactImpulse> j =
-        FrictionalImpulses(c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed, {}, &fast);
+    const TwoSolves solves = SolveBothWays(c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed);
+    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
+    const FrictionSolveStats &crawl = solves.mPlainStats, &fast = solves.mSteppedStats;
     CHECK(crawl.mConverged);
     CHECK(crawl.mSweeps > 500);
     CHECK(fast.mConverged);
