@@ -105,8 +105,8 @@ int main(int argc, char** argv)
         return 2;
     }
     std::printf("crumple-replay: %zu objects, %zu collisions\n", replay.Get().mObjects.size(), replay.Get().mCollisions.size());
-    // A dry run first: a recording whose objects cannot be rebuilt is refused before anything is written.
-    // Build every object once, before anything is written: a refused recording leaves no output.
+    // Build every object once, before anything is written: a recording whose objects cannot be rebuilt is
+    // refused and leaves no output.
     const auto replay_start = std::chrono::steady_clock::now();
     Result<std::vector<ReplayedObject>> objects = CreateReplayedObjects(replay.Get());
     const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start).count();
