@@ -79,7 +79,8 @@ Result<DeformableObject> DeformableObject::Create(const DeformableObjectSettings
             return mesh.GetError();
         // intent: a short body needs a finer lattice than the given spacing to keep its occupant cell
         double spacing = inSettings.mFittedControlSpacing;
-        if (inSettings.mFitSpacingToOccupantCell)
+        if (inSettings.mFitSpacingToOccupantCell &&
+            inSettings.mFittedControlCount == std::array<int, 3>{0, 0, 0})
         {
             const BodyLength length = MeasureBodyLength(inSettings.mMesh.mPositions, inSettings.mUpAxis);
             spacing = std::min(spacing, OccupantCellMaxSpacing(material, length.mMax - length.mMin));
