@@ -332,8 +332,10 @@ TEST_CASE("A piece wedged on two faces converges in tens of sweeps, not at the s
     // at the bound (the case that made them); with them it converges, and both reach the same velocities.
     const common::WedgedPiece w = common::MakeWedgedPiece();
     const TwoSolves solves = SolveBothWays(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed);
-    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
-    const FrictionSolveStats &crawl = solves.mPlainStats, &fast = solves.mSteppedStats;
+    const std::vector<ContactImpulse>& plain = solves.mPlain;
+    const std::vector<ContactImpulse>& j = solves.mStepped;
+    const FrictionSolveStats& crawl = solves.mPlainStats;
+    const FrictionSolveStats& fast = solves.mSteppedStats;
     CHECK_FALSE(crawl.mConverged);
     CHECK(crawl.mSweeps == 1000);
     CHECK(fast.mConverged);
@@ -357,8 +359,10 @@ TEST_CASE("The car pressing the held fence settles at a least-squares point in t
     // conditions to 1e-6 of the approach speed, both ways, and the same velocities after to that accuracy.
     const common::CarOnHeldFence c = common::MakeCarOnHeldFence();
     const TwoSolves solves = SolveBothWays(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed);
-    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
-    const FrictionSolveStats &crawl = solves.mPlainStats, &settled = solves.mSteppedStats;
+    const std::vector<ContactImpulse>& plain = solves.mPlain;
+    const std::vector<ContactImpulse>& j = solves.mStepped;
+    const FrictionSolveStats& crawl = solves.mPlainStats;
+    const FrictionSolveStats& settled = solves.mSteppedStats;
     CHECK(crawl.mConverged);
     CHECK_FALSE(crawl.mSettled);
     CHECK(crawl.mSweeps > 400);
@@ -387,8 +391,10 @@ TEST_CASE("A piece on four ground contacts, one of which must let go, converges 
     // fourth contact idle, and Gauss-Seidel's velocities.
     const common::PieceOnGround c = common::MakePieceOnGround();
     const TwoSolves solves = SolveBothWays(c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed);
-    const std::vector<ContactImpulse>&plain = solves.mPlain, &j = solves.mStepped;
-    const FrictionSolveStats &crawl = solves.mPlainStats, &fast = solves.mSteppedStats;
+    const std::vector<ContactImpulse>& plain = solves.mPlain;
+    const std::vector<ContactImpulse>& j = solves.mStepped;
+    const FrictionSolveStats& crawl = solves.mPlainStats;
+    const FrictionSolveStats& fast = solves.mSteppedStats;
     CHECK(crawl.mConverged);
     CHECK(crawl.mSweeps > 500);
     CHECK(fast.mConverged);
