@@ -259,9 +259,9 @@ TEST_CASE("On random contact sets friction stays in its cone and makes no energy
     // them with mu = +inf, 23 of those with restitution, where no impulses may meet them all) and 8 by more
     // than 10 % (all with mu = +inf, 7 with restitution); 31 and 9 without subspace steps
     // (FrictionSolveSettings). What holds whatever the convergence: pushing normals, friction in its cone and
-    // in the tangent plane, without restitution no kinetic energy made, and the same bits again. 16 solves
+    // in the tangent plane, without restitution no kinetic energy made, and the same bits again. 15 solves
     // settle at a subspace step's least-squares point (FrictionSolveStats::mSettled; 14 stop at the bound,
-    // 15 before that): those meet the conditions to the settling tolerance.
+    // 15 before the settling): those meet the conditions to the settling tolerance.
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     CoulombTally tally;
@@ -293,7 +293,7 @@ TEST_CASE("On random contact sets friction stays in its cone and makes no energy
         for (std::size_t i = 0; i < j.size(); ++i)
             CHECK((again[i].mNormal == j[i].mNormal && again[i].mFriction == j[i].mFriction));
     }
-    CHECK(settled >= 10); // 16 measured: the settled ones were checked at their tolerance
+    CHECK(settled >= 10); // 15 measured: the settled ones were checked at their tolerance
 }
 
 namespace
