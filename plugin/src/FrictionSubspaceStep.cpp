@@ -37,8 +37,8 @@ constexpr int cMaxStateChanges = 8;
 // Newton iterations per step at most, over all its state changes: each costs a least-norm solve of up to 48
 // unknowns. Over 20,000 adversarial seeded sets (scratch fuzz: 10 g to 10 t, inertias 1e4 apart, duplicated
 // contacts, flipped normals, mu = +inf in one in five) the steps kept needed 2-10 iterations mostly and up to
-// 128; bounded at 32 the slowest solve took 5.9 ms of CPU instead of 14 ms, and 1,348 sets instead of 1,325
-// stopped at the sweep bound.
+// 128; bounded at 32 the slowest solve took 5.2-5.3 ms of CPU instead of 13.1-13.7 ms, and 1,348 sets instead
+// of 1,325 stopped at the sweep bound.
 constexpr int cMaxStepIterations = 32;
 
 enum class EContactState
