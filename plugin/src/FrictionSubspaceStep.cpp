@@ -34,13 +34,6 @@ constexpr int cMaxHalvings = 30;
 // a sliding one whose slip stops turns sticking, a pulling one lets go), each followed by a Newton solve.
 constexpr int cMaxStateChanges = 8;
 
-// Newton iterations per step at most, over all its state changes: each costs a least-norm solve of up to 48
-// unknowns. Over 20,000 adversarial seeded sets (scratch fuzz: 10 g to 10 t, inertias 1e4 apart, duplicated
-// contacts, flipped normals, mu = +inf in one in five) the steps kept needed 2-10 iterations mostly and up to
-// 128; bounded at 32 the slowest solve took 5.2-5.3 ms of CPU instead of 13.1-13.7 ms, and 1,348 sets instead
-// of 1,325 stopped at the sweep bound.
-constexpr int cMaxStepIterations = 32;
-
 enum class EContactState
 {
     Idle,     // let go: j = 0, t = 0
@@ -101,8 +94,9 @@ double MeritOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>&
 // orthogonal decomposition): redundant contacts make the system singular. Then states that the answer breaks
 // change and it solves again.
 ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSpeedScale,
-                                      std::vector<ContactRow>& ioRows)
+                                      std::vector<ContactRow>& ioRows, int& outIterations)
 {
+    outIterations = 0;
     // intent: the pushing contacts, their states and their unknowns' places
     std::vector<SubspaceRow> rows;
     Eigen::Index n = 0;
@@ -234,7 +228,6 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
     Eigen::VectorXd residual(n), trial_residual(n);
     Eigen::MatrixXd jacobian(n, n);
     bool least_squares = false, released = false;
-    int step_iterations = 0;
     for (int attempt = 0; attempt <= cMaxStateChanges; ++attempt)
     {
         // intent: Newton's method on F with the states held, its step halved until |F| falls (the sliding
@@ -242,8 +235,9 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
         bool converged = false;
         for (int iteration = 0; iteration < cMaxNewtonIterations && !converged; ++iteration)
         {
-            if (++step_iterations > cMaxStepIterations || !evaluate(x, residual, &jacobian))
+            if (outIterations == cMaxStepIterations || !evaluate(x, residual, &jacobian))
                 return ESubspaceOutcome::Refused;
+            ++outIterations;
             if (residual.lpNorm<Eigen::Infinity>() <= cConverged)
             {
                 converged = true;

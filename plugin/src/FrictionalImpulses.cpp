@@ -90,7 +90,10 @@ FrictionSolveStats SolveJointly(const PairInverseMass& inPair, double inSpeedSca
         // that finds no answer (states that cannot all hold) costs a bounded share of the sweeps
         if (stats.mSweeps == next_step && subspace)
         {
-            const ESubspaceOutcome outcome = FrictionSubspaceStep(inPair, inSpeedScale, ioRows);
+            int iterations = 0;
+            const ESubspaceOutcome outcome = FrictionSubspaceStep(inPair, inSpeedScale, ioRows, iterations);
+            stats.mNewtonIterations += iterations;
+            stats.mMostStepIterations = std::max(stats.mMostStepIterations, iterations);
             if (outcome != ESubspaceOutcome::Refused)
             {
                 change = ChangeOfRows(inPair, ioRows);

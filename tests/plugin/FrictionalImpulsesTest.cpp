@@ -474,3 +474,68 @@ TEST_CASE("A friction solve stopped at its sweep bound makes no kinetic energy",
     CHECK(unconverged > 100);
     CHECK(dropped > 0);
 }
+
+TEST_CASE("A subspace step takes at most 32 Newton iterations, and crowds reach that bound", "[plugin]")
+{
+    // Each Newton iteration of a step is a least-norm solve of up to 48 unknowns, and a step could take 30
+    // per state change and 8 changes: on adversarial sets (10 g to 10 t, inertias 1e4 apart, duplicated
+    // contacts, flipped normals, mu = +inf in one in five, speculative contacts) a solve took up to 14 ms of
+    // CPU. Known answer: no step past 32 iterations (FrictionSolveStats::mMostStepIterations), steps that
+    // reach it (39 of these 400 sets), and impulses that stay finite, pushing and inside their cones and make
+    // no kinetic energy.
+    std::mt19937 random(12345);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto draw = [&] { return common::DrawVec3([&] { return unit(random); }); };
+    const auto draw_body = [&](bool inDynamic)
+    {
+        if (!inDynamic)
+            return StaticGround();
+        BodyState body;
+        body.mMass = std::pow(10.0, 3.0 * unit(random) + 1.0);
+        const Vec3 spread = common::DrawVec3([&] { return std::pow(10.0, 2.0 * unit(random)); });
+        const double angle = 3.0 * unit(random);
+        const Mat3 rotation = Eigen::AngleAxisd(angle, draw().normalized()).toRotationMatrix();
+        const Mat3 inverse_inertia = rotation * (spread / body.mMass).asDiagonal() * rotation.transpose();
+        body.mInverseInertiaWorld = 0.5 * (inverse_inertia + inverse_inertia.transpose());
+        body.mCenterOfMass = draw();
+        body.mTransform.mTranslation = body.mCenterOfMass;
+        body.mLinearVelocity = 20.0 * draw();
+        body.mAngularVelocity = 5.0 * draw();
+        return body;
+    };
+    int bounded = 0;
+    for (int trial = 0; trial < 400; ++trial)
+    {
+        const BodyState a = draw_body(true);
+        const BodyState b = draw_body(trial % 3 != 0);
+        std::vector<ImpulseContact> contacts(static_cast<std::size_t>(1 + trial % 16));
+        for (ImpulseContact& c : contacts)
+        {
+            c.mPoint = (trial % 7 == 0 ? 1.0e-6 : 1.0) * draw();
+            const double ny = unit(random), nx = unit(random); // sequenced (common::DrawVec3)
+            c.mNormal = (trial % 11 == 0 ? -1.0 : 1.0) * Vec3(0.5 * nx, 0.5 * ny, 1.0).normalized();
+            c.mFriction =
+                trial % 5 == 0 ? std::numeric_limits<double>::infinity() : 1.5 * std::abs(unit(random));
+            c.mSpeculativeSpeed = trial % 4 == 0 ? std::abs(unit(random)) : 0.0;
+        }
+        if (trial % 13 == 0 && contacts.size() > 1)
+            contacts[1] = contacts[0];
+        const double e = trial % 2 == 0 ? 0.0 : 0.3;
+        FrictionSolveStats stats;
+        const std::vector<ContactImpulse> j = FrictionalImpulses(a, b, contacts, e, 0.1, {}, &stats);
+        INFO("trial " << trial << ", " << contacts.size() << " contacts, sweeps " << stats.mSweeps);
+        CHECK(stats.mMostStepIterations <= 32);
+        CHECK(stats.mNewtonIterations >= stats.mMostStepIterations);
+        bounded += stats.mMostStepIterations == 32 ? 1 : 0;
+        const auto [a_after, b_after] = After(a, b, contacts, j);
+        CHECK(KineticEnergy(a_after) + KineticEnergy(b_after) <=
+              (KineticEnergy(a) + KineticEnergy(b)) * (1.0 + 1.0e-9));
+        for (std::size_t i = 0; i < contacts.size(); ++i)
+        {
+            CHECK((std::isfinite(j[i].mNormal) && j[i].mNormal >= 0.0 && IsFinite(j[i].mFriction)));
+            const double radius = j[i].mNormal > 0.0 ? contacts[i].mFriction * j[i].mNormal : 0.0;
+            CHECK(j[i].mFriction.norm() <= radius * (1.0 + 1.0e-12));
+        }
+    }
+    CHECK(bounded > 0);
+}

@@ -44,6 +44,8 @@ struct CRUMPLE_API FrictionSolveStats
 {
     int mSweeps = 0; ///< Gauss-Seidel sweeps run (0: no friction acted, the frictionless answer stands)
     int mSubspaceSteps = 0; ///< subspace steps kept
+    int mNewtonIterations = 0;   ///< Newton iterations of all the subspace steps, kept or refused
+    int mMostStepIterations = 0; ///< the most one step took (at most 32: a step that needs more is refused)
     /// False: stopped at FrictionSolveSettings::mMaxSweeps while a sweep still moved a contact point's
     /// velocity by more than 1e-12 of the largest approach speed.
     bool mConverged = true;
