@@ -414,6 +414,64 @@ TEST_CASE("A piece on four ground contacts, one of which must let go, converges 
     CHECK((piece.mAngularVelocity - piece_crawl.mAngularVelocity).norm() <= 1.0e-8 * speed);
 }
 
+namespace
+{
+
+// An adversarial contact set for the joint friction solve, drawn from ioRandom: bodies of 10 g to 10 t with
+// inertias 1e4 apart (B static in one trial in three), 1-16 contacts in a 2 m box (2 um in one trial in
+// seven), normals flipped in one in eleven, the first contact duplicated in one in thirteen, speculative
+// speeds in one in four, restitution 0.3 in every other. Friction mu = +inf (ODE's dInfinity) everywhere, or
+// with inMixedFriction in one trial in five and 0-1.5 elsewhere.
+struct AdversarialSet
+{
+    BodyState mA, mB;
+    std::vector<ImpulseContact> mContacts;
+    double mRestitution = 0.0;
+};
+
+AdversarialSet DrawAdversarialSet(std::mt19937& ioRandom, int inTrial, bool inMixedFriction)
+{
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto draw = [&] { return common::DrawVec3([&] { return unit(ioRandom); }); };
+    const auto draw_body = [&](bool inDynamic)
+    {
+        if (!inDynamic)
+            return StaticGround();
+        BodyState body;
+        body.mMass = std::pow(10.0, 3.0 * unit(ioRandom) + 1.0);
+        const Vec3 spread = common::DrawVec3([&] { return std::pow(10.0, 2.0 * unit(ioRandom)); });
+        const double angle = 3.0 * unit(ioRandom);
+        const Vec3 axis = draw().normalized();
+        const Mat3 rotation = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+        const Mat3 inverse_inertia = rotation * (spread / body.mMass).asDiagonal() * rotation.transpose();
+        body.mInverseInertiaWorld = 0.5 * (inverse_inertia + inverse_inertia.transpose());
+        body.mCenterOfMass = draw();
+        body.mTransform.mTranslation = body.mCenterOfMass;
+        body.mLinearVelocity = 20.0 * draw();
+        body.mAngularVelocity = 5.0 * draw();
+        return body;
+    };
+    AdversarialSet set;
+    set.mA = draw_body(true);
+    set.mB = draw_body(inTrial % 3 != 0);
+    set.mContacts.resize(static_cast<std::size_t>(1 + inTrial % 16));
+    for (ImpulseContact& c : set.mContacts)
+    {
+        c.mPoint = (inTrial % 7 == 0 ? 1.0e-6 : 1.0) * draw();
+        const double ny = unit(ioRandom), nx = unit(ioRandom); // sequenced (common::DrawVec3)
+        c.mNormal = (inTrial % 11 == 0 ? -1.0 : 1.0) * Vec3(0.5 * nx, 0.5 * ny, 1.0).normalized();
+        c.mFriction = !inMixedFriction || inTrial % 5 == 0 ? std::numeric_limits<double>::infinity()
+                                                           : 1.5 * std::abs(unit(ioRandom));
+        c.mSpeculativeSpeed = inTrial % 4 == 0 ? std::abs(unit(ioRandom)) : 0.0;
+    }
+    if (inTrial % 13 == 0 && set.mContacts.size() > 1)
+        set.mContacts[1] = set.mContacts[0];
+    set.mRestitution = inTrial % 2 == 0 ? 0.0 : 0.3;
+    return set;
+}
+
+} // namespace
+
 TEST_CASE("A friction solve stopped at its sweep bound makes no kinetic energy", "[plugin]")
 {
     // Adversarial seeded sets with mu = +inf (ODE's dInfinity): bodies of 0.01 kg to 10 t with inertias 1e4
@@ -423,42 +481,13 @@ TEST_CASE("A friction solve stopped at its sweep bound makes no kinetic energy",
     // frictionless answer where that makes less (FrictionSolveStats::mFrictionDropped). Known answer: the
     // pair's kinetic energy never grows.
     std::mt19937 random(5);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    const auto draw_body = [&](bool inDynamic)
-    {
-        BodyState body;
-        if (!inDynamic)
-            return StaticGround();
-        body.mMass = std::pow(10.0, 3.0 * unit(random) + 1.0);
-        const Vec3 spread = common::DrawVec3([&] { return std::pow(10.0, 2.0 * unit(random)); });
-        const double angle = 3.0 * unit(random);
-        const Vec3 axis = common::DrawVec3([&] { return unit(random); }).normalized();
-        const Mat3 rotation = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
-        const Mat3 inverse_inertia = rotation * (spread / body.mMass).asDiagonal() * rotation.transpose();
-        body.mInverseInertiaWorld = 0.5 * (inverse_inertia + inverse_inertia.transpose());
-        body.mCenterOfMass = common::DrawVec3([&] { return unit(random); });
-        body.mTransform.mTranslation = body.mCenterOfMass;
-        body.mLinearVelocity = 20.0 * common::DrawVec3([&] { return unit(random); });
-        body.mAngularVelocity = 5.0 * common::DrawVec3([&] { return unit(random); });
-        return body;
-    };
     int unconverged = 0, dropped = 0;
     for (int trial = 0; trial < 2000; ++trial)
     {
-        const BodyState a = draw_body(true);
-        const BodyState b = draw_body(trial % 3 != 0);
-        std::vector<ImpulseContact> contacts(static_cast<std::size_t>(1 + trial % 16));
-        for (ImpulseContact& c : contacts)
-        {
-            c.mPoint = (trial % 7 == 0 ? 1.0e-6 : 1.0) * common::DrawVec3([&] { return unit(random); });
-            const double ny = unit(random), nx = unit(random); // sequenced (common::DrawVec3)
-            c.mNormal = (trial % 11 == 0 ? -1.0 : 1.0) * Vec3(0.5 * nx, 0.5 * ny, 1.0).normalized();
-            c.mFriction = std::numeric_limits<double>::infinity();
-            c.mSpeculativeSpeed = trial % 4 == 0 ? std::abs(unit(random)) : 0.0;
-        }
-        if (trial % 13 == 0 && contacts.size() > 1)
-            contacts[1] = contacts[0];
-        const double e = trial % 2 == 0 ? 0.0 : 0.3;
+        const AdversarialSet set = DrawAdversarialSet(random, trial, false);
+        const BodyState &a = set.mA, &b = set.mB;
+        const std::vector<ImpulseContact>& contacts = set.mContacts;
+        const double e = set.mRestitution;
         FrictionSolveStats stats;
         const std::vector<ContactImpulse> j = FrictionalImpulses(a, b, contacts, e, 0.1, {}, &stats);
         unconverged += stats.mConverged ? 0 : 1;
@@ -481,46 +510,16 @@ TEST_CASE("A subspace step takes at most 32 Newton iterations, and crowds reach 
     // per state change and 8 changes: on adversarial sets (10 g to 10 t, inertias 1e4 apart, duplicated
     // contacts, flipped normals, mu = +inf in one in five, speculative contacts) a solve took up to 14 ms of
     // CPU. Known answer: no step past 32 iterations (FrictionSolveStats::mMostStepIterations), steps that
-    // reach it (39 of these 400 sets), and impulses that stay finite, pushing and inside their cones and make
+    // reach it (36 of these 400 sets), and impulses that stay finite, pushing and inside their cones and make
     // no kinetic energy.
     std::mt19937 random(12345);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    const auto draw = [&] { return common::DrawVec3([&] { return unit(random); }); };
-    const auto draw_body = [&](bool inDynamic)
-    {
-        if (!inDynamic)
-            return StaticGround();
-        BodyState body;
-        body.mMass = std::pow(10.0, 3.0 * unit(random) + 1.0);
-        const Vec3 spread = common::DrawVec3([&] { return std::pow(10.0, 2.0 * unit(random)); });
-        const double angle = 3.0 * unit(random);
-        const Mat3 rotation = Eigen::AngleAxisd(angle, draw().normalized()).toRotationMatrix();
-        const Mat3 inverse_inertia = rotation * (spread / body.mMass).asDiagonal() * rotation.transpose();
-        body.mInverseInertiaWorld = 0.5 * (inverse_inertia + inverse_inertia.transpose());
-        body.mCenterOfMass = draw();
-        body.mTransform.mTranslation = body.mCenterOfMass;
-        body.mLinearVelocity = 20.0 * draw();
-        body.mAngularVelocity = 5.0 * draw();
-        return body;
-    };
     int bounded = 0;
     for (int trial = 0; trial < 400; ++trial)
     {
-        const BodyState a = draw_body(true);
-        const BodyState b = draw_body(trial % 3 != 0);
-        std::vector<ImpulseContact> contacts(static_cast<std::size_t>(1 + trial % 16));
-        for (ImpulseContact& c : contacts)
-        {
-            c.mPoint = (trial % 7 == 0 ? 1.0e-6 : 1.0) * draw();
-            const double ny = unit(random), nx = unit(random); // sequenced (common::DrawVec3)
-            c.mNormal = (trial % 11 == 0 ? -1.0 : 1.0) * Vec3(0.5 * nx, 0.5 * ny, 1.0).normalized();
-            c.mFriction =
-                trial % 5 == 0 ? std::numeric_limits<double>::infinity() : 1.5 * std::abs(unit(random));
-            c.mSpeculativeSpeed = trial % 4 == 0 ? std::abs(unit(random)) : 0.0;
-        }
-        if (trial % 13 == 0 && contacts.size() > 1)
-            contacts[1] = contacts[0];
-        const double e = trial % 2 == 0 ? 0.0 : 0.3;
+        const AdversarialSet set = DrawAdversarialSet(random, trial, true);
+        const BodyState &a = set.mA, &b = set.mB;
+        const std::vector<ImpulseContact>& contacts = set.mContacts;
+        const double e = set.mRestitution;
         FrictionSolveStats stats;
         const std::vector<ContactImpulse> j = FrictionalImpulses(a, b, contacts, e, 0.1, {}, &stats);
         INFO("trial " << trial << ", " << contacts.size() << " contacts, sweeps " << stats.mSweeps);
