@@ -122,7 +122,7 @@ class LeastEnergyInDisc
 // One contact in the joint solve: its normal row and its friction block.
 struct ContactRow
 {
-    Vec3 mPoint = Vec3::Zero(), mNormal = Vec3::UnitZ(), mTangent1 = Vec3::UnitX(), mTangent2 = Vec3::UnitY();
+    Vec3 mNormal = Vec3::UnitZ(), mTangent1 = Vec3::UnitX(), mTangent2 = Vec3::UnitY();
     LeverArms mArms;                     // the point's lever arms
     Vec3 mVelocityBefore = Vec3::Zero(); // A's-minus-B's velocity at the point before any impulse (m/s)
     double mNormalResponse = 0.0; // n . W n (s/kg); zero: nothing can move the contact

@@ -228,6 +228,8 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
     Eigen::VectorXd residual(n), trial_residual(n);
     Eigen::MatrixXd jacobian(n, n);
     bool least_squares = false, released = false;
+    std::vector<ContactRow> candidate; // the step's answer as contact rows, and its MeritOfRows
+    double merit = 0.0;
     for (int attempt = 0; attempt <= cMaxStateChanges; ++attempt)
     {
         // intent: Newton's method on F with the states held, its step halved until |F| falls (the sliding
@@ -298,7 +300,9 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
         // (it pushes apart more than it must: a piece on more ground contacts than its velocities need)
         if (!changed && !converged)
         {
-            if (MeritOfRows(inPair, candidate_rows()) <= cSettledMerit * inSpeedScale)
+            candidate = candidate_rows();
+            merit = MeritOfRows(inPair, candidate);
+            if (merit <= cSettledMerit * inSpeedScale)
                 least_squares = true;
             else
             {
@@ -330,8 +334,12 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
     }
 
     // intent: the candidate impulses, kept only where they meet Coulomb's conditions better
-    std::vector<ContactRow> candidate = candidate_rows();
-    const double merit = MeritOfRows(inPair, candidate);
+    // intent: a least-squares point's candidate and merit were worked out above, from the same x
+    if (!least_squares)
+    {
+        candidate = candidate_rows();
+        merit = MeritOfRows(inPair, candidate);
+    }
     if (!(merit < MeritOfRows(inPair, ioRows)) || (least_squares && !(merit <= cSettledMerit * inSpeedScale)))
         return ESubspaceOutcome::Refused;
     ioRows = std::move(candidate);
