@@ -22,6 +22,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/StableTimeStep.cpp
     src/StrainEnergyDensity.cpp
     src/TetElementPass.cpp
+    src/TetCoarseSpace.cpp
     src/TetContactMass.cpp
     src/TetElementRest.cpp
     src/TetFactoredPreconditioner.cpp

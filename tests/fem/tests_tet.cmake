@@ -9,6 +9,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetAnchoredElementsTest.cpp
     fem/StableTimeStepTest.cpp
     fem/TetCantileverTest.cpp
+    fem/TetCoarseSpaceTest.cpp
     fem/TetContactMassTest.cpp
     fem/TetFactoredSolveTest.cpp
     fem/TetFactorRefreshTest.cpp
