@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-// The implicit step on the GPU (block-Jacobi conjugate gradient, float) beside the CPU's (factored rest
-// system and block Jacobi, double) on the steel cantilever at 1/60 s, stepped in turn, against a converged
-// answer.
+// The implicit step on the GPU (conjugate gradient in float, block Jacobi with and without the coarse
+// correction) beside the CPU's (factored rest system and block Jacobi, double) on the steel cantilever at
+// 1/60 s, stepped in turn, against a converged answer.
 #include "GpuImplicitBenchmarks.h"
 
 #if defined(CRUMPLE_BENCH_GPU)
@@ -68,10 +68,11 @@ struct Side
 void RunGpuImplicitCases(BenchTable& ioTable, const BenchOptions& inOptions,
                          const std::shared_ptr<gpu::ComputeDevice>& inDevice, const std::string& inDeviceName)
 {
-    // The fem_realtime beams (1,125 and 9,000 tets): the CPU's default (factored) and block Jacobi, the GPU
-    // (block Jacobi), one step each in turn (CPU factored, CPU Jacobi, GPU, CPU factored, ...); a fourth beam
-    // solved to round-off (CG 1e-12, Newton 1e-14), untimed, is the converged implicit answer. The first step
-    // is left out of the medians (the factorisation, the GPU's first allocations).
+    // The fem_realtime beams (1,125 and 9,000 tets): the CPU's default (factored) and block Jacobi, the GPU's
+    // default (block Jacobi and the coarse correction) and block Jacobi alone, one step each in turn (CPU
+    // factored, CPU Jacobi, GPU coarse, GPU Jacobi, CPU factored, ...); a fifth beam solved to round-off (CG
+    // 1e-12, Newton 1e-14), untimed, is the converged implicit answer. The first step is left out of the
+    // medians (the factorisation, the GPU's first allocations and its coarse space).
     struct Mesh
     {
         int mLength, mSection;
@@ -97,29 +98,38 @@ void RunGpuImplicitCases(BenchTable& ioTable, const BenchOptions& inOptions,
         converged_settings.mSolver.mImplicitMaxIterations = 30;
         common::CantileverScene converged = common::CantileverScene::Create(converged_settings).Get();
         Result<gpu::GpuTetSolver> gpu = gpu::GpuTetSolver::CreateFrom(inDevice, factored.GetSolver());
-        if (gpu.HasError())
+        Result<gpu::GpuTetSolver> gpu_jacobi = gpu::GpuTetSolver::CreateFrom(inDevice, jacobi.GetSolver());
+        if (gpu.HasError() || gpu_jacobi.HasError())
         {
-            std::printf("gpu_implicit: %s\n", gpu.GetError().mMessage.c_str());
+            std::printf("gpu_implicit: %s\n",
+                        (gpu.HasError() ? gpu : gpu_jacobi).GetError().mMessage.c_str());
             return;
         }
-        Side sides[3];
+        constexpr int cSides = 4;
+        Side sides[cSides];
         for (int step = 0; step < cSteps; ++step)
         {
             sides[0].Step(factored.GetSolver());
             sides[1].Step(jacobi.GetSolver());
             sides[2].Step(gpu.Get());
+            sides[3].Step(gpu_jacobi.Get());
             (void)converged.GetSolver().Step(cFrameTime);
         }
         const double reference = converged.TipDeflection();
-        std::vector<Vec3> gpu_positions;
+        std::vector<Vec3> gpu_positions, gpu_jacobi_positions;
         gpu.Get().ReadPositions(gpu_positions);
-        const double tips[3] = {factored.TipDeflection(), jacobi.TipDeflection(),
-                                factored.TipDeflection(gpu_positions)};
-        const char* names[3] = {"cpu_double/factored", "cpu_double/block_jacobi", "gpu_float/block_jacobi"};
+        gpu_jacobi.Get().ReadPositions(gpu_jacobi_positions);
+        const double tips[cSides] = {factored.TipDeflection(), jacobi.TipDeflection(),
+                                     factored.TipDeflection(gpu_positions),
+                                     factored.TipDeflection(gpu_jacobi_positions)};
+        const char* names[cSides] = {"cpu_double/factored", "cpu_double/block_jacobi", "gpu_float/coarse",
+                                     "gpu_float/block_jacobi"};
+        const int coarse_unknowns[cSides] = {0, 0, gpu.Get().GetCoarseUnknowns(),
+                                             gpu_jacobi.Get().GetCoarseUnknowns()};
         const int tets = factored.GetSolver().GetMesh().GetTetCount();
         const double factored_ms =
             Median(std::vector<double>(sides[0].mWallMs.begin() + 1, sides[0].mWallMs.end()));
-        for (int side = 0; side < 3; ++side)
+        for (int side = 0; side < cSides; ++side)
         {
             const Side& timed = sides[side];
             const std::vector<double> wall(timed.mWallMs.begin() + 1, timed.mWallMs.end());
@@ -135,7 +145,9 @@ void RunGpuImplicitCases(BenchTable& ioTable, const BenchOptions& inOptions,
                              ";steps_not_converged=" + std::to_string(timed.mNotConverged) +
                              ";vs_cpu_factored_time=" + FormatExtra(Median(wall) / factored_ms) + ";tip_m=" +
                              FormatExtra(tips[side]) + ";converged_tip_m=" + FormatExtra(reference) +
-                             (side == 2 ? ";device=" + inDeviceName : std::string()) +
+                             (side >= 2 ? ";coarse_unknowns=" + std::to_string(coarse_unknowns[side]) +
+                                              ";device=" + inDeviceName
+                                        : std::string()) +
                              (timed.mFailed ? ";error=step_failed" : "")});
         }
     }

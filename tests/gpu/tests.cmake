@@ -3,6 +3,7 @@
 # test_gpu: the compute module and the GPU FEM solver (on llvmpipe where no GPU exists).
 crumple_add_test(gpu
     gpu/ComputeDeviceTest.cpp
+    gpu/GpuCoarseSpaceTest.cpp
     gpu/FloatTetReference.cpp
     gpu/GpuFractureTest.cpp
     gpu/GpuImplicitStepTest.cpp

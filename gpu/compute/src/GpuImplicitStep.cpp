@@ -30,6 +30,11 @@ enum EBinding : std::uint32_t
     cProductInput = 28,
     cDotA = 29,
     cDotB = 30,
+    // TetCoarseCorrection's node modes, members and coarse values: bindings the product (28) and the dots
+    // (29, 30) rebind for themselves
+    cCoarseNodes = 28,
+    cCoarseMembers = 29,
+    cCoarseValues = 30,
     // TetStvkLinearization's output, read by the product and the Jacobi blocks: TetDot's first operand
     // binding, which every dot rebinds for itself
     cLinearization = 29,
@@ -84,7 +89,8 @@ Result<GpuImplicitStep> GpuImplicitStep::Create(std::shared_ptr<ComputeDevice> i
                     {&step.mJacobi, "TetJacobiBlocks", cShaderTetJacobiBlocks},
                     {&step.mConjugateGradient, "TetConjugateGradient", cShaderTetConjugateGradient},
                     {&step.mDot, "TetDot", cShaderTetDot},
-                    {&step.mScale, "TetImplicitScale", cShaderTetImplicitScale}};
+                    {&step.mScale, "TetImplicitScale", cShaderTetImplicitScale},
+                    {&step.mCoarse, "TetCoarseCorrection", cShaderTetCoarseCorrection}};
     for (const auto& program : programs)
     {
         Result<ComputeProgram> compiled = ComputeProgram::Create(inDevice, program.mName, program.mSource);
@@ -140,6 +146,71 @@ Status GpuImplicitStep::Reserve(std::size_t inNodes, std::size_t inElements)
     mNodeCount = inNodes;
     mElementCount = inElements;
     return Status::Ok();
+}
+
+Status GpuImplicitStep::SetCoarseSpace(const fem::TetCoarseSpace* inSpace)
+{
+    if (inSpace == nullptr || inSpace->GetAggregateCount() <= 0)
+    {
+        mCoarseAggregates = 0;
+        mCoarseNodeCount = 0;
+        return Status::Ok();
+    }
+    const auto aggregates = static_cast<std::size_t>(inSpace->GetAggregateCount());
+    const std::size_t node_count = inSpace->mNodeAggregate.size();
+    const std::size_t unknowns = 6 * aggregates;
+    std::vector<Float4> nodes(node_count);
+    for (std::size_t node = 0; node < node_count; ++node)
+    {
+        const Vec3& offset = inSpace->mNodeOffset[node];
+        nodes[node] = {static_cast<float>(offset.x()), static_cast<float>(offset.y()),
+                       static_cast<float>(offset.z()), static_cast<float>(inSpace->mNodeAggregate[node])};
+    }
+    // intent: the members' offsets count from the buffer's start, past the A + 1 offsets themselves
+    std::vector<std::uint32_t> members;
+    members.reserve(aggregates + 1 + inSpace->mAggregateNodes.size());
+    for (int start : inSpace->mAggregateStart)
+        members.push_back(static_cast<std::uint32_t>(aggregates + 1 + static_cast<std::size_t>(start)));
+    for (int node : inSpace->mAggregateNodes)
+        members.push_back(static_cast<std::uint32_t>(node));
+    std::vector<float> values(2 * unknowns + unknowns * unknowns, 0.0f);
+    for (std::size_t row = 0; row < unknowns; ++row)
+        for (std::size_t column = 0; column < unknowns; ++column)
+            values[2 * unknowns + row * unknowns + column] = static_cast<float>(
+                inSpace->mInverse(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(column)));
+    Result<StorageBuffer> node_buffer =
+        StorageBuffer::Create(mDevice, nodes.size() * sizeof(Float4), nodes.data());
+    Result<StorageBuffer> member_buffer =
+        StorageBuffer::Create(mDevice, members.size() * sizeof(std::uint32_t), members.data());
+    Result<StorageBuffer> value_buffer =
+        StorageBuffer::Create(mDevice, values.size() * sizeof(float), values.data());
+    for (const Result<StorageBuffer>* made : {&node_buffer, &member_buffer, &value_buffer})
+        if (made->HasError())
+            return made->GetError(); // the previous space stays
+    mCoarseNodes = std::move(node_buffer.Get());
+    mCoarseMembers = std::move(member_buffer.Get());
+    mCoarseValues = std::move(value_buffer.Get());
+    mCoarseAggregates = static_cast<std::uint32_t>(aggregates);
+    mCoarseNodeCount = node_count;
+    return Status::Ok();
+}
+
+void GpuImplicitStep::CoarseCorrection() const
+{
+    if (!mCoarseActive)
+        return;
+    mCoarseNodes.Bind(cCoarseNodes);
+    mCoarseMembers.Bind(cCoarseMembers);
+    mCoarseValues.Bind(cCoarseValues);
+    mCoarse.Use();
+    const std::uint32_t unknowns = 6 * mCoarseAggregates;
+    const std::uint32_t counts[] = {mCoarseAggregates, unknowns, mRunNodeCount};
+    for (std::uint32_t operation = 0; operation < 3; ++operation)
+    {
+        mCoarse.SetUInt("uOperation", operation);
+        mCoarse.SetUInt("uCount", counts[operation]);
+        mCoarse.Dispatch(counts[operation]);
+    }
 }
 
 void GpuImplicitStep::Dot(const StorageBuffer& inA, const StorageBuffer& inB, std::uint32_t inMode) const
@@ -248,6 +319,13 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
     mScale.SetFloat("uDeltaTime", h_float);
     mScale.SetVec3("uGravity", inInput.mGravity);
     mScale.Dispatch(mScale.GetLocalSize()); // one work group, read back with the first residual
+    mCoarseActive = mCoarseAggregates > 0 && mCoarseNodeCount == node_count;
+    if (mCoarseActive)
+    {
+        mCoarse.Use();
+        mCoarse.SetUInt("uUnknowns", 6 * mCoarseAggregates);
+        stats.mCoarseUnknowns = static_cast<int>(6 * mCoarseAggregates);
+    }
 
     double energy_scale = cEnergyFloor;
     bool converged = false;
@@ -282,6 +360,7 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         mJacobi.Dispatch(mRunNodeCount);
         ++stats.mElementPasses;
         NodeOperation(cStart);
+        CoarseCorrection();
         Dot(mResidualVector, mPreconditioned, cSolveStarts);
 
         // intent: the Newton test on the energy of the remaining correction, 1/2 r.Br (one readback)
@@ -329,6 +408,7 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
             NodeOperation(cOperator);
             Dot(mDirection, mOperatorProduct, cCurvature);
             NodeOperation(cUpdate);
+            CoarseCorrection();
             Dot(mResidualVector, mPreconditioned, cNewResidual);
             ++cg_iterations;
             if (ChecksAt(cg_iterations) || cg_iterations == settings.mCgMaxIterations)
@@ -342,6 +422,7 @@ GpuImplicitStepStats GpuImplicitStep::Step(const GpuImplicitStepInput& inInput)
         }
         stats.mElementPasses += static_cast<std::uint64_t>(cg_iterations);
         stats.mSolverIterations += cg_iterations;
+        stats.mMostSolveIterations = std::max(stats.mMostSolveIterations, cg_iterations);
         stats.mSolverResidual = std::max(stats.mSolverResidual, relative);
         if (!solved)
             stats.mConverged = false;

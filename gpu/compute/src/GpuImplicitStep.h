@@ -4,6 +4,7 @@
 
 #include <crumple/base/Math.h>
 #include <crumple/base/Result.h>
+#include <crumple/fem/TetCoarseSpace.h>
 #include <crumple/fem/TetSolverSettings.h>
 #include <crumple/gpu/ComputeDevice.h>
 #include <crumple/gpu/ComputeProgram.h>
@@ -48,11 +49,13 @@ struct GpuImplicitStepStats
 {
     int mNewtonIterations = 0;        ///< Linear solves
     int mSolverIterations = 0;        ///< Conjugate-gradient iterations, all solves
+    int mMostSolveIterations = 0;     ///< Conjugate-gradient iterations of the longest solve
     double mSolverResidual = 0.0;     ///< Largest final relative residual sqrt(r.z / b.Pb) of a solve
     bool mConverged = true;           ///< Every solve and the Newton test converged
     std::uint64_t mElementPasses = 0; ///< Element evaluations / #T (forces, products, diagonal blocks)
     bool mAllocated = true; ///< False when the step's buffers could not be made (nothing was stepped)
     bool mDiverged = false; ///< A residual was not finite (the step stopped there)
+    int mCoarseUnknowns = 0; ///< Unknowns of the coarse correction the solves used (0: block Jacobi alone)
 };
 
 /// fem::TetSolver::StepImplicit as compute shaders: backward Euler with Rayleigh damping for both elastic
@@ -60,9 +63,12 @@ struct GpuImplicitStepStats
 /// same convergence test (the energy of the remaining correction, 1/2 r.Br, against mImplicitTolerance of the
 /// step's kinetic and load energy and the crack-safe energy), each linear solve a conjugate gradient
 /// preconditioned by the nodes' 3x3 diagonal blocks (block Jacobi; the CPU's factored rest system needs
-/// sequential triangular solves). The scalars of an iteration stay on the GPU: the host reads them back once
-/// per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (a sync each), so a solve may run up
-/// to 7 iterations past its tolerance. Deterministic: fixed-order gathers and reductions, no float atomics.
+/// sequential triangular solves) plus, where SetCoarseSpace gave one, the coarse correction on the rigid
+/// modes of node aggregates (fem::TetCoarseSpace: a gather per aggregate, a dense product with the coarse
+/// inverse, a scatter per node; three more dispatches per iteration). The scalars of an iteration stay on the
+/// GPU: the host reads them back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (a
+/// sync each), so a solve may run up to 7 iterations past its tolerance. Deterministic: fixed-order gathers
+/// and reductions, no float atomics.
 class GpuImplicitStep
 {
 public:
@@ -76,7 +82,11 @@ public:
     /// non-finite state.
     GpuImplicitStepStats Step(const GpuImplicitStepInput& inInput);
 
-private:
+    /// The coarse space the next steps' solves add to block Jacobi (its inverse as floats), or none (null or
+    /// no aggregate): block Jacobi alone. A space for another node count than a step's is not used by it.
+    Status SetCoarseSpace(const fem::TetCoarseSpace* inSpace);
+
+  private:
     // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
     Status Reserve(std::size_t inNodes, std::size_t inElements);
     // a . b into the scalars in inMode (TetDot).
@@ -87,13 +97,21 @@ private:
     void StiffnessProduct(const StorageBuffer& inDirection, bool inNewDirection) const;
     // Binds the St. Venant-Kirchhoff linearisation for the next pass that reads it (its binding is shared).
     void BindLinearization() const;
+    // z += P (P^T A0 P)^-1 P^T r on the residual and preconditioned vectors (when a coarse space is set).
+    void CoarseCorrection() const;
 
     std::shared_ptr<ComputeDevice> mDevice;
     bool mStVenantKirchhoff = false; // the model the solver steps: TetStvkLinearization runs
-    ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale, mLinearize;
+    ComputeProgram mProduct, mResidual, mJacobi, mConjugateGradient, mDot, mScale, mLinearize, mCoarse;
     StorageBuffer mStartPositions, mStartVelocities, mResidualVector, mPreconditioned, mDirection,
         mOperatorProduct, mSolution, mBlocks, mProducts, mScalars, mLinearization;
     std::size_t mNodeCount = 0, mElementCount = 0;
+    // The coarse space (SetCoarseSpace): per node its rest offset and aggregate, the aggregates' members, the
+    // coarse vectors and inverse; used while a step's node count is mCoarseNodeCount
+    StorageBuffer mCoarseNodes, mCoarseMembers, mCoarseValues;
+    std::uint32_t mCoarseAggregates = 0;
+    std::size_t mCoarseNodeCount = 0;
+    bool mCoarseActive = false;                            // of the step running
     std::uint32_t mRunNodeCount = 0, mRunElementCount = 0; // of the step running
 };
 

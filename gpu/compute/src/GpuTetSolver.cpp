@@ -123,6 +123,7 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
     solver.mMaterial = inMaterial;
     solver.mLambda = static_cast<float>(material.GetLambda());
     solver.mMu = static_cast<float>(material.GetShearModulus());
+    solver.mMaterialMatrix = material.GetMaterialMatrix();
     solver.mMasses = cpu.GetMasses();
     solver.mInverseMasses = cpu.GetInverseMasses();
     solver.mElementCount = static_cast<std::uint32_t>(inMesh.GetTetCount());
@@ -553,6 +554,55 @@ void GpuTetSolver::Reconnect()
     }
 }
 
+void GpuTetSolver::RefreshCoarseSpace(double inDeltaTime)
+{
+    if (mSettings.mPreconditioner == fem::EImplicitPreconditioner::BlockJacobi)
+        return;
+    std::vector<std::uint8_t> free_nodes(mInverseMasses.size());
+    for (std::size_t node = 0; node < free_nodes.size(); ++node)
+        free_nodes[node] = mInverseMasses[node] > 0.0 ? 1 : 0;
+    const bool follow_frames = mSettings.mFactorRefreshIterations > 0;
+    const bool refresh = follow_frames && mLongestSolve > mSettings.mFactorRefreshIterations;
+    if (!refresh && inDeltaTime == mCoarseTimeStep && mElementNodes == mCoarseElementNodes &&
+        free_nodes == mCoarseFree)
+        return;
+    // intent: each current node's rest position through an element corner (cracks copy nodes, not rest
+    // shapes)
+    std::vector<Vec3> rest(mInverseMasses.size(), Vec3::Zero());
+    for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
+        for (std::size_t corner = 0; corner < 4; ++corner)
+            rest[static_cast<std::size_t>(mElementNodes[tet][corner])] =
+                mMesh.GetRestPositions()[static_cast<std::size_t>(mMesh.GetTets()[tet][corner])];
+    // intent: a prop that refreshes its preconditioner builds the space at its element frames and positions
+    // (read back: a sync), the corotated system there exactly; otherwise at rest
+    std::vector<Quat> frames;
+    std::vector<Vec3> positions;
+    if (follow_frames)
+    {
+        std::vector<Float4> rotations(mElementNodes.size());
+        mRotations.Download(0, rotations.size() * sizeof(Float4), rotations.data());
+        frames.reserve(rotations.size());
+        for (const Float4& rotation : rotations)
+            frames.emplace_back(rotation[3], rotation[0], rotation[1], rotation[2]); // buffer: x, y, z, w
+        ReadPositions(positions);
+    }
+    const double mass_scale = 1.0 + inDeltaTime * mMaterial.mMassDamping;
+    const double stiffness_scale = inDeltaTime * inDeltaTime + inDeltaTime * mMaterial.mStiffnessDamping;
+    Result<fem::TetCoarseSpace> space =
+        fem::BuildTetCoarseSpace(mElementNodes, mRest, rest, mMasses, mInverseMasses, mMaterialMatrix,
+                                 mass_scale, stiffness_scale, {}, frames, positions);
+    // intent: without a space (everything anchored, a degenerate system, too few aggregates, no memory on the
+    // device) the solves precondition by block Jacobi alone
+    const bool made = space.IsValid() && mImplicit->SetCoarseSpace(&space.Get()).IsValid();
+    if (!made)
+        (void)mImplicit->SetCoarseSpace(nullptr);
+    mCoarseElementNodes = mElementNodes;
+    mCoarseFree = std::move(free_nodes);
+    mCoarseTimeStep = inDeltaTime;
+    mLongestSolve = 0;
+    ++mCoarseBuilds;
+}
+
 void GpuTetSolver::SetElementPassUniforms(double inStiffnessDamping) const
 {
     mElementPass.Use();
@@ -616,6 +666,7 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
         SetElementPassUniforms(0.0);
         for (int piece = 0; piece < inSubSteps && stepped; ++piece)
         {
+            RefreshCoarseSpace(dt);
             GpuImplicitStepInput input;
             input.mDeltaTime = dt;
             input.mMassDamping = mMaterial.mMassDamping;
@@ -634,6 +685,8 @@ bool GpuTetSolver::Integrate(double inDeltaTime, int inSubSteps, fem::TetStepRes
             input.mPositions = &mPositions;
             input.mVelocities = &mVelocities;
             const GpuImplicitStepStats stats = mImplicit->Step(input);
+            mCoarseUnknowns = stats.mCoarseUnknowns;
+            mLongestSolve = std::max(mLongestSolve, stats.mMostSolveIterations);
             mElementWork += stats.mElementPasses * mElementCount;
             ioResult.mNewtonIterations += stats.mNewtonIterations;
             ioResult.mSolverIterations += stats.mSolverIterations;

@@ -19,10 +19,13 @@ enum class EImplicitPreconditioner : std::uint8_t
     /// 10^3 to 10^4 tetrahedra). A breakable material also keeps each element's rest stiffness between
     /// factorisations (about 800 bytes per element), so refactoring after a crack does not recompute it.
     /// Falls back to BlockJacobi for a solve it cannot factor (a static solve whose anchors leave the body
-    /// free to move).
+    /// free to move). On the GPU (gpu::GpuTetSolver), whose solves cannot run sequential triangular solves,
+    /// the rest system enters instead through a coarse correction on the rigid modes of node aggregates
+    /// (TetCoarseSpace), built on the first implicit step and after each crack, anchor or time-step change.
     RestFactorization,
     /// Block Jacobi plus a coarse correction on the six rigid modes: no setup and no memory, but the
-    /// iteration count grows with the stiffness and the mesh size (hundreds for steel).
+    /// iteration count grows with the stiffness and the mesh size (hundreds for steel). On the GPU, block
+    /// Jacobi alone.
     BlockJacobi,
 };
 

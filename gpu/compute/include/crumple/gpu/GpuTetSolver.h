@@ -6,14 +6,15 @@
 
 #include <crumple/base/Result.h>
 #include <crumple/fem/FemMaterial.h>
+#include <crumple/fem/FractureLinks.h>
+#include <crumple/fem/TetCoarseSpace.h>
+#include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetFragment.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem/TetSolver.h>
 #include <crumple/fem/TetSolverSettings.h>
 #include <crumple/fem/TetStepResult.h>
 #include <crumple/fem/TetStepper.h>
-#include <crumple/fem/FractureLinks.h>
-#include <crumple/fem/TetElementRest.h>
-#include <crumple/fem/TetFragment.h>
 #include <crumple/gpu/ComputeDevice.h>
 #include <crumple/gpu/ComputeProgram.h>
 #include <crumple/gpu/StorageBuffer.h>
@@ -32,10 +33,10 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 
 /// The tetrahedral FEM of fem::TetSolver as GLSL compute shaders (the GPU destruction paper, section IV, in
 /// compute form), in single precision: the same mesh, material and settings structs, the same symplectic
-/// Euler with the same proven stable sub-step (fem::StableTimeStep), the same corotated or St. Venant-Kirchhoff
-/// elasticity with Rayleigh damping. Per sub-step an element pass writes each element's four corner forces,
-/// then a node pass gathers them per node through an adjacency list in element order (deterministic: no
-/// float atomics) and integrates.
+/// Euler with the same proven stable sub-step (fem::StableTimeStep), the same corotated or St.
+/// Venant-Kirchhoff elasticity with Rayleigh damping. Per sub-step an element pass writes each element's four
+/// corner forces, then a node pass gathers them per node through an adjacency list in element order
+/// (deterministic: no float atomics) and integrates.
 ///
 /// Structure of arrays on the GPU: positions with the inverse mass in w, velocities, external forces (vec4
 /// each), element nodes (ivec4), rest data (three vec4 per element), rotations (quaternions), corner forces,
@@ -52,15 +53,19 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 /// props). ComputeFragments() reports the pieces as the CPU does.
 ///
 /// Sleep as on the CPU (TetSolverSettings::mSleepSpeed, mSleepStepCount): the kinetic energy comes from a
-/// one-work-group reduction with the step's status; a sleeping prop dispatches nothing until an input changes.
+/// one-work-group reduction with the step's status; a sleeping prop dispatches nothing until an input
+/// changes.
 ///
 /// Implicit Euler (EIntegrator::ImplicitEuler, the default: one step per game step, stable for steel) runs
 /// as the CPU's StepImplicit does, Newton on the end velocity with the same convergence test, for either
 /// model (St. Venant-Kirchhoff linearised with the positive part of its stress, as the CPU); each linear
-/// solve is a conjugate gradient preconditioned by the nodes' 3x3 diagonal blocks (block Jacobi:
-/// TetSolverSettings::mPreconditioner and mFactorRefreshIterations are the CPU's choices, the factored rest
-/// system needing sequential triangular solves), with its scalars kept on the GPU and read back once per
-/// Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep). A breakable prop runs
+/// solve is a conjugate gradient preconditioned by the nodes' 3x3 diagonal blocks (block Jacobi) plus, with
+/// TetSolverSettings::mPreconditioner RestFactorization (the default), a coarse correction on the rigid modes
+/// of node aggregates from the rest system (fem::TetCoarseSpace, rebuilt on the host after a crack, an anchor
+/// or a time-step change; none for a prop of fewer than 12 aggregates: GetCoarseUnknowns). The CPU's factored
+/// rest system needs sequential triangular solves, so mFactorRefreshIterations is the CPU's alone. The
+/// scalars stay on the GPU, read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every
+/// 8th (GpuImplicitStep). A breakable prop runs
 /// the fracture passes after each implicit step, as after a sub-step.
 ///
 /// Plasticity as the CPU's (von Mises, radial return at the creep rate, capped): a plastic-strain buffer the
@@ -165,6 +170,14 @@ public:
     double GetStableTimeStep() const { return mStableTimeStep; }
     /// Element evaluations so far (one per element per sub-step), as fem::TetSolver counts them
     std::uint64_t GetElementWorkCount() const { return mElementWork; }
+    /// Unknowns of the coarse correction the last implicit step's solves used (six per aggregate of
+    /// fem::TetCoarseSpace; 0: block Jacobi alone: the explicit integrator, the BlockJacobi preconditioner,
+    /// or a prop too small for it to help)
+    int GetCoarseUnknowns() const { return mCoarseUnknowns; }
+    /// Coarse spaces built so far: on the first implicit step, after a crack, an anchor or a new time step,
+    /// and, with TetSolverSettings::mFactorRefreshIterations > 0, before a step that follows a solve longer
+    /// than that (then at the element frames and positions)
+    int GetCoarseSpaceBuilds() const { return mCoarseBuilds; }
     /// The device this solver runs on
     const ComputeDevice& GetDevice() const { return *mDevice; }
 
@@ -197,6 +210,11 @@ private:
     bool IsImplicit() const { return mSettings.mIntegrator == fem::EIntegrator::ImplicitEuler; }
     // An input changed: wake up.
     void InputChanged();
+    // The implicit solves' coarse space built anew when the connectivity, the anchors or the step inDeltaTime
+    // (s) changed since it was built and, with mFactorRefreshIterations > 0, when a solve since took more
+    // iterations than that: then at the current element frames and positions (none wanted:
+    // fem::EImplicitPreconditioner::BlockJacobi).
+    void RefreshCoarseSpace(double inDeltaTime);
     // The fracture passes after a sub-step; returns the number of links opened.
     int Fracture();
     // The fracture passes' uniforms.
@@ -252,6 +270,14 @@ private:
     std::vector<double> mSavedMasses, mSavedInverseMasses;
     ComputeProgram mElementPass, mNodePass, mStressPass, mGroupPass, mCrackPass, mEnergyPass, mPlasticPass;
     std::unique_ptr<GpuImplicitStep> mImplicit; // the implicit step's programs and vectors; null if explicit
+    // The coarse space's inputs as last built (RefreshCoarseSpace): connectivity, free nodes and step
+    fem::Matrix6 mMaterialMatrix = fem::Matrix6::Zero(); // C (Pa), the CPU solver's
+    std::vector<fem::TetIndices> mCoarseElementNodes;
+    std::vector<std::uint8_t> mCoarseFree;
+    double mCoarseTimeStep = -1.0;
+    int mCoarseUnknowns = 0;
+    int mLongestSolve = 0; // CG iterations of the longest solve since the space was built
+    int mCoarseBuilds = 0;
     StorageBuffer mPositions, mVelocities, mElements, mRestBuffer, mRotations, mCorners, mExternal, mOffsets,
         mIncident, mStatus;
     StorageBuffer mStress, mGroupOffsets, mGroupElements, mPrincipal, mLinkBuffer, mLinkFaces, mLinkNormals,
