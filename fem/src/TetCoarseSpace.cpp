@@ -221,12 +221,14 @@ BuildTetCoarseSpace(std::span<const TetIndices> inElementNodes, std::span<const 
     const int cap = inSettings.mMaxCoarseUnknowns / 6;
     int target = std::max(inSettings.mMinAggregateNodes, (free_count + cap - 1) / cap);
     int aggregates = Aggregate(neighbours, inInverseMasses, target, space.mNodeAggregate);
-    while (aggregates > cap)
+    while (aggregates > cap && target < free_count)
     {
-        target *= 2;
+        target = std::min(2 * target, free_count);
         aggregates = Aggregate(neighbours, inInverseMasses, target, space.mNodeAggregate);
     }
-    if (aggregates < inSettings.mMinAggregates)
+    // intent: more separate pieces than the limit has aggregates for (a shattered prop whose pieces stay in
+    // it): no space, as for too few aggregates
+    if (aggregates > cap || aggregates < inSettings.mMinAggregates)
     {
         space.mNodeAggregate.assign(node_count, -1);
         space.mNodeOffset.assign(node_count, Vec3::Zero());

@@ -311,6 +311,36 @@ TEST_CASE("Coarse space: a body of too few aggregates gets none; bad input is re
     for (int aggregate : few.mNodeAggregate)
         CHECK(aggregate == -1);
 
+    // A shattered body: 80 separate tetrahedra need 80 aggregates, more than 384 unknowns hold (it used to
+    // grow its aggregates for ever).
+    std::vector<Vec3> shards;
+    std::vector<TetIndices> shard_tets;
+    for (int shard = 0; shard < 80; ++shard)
+    {
+        const Vec3 corner(0.2 * shard, 0.0, 0.0);
+        for (const Vec3& offset :
+             {Vec3(0.0, 0.0, 0.0), Vec3(0.1, 0.0, 0.0), Vec3(0.0, 0.1, 0.0), Vec3(0.0, 0.0, 0.1)})
+            shards.push_back(corner + offset);
+        shard_tets.push_back({4 * shard, 4 * shard + 1, 4 * shard + 2, 4 * shard + 3});
+    }
+    const TetMesh shattered = TetMesh::Create(shards, shard_tets).Get();
+    const std::vector<double> shard_masses = LumpedNodeMass(shattered, 7850.0).Get();
+    std::vector<double> shard_inverse;
+    for (double mass : shard_masses)
+        shard_inverse.push_back(1.0 / mass);
+    const TetCoarseSpace none =
+        BuildTetCoarseSpace(shattered.GetTets(), TetRestData(shattered), shards, shard_masses, shard_inverse,
+                            body.mMaterial.GetMaterialMatrix(), cMassScale, cStiffnessScale)
+            .Get();
+    CHECK(none.GetAggregateCount() == 0);
+    // With room for them, each shard is one aggregate (four free nodes: translations and rotations).
+    const TetCoarseSpace shard_space =
+        BuildTetCoarseSpace(shattered.GetTets(), TetRestData(shattered), shards, shard_masses, shard_inverse,
+                            body.mMaterial.GetMaterialMatrix(), cMassScale, cStiffnessScale,
+                            {.mMaxCoarseUnknowns = 480})
+            .Get();
+    CHECK(shard_space.GetAggregateCount() == 80);
+
     const std::span<const TetIndices> tets = body.mMesh.GetTets();
     const std::span<const Vec3> rest = body.mMesh.GetRestPositions();
     std::vector<double> short_masses(body.mMasses.begin(), body.mMasses.end() - 1);

@@ -47,7 +47,8 @@ struct CRUMPLE_API TetCoarseSpaceSettings
 /// 1/120 s did not converge to 1e-6 in 5,000 iterations; with 0.1 m aggregates of its 2.5 cm cubes, 55).
 /// Aggregates never cross a crack: they follow the current connectivity. An aggregate with fewer than four
 /// free nodes keeps its translations only (its rotation rows are zero in P and identity in the inverse).
-/// A body with fewer aggregates than TetCoarseSpaceSettings::mMinAggregates gets an empty space (no
+/// A body with fewer aggregates than TetCoarseSpaceSettings::mMinAggregates, or with more separate pieces of
+/// free nodes than mMaxCoarseUnknowns / 6 (each piece needs an aggregate of its own), gets an empty space (no
 /// aggregate: block Jacobi alone).
 struct CRUMPLE_API TetCoarseSpace
 {
