@@ -16,4 +16,12 @@ fem::FemMaterialSettings BrittleMaterial(fem::EFractureMode inMode)
     return material;
 }
 
+fem::FemMaterialSettings StiffBrittleMaterial()
+{
+    fem::FemMaterialSettings material = BrittleMaterial(fem::EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e10;
+    material.mPoissonRatio = 0.2;
+    return material;
+}
+
 } // namespace crumple::common

@@ -15,4 +15,8 @@ constexpr double cBrittlePoisson = 0.25;   ///< Its Poisson ratio
 /// tensile strength 1 MPa, the given fracture mode.
 fem::FemMaterialSettings BrittleMaterial(fem::EFractureMode inMode);
 
+/// The stiff brittle walls' material (the fracture, factored-solve, stress and GPU tests): BrittleMaterial
+/// with CrackPlane, E = 10 GPa and nu = 0.2.
+fem::FemMaterialSettings StiffBrittleMaterial();
+
 } // namespace crumple::common

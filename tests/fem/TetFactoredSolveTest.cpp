@@ -79,9 +79,7 @@ TetSolver HitBrittleWall(double inMassDamping)
     TetGridSettings grid;
     grid.mSize = Vec3(2.0, 0.2, 1.0);
     grid.mCellCount = {10, 1, 5};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
+    FemMaterialSettings material = common::StiffBrittleMaterial();
     material.mMassDamping = inMassDamping;
     TetSolver wall = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
     for (int i = 0; i <= 10; ++i)

@@ -25,6 +25,7 @@ constexpr double cStrength = common::cBrittleStrength; // Pa
 constexpr double cYoung = common::cBrittleYoung;       // Pa
 constexpr double cPoisson = common::cBrittlePoisson;
 using common::BrittleMaterial;
+using common::StiffBrittleMaterial;
 
 // A free 1 m x 0.5 m x 0.5 m bar of 4 x 2 x 2 cubes stretched to the uniaxial stress inStress along x (exact
 // for the corotated model: strain diag(e, -nu e, -nu e) with e = stress / E), then stepped by 1 us.
@@ -57,9 +58,7 @@ Wall MakeWall(EIntegrator inIntegrator)
     TetGridSettings grid;
     grid.mSize = Vec3(2.0, 0.2, 1.0);
     grid.mCellCount = {10, 1, 5};
-    FemMaterialSettings material = BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
+    FemMaterialSettings material = StiffBrittleMaterial();
     material.mMassDamping = 2.0;
     TetSolverSettings settings;
     settings.mIntegrator = inIntegrator;

@@ -189,9 +189,7 @@ TEST_CASE("Stress: a brittle prop hammered at random cracks, refactors and never
     TetGridSettings grid;
     grid.mSize = Vec3(1.0, 0.2, 0.6);
     grid.mCellCount = {5, 1, 3};
-    FemMaterialSettings material = common::BrittleMaterial(EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
+    FemMaterialSettings material = common::StiffBrittleMaterial();
     TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), material, TetSolverSettings()).Get();
     for (int i = 0; i <= 5; ++i)
         for (int j = 0; j <= 1; ++j)

@@ -44,9 +44,7 @@ fem::TetSolver StruckBrittleWall(const fem::TetSolverSettings& inSettings, doubl
     fem::TetGridSettings grid;
     grid.mSize = Vec3(2.0, 0.2, 1.0);
     grid.mCellCount = {10, 1, 5};
-    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e10;
-    material.mPoissonRatio = 0.2;
+    fem::FemMaterialSettings material = common::StiffBrittleMaterial();
     material.mMassDamping = 2.0;
     fem::TetSolver wall = fem::TetSolver::Create(fem::TetGrid(grid).Get(), material, inSettings).Get();
     for (int i = 0; i <= 10; ++i)
