@@ -193,6 +193,17 @@ BuildTetCoarseSpace(std::span<const TetIndices> inElementNodes, std::span<const 
                 return MakeError(EError::OutOfRange, "BuildTetCoarseSpace: element " + std::to_string(tet) +
                                                          " names node " + std::to_string(node) + " of " +
                                                          std::to_string(node_count));
+    if ((!inFrames.empty() && inFrames.size() != inElementNodes.size()) ||
+        (!inPositions.empty() && inPositions.size() != node_count))
+        return MakeError(EError::InvalidArgument,
+                         "BuildTetCoarseSpace: frames must be one per element and positions one "
+                         "per node (or none)");
+    for (const Quat& frame : inFrames)
+        if (!frame.coeffs().allFinite())
+            return MakeError(EError::InvalidArgument, "BuildTetCoarseSpace: a frame is not finite");
+    for (const Vec3& position : inPositions)
+        if (!position.allFinite())
+            return MakeError(EError::InvalidArgument, "BuildTetCoarseSpace: a position is not finite");
     if (!(std::isfinite(inMassScale) && inMassScale > 0.0) ||
         !(std::isfinite(inStiffnessScale) && inStiffnessScale >= 0.0))
         return MakeError(EError::InvalidArgument,

@@ -366,4 +366,21 @@ TEST_CASE("Coarse space: a body of too few aggregates gets none; bad input is re
               .GetError()
               .mCode == EError::InvalidArgument);
     CHECK(Build(body, {.mMaxCoarseUnknowns = 5}).GetError().mCode == EError::InvalidArgument);
+    // Frames and positions: one per element and node, finite (a diverged state read back is refused).
+    const Matrix6& material = body.mMaterial.GetMaterialMatrix();
+    std::vector<Quat> frames(body.mRest.size(), Quat::Identity());
+    std::vector<Vec3> positions(rest.begin(), rest.end());
+    const auto build_at = [&]
+    {
+        return BuildTetCoarseSpace(tets, body.mRest, rest, body.mMasses, body.mInverseMasses, material,
+                                   cMassScale, cStiffnessScale, {}, frames, positions);
+    };
+    CHECK(build_at().IsValid());
+    frames.pop_back();
+    CHECK(build_at().GetError().mCode == EError::InvalidArgument);
+    frames.push_back(Quat(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0));
+    CHECK(build_at().GetError().mCode == EError::InvalidArgument);
+    frames.back() = Quat::Identity();
+    positions[7].z() = std::numeric_limits<double>::infinity();
+    CHECK(build_at().GetError().mCode == EError::InvalidArgument);
 }

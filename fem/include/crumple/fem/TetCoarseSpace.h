@@ -72,8 +72,12 @@ struct CRUMPLE_API TetCoarseSpace
 /// @param[in] inMaterialMatrix C (Pa)
 /// @param[in] inMassScale      a = 1 + h alpha
 /// @param[in] inStiffnessScale b = h^2 + h beta (s^2)
-/// Refused: inconsistent sizes, an index out of range, a non-finite or negative scale, no free node, and a
-/// coarse system that is not positive definite (a degenerate mesh).
+/// @param[in] inSettings       limits (TetCoarseSpaceSettings)
+/// @param[in] inFrames         #T element frames (unit quaternions) to build the corotated system at, or none
+///                             (rest frames)
+/// @param[in] inPositions      #N current node positions (m) the rigid modes turn about, or none (rest)
+/// Refused: inconsistent sizes, an index out of range, a non-finite position, frame or scale, a negative
+/// scale, no free node, and a coarse system that is not positive definite (a degenerate mesh).
 CRUMPLE_API Result<TetCoarseSpace>
 BuildTetCoarseSpace(std::span<const TetIndices> inElementNodes, std::span<const TetElementRest> inRest,
                     std::span<const Vec3> inRestPositions, std::span<const double> inMasses,
