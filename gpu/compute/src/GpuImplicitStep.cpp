@@ -173,7 +173,10 @@ Status GpuImplicitStep::SetCoarseSpace(const fem::TetCoarseSpace* inSpace)
         members.push_back(static_cast<std::uint32_t>(aggregates + 1 + static_cast<std::size_t>(start)));
     for (int node : inSpace->mAggregateNodes)
         members.push_back(static_cast<std::uint32_t>(node));
-    std::vector<float> values(2 * unknowns + unknowns * unknowns, 0.0f);
+    std::vector<float> values(2 * unknowns + unknowns * unknowns + 9 * aggregates, 0.0f);
+    for (std::size_t aggregate = 0; aggregate < aggregates; ++aggregate)
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            values[2 * unknowns + unknowns * unknowns + 9 * aggregate + 4 * axis] = 1.0f; // unturned
     for (std::size_t row = 0; row < unknowns; ++row)
         for (std::size_t column = 0; column < unknowns; ++column)
             values[2 * unknowns + row * unknowns + column] = static_cast<float>(
@@ -192,7 +195,35 @@ Status GpuImplicitStep::SetCoarseSpace(const fem::TetCoarseSpace* inSpace)
     mCoarseValues = std::move(value_buffer.Get());
     mCoarseAggregates = static_cast<std::uint32_t>(aggregates);
     mCoarseNodeCount = node_count;
+    mCoarseOffsets = inSpace->mNodeOffset;
+    mCoarseNodeAggregate = inSpace->mNodeAggregate;
     return Status::Ok();
+}
+
+void GpuImplicitStep::TurnCoarseSpace(std::span<const Mat3> inTurns)
+{
+    if (mCoarseAggregates == 0 || inTurns.size() != mCoarseAggregates)
+        return;
+    const std::size_t unknowns = 6 * static_cast<std::size_t>(mCoarseAggregates);
+    std::vector<float> turns(9 * inTurns.size());
+    for (std::size_t aggregate = 0; aggregate < inTurns.size(); ++aggregate)
+        for (int column = 0; column < 3; ++column)
+            for (int row = 0; row < 3; ++row)
+                turns[9 * aggregate + 3 * static_cast<std::size_t>(column) + static_cast<std::size_t>(row)] =
+                    static_cast<float>(inTurns[aggregate](row, column));
+    mCoarseValues.Upload((2 * unknowns + unknowns * unknowns) * sizeof(float), turns.size() * sizeof(float),
+                         turns.data());
+    std::vector<Float4> nodes(mCoarseOffsets.size());
+    for (std::size_t node = 0; node < nodes.size(); ++node)
+    {
+        const int aggregate = mCoarseNodeAggregate[node];
+        const Vec3 offset = aggregate < 0
+                                ? Vec3::Zero()
+                                : Vec3(inTurns[static_cast<std::size_t>(aggregate)] * mCoarseOffsets[node]);
+        nodes[node] = {static_cast<float>(offset.x()), static_cast<float>(offset.y()),
+                       static_cast<float>(offset.z()), static_cast<float>(aggregate)};
+    }
+    mCoarseNodes.Upload(0, nodes.size() * sizeof(Float4), nodes.data());
 }
 
 void GpuImplicitStep::CoarseCorrection() const

@@ -14,6 +14,7 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace crumple::gpu
 {
@@ -85,6 +86,9 @@ public:
     /// The coarse space the next steps' solves add to block Jacobi (its inverse as floats), or none (null or
     /// no aggregate): block Jacobi alone. A space for another node count than a step's is not used by it.
     Status SetCoarseSpace(const fem::TetCoarseSpace* inSpace);
+    /// Turns the coarse space's aggregates (#A rotations from the frame it was built in; SetCoarseSpace
+    /// starts them unturned): each aggregate's modes and coarse system are its built ones turned rigidly.
+    void TurnCoarseSpace(std::span<const Mat3> inTurns);
 
   private:
     // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
@@ -111,6 +115,8 @@ public:
     StorageBuffer mCoarseNodes, mCoarseMembers, mCoarseValues;
     std::uint32_t mCoarseAggregates = 0;
     std::size_t mCoarseNodeCount = 0;
+    std::vector<Vec3> mCoarseOffsets; // the space's node offsets as built (TurnCoarseSpace turns them)
+    std::vector<int> mCoarseNodeAggregate;
     bool mCoarseActive = false;                            // of the step running
     std::uint32_t mRunNodeCount = 0, mRunElementCount = 0; // of the step running
 };

@@ -12,10 +12,12 @@
 #include "GpuImplicitStep.h"
 
 #include <algorithm>
+
+#include <Eigen/SVD>
 #include <array>
-#include <limits>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 namespace crumple::gpu
@@ -561,11 +563,14 @@ void GpuTetSolver::RefreshCoarseSpace(double inDeltaTime)
     std::vector<std::uint8_t> free_nodes(mInverseMasses.size());
     for (std::size_t node = 0; node < free_nodes.size(); ++node)
         free_nodes[node] = mInverseMasses[node] > 0.0 ? 1 : 0;
-    const bool follow_frames = mSettings.mFactorRefreshIterations > 0;
-    const bool refresh = follow_frames && mLongestSolve > mSettings.mFactorRefreshIterations;
-    if (!refresh && inDeltaTime == mCoarseTimeStep && mElementNodes == mCoarseElementNodes &&
-        free_nodes == mCoarseFree)
+    const bool follow_turns = mSettings.mFactorRefreshIterations > 0;
+    if (inDeltaTime == mCoarseTimeStep && mElementNodes == mCoarseElementNodes && free_nodes == mCoarseFree)
+    {
+        // intent: the built space turned with its aggregates once a solve has become long (a bent prop)
+        if (follow_turns && mLongestSolve > mSettings.mFactorRefreshIterations)
+            TurnCoarseSpace();
         return;
+    }
     // intent: each current node's rest position through an element corner (cracks copy nodes, not rest
     // shapes)
     std::vector<Vec3> rest(mInverseMasses.size(), Vec3::Zero());
@@ -573,34 +578,63 @@ void GpuTetSolver::RefreshCoarseSpace(double inDeltaTime)
         for (std::size_t corner = 0; corner < 4; ++corner)
             rest[static_cast<std::size_t>(mElementNodes[tet][corner])] =
                 mMesh.GetRestPositions()[static_cast<std::size_t>(mMesh.GetTets()[tet][corner])];
-    // intent: a prop that refreshes its preconditioner builds the space at its element frames and positions
-    // (read back: a sync), the corotated system there exactly; otherwise at rest
-    std::vector<Quat> frames;
-    std::vector<Vec3> positions;
-    if (follow_frames)
-    {
-        std::vector<Float4> rotations(mElementNodes.size());
-        mRotations.Download(0, rotations.size() * sizeof(Float4), rotations.data());
-        frames.reserve(rotations.size());
-        for (const Float4& rotation : rotations)
-            frames.emplace_back(rotation[3], rotation[0], rotation[1], rotation[2]); // buffer: x, y, z, w
-        ReadPositions(positions);
-    }
     const double mass_scale = 1.0 + inDeltaTime * mMaterial.mMassDamping;
     const double stiffness_scale = inDeltaTime * inDeltaTime + inDeltaTime * mMaterial.mStiffnessDamping;
-    Result<fem::TetCoarseSpace> space =
-        fem::BuildTetCoarseSpace(mElementNodes, mRest, rest, mMasses, mInverseMasses, mMaterialMatrix,
-                                 mass_scale, stiffness_scale, {}, frames, positions);
+    Result<fem::TetCoarseSpace> space = fem::BuildTetCoarseSpace(
+        mElementNodes, mRest, rest, mMasses, mInverseMasses, mMaterialMatrix, mass_scale, stiffness_scale);
     // intent: without a space (everything anchored, a degenerate system, too few aggregates, no memory on the
     // device) the solves precondition by block Jacobi alone
     const bool made = space.IsValid() && mImplicit->SetCoarseSpace(&space.Get()).IsValid();
     if (!made)
         (void)mImplicit->SetCoarseSpace(nullptr);
+    mCoarseSpace = made ? std::move(space).Get() : fem::TetCoarseSpace{};
     mCoarseElementNodes = mElementNodes;
     mCoarseFree = std::move(free_nodes);
     mCoarseTimeStep = inDeltaTime;
     mLongestSolve = 0;
     ++mCoarseBuilds;
+    if (made && follow_turns)
+        TurnCoarseSpace(); // a prop bent before its cracks is turned at once
+}
+
+void GpuTetSolver::TurnCoarseSpace()
+{
+    // intent: each aggregate's best rotation from its rest offsets to its nodes now (Kabsch: the polar factor
+    // of sum (x - c) d^T)
+    const int aggregates = mCoarseSpace.GetAggregateCount();
+    if (aggregates <= 0)
+        return;
+    std::vector<Vec3> positions;
+    ReadPositions(positions);
+    if (positions.size() != mCoarseSpace.mNodeAggregate.size())
+        return;
+    std::vector<Mat3> turns(static_cast<std::size_t>(aggregates), Mat3::Identity());
+    for (int aggregate = 0; aggregate < aggregates; ++aggregate)
+    {
+        const int begin = mCoarseSpace.mAggregateStart[static_cast<std::size_t>(aggregate)];
+        const int end = mCoarseSpace.mAggregateStart[static_cast<std::size_t>(aggregate) + 1];
+        Vec3 centre = Vec3::Zero();
+        for (int entry = begin; entry < end; ++entry)
+            centre += positions[static_cast<std::size_t>(
+                mCoarseSpace.mAggregateNodes[static_cast<std::size_t>(entry)])];
+        centre /= static_cast<double>(end - begin);
+        Mat3 covariance = Mat3::Zero();
+        for (int entry = begin; entry < end; ++entry)
+        {
+            const auto node =
+                static_cast<std::size_t>(mCoarseSpace.mAggregateNodes[static_cast<std::size_t>(entry)]);
+            covariance += (positions[node] - centre) * mCoarseSpace.mNodeOffset[node].transpose();
+        }
+        if (!covariance.allFinite() || covariance.isZero())
+            continue;
+        const Eigen::JacobiSVD<Mat3> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        Mat3 reflect = Mat3::Identity();
+        reflect(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+        turns[static_cast<std::size_t>(aggregate)] = svd.matrixU() * reflect * svd.matrixV().transpose();
+    }
+    mImplicit->TurnCoarseSpace(turns);
+    mLongestSolve = 0;
+    ++mCoarseTurns;
 }
 
 void GpuTetSolver::SetElementPassUniforms(double inStiffnessDamping) const
