@@ -11,9 +11,9 @@
 #include "EmbeddedShaders.h"
 #include "GpuImplicitStep.h"
 
-#include <algorithm>
-
 #include <Eigen/SVD>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
