@@ -268,6 +268,71 @@ TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and
     }
 }
 
+TEST_CASE("Props in a recording: an implicit GPU prop with its coarse space turning replays bit for bit on a "
+          "device",
+          "[props][replay][gpu]")
+{
+    // The brittle panel finer (2 x 12 x 12 cubes, 468 free nodes) and ten times as strong, stepped implicitly
+    // (the default) with a held prop's refresh (6): its solves add the coarse correction, built again after
+    // each crack and turned before each step (measured: 30 links broken, 4 builds, 12 turns, 120 coarse
+    // unknowns at the end); the replay's rebuilds and turns read the same floats, so it ends on the same
+    // state.
+    gpu::ComputeDeviceProvider devices;
+    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e8;
+    material.mPoissonRatio = 0.2;
+    material.mTensileStrength *= 10.0;
+    fem::TetSolverSettings settings;
+    settings.mGravity = Vec3::Zero();
+    settings.mFactorRefreshIterations = 6;
+    FemPropSettings on_gpu;
+    on_gpu.mBackend = EFemBackend::Gpu;
+    FemProp panel =
+        FemProp::Create(&devices, test::WallPanelMesh({2, 12, 12}), material, settings, on_gpu).Get();
+    if (panel.GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << panel.GetFallbackReason());
+        return;
+    }
+    std::vector<int> base;
+    for (int node = 0; node < panel.GetNodeCount(); ++node)
+        if (panel.GetGpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
+            base.push_back(node);
+    for (int node : base)
+        REQUIRE(panel.SetNodeFixed(node, true).IsValid());
+
+    const std::filesystem::path path = common::ScratchDirectory() / "props_gpu_implicit.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
+    HitTwice(fixture, *props);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const FemProp& live = *props->GetProp(wall);
+    std::vector<Vec3> live_positions;
+    live.ReadPositions(live_positions);
+    INFO("live: " << live.GetBrokenLinkCount() << " links broken, "
+                  << live.GetGpuSolver()->GetCoarseUnknowns() << " coarse unknowns, "
+                  << live.GetGpuSolver()->GetCoarseSpaceBuilds() << " builds, "
+                  << live.GetGpuSolver()->GetCoarseSpaceTurns() << " turns");
+    REQUIRE(live.GetGpuSolver()->GetCoarseUnknowns() > 0);
+    REQUIRE(live.GetGpuSolver()->GetCoarseSpaceTurns() > 0);
+
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    gpu::ComputeDeviceProvider replay_devices;
+    const std::vector<ReplayedProp> replayed = ReplayProps(replay, &replay_devices).Get();
+    REQUIRE(replayed.size() == 1u);
+    REQUIRE(replayed[0].mProp.GetBackend() == EFemBackend::Gpu);
+    std::vector<Vec3> positions;
+    replayed[0].mProp.ReadPositions(positions);
+    CHECK(positions == live_positions);
+    CHECK(replayed[0].mProp.GetElementNodes() == live.GetElementNodes());
+    CHECK(replayed[0].mProp.GetGpuSolver()->GetCoarseSpaceTurns() ==
+          live.GetGpuSolver()->GetCoarseSpaceTurns());
+}
+
 TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so live and replay agree; a stepped "
           "solver moved to the GPU is refused",
           "[props][replay][gpu]")
