@@ -563,11 +563,12 @@ void GpuTetSolver::RefreshCoarseSpace(double inDeltaTime)
     std::vector<std::uint8_t> free_nodes(mInverseMasses.size());
     for (std::size_t node = 0; node < free_nodes.size(); ++node)
         free_nodes[node] = mInverseMasses[node] > 0.0 ? 1 : 0;
-    const bool follow_turns = mSettings.mFactorRefreshIterations > 0;
+    // intent: turned with its aggregates once a solve since the last build or turn took more iterations than
+    // mFactorRefreshIterations (the default 0: after any solve, i.e. before every step but the first)
+    const bool turn = mLongestSolve > mSettings.mFactorRefreshIterations;
     if (inDeltaTime == mCoarseTimeStep && mElementNodes == mCoarseElementNodes && free_nodes == mCoarseFree)
     {
-        // intent: the built space turned with its aggregates once a solve has become long (a bent prop)
-        if (follow_turns && mLongestSolve > mSettings.mFactorRefreshIterations)
+        if (turn)
             TurnCoarseSpace();
         return;
     }
@@ -591,10 +592,10 @@ void GpuTetSolver::RefreshCoarseSpace(double inDeltaTime)
     mCoarseElementNodes = mElementNodes;
     mCoarseFree = std::move(free_nodes);
     mCoarseTimeStep = inDeltaTime;
-    mLongestSolve = 0;
     ++mCoarseBuilds;
-    if (made && follow_turns)
+    if (made && turn)
         TurnCoarseSpace(); // a prop bent before its cracks is turned at once
+    mLongestSolve = 0;
 }
 
 void GpuTetSolver::TurnCoarseSpace()

@@ -22,7 +22,8 @@ enum class EImplicitPreconditioner : std::uint8_t
     /// free to move). On the GPU (gpu::GpuTetSolver), whose solves cannot run sequential triangular solves,
     /// the rest system enters instead through a coarse correction on the rigid modes of node aggregates
     /// (TetCoarseSpace), built on the first implicit step and after each crack, anchor or time-step change
-    /// (and, with mFactorRefreshIterations, turned with its aggregates).
+    /// and turned with its aggregates before a step that follows a solve longer than mFactorRefreshIterations
+    /// (the default 0: every step but the first).
     RestFactorization,
     /// Block Jacobi plus a coarse correction on the six rigid modes: no setup and no memory, but the
     /// iteration count grows with the stiffness and the mesh size (hundreds for steel). On the GPU, block

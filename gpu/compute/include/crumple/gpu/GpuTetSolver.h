@@ -63,11 +63,12 @@ class GpuImplicitStep; // private (src/GpuImplicitStep.h)
 /// TetSolverSettings::mPreconditioner RestFactorization (the default), a coarse correction on the rigid modes
 /// of node aggregates from the rest system (fem::TetCoarseSpace, rebuilt on the host after a crack, an anchor
 /// or a time-step change; none for a prop of fewer than 12 aggregates: GetCoarseUnknowns). The CPU's factored
-/// rest system needs sequential triangular solves; mFactorRefreshIterations > 0 here turns the coarse space
-/// with its aggregates (their rotations from the positions read back) before a step that follows a solve
-/// longer than that, as the CPU refreshes its factor at the element frames. The scalars stay on the GPU,
-/// read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th (GpuImplicitStep). A
-/// breakable prop runs the fracture passes after each implicit step, as after a sub-step.
+/// rest system needs sequential triangular solves; here the coarse space is turned with its aggregates (their
+/// rotations from the positions read back) before a step that follows a solve longer than
+/// mFactorRefreshIterations, which with the default 0 is every step but the first. The scalars stay on the
+/// GPU, read back once per Newton iteration and at CG iterations 1, 2, 4, 8, then every 8th
+/// (GpuImplicitStep). A breakable prop runs the fracture passes after each implicit step, as after a
+/// sub-step.
 ///
 /// Plasticity as the CPU's (von Mises, radial return at the creep rate, capped): a plastic-strain buffer the
 /// force and stress passes subtract, and a flow pass after each sub-step or implicit step, before fracture;
@@ -178,8 +179,8 @@ public:
     /// Coarse spaces built so far (on the host, at rest): on the first implicit step and after a crack, an
     /// anchor or a new time step
     int GetCoarseSpaceBuilds() const { return mCoarseBuilds; }
-    /// Times the coarse space was turned with its aggregates (TetSolverSettings::mFactorRefreshIterations >
-    /// 0: before a step that follows a solve longer than that, and after each build)
+    /// Times the coarse space was turned with its aggregates: before a step that follows a solve longer than
+    /// TetSolverSettings::mFactorRefreshIterations (the default 0: every step but the first)
     int GetCoarseSpaceTurns() const { return mCoarseTurns; }
     /// The device this solver runs on
     const ComputeDevice& GetDevice() const { return *mDevice; }
@@ -214,9 +215,8 @@ private:
     // An input changed: wake up.
     void InputChanged();
     // The implicit solves' coarse space built anew (at rest) when the connectivity, the anchors or the step
-    // inDeltaTime (s) changed since it was built; with mFactorRefreshIterations > 0 turned with its
-    // aggregates after a build and when a solve since took more iterations than that (none wanted:
-    // fem::EImplicitPreconditioner::BlockJacobi).
+    // inDeltaTime (s) changed since it was built, and turned with its aggregates when a solve since took more
+    // iterations than mFactorRefreshIterations (none wanted: fem::EImplicitPreconditioner::BlockJacobi).
     void RefreshCoarseSpace(double inDeltaTime);
     // Turns the coarse space's aggregates to their nodes' current positions (a readback): each aggregate's
     // rotation from its rest offsets (the polar factor of sum (x - c) d^T, Kabsch's).
