@@ -90,7 +90,7 @@ public:
     /// starts them unturned): each aggregate's modes and coarse system are its built ones turned rigidly.
     void TurnCoarseSpace(std::span<const Mat3> inTurns);
 
-  private:
+private:
     // The step's vectors for inNodes nodes and inElements elements (kept while the counts stay).
     Status Reserve(std::size_t inNodes, std::size_t inElements);
     // a . b into the scalars in inMode (TetDot).
