@@ -331,11 +331,9 @@ TEST_CASE("A piece wedged on two faces converges in tens of sweeps, not at the s
     // Known answer: Coulomb's conditions to 1e-9 of the approach speed. Without subspace steps the solve ends
     // at the bound (the case that made them); with them it converges, and both reach the same velocities.
     const common::WedgedPiece w = common::MakeWedgedPiece();
-    const TwoSolves solves = SolveBothWays(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed);
-    const std::vector<ContactImpulse>& plain = solves.mPlain;
-    const std::vector<ContactImpulse>& j = solves.mStepped;
-    const FrictionSolveStats& crawl = solves.mPlainStats;
-    const FrictionSolveStats& fast = solves.mSteppedStats;
+    // intent: Gauss-Seidel alone and with subspace steps: impulses, then statistics
+    const auto [plain, j, crawl, fast] =
+        SolveBothWays(w.mFence, w.mPiece, w.mContacts, w.mRestitution, w.mClosingSpeed);
     CHECK_FALSE(crawl.mConverged);
     CHECK(crawl.mSweeps == 1000);
     CHECK(fast.mConverged);
@@ -358,11 +356,9 @@ TEST_CASE("The car pressing the held fence settles at a least-squares point in t
     // same states, found after 20 sweeps, misses them by 8.2e-6 m/s and ends the solve. Known answer: the
     // conditions to 1e-6 of the approach speed, both ways, and the same velocities after to that accuracy.
     const common::CarOnHeldFence c = common::MakeCarOnHeldFence();
-    const TwoSolves solves = SolveBothWays(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed);
-    const std::vector<ContactImpulse>& plain = solves.mPlain;
-    const std::vector<ContactImpulse>& j = solves.mStepped;
-    const FrictionSolveStats& crawl = solves.mPlainStats;
-    const FrictionSolveStats& settled = solves.mSteppedStats;
+    // intent: Gauss-Seidel alone and with subspace steps: impulses, then statistics
+    const auto [plain, j, crawl, settled] =
+        SolveBothWays(c.mCar, c.mFence, c.mContacts, c.mRestitution, c.mClosingSpeed);
     CHECK(crawl.mConverged);
     CHECK_FALSE(crawl.mSettled);
     CHECK(crawl.mSweeps > 400);
@@ -390,11 +386,9 @@ TEST_CASE("A piece on four ground contacts, one of which must let go, converges 
     // three then meet the conditions exactly. Known answer: the conditions to 1e-9 of the approach speed, the
     // fourth contact idle, and Gauss-Seidel's velocities.
     const common::PieceOnGround c = common::MakePieceOnGround();
-    const TwoSolves solves = SolveBothWays(c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed);
-    const std::vector<ContactImpulse>& plain = solves.mPlain;
-    const std::vector<ContactImpulse>& j = solves.mStepped;
-    const FrictionSolveStats& crawl = solves.mPlainStats;
-    const FrictionSolveStats& fast = solves.mSteppedStats;
+    // intent: Gauss-Seidel alone and with subspace steps: impulses, then statistics
+    const auto [plain, j, crawl, fast] =
+        SolveBothWays(c.mGround, c.mPiece, c.mContacts, c.mRestitution, c.mClosingSpeed);
     CHECK(crawl.mConverged);
     CHECK(crawl.mSweeps > 500);
     CHECK(fast.mConverged);

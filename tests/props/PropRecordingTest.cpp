@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -202,46 +203,81 @@ TEST_CASE("Props in a recording: deferred dents hand the props the same hits at 
 }
 
 #if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+namespace
+{
+
+// A brittle panel of inCells cubes on the GPU (E = 100 MPa, nu = 0.2, inStrengthScale times the brittle
+// material's tensile strength), anchored along its base, hit twice by the car while recorded to inFile.
+// Members in the order they must outlive each other: the device, the world, the props.
+struct RecordedGpuPanel
+{
+    std::unique_ptr<gpu::ComputeDeviceProvider> mDevices = std::make_unique<gpu::ComputeDeviceProvider>();
+    std::unique_ptr<common::WorldFixture> mFixture = std::make_unique<common::WorldFixture>();
+    std::unique_ptr<PropWorld> mProps;
+    PropId mWall;
+    Replay mReplay;
+
+    const FemProp& Live() const { return *mProps->GetProp(mWall); }
+};
+
+// Empty (and a warning) when no compute device is there.
+std::optional<RecordedGpuPanel> RecordGpuPanel(const std::array<int, 3>& inCells, double inStrengthScale,
+                                               const fem::TetSolverSettings& inSettings, const char* inFile)
+{
+    RecordedGpuPanel run;
+    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
+    material.mYoungsModulus = 1.0e8;
+    material.mPoissonRatio = 0.2;
+    material.mTensileStrength *= inStrengthScale;
+    FemPropSettings on_gpu;
+    on_gpu.mBackend = EFemBackend::Gpu;
+    FemProp panel =
+        FemProp::Create(run.mDevices.get(), test::WallPanelMesh(inCells), material, inSettings, on_gpu).Get();
+    if (panel.GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << panel.GetFallbackReason());
+        return std::nullopt;
+    }
+    std::vector<int> base;
+    for (int node = 0; node < panel.GetNodeCount(); ++node)
+        if (panel.GetGpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
+            base.push_back(node);
+    for (int node : base)
+        REQUIRE(panel.SetNodeFixed(node, true).IsValid());
+
+    const std::filesystem::path path = common::ScratchDirectory() / inFile;
+    std::unique_ptr<DamageRecorder> recorder =
+        std::move(DamageRecorder::Create(path, run.mFixture->mWorld).Get());
+    run.mProps = PropWorld::Create(run.mFixture->mWorld).Get();
+    REQUIRE(run.mProps->AttachRecorder(recorder.get()).IsValid());
+    run.mWall = run.mProps->AddProp(run.mFixture->mWall, std::move(panel)).Get();
+    HitTwice(*run.mFixture, *run.mProps);
+    REQUIRE(run.mProps->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    run.mReplay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    return run;
+}
+
+} // namespace
+
 TEST_CASE("Props in a recording: a GPU prop replays bit for bit on a device, and on the CPU without one",
           "[props][replay][gpu]")
 {
     // The brittle panel on the GPU: symplectic Euler (the GPU's integrator), soft enough for a few sub-steps
     // per step, weak enough that the car's hits crack it.
-    gpu::ComputeDeviceProvider devices;
-    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e8;
-    material.mPoissonRatio = 0.2;
-    material.mTensileStrength *= 0.05;
     fem::TetSolverSettings settings;
     settings.mIntegrator = fem::EIntegrator::SymplecticEuler;
     settings.mGravity = Vec3::Zero();
-    FemPropSettings on_gpu;
-    on_gpu.mBackend = EFemBackend::Gpu;
-    FemProp panel = FemProp::Create(&devices, test::WallPanelMesh({1, 6, 6}), material, settings, on_gpu).Get();
-    if (panel.GetBackend() != EFemBackend::Gpu)
-    {
-        WARN("skipped: no compute device: " << panel.GetFallbackReason());
+    const std::optional<RecordedGpuPanel> run =
+        RecordGpuPanel({1, 6, 6}, 0.05, settings, "props_gpu.crumple");
+    if (!run)
         return;
-    }
-    for (int node = 0; node < panel.GetNodeCount(); ++node)
-        if (panel.GetGpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
-            REQUIRE(panel.SetNodeFixed(node, true).IsValid());
-
-    const std::filesystem::path path = common::ScratchDirectory() / "props_gpu.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
-    const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
-    HitTwice(fixture, *props);
-    REQUIRE(props->AttachRecorder(nullptr).IsValid());
-    REQUIRE(recorder->Close().IsValid());
-    const FemProp& live = *props->GetProp(wall);
+    const FemProp& live = run->Live();
     std::vector<Vec3> live_positions;
     live.ReadPositions(live_positions);
     REQUIRE(live.GetBrokenLinkCount() > 0); // the run really cracked the prop
 
-    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    const Replay& replay = run->mReplay;
     // On a device: the same floats, the same cracks, the same pieces.
     {
         // A device of its own, as a replay tool makes (nothing shared with the live run's context).
@@ -274,43 +310,17 @@ TEST_CASE("Props in a recording: an implicit GPU prop with its coarse space turn
 {
     // The brittle panel finer (2 x 12 x 12 cubes, 468 free nodes) and ten times as strong, stepped implicitly
     // (the default) with a held prop's refresh (6): its solves add the coarse correction, built again after
-    // each crack and turned before each step (measured: 30 links broken, 4 builds, 12 turns, 120 coarse
+    // each crack and turned before each step (measured: 30 links broken, 4 builds, 11 turns, 120 coarse
     // unknowns at the end); the replay's rebuilds and turns read the same floats, so it ends on the same
     // state.
-    gpu::ComputeDeviceProvider devices;
-    fem::FemMaterialSettings material = common::BrittleMaterial(fem::EFractureMode::CrackPlane);
-    material.mYoungsModulus = 1.0e8;
-    material.mPoissonRatio = 0.2;
-    material.mTensileStrength *= 10.0;
     fem::TetSolverSettings settings;
     settings.mGravity = Vec3::Zero();
     settings.mFactorRefreshIterations = 6;
-    FemPropSettings on_gpu;
-    on_gpu.mBackend = EFemBackend::Gpu;
-    FemProp panel =
-        FemProp::Create(&devices, test::WallPanelMesh({2, 12, 12}), material, settings, on_gpu).Get();
-    if (panel.GetBackend() != EFemBackend::Gpu)
-    {
-        WARN("skipped: no compute device: " << panel.GetFallbackReason());
+    const std::optional<RecordedGpuPanel> run =
+        RecordGpuPanel({2, 12, 12}, 10.0, settings, "props_gpu_implicit.crumple");
+    if (!run)
         return;
-    }
-    std::vector<int> base;
-    for (int node = 0; node < panel.GetNodeCount(); ++node)
-        if (panel.GetGpuSolver()->GetMesh().GetRestPositions()[static_cast<std::size_t>(node)].z() < -0.99)
-            base.push_back(node);
-    for (int node : base)
-        REQUIRE(panel.SetNodeFixed(node, true).IsValid());
-
-    const std::filesystem::path path = common::ScratchDirectory() / "props_gpu_implicit.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
-    const PropId wall = props->AddProp(fixture.mWall, std::move(panel)).Get();
-    HitTwice(fixture, *props);
-    REQUIRE(props->AttachRecorder(nullptr).IsValid());
-    REQUIRE(recorder->Close().IsValid());
-    const FemProp& live = *props->GetProp(wall);
+    const FemProp& live = run->Live();
     std::vector<Vec3> live_positions;
     live.ReadPositions(live_positions);
     INFO("live: " << live.GetBrokenLinkCount() << " links broken, "
@@ -320,9 +330,8 @@ TEST_CASE("Props in a recording: an implicit GPU prop with its coarse space turn
     REQUIRE(live.GetGpuSolver()->GetCoarseUnknowns() > 0);
     REQUIRE(live.GetGpuSolver()->GetCoarseSpaceTurns() > 0);
 
-    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
     gpu::ComputeDeviceProvider replay_devices;
-    const std::vector<ReplayedProp> replayed = ReplayProps(replay, &replay_devices).Get();
+    const std::vector<ReplayedProp> replayed = ReplayProps(run->mReplay, &replay_devices).Get();
     REQUIRE(replayed.size() == 1u);
     REQUIRE(replayed[0].mProp.GetBackend() == EFemBackend::Gpu);
     std::vector<Vec3> positions;
