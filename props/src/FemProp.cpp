@@ -125,6 +125,20 @@ Status FemProp::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
     return mCpu->SetNodesFixed(inNodes, inFixed);
 }
 
+Status FemProp::SetNodesLeft(std::span<const int> inNodes)
+{
+    if (Status fixed = SetNodesFixed(inNodes, true); fixed.HasError())
+        return fixed; // checks every node before it fixes any
+    for (int node : inNodes)
+    {
+        const auto index = static_cast<std::size_t>(node);
+        if (index >= mLeft.size())
+            mLeft.resize(index + 1, 0);
+        mLeft[index] = 1;
+    }
+    return Status::Ok();
+}
+
 Status FemProp::ApplyImpulse(int inNode, const Vec3& inImpulse)
 {
     CRUMPLE_PROPS_ON_GPU(ApplyImpulse(inNode, inImpulse))
@@ -186,7 +200,26 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     const double limit = fem::TetSolver::cMaxStateMagnitude;
 #endif
     const ContactSpread spread{.mRadius = mContactSpread, .mMasses = GetMasses(), .mInverseMasses = inverse_masses};
-    Result<std::vector<NodalImpulse>> impulses = CollisionNodalImpulses(inCollision, inPropBody, GetElementNodes(), positions, spread);
+    // intent: the elements still the prop's; a piece that left keeps its elements, fixed where it broke off
+    const std::vector<fem::TetIndices>& all = GetElementNodes();
+    std::vector<fem::TetIndices> kept;
+    if (!mLeft.empty())
+    {
+        const auto left = [&](int inNode) {
+            return static_cast<std::size_t>(inNode) < mLeft.size() &&
+                   mLeft[static_cast<std::size_t>(inNode)] != 0;
+        };
+        kept.reserve(all.size());
+        for (const fem::TetIndices& element : all)
+            if (std::none_of(element.begin(), element.end(), left))
+                kept.push_back(element);
+        if (kept.empty())
+            return Status::Ok();
+    }
+    const std::span<const fem::TetIndices> elements =
+        mLeft.empty() ? std::span<const fem::TetIndices>(all) : std::span<const fem::TetIndices>(kept);
+    Result<std::vector<NodalImpulse>> impulses =
+        CollisionNodalImpulses(inCollision, inPropBody, elements, positions, spread);
     if (impulses.HasError())
         return impulses.GetError();
     // intent: all or nothing: every struck node's velocity checked before any impulse lands (the GPU's floats)

@@ -449,7 +449,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                     return MakeError(EError::CorruptData, where + "a loose piece's node is not a node of its prop");
                 node = static_cast<int>(value);
             }
-            if (Status fixed = solver.SetNodesFixed(nodes, true); fixed.HasError())
+            if (Status fixed = solver.SetNodesLeft(nodes); fixed.HasError())
                 return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
         }
         // Other tags belong to other layers.

@@ -387,7 +387,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     {
         Prop& prop = mProps[piece.mProp.mValue];
         ++prop.mPiecesTaken;
-        (void)prop.mProp.SetNodesFixed(piece.mNodes, true); // the prop's own fragment nodes: cannot be refused
+        (void)prop.mProp.SetNodesLeft(piece.mNodes); // the prop's own fragment nodes: cannot be refused
         for (int node : piece.mNodes)
             prop.mTaken[static_cast<std::size_t>(node)] = 1;
     }

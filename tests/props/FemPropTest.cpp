@@ -274,3 +274,97 @@ TEST_CASE("MakeHeldFemProp on the GPU: anchored as on the CPU, a struck wall mov
     REQUIRE(motion > 1.0e-3);
     CHECK(gap < 1.0e-3 * motion); // float against double, as the bar above
 }
+
+namespace
+{
+
+// A bar and, overlapping its top, a second bar raised 0.13 m and shifted 0.05 m along x: the second stands
+// for a piece that broke off the first and froze where it was when it left (its nodes fixed), as a piece
+// handed over does. Nodes of the bar first, then the piece's.
+struct BarAndFrozenPiece
+{
+    TetMesh mMesh;
+    std::vector<int> mPieceNodes;
+};
+
+BarAndFrozenPiece MakeBarAndFrozenPiece()
+{
+    const TetMesh bar = Bar();
+    std::vector<Vec3> positions = bar.GetRestPositions();
+    std::vector<TetIndices> tets = bar.GetTets();
+    const int offset = bar.GetNodeCount();
+    std::vector<int> piece;
+    for (int node = 0; node < bar.GetNodeCount(); ++node)
+    {
+        positions.push_back(bar.GetRestPositions()[static_cast<std::size_t>(node)] + Vec3(0.05, 0.0, 0.13));
+        piece.push_back(offset + node);
+    }
+    for (TetIndices tet : bar.GetTets())
+    {
+        for (int& node : tet)
+            node += offset;
+        tets.push_back(tet);
+    }
+    return {TetMesh::Create(std::move(positions), std::move(tets)).Get(), std::move(piece)};
+}
+
+} // namespace
+
+TEST_CASE("FemProp: a collision lands on what is left of the prop, not on a piece that left it", "[props]")
+{
+    // A contact on the bar's top face, which lies strictly inside an element of the frozen piece: its best
+    // element is the piece's, and before SetNodesLeft the impulse vanished into the piece's fixed nodes.
+    plugin::Collision collision;
+    collision.mBodyA = plugin::BodyId{2};
+    collision.mBodyB = plugin::BodyId{5};
+    plugin::CollisionContact contact;
+    contact.mLocalPointOnA = Vec3(0.533, 0.067, 0.2);
+    contact.mLocalNormalOnA = Vec3(0.0, 0.0, -1.0);
+    contact.mImpulse = 2.0;
+    collision.mContacts.push_back(contact);
+    const BarAndFrozenPiece scene = MakeBarAndFrozenPiece();
+    const auto bar_momentum = [&](const FemProp& inProp)
+    {
+        std::vector<Vec3> velocities;
+        inProp.ReadVelocities(velocities);
+        Vec3 momentum = Vec3::Zero();
+        for (std::size_t node = 0; node < static_cast<std::size_t>(scene.mPieceNodes.front()); ++node)
+            momentum += inProp.GetMasses()[node] * velocities[node];
+        return momentum;
+    };
+
+    Result<FemProp> fixed_only = FemProp::Create(nullptr, scene.mMesh, Soft(), Explicit(), FemPropSettings{});
+    REQUIRE(fixed_only.IsValid());
+    REQUIRE(fixed_only.Get().SetNodesFixed(scene.mPieceNodes, true).IsValid());
+    REQUIRE(fixed_only.Get().ApplyCollision(collision, plugin::BodyId{2}).IsValid());
+    CHECK(bar_momentum(fixed_only.Get()).norm() < 1.0e-12); // the old way: lost in the piece's fixed nodes
+
+    Result<FemProp> left = FemProp::Create(nullptr, scene.mMesh, Soft(), Explicit(), FemPropSettings{});
+    REQUIRE(left.IsValid());
+    REQUIRE(left.Get().SetNodesLeft(scene.mPieceNodes).IsValid());
+    std::vector<NodalImpulse> applied;
+    REQUIRE(left.Get().ApplyCollision(collision, plugin::BodyId{2}, &applied).IsValid());
+    // The bar takes the whole impulse, on its own nodes, and the piece's nodes stay fixed.
+    CHECK((bar_momentum(left.Get()) - Vec3(0.0, 0.0, -2.0)).norm() < 1.0e-12);
+    for (const NodalImpulse& impulse : applied)
+        CHECK(impulse.mNode < scene.mPieceNodes.front());
+    CHECK(left.Get().GetInverseMasses()[static_cast<std::size_t>(scene.mPieceNodes.back())] == 0.0);
+
+    SECTION("a prop all of whose material left takes nothing, and a node out of range changes nothing")
+    {
+        std::vector<int> all(static_cast<std::size_t>(scene.mMesh.GetNodeCount()));
+        for (std::size_t node = 0; node < all.size(); ++node)
+            all[node] = static_cast<int>(node);
+        Result<FemProp> gone = FemProp::Create(nullptr, scene.mMesh, Soft(), Explicit(), FemPropSettings{});
+        REQUIRE(gone.IsValid());
+        CHECK(gone.Get().SetNodesLeft(std::vector<int>{0, scene.mMesh.GetNodeCount()}).HasError());
+        CHECK(gone.Get().GetInverseMasses()[0] > 0.0); // refused whole: node 0 not fixed
+        std::vector<NodalImpulse> taken;
+        REQUIRE(gone.Get().ApplyCollision(collision, plugin::BodyId{2}, &taken).IsValid());
+        CHECK(taken.size() == 4u); // nothing left yet: the collision lands
+        REQUIRE(gone.Get().SetNodesLeft(all).IsValid());
+        std::vector<NodalImpulse> none;
+        REQUIRE(gone.Get().ApplyCollision(collision, plugin::BodyId{2}, &none).IsValid());
+        CHECK(none.empty());
+    }
+}

@@ -80,6 +80,14 @@ public:
     /// As fem::TetSolver / GpuTetSolver.
     Status SetNodeFixed(int inNode, bool inFixed);
     Status SetNodesFixed(std::span<const int> inNodes, bool inFixed);
+    /// The nodes of a piece that left the prop (handed over as a body of its own,
+    /// PropWorld::TakeLooseFragments): fixed where they are, and from now on no collision lands on an element
+    /// with one of them (ApplyCollision leaves those elements out). The piece's elements stay in the mesh,
+    /// fixed where it broke off, and overlap what is left of the prop there: a contact with the rest found
+    /// them as its nearest elements, and its impulse vanished into their fixed nodes (the racing fence's held
+    /// body then met the car at rest, as a wall, step after step). Refused, changing nothing, for a node out of
+    /// range.
+    Status SetNodesLeft(std::span<const int> inNodes);
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     Status SetExternalForce(int inNode, const Vec3& inForce);
     Status SetGravity(const Vec3& inGravity);
@@ -96,9 +104,10 @@ public:
     /// Refused, changing nothing, for a bad radius.
     Status SetContactSpread(double inRadius);
     double GetContactSpread() const { return mContactSpread; }
-    /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses, spread by GetContactSpread())
-    /// to the prop whose body is inPropBody; all or nothing. outApplied (may be null) receives the nodal
-    /// impulses applied (appended).
+    /// Applies a dispatched collision's contact impulses (CollisionNodalImpulses, spread by
+    /// GetContactSpread()) to the prop whose body is inPropBody; all or nothing. Elements of pieces that left
+    /// (SetNodesLeft) take none; a prop with nothing else left takes nothing. outApplied (may be null)
+    /// receives the nodal impulses applied (appended).
     Status ApplyCollision(const plugin::Collision& inCollision, plugin::BodyId inPropBody,
                           std::vector<NodalImpulse>* outApplied = nullptr);
     /// The pieces now (fem::TetFragment), as the CPU solver reports them
@@ -141,6 +150,8 @@ private:
     std::unique_ptr<gpu::GpuTetSolver, GpuSolverDeleter> mGpu; // incomplete here: a CPU-only build never defines it
     std::string mFallbackReason;
     double mContactSpread = 0.0; // m, SetContactSpread
+    // Per node, sized to the highest node left: 1 for a node of a piece that left (SetNodesLeft)
+    std::vector<std::uint8_t> mLeft;
 };
 
 } // namespace crumple::props
