@@ -124,6 +124,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     s.mVehicle = std::make_unique<btRaycastVehicle>(tuning, s.mCar.get(), s.mRaycaster.get());
     s.mVehicle->setCoordinateSystem(1, 2, 0); // right = y, up = z, forward = x
     s.mWorld->addAction(s.mVehicle.get());
+    s.mWheelBase = 1.4 * half.x();
     for (int i = 0; i < 4; ++i)
     {
         const bool front = i < 2;
@@ -215,6 +216,10 @@ Status BulletRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
     const double speed = static_cast<double>(mVehicle->getCurrentSpeedKmHour()) / 3.6;
     for (int wheel = 2; wheel < 4; ++wheel)
         mVehicle->applyEngineForce(speed < mSettings.mSpeed ? btScalar(6000) : btScalar(0), wheel);
+    // Steer: back to the course line (Bullet's steering value turns a wheel about the up axis, to the left)
+    const double steering = RaceCourse::SteeringAngle(GetCarPose(), mWheelBase);
+    for (int wheel = 0; wheel < 2; ++wheel)
+        mVehicle->setSteeringValue(btScalar(steering), wheel);
     mFrameCrumpleMs = 0.0;
     for (int sub = 0; sub < 4; ++sub)
     {

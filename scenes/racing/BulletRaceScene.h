@@ -63,6 +63,7 @@ private:
     std::unique_ptr<btBoxShape> mParkedShape;
     std::unique_ptr<btDefaultMotionState> mParkedMotion;
     std::unique_ptr<btRigidBody> mParked;
+    double mWheelBase = 0.0; ///< m, for the driver's steering
 };
 
 } // namespace crumple::samples

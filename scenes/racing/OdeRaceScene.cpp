@@ -144,6 +144,7 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
     dBodySetPosition(s.mChassis, 0, 0, ride_height);
     dBodySetAutoDisableFlag(s.mChassis, 0);
     dGeomSetBody(dCreateBox(s.mSpace, 2 * half.x(), 2 * half.y(), 1.6 * half.z()), s.mChassis);
+    s.mWheelBase = 1.4 * half.x();
     for (int i = 0; i < 4; ++i)
     {
         const bool front = i < 2;
@@ -229,6 +230,17 @@ Status OdeRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
     {
         dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamVel2, -mSettings.mSpeed / cWheelRadius);
         dJointSetHinge2Param(mHinges[static_cast<std::size_t>(i)], dParamFMax2, 1500.0);
+    }
+    // Steer: back to the course line. The front wheels' steering angle (the joint's angle 1, about the up
+    // axis; it grows as the wheel turns to the right, the opposite of the course's angle) is held by its two
+    // stops; ODE ignores a low stop above the high one, so the stop the angle moves towards goes first.
+    const double angle = -RaceCourse::SteeringAngle(GetCarPose(), mWheelBase);
+    for (int i = 0; i < 2; ++i)
+    {
+        dJointID hinge = mHinges[static_cast<std::size_t>(i)];
+        const bool up = angle > dJointGetHinge2Param(hinge, dParamHiStop);
+        dJointSetHinge2Param(hinge, up ? dParamHiStop : dParamLoStop, angle);
+        dJointSetHinge2Param(hinge, up ? dParamLoStop : dParamHiStop, angle);
     }
     mFrameCrumpleMs = 0.0;
     for (int sub = 0; sub < 4; ++sub)

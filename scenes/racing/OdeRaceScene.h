@@ -44,6 +44,7 @@ private:
     std::vector<dBodyID> mHeldBodies; ///< Held prop bodies (the fence), put back at their pose every step
     dBodyID mChassis = nullptr;
     dBodyID mParked = nullptr;
+    double mWheelBase = 0.0; ///< m, for the driver's steering
     std::array<dJointID, 4> mHinges{};
 };
 

@@ -9,9 +9,11 @@
 #include "SurfaceFolds.h"
 #include "ThreadCpuTime.h"
 
+#include <crumple/base/Version.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/ffd/FlipFlatEdges.h>
-#include <crumple/base/Version.h>
+#include <crumple/ffd/RefineLongEdges.h>
+#include <crumple/plugin/DeformableObjectSettings.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +60,18 @@ Transform RaceCourse::Fence()
     // A quarter turn about z: fence x -> world y (from -2 to 2 m), fence y (its thickness) -> world -x, so
     // its face is at x = 45 m; 1 cm off the ground.
     return {Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitZ()).toRotationMatrix(), Vec3(45.1, -2.0, 0.01)};
+}
+
+double RaceCourse::SteeringAngle(const Transform& inCarPose, double inWheelBase)
+{
+    // Pure pursuit: the arc through the car's rear axle and the look-ahead point has curvature 2 sin(a) / L
+    // (a the point's bearing from the heading); a front wheel on it turns by atan(wheel base x curvature).
+    constexpr double cLookAhead = 12.0; // m: about 0.6 s at the course's 20 m/s
+    const Vec3 forward = inCarPose.mRotation.col(0);
+    const double heading = std::atan2(forward.y(), forward.x());
+    const double bearing = std::atan2(-inCarPose.mTranslation.y(), cLookAhead) - heading;
+    const double angle = std::atan(2.0 * inWheelBase * std::sin(bearing) / cLookAhead);
+    return std::clamp(angle, -cMaxSteering, cMaxSteering);
 }
 
 int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const char* inDescription, RaceOptions& outOptions)
@@ -137,13 +151,24 @@ ffd::TriangleMesh RaceCarMesh()
     if (loaded)
     {
         // The file's caps out (flat parts Delaunay, caps flipped within a millimetre or split): with them a
-        // session's dents turned 78 (Bullet) and 135 (ODE) triangles over, every one a cap. No long-edge
-        // refinement, which would double the triangles a dent updates.
+        // session's dents turned 78 (Bullet) and 135 (ODE) triangles over, every one a cap. Edges longer than
+        // a dent's pocket walls (they fade over at least two control spacings) cut in two: a triangle wider
+        // than the wall is drawn flat across a bend its corners cannot follow, and one of the floor's, 0.36 m
+        // across, turned over when the ODE car hit the parked car's corner (2 triangles; none with edges of
+        // at most 0.3 m, 0.4 m left them). Not down to one spacing as crumple-crash's re-cut: that doubles
+        // the triangles a dent updates (0.3 m: 94,257 -> 117,947 triangles, the sessions' damage frames as
+        // before).
         ffd::TriangleMesh mesh = loaded.Get();
         std::vector<std::vector<std::uint32_t>> no_parts;
-        if (ffd::FlipFlatEdges(mesh) && RemoveCaps(mesh, no_parts, cCarCapDeviation))
-            return mesh;
-        std::printf("note: the car's caps could not be taken out; using the mesh as the file has it\n");
+        const double max_edge = 2.0 * DeformableObjectSettings().mFittedControlSpacing;
+        if (ffd::FlipFlatEdges(mesh))
+        {
+            Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(mesh, max_edge);
+            if (refined && ffd::FlipFlatEdges(refined.Get().mMesh) &&
+                RemoveCaps(refined.Get().mMesh, no_parts, cCarCapDeviation))
+                return std::move(refined.Get().mMesh);
+        }
+        std::printf("note: the car's mesh could not be re-cut; using the mesh as the file has it\n");
         return std::move(loaded).Get();
     }
     std::printf("note: %s; using a procedural box car\n", loaded.GetError().mMessage.c_str());

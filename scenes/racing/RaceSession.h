@@ -37,6 +37,14 @@ struct RaceCourse
     /// each end, two rails (RaceFence)
     static fem::TetFenceSettings FenceSettings();
     static Transform Fence(); ///< Its frame: the fence's x along world y, its face at x = 45 m
+    /// The driver's steering angle (rad, about the car's up axis, positive to the left, at most
+    /// cMaxSteering): pure pursuit of the course line y = 0 (a point on it a look-ahead ahead of the car), so
+    /// that a car knocked off its line by a barrier, the fence or a piece comes back to it instead of the
+    /// course's later events depending on where the last knock sent it.
+    /// @param inCarPose   the car's pose (its x forward, z up)
+    /// @param inWheelBase between the front and rear axles (m, > 0)
+    static double SteeringAngle(const Transform& inCarPose, double inWheelBase);
+    static constexpr double cMaxSteering = 0.35; ///< rad
 };
 
 class RaceFence;
