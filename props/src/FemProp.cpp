@@ -129,13 +129,14 @@ Status FemProp::SetNodesLeft(std::span<const int> inNodes)
 {
     if (Status fixed = SetNodesFixed(inNodes, true); fixed.HasError())
         return fixed; // checks every node before it fixes any
+    std::vector<std::uint8_t> left(static_cast<std::size_t>(GetNodeCount()), 0);
     for (int node : inNodes)
-    {
-        const auto index = static_cast<std::size_t>(node);
-        if (index >= mLeft.size())
-            mLeft.resize(index + 1, 0);
-        mLeft[index] = 1;
-    }
+        left[static_cast<std::size_t>(node)] = 1;
+    const std::vector<fem::TetIndices>& elements = GetElementNodes();
+    mLeftElements.resize(elements.size(), 0);
+    for (std::size_t element = 0; element < elements.size(); ++element)
+        for (int node : elements[element])
+            mLeftElements[element] |= left[static_cast<std::size_t>(node)];
     return Status::Ok();
 }
 
@@ -203,21 +204,18 @@ Status FemProp::ApplyCollision(const plugin::Collision& inCollision, plugin::Bod
     // intent: the elements still the prop's; a piece that left keeps its elements, fixed where it broke off
     const std::vector<fem::TetIndices>& all = GetElementNodes();
     std::vector<fem::TetIndices> kept;
-    if (!mLeft.empty())
+    if (!mLeftElements.empty())
     {
-        const auto left = [&](int inNode) {
-            return static_cast<std::size_t>(inNode) < mLeft.size() &&
-                   mLeft[static_cast<std::size_t>(inNode)] != 0;
-        };
         kept.reserve(all.size());
-        for (const fem::TetIndices& element : all)
-            if (std::none_of(element.begin(), element.end(), left))
-                kept.push_back(element);
+        for (std::size_t element = 0; element < all.size(); ++element)
+            if (mLeftElements[element] == 0)
+                kept.push_back(all[element]);
         if (kept.empty())
             return Status::Ok();
     }
-    const std::span<const fem::TetIndices> elements =
-        mLeft.empty() ? std::span<const fem::TetIndices>(all) : std::span<const fem::TetIndices>(kept);
+    const std::span<const fem::TetIndices> elements = mLeftElements.empty()
+                                                          ? std::span<const fem::TetIndices>(all)
+                                                          : std::span<const fem::TetIndices>(kept);
     Result<std::vector<NodalImpulse>> impulses =
         CollisionNodalImpulses(inCollision, inPropBody, elements, positions, spread);
     if (impulses.HasError())

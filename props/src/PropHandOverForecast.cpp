@@ -16,9 +16,10 @@ std::vector<std::size_t> PropWorld::LeavingFragments(const Prop& inProp, const s
 {
     // A piece taken before has all its nodes fixed by us: it anchors nothing. The prop is held by a node
     // fixed otherwise; a prop held by none keeps the piece holding group 0 (its body carries it).
-    const auto taken = [&](const fem::TetFragment& inPiece) {
-        const auto node = static_cast<std::size_t>(inPiece.mNodes[0]);
-        return node < inProp.mTaken.size() && inProp.mTaken[node] != 0;
+    const auto taken = [&](const fem::TetFragment& inPiece)
+    {
+        const auto element = static_cast<std::size_t>(inPiece.mElements[0]);
+        return element < inProp.mTakenElements.size() && inProp.mTakenElements[element] != 0;
     };
     const bool held = std::any_of(inFragments.begin(), inFragments.end(),
                                   [&](const fem::TetFragment& inPiece) { return inPiece.mAnchored && !taken(inPiece); });
@@ -52,25 +53,27 @@ void PropWorld::ForecastHandOver(Prop& ioProp)
     forecast.mFragments.clear();
     if (forecast.mHasFragments)
         forecast.mFragments = ioProp.mProp.ComputeFragments();
-    // intent: the shape once the pieces foreseen have left (what TakeLooseFragments then takes: their nodes),
-    // when the game asks for shapes and this one changed
+    // intent: the shape once the pieces foreseen have left (what TakeLooseFragments then takes: their
+    // elements), when the game asks for shapes and this one changed
     forecast.mHasPieces = false;
     forecast.mPieces.clear();
     if (ioProp.mShapeTolerance < 0.0)
         return;
-    forecast.mTaken = ioProp.mTaken;
-    forecast.mTaken.resize(forecast.mPositions.size(), 0);
+    forecast.mTakenElements = ioProp.mTakenElements;
+    forecast.mTakenElements.resize(forecast.mElements.size(), 0);
     forecast.mPiecesTaken = ioProp.mPiecesTaken;
     if (forecast.mHasFragments)
         for (std::size_t f : LeavingFragments(ioProp, forecast.mFragments))
         {
             ++forecast.mPiecesTaken;
-            for (int node : forecast.mFragments[f].mNodes)
-                forecast.mTaken[static_cast<std::size_t>(node)] = 1;
+            for (int element : forecast.mFragments[f].mElements)
+                forecast.mTakenElements[static_cast<std::size_t>(element)] = 1;
         }
     if (forecast.mPiecesTaken == ioProp.mPiecesTaken && !ShapeChanged(ioProp, forecast.mPositions, ioProp.mShapeTolerance))
         return;
-    if (Result<std::vector<std::vector<Vec3>>> pieces = PiecesOf(ioProp, forecast.mTaken, forecast.mPositions, ioProp.mShapeCellSize); pieces)
+    if (Result<std::vector<std::vector<Vec3>>> pieces =
+            PiecesOf(ioProp, forecast.mTakenElements, forecast.mPositions, ioProp.mShapeCellSize);
+        pieces)
     {
         forecast.mHasPieces = true;
         forecast.mPieces = std::move(pieces).Get();
@@ -93,8 +96,10 @@ bool PropWorld::ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositi
 bool PropWorld::ShapeForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
 {
     const HandOverForecast& forecast = inProp.mForecast;
-    return forecast.mHasPieces && forecast.mCellSize == inCellSize && forecast.mPiecesTaken == inProp.mPiecesTaken &&
-           SameTaken(forecast.mTaken, inProp.mTaken) && ForecastHolds(inProp, inPositions, false);
+    return forecast.mHasPieces && forecast.mCellSize == inCellSize &&
+           forecast.mPiecesTaken == inProp.mPiecesTaken &&
+           SameTaken(forecast.mTakenElements, inProp.mTakenElements) &&
+           ForecastHolds(inProp, inPositions, false);
 }
 
 bool PropWorld::SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB)

@@ -317,7 +317,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         const plugin::BodyState* body = mWorld->GetBodyState(prop.mBody);
         if (body == nullptr)
             continue; // its body left the world: nothing of it is in the game's world to hand over
-        prop.mTaken.resize(static_cast<std::size_t>(prop.mProp.GetNodeCount()), 0);
+        prop.mTakenElements.resize(prop.mProp.GetElementNodes().size(), 0);
         // intent: a piece comes loose only when links break or anchors change; the pieces of an unchanged
         // prop (most steps of a swinging fence) are not worked out again
         if (IsSettled(prop))
@@ -388,8 +388,8 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         Prop& prop = mProps[piece.mProp.mValue];
         ++prop.mPiecesTaken;
         (void)prop.mProp.SetNodesLeft(piece.mNodes); // the prop's own fragment nodes: cannot be refused
-        for (int node : piece.mNodes)
-            prop.mTaken[static_cast<std::size_t>(node)] = 1;
+        for (int element : piece.mElements)
+            prop.mTakenElements[static_cast<std::size_t>(element)] = 1;
     }
     // Every prop looked at has handed over all it had loose: settled until links break or anchors change.
     for (Prop& prop : mProps)
@@ -422,20 +422,27 @@ void PropWorld::Settle(Prop& ioProp)
 
 Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize)
 {
-    return PiecesOf(inProp, inProp.mTaken, inPositions, inCellSize);
+    return PiecesOf(inProp, inProp.mTakenElements, inPositions, inCellSize);
+}
+
+std::vector<std::uint8_t> PropWorld::TakenNodes(const Prop& inProp)
+{
+    const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
+    std::vector<std::uint8_t> taken(static_cast<std::size_t>(inProp.mProp.GetNodeCount()), 0);
+    for (std::size_t element = 0; element < inProp.mTakenElements.size() && element < elements.size();
+         ++element)
+        if (inProp.mTakenElements[element] != 0)
+            for (int node : elements[element])
+                taken[static_cast<std::size_t>(node)] = 1;
+    return taken;
 }
 
 Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
                                                            std::span<const Vec3> inPositions, double inCellSize)
 {
     const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
-    // An element of a piece handed over has all its nodes taken: its first one tells.
-    std::vector<std::uint8_t> left_out(elements.size(), 0);
-    for (std::size_t element = 0; element < elements.size(); ++element)
-    {
-        const auto node = static_cast<std::size_t>(elements[element][0]);
-        left_out[element] = node < inTaken.size() ? inTaken[node] : 0;
-    }
+    std::vector<std::uint8_t> left_out(inTaken.begin(), inTaken.end());
+    left_out.resize(elements.size(), 0);
     return PropCollisionPieces(inPositions, elements, left_out, inCellSize);
 }
 
@@ -514,13 +521,14 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     if (cpu == nullptr)
         ioProp.mProp.ReadVelocities(read_back);
     const std::vector<Vec3>& velocities = cpu != nullptr ? cpu->GetVelocities() : read_back;
+    const std::vector<std::uint8_t> taken = TakenNodes(ioProp);
     Vec3 sum = Vec3::Zero();
     Vec3 impulse = Vec3::Zero();
     double weight = 0.0;
     for (const NodalImpulse& hit : ioProp.mStruck)
     {
         const auto node = static_cast<std::size_t>(hit.mNode);
-        if (node < ioProp.mTaken.size() && ioProp.mTaken[node] != 0)
+        if (taken[node] != 0)
             continue;
         const double share = hit.mImpulse.norm();
         sum += share * velocities[node];
@@ -555,10 +563,11 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     shares.clear();
     Vec3 impulse = Vec3::Zero();
     const std::vector<double>& inverse_masses = cpu->GetInverseMasses();
+    const std::vector<std::uint8_t> taken = TakenNodes(ioProp);
     for (const NodalImpulse& hit : ioProp.mStruck)
     {
         const auto node = static_cast<std::size_t>(hit.mNode);
-        if ((node < ioProp.mTaken.size() && ioProp.mTaken[node] != 0) || inverse_masses[node] == 0.0)
+        if (taken[node] != 0 || inverse_masses[node] == 0.0)
             continue;
         nodes.push_back(hit.mNode);
         shares.push_back(hit.mImpulse.norm());

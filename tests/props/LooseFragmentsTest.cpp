@@ -7,6 +7,7 @@
 
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
+#include <crumple/props/PropBody.h>
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
 
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -189,4 +191,89 @@ TEST_CASE("A free prop keeps the piece its body carries, however often its loose
         CHECK(std::find(piece.mElements.begin(), piece.mElements.end(), 0) == piece.mElements.end());
     const std::vector<TetFragment> pieces = props->GetProp(wall)->ComputeFragments();
     CHECK_FALSE(pieces[0].mAnchored); // the carried piece still moves freely
+}
+
+TEST_CASE("Loose pieces stay out of the prop's shape and collisions after later cracks renumber its nodes",
+          "[props]")
+{
+    // Fracture numbers the nodes it splits afresh from the set of broken links: a crack after a piece left
+    // can give the piece's nodes other indices. What was taken is kept by element (whose indices never
+    // change): kept by node, the shape drew the piece where it froze and collisions landed on its fixed
+    // nodes.
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::BrittlePanel({1, 8, 8}, 1.0e9, 10.0)).Get();
+    const FemProp& prop = *props->GetProp(wall);
+    const auto hit = [&](double inY, double inZ, double inSpeed, double inTime)
+    {
+        REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(inSpeed)));
+        REQUIRE(
+            fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(inY, inZ, inTime)}));
+        fixture.mWorld.Flush();
+        for (int step = 0; step < 10; ++step)
+            REQUIRE(props->Step(1.0 / 120.0));
+    };
+    // A corner knocked out at the top; the pieces taken.
+    hit(-0.6, 0.7, 40.0, 0.0);
+    const std::vector<LooseFragment> loose = props->TakeLooseFragments().Get();
+    REQUIRE_FALSE(loose.empty());
+    std::vector<std::uint8_t> taken(prop.GetElementNodes().size(), 0);
+    std::set<int> nodes_when_taken;
+    for (const LooseFragment& piece : loose)
+    {
+        for (int element : piece.mElements)
+            taken[static_cast<std::size_t>(element)] = 1;
+        nodes_when_taken.insert(piece.mNodes.begin(), piece.mNodes.end());
+    }
+    // Then lower down, where the rest nodes come first: new nodes there push the pieces' numbers on.
+    for (int round = 0; round < 4; ++round)
+        hit(0.4 - 0.3 * round, -0.3, 120.0, 1.0 + round);
+    bool renumbered = false;
+    for (std::size_t element = 0; element < taken.size(); ++element)
+        if (taken[element] != 0)
+            for (int node : prop.GetElementNodes()[element])
+                renumbered = renumbered || nodes_when_taken.count(node) == 0;
+    REQUIRE(renumbered); // a taken element has a node whose index was not a piece's: the test is not vacuous
+
+    // The shape is that of the elements not taken, exactly.
+    std::vector<Vec3> positions;
+    prop.ReadPositions(positions);
+    const Result<std::vector<std::vector<Vec3>>> shape = props->GetCollisionPieces(wall, 0.25);
+    const Result<std::vector<std::vector<Vec3>>> expected =
+        PropCollisionPieces(positions, prop.GetElementNodes(), taken, 0.25);
+    REQUIRE(shape);
+    REQUIRE(expected);
+    CHECK_FALSE(expected.Get().empty());
+    CHECK(shape.Get() == expected.Get());
+
+    // A contact inside any taken element lands on what is left, never on a piece's nodes.
+    std::vector<std::uint8_t> kept_node(positions.size(), 0);
+    for (std::size_t element = 0; element < taken.size(); ++element)
+        if (taken[element] == 0)
+            for (int node : prop.GetElementNodes()[element])
+                kept_node[static_cast<std::size_t>(node)] = 1;
+    int on_pieces = 0, contacts = 0;
+    for (std::size_t element = 0; element < taken.size(); ++element)
+    {
+        if (taken[element] == 0)
+            continue;
+        Vec3 centroid = Vec3::Zero();
+        for (int node : prop.GetElementNodes()[element])
+            centroid += 0.25 * positions[static_cast<std::size_t>(node)];
+        Collision collision;
+        collision.mBodyA = fixture.mWall;
+        collision.mBodyB = fixture.mCar;
+        CollisionContact contact;
+        contact.mLocalPointOnA = centroid;
+        contact.mLocalNormalOnA = Vec3::UnitX();
+        contact.mImpulse = 1.0e-3;
+        collision.mContacts.push_back(contact);
+        std::vector<NodalImpulse> applied;
+        REQUIRE(props->GetProp(wall)->ApplyCollision(collision, fixture.mWall, &applied).IsValid());
+        ++contacts;
+        for (const NodalImpulse& impulse : applied)
+            on_pieces += kept_node[static_cast<std::size_t>(impulse.mNode)] != 0 ? 0 : 1;
+    }
+    CHECK(contacts > 0);
+    CHECK(on_pieces == 0);
 }

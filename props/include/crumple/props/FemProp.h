@@ -82,11 +82,11 @@ public:
     Status SetNodesFixed(std::span<const int> inNodes, bool inFixed);
     /// The nodes of a piece that left the prop (handed over as a body of its own,
     /// PropWorld::TakeLooseFragments): fixed where they are, and from now on no collision lands on an element
-    /// with one of them (ApplyCollision leaves those elements out). The piece's elements stay in the mesh,
-    /// fixed where it broke off, and overlap what is left of the prop there: a contact with the rest found
-    /// them as its nearest elements, and its impulse vanished into their fixed nodes (the racing fence's held
-    /// body then met the car at rest, as a wall, step after step). Refused, changing nothing, for a node out of
-    /// range.
+    /// with one of them now (ApplyCollision leaves those elements out; elements keep their indices through
+    /// later cracks, which renumber the nodes they split). The piece's elements stay in the mesh, fixed where
+    /// it broke off, and overlap what is left of the prop there: a contact with the rest found them as its
+    /// nearest elements, and its impulse vanished into their fixed nodes (the racing fence's held body then
+    /// met the car at rest, as a wall, step after step). Refused, changing nothing, for a node out of range.
     Status SetNodesLeft(std::span<const int> inNodes);
     Status ApplyImpulse(int inNode, const Vec3& inImpulse);
     Status SetExternalForce(int inNode, const Vec3& inForce);
@@ -150,8 +150,8 @@ private:
     std::unique_ptr<gpu::GpuTetSolver, GpuSolverDeleter> mGpu; // incomplete here: a CPU-only build never defines it
     std::string mFallbackReason;
     double mContactSpread = 0.0; // m, SetContactSpread
-    // Per node, sized to the highest node left: 1 for a node of a piece that left (SetNodesLeft)
-    std::vector<std::uint8_t> mLeft;
+    // Per element, empty until a piece leaves: 1 for an element of a piece that left (SetNodesLeft)
+    std::vector<std::uint8_t> mLeftElements;
 };
 
 } // namespace crumple::props

@@ -261,11 +261,11 @@ public:
 private:
     PropWorld(plugin::DamageWorld& ioWorld, const PropWorldSettings& inSettings) : mWorld(&ioWorld), mSettings(inSettings) {}
 
-    // What a step's task worked out for the hand-over after it (mStepOffThread, a prop stepped on a task), and
-    // the state it worked it out from: the prop's broken links and elements' nodes, node positions (bit for
-    // bit) and inverse masses (its fixed nodes), and for the shape the cell size and the pieces and nodes taken once TakeLooseFragments
-    // has handed over the loose pieces it foresaw. A call uses it only while the prop is in that state (the
-    // game may have changed the prop since: GetProp), once.
+    // What a step's task worked out for the hand-over after it (mStepOffThread, a prop stepped on a task),
+    // and the state it worked it out from: the prop's broken links and elements' nodes, node positions (bit
+    // for bit) and inverse masses (its fixed nodes), and for the shape the cell size and the pieces and
+    // elements taken once TakeLooseFragments has handed over the loose pieces it foresaw. A call uses it only
+    // while the prop is in that state (the game may have changed the prop since: GetProp), once.
     struct HandOverForecast
     {
         int mBrokenLinks = 0;
@@ -278,14 +278,17 @@ private:
         std::vector<std::vector<Vec3>> mPieces;
         double mCellSize = 0.0;
         std::uint64_t mPiecesTaken = 0;   ///< Pieces taken once the fragments' loose pieces are
-        std::vector<std::uint8_t> mTaken; ///< Nodes taken once they are (Prop::mTaken)
+        std::vector<std::uint8_t> mTakenElements; ///< Elements taken once they are (Prop::mTakenElements)
     };
 
     struct Prop
     {
         plugin::BodyId mBody;
         FemProp mProp;
-        std::vector<std::uint8_t> mTaken{}; ///< Per node: fixed by TakeLooseFragments (a piece handed over)
+        /// Per element: of a piece TakeLooseFragments handed over (its nodes fixed). By element, as element
+        /// indices never change while fracture renumbers the nodes it splits (a node index kept from before
+        /// a later crack can name another node)
+        std::vector<std::uint8_t> mTakenElements{};
         /// What decided the pieces when TakeLooseFragments last looked and left none behind: while the links
         /// broken and the fixed nodes are the same, no piece can be loose (ComputeFragments is skipped)
         int mSettledBrokenLinks = -1;
@@ -388,11 +391,14 @@ private:
     // nodes of the pieces it takes).
     static bool ForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, bool inSameFixedNodes);
     // The forecast's shape holds for a TakeChangedShape of inProp at inPositions with inCellSize: it has one,
-    // for that cell size, the pieces and nodes taken since are those it foresaw, and ForecastHolds.
+    // for that cell size, the pieces and elements taken since are those it foresaw, and ForecastHolds.
     static bool ShapeForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
-    // The same nodes taken (one byte each), a node past the end of either counting as not taken.
+    // Per current node of inProp: a node of a taken element (a piece handed over). O(#T).
+    static std::vector<std::uint8_t> TakenNodes(const Prop& inProp);
+    // The same elements taken (one byte each), an element past the end of either counting as not taken.
     static bool SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB);
-    // GetCollisionPieces of inProp at inPositions; with inTaken, as if those nodes were taken (one byte each).
+    // GetCollisionPieces of inProp at inPositions; with inTaken, as if those elements were taken (one byte
+    // each).
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
     static Result<std::vector<std::vector<Vec3>>> PiecesOf(const Prop& inProp, std::span<const std::uint8_t> inTaken,
                                                            std::span<const Vec3> inPositions, double inCellSize);
