@@ -2,7 +2,7 @@
 # SPDX-FileCopyrightText: 2026 The Crumple authors
 # SPDX-License-Identifier: MIT
 # The main job: a scripted racing session in Bullet (and the same in ODE). A car with a deformable body
-# scrapes along barriers, breaks through a wooden fence whose pieces fly, and hits a parked car; each run writes a replay file, the deformed meshes (OBJ)
+# knocks bricks out of a garden wall, scrapes along barriers, breaks through a wooden fence whose pieces fly, and hits a parked car; each run writes a replay file, the deformed meshes (OBJ)
 # and PNG pictures (before/after and a frame sequence, rendered headless on EGL). The Bullet recording is
 # then replayed with no engine at all, and its mesh compared with the live one.
 set -euo pipefail
@@ -44,9 +44,9 @@ if [ -x "$bin/crumple-racing-ode" ]; then
     "$bin/crumple-racing-ode" --out "$out/racing-ode"
 fi
 echo; echo "== The Bullet session as a game runs it: its job system on 2 threads, dents deferred a frame,"
-echo "   the fence's FEM off the game's thread (a different run: each lands a step later)"
+echo "   the props' FEM off the game's thread (a different run: each lands a step later)"
 "$bin/crumple-racing-bullet" --threads 2 --defer-dents --props-off-thread --no-pictures --out "$out/racing-bullet-jobs" |
-    grep -E "^(fence:|physics frames|wrote)"
+    grep -E "^(fence:|brick wall:|props' FEM:|physics frames|wrote)"
 "$replay" "$out/racing-bullet-jobs/race.crumple" --out "$out/racing-bullet-jobs/replay" > /dev/null
 same_mesh "$out/racing-bullet-jobs/car.obj" "$out/racing-bullet-jobs/replay/object0.obj" "threaded session's car"
 
@@ -54,6 +54,7 @@ echo; echo "== Headless replay of the Bullet recording (no physics engine)"
 "$replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
 same_mesh "$out/racing-bullet/car.obj" "$out/replay/object0.obj" car
 same_mesh "$out/racing-bullet/fence.obj" "$out/replay/prop0.obj" "fence (cracks and pieces)"
+same_mesh "$out/racing-bullet/brick_wall.obj" "$out/replay/prop1.obj" "brick wall (bricks knocked out)"
 
 echo
 echo "crumple demo: crash report: $out/crash-frontal-56/report.html (report.json, pictures, deformed.obj, replay.crumple beside it)"

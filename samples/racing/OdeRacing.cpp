@@ -12,10 +12,11 @@ int main(int argc, char** argv)
 {
     RaceOptions options;
     options.mOut = "racing-ode-output";
-    if (const int code = ParseRaceOptions(argc, argv, "crumple-racing-ode",
-                                          "An ODE car with a deformable body scrapes along barriers, breaks through a fence, then "
-                                          "hits a parked car.",
-                                          options);
+    if (const int code = ParseRaceOptions(
+            argc, argv, "crumple-racing-ode",
+            "An ODE car with a deformable body clips a brick wall, scrapes along barriers, breaks "
+            "through a fence, then hits a parked car.",
+            options);
         code >= 0)
         return code;
     return RunRaceSession("crumple-racing-ode", options, [](const RaceSceneSettings& inSettings) -> Result<std::unique_ptr<RaceScene>>

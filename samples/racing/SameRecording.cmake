@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: MIT
 # cmake -DRACING=<crumple-racing-*> -DREPLAY=<crumple-replay> -DOUT=<dir> -P SameRecording.cmake
 # Runs a racing session with dents on the game's thread and again with deferred dents on a 2-thread job
-# system: the recordings and the deformed meshes (the cars and the fence the car breaks) must be
-# byte-identical. Then the inline recording is replayed with no engine: the car and the fence again.
-# Then the fence's FEM off the game's thread (--props-off-thread, landing a step later: another run), with the
+# system: the recordings and the deformed meshes (the cars, the brick wall and the fence the car breaks) must
+# be byte-identical. Then the inline recording is replayed with no engine: the car and the props again.
+# Then the props' FEM off the game's thread (--props-off-thread, landing a step later: another run), with the
 # tasks inline and on 2 threads: byte-identical again, and replayed.
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_QUIET)
@@ -21,11 +21,11 @@ endfunction()
 
 run(${RACING} --duration 4.7 --no-pictures --out ${OUT}/inline)
 run(${RACING} --duration 4.7 --no-pictures --out ${OUT}/deferred --threads 2 --defer-dents)
-foreach(file race.crumple car.obj parked.obj fence.obj)
+foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
     expect_same(${OUT}/inline/${file} ${OUT}/deferred/${file} "${file} differs between inline and deferred dents")
 endforeach()
 run(${REPLAY} ${OUT}/inline/race.crumple --out ${OUT}/replayed)
-foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj")
+foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
     list(GET pair 0 live)
     list(GET pair 1 replayed)
     expect_same(${OUT}/inline/${live} ${OUT}/replayed/${replayed} "the replayed ${replayed} differs from the live ${live}")
@@ -33,14 +33,14 @@ endforeach()
 
 run(${RACING} --duration 4.7 --no-pictures --out ${OUT}/off_thread_inline --threads 1 --defer-dents --props-off-thread)
 run(${RACING} --duration 4.7 --no-pictures --out ${OUT}/off_thread --threads 2 --defer-dents --props-off-thread)
-foreach(file race.crumple car.obj parked.obj fence.obj)
+foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
     expect_same(${OUT}/off_thread_inline/${file} ${OUT}/off_thread/${file}
-                "${file} differs between the fence's FEM as an inline task and on 2 threads")
+                "${file} differs between the props' FEM as an inline task and on 2 threads")
 endforeach()
 run(${REPLAY} ${OUT}/off_thread/race.crumple --out ${OUT}/off_thread_replayed)
-foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj")
+foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
     list(GET pair 0 live)
     list(GET pair 1 replayed)
     expect_same(${OUT}/off_thread/${live} ${OUT}/off_thread_replayed/${replayed}
-                "the replayed ${replayed} differs from the live ${live} (fence off the thread)")
+                "the replayed ${replayed} differs from the live ${live} (props off the thread)")
 endforeach()

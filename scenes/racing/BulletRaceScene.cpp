@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "BulletRaceScene.h"
 #include "BoxMesh.h"
-#include "RaceFence.h"
+#include "RaceProps.h"
 #include "RaceSession.h"
 
 #include <crumple/bullet/BulletAdapter.h>
@@ -169,22 +169,28 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
         return parked.GetError();
     s.mParkedObject = parked.Get();
 
-    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
+    // The destructible props: the adapter makes and holds their bodies, RaceProps steps their FEM after each
+    // engine step.
     bullet::BulletAdapter& bodies = *s.mAdapter;
-    Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
-        *s.mDamage, {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
-                     .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(inBody); },
-                               .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                               .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
-                               // the whole fence's mass: a contact mass (SetHeldMass) follows how many points each
-                               // engine reports, and the engines part (README, known limits)
-                               .mSetHeldMass = nullptr,
-                               .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
+    Result<std::unique_ptr<RaceProps>> props = RaceProps::Create(
+        *s.mDamage,
+        {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
+         .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody)
+                   { return bodies.CreateConvexBody(inBody); },
+                   .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+                   { return bodies.SetPropPieces(inBody, inPieces); },
+                   .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity)
+                   { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                   // the whole prop's mass: a contact mass (SetHeldMass) follows how many points each
+                   // engine reports, and the engines part (README, known limits)
+                   .mSetHeldMass = nullptr,
+                   .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
         cFrame / 4.0, s.mSettings.mPropsOffThread);
-    if (!fence)
-        return MakeError(fence.GetError().mCode, "the fence: " + fence.GetError().mMessage);
-    s.mFence = std::move(fence).Get();
-    s.mNames[s.mFence->GetBody()] = "fence";
+    if (!props)
+        return props.GetError();
+    s.mProps = std::move(props).Get();
+    for (int prop = 0; prop < s.mProps->GetCount(); ++prop)
+        s.mNames[s.mProps->GetBody(prop)] = s.mProps->GetName(prop);
     return scene;
 }
 
@@ -194,9 +200,9 @@ BulletRaceScene::BulletRaceScene(const RaceSceneSettings& inSettings) : RaceScen
 
 BulletRaceScene::~BulletRaceScene()
 {
-    // The fence before the adapter that holds its bodies; the game's bodies leave the world before the world
-    // and the adapter go (the fence's and pieces' bodies are the adapter's own).
-    mFence.reset();
+    // The props before the adapter that holds their bodies; the game's bodies leave the world before the
+    // world and the adapter go (the props' and pieces' bodies are the adapter's own).
+    mProps.reset();
     if (mWorld == nullptr)
         return;
     if (mVehicle != nullptr)
@@ -226,7 +232,7 @@ Status BulletRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
         mWorld->stepSimulation(btScalar(cFrame / 4.0), 0); // exactly one step of 1/240 s
         if (mAdapter != nullptr)
             mFrameCrumpleMs += 1.0e3 * mAdapter->GetLastStepStats().mSeconds;
-        if (Status stepped = StepFence(cFrame / 4.0, inNewBodies); !stepped)
+        if (Status stepped = StepProps(cFrame / 4.0, inNewBodies); !stepped)
             return stepped;
     }
     return Status::Ok();

@@ -30,7 +30,8 @@ namespace crumple::samples
 
 /// The racing course (RaceCourse) in Bullet: a btRaycastVehicle whose body is the racing car mesh
 /// (RaceCarMesh) on a static ground plane, three concrete barriers as collision objects, the parked car, and
-/// the destructible fence, with Crumple attached through the BulletAdapter (or not: RaceSceneSettings::mAttach).
+/// the destructible props, with Crumple attached through the BulletAdapter (or not:
+/// RaceSceneSettings::mAttach).
 class BulletRaceScene final : public RaceScene
 {
 public:

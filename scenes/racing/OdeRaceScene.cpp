@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "OdeRaceScene.h"
 #include "BoxMesh.h"
-#include "RaceFence.h"
+#include "RaceProps.h"
 #include "RaceSession.h"
 
 #include <crumple/ffd/BoundingBox.h>
@@ -43,7 +43,7 @@ OdeRaceScene::OdeRaceScene(const RaceSceneSettings& inSettings) : RaceScene(inSe
 OdeRaceScene::~OdeRaceScene()
 {
     // The Crumple side first (the adapter's bodies are in the world), then the engine's.
-    mFence.reset();
+    mProps.reset();
     mAdapter.reset();
     if (mContacts != nullptr)
         dJointGroupDestroy(mContacts);
@@ -198,28 +198,35 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
         return parked.GetError();
     s.mParkedObject = parked.Get();
 
-    // The destructible fence: the adapter makes and holds its body, RaceFence steps its FEM after each engine step.
+    // The destructible props: the adapter makes and holds their bodies, RaceProps steps their FEM after each
+    // engine step.
     ode::OdeAdapter& bodies = *s.mAdapter;
-    Result<std::unique_ptr<RaceFence>> fence = RaceFence::Create(
-        *s.mDamage, {.mMakePropBody =
-                         [&bodies, &s](const PropBodySettings& inBody) {
-                             Result<BodyId> made = bodies.CreatePropBody(s.mWorld, s.mSpace, inBody);
-                             if (made && inBody.mHeld)
-                                 s.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
-                             return made;
-                         },
-                     .mHeld = {.mCreatePieceBody = [&bodies, &s](const ConvexBodySettings& inBody) { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); },
-                               .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces) { return bodies.SetPropPieces(inBody, inPieces); },
-                               .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity) { return bodies.SetHeldVelocity(inBody, inVelocity); },
-                               // the whole fence's mass: a contact mass (SetHeldMass) follows how many points each
-                               // engine reports, and the engines part (README, known limits)
-                               .mSetHeldMass = nullptr,
-                               .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
+    Result<std::unique_ptr<RaceProps>> props = RaceProps::Create(
+        *s.mDamage,
+        {.mMakePropBody =
+             [&bodies, &s](const PropBodySettings& inBody)
+         {
+             Result<BodyId> made = bodies.CreatePropBody(s.mWorld, s.mSpace, inBody);
+             if (made && inBody.mHeld)
+                 s.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
+             return made;
+         },
+         .mHeld = {.mCreatePieceBody = [&bodies, &s](const ConvexBodySettings& inBody)
+                   { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); },
+                   .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+                   { return bodies.SetPropPieces(inBody, inPieces); },
+                   .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity)
+                   { return bodies.SetHeldVelocity(inBody, inVelocity); },
+                   // the whole prop's mass: a contact mass (SetHeldMass) follows how many points each
+                   // engine reports, and the engines part (README, known limits)
+                   .mSetHeldMass = nullptr,
+                   .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
         cStep, s.mSettings.mPropsOffThread);
-    if (!fence)
-        return MakeError(fence.GetError().mCode, "the fence: " + fence.GetError().mMessage);
-    s.mFence = std::move(fence).Get();
-    s.mNames[s.mFence->GetBody()] = "fence";
+    if (!props)
+        return props.GetError();
+    s.mProps = std::move(props).Get();
+    for (int prop = 0; prop < s.mProps->GetCount(); ++prop)
+        s.mNames[s.mProps->GetBody(prop)] = s.mProps->GetName(prop);
     return scene;
 }
 
@@ -253,8 +260,8 @@ Status OdeRaceScene::StepFrame(const RaceNewBodies& inNewBodies)
             mFrameCrumpleMs += 1.0e3 * mAdapter->GetLastStepStats().mSeconds;
         }
         dJointGroupEmpty(mContacts);
-        // The fence's FEM after each engine step: the held fence body takes the struck timbers' velocity.
-        if (Status stepped = StepFence(cStep, inNewBodies); !stepped)
+        // The props' FEM after each engine step: a held prop body takes the struck members' velocity.
+        if (Status stepped = StepProps(cStep, inNewBodies); !stepped)
             return stepped;
     }
     return Status::Ok();

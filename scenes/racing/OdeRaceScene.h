@@ -20,7 +20,7 @@ namespace crumple::samples
 
 /// The racing course (RaceCourse) in ODE: a chassis box around the racing car mesh (RaceCarMesh) on four
 /// sphere wheels held by hinge-2 joints (suspension and a rear-wheel motor), the barriers and the ground as
-/// static geoms, the parked car and the destructible fence, with Crumple attached through the OdeAdapter (or
+/// static geoms, the parked car and the destructible props, with Crumple attached through the OdeAdapter (or
 /// not: RaceSceneSettings::mAttach). The game adds one line to its near callback (OdeAdapter::OnCollide) and
 /// one after dWorldQuickStep (OdeAdapter::AfterStep).
 class OdeRaceScene final : public RaceScene
@@ -41,7 +41,8 @@ private:
     dSpaceID mSpace = nullptr;
     dJointGroupID mContacts = nullptr;
     std::unique_ptr<ode::OdeAdapter> mAdapter;
-    std::vector<dBodyID> mHeldBodies; ///< Held prop bodies (the fence), put back at their pose every step
+    std::vector<dBodyID>
+        mHeldBodies; ///< Held prop bodies (fence, brick wall), put back at their pose every step
     dBodyID mChassis = nullptr;
     dBodyID mParked = nullptr;
     double mWheelBase = 0.0; ///< m, for the driver's steering

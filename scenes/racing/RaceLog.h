@@ -21,7 +21,7 @@ public:
     void OnCollision(const plugin::Collision& inCollision, std::span<const plugin::ObjectDent> inDents) override;
 
     int GetCount() const { return mCount; }
-    /// Names a body (or renames it). The collisions of an unlisted body (a fence's flying pieces: hundreds,
+    /// Names a body (or renames it). The collisions of an unlisted body (the props' flying pieces: hundreds,
     /// mostly with the ground) are counted but get no line, unless the other body has a deformable object.
     void SetName(plugin::BodyId inBody, std::string inName, bool inListed = true)
     {

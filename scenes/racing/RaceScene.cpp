@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "RaceScene.h"
-#include "RaceFence.h"
+#include "RaceProps.h"
 #include "ThreadJobSystem.h"
 
 #include <crumple/base/ThreadCpuClock.h>
@@ -40,15 +40,15 @@ Result<const DeformableObject*> RaceScene::CreateCarObject(BodyId inBody, const 
     return mDamage->GetObject(object.Get());
 }
 
-Status RaceScene::StepFence(double inStep, const RaceNewBodies& inNewBodies)
+Status RaceScene::StepProps(double inStep, const RaceNewBodies& inNewBodies)
 {
-    if (mFence == nullptr)
+    if (mProps == nullptr)
         return Status::Ok();
     mPieces.clear();
     const double start = ThreadCpuSeconds();
-    const Status stepped = mFence->Step(inStep, mPieces);
+    const Status stepped = mProps->Step(inStep, mPieces);
     // intent: the sample's drawing meshes of new pieces are the game's work, not Crumple's
-    mFrameCrumpleMs += 1.0e3 * (ThreadCpuSeconds() - start) - mFence->GetLastStepDrawingMs();
+    mFrameCrumpleMs += 1.0e3 * (ThreadCpuSeconds() - start) - mProps->GetLastStepDrawingMs();
     if (inNewBodies && !mPieces.empty())
         inNewBodies(mPieces);
     return stepped;

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: MIT
 #include "RaceSession.h"
 #include "BoxMesh.h"
-#include "RaceFence.h"
 #include "CarMesh.h"
 #include "ObjWriter.h"
+#include "RaceProps.h"
 #include "RemoveCaps.h"
 #include "SurfaceFolds.h"
 #include "ThreadCpuTime.h"
@@ -62,6 +62,21 @@ Transform RaceCourse::Fence()
     return {Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitZ()).toRotationMatrix(), Vec3(45.1, -2.0, 0.01)};
 }
 
+fem::TetGridSettings RaceCourse::BrickWallSettings()
+{
+    // Its lowest course is the footing, in the ground: anchored at its base, so that every brick above it can
+    // break loose (a course anchored by its own nodes could not).
+    fem::TetGridSettings wall;
+    wall.mSize = Vec3(0.2, 1.2, 0.7);
+    wall.mCellCount = {2, 6, 7};
+    return wall;
+}
+
+Transform RaceCourse::BrickWall()
+{
+    return {Mat3::Identity(), Vec3(14.0, 0.5, -0.1)};
+}
+
 double RaceCourse::SteeringAngle(const Transform& inCarPose, double inWheelBase)
 {
     // Pure pursuit: the arc through the car's rear axle and the look-ahead point has curvature 2 sin(a) / L
@@ -81,16 +96,18 @@ int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const cha
         const std::string arg = inArgv[i];
         if (arg == "--help" || arg == "-h")
         {
-            std::printf("usage: %s [--out DIR] [--duration S] [--speed M_PER_S] [--threads N] [--defer-dents]\n"
-                        "       [--props-off-thread] [--no-pictures]\n  %s\n"
-                        "  --threads N  the game's job system runs dents on N threads (1: on the game's thread)\n"
-                        "  --defer-dents  dents run as a task of the job system and land one frame later\n"
-                        "               (DamageWorldSettings::mDeferDents; with --threads 1 the task runs inline)\n"
-                        "  --props-off-thread  the fence's FEM steps as a task of the job system, landing at the\n"
-                        "               next engine step (props::PropWorldSettings::mStepOffThread)\n"
-                        "  Writes DIR/race.crumple (replay for crumple-replay), DIR/car.obj, DIR/parked.obj and, with\n"
-                        "  pictures, DIR/before.png, DIR/after.png and DIR/frames/frame_NNNN.png.\n",
-                        inProgram, inDescription);
+            std::printf(
+                "usage: %s [--out DIR] [--duration S] [--speed M_PER_S] [--threads N] [--defer-dents]\n"
+                "       [--props-off-thread] [--no-pictures]\n  %s\n"
+                "  --threads N  the game's job system runs dents on N threads (1: on the game's thread)\n"
+                "  --defer-dents  dents run as a task of the job system and land one frame later\n"
+                "               (DamageWorldSettings::mDeferDents; with --threads 1 the task runs inline)\n"
+                "  --props-off-thread  the props' FEM steps as a task of the job system, landing at the\n"
+                "               next engine step (props::PropWorldSettings::mStepOffThread)\n"
+                "  Writes DIR/race.crumple (replay for crumple-replay), DIR/car.obj, DIR/parked.obj and, "
+                "with\n"
+                "  pictures, DIR/before.png, DIR/after.png and DIR/frames/frame_NNNN.png.\n",
+                inProgram, inDescription);
             return 0;
         }
         if (arg == "--version")
@@ -216,8 +233,9 @@ void RaceSession::PaintCar(const DeformableObject& inCar, const std::string& inN
         std::printf("note: %s\n", painted.GetError().mMessage.c_str());
 }
 
-void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inCarPose, const DeformableObject& inParked,
-                             const Transform& inParkedPose, const RaceFence& inFence)
+void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inCarPose,
+                             const DeformableObject& inParked, const Transform& inParkedPose,
+                             const RaceProps& inProps)
 {
     if (mPainter == nullptr)
         return;
@@ -230,7 +248,7 @@ void RaceSession::PaintFrame(const DeformableObject& inCar, const Transform& inC
         const ffd::FfdDeformer& d = object->GetDeformer();
         mPainter->Add(d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles, DentDepths(d.GetPositions(), d.GetRestMesh().mPositions), *pose);
     }
-    inFence.Paint(*mPainter, *mDamage);
+    inProps.Paint(*mPainter, *mDamage);
     // A chase camera behind, left and above the racing car.
     render::Camera camera;
     camera.mTarget = inCarPose.mTranslation + Vec3(4.0, 0.0, 0.0);
@@ -262,8 +280,8 @@ void RaceSession::EndFrame(double inCrumpleMs)
     mFrameCpuMs.push_back(common::ThreadCpuMs() - mFrameStartCpuMs);
 }
 
-Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar, const DeformableObject& inParked,
-                           const RaceFence& inFence)
+Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
+                           const DeformableObject& inParked, const RaceProps& inProps)
 {
     ioDamage.Flush();
     ioDamage.RemoveListener(&mLog);
@@ -277,23 +295,26 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
         if (Status written = common::WriteObj(mOptions.mOut / name, d.GetPositions(), d.GetNormals(), d.GetRestMesh().mTriangles); !written)
             return written;
     }
-    if (Status written = inFence.WriteObj(mOptions.mOut / "fence.obj"); !written)
+    if (Status written = inProps.WriteObjs(mOptions.mOut); !written)
         return written;
-    std::printf("%d collisions (%d of them of the fence's pieces with the ground, the course or each other, not "
-                "listed); racing car deepest dent %.3f m, parked "
-                "car %.3f m; %d frames\n",
-                mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked), mFrames);
+    std::printf(
+        "%d collisions (%d of them of the props' pieces with the ground, the course or each other, not "
+        "listed); racing car deepest dent %.3f m, parked "
+        "car %.3f m; %d frames\n",
+        mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked),
+        mFrames);
     // A dent must never turn the surface over (tests/CMakeLists' racing checks read this line).
     const ffd::FfdDeformer& car = inCar.GetDeformer();
     const ffd::FfdDeformer& parked = inParked.GetDeformer();
     std::printf("triangles turned over: racing car %d of %zu, parked car %d of %zu\n",
                 common::FoldedTriangles(car.GetRestMesh(), car.GetPositions()), car.GetRestMesh().mTriangles.size(),
                 common::FoldedTriangles(parked.GetRestMesh(), parked.GetPositions()), parked.GetRestMesh().mTriangles.size());
-    std::printf("%s\n", inFence.Summary().c_str());
+    std::printf("%s", inProps.Summary().c_str());
     // intent: the worst frame and where it was, then the distribution (engine step + Crumple)
-    for (const auto& [times, what] : {std::pair{&mFrameWallMs, "engine step with Crumple, wall"},
-                                      std::pair{&mFrameCpuMs, "engine step with Crumple, game-thread CPU"},
-                                      std::pair{&mFrameCrumpleMs, "Crumple's share: adapter and fence, game-thread CPU"}})
+    for (const auto& [times, what] :
+         {std::pair{&mFrameWallMs, "engine step with Crumple, wall"},
+          std::pair{&mFrameCpuMs, "engine step with Crumple, game-thread CPU"},
+          std::pair{&mFrameCrumpleMs, "Crumple's share: adapter and props, game-thread CPU"}})
     {
         if (times->empty())
             continue;

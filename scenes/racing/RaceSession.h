@@ -6,6 +6,7 @@
 #include "ScenePainter.h"
 
 #include <crumple/fem/TetFence.h>
+#include <crumple/fem/TetGrid.h>
 
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/plugin/DamageWorld.h>
@@ -33,10 +34,17 @@ struct RaceCourse
     static Vec3 ParkedHalfExtents() { return {2.1, 0.9, 0.7}; }   ///< The parked car's box
     static Transform ParkedCar();                               ///< Its pose, resting on the ground
     static constexpr double cParkedMass = 1100.0;               ///< kg
-    /// A wooden fence across the road between the barriers and the parked car: 4 m of 10 cm timbers, a post at
-    /// each end, two rails (RaceFence)
+    /// A wooden fence across the road between the barriers and the parked car: 4 m of 10 cm timbers, a post
+    /// at each end, two rails (RaceProps)
     static fem::TetFenceSettings FenceSettings();
     static Transform Fence(); ///< Its frame: the fence's x along world y, its face at x = 45 m
+    /// A low garden wall of bricks at the road's left edge before the barriers (RaceProps): 1.2 m long, 0.6 m
+    /// high on a footing course 0.1 m deep in the ground, two bricks of 0.1 x 0.2 x 0.1 m thick (a grid cell
+    /// each)
+    static fem::TetGridSettings BrickWallSettings();
+    /// Its frame: unturned, its face at x = 14 m, from y = 0.5 to 1.7 m (the car on the course line meets its
+    /// first 0.4 m), its footing's base 0.1 m below the ground
+    static Transform BrickWall();
     /// The driver's steering angle (rad, about the car's up axis, positive to the left, at most
     /// cMaxSteering): pure pursuit of the course line y = 0 (a point on it a look-ahead ahead of the car), so
     /// that a car knocked off its line by a barrier, the fence or a piece comes back to it instead of the
@@ -47,13 +55,13 @@ struct RaceCourse
     static constexpr double cMaxSteering = 0.35; ///< rad
 };
 
-class RaceFence;
+class RaceProps;
 
 /// Command line of a racing sample.
 struct RaceOptions
 {
     std::filesystem::path mOut = "racing-output"; ///< Output folder
-    double mDuration = 6.0;                       ///< Simulated time (s)
+    double mDuration = 7.0;                       ///< Simulated time (s)
     double mSpeed = 20.0;                         ///< Target speed (m/s)
     bool mPictures = true;                        ///< PNG before/after and frames
     int mThreads = 1;                             ///< Threads of the game's job system handed to Crumple
@@ -77,20 +85,22 @@ public:
 
     /// The racing car alone, coloured by dent depth, from an iso view.
     void PaintCar(const plugin::DeformableObject& inCar, const std::string& inName);
-    /// A frame of the scene with a chase camera on the racing car: the course, both cars, the fence and its
+    /// A frame of the scene with a chase camera on the racing car: the course, both cars, the props and their
     /// flying pieces.
-    void PaintFrame(const plugin::DeformableObject& inCar, const Transform& inCarPose, const plugin::DeformableObject& inParked,
-                    const Transform& inParkedPose, const RaceFence& inFence);
-    /// Flushes, closes the recording, writes after.png, car.obj, parked.obj and fence.obj, prints the summary.
-    Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar, const plugin::DeformableObject& inParked,
-                  const RaceFence& inFence);
+    void PaintFrame(const plugin::DeformableObject& inCar, const Transform& inCarPose,
+                    const plugin::DeformableObject& inParked, const Transform& inParkedPose,
+                    const RaceProps& inProps);
+    /// Flushes, closes the recording, writes after.png, car.obj, parked.obj and the props' OBJs (fence.obj,
+    /// brick_wall.obj), prints the summary.
+    Status Finish(plugin::DamageWorld& ioDamage, const plugin::DeformableObject& inCar,
+                  const plugin::DeformableObject& inParked, const RaceProps& inProps);
 
     /// The recording (for the props to record beside the collisions)
     plugin::DamageRecorder& GetRecorder() { return *mRecorder; }
     /// Stops the log listening to the world when Finish was not reached (a frame failed): the world, which
     /// outlives the session, would call it later (a deferred dent landing as the scene is torn down).
     ~RaceSession();
-    /// Names bodies made during the run (the fence's pieces) in the collision log, which counts their
+    /// Names bodies made during the run (the props' pieces) in the collision log, which counts their
     /// collisions without a line each
     void NamePieces(std::span<const plugin::BodyId> inBodies, const std::string& inName)
     {

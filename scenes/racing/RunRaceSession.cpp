@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "RunRaceSession.h"
-#include "RaceFence.h"
+#include "RaceProps.h"
 
 #include <cmath>
 #include <cstdio>
@@ -23,18 +23,23 @@ int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const Ma
         return fail(made.GetError());
     RaceScene& scene = *made.Get();
     plugin::DamageWorld& damage = *scene.GetDamage();
-    RaceFence& fence = *scene.GetFence();
+    RaceProps& props = *scene.GetProps();
     Result<std::unique_ptr<RaceSession>> created = RaceSession::Create(inOptions, damage, scene.GetNames());
     if (!created)
         return fail(created.GetError());
     RaceSession& session = *created.Get();
-    if (Status recorded = fence.AttachRecorder(&session.GetRecorder()); !recorded)
+    if (Status recorded = props.AttachRecorder(&session.GetRecorder()); !recorded)
         return fail(recorded.GetError());
     session.PaintCar(*scene.GetCar(), "before.png");
 
     // A frame every 1/60 s, a picture every 0.1 s.
     const int frames = static_cast<int>(std::lround(inOptions.mDuration * 60.0));
-    const RaceNewBodies name_pieces = [&session](std::span<const plugin::BodyId> inBodies) { session.NamePieces(inBodies, "fence piece"); };
+    const RaceNewBodies name_pieces = [&session, &props](std::span<const RaceNewPiece> inPieces)
+    {
+        for (const RaceNewPiece& piece : inPieces)
+            session.NamePieces(std::span<const plugin::BodyId>(&piece.mBody, 1),
+                               props.GetName(piece.mProp) + " piece");
+    };
     Status finished = Status::Ok();
     for (int frame = 0; frame < frames && finished; ++frame)
     {
@@ -42,10 +47,11 @@ int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const Ma
         finished = scene.StepFrame(name_pieces);
         session.EndFrame(scene.GetLastFrameCrumpleMs());
         if (finished && frame % 6 == 0)
-            session.PaintFrame(*scene.GetCar(), scene.GetCarPose(), *scene.GetParked(), scene.GetParkedPose(), fence);
+            session.PaintFrame(*scene.GetCar(), scene.GetCarPose(), *scene.GetParked(), scene.GetParkedPose(),
+                               props);
     }
     if (finished)
-        finished = session.Finish(damage, *scene.GetCar(), *scene.GetParked(), fence);
+        finished = session.Finish(damage, *scene.GetCar(), *scene.GetParked(), props);
     if (!finished)
         return fail(finished.GetError());
     return 0;
