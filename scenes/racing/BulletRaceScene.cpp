@@ -186,11 +186,8 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
                    .mSetHeldMass = nullptr,
                    .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
         cFrame / 4.0, s.mSettings.mPropsOffThread);
-    if (!props)
-        return props.GetError();
-    s.mProps = std::move(props).Get();
-    for (int prop = 0; prop < s.mProps->GetCount(); ++prop)
-        s.mNames[s.mProps->GetBody(prop)] = s.mProps->GetName(prop);
+    if (Status kept = s.KeepProps(std::move(props)); !kept)
+        return kept.GetError();
     return scene;
 }
 

@@ -40,6 +40,16 @@ Result<const DeformableObject*> RaceScene::CreateCarObject(BodyId inBody, const 
     return mDamage->GetObject(object.Get());
 }
 
+Status RaceScene::KeepProps(Result<std::unique_ptr<RaceProps>> inProps)
+{
+    if (!inProps)
+        return inProps.GetError();
+    mProps = std::move(inProps).Get();
+    for (int prop = 0; prop < mProps->GetCount(); ++prop)
+        mNames[mProps->GetBody(prop)] = mProps->GetName(prop);
+    return Status::Ok();
+}
+
 Status RaceScene::StepProps(double inStep, const RaceNewBodies& inNewBodies)
 {
     if (mProps == nullptr)

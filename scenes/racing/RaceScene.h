@@ -78,6 +78,8 @@ protected:
     Status CreateDamageWorld();
     /// A car's deformable object on its body, with inMesh as its body mesh.
     Result<const plugin::DeformableObject*> CreateCarObject(plugin::BodyId inBody, const ffd::TriangleMesh& inMesh);
+    /// Keeps the course's props (RaceProps::Create's answer) and names their bodies for the log.
+    Status KeepProps(Result<std::unique_ptr<RaceProps>> inProps);
     /// After one engine step of inStep seconds: the props' FEM, and the bodies their pieces became.
     Status StepProps(double inStep, const RaceNewBodies& inNewBodies);
 
