@@ -382,9 +382,9 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         if (continues)
         {
             state_a.mLinearVelocity = previous->mLinearA;
-            state_a.mAngularVelocity = previous->mAngularA;
+            state_a.mAngularVelocity = state_a.mTransform.mRotation * previous->mAngularBodyA;
             state_b.mLinearVelocity = previous->mLinearB;
-            state_b.mAngularVelocity = previous->mAngularB;
+            state_b.mAngularVelocity = state_b.mTransform.mRotation * previous->mAngularBodyB;
         }
         // intent: a contact reported before touching (a gap g within the engine's margin) constrains only the
         // approach beyond s = g / dt (the rest comes with the next step's contact), unless the engine
@@ -419,6 +419,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         const std::vector<ContactImpulse> impulses =
             FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
                                mSettings.mRestingSpeed, mSettings.mFrictionSolve);
+        // intent: spins in the world while the impulses add to them; in the bodies' frames once stored
+        // (below)
         ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,
                             state_b.mLinearVelocity, state_b.mAngularVelocity};
         bool pushed = false;
@@ -449,10 +451,12 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             const Vec3 impulse = contact.ImpulseOnA();
             const Vec3& point = impulse_contacts[i].mPoint;
             memory.mLinearA += state_a.InverseMass() * impulse;
-            memory.mAngularA += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
+            memory.mAngularBodyA += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
             memory.mLinearB -= state_b.InverseMass() * impulse;
-            memory.mAngularB -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
+            memory.mAngularBodyB -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
         }
+        memory.mAngularBodyA = state_a.mTransform.mRotation.transpose() * memory.mAngularBodyA;
+        memory.mAngularBodyB = state_b.mTransform.mRotation.transpose() * memory.mAngularBodyB;
         if (pushed || continues)
             memories.push_back(memory);
     }

@@ -168,7 +168,11 @@ private:
     {
         BodyId mA, mB;
         double mTime = 0.0;
-        Vec3 mLinearA, mAngularA, mLinearB, mAngularB;
+        /// The velocities the impulse left: linear in the world, angular in each body's own frame (the engine
+        /// turns the body between steps; a spin kept in the world frame would meet the next step's inertia
+        /// turned under it, and its energy was not kept: a spinning rail on the ground gained it step after
+        /// step)
+        Vec3 mLinearA, mAngularBodyA, mLinearB, mAngularBodyB;
     };
     static constexpr double cImpactMemorySteps = 1.5; ///< In steps: only the immediately following step continues
     const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
