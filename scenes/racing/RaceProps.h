@@ -37,7 +37,8 @@ struct RaceNewPiece
 };
 
 /// The course's destructible props (RaceCourse): a wooden fence of posts and two rails (MakeTetFence) across
-/// the road and a low wall of bricks beside it, each a held prop body in the engine whose FEM
+/// the road and a low garden wall of bricks at its edge before the barriers (RaceCourse::BrickWall), each a
+/// held prop body in the engine whose FEM
 /// (crumple::props) takes the car's impulses, cracks (the wall between its bricks), and sheds pieces that
 /// become engine bodies of their own and fly. All of them in one props::PropWorld, so that one recording
 /// replays them together. What a game does for props after each engine step is props::HeldPropBodies's
