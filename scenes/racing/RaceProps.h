@@ -38,11 +38,10 @@ struct RaceNewPiece
 
 /// The course's destructible props (RaceCourse): a wooden fence of posts and two rails (MakeTetFence) across
 /// the road and a low garden wall of bricks at its edge before the barriers (RaceCourse::BrickWall), each a
-/// held prop body in the engine whose FEM
-/// (crumple::props) takes the car's impulses, cracks (the wall between its bricks), and sheds pieces that
-/// become engine bodies of their own and fly. All of them in one props::PropWorld, so that one recording
-/// replays them together. What a game does for props after each engine step is props::HeldPropBodies's
-/// (Step()); the rest is pictures and the summary.
+/// held prop body in the engine whose FEM (crumple::props) takes the car's impulses, cracks (the wall between
+/// its bricks), and sheds pieces that become engine bodies of their own and fly. All of them in one
+/// props::PropWorld, so that one recording replays them together. What a game does for props after each
+/// engine step is props::HeldPropBodies's (Step()); the rest is pictures and the summary.
 class RaceProps
 {
   public:
