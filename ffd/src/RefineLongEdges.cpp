@@ -6,14 +6,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 
 namespace crumple::ffd
 {
 
-Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles)
+Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge, std::size_t inMaxTriangles,
+                                    double inMaxBend)
 {
+    if (!(inMaxBend >= 0.0 && inMaxBend <= std::numbers::pi))
+        return MakeError(EError::InvalidArgument,
+                         "RefineLongEdges: the largest bend must be in [0, pi] rad, not " +
+                             std::to_string(inMaxBend));
     if (Status valid = ValidateTriangleMesh(inMesh); !valid)
         return valid.GetError();
     if (!std::isfinite(inMaxEdge) || !(inMaxEdge > 0.0))
@@ -27,18 +33,75 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
     std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
     std::vector<std::array<std::uint32_t, 3>> cuts;
     std::vector<std::array<std::uint32_t, 3>> next;
+    // With a bend limit, per edge: the normal of the first triangle met, whether every other one is within
+    // inMaxBend of it (a triangle of zero area has no normal: its edges count as bent), and whether every
+    // triangle using it may be cut: one whose long edges can all be cut. A triangle with a long edge kept
+    // whole is left whole: cutting its other edges would fan out against that edge, pass after pass.
+    struct EdgeBend
+    {
+        Vec3 mNormal;
+        bool mFlat = true;
+        bool mCuttable = true;
+    };
+    const bool any_bend = inMaxBend >= std::numbers::pi;
+    const double min_cosine = std::cos(inMaxBend);
+    std::unordered_map<std::uint64_t, EdgeBend> bends;
     // intent: each pass at least halves every edge longer than inMaxEdge; the new edges inside a triangle are
     // no longer than its longest, so a mesh of edges up to L needs about log2(L / inMaxEdge) passes
     for (;;)
     {
         midpoints.clear();
         cuts.assign(triangles.size(), {cNoSplit, cNoSplit, cNoSplit});
+        bends.clear();
+        for (std::size_t t = 0; !any_bend && t < triangles.size(); ++t)
+        {
+            const std::array<std::uint32_t, 3>& tri = triangles[t];
+            const Vec3 area =
+                (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+            const bool has_normal = area.squaredNorm() > 0.0;
+            const Vec3 normal = has_normal ? Vec3(area.normalized()) : Vec3::Zero();
+            for (int k = 0; k < 3; ++k)
+            {
+                const auto [it, first] = bends.try_emplace(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]),
+                                                           EdgeBend{normal, has_normal, true});
+                if (!first)
+                    it->second.mFlat =
+                        it->second.mFlat && has_normal && it->second.mNormal.dot(normal) >= min_cosine;
+            }
+        }
+        // intent: a triangle is cut only if every long edge of it is: to a fixed point, as one left whole
+        // keeps its edges whole for its neighbours too
+        for (bool changed = !any_bend; changed;)
+        {
+            changed = false;
+            for (const std::array<std::uint32_t, 3>& tri : triangles)
+            {
+                bool cuttable = true;
+                for (int k = 0; k < 3; ++k)
+                {
+                    const EdgeBend& bend = bends.at(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]));
+                    const bool long_edge =
+                        (positions[tri[k]] - positions[tri[(k + 1) % 3]]).squaredNorm() > max_edge2;
+                    cuttable = cuttable && (!long_edge || (bend.mFlat && bend.mCuttable));
+                }
+                for (int k = 0; !cuttable && k < 3; ++k)
+                {
+                    EdgeBend& bend = bends.at(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]));
+                    changed = changed || bend.mCuttable;
+                    bend.mCuttable = false;
+                }
+            }
+        }
         for (std::size_t t = 0; t < triangles.size(); ++t)
             for (int k = 0; k < 3; ++k)
             {
                 const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
                 if (!((positions[a] - positions[b]).squaredNorm() > max_edge2))
                     continue;
+                if (!any_bend)
+                    if (const EdgeBend& bend = bends.at(UndirectedEdgeKey(a, b));
+                        !bend.mFlat || !bend.mCuttable)
+                        continue;
                 const auto [it, added] = midpoints.try_emplace(UndirectedEdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
                 if (added)
                 {

@@ -507,3 +507,56 @@ TEST_CASE("FlipNearlyFlatEdges with a cap angle: only caps' long edges flip, the
         CHECK(copy.mTriangles == mesh.mTriangles);
     }
 }
+
+TEST_CASE(
+    "RefineLongEdges with a bend limit cuts flat panels only, and leaves a curved surface's facets whole",
+    "[ffd]")
+{
+    const double two_degrees = 2.0 * std::numbers::pi / 180.0;
+    // A flat square of two triangles: cut down to the limit as without a bend limit (its edges are flat or on
+    // its border, where one triangle is alone).
+    TriangleMesh square;
+    square.mPositions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    square.mTriangles = {{0, 1, 2}, {0, 2, 3}};
+    Result<RefinedMesh> flat = RefineLongEdges(square, 0.3, 4'000'000, two_degrees);
+    Result<RefinedMesh> any = RefineLongEdges(square, 0.3);
+    REQUIRE(flat);
+    REQUIRE(any);
+    CHECK(LongestEdge(flat.Get().mMesh) <= 0.3);
+    CHECK(flat.Get().mMesh.mTriangles == any.Get().mMesh.mTriangles);
+    CHECK(TotalArea(flat.Get().mMesh) == Approx(1.0).epsilon(1e-12));
+
+    // A cube: every triangle has a box edge, bent 90 degrees: nothing is cut, so no vertex lands on a facet
+    // off the surface it stands for.
+    const TriangleMesh cube = Cube();
+    Result<RefinedMesh> kept = RefineLongEdges(cube, 0.3, 4'000'000, two_degrees);
+    REQUIRE(kept);
+    CHECK(kept.Get().mSplitParents.empty());
+    CHECK(kept.Get().mMesh.mTriangles == cube.mTriangles);
+
+    // A half cylinder of 12 facets (15 degrees apart), 2 m long: its long edges along the axis are bent and
+    // stay whole; without a bend limit they are cut.
+    TriangleMesh tube;
+    for (int i = 0; i <= 12; ++i)
+    {
+        const double angle = std::numbers::pi * i / 12.0;
+        tube.mPositions.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+        tube.mPositions.emplace_back(std::cos(angle), std::sin(angle), 2.0);
+    }
+    for (std::uint32_t i = 0; i < 12; ++i)
+    {
+        tube.mTriangles.push_back({2 * i, 2 * i + 2, 2 * i + 1});
+        tube.mTriangles.push_back({2 * i + 1, 2 * i + 2, 2 * i + 3});
+    }
+    Result<RefinedMesh> tube_kept = RefineLongEdges(tube, 0.3, 4'000'000, two_degrees);
+    Result<RefinedMesh> tube_cut = RefineLongEdges(tube, 0.3);
+    REQUIRE(tube_kept);
+    REQUIRE(tube_cut);
+    CHECK(tube_kept.Get().mSplitParents.empty());
+    CHECK(LongestEdge(tube_cut.Get().mMesh) <= 0.3);
+
+    // Refused: a bend outside [0, pi].
+    CHECK_FALSE(RefineLongEdges(square, 0.3, 4'000'000, -0.1));
+    CHECK_FALSE(RefineLongEdges(square, 0.3, 4'000'000, 4.0));
+    CHECK_FALSE(RefineLongEdges(square, 0.3, 4'000'000, std::numeric_limits<double>::quiet_NaN()));
+}
