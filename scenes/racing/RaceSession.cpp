@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 
 namespace crumple::samples
 {
@@ -168,19 +169,22 @@ ffd::TriangleMesh RaceCarMesh()
     if (loaded)
     {
         // The file's caps out (flat parts Delaunay, caps flipped within a millimetre or split): with them a
-        // session's dents turned 78 (Bullet) and 135 (ODE) triangles over, every one a cap. Edges longer than
-        // a dent's pocket walls (they fade over at least two control spacings) cut in two: a triangle wider
-        // than the wall is drawn flat across a bend its corners cannot follow, and one of the floor's, 0.36 m
-        // across, turned over when the ODE car hit the parked car's corner (2 triangles; none with edges of
-        // at most 0.3 m, 0.4 m left them). Not down to one spacing as crumple-crash's re-cut: that doubles
-        // the triangles a dent updates (0.3 m: 94,257 -> 117,947 triangles, the sessions' damage frames as
-        // before).
+        // session's dents turned 78 (Bullet) and 135 (ODE) triangles over, every one a cap. Long edges of
+        // flat panels cut down to a dent's pocket walls (they fade over at least two control spacings): a
+        // triangle wider than the wall is drawn flat across a bend its corners cannot follow, and one of the
+        // floor's, 0.36 m across, turned over when the ODE car hit the parked car's corner (2 triangles; none
+        // with edges of at most 0.3 m, 0.4 m left them). Only where the triangles meet within 2 degrees: a
+        // vertex added on a curved surface's long facet showed as a streak in shading (cut everywhere:
+        // 117,947 triangles and streaks; flat panels only: 96,563 from 94,257, none turned over in either
+        // session; 10 degrees left one). Not down to one spacing as crumple-crash's re-cut: that doubles the
+        // triangles a dent updates.
         ffd::TriangleMesh mesh = loaded.Get();
         std::vector<std::vector<std::uint32_t>> no_parts;
         const double max_edge = 2.0 * DeformableObjectSettings().mFittedControlSpacing;
         if (ffd::FlipFlatEdges(mesh))
         {
-            Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(mesh, max_edge);
+            constexpr double cFlat = 2.0 * std::numbers::pi / 180.0; // rad
+            Result<ffd::RefinedMesh> refined = ffd::RefineLongEdges(mesh, max_edge, 4'000'000, cFlat);
             if (refined && ffd::FlipFlatEdges(refined.Get().mMesh) &&
                 RemoveCaps(refined.Get().mMesh, no_parts, cCarCapDeviation))
                 return std::move(refined.Get().mMesh);
