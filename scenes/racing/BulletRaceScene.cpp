@@ -175,16 +175,8 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     Result<std::unique_ptr<RaceProps>> props = RaceProps::Create(
         *s.mDamage,
         {.mMakePropBody = [&bodies](const PropBodySettings& inBody) { return bodies.CreatePropBody(inBody); },
-         .mHeld = {.mCreatePieceBody = [&bodies](const ConvexBodySettings& inBody)
-                   { return bodies.CreateConvexBody(inBody); },
-                   .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
-                   { return bodies.SetPropPieces(inBody, inPieces); },
-                   .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity)
-                   { return bodies.SetHeldVelocity(inBody, inVelocity); },
-                   // the whole prop's mass: a contact mass (SetHeldMass) follows how many points each
-                   // engine reports, and the engines part (README, known limits)
-                   .mSetHeldMass = nullptr,
-                   .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
+         .mHeld = HeldPropCalls(bodies, [&bodies](const ConvexBodySettings& inBody)
+                                { return bodies.CreateConvexBody(inBody); })},
         cFrame / 4.0, s.mSettings.mPropsOffThread);
     if (Status kept = s.KeepProps(std::move(props)); !kept)
         return kept.GetError();

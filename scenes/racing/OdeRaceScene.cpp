@@ -211,16 +211,8 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
                  s.mHeldBodies.push_back(bodies.GetConvexBody(made.Get()));
              return made;
          },
-         .mHeld = {.mCreatePieceBody = [&bodies, &s](const ConvexBodySettings& inBody)
-                   { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); },
-                   .mSetPropPieces = [&bodies](BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
-                   { return bodies.SetPropPieces(inBody, inPieces); },
-                   .mSetHeldVelocity = [&bodies](BodyId inBody, const Vec3& inVelocity)
-                   { return bodies.SetHeldVelocity(inBody, inVelocity); },
-                   // the whole prop's mass: a contact mass (SetHeldMass) follows how many points each
-                   // engine reports, and the engines part (README, known limits)
-                   .mSetHeldMass = nullptr,
-                   .mIsHeld = [&bodies](BodyId inBody) { return bodies.IsHeldPropBody(inBody); }}},
+         .mHeld = HeldPropCalls(bodies, [&bodies, &s](const ConvexBodySettings& inBody)
+                                { return bodies.CreateConvexBody(s.mWorld, s.mSpace, inBody); })},
         cStep, s.mSettings.mPropsOffThread);
     if (Status kept = s.KeepProps(std::move(props)); !kept)
         return kept.GetError();

@@ -29,6 +29,25 @@ struct RacePropEngine
     props::HeldPropEngine mHeld; ///< What props::HeldPropBodies calls after each step
 };
 
+/// The calls of props::HeldPropEngine that Bullet's and ODE's adapters take alike (SetPropPieces,
+/// SetHeldVelocity, IsHeldPropBody), bound to inAdapter, with the piece bodies' maker the engine needs
+/// (ODE's takes its world and space). Held bodies meet a contact with the whole prop's mass (no SetHeldMass:
+/// a contact mass follows how many points each engine reports, and the engines part: README, known limits).
+template <class Adapter>
+props::HeldPropEngine
+HeldPropCalls(Adapter& inAdapter,
+              std::function<Result<plugin::BodyId>(const plugin::ConvexBodySettings&)> inCreatePieceBody)
+{
+    return {
+        .mCreatePieceBody = std::move(inCreatePieceBody),
+        .mSetPropPieces = [&inAdapter](plugin::BodyId inBody, const std::vector<std::vector<Vec3>>& inPieces)
+        { return inAdapter.SetPropPieces(inBody, inPieces); },
+        .mSetHeldVelocity = [&inAdapter](plugin::BodyId inBody, const Vec3& inVelocity)
+        { return inAdapter.SetHeldVelocity(inBody, inVelocity); },
+        .mSetHeldMass = nullptr,
+        .mIsHeld = [&inAdapter](plugin::BodyId inBody) { return inAdapter.IsHeldPropBody(inBody); }};
+}
+
 /// A piece that broke loose from one of the course's props and became an engine body.
 struct RaceNewPiece
 {
