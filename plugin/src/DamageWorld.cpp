@@ -419,10 +419,11 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         const std::vector<ContactImpulse> impulses =
             FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
                                mSettings.mRestingSpeed, mSettings.mFrictionSolve);
-        // intent: spins in the world while the impulses add to them; in the bodies' frames once stored
-        // (below)
-        ImpactMemory memory{batch.mA, batch.mB, batch.mTime, state_a.mLinearVelocity, state_a.mAngularVelocity,
-                            state_b.mLinearVelocity, state_b.mAngularVelocity};
+        ImpactMemory memory{batch.mA,     batch.mB,
+                            batch.mTime,  state_a.mLinearVelocity,
+                            Vec3::Zero(), state_b.mLinearVelocity,
+                            Vec3::Zero()};
+        Vec3 spin_a = state_a.mAngularVelocity, spin_b = state_b.mAngularVelocity; // world frame
         bool pushed = false;
         for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
         {
@@ -451,12 +452,12 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
             const Vec3 impulse = contact.ImpulseOnA();
             const Vec3& point = impulse_contacts[i].mPoint;
             memory.mLinearA += state_a.InverseMass() * impulse;
-            memory.mAngularBodyA += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
+            spin_a += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
             memory.mLinearB -= state_b.InverseMass() * impulse;
-            memory.mAngularBodyB -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
+            spin_b -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
         }
-        memory.mAngularBodyA = state_a.mTransform.mRotation.transpose() * memory.mAngularBodyA;
-        memory.mAngularBodyB = state_b.mTransform.mRotation.transpose() * memory.mAngularBodyB;
+        memory.mAngularBodyA = state_a.mTransform.mRotation.transpose() * spin_a;
+        memory.mAngularBodyB = state_b.mTransform.mRotation.transpose() * spin_b;
         if (pushed || continues)
             memories.push_back(memory);
     }

@@ -263,8 +263,11 @@ bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
     ioFlight.mReport.mNotConverged += fem::HasEvent(events, fem::ETetStepEvent::SolverNotConverged) ? 1 : 0;
-    prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex]);
-    prop.mSteppedMass = mSettings.mContactMass ? UpdateContactMass(prop, ioFlight.mDeltaTime) : 0.0;
+    // intent: the taken nodes once for both, and only for a struck prop that handed pieces over
+    const std::vector<std::uint8_t> taken =
+        prop.mHits.empty() && prop.mStruck.empty() ? std::vector<std::uint8_t>() : TakenNodes(prop);
+    prop.mSteppedVelocity = UpdateContactVelocity(prop, sleeping, ioFlight.mBodyRotations[inIndex], taken);
+    prop.mSteppedMass = mSettings.mContactMass ? UpdateContactMass(prop, ioFlight.mDeltaTime, taken) : 0.0;
     return !sleeping;
 }
 
@@ -427,6 +430,9 @@ Result<std::vector<std::vector<Vec3>>> PropWorld::PiecesOf(const Prop& inProp, s
 
 std::vector<std::uint8_t> PropWorld::TakenNodes(const Prop& inProp)
 {
+    if (std::find(inProp.mTakenElements.begin(), inProp.mTakenElements.end(), std::uint8_t{1}) ==
+        inProp.mTakenElements.end())
+        return {};
     const std::vector<fem::TetIndices>& elements = inProp.mProp.GetElementNodes();
     std::vector<std::uint8_t> taken(static_cast<std::size_t>(inProp.mProp.GetNodeCount()), 0);
     for (std::size_t element = 0; element < inProp.mTakenElements.size() && element < elements.size();
@@ -498,7 +504,9 @@ Result<std::optional<std::vector<std::vector<Vec3>>>> PropWorld::TakeChangedShap
     return std::optional<std::vector<std::vector<Vec3>>>(std::move(pieces).Get());
 }
 
-Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation)
+Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping,
+                                      const std::optional<Mat3>& inBodyRotation,
+                                      std::span<const std::uint8_t> inTakenNodes)
 {
     // The latest hits stand until new ones arrive: collisions reach the prop when the world dispatches them,
     // not at every engine step, and between them the struck material goes on moving (or is held back).
@@ -521,14 +529,13 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     if (cpu == nullptr)
         ioProp.mProp.ReadVelocities(read_back);
     const std::vector<Vec3>& velocities = cpu != nullptr ? cpu->GetVelocities() : read_back;
-    const std::vector<std::uint8_t> taken = TakenNodes(ioProp);
     Vec3 sum = Vec3::Zero();
     Vec3 impulse = Vec3::Zero();
     double weight = 0.0;
     for (const NodalImpulse& hit : ioProp.mStruck)
     {
         const auto node = static_cast<std::size_t>(hit.mNode);
-        if (taken[node] != 0)
+        if (node < inTakenNodes.size() && inTakenNodes[node] != 0)
             continue;
         const double share = hit.mImpulse.norm();
         sum += share * velocities[node];
@@ -549,7 +556,8 @@ Vec3 PropWorld::UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::
     return *inBodyRotation * (speed * direction);
 }
 
-double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
+double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime,
+                                    std::span<const std::uint8_t> inTakenNodes)
 {
     fem::TetSolver* cpu = ioProp.mProp.GetCpuSolver();
     if (cpu == nullptr || ioProp.mStruck.empty())
@@ -563,11 +571,10 @@ double PropWorld::UpdateContactMass(Prop& ioProp, double inDeltaTime)
     shares.clear();
     Vec3 impulse = Vec3::Zero();
     const std::vector<double>& inverse_masses = cpu->GetInverseMasses();
-    const std::vector<std::uint8_t> taken = TakenNodes(ioProp);
     for (const NodalImpulse& hit : ioProp.mStruck)
     {
         const auto node = static_cast<std::size_t>(hit.mNode);
-        if (taken[node] != 0 || inverse_masses[node] == 0.0)
+        if ((node < inTakenNodes.size() && inTakenNodes[node] != 0) || inverse_masses[node] == 0.0)
             continue;
         nodes.push_back(hit.mNode);
         shares.push_back(hit.mImpulse.norm());

@@ -375,10 +375,14 @@ private:
     static void Settle(Prop& ioProp);
     // The struck members' velocity from the latest hits and the nodes' velocities now (world frame, by the
     // body's rotation, zero without one); moves new hits to mStruck.
-    static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping, const std::optional<Mat3>& inBodyRotation);
+    // inTakenNodes: TakenNodes of the prop (empty when none is taken).
+    static Vec3 UpdateContactVelocity(Prop& ioProp, bool inSleeping,
+                                      const std::optional<Mat3>& inBodyRotation,
+                                      std::span<const std::uint8_t> inTakenNodes);
     // GetContactMass's figure after a step of inDeltaTime (s), from the struck nodes UpdateContactVelocity
     // kept (0 where there are none, or for a GPU prop).
-    static double UpdateContactMass(Prop& ioProp, double inDeltaTime);
+    static double UpdateContactMass(Prop& ioProp, double inDeltaTime,
+                                    std::span<const std::uint8_t> inTakenNodes);
     // The fragments of inFragments (inProp's) that TakeLooseFragments hands over, ascending.
     static std::vector<std::size_t> LeavingFragments(const Prop& inProp, const std::vector<fem::TetFragment>& inFragments);
     // TakeChangedShape's test: pieces were taken since the last shape, or a node moved more than inTolerance.
@@ -393,7 +397,7 @@ private:
     // The forecast's shape holds for a TakeChangedShape of inProp at inPositions with inCellSize: it has one,
     // for that cell size, the pieces and elements taken since are those it foresaw, and ForecastHolds.
     static bool ShapeForecastHolds(const Prop& inProp, std::span<const Vec3> inPositions, double inCellSize);
-    // Per current node of inProp: a node of a taken element (a piece handed over). O(#T).
+    // Per current node of inProp: a node of a taken element (a piece handed over); empty when none is. O(#T).
     static std::vector<std::uint8_t> TakenNodes(const Prop& inProp);
     // The same elements taken (one byte each), an element past the end of either counting as not taken.
     static bool SameTaken(std::span<const std::uint8_t> inA, std::span<const std::uint8_t> inB);
