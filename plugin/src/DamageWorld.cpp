@@ -419,10 +419,9 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         const std::vector<ContactImpulse> impulses =
             FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
                                mSettings.mRestingSpeed, mSettings.mFrictionSolve);
-        ImpactMemory memory{batch.mA,     batch.mB,
-                            batch.mTime,  state_a.mLinearVelocity,
-                            Vec3::Zero(), state_b.mLinearVelocity,
-                            Vec3::Zero()};
+        ImpactMemory memory{batch.mA, batch.mB, batch.mTime};
+        memory.mLinearA = state_a.mLinearVelocity;
+        memory.mLinearB = state_b.mLinearVelocity;
         Vec3 spin_a = state_a.mAngularVelocity, spin_b = state_b.mAngularVelocity; // world frame
         bool pushed = false;
         for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
