@@ -419,7 +419,10 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
         const std::vector<ContactImpulse> impulses =
             FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
                                mSettings.mRestingSpeed, mSettings.mFrictionSolve);
-        ImpactMemory memory{batch.mA, batch.mB, batch.mTime};
+        ImpactMemory memory;
+        memory.mA = batch.mA;
+        memory.mB = batch.mB;
+        memory.mTime = batch.mTime;
         memory.mLinearA = state_a.mLinearVelocity;
         memory.mLinearB = state_b.mLinearVelocity;
         Vec3 spin_a = state_a.mAngularVelocity, spin_b = state_b.mAngularVelocity; // world frame
