@@ -28,6 +28,7 @@ set(CRUMPLE_FEM_TET_SOURCES
     src/TetFactoredPreconditioner.cpp
     src/TetFence.cpp
     src/TetGrid.cpp
+    src/TetGroundContact.cpp
     src/TetMesh.cpp
     src/TetNodalForces.cpp
     src/TetPassParallel.cpp

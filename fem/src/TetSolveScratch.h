@@ -10,6 +10,7 @@
 #include <crumple/base/Math.h>
 #include <crumple/fem/TetLinearization.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace crumple::fem
@@ -28,6 +29,8 @@ struct TetSolveScratch
     std::vector<Vec3> mDeltaV;         ///< #N
     std::vector<Vec3> mPreconditioned; ///< #N
     std::vector<Mat3> mBlocks;         ///< #N diagonal blocks for block Jacobi
+    std::vector<std::uint8_t> mGroundHeld; ///< #N nodes the ground holds this step (sized with a ground only)
+    std::vector<double> mGroundImpulses;   ///< #N the ground's normal impulse on them (N s)
     /// ContactEffectiveMass's linearisation where the solver holds none of its positions (sized on first
     /// need)
     std::vector<TetLinearization> mContactLinearization; ///< #T

@@ -12,6 +12,7 @@
 #include "ConjugateGradient.h"
 #include "TetElementPass.h"
 #include "TetFactoredPreconditioner.h"
+#include "TetGroundContact.h"
 #include "TetPreconditioner.h"
 #include "TetSolveScratch.h"
 
@@ -43,6 +44,30 @@ Error SettingError(const char* inField, double inValue, const char* inReason)
     std::ostringstream message;
     message << "TetSolverSettings." << inField << " = " << inValue << ": " << inReason;
     return MakeError(std::isfinite(inValue) ? EError::InvalidArgument : EError::NonFinite, message.str());
+}
+
+// The ground: a unit normal, a finite offset and friction, and the implicit integrator (the only one that
+// holds nodes on it).
+Status ValidateGround(const TetSolverSettings& inSettings)
+{
+    const GroundPlane& ground = inSettings.mGround;
+    if (!ground.mEnabled)
+        return Status::Ok();
+    if (!IsFinite(ground.mNormal) || !(std::abs(ground.mNormal.norm() - 1.0) <= 1.0e-9))
+        return MakeError(
+            IsFinite(ground.mNormal) ? EError::InvalidArgument : EError::NonFinite,
+            "TetSolverSettings.mGround.mNormal must be a finite unit vector (length 1 within 1e-9)");
+    if (!(std::abs(ground.mOffset) <= TetSolver::cMaxStateMagnitude))
+        return SettingError("mGround.mOffset", ground.mOffset,
+                            "must be finite, within 1e100 m (cMaxStateMagnitude)");
+    if (!(ground.mFriction >= 0.0) || !std::isfinite(ground.mFriction))
+        return SettingError("mGround.mFriction", ground.mFriction, "must be finite and >= 0");
+    if (inSettings.mIntegrator != EIntegrator::ImplicitEuler)
+        return MakeError(
+            EError::InvalidArgument,
+            "TetSolverSettings.mGround needs EIntegrator::ImplicitEuler (the symplectic integrator holds "
+            "no node on a ground)");
+    return Status::Ok();
 }
 
 Status ValidateSettings(const TetSolverSettings& inSettings)
@@ -89,7 +114,7 @@ Status ValidateSettings(const TetSolverSettings& inSettings)
     if (!(inSettings.mDivergenceEnergyRatio > 0.0 && inSettings.mDivergenceEnergyRatio < 1.0))
         return SettingError("mDivergenceEnergyRatio", inSettings.mDivergenceEnergyRatio,
                             "must lie in (0, 1); at 1 or more a blow-up is never detected");
-    return Status::Ok();
+    return ValidateGround(inSettings);
 }
 
 Status CheckNode(int inNode, int inNodeCount, const char* inCaller)
@@ -642,12 +667,23 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     const double stiffness_scale = h * h + h * material.mStiffnessDamping;
     const TetElementPassInput input = ParallelPassInput();
     const std::size_t node_count = mPositions.size();
+    TetSolveScratch& scratch = mWorkspace.Get();
+    scratch.Resize(node_count);
     mStartPositions = mPositions;
     mStartVelocities = mVelocities;
     const std::vector<Vec3>& x0 = mStartPositions;
     const std::vector<Vec3>& v0 = mStartVelocities;
-    TetSolveScratch& scratch = mWorkspace.Get();
-    scratch.Resize(node_count);
+    // The nodes the ground holds through this step, their normal velocity in the iterate set to end it on the
+    // ground, if it has one (the filter below is on for the whole step with one: nodes may join in a Newton
+    // update).
+    const GroundPlane& ground = mSettings.mGround;
+    if (ground.mEnabled)
+    {
+        scratch.mGroundHeld.resize(node_count);
+        scratch.mGroundImpulses.resize(node_count);
+        HoldGroundNodes(ground, mFree, mNodeRestPositions, x0, h, scratch.mGroundHeld, mVelocities);
+    }
+    const std::uint8_t* held = ground.mEnabled ? scratch.mGroundHeld.data() : nullptr;
     std::uint64_t products = 0;
 
     // Matrix-free system operator A, masked to the free nodes (one captured pointer: std::function keeps it
@@ -659,7 +695,9 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         double mMassScale;
         double mStiffnessScale;
         std::uint64_t* mProducts;
-    } context{this, &input, mass_scale, stiffness_scale, &products};
+        const std::uint8_t* mGroundHeld; // null without a ground
+        const Vec3* mGroundNormal;
+    } context{this, &input, mass_scale, stiffness_scale, &products, held, &ground.mNormal};
     const LinearOperator3 system = [ctx = &context](std::span<const Vec3> inX, std::span<Vec3> outY)
     {
         const TetSolver& solver = *ctx->mSolver;
@@ -669,6 +707,8 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             outY[node] = solver.mFree[node] != 0 ? Vec3(ctx->mMassScale * solver.mMasses[node] * inX[node] +
                                                         ctx->mStiffnessScale * outY[node])
                                                  : Vec3::Zero();
+        if (ctx->mGroundHeld != nullptr)
+            FilterGroundNormal(*ctx->mGroundNormal, {ctx->mGroundHeld, outY.size()}, outY);
     };
 
     // The factored rest system when it applies (built on the first step, after fracture, anchoring or a new
@@ -683,13 +723,17 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     {
         TetFactoredPreconditioner** mFactored;
         const TetPreconditioner* mJacobi;
-    } choice{&factored, &jacobi};
+        const std::uint8_t* mGroundHeld; // null without a ground
+        const Vec3* mGroundNormal;
+    } choice{&factored, &jacobi, held, &ground.mNormal};
     const LinearOperator3 preconditioner = [ctx = &choice](std::span<const Vec3> inR, std::span<Vec3> outZ)
     {
         if (*ctx->mFactored != nullptr)
             (*ctx->mFactored)->Apply(inR, outZ);
         else
             ctx->mJacobi->Apply(inR, outZ);
+        if (ctx->mGroundHeld != nullptr)
+            FilterGroundNormal(*ctx->mGroundNormal, {ctx->mGroundHeld, outZ.size()}, outZ);
     };
 
     // Energy scale of the step (J): kinetic energy at the start, relative to the free centre of mass when
@@ -751,6 +795,15 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                      material.mMassDamping * m * mVelocities[node] -
                      ((first ? h : 0.0) + material.mStiffnessDamping) * scratch.mKv[node]) -
                 m * (mVelocities[node] - v0[node]);
+        }
+
+        // The ground takes the normal part of its held nodes' residual (their impulse from it), unless it
+        // would pull: that node leaves it for the rest of the step.
+        if (held != nullptr)
+        {
+            ReleasePulledNodes(ground.mNormal, scratch.mResidual, scratch.mGroundHeld);
+            GroundImpulses(ground.mNormal, scratch.mGroundHeld, scratch.mResidual, scratch.mGroundImpulses);
+            FilterGroundNormal(ground.mNormal, scratch.mGroundHeld, scratch.mResidual);
         }
 
         // The factored preconditioner follows the element frames just updated.
@@ -822,15 +875,29 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                 mVelocities[node] += scratch.mDeltaV[node];
                 mPositions[node] = x0[node] + h * mVelocities[node];
             }
+        if (held != nullptr)
+            HoldCrossingNodes(ground, mFree, mNodeRestPositions, x0, h, scratch.mGroundHeld, mPositions,
+                              mVelocities);
         ++ioResult.mNewtonIterations;
     }
     mElementWork += products * mActiveElementCount;
     if (!converged)
         ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
 
+    // The ground's friction and the nodes that ended below it; positions it moved are not those of the last
+    // pass.
+    bool ground_moved = false;
+    if (ground.mEnabled)
+    {
+        ground_moved = FinishGroundStep(ground, mFree, mNodeRestPositions, scratch.mGroundHeld,
+                                        scratch.mGroundImpulses, mMasses, x0, h, mPositions, mVelocities);
+        if (ground_moved)
+            mPassEnergyValid = false;
+    }
+
     // The last pass was at the final positions: keep them as the key of mForces, mLinearization, mRotations.
     mForcePositions = mPositions;
-    mForcesCached = true;
+    mForcesCached = !ground_moved;
 }
 
 bool TetSolver::RefreshesFactor() const

@@ -16,6 +16,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetEnergyTest.cpp
     fem/TetFenceTest.cpp
     fem/TetGridTest.cpp
+    fem/TetGroundTest.cpp
     fem/TetMeshTest.cpp
     fem/TetNodalForcesTest.cpp
     fem/TetPatchTest.cpp

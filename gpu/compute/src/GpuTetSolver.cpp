@@ -115,6 +115,9 @@ Result<GpuTetSolver> GpuTetSolver::CreateFromReference(std::shared_ptr<ComputeDe
 {
     if (!inDevice)
         return MakeError(EError::InvalidArgument, "GpuTetSolver: no compute device");
+    if (inSettings.mGround.mEnabled)
+        return MakeError(EError::InvalidArgument,
+                         "GpuTetSolver: a ground (TetSolverSettings::mGround) is CPU-only");
     const fem::TetSolver& cpu = inReference;
     const fem::FemMaterial& material = cpu.GetMaterial();
 

@@ -7,6 +7,7 @@
 #include <crumple/base/Math.h>
 #include <crumple/fem/EImplicitPreconditioner.h>
 #include <crumple/fem/EIntegrator.h>
+#include <crumple/fem/GroundPlane.h>
 
 namespace crumple::fem
 {
@@ -19,6 +20,9 @@ struct CRUMPLE_API TetSolverSettings
     /// sub-step
     EIntegrator mIntegrator = EIntegrator::ImplicitEuler;
     Vec3 mGravity = Vec3(0.0, 0.0, -9.81); ///< Acceleration of gravity (m/s^2), world frame, z up
+    /// A ground the free nodes rest on (off by default; implicit Euler only; GroundPlane). SolveStatic()
+    /// ignores it.
+    GroundPlane mGround;
 
     /// Symplectic Euler: each sub-step is mStabilitySafetyFactor x the proven stable limit of
     /// StableTimeStep(), in (0, 1]. At 0.5 the stiffest mode has omega dt <= 1, so the paper's explicit-Euler

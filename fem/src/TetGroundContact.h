@@ -1,0 +1,65 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <crumple/base/Math.h>
+#include <crumple/fem/GroundPlane.h>
+
+#include <cstdint>
+#include <span>
+
+namespace crumple::fem
+{
+
+// The ground's part of TetSolver's implicit step (GroundPlane): which nodes it holds, the filter that keeps
+// their normal velocity out of the solve, and the friction and projection after it. Private to the solver.
+
+/// Marks in outHeld (#N, overwritten) the free nodes (inFree) whose rest position (inRest) lies above
+/// inGround and whose start position (inStartPositions) is on it or below, and gives each, in the step's
+/// velocity iterate ioVelocities, no normal velocity (a node placed below the ground is stopped there, not
+/// pushed out, which would do work). A node the step's solve would take through the ground joins later
+/// (HoldCrossingNodes): a start velocity alone says little where an impulse struck a few light nodes, whose
+/// momentum the solve spreads over the body.
+/// @return how many are held
+int HoldGroundNodes(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
+                    std::span<const Vec3> inRest, std::span<const Vec3> inStartPositions, double inDeltaTime,
+                    std::span<std::uint8_t> outHeld, std::span<Vec3> ioVelocities);
+
+/// After a Newton update: holds the free nodes not held yet (rest position above the ground) that the update
+/// took below the ground, their normal velocity and position (ioPositions = start + inDeltaTime ioVelocities)
+/// set to land on it at the step's end: an approaching node lands instead of going through (its impact
+/// reaches the rest of the body through the solve, not through a moved position, which would strain a stiff
+/// body by the whole step's approach).
+/// @return how many were added
+int HoldCrossingNodes(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
+                      std::span<const Vec3> inRest, std::span<const Vec3> inStartPositions,
+                      double inDeltaTime, std::span<std::uint8_t> ioHeld, std::span<Vec3> ioPositions,
+                      std::span<Vec3> ioVelocities);
+
+/// Lets go of the held nodes whose momentum residual (inResidual, #N) points away from the ground: there the
+/// ground would have to pull (Baraff & Witkin release a constraint whose force changes sign).
+/// @return how many were let go
+int ReleasePulledNodes(const Vec3& inNormal, std::span<const Vec3> inResidual,
+                       std::span<std::uint8_t> ioHeld);
+
+/// Removes the normal part of ioValues at the held nodes (Baraff & Witkin's filter S = I - n n^T).
+void FilterGroundNormal(const Vec3& inNormal, std::span<const std::uint8_t> inHeld, std::span<Vec3> ioValues);
+
+/// The ground's normal impulse on each held node, -n . r from the momentum residual inResidual (N s, >= 0
+/// once ReleasePulledNodes has run), into outImpulses (#N; 0 at the other nodes).
+void GroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHeld,
+                    std::span<const Vec3> inResidual, std::span<double> outImpulses);
+
+/// After the solve: each held node's tangential velocity slowed by inGround.mFriction times its impulse per
+/// unit mass (at most to zero) and its position moved to x0 + h v; each other free node still below the
+/// ground (rest position above it; only where Newton stopped at its iteration limit) put on it, its
+/// approaching velocity removed and its tangential velocity slowed by inGround.mFriction times the removed
+/// speed.
+/// @return true when a position or velocity changed
+bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
+                      std::span<const Vec3> inRest, std::span<const std::uint8_t> inHeld,
+                      std::span<const double> inImpulses, std::span<const double> inMasses,
+                      std::span<const Vec3> inStartPositions, double inDeltaTime, std::span<Vec3> ioPositions,
+                      std::span<Vec3> ioVelocities);
+
+} // namespace crumple::fem

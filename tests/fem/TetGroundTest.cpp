@@ -1,0 +1,276 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include <crumple/fem/TetGrid.h>
+#include <crumple/fem/TetSolver.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace crumple;
+using namespace crumple::fem;
+
+namespace
+{
+
+constexpr double cGravity = 9.81;
+
+// A 0.2 m cube of the default material (1 GPa, 1,000 kg/m^3), 2 x 2 x 2 cells, its lowest face at inBottom,
+// free, under gravity along -z, over the ground z = 0 with inFriction.
+TetSolver MakeBlock(double inBottom, double inFriction, double inMassDamping = 0.0)
+{
+    TetGridSettings grid;
+    grid.mOrigin = Vec3(-0.1, -0.1, inBottom);
+    grid.mSize = Vec3(0.2, 0.2, 0.2);
+    grid.mCellCount = {2, 2, 2};
+    FemMaterialSettings material;
+    material.mMassDamping = inMassDamping;
+    TetSolverSettings settings;
+    settings.mGravity = Vec3(0.0, 0.0, -cGravity);
+    settings.mGround.mEnabled = true;
+    settings.mGround.mNormal = Vec3(0.0, 0.0, 1.0);
+    settings.mGround.mOffset = 0.0;
+    settings.mGround.mFriction = inFriction;
+    Result<TetSolver> solver = TetSolver::Create(TetGrid(grid).Get(), material, settings);
+    REQUIRE(solver.IsValid());
+    return std::move(solver).Get();
+}
+
+double TotalMass(const TetSolver& inSolver)
+{
+    double mass = 0.0;
+    for (double m : inSolver.GetMasses())
+        mass += m;
+    return mass;
+}
+
+// Mass-weighted mean of inValues (the centre of mass of positions, the momentum over mass of velocities).
+Vec3 MassMean(const TetSolver& inSolver, const std::vector<Vec3>& inValues)
+{
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t node = 0; node < inValues.size(); ++node)
+        sum += inSolver.GetMasses()[node] * inValues[node];
+    return sum / TotalMass(inSolver);
+}
+
+double LowestZ(const TetSolver& inSolver)
+{
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Vec3& position : inSolver.GetPositions())
+        lowest = std::min(lowest, position.z());
+    return lowest;
+}
+
+} // namespace
+
+TEST_CASE(
+    "Ground: a dropped block falls freely, lands without going through, gains no energy and sleeps on it",
+    "[fem]")
+{
+    const double drop = 0.5, h = 1.0 / 120.0;
+    TetSolver block = MakeBlock(drop, 0.6);
+    const double mass = TotalMass(block);
+    // Mechanical energy with the ground's height as zero: kinetic + elastic + M g z_com.
+    const auto energy = [&]
+    {
+        return block.KineticEnergy() + block.ElasticEnergy() +
+               mass * cGravity * MassMean(block, block.GetPositions()).z();
+    };
+    const double start_energy = energy();
+    double last_energy = start_energy;
+    int landed_step = -1, asleep_step = -1;
+    for (int step = 1; step <= 600 && asleep_step < 0; ++step)
+    {
+        Result<TetStepResult> result = block.Step(h);
+        REQUIRE(result.IsValid());
+        REQUIRE_FALSE(HasEvent(result.Get().mEvents, ETetStepEvent::Diverged));
+        // Never through the ground (a node put on it lands within round-off of the plane).
+        REQUIRE(LowestZ(block) >= -1.0e-9);
+        const double now = energy();
+        CHECK(now <= last_energy + 1.0e-9 * start_energy);
+        last_energy = now;
+        if (landed_step < 0 && LowestZ(block) <= 1.0e-9)
+            landed_step = step;
+        if (landed_step < 0)
+        {
+            // Free fall before it lands: implicit Euler is exact for the rigid motion, v = -g t.
+            CHECK(MassMean(block, block.GetVelocities()).z() == Approx(-cGravity * step * h).epsilon(1.0e-9));
+        }
+        if (HasEvent(result.Get().mEvents, ETetStepEvent::FellAsleep))
+            asleep_step = step;
+    }
+    // It lands in the step in which the implicit fall z(n) = drop - g h^2 n (n + 1) / 2 reaches the ground.
+    int expected_landing = 1;
+    while (drop - cGravity * h * h * expected_landing * (expected_landing + 1) / 2.0 > 0.0)
+        ++expected_landing;
+    CHECK(landed_step == expected_landing);
+    WARN("landed at step " << landed_step << ", asleep at step " << asleep_step << " of " << h << " s");
+    REQUIRE(asleep_step > 0);
+    CHECK(block.IsSleeping());
+    // It rests on its lowest face, barely compressed by its weight (sigma = rho g z: strain under 1e-5).
+    CHECK(LowestZ(block) == Approx(0.0).margin(1.0e-9));
+    CHECK(MassMean(block, block.GetPositions()).z() == Approx(0.1).margin(1.0e-4));
+    CHECK(MassMean(block, block.GetPositions()).head<2>().norm() < 1.0e-6);
+    for (const Vec3& velocity : block.GetVelocities())
+        CHECK(velocity == Vec3::Zero());
+}
+
+TEST_CASE("Ground: a block sliding on it decelerates by mu g and stops where Coulomb's law says", "[fem]")
+{
+    const double h = 1.0 / 240.0, friction = 0.5, speed = 2.0;
+    // Rest it on the ground first, then send it sliding along x.
+    TetSolver block = MakeBlock(0.0, friction, 2.0);
+    for (int step = 0; step < 240 && !block.IsSleeping(); ++step)
+        REQUIRE(block.Step(h).IsValid());
+    REQUIRE(block.IsSleeping());
+    std::vector<Vec3> velocities(block.GetVelocities().size(), Vec3(speed, 0.0, 0.0));
+    REQUIRE(block.SetVelocities(velocities).IsValid());
+    const Vec3 start = MassMean(block, block.GetPositions());
+
+    // Until it stops, each step's friction takes mu M g h of momentum (the normal impulses carry the weight),
+    // after the solve's mass damping: v(n) = v(n-1) / (1 + alpha h) - mu g h, x(n) = x(n-1) + h v(n).
+    const double damping = 2.0;
+    double expected_speed = speed, expected_travel = 0.0;
+    int expected_stop = 0;
+    for (int step = 1; expected_speed > 0.0; ++step)
+    {
+        expected_speed = std::max(0.0, expected_speed / (1.0 + damping * h) - friction * cGravity * h);
+        expected_travel += h * expected_speed;
+        expected_stop = step;
+    }
+    double worst_speed_error = 0.0;
+    int stop = 0;
+    expected_speed = speed;
+    for (int step = 1; step <= 240; ++step)
+    {
+        REQUIRE(block.Step(h).IsValid());
+        const double v = MassMean(block, block.GetVelocities()).x();
+        expected_speed = std::max(0.0, expected_speed / (1.0 + damping * h) - friction * cGravity * h);
+        // intent: compared while it slides fast; slower, the front and back edges take turns leaving the
+        // ground (friction pitches the block) and the shear friction put in it rings when it stops, which the
+        // travel and stop below bound
+        if (expected_speed >= 0.5 * speed)
+            worst_speed_error = std::max(worst_speed_error, std::abs(v - expected_speed));
+        if (stop == 0 && v < 0.01 * speed)
+            stop = step;
+    }
+    const double travelled = MassMean(block, block.GetPositions()).x() - start.x();
+    WARN("slid " << travelled << " m (Coulomb: " << expected_travel << " m), below 1 % of its speed at step "
+                 << stop << " (Coulomb: stopped at " << expected_stop << "), worst speed error "
+                 << worst_speed_error << " m/s");
+    CHECK(worst_speed_error < 0.001 * speed);
+    CHECK(travelled == Approx(expected_travel).epsilon(0.01));
+    CHECK(std::abs(stop - expected_stop) <= 3);
+    CHECK(LowestZ(block) >= -1.0e-9);
+}
+
+TEST_CASE("Ground: it never pulls; a block lifted by a force larger than its weight leaves it", "[fem]")
+{
+    const double h = 1.0 / 240.0;
+    TetSolver block = MakeBlock(0.0, 0.6);
+    for (int step = 0; step < 240 && !block.IsSleeping(); ++step)
+        REQUIRE(block.Step(h).IsValid());
+    REQUIRE(block.IsSleeping());
+    // Twice its weight upwards, spread over the nodes by mass: it accelerates up at g.
+    for (int node = 0; node < block.GetNodeCount(); ++node)
+        REQUIRE(
+            block.SetExternalForce(node, Vec3(0.0, 0.0, 2.0 * block.GetMasses()[node] * cGravity)).IsValid());
+    const double start = MassMean(block, block.GetPositions()).z();
+    const int steps = 24;
+    for (int step = 0; step < steps; ++step)
+        REQUIRE(block.Step(h).IsValid());
+    // z(n) = z0 + g h^2 n (n + 1) / 2 for implicit Euler from rest; every node has left the ground.
+    const double risen = MassMean(block, block.GetPositions()).z() - start;
+    CHECK(risen == Approx(cGravity * h * h * steps * (steps + 1) / 2.0).epsilon(1.0e-3));
+    CHECK(LowestZ(block) > 1.0e-3);
+}
+
+TEST_CASE("Ground: nodes set into it at rest are not held, so a buried part moves as without a ground",
+          "[fem]")
+{
+    TetGridSettings grid;
+    grid.mOrigin = Vec3(-0.1, -0.1, -0.3);
+    grid.mSize = Vec3(0.2, 0.2, 0.2);
+    grid.mCellCount = {2, 2, 2};
+    TetSolverSettings settings;
+    settings.mGravity = Vec3(0.0, 0.0, -cGravity);
+    TetSolverSettings grounded = settings;
+    grounded.mGround.mEnabled = true;
+    Result<TetSolver> free = TetSolver::Create(TetGrid(grid).Get(), {}, settings);
+    Result<TetSolver> buried = TetSolver::Create(TetGrid(grid).Get(), {}, grounded);
+    REQUIRE(free.IsValid());
+    REQUIRE(buried.IsValid());
+    std::vector<Vec3> up(free.Get().GetVelocities().size(), Vec3(0.3, 0.0, 1.0));
+    REQUIRE(free.Get().SetVelocities(up).IsValid());
+    REQUIRE(buried.Get().SetVelocities(up).IsValid());
+    for (int step = 0; step < 60; ++step)
+    {
+        REQUIRE(free.Get().Step(1.0 / 60.0).IsValid());
+        REQUIRE(buried.Get().Step(1.0 / 60.0).IsValid());
+    }
+    // It rose through the ground and fell back through it: bit for bit the motion without one.
+    CHECK(free.Get().GetPositions() == buried.Get().GetPositions());
+    CHECK(free.Get().GetVelocities() == buried.Get().GetVelocities());
+}
+
+TEST_CASE("Ground: a copy made while resting on it continues bit for bit", "[fem]")
+{
+    TetSolver block = MakeBlock(0.05, 0.6);
+    for (int step = 0; step < 20; ++step)
+        REQUIRE(block.Step(1.0 / 120.0).IsValid());
+    REQUIRE(LowestZ(block) <= 1.0e-9); // landed
+    TetSolver copy = block;
+    std::vector<Vec3> push(block.GetVelocities().size(), Vec3(1.0, 0.5, 0.0));
+    REQUIRE(block.SetVelocities(push).IsValid());
+    REQUIRE(copy.SetVelocities(push).IsValid());
+    for (int step = 0; step < 30; ++step)
+    {
+        REQUIRE(block.Step(1.0 / 120.0).IsValid());
+        REQUIRE(copy.Step(1.0 / 120.0).IsValid());
+    }
+    CHECK(block.GetPositions() == copy.GetPositions());
+    CHECK(block.GetVelocities() == copy.GetVelocities());
+}
+
+TEST_CASE("Ground: a bad ground is refused with its reason", "[fem]")
+{
+    TetGridSettings grid;
+    const TetMesh mesh = TetGrid(grid).Get();
+    struct Case
+    {
+        const char* mName;
+        GroundPlane mGround;
+        EIntegrator mIntegrator;
+        const char* mReason;
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Case cases[] = {
+        {"zero normal", {true, Vec3::Zero(), 0.0, 0.5}, EIntegrator::ImplicitEuler, "unit vector"},
+        {"long normal", {true, Vec3(0.0, 0.0, 2.0), 0.0, 0.5}, EIntegrator::ImplicitEuler, "unit vector"},
+        {"NaN normal", {true, Vec3(nan, 0.0, 1.0), 0.0, 0.5}, EIntegrator::ImplicitEuler, "unit vector"},
+        {"NaN offset", {true, Vec3::UnitZ(), nan, 0.5}, EIntegrator::ImplicitEuler, "mOffset"},
+        {"huge offset", {true, Vec3::UnitZ(), 1.0e200, 0.5}, EIntegrator::ImplicitEuler, "mOffset"},
+        {"negative friction", {true, Vec3::UnitZ(), 0.0, -0.1}, EIntegrator::ImplicitEuler, "mFriction"},
+        {"infinite friction",
+         {true, Vec3::UnitZ(), 0.0, std::numeric_limits<double>::infinity()},
+         EIntegrator::ImplicitEuler,
+         "mFriction"},
+        {"symplectic", {true, Vec3::UnitZ(), 0.0, 0.5}, EIntegrator::SymplecticEuler, "ImplicitEuler"},
+    };
+    for (const Case& c : cases)
+    {
+        INFO(c.mName);
+        TetSolverSettings settings;
+        settings.mIntegrator = c.mIntegrator;
+        settings.mGround = c.mGround;
+        Result<TetSolver> solver = TetSolver::Create(mesh, {}, settings);
+        REQUIRE(solver.HasError());
+        CHECK_THAT(solver.GetError().mMessage, Catch::Contains(c.mReason));
+    }
+    // Switched off, its fields are not read.
+    TetSolverSettings off;
+    off.mGround = {false, Vec3::Zero(), nan, -1.0};
+    CHECK(TetSolver::Create(mesh, {}, off).IsValid());
+}
