@@ -9,6 +9,27 @@
 namespace crumple::props
 {
 
+namespace
+{
+
+// inSolver with its gravity and ground turned from the world frame into the frame of a body at inPose.
+fem::TetSolverSettings InBodyFrame(const fem::TetSolverSettings& inSolver,
+                                   const plugin::PropBodySettings& inBody)
+{
+    const Transform pose{inBody.mOrientation, inBody.mPosition};
+    fem::TetSolverSettings solver = inSolver;
+    solver.mGravity = pose.DirectionToBody(inSolver.mGravity);
+    if (solver.mGround.mEnabled)
+    {
+        // n . (R x + t) = d  <=>  (R^T n) . x = d - n . t
+        solver.mGround.mNormal = pose.DirectionToBody(inSolver.mGround.mNormal);
+        solver.mGround.mOffset = inSolver.mGround.mOffset - inSolver.mGround.mNormal.dot(inBody.mPosition);
+    }
+    return solver;
+}
+
+} // namespace
+
 fem::TetSolverSettings HeldPropSolverSettings()
 {
     fem::TetSolverSettings solver;
@@ -22,11 +43,6 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
                                 double inContactSpread, const FemPropSettings& inPropSettings,
                                 gpu::ComputeDeviceProvider* ioProvider)
 {
-    // intent: refused, not overridden: a game that set a gravity meant something the held body cannot do
-    if (!(inSolver.mGravity.array() == 0.0).all())
-        return MakeError(EError::InvalidArgument,
-                         "MakeHeldFemProp: a held prop's FEM has no gravity (its held body stands for what holds it "
-                         "up; loose pieces fall in the engine); start from HeldPropSolverSettings()");
     if (Status radius = CheckContactSpreadRadius(inContactSpread, "MakeHeldFemProp"); radius.HasError())
         return radius.GetError();
     Result<FemProp> prop = FemProp::Create(ioProvider, inBodyMesh, inMaterial, inSolver, inPropSettings);
@@ -56,8 +72,9 @@ AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMateri
     Result<PropBody> made = MakePropBody(inMesh, inMaterial.mDensity, inPose, true, inShapeCellSize);
     if (!made)
         return made.GetError();
-    Result<FemProp> prop = MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes, inSolver,
-                                           inContactSpread, inPropSettings, ioProvider);
+    Result<FemProp> prop =
+        MakeHeldFemProp(made.Get().mMesh, inMaterial, inAnchoredNodes,
+                        InBodyFrame(inSolver, made.Get().mBody), inContactSpread, inPropSettings, ioProvider);
     if (!prop)
         return prop.GetError();
     // intent: what AddProp would refuse of the prop itself (a failed or closed recorder) is refused before the

@@ -30,6 +30,11 @@ constexpr std::uint32_t cContactSpreadTag = 0x44525053u;
 // refresh settings and the spread only when it is finite: a record without it was made before the Newton test
 // had that bound, and replays with none.
 constexpr std::uint32_t cCrackToleranceTag = 0x4B435243u;
+// Marks a ground (TetSolverSettings::mGround, "GRND": normal, offset, friction), written last and only when
+// the prop has one: a record without it replays with none, as it ran.
+constexpr std::uint32_t cGroundTag = 0x444E5247u;
+// Bytes of the ground's record after its tag: three doubles of normal, the offset, the friction.
+constexpr std::size_t cGroundBytes = 5 * 8;
 
 // Refuses a count that the remaining bytes cannot hold at inBytesEach bytes per item.
 bool ReadCount(ByteReader& ioReader, std::size_t inBytesEach, std::uint32_t& outCount)
@@ -249,6 +254,13 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
         writer.WriteU32(cCrackToleranceTag);
         writer.WriteDouble(inSetup.mSettings.mCrackStressTolerance);
     }
+    if (const fem::GroundPlane& ground = inSetup.mSettings.mGround; ground.mEnabled)
+    {
+        writer.WriteU32(cGroundTag);
+        writer.WriteVec3(ground.mNormal);
+        writer.WriteDouble(ground.mOffset);
+        writer.WriteDouble(ground.mFriction);
+    }
     return writer.TakeBytes();
 }
 
@@ -290,7 +302,7 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     // infinity replay it as it ran
     setup.mSettings.mFactorRefreshIterations = 0;
     setup.mSettings.mCrackStressTolerance = std::numeric_limits<double>::infinity();
-    if (!reader.Failed() && reader.Remaining() >= 8 && reader.Remaining() <= 8 + 12 + 12)
+    if (!reader.Failed() && reader.Remaining() >= 8 && reader.Remaining() <= 8 + 12 + 12 + 4 + cGroundBytes)
     {
         if (reader.ReadU32() != cRefreshSettingsTag)
             return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
@@ -298,13 +310,24 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
             return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
         setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
-        // intent: the optional tagged settings, each 12 bytes, in the order they are written. A record cut by
-        // exactly their bytes reads as one without them; the replay file's CRC per record is what catches
-        // such a cut.
+        // intent: the optional tagged settings in the order they are written (each 12 bytes, the ground
+        // 44 and last). A record cut by exactly their bytes reads as one without them; the replay file's CRC
+        // per record is what catches such a cut.
         std::uint32_t last_tag = cRefreshSettingsTag;
-        while (reader.Remaining() == 12 || reader.Remaining() == 24)
+        while (!reader.Failed() && reader.Remaining() >= 12 && last_tag != cGroundTag)
         {
             const std::uint32_t tag = reader.ReadU32();
+            if (tag == cGroundTag && reader.Remaining() == cGroundBytes)
+            {
+                fem::GroundPlane& ground = setup.mSettings.mGround;
+                ground.mEnabled = true;
+                ground.mNormal = reader.ReadVec3();
+                ground.mOffset = reader.ReadDouble();
+                ground.mFriction = reader.ReadDouble();
+                // the solver's Create refuses a ground out of range with its own message
+                last_tag = tag;
+                continue;
+            }
             const double value = reader.ReadDouble();
             if (tag == cContactSpreadTag && last_tag == cRefreshSettingsTag)
             {

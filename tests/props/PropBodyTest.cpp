@@ -267,7 +267,9 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
     CHECK(points < points_before);
 }
 
-TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until struck; a bad anchor or a gravity is refused", "[props]")
+TEST_CASE("MakeHeldFemProp: no gravity by default, its footings anchored, asleep until struck; with gravity "
+          "it settles on its anchors; a bad anchor is refused",
+          "[props]")
 {
     const fem::TetMesh mesh = StandingWall();
     const std::vector<int> footings = Footings(mesh);
@@ -291,21 +293,17 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
     REQUIRE(refused.HasError());
     CHECK(refused.GetError().mMessage.find("anchored node " + std::to_string(mesh.GetNodeCount())) != std::string::npos);
 
-    // The game's own solver settings are used; a gravity (the default TetSolverSettings has one) and settings
-    // the solver refuses are refused.
+    // The game's own solver settings are used; settings the solver refuses are refused.
     fem::TetSolverSettings own = props::HeldPropSolverSettings();
     own.mFactorRefreshIterations = 3;
     own.mCgRelativeTolerance = 1.0e-8;
     const props::FemProp tuned = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).Get();
     CHECK(tuned.GetCpuSolver()->GetSettings().mFactorRefreshIterations == 3);
     CHECK(tuned.GetCpuSolver()->GetSettings().mCgRelativeTolerance == 1.0e-8);
-    const Result<props::FemProp> pulled = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, fem::TetSolverSettings{});
-    REQUIRE(pulled.HasError());
-    CHECK(pulled.GetError().mMessage.find("no gravity") != std::string::npos);
     own.mFactorRefreshIterations = -1;
     CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).HasError());
 
-    // The contact spread is the prop's; a bad one is refused, after a gravity and before the solver's reasons.
+    // The contact spread is the prop's; a bad one is refused before the solver's reasons.
     CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, props::HeldPropSolverSettings(), 0.3)
               .Get()
               .GetContactSpread() == 0.3);
@@ -314,10 +312,26 @@ TEST_CASE("MakeHeldFemProp: no gravity, its footings anchored, asleep until stru
         const Result<props::FemProp> spread = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own, radius);
         REQUIRE(spread.HasError());
         CHECK(spread.GetError().mMessage.find("contact spread") != std::string::npos);
-        const Result<props::FemProp> pulled_too =
-            props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, fem::TetSolverSettings{}, radius);
-        CHECK(pulled_too.GetError().mMessage.find("no gravity") != std::string::npos);
+        own.mFactorRefreshIterations = 3;
     }
+
+    // With gravity (the default TetSolverSettings has one) it is loaded as made: it sags onto its footings,
+    // settles and sleeps, having moved no more than its weight strains it (rho g H / E over its height).
+    props::FemProp pulled =
+        props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, fem::TetSolverSettings{}).Get();
+    const fem::TetSolver& sagging = *pulled.GetCpuSolver();
+    int steps = 0;
+    for (; steps < 240 && !sagging.IsSleeping(); ++steps)
+        REQUIRE(pulled.Step(1.0 / 60.0));
+    CHECK(sagging.IsSleeping());
+    double sag = 0.0;
+    for (int node = 0; node < mesh.GetNodeCount(); ++node)
+        sag = std::max(sag, (sagging.GetPositions()[static_cast<std::size_t>(node)] -
+                             mesh.GetRestPositions()[static_cast<std::size_t>(node)])
+                                .norm());
+    WARN("a held wall under gravity sleeps after " << steps << " steps, having sagged " << sag << " m");
+    CHECK(sag > 0.0);
+    CHECK(sag < 1.0e-5);
 }
 
 TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")
@@ -370,4 +384,47 @@ TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in t
     CHECK(solver.GetPositions() == held.mMade.mMesh.GetRestPositions()); // the FEM works in the body frame
     for (int node : footings)
         CHECK(solver.GetInverseMasses()[static_cast<std::size_t>(node)] == 0.0);
+}
+
+TEST_CASE("AddHeldProp: the world's gravity and ground reach the FEM in the body frame", "[props]")
+{
+    const fem::TetMesh mesh = StandingWall();
+    const std::vector<int> footings = Footings(mesh);
+    common::WorldFixture fixture;
+    std::unique_ptr<props::PropWorld> world = props::PropWorld::Create(fixture.mWorld).Get();
+    const auto make_body = [&](const plugin::PropBodySettings&) -> Result<plugin::BodyId>
+    { return fixture.mWall; };
+
+    // The wall turned 30 degrees about the world's up axis z and stood on a ground at z = 0.25, 2 m from the
+    // origin; the game gives gravity and ground in world terms.
+    Transform pose;
+    pose.mRotation = Eigen::AngleAxisd(0.5235987755982988, Vec3::UnitZ()).toRotationMatrix();
+    pose.mTranslation = Vec3(2.0, -1.0, 0.25);
+    fem::TetSolverSettings settings = props::HeldPropSolverSettings();
+    settings.mGravity = Vec3(0.0, 0.0, -9.81);
+    settings.mGround.mEnabled = true;
+    settings.mGround.mNormal = Vec3::UnitZ();
+    settings.mGround.mOffset = 0.25;
+    settings.mGround.mFriction = 0.4;
+    const props::HeldProp held = props::AddHeldProp(*world, mesh, fem::FemMaterialSettings{}, footings, pose,
+                                                    0.25, make_body, settings)
+                                     .Get();
+    const fem::TetSolverSettings& body = world->GetProp(held.mProp)->GetCpuSolver()->GetSettings();
+    const Transform body_pose{held.mMade.mBody.mOrientation, held.mMade.mBody.mPosition};
+
+    // Gravity and the ground's normal turned into the body frame; a body point is on the ground exactly when
+    // its world image is.
+    CHECK((body_pose.mRotation * body.mGravity - settings.mGravity).norm() < 1.0e-12);
+    CHECK((body_pose.mRotation * body.mGround.mNormal - Vec3::UnitZ()).norm() < 1.0e-12);
+    CHECK(body.mGround.mFriction == 0.4);
+    for (const Vec3& world_point : {Vec3(0.0, 0.0, 0.25), Vec3(3.0, -2.0, 0.25), Vec3(1.0, 1.0, 1.25)})
+    {
+        const Vec3 body_point = body_pose.ToBody(world_point);
+        CHECK(body.mGround.mNormal.dot(body_point) - body.mGround.mOffset ==
+              Approx(world_point.z() - 0.25).margin(1.0e-12));
+    }
+    // The wall's footings stand on that ground: in the body frame they lie on its plane.
+    for (int node : footings)
+        CHECK(body.mGround.mNormal.dot(held.mMade.mMesh.GetRestPositions()[static_cast<std::size_t>(node)]) ==
+              Approx(body.mGround.mOffset).margin(1.0e-12));
 }

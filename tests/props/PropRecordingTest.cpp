@@ -605,3 +605,95 @@ TEST_CASE("Props in a recording: the crack stress bound is recorded; a record wr
         CHECK(TetSolver::Create(TetGrid({}).Get(), FemMaterialSettings{}, settings).HasError());
     }
 }
+
+TEST_CASE(
+    "Props in a recording: a prop on a ground replays bit for bit; without a ground the record is as before",
+    "[props][replay]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "props-ground.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanelOnGround()).Get();
+    REQUIRE(HitTwice(fixture, *props) > 0); // it cracked
+    // The knocked-out pieces fall for half a second onto the ground at z = -1.
+    for (int step = 0; step < 60; ++step)
+        REQUIRE(props->Step(1.0 / 120.0).IsValid());
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();
+    // The ground held something: free nodes that came down onto it, none through it.
+    int on_ground = 0;
+    for (std::size_t node = 0; node < live.GetPositions().size(); ++node)
+        if (live.GetInverseMasses()[node] > 0.0)
+        {
+            CHECK(live.GetPositions()[node].z() >= -1.0 - 1.0e-9);
+            on_ground +=
+                live.GetPositions()[node].z() < -1.0 + 1.0e-9 && live.GetNodeRestPositions()[node].z() > -0.99
+                    ? 1
+                    : 0;
+        }
+    WARN(on_ground << " free nodes came down onto the ground");
+    CHECK(on_ground > 0);
+
+    const std::vector<ReplayedProp> replayed =
+        ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
+    REQUIRE(replayed.size() == 1u);
+    const TetSolver& again = *replayed[0].mProp.GetCpuSolver();
+    CHECK(again.GetSettings().mGround.mEnabled);
+    CHECK(again.GetSettings().mGround.mOffset == -1.0);
+    CHECK(again.GetBrokenLinks() == live.GetBrokenLinks());
+    CHECK(again.GetPositions() == live.GetPositions());
+    CHECK(again.GetVelocities() == live.GetVelocities());
+
+    // The record: no ground writes nothing more (the bytes of a prop before grounds existed); a ground adds
+    // its tag, normal, offset and friction last. Cut, followed by another tagged setting, or out of range:
+    // refused.
+    PropSetup setup = MakePropSetup(fixture.mWall, test::WeakPanel()).Get();
+    const std::vector<std::byte> plain = EncodePropSetup(setup).Get();
+    CHECK(!DecodePropSetup(plain).Get().mSettings.mGround.mEnabled);
+    setup.mSettings.mGround = GroundPlane{true, Vec3(0.0, 0.6, 0.8), -1.5, 0.45};
+    const std::vector<std::byte> grounded = EncodePropSetup(setup).Get();
+    CHECK(grounded.size() == plain.size() + 44);
+    CHECK(std::equal(plain.begin(), plain.end(), grounded.begin()));
+    const GroundPlane read = DecodePropSetup(grounded).Get().mSettings.mGround;
+    CHECK(read.mEnabled);
+    CHECK(read.mNormal == Vec3(0.0, 0.6, 0.8));
+    CHECK(read.mOffset == -1.5);
+    CHECK(read.mFriction == 0.45);
+    const std::vector<std::byte> cut(grounded.begin(), grounded.end() - 8);
+    CHECK(DecodePropSetup(cut).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> then_spread = grounded;
+    then_spread.insert(then_spread.end(), grounded.end() - 56, grounded.end() - 44); // the crack bound again
+    CHECK(DecodePropSetup(then_spread).GetError().mCode == EError::CorruptData);
+    PropSetup tilted = setup;
+    tilted.mSettings.mGround.mNormal = Vec3(0.0, 0.0, 2.0);
+    CHECK(RebuildProp(DecodePropSetup(EncodePropSetup(tilted).Get()).Get()).HasError());
+}
+
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+TEST_CASE("Props: a GPU prop asked for with a ground runs on the CPU and says why", "[props][gpu]")
+{
+    gpu::ComputeDeviceProvider devices;
+    FemPropSettings on_gpu;
+    on_gpu.mBackend = EFemBackend::Gpu;
+    fem::TetSolverSettings settings;
+    const FemProp without =
+        FemProp::Create(&devices, TetGrid({}).Get(), FemMaterialSettings{}, settings, on_gpu).Get();
+    if (without.GetBackend() != EFemBackend::Gpu)
+    {
+        WARN("skipped: no compute device: " << without.GetFallbackReason());
+        return;
+    }
+    settings.mGround.mEnabled = true;
+    std::string logged;
+    on_gpu.mLog = [&](std::string_view inLine) { logged = inLine; };
+    const FemProp grounded =
+        FemProp::Create(&devices, TetGrid({}).Get(), FemMaterialSettings{}, settings, on_gpu).Get();
+    CHECK(grounded.GetBackend() == EFemBackend::Cpu);
+    CHECK(grounded.GetCpuSolver()->GetSettings().mGround.mEnabled);
+    CHECK_THAT(grounded.GetFallbackReason(), Catch::Contains("ground"));
+    CHECK_THAT(logged, Catch::Contains("ground"));
+}
+#endif

@@ -18,8 +18,10 @@ namespace crumple::props
 {
 
 /// The solver settings of a held prop's FEM unless the game gives its own: the default implicit solver with
-/// no gravity (the held body stands for what holds the prop up, so it sleeps until something strikes it;
-/// pieces that break loose fall under the engine's gravity), and the factor refreshed at the element frames
+/// no gravity and no ground (the held body stands for what holds the prop up, so it sleeps until something
+/// strikes it; pieces that break loose fall under the engine's gravity; a part left hanging on a thin joint
+/// swings until damping stops it: give the prop the world's gravity and ground, fem::GroundPlane, for it to
+/// fall onto the ground and come to rest), and the factor refreshed at the element frames
 /// after 6 conjugate-gradient iterations (mFactorRefreshIterations): a struck prop bends, and with its
 /// cracks converged (mCrackStressTolerance) the refresh no longer changes them. Measured, refresh 0 against
 /// 6, two runs each: the drive-through fence (17,600 tetrahedra, 64 km/h) spent 2.93-2.97 s in its FEM
@@ -29,14 +31,15 @@ namespace crumple::props
 CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
 
 /// The FEM of a prop whose engine body is held (PropBodySettings::mHeld, a fence or a barrier anchored to the
-/// ground): a prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity must be
-/// zero, as in HeldPropSolverSettings()) and the nodes of inAnchoredNodes fixed (its footings:
+/// ground): a prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity and
+/// ground, if any, in the body frame) and the nodes of inAnchoredNodes fixed (its footings:
 /// TetFence::mGroundNodes), spreading each contact's impulse over inContactSpread (FemProp::SetContactSpread,
-/// m; 0: the containing element's nodes). Refused, in this order: a gravity that is not zero; a spread radius
-/// that is not finite and >= 0; the first reason for a mesh, material or solver settings FemProp::Create
-/// refuses; an anchored node out of range. inPropSettings and ioProvider choose the backend as for
-/// FemProp::Create (the CPU by default; a GPU request without a device, or for what the GPU solver lacks,
-/// runs on the CPU and says why); the anchors are set in one SetNodesFixed (one read and write on the GPU).
+/// m; 0: the containing element's nodes). A prop with gravity is loaded as made: it sags onto its anchors
+/// over its first steps and sleeps once settled. Refused, in this order: a spread radius that is not finite
+/// and >= 0; the first reason for a mesh, material or solver settings FemProp::Create refuses; an anchored
+/// node out of range. inPropSettings and ioProvider choose the backend as for FemProp::Create (the CPU by
+/// default; a GPU request without a device, or for what the GPU solver lacks, runs on the CPU and says why);
+/// the anchors are set in one SetNodesFixed (one read and write on the GPU).
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh,
                                             const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes,
@@ -56,11 +59,12 @@ struct CRUMPLE_API HeldProp
 /// Everything that puts a prop anchored to the ground into a game: MakePropBody (held, shape of cubes of
 /// inShapeCellSize), its FEM (MakeHeldFemProp on the body-frame mesh, the nodes of inAnchoredNodes fixed),
 /// the engine body (inMakeBody: the adapter's CreatePropBody, bound by the game) and PropWorld::AddProp. The
-/// FEM is made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed) before the engine
-/// body, so bad input (mesh, material, solver settings, pose, anchors) or state creates nothing; a body that
-/// inMakeBody made stays the adapter's only if AddProp still refuses it (an adapter of another world, or a
-/// write error). inSolver, inContactSpread, inPropSettings and ioProvider: the FEM's solver settings, contact
-/// spread radius and backend, as for MakeHeldFemProp.
+/// FEM's gravity and ground are inSolver's in the world frame (the frame of inPose), turned into the body
+/// frame here. The FEM is made and checked (PropWorld::CheckCanAdd: a recorder that has failed or closed)
+/// before the engine body, so bad input (mesh, material, solver settings, pose, anchors) or state creates
+/// nothing; a body that inMakeBody made stays the adapter's only if AddProp still refuses it (an adapter of
+/// another world, or a write error). inSolver, inContactSpread, inPropSettings and ioProvider: the FEM's
+/// solver settings, contact spread radius and backend, as for MakeHeldFemProp.
 CRUMPLE_API Result<HeldProp>
 AddHeldProp(PropWorld& ioProps, const fem::TetMesh& inMesh, const fem::FemMaterialSettings& inMaterial,
             std::span<const int> inAnchoredNodes, const Transform& inPose, double inShapeCellSize,
