@@ -62,7 +62,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     s.mSolver = std::make_unique<btSequentialImpulseConstraintSolver>();
     s.mWorld = std::make_unique<btDiscreteDynamicsWorld>(s.mDispatcher.get(), s.mBroadphase.get(), s.mSolver.get(),
                                                          s.mConfiguration.get());
-    s.mWorld->setGravity(btVector3(0, 0, btScalar(-9.81)));
+    s.mWorld->setGravity(btVector3(0, 0, btScalar(RaceCourse::Gravity().z())));
     if (inSettings.mAttach)
     {
         if (Status created = s.CreateDamageWorld(); !created)

@@ -97,7 +97,7 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
     const Vec3 half = 0.5 * (bounds.mMax - bounds.mMin);
 
     s.mWorld = dWorldCreate();
-    dWorldSetGravity(s.mWorld, 0, 0, -9.81);
+    dWorldSetGravity(s.mWorld, 0, 0, RaceCourse::Gravity().z());
     dWorldSetQuickStepNumIterations(s.mWorld, 50);
     s.mSpace = dHashSpaceCreate(nullptr);
     s.mContacts = dJointGroupCreate(0);

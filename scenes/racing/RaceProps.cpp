@@ -96,12 +96,16 @@ Result<std::unique_ptr<RaceProps>> RaceProps::Create(DamageWorld& ioDamage, Race
     if (!held)
         return held.GetError();
     result->mHeld.emplace(std::move(held).Get());
-    // Their footings anchored; each sleeps until the car hits it.
+    // Their footings anchored, under the world's gravity and on its ground (a part left hanging falls onto it
+    // and comes to rest); each settles on its footing, sleeps, and wakes when the car hits it.
+    fem::TetSolverSettings solver = props::HeldPropSolverSettings();
+    solver.mGravity = RaceCourse::Gravity();
+    solver.mGround = RaceCourse::PropGround();
     for (const PropModel& model : models)
     {
         Result<props::HeldProp> added =
             props::AddHeldProp(*result->mWorld, model.mMesh, model.mMaterial, model.mGroundNodes, model.mPose,
-                               cShapeCell, inEngine.mMakePropBody);
+                               cShapeCell, inEngine.mMakePropBody, solver);
         if (!added)
             return MakeError(added.GetError().mCode, "the " + model.mName + ": " + added.GetError().mMessage);
         const plugin::PropBodySettings& body = added.Get().mMade.mBody;

@@ -5,6 +5,7 @@
 #include "RaceLog.h"
 #include "ScenePainter.h"
 
+#include <crumple/fem/GroundPlane.h>
 #include <crumple/fem/TetFence.h>
 #include <crumple/fem/TetGrid.h>
 
@@ -28,6 +29,10 @@ namespace crumple::samples
 /// further down. World frame: z up, metres.
 struct RaceCourse
 {
+    static Vec3 Gravity() { return {0.0, 0.0, -9.81}; } ///< The world's gravity (m/s^2), z up
+    /// The ground z = 0 as the props' FEM meets it (RaceProps): a part left hanging from a prop falls onto
+    /// it and comes to rest; friction 0.6, wood or brick on asphalt
+    static fem::GroundPlane PropGround() { return {true, Vec3::UnitZ(), 0.0, 0.6}; }
     static constexpr double cBarrierYaw = 0.122;                 ///< Barrier heading (rad)
     static Vec3 BarrierHalfExtents() { return {2.035, 0.405, 0.57}; } ///< A jersey barrier, 4.07 x 0.81 x 1.14 m
     static std::vector<Transform> Barriers();                   ///< Their poses
