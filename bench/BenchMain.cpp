@@ -22,6 +22,7 @@ int main(int argc, char** argv)
                                                     {"fem_refresh", RunFemRefreshBenchmarks},
                                                     {"fem_cracks", RunCrackBoundBenchmarks},
                                                     {"contact_mass", RunContactMassBenchmarks},
+                                                    {"fem_ground", RunGroundBenchmarks},
                                                     {"fem_vs_bullet", RunFemVsBulletBenchmarks},
                                                     {"barrier", RunBarrierBenchmarks},
                                                     {"props", RunPropBenchmarks},

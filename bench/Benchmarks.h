@@ -57,6 +57,12 @@ void RunCrackBoundBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 /// implicit step shows a small impulse.
 void RunContactMassBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
+/// A ground (TetSolverSettings::mGround) against none: a level wooden rail anchored only along the top edge
+/// of one end, 0.55 m up, swings down under gravity for 10 s (--quick 3 s) of 1/240 s steps, the two stepped
+/// alternately: FEM steps awake, time per awake step and in all (thread CPU and wall); error: the grounded
+/// rail's resting centre height against a rigid rail's. Empty without crumple::fem.
+void RunGroundBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
+
 /// Crumple's implicit FEM against Bullet's implicit deformable solver on the identical cantilever, 1k, 10k
 /// and 100k tets (--quick: 1k): runs crumple-bench-fem-vs-bullet beside this program (it links Bullet's
 /// double build) and takes its rows. Empty, with a note, where that program is not built.
