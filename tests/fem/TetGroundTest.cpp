@@ -3,11 +3,16 @@
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
+#include "DrawVec3.h"
+
+#include <BrittleMaterial.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -273,4 +278,65 @@ TEST_CASE("Ground: a bad ground is refused with its reason", "[fem]")
     TetSolverSettings off;
     off.mGround = {false, Vec3::Zero(), nan, -1.0};
     CHECK(TetSolver::Create(mesh, {}, off).IsValid());
+}
+
+TEST_CASE(
+    "Ground: a brittle wall hammered at random on the ground never goes through it and never produces NaN",
+    "[fem]")
+{
+    // The stress test's brittle wall (1 m x 0.2 m x 0.6 m, 10 GPa, anchored along its base at z = 0) under
+    // gravity on the ground z = 0, hit by seeded random impulses of 1e-3 ... 1e5 N s every 3rd step of 1/240
+    // ... 1/30 s: the pieces it sheds fall onto the ground.
+    TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.2, 0.6);
+    grid.mCellCount = {5, 1, 3};
+    TetSolverSettings settings;
+    settings.mGravity = Vec3(0.0, 0.0, -cGravity);
+    settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, 0.6};
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), common::StiffBrittleMaterial(), settings).Get();
+    for (int i = 0; i <= 5; ++i)
+        for (int j = 0; j <= 1; ++j)
+            REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
+    std::mt19937 random(99u);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> normal;
+    int fracture_steps = 0, diverged = 0, steps = 0;
+    double largest_speed = 0.0;
+    for (int step = 0; step < 150; ++step)
+    {
+        if (step % 3 == 0)
+        {
+            const int node = static_cast<int>(random() % static_cast<std::uint32_t>(solver.GetNodeCount()));
+            const double magnitude = std::pow(10.0, -3.0 + 8.0 * unit(random));
+            const Vec3 direction = common::DrawVec3([&] { return normal(random); }).normalized();
+            REQUIRE(solver.ApplyImpulse(node, magnitude * direction).IsValid());
+        }
+        const std::vector<Vec3> positions = solver.GetPositions();
+        const Result<TetStepResult> result =
+            solver.Step(1.0 / 240.0 + unit(random) * (1.0 / 30.0 - 1.0 / 240.0));
+        REQUIRE(result.IsValid());
+        ++steps;
+        REQUIRE(std::all_of(solver.GetPositions().begin(), solver.GetPositions().end(),
+                            [](const Vec3& inX) { return inX.allFinite(); }));
+        REQUIRE(std::all_of(solver.GetVelocities().begin(), solver.GetVelocities().end(),
+                            [](const Vec3& inV) { return inV.allFinite(); }));
+        const bool restored = HasEvent(result.Get().mEvents, ETetStepEvent::Diverged);
+        diverged += restored ? 1 : 0;
+        if (restored)
+            CHECK(solver.GetPositions() == positions);
+        fracture_steps += HasEvent(result.Get().mEvents, ETetStepEvent::Fractured) ? 1 : 0;
+        // Never through the ground: every free node on it or above, within round-off.
+        for (std::size_t node = 0; node < solver.GetPositions().size(); ++node)
+            if (solver.GetInverseMasses()[node] > 0.0)
+                REQUIRE(solver.GetPositions()[node].z() >= -1.0e-9);
+        for (const Vec3& velocity : solver.GetVelocities())
+            largest_speed = std::max(largest_speed, velocity.norm());
+    }
+    WARN(steps << " steps: " << fracture_steps << " cracked, " << diverged << " diverged and restored, "
+               << solver.GetBrokenLinkCount() << " links broken, " << solver.ComputeFragments().size()
+               << " pieces; largest node speed " << largest_speed << " m/s");
+    CHECK(fracture_steps > 0); // the hammering really cracked it
+    CHECK(solver.ComputeFragments().size() > 1u);
+    CHECK(largest_speed > 1.0);
+    CHECK(diverged <= steps / 10);
 }
