@@ -3,7 +3,7 @@
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
-#include "DrawVec3.h"
+#include "RandomHammer.h"
 
 #include <BrittleMaterial.h>
 
@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -297,23 +296,15 @@ TEST_CASE(
     for (int i = 0; i <= 5; ++i)
         for (int j = 0; j <= 1; ++j)
             REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, i, j, 0), true).IsValid());
-    std::mt19937 random(99u);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::normal_distribution<double> normal;
+    test::RandomHammer hammer(99u);
     int fracture_steps = 0, diverged = 0, steps = 0;
     double largest_speed = 0.0;
     for (int step = 0; step < 150; ++step)
     {
         if (step % 3 == 0)
-        {
-            const int node = static_cast<int>(random() % static_cast<std::uint32_t>(solver.GetNodeCount()));
-            const double magnitude = std::pow(10.0, -3.0 + 8.0 * unit(random));
-            const Vec3 direction = common::DrawVec3([&] { return normal(random); }).normalized();
-            REQUIRE(solver.ApplyImpulse(node, magnitude * direction).IsValid());
-        }
+            hammer.Strike(solver);
         const std::vector<Vec3> positions = solver.GetPositions();
-        const Result<TetStepResult> result =
-            solver.Step(1.0 / 240.0 + unit(random) * (1.0 / 30.0 - 1.0 / 240.0));
+        const Result<TetStepResult> result = solver.Step(hammer.StepLength());
         REQUIRE(result.IsValid());
         ++steps;
         REQUIRE(std::all_of(solver.GetPositions().begin(), solver.GetPositions().end(),

@@ -3,14 +3,13 @@
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
-#include "DrawVec3.h"
+#include "RandomHammer.h"
 
 #include <BrittleMaterial.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
 
 using namespace crumple;
 using namespace crumple::fem;
@@ -56,21 +55,13 @@ StressOutcome RunStress(EIntegrator inIntegrator, EElasticModel inModel, bool in
             for (int j = 0; j <= 2; ++j)
                 REQUIRE(solver.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
 
-    std::mt19937 random(inSeed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::normal_distribution<double> normal;
+    test::RandomHammer hammer(inSeed);
     StressOutcome outcome;
     for (int step = 0; step < inSteps; ++step)
     {
         if (step % 5 == 0)
-        {
-            const int node =
-                static_cast<int>(random() % static_cast<std::uint32_t>(solver.GetMesh().GetNodeCount()));
-            const double magnitude = std::pow(10.0, -3.0 + 8.0 * unit(random));
-            const Vec3 direction = common::DrawVec3([&] { return normal(random); }).normalized();
-            REQUIRE(solver.ApplyImpulse(node, magnitude * direction).IsValid());
-        }
-        const double step_time = 1.0 / 240.0 + unit(random) * (1.0 / 30.0 - 1.0 / 240.0);
+            hammer.Strike(solver);
+        const double step_time = hammer.StepLength();
 
         const std::vector<Vec3> positions = solver.GetPositions();
         const std::vector<Vec3> velocities = solver.GetVelocities();
@@ -198,21 +189,14 @@ TEST_CASE("Stress: a brittle prop hammered at random cracks, refactors and never
     for (double mass : solver.GetMasses())
         total_mass += mass;
 
-    std::mt19937 random(99u);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::normal_distribution<double> normal;
+    test::RandomHammer hammer(99u);
     int fracture_steps = 0, diverged = 0, steps = 0, step_lengths = 0;
     double largest_speed = 0.0;
     for (int step = 0; step < 150; ++step)
     {
         if (step % 3 == 0)
-        {
-            const int node = static_cast<int>(random() % static_cast<std::uint32_t>(solver.GetNodeCount()));
-            const double magnitude = std::pow(10.0, -3.0 + 8.0 * unit(random));
-            const Vec3 direction = common::DrawVec3([&] { return normal(random); }).normalized();
-            REQUIRE(solver.ApplyImpulse(node, magnitude * direction).IsValid());
-        }
-        const Result<TetStepResult> result = solver.Step(1.0 / 240.0 + unit(random) * (1.0 / 30.0 - 1.0 / 240.0));
+            hammer.Strike(solver);
+        const Result<TetStepResult> result = solver.Step(hammer.StepLength());
         REQUIRE(result.IsValid());
         ++steps;
         REQUIRE(AllFinite(solver.GetPositions()));
