@@ -116,6 +116,34 @@ int main(int argc, char** argv)
             ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
         }
     }
+    // The same panel under gravity on a ground at its foot (its record carries the ground's tag).
+    {
+        fuzz::FuzzWorld world;
+        Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
+            plugin::DamageRecorder::Create(out / "prop_replay" / "panel_on_ground.crumple", world.Get());
+        Result<std::unique_ptr<props::PropWorld>> prop_world = props::PropWorld::Create(world.Get());
+        ok = ok && recorder.IsValid() && prop_world.IsValid();
+        if (ok)
+        {
+            fem::TetGridSettings grid;
+            grid.mOrigin = Vec3(2.1, -1.0, -1.0);
+            grid.mSize = Vec3(0.2, 2.0, 2.0);
+            grid.mCellCount = {1, 4, 4};
+            fem::FemMaterialSettings material;
+            material.mTensileStrength = 2.0e5;
+            fem::TetSolverSettings settings;
+            settings.mGround = fem::GroundPlane{true, Vec3::UnitZ(), -1.0, 0.6};
+            Result<props::FemProp> panel = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material,
+                                                                  settings, props::FemPropSettings{});
+            ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
+                 prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
+            world.Dent();
+            for (int step = 0; ok && step < 4; ++step)
+                ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
+            ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() &&
+                 recorder.Get()->Close().IsValid();
+        }
+    }
 #endif
 
 #ifdef CRUMPLE_FUZZ_FEM
