@@ -25,6 +25,16 @@ namespace
 // converged case): that coupling amplifies even such differences.
 constexpr double cRelativeChange = 1.0e-12;
 
+// Gauss-Seidel has stalled when over a window of this many sweeps no sweep moved a contact point's velocity
+// by more than cStallChange of the largest approach speed and the distance from Coulomb's conditions
+// (MeritOfRows) fell by less than cStallProgress of itself.
+constexpr int cStallWindow = 50;
+constexpr double cStallChange = 1.0e-9;
+constexpr double cStallProgress = 0.01;
+// A subspace step after a refused one waits until the distance from Coulomb's conditions is below this
+// fraction of what it was at the refusal.
+constexpr double cRetryProgress = 0.5;
+
 // Kinetic energy made beyond this fraction of the sum of its terms' magnitudes is not round-off.
 constexpr double cEnergyRoundOff = 1.0e-12;
 
@@ -45,6 +55,9 @@ FrictionSolveStats SolveJointly(const PairInverseMass& inPair, double inSpeedSca
                           ioRows.size() <= static_cast<std::size_t>(inSettings.mSubspaceMaxContacts);
     std::int64_t interval = inSettings.mSubspaceInterval,
                  next_step = interval; // intent: doubling cannot overflow
+    double window_moved = 0.0, window_merit = std::numeric_limits<double>::infinity();
+    std::int64_t last_refused = -cStallWindow; // the sweep after which a subspace step was last refused
+    double refused_merit = std::numeric_limits<double>::infinity(); // MeritOfRows when it was refused
     for (int sweep = 0; sweep < inSettings.mMaxSweeps; ++sweep)
     {
         ++stats.mSweeps;
@@ -86,9 +99,40 @@ FrictionSolveStats SolveJointly(const PairInverseMass& inPair, double inSpeedSca
             stats.mConverged = true;
             break;
         }
+        // intent: a stalled Gauss-Seidel (its sweeps trade impulses that move the points by round-off while
+        // the answer stays as far from Coulomb's conditions) gets a subspace step at once, unless one was
+        // refused within the stalled window (from the same state, to round-off); where that step is refused
+        // too, neither can bring the answer closer and the solve stops (stats.mStalled) instead of sweeping
+        // and stepping on to its bound. Without subspace steps (too many contacts) it sweeps on: a slow
+        // Gauss-Seidel still converges there.
+        window_moved = std::max(window_moved, moved);
+        bool stalled = false;
+        if (subspace && stats.mSweeps % cStallWindow == 0)
+        {
+            const double merit = MeritOfRows(inPair, ioRows);
+            stalled = window_moved <= cStallChange * inSpeedScale &&
+                      !(merit < (1.0 - cStallProgress) * window_merit);
+            window_merit = merit;
+            window_moved = 0.0;
+            if (stalled && stats.mSweeps - last_refused < cStallWindow)
+            {
+                stats.mStalled = true;
+                break;
+            }
+        }
         // intent: a subspace step after mSubspaceInterval sweeps, then after twice as many each time: a step
         // that finds no answer (states that cannot all hold) costs a bounded share of the sweeps
-        if (stats.mSweeps == next_step && subspace)
+        // intent: after a refused step the next scheduled one waits until Gauss-Seidel has halved the
+        // distance from Coulomb's conditions since: from a state no better the step would fail as it did
+        const bool scheduled = stats.mSweeps == next_step && subspace;
+        const bool retry = scheduled && !stalled && std::isfinite(refused_merit) &&
+                           !(MeritOfRows(inPair, ioRows) < cRetryProgress * refused_merit);
+        if (retry)
+        {
+            interval *= 2;
+            next_step += interval;
+        }
+        if ((scheduled && !retry) || (stalled && subspace))
         {
             int iterations = 0;
             const ESubspaceOutcome outcome = FrictionSubspaceStep(inPair, inSpeedScale, ioRows, iterations);
@@ -107,8 +151,23 @@ FrictionSolveStats SolveJointly(const PairInverseMass& inPair, double inSpeedSca
                 stats.mSettled = true;
                 break;
             }
-            interval *= 2;
-            next_step += interval;
+            if (outcome == ESubspaceOutcome::Refused)
+            {
+                if (stalled)
+                {
+                    stats.mStalled = true;
+                    break;
+                }
+                last_refused = stats.mSweeps;
+                refused_merit = MeritOfRows(inPair, ioRows);
+            }
+            else
+                refused_merit = std::numeric_limits<double>::infinity();
+            if (stats.mSweeps == next_step)
+            {
+                interval *= 2;
+                next_step += interval;
+            }
         }
     }
     return stats;
