@@ -3,7 +3,9 @@
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
+#include "AllocationCounter.h"
 #include "RandomHammer.h"
+#include <SkipTest.h>
 
 #include <BrittleMaterial.h>
 
@@ -330,4 +332,26 @@ TEST_CASE(
     CHECK(solver.ComputeFragments().size() > 1u);
     CHECK(largest_speed > 1.0);
     CHECK(diverged <= steps / 10);
+}
+
+TEST_CASE("Ground: a step on the ground allocates nothing once the solver has stepped", "[fem]")
+{
+    if (!test::AllocationCounter::IsAvailable())
+        common::SkipTest(
+            "allocations are not counted under AddressSanitizer (its runtime owns operator new)");
+    // Landed and sliding (held nodes, friction, the filter in every solve), then a step that lands it again.
+    TetSolver block = MakeBlock(0.02, 0.3);
+    for (int step = 0; step < 30; ++step)
+        REQUIRE(block.Step(1.0 / 240.0).IsValid());
+    REQUIRE(LowestZ(block) <= 1.0e-9);
+    std::vector<Vec3> sliding(block.GetVelocities().size(), Vec3(1.0, 0.0, 0.5));
+    REQUIRE(block.SetVelocities(sliding).IsValid());
+    std::uint64_t allocations = 0;
+    {
+        const test::AllocationCounter counter;
+        for (int step = 0; step < 20; ++step)
+            REQUIRE(block.Step(1.0 / 240.0).IsValid());
+        allocations = counter.Count();
+    }
+    CHECK(allocations == 0);
 }
