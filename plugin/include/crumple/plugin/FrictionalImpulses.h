@@ -54,7 +54,7 @@ struct CRUMPLE_API FrictionSolveStats
     int mNewtonIterations = 0;   ///< Newton iterations of all the subspace steps, kept or refused
     int mMostStepIterations = 0; ///< the most one step took (at most 32: a step that needs more is refused)
     /// False: stopped at FrictionSolveSettings::mMaxSweeps while a sweep still moved a contact point's
-    /// velocity by more than 1e-12 of the largest approach speed.
+    /// velocity by more than 1e-12 of the largest approach speed, or stopped stalled (mStalled).
     bool mConverged = true;
     /// Stopped at the bound with impulses that made kinetic energy: the frictionless answer
     /// (SimultaneousImpulses' normal impulses, friction zero) was returned instead, as it made less.
