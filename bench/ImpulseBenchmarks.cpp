@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
+#include "CarFrontOnFenceStall.h"
 #include "CarOnHeldFence.h"
 #include "PieceOnGround.h"
 #include "WedgedPiece.h"
@@ -279,6 +280,11 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     const common::CarOnHeldFence pressing = common::MakeCarOnHeldFence();
     FrictionCrawlCase(ioTable, "car_on_held_fence", pressing.mCar, pressing.mFence, pressing.mContacts,
                       pressing.mRestitution, pressing.mClosingSpeed, repetitions);
+    // The car's front breaking into the held fence: Gauss-Seidel stalls and every subspace step is refused
+    // (the stall stop's case).
+    const common::CarFrontOnFenceStall stalling = common::MakeCarFrontOnFenceStall();
+    FrictionCrawlCase(ioTable, "car_front_on_fence_stall", stalling.mCar, stalling.mFence, stalling.mContacts,
+                      stalling.mRestitution, stalling.mClosingSpeed, repetitions);
     const common::PieceOnGround resting = common::MakePieceOnGround();
     FrictionCrawlCase(ioTable, "piece_on_ground", resting.mGround, resting.mPiece, resting.mContacts,
                       resting.mRestitution, resting.mClosingSpeed, repetitions);

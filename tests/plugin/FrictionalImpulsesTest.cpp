@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/FrictionalImpulses.h>
 
+#include "CarFrontOnFenceStall.h"
 #include "CarOnHeldFence.h"
 #include "DrawVec3.h"
 #include "ImpulseBodies.h"
@@ -15,8 +16,6 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <sstream>
-#include <string>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -537,79 +536,16 @@ TEST_CASE("A subspace step takes at most 32 Newton iterations, and crowds reach 
 
 TEST_CASE("A stalled joint solve stops: the racing car's 16 contacts on the fence's held body", "[plugin]")
 {
-    // A batch dumped from the threaded Bullet racing session (the car's front on the fence's 50 kg held body,
-    // its inertia small about the fence's length): Gauss-Seidel stalls at 6.5e-6 of the approach speed from
-    // Coulomb's conditions after about 100 sweeps while each sweep still moves a point by about 1e-10 of it,
-    // and every subspace step is refused (its states cannot all hold). It ran to the 1,000-sweep bound, five
-    // refused steps of 32 Newton iterations each, 4.7 ms. Now the stall ends it once a step from the stalled
-    // state is refused too. Known answer: the same solve without subspace steps (which never stops on a
-    // stall) run 5,000 sweeps, to 1e-3 N s in each sum.
-    std::istringstream in(
-        "set 16 0.10000000000000001 0.5\n"
-        "0 1199.9999709427364\n"
-        "0.0019131178269162774 -1.1630681001406629e-05 -8.8817962762277602e-08 -1.1630681001406629e-05 "
-        "0.0005355547764338553 -1.6901566368687782e-07 -8.8817962762277602e-08 -1.6901566368687782e-07 "
-        "0.00045806120033375919\n"
-        "42.956611633300781 0.31393212080001831 0.80893200635910034 20.019132614135742 -0.25414746999740601 "
-        "0.04154612123966217 0.0094505995512008667 -0.00064165506046265364 -0.065898820757865906\n"
-        "0 50.000001117587118\n"
-        "0.010597898624837399 0 0 0 0.32967033982276917 0 0 0 0.010939921252429485\n"
-        "45.049999237060547 5.9507954119908391e-14 0.61000001430511475 0 0 0 0 0 0\n"
-        "45.031166076660156 1.2803202271461487 0.80968725681304932 -0.99999999734611 4.0718306882976935e-05 "
-        "6.041357103068934e-05 0 0.25\n"
-        "45.031156539916992 1.2793658971786499 0.44822365045547485 -0.99999999742812529 "
-        "3.8961948930430627e-05 6.0213918759224462e-05 0 0.25\n"
-        "45.056169509887695 1.2801522016525269 0.82057511806488037 -0.9999999971737128 "
-        "-2.8432381360876534e-05 6.9600100490529443e-05 0 0.25\n"
-        "45.056045532226562 1.2499488592147827 0.85999968647956848 -0.99996433583137689 "
-        "0.0084453274996875542 5.9234588244191248e-05 0 0.25\n"
-        "45.029983520507812 0.99974590539932251 0.80972492694854736 -0.99996439853470687 "
-        "0.0084378755106700679 6.2609810625671497e-05 0 0.25\n"
-        "45.052877426147461 0.49997568130493164 0.85999986529350281 -0.9999643610090917 "
-        "0.0084423330068393605 6.1033439403953114e-05 0 0.25\n"
-        "45.053920745849609 0.7499668300151825 0.44833697378635406 -0.99996437941595295 "
-        "0.0084402050901098216 5.3266359233666239e-05 0 0.25\n"
-        "45.054975509643555 0.99995797872543335 0.4482840895652771 -0.99996436388059751 "
-        "0.0084420331452111693 5.5183758788682247e-05 0 0.25\n"
-        "45.027864456176758 0.4997657835483551 0.44837570190429688 -0.99996428231168288 0.008451557595613883 "
-        "7.2629808384172643e-05 0 0.25\n"
-        "45.026819229125977 0.24977245926856995 0.80989396572113037 -0.99996428885875788 "
-        "0.0084507976917340029 7.0891269733334162e-05 0 0.25\n"
-        "45.050769805908203 -6.4926261984510347e-06 0.8415178656578064 -0.99996434078721719 "
-        "0.0084447766265110576 5.3867565906261635e-05 0 0.25\n"
-        "45.050758361816406 -6.3887091528158635e-06 0.45999994874000549 -0.99996436134169453 "
-        "0.0084423036354290028 5.9630733098349892e-05 0 0.25\n"
-        "45.023637771606445 -0.50016775727272034 0.44856332242488861 -0.99996433262411144 "
-        "0.0084455947621886671 7.3544057973317173e-05 0 0.25\n"
-        "45.049711227416992 -0.249997578561306 0.83008885383605957 -0.99996434904303289 "
-        "0.0084437993108435316 5.3815812034678349e-05 0 0.25\n"
-        "45.04865837097168 -0.49998874962329865 0.81865984201431274 -0.9999643435035267 "
-        "0.0084444567778357606 5.3584403531810547e-05 0 0.25\n"
-        "45.023651123046875 -0.50019761919975281 0.81003868579864502 -0.9999643108585905 "
-        "0.0084482194731629462 6.7799982028407288e-05 0 0.25\n");
-    std::string tag;
-    std::size_t count = 0;
-    double restitution = 0.0, closing = 0.0;
-    in >> tag >> count >> restitution >> closing;
-    std::array<BodyState, 2> bodies;
-    for (BodyState& body : bodies)
-    {
-        int type = 0;
-        in >> type >> body.mMass;
-        body.mMotionType = static_cast<EMotionType>(type);
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c)
-                in >> body.mInverseInertiaWorld(r, c);
-        in >> body.mCenterOfMass.x() >> body.mCenterOfMass.y() >> body.mCenterOfMass.z() >>
-            body.mLinearVelocity.x() >> body.mLinearVelocity.y() >> body.mLinearVelocity.z() >>
-            body.mAngularVelocity.x() >> body.mAngularVelocity.y() >> body.mAngularVelocity.z();
-        body.mTransform.mTranslation = body.mCenterOfMass;
-    }
-    std::vector<ImpulseContact> contacts(count);
-    for (ImpulseContact& c : contacts)
-        in >> c.mPoint.x() >> c.mPoint.y() >> c.mPoint.z() >> c.mNormal.x() >> c.mNormal.y() >>
-            c.mNormal.z() >> c.mSpeculativeSpeed >> c.mFriction;
-    REQUIRE(!in.fail());
+    // A batch dumped from the threaded Bullet racing session (common::CarFrontOnFenceStall): Gauss-Seidel
+    // stalls at 6.5e-6 of the approach speed from Coulomb's conditions after about 100 sweeps while each
+    // sweep still moves a point by about 1e-10 of it, and every subspace step is refused (its states cannot
+    // all hold). It ran to the 1,000-sweep bound, five refused steps of 32 Newton iterations each, 4.7 ms.
+    // Now the stall ends it once a step from the stalled state is refused too. Known answer: the same solve
+    // without subspace steps (which never stops on a stall) run 5,000 sweeps, to 1e-3 N s in each sum.
+    const common::CarFrontOnFenceStall set = common::MakeCarFrontOnFenceStall();
+    const std::array<BodyState, 2> bodies{set.mCar, set.mFence};
+    const std::vector<ImpulseContact>& contacts = set.mContacts;
+    const double restitution = set.mRestitution, closing = set.mClosingSpeed;
     REQUIRE(contacts.size() == 16u);
 
     FrictionSolveStats stats;
