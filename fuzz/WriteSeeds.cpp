@@ -42,6 +42,38 @@ bool Write(const std::filesystem::path& inPath, std::span<const std::byte> inByt
 
 #ifdef CRUMPLE_FUZZ_FEM
 // A surface file with the target's extension byte in front (see FuzzSurfaceMesh.cpp).
+#ifdef CRUMPLE_FUZZ_PROPS
+// A recording with a brittle panel standing in for the wall, its FEM under inSettings: its setup, the hit,
+// three prop steps, with inTakeLoose the loose pieces taken (a PLOS record), a fourth step.
+bool WritePanelSeed(const std::filesystem::path& inPath, const fem::TetSolverSettings& inSettings,
+                    bool inTakeLoose)
+{
+    fuzz::FuzzWorld world;
+    Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
+        plugin::DamageRecorder::Create(inPath, world.Get());
+    Result<std::unique_ptr<props::PropWorld>> prop_world = props::PropWorld::Create(world.Get());
+    if (!recorder.IsValid() || !prop_world.IsValid())
+        return false;
+    fem::TetGridSettings grid;
+    grid.mOrigin = Vec3(2.1, -1.0, -1.0);
+    grid.mSize = Vec3(0.2, 2.0, 2.0);
+    grid.mCellCount = {1, 4, 4};
+    fem::FemMaterialSettings material;
+    material.mTensileStrength = 2.0e5; // weak enough that the hit knocks pieces loose
+    Result<props::FemProp> panel = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material,
+                                                          inSettings, props::FemPropSettings{});
+    bool ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
+              prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
+    world.Dent();
+    for (int step = 0; ok && step < 3; ++step)
+        ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
+    if (inTakeLoose)
+        ok = ok && prop_world.Get()->TakeLooseFragments().IsValid();
+    ok = ok && prop_world.Get()->Step(1.0 / 60.0).IsValid();
+    return ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
+}
+#endif
+
 bool WriteSurfaceSeed(const std::filesystem::path& inFolder, const std::string& inName, std::uint8_t inExtension,
                       bool inPly)
 {
@@ -85,65 +117,15 @@ int main(int argc, char** argv)
     }
 
 #ifdef CRUMPLE_FUZZ_PROPS
-    // A recording with a brittle panel standing in for the wall: its setup, the hit, three prop steps, the
-    // loose pieces taken, a fourth step.
-    {
-        fuzz::FuzzWorld world;
-        std::filesystem::create_directories(out / "prop_replay");
-        Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
-            plugin::DamageRecorder::Create(out / "prop_replay" / "panel_hit.crumple", world.Get());
-        Result<std::unique_ptr<props::PropWorld>> prop_world = props::PropWorld::Create(world.Get());
-        ok = ok && recorder.IsValid() && prop_world.IsValid();
-        if (ok)
-        {
-            fem::TetGridSettings grid;
-            grid.mOrigin = Vec3(2.1, -1.0, -1.0);
-            grid.mSize = Vec3(0.2, 2.0, 2.0);
-            grid.mCellCount = {1, 4, 4};
-            fem::FemMaterialSettings material;
-            material.mTensileStrength = 2.0e5; // weak enough that the hit knocks pieces loose
-            fem::TetSolverSettings settings;
-            settings.mGravity = Vec3::Zero();
-            Result<props::FemProp> panel =
-                props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material, settings, props::FemPropSettings{});
-            ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
-                 prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
-            world.Dent();
-            for (int step = 0; ok && step < 3; ++step)
-                ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
-            // The pieces knocked loose leave as bodies (a PLOS record), then one more step.
-            ok = ok && prop_world.Get()->TakeLooseFragments().IsValid() && prop_world.Get()->Step(1.0 / 60.0).IsValid();
-            ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
-        }
-    }
-    // The same panel under gravity on a ground at its foot (its record carries the ground's tag).
-    {
-        fuzz::FuzzWorld world;
-        Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
-            plugin::DamageRecorder::Create(out / "prop_replay" / "panel_on_ground.crumple", world.Get());
-        Result<std::unique_ptr<props::PropWorld>> prop_world = props::PropWorld::Create(world.Get());
-        ok = ok && recorder.IsValid() && prop_world.IsValid();
-        if (ok)
-        {
-            fem::TetGridSettings grid;
-            grid.mOrigin = Vec3(2.1, -1.0, -1.0);
-            grid.mSize = Vec3(0.2, 2.0, 2.0);
-            grid.mCellCount = {1, 4, 4};
-            fem::FemMaterialSettings material;
-            material.mTensileStrength = 2.0e5;
-            fem::TetSolverSettings settings;
-            settings.mGround = fem::GroundPlane{true, Vec3::UnitZ(), -1.0, 0.6};
-            Result<props::FemProp> panel = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material,
-                                                                  settings, props::FemPropSettings{});
-            ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
-                 prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
-            world.Dent();
-            for (int step = 0; ok && step < 4; ++step)
-                ok = prop_world.Get()->Step(1.0 / 60.0).IsValid();
-            ok = ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() &&
-                 recorder.Get()->Close().IsValid();
-        }
-    }
+    // Recordings with a brittle panel standing in for the wall: the loose pieces taken (a PLOS record), and
+    // under gravity on a ground at its foot (its record carries the ground's tag).
+    std::filesystem::create_directories(out / "prop_replay");
+    fem::TetSolverSettings weightless;
+    weightless.mGravity = Vec3::Zero();
+    ok = ok && WritePanelSeed(out / "prop_replay" / "panel_hit.crumple", weightless, true);
+    fem::TetSolverSettings grounded;
+    grounded.mGround = fem::GroundPlane{true, Vec3::UnitZ(), -1.0, 0.6};
+    ok = ok && WritePanelSeed(out / "prop_replay" / "panel_on_ground.crumple", grounded, false);
 #endif
 
 #ifdef CRUMPLE_FUZZ_FEM
