@@ -45,18 +45,31 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
 {
     if (Status radius = CheckContactSpreadRadius(inContactSpread, "MakeHeldFemProp"); radius.HasError())
         return radius.GetError();
-    Result<FemProp> prop = FemProp::Create(ioProvider, inBodyMesh, inMaterial, inSolver, inPropSettings);
-    if (!prop)
-        return prop;
-    (void)prop.Get().SetContactSpread(inContactSpread); // checked above
-    // intent: every anchor checked, then all set at once (node by node, a GPU prop would sync per node)
+    if (inPropSettings.mBackend != EFemBackend::Cpu && inPropSettings.mBackend != EFemBackend::Gpu)
+        return MakeError(EError::InvalidArgument, "FemPropSettings.mBackend is not an EFemBackend");
+    Result<fem::TetSolver> solver = fem::TetSolver::Create(inBodyMesh, inMaterial, inSolver);
+    if (!solver)
+        return solver.GetError();
+    // intent: every anchor checked, then all set at once
     for (int node : inAnchoredNodes)
-        if (node < 0 || node >= prop.Get().GetNodeCount())
+        if (node < 0 || node >= solver.Get().GetNodeCount())
             return MakeError(EError::OutOfRange, "MakeHeldFemProp: anchored node " + std::to_string(node) +
                                                      " is outside [0, " +
-                                                     std::to_string(prop.Get().GetNodeCount()) + ")");
-    if (Status fixed = prop.Get().SetNodesFixed(inAnchoredNodes, true); !fixed)
+                                                     std::to_string(solver.Get().GetNodeCount()) + ")");
+    if (Status fixed = solver.Get().SetNodesFixed(inAnchoredNodes, true); !fixed)
         return MakeError(fixed.GetError().mCode, "MakeHeldFemProp: anchoring: " + fixed.GetError().mMessage);
+    // intent: under gravity the prop starts where it hangs on its anchors (its static equilibrium, worked out
+    // on a copy), so that it settles and sleeps within a few steps instead of sagging for dozens; the prop is
+    // the fresh solver moved there (no warm start, no element work), as a replay rebuilds it from its record.
+    // Where the static solve does not converge the prop starts as made.
+    if (!(inSolver.mGravity.array() == 0.0).all() && !inAnchoredNodes.empty())
+    {
+        fem::TetSolver hanging = solver.Get();
+        if (hanging.SolveStatic().IsValid())
+            (void)solver.Get().SetPositions(hanging.GetPositions()); // the copy's own, valid positions
+    }
+    FemProp prop = FemProp::FromSolver(ioProvider, std::move(solver).Get(), inPropSettings);
+    (void)prop.SetContactSpread(inContactSpread); // checked above
     return prop;
 }
 
