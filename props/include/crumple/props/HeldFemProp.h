@@ -34,12 +34,14 @@ CRUMPLE_API fem::TetSolverSettings HeldPropSolverSettings();
 /// ground): a prop on inBodyMesh (MakePropBody's mMesh, the body frame) with inSolver (its gravity and
 /// ground, if any, in the body frame) and the nodes of inAnchoredNodes fixed (its footings:
 /// TetFence::mGroundNodes), spreading each contact's impulse over inContactSpread (FemProp::SetContactSpread,
-/// m; 0: the containing element's nodes). A prop with gravity is loaded as made: it sags onto its anchors
-/// over its first steps and sleeps once settled. Refused, in this order: a spread radius that is not finite
-/// and >= 0; the first reason for a mesh, material or solver settings FemProp::Create refuses; an anchored
-/// node out of range. inPropSettings and ioProvider choose the backend as for FemProp::Create (the CPU by
-/// default; a GPU request without a device, or for what the GPU solver lacks, runs on the CPU and says why);
-/// the anchors are set in one SetNodesFixed (one read and write on the GPU).
+/// m; 0: the containing element's nodes). A prop with gravity starts at its static equilibrium on its
+/// anchors (TetSolver::SolveStatic on a copy; the prop is a fresh solver at those positions, recorded and
+/// replayed as any), so it sleeps within a few steps; where that solve fails it starts as made and sags.
+/// Refused, in this order: a spread radius that is not finite and >= 0; a backend that is not an
+/// EFemBackend; the first reason for a mesh, material or solver settings TetSolver::Create refuses; an
+/// anchored node out of range. inPropSettings and ioProvider choose the backend as for FemProp::Create (the
+/// CPU by default; a GPU request without a device, or for what the GPU solver lacks, runs on the CPU and says
+/// why); the anchors are set on the CPU solver before it moves to the GPU.
 CRUMPLE_API Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh,
                                             const fem::FemMaterialSettings& inMaterial,
                                             std::span<const int> inAnchoredNodes,
