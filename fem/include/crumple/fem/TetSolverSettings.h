@@ -20,8 +20,8 @@ struct CRUMPLE_API TetSolverSettings
     /// sub-step
     EIntegrator mIntegrator = EIntegrator::ImplicitEuler;
     Vec3 mGravity = Vec3(0.0, 0.0, -9.81); ///< Acceleration of gravity (m/s^2), world frame, z up
-    /// A ground the free nodes rest on (off by default; implicit Euler only; GroundPlane). SolveStatic()
-    /// ignores it.
+    /// A ground the free nodes rest on (off by default; implicit Euler only; GroundPlane). SolveStatic() and
+    /// ContactEffectiveMass() ignore it.
     GroundPlane mGround;
 
     /// Symplectic Euler: each sub-step is mStabilitySafetyFactor x the proven stable limit of
