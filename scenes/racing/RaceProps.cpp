@@ -114,7 +114,6 @@ Result<std::unique_ptr<RaceProps>> RaceProps::Create(DamageWorld& ioDamage, Race
         prop.mBody = added.Get().mBody;
         prop.mProp = added.Get().mProp;
         prop.mBodyPose = {body.mOrientation, body.mPosition};
-        prop.mLeftOut.assign(added.Get().mMade.mMesh.GetTets().size(), 0);
         result->mProps.push_back(std::move(prop));
     }
     if (Status prepared = result->mWorld->Prepare(inStepTime); !prepared)
@@ -142,8 +141,6 @@ Status RaceProps::Step(double inDeltaTime, std::vector<RaceNewPiece>& outNewPiec
         const auto index = static_cast<std::size_t>(piece.mPiece.mProp.mValue);
         Prop& prop = mProps[index];
         ++prop.mLoose;
-        for (int element : piece.mPiece.mElements)
-            prop.mLeftOut[static_cast<std::size_t>(element)] = 1;
         if (!piece.mBody.IsValid())
             continue;
         const double drawing_start_ms = common::ThreadCpuMs();
@@ -197,8 +194,8 @@ void RaceProps::Paint(ScenePainter& ioPainter, const DamageWorld& inDamage) cons
     for (const Prop& prop : mProps)
     {
         const fem::TetSolver& solver = *mWorld->GetProp(prop.mProp)->GetCpuSolver();
-        const common::TetSurface surface =
-            common::MakeTetSurface(solver.GetPositions(), solver.GetElementNodes(), prop.mLeftOut);
+        const common::TetSurface surface = common::MakeTetSurface(
+            solver.GetPositions(), solver.GetElementNodes(), mWorld->GetTakenElements(prop.mProp));
         // Coloured as the cars are, by how far each node moved from its rest position (a crack's two sides
         // each from their own).
         ioPainter.Add(solver.GetPositions(), surface.mNormals, surface.mTriangles,

@@ -123,8 +123,7 @@ class RaceProps
         std::string mName;
         plugin::BodyId mBody;
         props::PropId mProp;
-        Transform mBodyPose;                ///< The held body's frame (the FEM's frame) in the world
-        std::vector<std::uint8_t> mLeftOut; ///< Per element: left the prop with a piece (not drawn with it)
+        Transform mBodyPose; ///< The held body's frame (the FEM's frame) in the world
         std::vector<Piece> mPieces;
         int mLoose = 0; ///< Pieces handed over, with a body or without (too light)
     };

@@ -91,6 +91,14 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
         momentum_after += piece.mRigidBody.mBody.mMass * piece.mRigidBody.mBody.mLinearVelocity;
     }
     CHECK((momentum_after - momentum_before).norm() <= 1.0e-9 * std::max(momentum_before.norm(), 1.0));
+    // The prop says which elements left with them (GetTakenElements), exactly those.
+    std::vector<std::uint8_t> taken(solver.GetElementNodes().size(), 0);
+    for (const LooseFragment& piece : loose)
+        for (int element : piece.mElements)
+            taken[static_cast<std::size_t>(element)] = 1;
+    const std::span<const std::uint8_t> reported = props->GetTakenElements(wall);
+    CHECK(std::vector<std::uint8_t>(reported.begin(), reported.end()) == taken);
+    CHECK(props->GetTakenElements(PropId{99}).empty());
     // They left the prop: every piece now holds a fixed node, and a second call hands over nothing.
     for (const TetFragment& piece : solver.ComputeFragments())
         CHECK(piece.mAnchored);

@@ -211,6 +211,14 @@ public:
     {
         return inProp.mValue < mProps.size() ? mProps[inProp.mValue].mPiecesTaken : 0;
     }
+    /// Per element of the prop, 1 where TakeLooseFragments handed the element's piece over (what is left of
+    /// the prop is the other elements); empty before any piece left, and for an unknown prop
+    std::span<const std::uint8_t> GetTakenElements(PropId inProp) const
+    {
+        return inProp.mValue < mProps.size()
+                   ? std::span<const std::uint8_t>(mProps[inProp.mValue].mTakenElements)
+                   : std::span<const std::uint8_t>();
+    }
     /// How fast the prop's material that the latest collisions struck is moving after the step, along the
     /// direction it was struck (world frame, m/s): the mean velocity of the nodes that took the impulses of
     /// the latest step that had any, weighted by each node's share (nodes of pieces handed over left out),
