@@ -97,11 +97,18 @@ void FilterGroundNormal(const Vec3& inNormal, std::span<const std::uint8_t> inHe
             ioValues[node] -= inNormal.dot(ioValues[node]) * inNormal;
 }
 
-void GroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHeld,
-                    std::span<const Vec3> inResidual, std::span<double> outImpulses)
+void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHeld,
+                        std::span<Vec3> ioResidual, std::span<double> outImpulses)
 {
     for (std::size_t node = 0; node < inHeld.size(); ++node)
-        outImpulses[node] = inHeld[node] != 0 ? -inNormal.dot(inResidual[node]) : 0.0;
+    {
+        outImpulses[node] = 0.0;
+        if (inHeld[node] == 0)
+            continue;
+        const double normal_part = inNormal.dot(ioResidual[node]);
+        outImpulses[node] = -normal_part;
+        ioResidual[node] -= normal_part * inNormal;
+    }
 }
 
 bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,

@@ -45,10 +45,11 @@ int ReleasePulledNodes(const Vec3& inNormal, std::span<const Vec3> inResidual,
 /// Removes the normal part of ioValues at the held nodes (Baraff & Witkin's filter S = I - n n^T).
 void FilterGroundNormal(const Vec3& inNormal, std::span<const std::uint8_t> inHeld, std::span<Vec3> ioValues);
 
-/// The ground's normal impulse on each held node, -n . r from the momentum residual inResidual (N s, >= 0
-/// once ReleasePulledNodes has run), into outImpulses (#N; 0 at the other nodes).
-void GroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHeld,
-                    std::span<const Vec3> inResidual, std::span<double> outImpulses);
+/// The ground's normal impulse on each held node, -n . r of its momentum residual (N s, >= 0 once
+/// ReleasePulledNodes has run), into outImpulses (#N; 0 at the other nodes), and that normal part taken out
+/// of ioResidual (FilterGroundNormal): the ground supplies it.
+void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHeld,
+                        std::span<Vec3> ioResidual, std::span<double> outImpulses);
 
 /// After the solve: each held node's tangential velocity slowed by inGround.mFriction times its impulse per
 /// unit mass (at most to zero) and its position moved to x0 + h v; each other free node still below the

@@ -802,8 +802,8 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         if (held != nullptr)
         {
             ReleasePulledNodes(ground.mNormal, scratch.mResidual, scratch.mGroundHeld);
-            GroundImpulses(ground.mNormal, scratch.mGroundHeld, scratch.mResidual, scratch.mGroundImpulses);
-            FilterGroundNormal(ground.mNormal, scratch.mGroundHeld, scratch.mResidual);
+            TakeGroundImpulses(ground.mNormal, scratch.mGroundHeld, scratch.mResidual,
+                               scratch.mGroundImpulses);
         }
 
         // The factored preconditioner follows the element frames just updated.
