@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "CarFrontOnFenceStall.h"
+#include "CarOnHeldFence.h"
 
 namespace crumple::common
 {
@@ -14,12 +15,7 @@ CarFrontOnFenceStall MakeCarFrontOnFenceStall()
     c.mCar.mCenterOfMass = Vec3(0x1.57a724p+5, 0x1.41776cp-2, 0x1.9e2c56p-1);
     c.mCar.mLinearVelocity = Vec3(0x1.404e5ep+4, -0x1.043f3cp-2, 0x1.545888p-5);
     c.mCar.mAngularVelocity = Vec3(0x1.35ad6p-7, -0x1.50697cp-11, -0x1.0debecp-4);
-    c.mFence.mMass = 0x1.9000009600004p+5;
-    c.mFence.mInverseInertiaWorld << 0x1.5b459ep-7, 0x0p+0, 0x0p+0, 0x0p+0, 0x1.51951ap-2, 0x0p+0, 0x0p+0,
-        0x0p+0, 0x1.667ab6p-7;
-    c.mFence.mCenterOfMass = Vec3(0x1.686666p+5, 0x1.0cp-44, 0x1.3851ecp-1);
-    c.mFence.mLinearVelocity = Vec3(0x0p+0, 0x0p+0, 0x0p+0);
-    c.mFence.mAngularVelocity = Vec3(0x0p+0, 0x0p+0, 0x0p+0);
+    c.mFence = RacingFenceHeldBody();
     for (plugin::BodyState* body : {&c.mCar, &c.mFence})
         body->mTransform.mTranslation = body->mCenterOfMass;
     c.mContacts = {

@@ -5,6 +5,19 @@
 namespace crumple::common
 {
 
+plugin::BodyState RacingFenceHeldBody()
+{
+    plugin::BodyState fence;
+    fence.mMass = 0x1.9000009600004p+5;
+    fence.mInverseInertiaWorld << 0x1.5b459ep-7, 0x0p+0, 0x0p+0, 0x0p+0, 0x1.51951ap-2, 0x0p+0, 0x0p+0,
+        0x0p+0, 0x1.667ab6p-7;
+    fence.mCenterOfMass = Vec3(0x1.686666p+5, 0x1.0cp-44, 0x1.3851ecp-1);
+    fence.mLinearVelocity = Vec3::Zero();
+    fence.mAngularVelocity = Vec3::Zero();
+    fence.mTransform.mTranslation = fence.mCenterOfMass;
+    return fence;
+}
+
 CarOnHeldFence MakeCarOnHeldFence()
 {
     CarOnHeldFence c;
@@ -14,12 +27,7 @@ CarOnHeldFence MakeCarOnHeldFence()
     c.mCar.mCenterOfMass = Vec3(0x1.56f2fep+5, 0x1.9e74c4p-1, 0x1.9e3646p-1);
     c.mCar.mLinearVelocity = Vec3(0x1.400daap+4, 0x1.54b32p+0, 0x1.5845bep-5);
     c.mCar.mAngularVelocity = Vec3(0x1.5fd76cp-14, -0x1.c5314cp-12, 0x1.681738p-26);
-    c.mFence.mMass = 0x1.9000009600004p+5;
-    c.mFence.mInverseInertiaWorld << 0x1.5b459ep-7, 0x0p+0, 0x0p+0, 0x0p+0, 0x1.51951ap-2, 0x0p+0, 0x0p+0,
-        0x0p+0, 0x1.667ab6p-7;
-    c.mFence.mCenterOfMass = Vec3(0x1.686666p+5, 0x1.0cp-44, 0x1.3851ecp-1);
-    c.mFence.mLinearVelocity = Vec3(0x0p+0, 0x0p+0, 0x0p+0);
-    c.mFence.mAngularVelocity = Vec3(0x0p+0, 0x0p+0, 0x0p+0);
+    c.mFence = RacingFenceHeldBody();
     for (plugin::BodyState* body : {&c.mCar, &c.mFence})
         body->mTransform.mTranslation = body->mCenterOfMass;
     c.mContacts = {

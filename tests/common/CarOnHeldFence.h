@@ -24,6 +24,10 @@ struct CarOnHeldFence
     double mClosingSpeed = 0.5;                    ///< DamageWorldSettings' resting speed (m/s)
 };
 
+/// The racing fence's held body at rest (50 kg, its inertia small about the fence's length), as every dump of
+/// a batch against it has it, bit for bit.
+plugin::BodyState RacingFenceHeldBody();
+
 /// The CarOnHeldFence's bodies and contacts, bit for bit as dumped.
 CarOnHeldFence MakeCarOnHeldFence();
 
