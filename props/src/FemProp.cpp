@@ -56,14 +56,21 @@ Result<FemProp> FemProp::Create(gpu::ComputeDeviceProvider* ioProvider, const fe
                                 const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
                                 const FemPropSettings& inPropSettings)
 {
-    if (inPropSettings.mBackend != EFemBackend::Cpu && inPropSettings.mBackend != EFemBackend::Gpu)
-        return MakeError(EError::InvalidArgument, "FemPropSettings.mBackend is not an EFemBackend");
+    if (Status valid = CheckSettings(inPropSettings); valid.HasError())
+        return valid.GetError();
 
     // Bad input is refused whatever the backend: the CPU solver validates everything.
     Result<fem::TetSolver> cpu = fem::TetSolver::Create(inMesh, inMaterial, inSettings);
     if (cpu.HasError())
         return cpu.GetError();
     return FromSolver(ioProvider, std::move(cpu.Get()), inPropSettings);
+}
+
+Status FemProp::CheckSettings(const FemPropSettings& inPropSettings)
+{
+    if (inPropSettings.mBackend != EFemBackend::Cpu && inPropSettings.mBackend != EFemBackend::Gpu)
+        return MakeError(EError::InvalidArgument, "FemPropSettings.mBackend is not an EFemBackend");
+    return Status::Ok();
 }
 
 FemProp FemProp::FromSolver(gpu::ComputeDeviceProvider* ioProvider, fem::TetSolver&& ioSolver,

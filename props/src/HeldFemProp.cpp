@@ -45,8 +45,8 @@ Result<FemProp> MakeHeldFemProp(const fem::TetMesh& inBodyMesh, const fem::FemMa
 {
     if (Status radius = CheckContactSpreadRadius(inContactSpread, "MakeHeldFemProp"); radius.HasError())
         return radius.GetError();
-    if (inPropSettings.mBackend != EFemBackend::Cpu && inPropSettings.mBackend != EFemBackend::Gpu)
-        return MakeError(EError::InvalidArgument, "FemPropSettings.mBackend is not an EFemBackend");
+    if (Status valid = FemProp::CheckSettings(inPropSettings); valid.HasError())
+        return valid.GetError();
     Result<fem::TetSolver> solver = fem::TetSolver::Create(inBodyMesh, inMaterial, inSolver);
     if (!solver)
         return solver.GetError();

@@ -300,6 +300,12 @@ TEST_CASE("MakeHeldFemProp: no gravity by default, its footings anchored, asleep
     const props::FemProp tuned = props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).Get();
     CHECK(tuned.GetCpuSolver()->GetSettings().mFactorRefreshIterations == 3);
     CHECK(tuned.GetCpuSolver()->GetSettings().mCgRelativeTolerance == 1.0e-8);
+    props::FemPropSettings unknown_backend;
+    unknown_backend.mBackend = static_cast<props::EFemBackend>(7);
+    const Result<props::FemProp> no_backend =
+        props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own, 0.0, unknown_backend);
+    REQUIRE(no_backend.HasError());
+    CHECK(no_backend.GetError().mMessage.find("mBackend") != std::string::npos);
     own.mFactorRefreshIterations = -1;
     CHECK(props::MakeHeldFemProp(mesh, fem::FemMaterialSettings{}, footings, own).HasError());
 

@@ -66,6 +66,10 @@ public:
                                   const fem::FemMaterialSettings& inMaterial, const fem::TetSolverSettings& inSettings,
                                   const FemPropSettings& inPropSettings);
 
+    /// Refuses prop settings Create would refuse (a backend that is not an EFemBackend), for callers that
+    /// build the solver themselves before FromSolver
+    static Status CheckSettings(const FemPropSettings& inPropSettings);
+
     /// A prop in the state of a CPU solver (positions, velocities, anchors, forces, gravity, cracks): on the
     /// CPU as it is, or moved to the GPU (gpu::GpuTetSolver::CreateFrom) when inPropSettings ask for it and
     /// the GPU can run it; otherwise on the CPU with the reason, as Create. How a recorded prop is rebuilt.
