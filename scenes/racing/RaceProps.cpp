@@ -140,7 +140,6 @@ Status RaceProps::Step(double inDeltaTime, std::vector<RaceNewPiece>& outNewPiec
         // intent: props are added in order, so a prop's PropId is its index
         const auto index = static_cast<std::size_t>(piece.mPiece.mProp.mValue);
         Prop& prop = mProps[index];
-        ++prop.mLoose;
         if (!piece.mBody.IsValid())
             continue;
         const double drawing_start_ms = common::ThreadCpuMs();
@@ -231,11 +230,11 @@ std::string RaceProps::Summary() const
     {
         const fem::TetSolver& solver = *mWorld->GetProp(prop.mProp)->GetCpuSolver();
         std::snprintf(line, sizeof(line),
-                      "%s: %zu tetrahedra, %d links broken, %d pieces loose (%zu engine bodies), %d "
+                      "%s: %zu tetrahedra, %d links broken, %llu pieces loose (%zu engine bodies), %d "
                       "factorisations and %d refreshes\n",
                       prop.mName.c_str(), solver.GetElementNodes().size(), solver.GetBrokenLinkCount(),
-                      prop.mLoose, prop.mPieces.size(), solver.GetFactorizationCount(),
-                      solver.GetFactorRefreshCount());
+                      static_cast<unsigned long long>(mWorld->GetShapeRevision(prop.mProp)),
+                      prop.mPieces.size(), solver.GetFactorizationCount(), solver.GetFactorRefreshCount());
         summary += line;
     }
     std::snprintf(

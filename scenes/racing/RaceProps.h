@@ -125,7 +125,6 @@ class RaceProps
         props::PropId mProp;
         Transform mBodyPose; ///< The held body's frame (the FEM's frame) in the world
         std::vector<Piece> mPieces;
-        int mLoose = 0; ///< Pieces handed over, with a body or without (too light)
     };
     void MakePiece(Prop& ioProp, const props::HeldPiece& inPiece);
 
