@@ -100,6 +100,11 @@ void RaceCases(BenchTable& ioTable, const std::string& inEngine, bool inQuick)
     // The props' FEM as a task too (landing one engine step later): what is left on the game's thread.
     RaceCase<Scene>(ioTable, inEngine, "racing/deferred_props_off_thread_2_threads",
                     {.mThreads = 2, .mDeferDents = true, .mPropsOffThread = true}, frames);
+    // The contacts' impulses on the dents' task as well (the props hear of a hit one more engine step later:
+    // another run, whose car may take another path).
+    RaceCase<Scene>(ioTable, inEngine, "racing/impulses_props_off_thread_2_threads",
+                    {.mThreads = 2, .mDeferDents = true, .mDeferImpulses = true, .mPropsOffThread = true},
+                    frames);
 }
 
 #endif

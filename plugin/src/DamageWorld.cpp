@@ -66,6 +66,8 @@ Result<std::unique_ptr<DamageWorld>> DamageWorld::Create(const DamageWorldSettin
                                    inSettings.mJobs->mWaitTask == nullptr))
         return MakeError(EError::InvalidArgument,
                          "DamageWorldSettings.mDeferDents needs mJobs with mStartTask and mWaitTask");
+    if (inSettings.mDeferImpulses && !inSettings.mDeferDents)
+        return MakeError(EError::InvalidArgument, "DamageWorldSettings.mDeferImpulses needs mDeferDents");
     Result<CollisionGrouper> grouper = CollisionGrouper::Create(inSettings.mGrouping);
     if (!grouper)
         return grouper.GetError();
@@ -86,6 +88,11 @@ void DamageWorld::WaitForDents() const
 void DamageWorld::RunDeferredDents(void* inInFlight)
 {
     auto* flight = static_cast<InFlight*>(inInFlight);
+    // intent: the impulses of the steps submitted since the last Update, in order (the grouper and the impact
+    // memories are the task's until it lands); the dents are of collisions closed before them
+    for (const Submission& submission : flight->mSubmissions)
+        if (flight->mWorld->SolveSubmission(submission).HasError())
+            ++flight->mSubmissionsDropped;
     for (std::size_t i = 0; i < flight->mCollisions.size(); ++i)
         for (const DentTarget& target : flight->mTargets[i])
             flight->mDents[i].push_back({target.mObject, DispatchedDent(target.mDeformable->ApplyCollision(
@@ -99,6 +106,9 @@ void DamageWorld::Land()
     WaitForDents();
     InFlight& flight = *mInFlight;
     flight.mActive = false;
+    mLanded.mSubmissionsDropped += flight.mSubmissionsDropped;
+    flight.mSubmissionsDropped = 0;
+    flight.mSubmissions.clear();
     // Take the batch out first: a listener may update the world (and start the next batch) from its callback.
     const std::vector<Collision> collisions = std::move(flight.mCollisions);
     const std::vector<std::vector<DentTarget>> targets = std::move(flight.mTargets);
@@ -188,6 +198,7 @@ Status DamageWorld::RemoveBody(BodyId inBody)
     if (!IsLive(inBody))
         return MakeError(EError::OutOfRange, "RemoveBody: body " + std::to_string(inBody.mValue) + " does not exist");
     Land(); // its objects may be denting
+    SolvePendingHere(); // its open collisions and memories, this step's included, go with it
     BodySlot& slot = mBodies[inBody.mValue];
     for (ObjectId object : slot.mObjects)
     {
@@ -210,6 +221,12 @@ Status DamageWorld::ForgetImpacts(BodyId inBody)
 {
     if (!IsLive(inBody))
         return MakeError(EError::OutOfRange, "ForgetImpacts: body " + std::to_string(inBody.mValue) + " does not exist");
+    if (mSettings.mDeferImpulses)
+    {
+        // intent: in order with the submissions around it, on the task that solves them
+        mPending.push_back(Submission{.mForget = inBody});
+        return Status::Ok();
+    }
     std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
     return Status::Ok();
 }
@@ -336,6 +353,71 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t i = 0; i < inContacts.size(); ++i)
         if (Status valid = ValidateContact(inContacts[i], i); !valid)
             return valid;
+    if (!mSettings.mDeferImpulses)
+        return SolveContacts(inContacts, inTimeStep, SnapshotBodies(inContacts));
+    if (!inContacts.empty())
+        mPending.push_back(Submission{.mContacts = {inContacts.begin(), inContacts.end()},
+                                      .mTimeStep = inTimeStep,
+                                      .mBodies = SnapshotBodies(inContacts)});
+    return Status::Ok();
+}
+
+std::vector<DamageWorld::SubmittedBody>
+DamageWorld::SnapshotBodies(std::span<const ContactEvent> inContacts) const
+{
+    std::vector<SubmittedBody> bodies;
+    for (const ContactEvent& contact : inContacts)
+        for (BodyId body : {contact.mBodyA, contact.mBodyB})
+            bodies.push_back({body, {}, false});
+    std::sort(bodies.begin(), bodies.end(),
+              [](const SubmittedBody& inA, const SubmittedBody& inB) { return inA.mBody < inB.mBody; });
+    bodies.erase(std::unique(bodies.begin(), bodies.end(),
+                             [](const SubmittedBody& inA, const SubmittedBody& inB)
+                             { return inA.mBody == inB.mBody; }),
+                 bodies.end());
+    for (SubmittedBody& body : bodies)
+    {
+        body.mState = mBodies[body.mBody.mValue].mState;
+        body.mDispatchEachStep = mBodies[body.mBody.mValue].mDispatchEachStep;
+    }
+    return bodies;
+}
+
+Status DamageWorld::SolveSubmission(const Submission& inSubmission)
+{
+    if (inSubmission.mForget.IsValid())
+    {
+        std::erase_if(mImpactMemories, [&](const ImpactMemory& m)
+                      { return m.mA == inSubmission.mForget || m.mB == inSubmission.mForget; });
+        return Status::Ok();
+    }
+    return SolveContacts(inSubmission.mContacts, inSubmission.mTimeStep, inSubmission.mBodies);
+}
+
+void DamageWorld::SolvePendingHere()
+{
+    // intent: what waited for the next task; each submission was validated when it came (a non-finite
+    // impulse drops it whole, as on the task)
+    std::vector<Submission> pending = std::move(mPending);
+    mPending.clear();
+    for (const Submission& submission : pending)
+        if (SolveSubmission(submission).HasError())
+            ++mLanded.mSubmissionsDropped;
+}
+
+Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
+                                  std::span<const SubmittedBody> inBodies)
+{
+    // intent: the bodies as they were when the contacts came (on the task, the game has moved on since)
+    const auto body_of = [&](BodyId inBody) -> const SubmittedBody&
+    {
+        const auto found =
+            std::lower_bound(inBodies.begin(), inBodies.end(), inBody,
+                             [](const SubmittedBody& inEntry, BodyId inId) { return inEntry.mBody < inId; });
+        CRUMPLE_ASSERT(found != inBodies.end() && found->mBody == inBody,
+                       "a contact's body is not in its submission");
+        return *found;
+    };
 
     // Canonical orientation (A = lower id), surface points, and batches of the same pair and time.
     struct Batch
@@ -374,8 +456,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
         Batch& batch = batches[b];
-        BodyState state_a = mBodies[batch.mA.mValue].mState;
-        BodyState state_b = mBodies[batch.mB.mValue].mState;
+        BodyState state_a = body_of(batch.mA).mState;
+        BodyState state_b = body_of(batch.mB).mState;
         const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);
         const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 && batch.mTime > previous->mTime &&
                                batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
@@ -478,8 +560,8 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
-        const BodySlot& slot_a = mBodies[batches[b].mA.mValue];
-        const BodySlot& slot_b = mBodies[batches[b].mB.mValue];
+        const SubmittedBody& slot_a = body_of(batches[b].mA);
+        const SubmittedBody& slot_b = body_of(batches[b].mB);
         mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b], slot_a.mDispatchEachStep || slot_b.mDispatchEachStep,
                      {ShapeBoxIn(slot_b.mState, slot_a.mState), ShapeBoxIn(slot_a.mState, slot_b.mState)});
     }
@@ -494,24 +576,34 @@ void Add(UpdateReport& ioReport, const UpdateReport& inMore)
     ioReport.mCollisionsDispatched += inMore.mCollisionsDispatched;
     ioReport.mObjectsDented += inMore.mObjectsDented;
     ioReport.mVerticesMoved += inMore.mVerticesMoved;
+    ioReport.mSubmissionsDropped += inMore.mSubmissionsDropped;
 }
 
 } // namespace
 
 UpdateReport DamageWorld::Update(double inTime)
 {
-    // The idle path: nothing in flight, no open collision, no work. A non-finite time closes nothing.
+    // The idle path: nothing in flight, no open collision, nothing submitted, no work. A non-finite time
+    // closes nothing (and submissions wait for the next Update).
     Land();
     UpdateReport report = TakeLandedReport();
-    if (!mGrouper.HasOpen() || !std::isfinite(inTime))
+    if (!std::isfinite(inTime))
         return report;
-    Add(report, Dispatch(mGrouper.TakeClosed(inTime)));
+    // intent: with deferred impulses the grouper now holds the contacts handed to the task that just landed,
+    // as SubmitContacts would have left it at the Update that handed them over: closing at that Update's time
+    // closes what it would have closed (a contact at exactly a window's end joins it first), one Update late
+    const double close_at = mSettings.mDeferImpulses ? mHandedOverAt : inTime;
+    mHandedOverAt = inTime;
+    if (!mGrouper.HasOpen() && mPending.empty())
+        return report;
+    Add(report, Dispatch(mGrouper.HasOpen() ? mGrouper.TakeClosed(close_at) : std::vector<Collision>{}));
     return report;
 }
 
 UpdateReport DamageWorld::Flush()
 {
     Land();
+    SolvePendingHere();
     UpdateReport report = TakeLandedReport();
     if (mGrouper.HasOpen())
         Add(report, Dispatch(mGrouper.TakeAll()));
@@ -538,7 +630,7 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
     UpdateReport report;
     if (mSettings.mDeferDents)
     {
-        if (inCollisions.empty())
+        if (inCollisions.empty() && mPending.empty())
             return report;
         if (mInFlight == nullptr)
             mInFlight = std::make_unique<InFlight>();
@@ -561,6 +653,9 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
         // started before this batch takes the slot.
         Land();
         InFlight& flight = *mInFlight;
+        flight.mWorld = this;
+        flight.mSubmissions = std::move(mPending);
+        mPending.clear();
         flight.mTargets = std::move(targets);
         flight.mCollisions = std::move(inCollisions);
         flight.mDents.assign(flight.mCollisions.size(), {});

@@ -23,6 +23,7 @@ Status RaceScene::CreateDamageWorld()
     DamageWorldSettings damage;
     damage.mJobs = mSettings.mThreads > 1 || mSettings.mDeferDents || mSettings.mPropsOffThread ? &mJobs->Get() : nullptr;
     damage.mDeferDents = mSettings.mDeferDents;
+    damage.mDeferImpulses = mSettings.mDeferImpulses;
     Result<std::unique_ptr<DamageWorld>> world = DamageWorld::Create(damage);
     if (!world)
         return world.GetError();

@@ -30,6 +30,7 @@ struct RaceSceneSettings
     double mSpeed = 20.0;     ///< The car's target speed (m/s)
     int mThreads = 1;         ///< Threads of the game's job system handed to Crumple
     bool mDeferDents = false; ///< DamageWorldSettings::mDeferDents
+    bool mDeferImpulses = false;  ///< DamageWorldSettings::mDeferImpulses (with mDeferDents)
     bool mPropsOffThread = false; ///< props::PropWorldSettings::mStepOffThread: the props' FEM as a task
     /// False: the engine alone, with the same course and cars but no Crumple (no damage world, adapter,
     /// deformable objects or props): the bare side of a frame budget (crumple-bench frame_budget)

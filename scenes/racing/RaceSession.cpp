@@ -99,10 +99,13 @@ int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const cha
         {
             std::printf(
                 "usage: %s [--out DIR] [--duration S] [--speed M_PER_S] [--threads N] [--defer-dents]\n"
-                "       [--props-off-thread] [--no-pictures]\n  %s\n"
+                "       [--defer-impulses] [--props-off-thread] [--no-pictures]\n  %s\n"
                 "  --threads N  the game's job system runs dents on N threads (1: on the game's thread)\n"
                 "  --defer-dents  dents run as a task of the job system and land one frame later\n"
                 "               (DamageWorldSettings::mDeferDents; with --threads 1 the task runs inline)\n"
+                "  --defer-impulses  the contacts' impulses are solved on that task too, and their\n"
+                "               collisions dispatched an engine step later (DamageWorldSettings::\n"
+                "               mDeferImpulses; sets --defer-dents)\n"
                 "  --props-off-thread  the props' FEM steps as a task of the job system, landing at the\n"
                 "               next engine step (props::PropWorldSettings::mStepOffThread)\n"
                 "  Writes DIR/race.crumple (replay for crumple-replay), DIR/car.obj, DIR/parked.obj and, "
@@ -120,6 +123,8 @@ int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const cha
             outOptions.mPictures = false;
         else if (arg == "--defer-dents")
             outOptions.mDeferDents = true;
+        else if (arg == "--defer-impulses")
+            outOptions.mDeferDents = outOptions.mDeferImpulses = true;
         else if (arg == "--props-off-thread")
             outOptions.mPropsOffThread = true;
         else if (arg == "--out" && i + 1 < inArgc)

@@ -71,10 +71,12 @@ struct RaceOptions
     bool mPictures = true;                        ///< PNG before/after and frames
     int mThreads = 1;                             ///< Threads of the game's job system handed to Crumple
     bool mDeferDents = false;                     ///< DamageWorldSettings::mDeferDents
+    bool mDeferImpulses = false;                  ///< DamageWorldSettings::mDeferImpulses (sets mDeferDents)
     bool mPropsOffThread = false;                 ///< props::PropWorldSettings::mStepOffThread
 };
 
-/// Parses --out, --duration, --speed, --threads, --defer-dents, --no-pictures, --help, --version. Returns -1 to go on, else an exit code.
+/// Parses --out, --duration, --speed, --threads, --defer-dents, --defer-impulses, --props-off-thread,
+/// --no-pictures, --help, --version. Returns -1 to go on, else an exit code.
 int ParseRaceOptions(int inArgc, char** inArgv, const char* inProgram, const char* inDescription, RaceOptions& outOptions);
 
 /// The racing car's body mesh: the shipped Toy Car when ../shared/data has it, else a procedural box.

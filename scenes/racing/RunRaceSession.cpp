@@ -16,9 +16,12 @@ int RunRaceSession(const char* inProgram, const RaceOptions& inOptions, const Ma
         std::fprintf(stderr, "%s: %s\n", inProgram, inError.mMessage.c_str());
         return 2;
     };
-    Result<std::unique_ptr<RaceScene>> made = inMakeScene(
-        {.mSpeed = inOptions.mSpeed, .mThreads = inOptions.mThreads, .mDeferDents = inOptions.mDeferDents,
-         .mPropsOffThread = inOptions.mPropsOffThread, .mAttach = true});
+    Result<std::unique_ptr<RaceScene>> made = inMakeScene({.mSpeed = inOptions.mSpeed,
+                                                           .mThreads = inOptions.mThreads,
+                                                           .mDeferDents = inOptions.mDeferDents,
+                                                           .mDeferImpulses = inOptions.mDeferImpulses,
+                                                           .mPropsOffThread = inOptions.mPropsOffThread,
+                                                           .mAttach = true});
     if (!made)
         return fail(made.GetError());
     RaceScene& scene = *made.Get();

@@ -16,6 +16,7 @@
 #include <crumple/plugin/Ids.h>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -29,6 +30,10 @@ struct CRUMPLE_API UpdateReport
     int mCollisionsDispatched = 0;     ///< Collisions whose window closed
     int mObjectsDented = 0;            ///< Object dents that moved at least one vertex
     std::uint64_t mVerticesMoved = 0;  ///< Vertex positions recomputed over all objects
+    /// DamageWorldSettings::mDeferImpulses: steps' contacts whose impulses came out not finite on the task,
+    /// dropped whole there, changing nothing (SubmitContacts refuses them when it solves them itself). Bodies
+    /// within BodyState's ranges give finite impulses: a count above 0 is a defect to report.
+    int mSubmissionsDropped = 0;
 };
 
 /// The damage layer of one physics world. It owns bodies' pre-solve states and deformable objects, turns
@@ -62,7 +67,9 @@ public:
     const BodyState* GetBodyState(BodyId inBody) const;
     /// The game set the body's velocities outside the engine's contact solve (held in place, teleported):
     /// the next contacts of its pairs are solved from the velocities the engine reports, not from what
-    /// their last impulse left (DamageWorldSettings::mCountImpactOnce). Refused for an unknown body.
+    /// their last impulse left (DamageWorldSettings::mCountImpactOnce). With mDeferImpulses it waits, in
+    /// order with the contacts submitted around it, for the task that solves them. Refused for an unknown
+    /// body.
     Status ForgetImpacts(BodyId inBody);
     /// Collisions with the body are dispatched at the end of the step they happen in, not when the world's
     /// time window (CollisionGrouperSettings::mTimeWindow) has passed: a destructible prop's FEM must hear of
@@ -92,12 +99,15 @@ public:
 
     /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
     /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
-    /// time together, and groups the closing ones into collisions. Refused whole on any bad contact.
+    /// time together, and groups the closing ones into collisions. Refused whole on any bad contact. With
+    /// DamageWorldSettings::mDeferImpulses only the validation runs here: the contacts and their bodies'
+    /// states (as now) wait for the task the next Update starts, which does the rest.
     /// @param[in] inTimeStep the engine step that produced them (s), or 0. With a step, a contact reported
-    ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as the
-    ///            engine's speculative contacts do; without one, gap contacts resolve their whole approach.
-    ///            With a step, a pair that took an impulse at the previous step is solved from the velocities
-    ///            that impulse left (an impact is counted once, however many steps the engine takes to stop it).
+    ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as
+    ///            the engine's speculative contacts do; without one, gap contacts resolve their whole
+    ///            approach. With a step, a pair that took an impulse at the previous step is solved from the
+    ///            velocities that impulse left (an impact is counted once, however many steps the engine
+    ///            takes to stop it).
     Status SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep = 0.0);
 
     /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners. With
@@ -129,8 +139,13 @@ public:
     Status LoadDamage(std::span<const std::byte> inBytes);
 
     const DamageWorldSettings& GetSettings() const { return mSettings; }
-    /// Collisions still waiting for their window to close.
-    std::size_t GetOpenCollisionCount() const { return mGrouper.GetOpenCount(); }
+    /// Collisions still waiting for their window to close (waits for a task in flight). With mDeferImpulses,
+    /// those of contacts submitted since the last Update are not counted yet.
+    std::size_t GetOpenCollisionCount() const
+    {
+        WaitForDents();
+        return mGrouper.GetOpenCount();
+    }
     /// Counts the changes of the objects' deformed shapes: each dispatch (or, with deferred dents, each
     /// landing) in which a dent moved vertices, each ResetDamage and each accepted SetDamageState/LoadDamage.
     /// An engine shape that follows the dents (BulletAdapter::CreateFollowingHull) compares it with the count it
@@ -184,6 +199,33 @@ private:
                mBodies[inBody.mValue].mGeneration == inBody.mGeneration;
     }
     Status ValidateContact(const ContactEvent& inContact, std::size_t inIndex) const;
+
+    /// A body named by one SubmitContacts call, as it was then: its state and dispatch flag.
+    struct SubmittedBody
+    {
+        BodyId mBody;
+        BodyState mState;
+        bool mDispatchEachStep = false;
+    };
+    /// One SubmitContacts call, or a ForgetImpacts (mForget valid, no contacts), as the solve takes it.
+    struct Submission
+    {
+        std::vector<ContactEvent> mContacts{};
+        double mTimeStep = 0.0;
+        std::vector<SubmittedBody> mBodies{}; ///< Every body the contacts name, by ascending id
+        BodyId mForget{};
+    };
+    /// The bodies inContacts name (validated: live), by ascending id, as they are now.
+    std::vector<SubmittedBody> SnapshotBodies(std::span<const ContactEvent> inContacts) const;
+    /// Solves validated contacts' impulses into the grouper and the impact memories, reading the bodies only
+    /// from inBodies (so a task can run it while the game moves on); refused whole, changing nothing, where
+    /// an impulse is not finite.
+    Status SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
+                         std::span<const SubmittedBody> inBodies);
+    Status SolveSubmission(const Submission& inSubmission);
+    /// mDeferImpulses: solves the submissions that wait for the next task here and now (calls that need the
+    /// collisions and memories complete: Flush, RemoveBody). Call after Land().
+    void SolvePendingHere();
     UpdateReport Dispatch(std::vector<Collision> inCollisions);
     CrushSide CrushSideOf(BodyId inBody) const;
     /// Listeners may remove themselves (or others) from their callbacks: a dispatch calls the ones
@@ -199,6 +241,9 @@ private:
     };
     struct InFlight
     {
+        DamageWorld* mWorld = nullptr;
+        std::vector<Submission> mSubmissions; ///< mDeferImpulses: solved on the task, before the dents
+        int mSubmissionsDropped = 0;          ///< Written by the task
         std::vector<Collision> mCollisions;
         std::vector<std::vector<DentTarget>> mTargets; ///< Per collision, in dispatch order
         std::vector<std::vector<ObjectDent>> mDents;   ///< Per collision, written by the task
@@ -222,6 +267,10 @@ private:
     std::vector<std::uint32_t> mFreeObjects; ///< Slots of removed objects, likewise
     std::vector<DamageListener*> mListeners;
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
+    std::vector<Submission> mPending;          ///< mDeferImpulses: what the next Update's task solves
+    /// mDeferImpulses: the time of the last Update (with a finite time), which handed its submissions to the
+    /// task; the next Update closes collisions at it
+    double mHandedOverAt = -std::numeric_limits<double>::infinity();
     std::unique_ptr<InFlight> mInFlight;        ///< Deferred dents (stable address for the task)
     UpdateReport mLanded;                       ///< Deferred dents landed and not reported yet
     std::uint64_t mShapeRevision = 0;           ///< GetShapeRevision

@@ -53,6 +53,15 @@ struct CRUMPLE_API DamageWorldSettings
     /// meshes, damage states and recordings are bitwise the same; the task's per-vertex work runs on the
     /// task's thread (mJobs' parallel for is not called from it).
     bool mDeferDents = false;
+    /// With mDeferDents, the contacts' impulses are solved on the dents' task too (the joint friction solve
+    /// of a crowd of contacts can cost milliseconds): SubmitContacts only validates a step's contacts and
+    /// keeps them with their bodies' states, ForgetImpacts waits in order with them, and the next Update's
+    /// task solves them, in order, before its dents. The collisions they close are dispatched one Update
+    /// later than with mDeferDents alone (their dents land one more Update later; a body with
+    /// SetDispatchEachStep hears of its hit at the end of the next step, not of this one), and Flush and
+    /// RemoveBody solve what waits on the calling thread. Collisions, dents and recordings are bitwise those
+    /// of mDeferDents alone where nothing reacts to the dispatch (a prop does), whatever the job system.
+    bool mDeferImpulses = false;
 };
 
 } // namespace crumple::plugin
