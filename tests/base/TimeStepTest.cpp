@@ -9,7 +9,7 @@
 
 using namespace crumple;
 
-TEST_CASE("CheckTimeStep: a finite step > 0 s passes; zero, negative and non-finite ones are named and refused",
+TEST_CASE("CheckTimeStep: a finite step > 0 s passes, zero, negative and non-finite ones are named and refused",
           "[base]")
 {
     CHECK(CheckTimeStep(1.0 / 240.0, "Solver::Step").IsValid());

@@ -66,7 +66,7 @@ TEST_CASE("The dent colour scale is the deepest dent rounded up to 1, 2, 2.5 or 
     CHECK(samples::DentColorScale(std::nan("")) == Approx(0.01));
 }
 
-TEST_CASE("Time-history plots: three PNGs with round grid steps; too short a history is refused", "[crash]")
+TEST_CASE("Time-history plots: three PNGs with round grid steps, too short a history is refused", "[crash]")
 {
     CHECK(crash::NiceStep(300.0, 8) == Approx(50.0));
     CHECK(crash::NiceStep(0.7, 5) == Approx(0.2));

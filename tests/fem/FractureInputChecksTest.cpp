@@ -119,7 +119,7 @@ TEST_CASE("GroupPrincipalStress and OpenCracks refuse inputs that do not fit the
     CHECK(opened.Get() == links.GetLinkCount());
 }
 
-TEST_CASE("BarycentricSearch refuses nodes out of range; an element out of range never wins", "[fem]")
+TEST_CASE("BarycentricSearch refuses nodes out of range, an element out of range never wins", "[fem]")
 {
     const TetMesh mesh = Grid(1, 1, 1);
     std::vector<TetIndices> elements = mesh.GetTets();

@@ -18,7 +18,7 @@ TEST_CASE("SplitMix64 reproduces the reference splitmix64.c stream", "[fem]")
     CHECK(random.Next() == 0xf88bb8a8724c81ecULL);
 }
 
-TEST_CASE("SplitMix64 doubles are the top 53 bits scaled exactly into [0, 1) and [-1, 1)", "[fem]")
+TEST_CASE("SplitMix64 doubles are the top 53 bits scaled exactly into 0 <= x < 1 and -1 <= x < 1", "[fem]")
 {
     SplitMix64 random(0);
     CHECK(random.NextDouble() == static_cast<double>(0xe220a8397b1dcdafULL >> 11) / 9007199254740992.0);

@@ -75,7 +75,7 @@ TEST_CASE("StableTimeStep is a proven bound, not far from the true limit", "[fem
         }
 }
 
-TEST_CASE("Explicit Euler beyond the limit blows up (the paper's instability); the solver's sub-steps do not",
+TEST_CASE("Explicit Euler beyond the limit blows up (the paper's instability), the solver's sub-steps do not",
           "[fem]")
 {
     TetGridSettings grid;

@@ -302,7 +302,7 @@ TEST_CASE("Coarse space: connected aggregates of the free nodes, within the limi
     }
 }
 
-TEST_CASE("Coarse space: a body of too few aggregates gets none; bad input is refused", "[fem]")
+TEST_CASE("Coarse space: a body of too few aggregates gets none, bad input is refused", "[fem]")
 {
     const Body body = MakeBody(true);
     const TetCoarseSpace few = Build(body, {.mMinAggregates = 1000}).Get();

@@ -142,7 +142,7 @@ double MaxDifference(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
 
 } // namespace
 
-TEST_CASE("NodeBlockCholesky: Refactor of the same pattern is bitwise a fresh Factor; another pattern is factored afresh",
+TEST_CASE("NodeBlockCholesky: Refactor of the same pattern is bitwise a fresh Factor, another pattern is factored afresh",
           "[fem]")
 {
     for (std::uint32_t trial = 0; trial < 10; ++trial)
@@ -305,7 +305,7 @@ TEST_CASE("Factored preconditioner: a factor at frames F inverts the system at f
     CHECK(MaxDifference(refreshed, z) <= 1.0e-9 * x.cwiseAbs().maxCoeff());
 }
 
-TEST_CASE("Factor refresh: a struck rail follows the fully converged solve in fewer iterations; 0 never refreshes",
+TEST_CASE("Factor refresh: a struck rail follows the fully converged solve in fewer iterations, 0 never refreshes",
           "[fem]")
 {
     TetSolverSettings refreshing;

@@ -198,7 +198,7 @@ TEST_CASE("Rest system: kept element stiffness gives the blocks bit for bit, and
     CHECK(same(afresh, kept));
 }
 
-TEST_CASE("NodeBlockCholesky: solves random sparse SPD block systems as a dense LLT does; refuses indefinite ones",
+TEST_CASE("NodeBlockCholesky: solves random sparse SPD block systems as a dense LLT does, refuses indefinite ones",
           "[fem]")
 {
     std::mt19937 random(11u);

@@ -172,7 +172,7 @@ TEST_CASE("Ground: a block sliding on it decelerates by mu g and stops where Cou
     CHECK(LowestZ(block) >= -1.0e-9);
 }
 
-TEST_CASE("Ground: it never pulls; a block lifted by a force larger than its weight leaves it", "[fem]")
+TEST_CASE("Ground: it never pulls, a block lifted by a force larger than its weight leaves it", "[fem]")
 {
     const double h = 1.0 / 240.0;
     TetSolver block = MakeBlock(0.0, 0.6);

@@ -129,7 +129,7 @@ TEST_CASE("A bar pulled below yield springs back and accumulates no plastic stra
         CHECK(plastic == Mat3::Zero());
 }
 
-TEST_CASE("A cantilever barrier bent past yield stays bent; an elastic one straightens", "[fem]")
+TEST_CASE("A cantilever barrier bent past yield stays bent, an elastic one straightens", "[fem]")
 {
     // Root bending stress of a tip load P: M c / I = 6 P L / a^3 for a square section of side a.
     TetGridSettings grid;

@@ -92,7 +92,7 @@ TEST_CASE("Sleep: a settled solver does no element work until an impulse wakes i
     }
 }
 
-TEST_CASE("Sleep: a body settled in equilibrium sleeps three steps after it settles; an oscillation never does",
+TEST_CASE("Sleep: a body settled in equilibrium sleeps three steps after it settles, an oscillation never does",
           "[fem]")
 {
     // mSleepStepCount out of reach: only the settled rule (kinetic energy under 1e-8 of the sleep energy
@@ -136,7 +136,7 @@ TEST_CASE("Sleep: a body settled in equilibrium sleeps three steps after it sett
     }
 }
 
-TEST_CASE("Sleep: a free-falling body never sleeps; mSleepSpeed 0 disables sleep", "[fem]")
+TEST_CASE("Sleep: a free-falling body never sleeps, mSleepSpeed 0 disables sleep", "[fem]")
 {
     TetGridSettings grid;
     grid.mCellCount = {2, 1, 1};

@@ -241,7 +241,7 @@ TEST_CASE("TetSolver refuses a symplectic step beyond mMaxSubSteps and a static 
     CHECK(Snapshot(solver) == before);
 }
 
-TEST_CASE("An impulse changes a free node's velocity by J / m; an anchored node absorbs it", "[fem]")
+TEST_CASE("An impulse changes a free node's velocity by J / m, an anchored node absorbs it", "[fem]")
 {
     TetSolver solver = TetSolver::Create(SmallBox(), FemMaterialSettings(), TetSolverSettings()).Get();
     const Vec3 impulse(0.3, -2.0, 1.5);

@@ -198,7 +198,7 @@ TEST_CASE("TetStepper puts a solver that nothing could move to sleep at once, wh
     CHECK(std::count(backend.mCalls.begin(), backend.mCalls.end(), "attempt") == 1); // only the no-sleep step's
 }
 
-TEST_CASE("TetStepper puts a settled solver to sleep after three settled steps, not mSleepStepCount; a crack, a "
+TEST_CASE("TetStepper puts a settled solver to sleep after three settled steps, not mSleepStepCount, a crack, a "
           "divergence or a wake-up starts the count again",
           "[fem]")
 {

@@ -131,7 +131,7 @@ TEST_CASE("Stress: random impulses up to 1e5 N s and steps up to 1/30 s never pr
     }
 }
 
-TEST_CASE("Stress: a diverging step is restored bit for bit and reported; splitting rescues it", "[fem]")
+TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitting rescues it", "[fem]")
 {
     // A free 1 GPa block hit at a corner by 1e3 N s spins at hundreds of rad/s: implicit Euler extrapolates
     // each node along its tangent for 1/30 s, far beyond what one linearised step can undo.

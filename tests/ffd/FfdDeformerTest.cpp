@@ -575,7 +575,7 @@ TEST_CASE("A mesh vertex past 1e6 m is refused (its normals overflowed to NaN)",
     CHECK(status.GetError().mCode == EError::OutOfRange);
 }
 
-TEST_CASE("One-sided dents: a partial push moves no vertex out of the body; the plain solve bulges it", "[ffd]")
+TEST_CASE("One-sided dents: a partial push moves no vertex out of the body, the plain solve bulges it", "[ffd]")
 {
     // A barrier lower than the car: its contacts cover the front face (x = +2) across its whole width and
     // from the bottom edge to 0.5 m below the top, pushed back 0.2 m at the bottom, less towards the
@@ -738,7 +738,7 @@ TEST_CASE("A recompute that turns a rest coordinate's -0.0 into +0.0 marks the v
     }
 }
 
-TEST_CASE("A double-sided sheet on shared vertices faces one way, dented or not; other vertices keep the "
+TEST_CASE("A double-sided sheet on shared vertices faces one way, dented or not, other vertices keep the "
           "area-weighted normal",
           "[ffd]")
 {

@@ -192,7 +192,7 @@ TEST_CASE("FlipFlatEdges: a fan of slivers becomes Delaunay, the face and its ou
         }
 }
 
-TEST_CASE("FlipFlatEdges: a fold between two planes is left alone; bad input changes nothing", "[ffd]")
+TEST_CASE("FlipFlatEdges: a fold between two planes is left alone, bad input changes nothing", "[ffd]")
 {
     TriangleMesh roof;
     roof.mPositions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.1, 0.3), Vec3(0.5, -0.1, 0.3)};
@@ -402,7 +402,7 @@ TEST_CASE("FlipNearlyFlatEdges: bad input changes nothing", "[ffd]")
     CHECK(broken.mTriangles == broken_copy.mTriangles);
 }
 
-TEST_CASE("FlipNearlyFlatEdges: a closed mesh stays closed; a seam's other side is never doubled", "[ffd]")
+TEST_CASE("FlipNearlyFlatEdges: a closed mesh stays closed, a seam's other side is never doubled", "[ffd]")
 {
     SECTION("a re-cut cube, its faces raised or lowered by up to 0.1 mm")
     {

@@ -75,7 +75,7 @@ double Distortion(const FfdDeformer& inDeformer, const std::vector<std::uint32_t
 
 } // namespace
 
-TEST_CASE("A rigid part moves as the lattice moves its centre and keeps its shape; a free one is squashed", "[ffd]")
+TEST_CASE("A rigid part moves as the lattice moves its centre and keeps its shape, a free one is squashed", "[ffd]")
 {
     const BodyAndWheel made = MakeBodyAndWheel();
     FfdDeformer free = MakeDeformer(made, false);

@@ -129,7 +129,7 @@ TEST_CASE("GPU cantilever: settles on the CPU's static deflection within float l
     CHECK(gpu_tip == Approx(static_tip).epsilon(1.0e-3));
 }
 
-TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN; a blow-up is restored and reported",
+TEST_CASE("GPU stress: random impulses up to 1e5 N s never leave a NaN, a blow-up is restored and reported",
           "[gpu]")
 {
     const std::shared_ptr<ComputeDevice> device = test::DeviceOrSkip();

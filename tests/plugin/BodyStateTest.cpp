@@ -190,7 +190,7 @@ TEST_CASE(
     CHECK(Asymmetry(world->GetBodyState(car.Get())->mInverseInertiaWorld) <= 1.0e-9);
 }
 
-TEST_CASE("A double-precision body state is kept bit for bit; one past single-precision round-off is refused",
+TEST_CASE("A double-precision body state is kept bit for bit, one past single-precision round-off is refused",
           "[plugin]")
 {
     BodyState exact;

@@ -83,7 +83,7 @@ TEST_CASE("Removed bodies leave their slots to new bodies, and their ids are ref
     CHECK(fixture.mWorld.GetObjectIds().size() == 1);
 }
 
-TEST_CASE("A respawned car reuses the removed car's slots; the old object's id is refused", "[plugin]")
+TEST_CASE("A respawned car reuses the removed car's slots, the old object's id is refused", "[plugin]")
 {
     WorldFixture fixture;
     const BodyId old_car = fixture.mCar;

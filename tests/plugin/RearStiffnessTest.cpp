@@ -88,7 +88,7 @@ TEST_CASE("CrushMaterialAlong gives the rear's stiffness to a crush pushing the 
     CHECK(ValidateDamageMaterial(bad).IsValid());
 }
 
-TEST_CASE("A hit from behind crushes Campbell's depth with the rear's stiffness; a frontal one is unchanged "
+TEST_CASE("A hit from behind crushes Campbell's depth with the rear's stiffness, a frontal one is unchanged "
           "bit for bit",
           "[plugin]")
 {

@@ -88,7 +88,7 @@ TEST_CASE("CrushMaterialAlong gives the sides' stiffness to a crush nearer the w
 }
 
 TEST_CASE(
-    "A side crush is Campbell's depth with the sides' stiffness; a frontal one is unchanged bit for bit",
+    "A side crush is Campbell's depth with the sides' stiffness, a frontal one is unchanged bit for bit",
     "[plugin]")
 {
     const DamageMaterial soft = SoftSides();

@@ -164,7 +164,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
     CHECK(engine.CallCount() == calls);
 }
 
-TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings; an engine that refuses a piece gets "
+TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings, an engine that refuses a piece gets "
           "the rest done and the refusal back",
           "[props]")
 {

@@ -267,8 +267,8 @@ TEST_CASE("A prop's collision shape follows its FEM and loses the pieces handed 
     CHECK(points < points_before);
 }
 
-TEST_CASE("MakeHeldFemProp: no gravity by default, its footings anchored, asleep until struck; with gravity "
-          "it settles on its anchors; a bad anchor is refused",
+TEST_CASE("MakeHeldFemProp: no gravity by default, its footings anchored, asleep until struck, with gravity "
+          "it settles on its anchors, a bad anchor is refused",
           "[props]")
 {
     const fem::TetMesh mesh = StandingWall();
@@ -349,7 +349,7 @@ TEST_CASE("MakeHeldFemProp: no gravity by default, its footings anchored, asleep
     CHECK(sag < 1.0e-5);
 }
 
-TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world; bad input makes no body", "[props]")
+TEST_CASE("AddHeldProp: a held body from the prop's shape, its anchored FEM in the world, bad input makes no body", "[props]")
 {
     const fem::TetMesh mesh = StandingWall();
     const std::vector<int> footings = Footings(mesh);

@@ -342,7 +342,7 @@ TEST_CASE("Props in a recording: an implicit GPU prop with its coarse space turn
           live.GetGpuSolver()->GetCoarseSpaceTurns());
 }
 
-TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so live and replay agree; a stepped "
+TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so live and replay agree, a stepped "
           "solver moved to the GPU is refused",
           "[props][replay][gpu]")
 {
@@ -467,7 +467,7 @@ TEST_CASE("Props in a recording: a setup of mismatched sizes, a second recorder,
     CHECK(ReplayProps(back).GetError().mCode == EError::CorruptData);
 }
 
-TEST_CASE("Props in a recording: the factor refresh setting is recorded; a record written before it replays without refreshes",
+TEST_CASE("Props in a recording: the factor refresh setting is recorded, a record written before it replays without refreshes",
           "[props][replay]")
 {
     common::WorldFixture fixture;
@@ -498,7 +498,7 @@ TEST_CASE("Props in a recording: the factor refresh setting is recorded; a recor
     }
 }
 
-TEST_CASE("Props in a recording: a contact spread is recorded and replays bit for bit; without one the record is "
+TEST_CASE("Props in a recording: a contact spread is recorded and replays bit for bit, without one the record is "
           "as before",
           "[props][replay]")
 {
@@ -554,7 +554,7 @@ TEST_CASE("Props in a recording: a contact spread is recorded and replays bit fo
     CHECK(EncodePropSetup(setup).HasError());
 }
 
-TEST_CASE("Props in a recording: the crack stress bound is recorded; a record written before it replays "
+TEST_CASE("Props in a recording: the crack stress bound is recorded, a record written before it replays "
           "without one",
           "[props][replay]")
 {
@@ -607,7 +607,7 @@ TEST_CASE("Props in a recording: the crack stress bound is recorded; a record wr
 }
 
 TEST_CASE(
-    "Props in a recording: a prop on a ground replays bit for bit; without a ground the record is as before",
+    "Props in a recording: a prop on a ground replays bit for bit, without a ground the record is as before",
     "[props][replay]")
 {
     const std::filesystem::path path = common::ScratchDirectory() / "props-ground.crumple";

@@ -59,7 +59,7 @@ struct ImpulseTally : DamageListener
 
 } // namespace
 
-TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses; momentum is conserved, energy never grows",
+TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses, momentum is conserved, energy never grows",
           "[props]")
 {
     common::WorldFixture fixture;
