@@ -95,6 +95,41 @@ TEST_CASE("TetStepper refuses a bad step before its backend changes anything", "
     CHECK(backend.mCalls == std::vector<std::string>{"save"});
 }
 
+TEST_CASE("TetStepper does not try a given-up step again from the same start until an input changes", "[fem]")
+{
+    TetStepper stepper;
+    ScriptedBackend backend;
+    backend.mExplicit = false;
+    backend.mPiecesNeeded = 100; // every attempt diverges
+    TetStepResult result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+    REQUIRE(HasEvent(result.mEvents, ETetStepEvent::Diverged));
+    REQUIRE(backend.mPieces == std::vector<int>{1, 2, 4, 8});
+    // The same step from the same start: reported diverged at once, no attempt, nothing saved or restored.
+    const std::size_t calls = backend.mCalls.size();
+    for (int step = 0; step < 3; ++step)
+    {
+        result = stepper.Step(backend, Settings(), 0.01, "Scripted").Get();
+        CHECK(result.mEvents == ETetStepEvent::Diverged);
+        CHECK(result.mNewtonIterations == 0);
+        CHECK(result.mEnergy == -1.0); // the restored start's, from the backend
+    }
+    CHECK(backend.mCalls.size() == calls);
+    // A step of another length is tried; so is the same one once an input changed.
+    REQUIRE(stepper.Step(backend, Settings(), 0.005, "Scripted").IsValid());
+    CHECK(backend.mPieces.size() == 8);
+    REQUIRE(stepper.Step(backend, Settings(), 0.005, "Scripted").IsValid());
+    CHECK(backend.mPieces.size() == 8);
+    stepper.Wake();
+    backend.mPiecesNeeded = 2;
+    result = stepper.Step(backend, Settings(), 0.005, "Scripted").Get();
+    CHECK_FALSE(HasEvent(result.mEvents, ETetStepEvent::Diverged));
+    CHECK(backend.mPieces.size() == 10);
+    // After a step that went through, a diverged one is tried in full again.
+    backend.mPiecesNeeded = 100;
+    REQUIRE(stepper.Step(backend, Settings(), 0.005, "Scripted").IsValid());
+    CHECK(backend.mPieces.size() == 14);
+}
+
 TEST_CASE("TetStepper retries a diverged step in 2, 4, ... pieces from its saved start", "[fem]")
 {
     SECTION("explicit: the sub-steps double, within the sub-step budget")
@@ -230,6 +265,7 @@ TEST_CASE("TetStepper puts a settled solver to sleep after three settled steps, 
         backend.mPiecesNeeded = 1000; // every split diverges: restored
         CHECK(HasEvent(stepper.Step(backend, settings, 0.01, "Scripted").Get().mEvents, ETetStepEvent::Diverged));
         backend.mPiecesNeeded = 1;
+        stepper.Wake(); // an input changed: without one the stepper would not try the given-up step again
         CHECK_FALSE(falls_asleep(stepper, backend));
         CHECK_FALSE(falls_asleep(stepper, backend));
         CHECK(falls_asleep(stepper, backend));

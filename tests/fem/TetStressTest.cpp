@@ -162,6 +162,20 @@ TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitt
             CHECK(solver.GetVelocities() == velocities);
             for (std::size_t tet = 0; tet < rotations.size(); ++tet)
                 CHECK(solver.GetElementRotations()[tet].coeffs() == rotations[tet].coeffs());
+            // The same step again from the same start is not tried: diverged at once, the state as it was.
+            const Result<TetStepResult> again = solver.Step(1.0 / 30.0);
+            REQUIRE(again.IsValid());
+            CHECK(again.Get().mEvents == ETetStepEvent::Diverged);
+            CHECK(again.Get().mNewtonIterations == 0);
+            CHECK(solver.GetPositions() == positions);
+            CHECK(solver.GetVelocities() == velocities);
+            // An input (here an impulse that stops the struck node) and it is tried again, and goes through.
+            REQUIRE(
+                solver.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, -1.0e3, 0.0)).IsValid());
+            const Result<TetStepResult> tried = solver.Step(1.0 / 30.0);
+            REQUIRE(tried.IsValid());
+            CHECK(tried.Get().mNewtonIterations > 0);
+            CHECK_FALSE(HasEvent(tried.Get().mEvents, ETetStepEvent::Diverged));
         }
         else
         {

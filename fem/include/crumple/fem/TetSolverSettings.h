@@ -107,7 +107,9 @@ struct CRUMPLE_API TetSolverSettings
     double mDivergenceEnergyRatio = 0.5;
     /// Divergence: a diverged step is retried from its start in 2, 4, ... 2^mMaxStepSplits equal pieces
     /// (implicit Euler: that many implicit steps; symplectic Euler: that many times the sub-steps, within
-    /// mMaxSubSteps) before it is given up, restored and reported. Fast rotation is what usually needs it:
+    /// mMaxSubSteps) before it is given up, restored and reported; the steps after it of the same length are
+    /// reported diverged at once, from the same start, until an input changes (an impulse, a force, a fixed
+    /// node, positions or velocities set, gravity). Fast rotation is what usually needs it:
     /// implicit Euler extrapolates a rotation along its tangent, which needs omega h below ~0.5 rad.
     /// In [0, 16].
     int mMaxStepSplits = 5;

@@ -55,10 +55,13 @@ public:
 
 /// The step policy both tetrahedral backends share: refuses a bad step before anything changes, does nothing
 /// while asleep, falls asleep at once where a step could move nothing (a prop made at rest without gravity:
-/// a held fence sleeps from its first step instead of integrating mSleepStepCount steps of nothing), integrates, retries a diverged attempt from the saved start in 2, 4, ... pieces (up to
-/// mMaxStepSplits, explicit ones within mMaxSubSteps), restores the start when every attempt diverged, reports
-/// the events, and puts the solver to sleep after mSleepStepCount quiet steps (after 3 once it has settled:
-/// kinetic energy under 1e-8 of the sleep energy, round-off of a body in equilibrium). Holds the sleep state.
+/// a held fence sleeps from its first step instead of integrating mSleepStepCount steps of nothing),
+/// integrates, retries a diverged attempt from the saved start in 2, 4, ... pieces (up to mMaxStepSplits,
+/// explicit ones within mMaxSubSteps), restores the start when every attempt diverged (and from then on
+/// reports a step of the same length from that start as diverged at once, without trying it again, until an
+/// input changes: Wake), reports the events, and puts the solver to sleep after mSleepStepCount quiet steps
+/// (after 3 once it has settled: kinetic energy under 1e-8 of the sleep energy, round-off of a body in
+/// equilibrium). Holds the sleep state.
 class CRUMPLE_API TetStepper
 {
 public:
@@ -71,6 +74,7 @@ public:
         mSleeping = false;
         mQuietSteps = 0;
         mSettledSteps = 0;
+        mGivenUp = false;
     }
     bool IsSleeping() const { return mSleeping; }
 
@@ -82,6 +86,8 @@ private:
     bool mSleeping = false;
     int mQuietSteps = 0;
     int mSettledSteps = 0; ///< Consecutive steps settled (see cSettledEnergyFraction)
+    bool mGivenUp = false; ///< The last step diverged in every attempt and no input changed since
+    double mGivenUpDeltaTime = 0.0; ///< Its length (s): a step of another length is tried
 };
 
 } // namespace crumple::fem
