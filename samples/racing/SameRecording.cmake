@@ -22,42 +22,34 @@ function(expect_same first second why)
     endif()
 endfunction()
 
+# The recording of the run in ${OUT}/${live_dir} replayed with no engine into ${OUT}/${out_dir}: the cars and
+# the props byte for byte as the live run wrote them.
+function(expect_replayed live_dir out_dir why)
+    run(${REPLAY} ${OUT}/${live_dir}/race.crumple --out ${OUT}/${out_dir})
+    foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
+        list(GET pair 0 live)
+        list(GET pair 1 replayed)
+        expect_same(${OUT}/${live_dir}/${live} ${OUT}/${out_dir}/${replayed}
+                    "the replayed ${replayed} differs from the live ${live}${why}")
+    endforeach()
+endfunction()
+
 run(${RACING} --no-pictures --out ${OUT}/inline)
 run(${RACING} --no-pictures --out ${OUT}/deferred --threads 2 --defer-dents)
 foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
     expect_same(${OUT}/inline/${file} ${OUT}/deferred/${file} "${file} differs between inline and deferred dents")
 endforeach()
-run(${REPLAY} ${OUT}/inline/race.crumple --out ${OUT}/replayed)
-foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
-    list(GET pair 0 live)
-    list(GET pair 1 replayed)
-    expect_same(${OUT}/inline/${live} ${OUT}/replayed/${replayed} "the replayed ${replayed} differs from the live ${live}")
-endforeach()
+expect_replayed(inline replayed "")
 
-run(${RACING} --no-pictures --out ${OUT}/off_thread_inline --threads 1 --defer-dents --props-off-thread)
-run(${RACING} --no-pictures --out ${OUT}/off_thread --threads 2 --defer-dents --props-off-thread)
-foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
-    expect_same(${OUT}/off_thread_inline/${file} ${OUT}/off_thread/${file}
-                "${file} differs between the props' FEM as an inline task and on 2 threads")
-endforeach()
-run(${REPLAY} ${OUT}/off_thread/race.crumple --out ${OUT}/off_thread_replayed)
-foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
-    list(GET pair 0 live)
-    list(GET pair 1 replayed)
-    expect_same(${OUT}/off_thread/${live} ${OUT}/off_thread_replayed/${replayed}
-                "the replayed ${replayed} differs from the live ${live} (props off the thread)")
-endforeach()
-
-run(${RACING} --no-pictures --out ${OUT}/impulses_inline --threads 1 --defer-impulses --props-off-thread)
-run(${RACING} --no-pictures --out ${OUT}/impulses --threads 2 --defer-impulses --props-off-thread)
-foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
-    expect_same(${OUT}/impulses_inline/${file} ${OUT}/impulses/${file}
-                "${file} differs between the impulses on an inline task and on 2 threads")
-endforeach()
-run(${REPLAY} ${OUT}/impulses/race.crumple --out ${OUT}/impulses_replayed)
-foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
-    list(GET pair 0 live)
-    list(GET pair 1 replayed)
-    expect_same(${OUT}/impulses/${live} ${OUT}/impulses_replayed/${replayed}
-                "the replayed ${replayed} differs from the live ${live} (impulses on the task)")
-endforeach()
+# A mode whose tasks run inline (--threads 1) and on 2 threads: the same bytes, and its recording replays.
+function(same_on_two_threads name what)
+    run(${RACING} --no-pictures --out ${OUT}/${name}_inline --threads 1 ${ARGN})
+    run(${RACING} --no-pictures --out ${OUT}/${name} --threads 2 ${ARGN})
+    foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
+        expect_same(${OUT}/${name}_inline/${file} ${OUT}/${name}/${file}
+                    "${file} differs between ${what} as an inline task and on 2 threads")
+    endforeach()
+    expect_replayed(${name} ${name}_replayed " (${what} on a task)")
+endfunction()
+same_on_two_threads(off_thread "the props' FEM" --defer-dents --props-off-thread)
+same_on_two_threads(impulses "the impulses" --defer-impulses --props-off-thread)
