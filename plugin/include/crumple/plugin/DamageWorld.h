@@ -113,6 +113,9 @@ public:
     /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners. With
     /// deferred dents it first lands the dents the previous Update started (their objects dented, vertices
     /// moved and OnCollision calls are in this report), then starts the new ones (counted as dispatched).
+    /// With deferred impulses the landed task also solved the contacts submitted before the previous Update:
+    /// this one closes collisions at that Update's time (what it would have closed had it solved them), and
+    /// its task solves the contacts submitted since.
     UpdateReport Update(double inTime);
     /// Dispatches every open collision now and lands every dent (end of a run, before saving).
     UpdateReport Flush();
