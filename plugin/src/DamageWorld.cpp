@@ -213,7 +213,7 @@ Status DamageWorld::RemoveBody(BodyId inBody)
     ++slot.mGeneration;
     mFreeBodies.push_back(inBody.mValue);
     mGrouper.Forget(inBody);
-    std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
+    ForgetMemoriesOf(inBody);
     return Status::Ok();
 }
 
@@ -227,7 +227,7 @@ Status DamageWorld::ForgetImpacts(BodyId inBody)
         mPending.push_back(Submission{.mForget = inBody});
         return Status::Ok();
     }
-    std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
+    ForgetMemoriesOf(inBody);
     return Status::Ok();
 }
 
@@ -385,12 +385,16 @@ DamageWorld::SnapshotBodies(std::span<const ContactEvent> inContacts) const
     return bodies;
 }
 
+void DamageWorld::ForgetMemoriesOf(BodyId inBody)
+{
+    std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
+}
+
 Status DamageWorld::SolveSubmission(const Submission& inSubmission)
 {
     if (inSubmission.mForget.IsValid())
     {
-        std::erase_if(mImpactMemories, [&](const ImpactMemory& m)
-                      { return m.mA == inSubmission.mForget || m.mB == inSubmission.mForget; });
+        ForgetMemoriesOf(inSubmission.mForget);
         return Status::Ok();
     }
     return SolveContacts(inSubmission.mContacts, inSubmission.mTimeStep, inSubmission.mBodies);

@@ -194,6 +194,8 @@ private:
     };
     static constexpr double cImpactMemorySteps = 1.5; ///< In steps: only the immediately following step continues
     const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
+    /// Drops the memories of every pair the body is in
+    void ForgetMemoriesOf(BodyId inBody);
     ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB);
 
     bool IsLive(BodyId inBody) const
