@@ -363,20 +363,22 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     return Status::Ok();
 }
 
-std::vector<DamageWorld::SubmittedBody>
-DamageWorld::SnapshotBodies(std::span<const ContactEvent> inContacts) const
+std::vector<DamageWorld::SubmittedBody> DamageWorld::SnapshotBodies(std::span<const ContactEvent> inContacts)
 {
     // intent: a flag per body slot finds the distinct bodies in one pass (a manifold of 10,000 contacts names
-    // two); only those are sorted and copied
-    std::vector<std::uint8_t> named(mBodies.size(), 0);
+    // two); only those are sorted and copied. The flags are kept between calls, all clear (no allocation per
+    // step once the world has its bodies).
+    mNamedScratch.resize(mBodies.size(), 0);
     std::vector<BodyId> ids;
     for (const ContactEvent& contact : inContacts)
         for (BodyId body : {contact.mBodyA, contact.mBodyB})
-            if (named[body.mValue] == 0)
+            if (mNamedScratch[body.mValue] == 0)
             {
-                named[body.mValue] = 1;
+                mNamedScratch[body.mValue] = 1;
                 ids.push_back(body);
             }
+    for (BodyId id : ids)
+        mNamedScratch[id.mValue] = 0;
     std::sort(ids.begin(), ids.end());
     std::vector<SubmittedBody> bodies;
     bodies.reserve(ids.size());

@@ -221,7 +221,7 @@ private:
         BodyId mForget{};
     };
     /// The bodies inContacts name (validated: live), by ascending id, as they are now.
-    std::vector<SubmittedBody> SnapshotBodies(std::span<const ContactEvent> inContacts) const;
+    std::vector<SubmittedBody> SnapshotBodies(std::span<const ContactEvent> inContacts);
     /// Solves validated contacts' impulses into the grouper and the impact memories, reading the bodies only
     /// from inBodies (so a task can run it while the game moves on); refused whole, changing nothing, where
     /// an impulse is not finite.
@@ -273,6 +273,7 @@ private:
     std::vector<DamageListener*> mListeners;
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
     std::vector<Submission> mPending;          ///< mDeferImpulses: what the next Update's task solves
+    std::vector<std::uint8_t> mNamedScratch;   ///< SnapshotBodies' flag per body slot, all 0 between calls
     /// mDeferImpulses: the time of the last Update (with a finite time), which handed its submissions to the
     /// task; the next Update closes collisions at it
     double mHandedOverAt = -std::numeric_limits<double>::infinity();
