@@ -48,7 +48,7 @@ int HoldGroundNodes(const GroundPlane& inGround, std::span<const std::uint8_t> i
         const double height = normal.dot(inStartPositions[node]) - inGround.mOffset;
         if (height > cTouchDistance)
             continue;
-        outHeld[node] = 1;
+        outHeld[node] = cHeldReleasable;
         ++held;
         // intent: a node below the ground (placed there) is stopped, not pushed out: a push would do work
         ioVelocities[node] +=
@@ -69,7 +69,7 @@ int HoldCrossingNodes(const GroundPlane& inGround, std::span<const std::uint8_t>
         if (ioHeld[node] != 0 || inFree[node] == 0 || IsBelowAtRest(inGround, inRest[node]) ||
             normal.dot(ioPositions[node]) >= inGround.mOffset - cTouchDistance)
             continue;
-        ioHeld[node] = 1;
+        ioHeld[node] = cHeldToStepEnd;
         ++added;
         const double height = normal.dot(inStartPositions[node]) - inGround.mOffset;
         ioVelocities[node] += (-height / inDeltaTime - normal.dot(ioVelocities[node])) * normal;
@@ -82,7 +82,7 @@ int ReleasePulledNodes(const Vec3& inNormal, std::span<const Vec3> inResidual, s
 {
     int released = 0;
     for (std::size_t node = 0; node < ioHeld.size(); ++node)
-        if (ioHeld[node] != 0 && inNormal.dot(inResidual[node]) > 0.0)
+        if (ioHeld[node] == cHeldReleasable && inNormal.dot(inResidual[node]) > 0.0)
         {
             ioHeld[node] = 0;
             ++released;
@@ -114,10 +114,18 @@ void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHe
 bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
                       std::span<const Vec3> inRest, std::span<const std::uint8_t> inHeld,
                       std::span<const double> inImpulses, std::span<const double> inMasses,
-                      std::span<const Vec3> inStartPositions, double inDeltaTime, std::span<Vec3> ioPositions,
-                      std::span<Vec3> ioVelocities)
+                      std::span<Vec3> ioPositions, std::span<Vec3> ioVelocities)
 {
     const Vec3& normal = inGround.mNormal;
+    // The pushing nodes' impulses scaled to the net one (see the header).
+    double pushing = 0.0, net = 0.0;
+    for (std::size_t node = 0; node < ioPositions.size(); ++node)
+        if (inFree[node] != 0 && inHeld[node] != 0)
+        {
+            pushing += std::max(inImpulses[node], 0.0);
+            net += inImpulses[node];
+        }
+    const double share = net > 0.0 ? std::min(1.0, net / pushing) : 0.0;
     bool changed = false;
     for (std::size_t node = 0; node < ioPositions.size(); ++node)
     {
@@ -125,13 +133,10 @@ bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t>
             continue;
         if (inHeld[node] != 0)
         {
+            // intent: the velocity only; the step's position stays the solve's (see the header)
             if (inImpulses[node] > 0.0 && inGround.mFriction > 0.0)
-            {
-                SlowTangentially(normal, inGround.mFriction * inImpulses[node] / inMasses[node],
+                SlowTangentially(normal, inGround.mFriction * share * inImpulses[node] / inMasses[node],
                                  ioVelocities[node]);
-                ioPositions[node] = inStartPositions[node] + inDeltaTime * ioVelocities[node];
-                changed = true;
-            }
             continue;
         }
         const double depth = inGround.mOffset - normal.dot(ioPositions[node]);

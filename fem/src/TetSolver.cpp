@@ -890,7 +890,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     if (ground.mEnabled)
     {
         ground_moved = FinishGroundStep(ground, mFree, mNodeRestPositions, scratch.mGroundHeld,
-                                        scratch.mGroundImpulses, mMasses, x0, h, mPositions, mVelocities);
+                                        scratch.mGroundImpulses, mMasses, mPositions, mVelocities);
         if (ground_moved)
             mPassEnergyValid = false;
     }
