@@ -10,6 +10,7 @@
 #include <crumple/gpu/GpuTetSolver.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -172,6 +173,15 @@ Result<PropSetup> GpuPropSetup(plugin::BodyId inBody, const gpu::GpuTetSolver& i
     return setup;
 }
 #endif
+
+// True when inNodes (a recorded loose piece, in the order it was recorded) are exactly the nodes of one of
+// inProp's pieces now (FemProp::ComputeFragments, which TakeLooseFragments recorded them from).
+bool IsFragmentOf(const FemProp& inProp, const std::vector<int>& inNodes)
+{
+    const std::vector<fem::TetFragment> fragments = inProp.ComputeFragments();
+    return std::any_of(fragments.begin(), fragments.end(),
+                       [&](const fem::TetFragment& inFragment) { return inFragment.mNodes == inNodes; });
+}
 
 } // namespace
 
@@ -472,6 +482,19 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                     return MakeError(EError::CorruptData, where + "a loose piece's node is not a node of its prop");
                 node = static_cast<int>(value);
             }
+            // intent: a piece recorded loose must be a piece of the prop as replayed; a CPU prop replays bit
+            // for bit, so anything else means its FEM broke otherwise than live: a recording made by a build
+            // whose FEM gives other results (fixing those nodes would tear the prop apart where it never
+            // broke). A GPU prop is not checked: on another device or driver, or on the CPU, it replays
+            // close, not bitwise.
+            if (props[prop].mRecordedBackend == EFemBackend::Cpu && solver.GetBackend() == EFemBackend::Cpu &&
+                !IsFragmentOf(solver, nodes))
+                return MakeError(
+                    EError::CorruptData,
+                    where + "a loose piece of prop " + std::to_string(prop) +
+                        " is none of its pieces as replayed: its FEM broke otherwise than when recorded "
+                        "(a recording made by a build of Crumple whose FEM gives other results cannot "
+                        "replay its props)");
             if (Status fixed = solver.SetNodesLeft(nodes); fixed.HasError())
                 return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
         }

@@ -5,6 +5,8 @@
 #include "ScratchDirectory.h"
 #include "WorldFixture.h"
 
+#include <crumple/base/ByteReader.h>
+#include <crumple/base/ByteWriter.h>
 #include <crumple/base/FileBytes.h>
 #include <crumple/plugin/DamageRecorder.h>
 #include <crumple/props/PropBody.h>
@@ -13,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -115,6 +118,49 @@ TEST_CASE("Loose pieces leave a prop as rigid bodies once, keeping its momentum,
     CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == solver.GetPositions());
     CHECK(replayed[0].mProp.GetCpuSolver()->GetVelocities() == solver.GetVelocities());
     CHECK(replayed[0].mProp.GetCpuSolver()->GetInverseMasses() == solver.GetInverseMasses());
+
+    // A recording whose props broke otherwise than the replaying FEM does (made by another build) is refused
+    // with its reason, not replayed with pieces torn off where the prop never broke. Stood in for by a loose
+    // record naming a piece of other nodes (all of them the prop's): the piece's nodes shifted by one, then
+    // the piece with one node less.
+    const Replay recorded = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    const auto loose_record = std::find_if(
+        recorded.mExtensions.begin(), recorded.mExtensions.end(),
+        [](const RecordedExtension& e) { return e.mTag == static_cast<std::uint32_t>(EPropRecord::Loose); });
+    REQUIRE(loose_record != recorded.mExtensions.end());
+    const std::size_t index = static_cast<std::size_t>(loose_record - recorded.mExtensions.begin());
+    ByteReader reader(loose_record->mPayload);
+    const std::uint32_t prop_index = reader.ReadU32();
+    std::vector<std::uint32_t> nodes(reader.ReadU32());
+    for (std::uint32_t& node : nodes)
+        node = reader.ReadU32();
+    REQUIRE_FALSE(reader.Failed());
+    REQUIRE(nodes.size() >= 2u);
+    const auto rewritten = [&](const std::vector<std::uint32_t>& inNodes)
+    {
+        Replay changed = recorded;
+        ByteWriter writer;
+        writer.WriteU32(prop_index);
+        writer.WriteU32(static_cast<std::uint32_t>(inNodes.size()));
+        for (std::uint32_t node : inNodes)
+            writer.WriteU32(node);
+        changed.mExtensions[index].mPayload = writer.TakeBytes();
+        return changed;
+    };
+    std::vector<std::uint32_t> shifted = nodes;
+    for (std::uint32_t& node : shifted)
+        node = node == 0 ? 1 : node - 1;
+    std::vector<std::uint32_t> fewer(nodes.begin(), nodes.end() - 1);
+    for (const std::vector<std::uint32_t>& other : {shifted, fewer})
+    {
+        const Result<std::vector<ReplayedProp>> refused = ReplayProps(rewritten(other));
+        REQUIRE(refused.HasError());
+        CHECK(refused.GetError().mCode == EError::CorruptData);
+        CHECK_THAT(refused.GetError().mMessage,
+                   Catch::Matchers::Contains("broke otherwise than when recorded"));
+    }
+    // The record as written still replays (the check reads the piece, not the record's bytes).
+    CHECK(ReplayProps(rewritten(nodes)).IsValid());
 }
 
 TEST_CASE("Loose pieces: a prop whose links and anchors did not change is not searched again, and one whose "

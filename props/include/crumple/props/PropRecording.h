@@ -88,9 +88,12 @@ struct CRUMPLE_API ReplayedProp
 /// backend (a GPU prop on a device of ioProvider, which makes its context only then; null, or no device: on
 /// the CPU), takes the recorded collisions with its body (FemProp::ApplyCollision) and the recorded steps, in
 /// the recorded order (after a Queued record, each collision at the first step recorded after it; those after
-/// the last step never reach a prop, as live). CPU props end bitwise as they did live, and GPU props on the same device and driver.
-/// Refused with a message naming the record on a corrupt or inconsistent prop record (among them a second
-/// prop for the same body, or records whose collision counts go back).
+/// the last step never reach a prop, as live). CPU props end bitwise as they did live, and GPU props on the
+/// same device and driver. Refused with a message naming the record on a corrupt or inconsistent prop record
+/// (among them a second prop for the same body, or records whose collision counts go back), and where a CPU
+/// prop breaks otherwise than it did live: a recorded loose piece that is none of
+/// its pieces as replayed (a recording made by a build of Crumple whose FEM gives other results; before, such
+/// a replay fixed those nodes and went on, or stopped at a node past the prop's count).
 CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
                                                           gpu::ComputeDeviceProvider* ioProvider = nullptr);
 
