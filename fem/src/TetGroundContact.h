@@ -73,10 +73,9 @@ void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHe
 /// step's solve, as an impulse does. Where nodes held to the step's end pull (cHeldToStepEnd), the pushing
 /// nodes' impulses are scaled down to the net normal impulse of all held nodes for their friction, which
 /// so stays within mFriction times the ground's net push (Coulomb's bound; a steel bar driven into the
-/// ground was slowed 4 % past it). Each other free node still below the
-/// ground (rest position above it; only where Newton stopped at its iteration limit) put on it, its
-/// approaching velocity removed and its tangential velocity slowed by inGround.mFriction times the removed
-/// speed.
+/// ground was slowed 4 % past it). Each other free node still below the ground (rest position above it;
+/// only where Newton stopped at its iteration limit) put on it, its approaching velocity removed and its
+/// tangential velocity slowed by inGround.mFriction times the removed speed.
 /// @return true when a position changed (a velocity alone leaves the step's last element pass valid)
 bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
                       std::span<const Vec3> inRest, std::span<const std::uint8_t> inHeld,
