@@ -114,17 +114,25 @@ void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHe
 bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
                       std::span<const Vec3> inRest, std::span<const std::uint8_t> inHeld,
                       std::span<const double> inImpulses, std::span<const double> inMasses,
-                      std::span<Vec3> ioPositions, std::span<Vec3> ioVelocities)
+                      std::span<const Vec3> inResidual, std::span<Vec3> ioPositions,
+                      std::span<Vec3> ioVelocities)
 {
     const Vec3& normal = inGround.mNormal;
-    // The pushing nodes' impulses scaled to the net one (see the header).
+    // The pushing nodes' impulses scaled to the net one (see the header): the held nodes' impulses less the
+    // normal residual left at the others (zero once Newton has converged).
     double pushing = 0.0, net = 0.0;
     for (std::size_t node = 0; node < ioPositions.size(); ++node)
-        if (inFree[node] != 0 && inHeld[node] != 0)
+    {
+        if (inFree[node] == 0)
+            continue;
+        if (inHeld[node] != 0)
         {
             pushing += std::max(inImpulses[node], 0.0);
             net += inImpulses[node];
         }
+        else
+            net -= normal.dot(inResidual[node]);
+    }
     const double share = net > 0.0 ? std::min(1.0, net / pushing) : 0.0;
     bool changed = false;
     for (std::size_t node = 0; node < ioPositions.size(); ++node)

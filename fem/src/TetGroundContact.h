@@ -70,16 +70,19 @@ void TakeGroundImpulses(const Vec3& inNormal, std::span<const std::uint8_t> inHe
 /// a stiff body was pulled back against its neighbours by its whole slowing over the step (a car pushing a
 /// steel fence along the ground at 13 m/s: megajoules of strain where the solve left kilojoules; the steps
 /// diverged in up to 32 pieces, 1.1 s of one step). The slowing reaches the neighbours through the next
-/// step's solve, as an impulse does. Where nodes held to the step's end pull (cHeldToStepEnd), the pushing
-/// nodes' impulses are scaled down to the net normal impulse of all held nodes for their friction, which
-/// so stays within mFriction times the ground's net push (Coulomb's bound; a steel bar driven into the
-/// ground was slowed 4 % past it). Each other free node still below the ground (rest position above it;
+/// step's solve, as an impulse does. The pushing nodes' impulses are scaled down, for their friction, to the
+/// ground's net normal impulse on the body (the held nodes' impulses, those held to the step's end pulling,
+/// less the normal residual inResidual (#N) that an unconverged Newton iteration leaves at the other nodes),
+/// so the friction stays within mFriction times the ground's net push (Coulomb's bound; a steel bar driven
+/// into the ground was slowed 4 % past it by pulling nodes, bars of random stiffness up to 2.7 % by
+/// unconverged steps). Each other free node still below the ground (rest position above it;
 /// only where Newton stopped at its iteration limit) put on it, its approaching velocity removed and its
 /// tangential velocity slowed by inGround.mFriction times the removed speed.
 /// @return true when a position changed (a velocity alone leaves the step's last element pass valid)
 bool FinishGroundStep(const GroundPlane& inGround, std::span<const std::uint8_t> inFree,
                       std::span<const Vec3> inRest, std::span<const std::uint8_t> inHeld,
                       std::span<const double> inImpulses, std::span<const double> inMasses,
-                      std::span<Vec3> ioPositions, std::span<Vec3> ioVelocities);
+                      std::span<const Vec3> inResidual, std::span<Vec3> ioPositions,
+                      std::span<Vec3> ioVelocities);
 
 } // namespace crumple::fem

@@ -889,8 +889,9 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     bool ground_moved = false;
     if (ground.mEnabled)
     {
-        ground_moved = FinishGroundStep(ground, mFree, mNodeRestPositions, scratch.mGroundHeld,
-                                        scratch.mGroundImpulses, mMasses, mPositions, mVelocities);
+        ground_moved =
+            FinishGroundStep(ground, mFree, mNodeRestPositions, scratch.mGroundHeld, scratch.mGroundImpulses,
+                             mMasses, scratch.mResidual, mPositions, mVelocities);
         if (ground_moved)
             mPassEnergyValid = false;
     }

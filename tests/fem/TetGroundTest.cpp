@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include <crumple/fem/SplitMix64.h>
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
@@ -234,6 +235,79 @@ TEST_CASE("Ground: a steel bar driven along it and into it gains no energy and s
     // leaves within its tolerance (TetSolverSettings::mImplicitTolerance, 1e-3), not from the momentum change
     CHECK(slowed <= 1.001 * friction * normal_per_mass);
     CHECK(slowed >= friction * cGravity * steps * h); // at least the weight's friction
+}
+
+TEST_CASE(
+    "Ground: bars of random stiffness thrown at it at random never gain energy and keep Coulomb's bound",
+    "[fem]")
+{
+    // Seeded sweep of the steel bar case: stiffness 1e6-2e11 Pa, friction 0-1, a slide of up to 15 m/s in a
+    // random direction along the ground, the top pushed down at up to 10 m/s or lifted at up to 2 m/s, step
+    // 1/240-1/30 s, 40 steps each. The ground and friction only take energy, and over the run the tangential
+    // slowing stays within mu times the net normal impulse per unit mass (0.1 %: the Newton tolerance).
+    SplitMix64 random(20261207u);
+    int cases = 0, split_steps = 0, diverged_steps = 0, steps = 0;
+    double worst_gain = 0.0, worst_coulomb = 0.0;
+    for (int run = 0; run < 24; ++run)
+    {
+        const double young = std::pow(10.0, 6.0 + random.NextDouble() * std::log10(2.0e5));
+        const double friction = random.NextDouble();
+        const double speed = 15.0 * random.NextDouble(), heading = 6.283185307179586 * random.NextDouble();
+        const double push = -2.0 + 12.0 * random.NextDouble();
+        const double h = 1.0 / (30.0 + 210.0 * random.NextDouble());
+        TetGridSettings grid;
+        grid.mSize = Vec3(1.0, 0.1, 0.1);
+        grid.mCellCount = {10, 1, 1};
+        FemMaterialSettings material;
+        material.mYoungsModulus = young;
+        material.mDensity = 7850.0;
+        TetSolverSettings settings;
+        settings.mGravity = Vec3(0.0, 0.0, -cGravity);
+        settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, friction};
+        Result<TetSolver> created = TetSolver::Create(TetGrid(grid).Get(), material, settings);
+        REQUIRE(created.IsValid());
+        TetSolver bar = std::move(created).Get();
+        const Vec3 slide = speed * Vec3(std::cos(heading), std::sin(heading), 0.0);
+        std::vector<Vec3> velocities(bar.GetVelocities().size());
+        for (std::size_t node = 0; node < velocities.size(); ++node)
+            velocities[node] = slide + Vec3(0.0, 0.0, bar.GetPositions()[node].z() > 0.05 ? -push : 0.0);
+        REQUIRE(bar.SetVelocities(velocities).IsValid());
+        const double mass = TotalMass(bar);
+        const auto energy = [&]
+        {
+            return bar.KineticEnergy() + bar.ElasticEnergy() +
+                   mass * cGravity * MassMean(bar, bar.GetPositions()).z();
+        };
+        const Vec3 start_velocity = MassMean(bar, bar.GetVelocities());
+        const double start_energy = energy();
+        double last_energy = start_energy;
+        for (int step = 0; step < 40; ++step)
+        {
+            const Result<TetStepResult> result = bar.Step(h);
+            REQUIRE(result.IsValid());
+            ++steps;
+            split_steps += HasEvent(result.Get().mEvents, ETetStepEvent::Split) ? 1 : 0;
+            diverged_steps += HasEvent(result.Get().mEvents, ETetStepEvent::Diverged) ? 1 : 0;
+            REQUIRE(std::all_of(bar.GetPositions().begin(), bar.GetPositions().end(),
+                                [](const Vec3& inX) { return inX.allFinite(); }));
+            REQUIRE(LowestZ(bar) >= -1.0e-9);
+            const double now = energy();
+            worst_gain = std::max(worst_gain, (now - last_energy) / start_energy);
+            last_energy = now;
+        }
+        const Vec3 end_velocity = MassMean(bar, bar.GetVelocities());
+        const double normal_per_mass = end_velocity.z() - start_velocity.z() + cGravity * 40 * h;
+        const double slowed = (start_velocity - end_velocity).head<2>().norm();
+        if (friction * normal_per_mass > 0.0)
+            worst_coulomb = std::max(worst_coulomb, slowed / (friction * normal_per_mass));
+        ++cases;
+    }
+    WARN(cases << " bars, " << steps << " steps: " << split_steps << " split, " << diverged_steps
+               << " diverged; largest energy gain in a step " << worst_gain
+               << " of the start energy; largest slowing over Coulomb's bound " << worst_coulomb);
+    CHECK(diverged_steps == 0);
+    CHECK(worst_gain <= 1.0e-9);
+    CHECK(worst_coulomb <= 1.001);
 }
 
 TEST_CASE("Ground: it never pulls, a block lifted by a force larger than its weight leaves it", "[fem]")
