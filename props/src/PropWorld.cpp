@@ -262,6 +262,10 @@ bool PropWorld::StepProp(InFlight& ioFlight, std::size_t inIndex)
     ++(sleeping ? ioFlight.mReport.mSleeping : ioFlight.mReport.mStepped);
     ioFlight.mReport.mFractured += fem::HasEvent(events, fem::ETetStepEvent::Fractured) ? 1 : 0;
     ioFlight.mReport.mDiverged += fem::HasEvent(events, fem::ETetStepEvent::Diverged) ? 1 : 0;
+    ioFlight.mReport.mSplit += fem::HasEvent(events, fem::ETetStepEvent::Split) &&
+                                       !fem::HasEvent(events, fem::ETetStepEvent::Diverged)
+                                   ? 1
+                                   : 0;
     ioFlight.mReport.mNotConverged += fem::HasEvent(events, fem::ETetStepEvent::SolverNotConverged) ? 1 : 0;
     // intent: the taken nodes once for both, and only for a struck prop that handed pieces over
     const std::vector<std::uint8_t> taken =

@@ -132,6 +132,9 @@ Status RaceProps::Step(double inDeltaTime, std::vector<RaceNewPiece>& outNewPiec
         return stepped.GetError();
     ++mSteps;
     mAwakeSteps += stepped.Get().mStepped > 0 ? 1 : 0;
+    mSplitSteps += stepped.Get().mSplit;
+    mGivenUpSteps += stepped.Get().mDiverged;
+    mUnconvergedSteps += stepped.Get().mNotConverged;
     props::HeldPropUpdate update;
     const Status held = mHeld->Update(stepped.Get(), update);
     mLastDrawingMs = 0.0;
@@ -239,8 +242,9 @@ std::string RaceProps::Summary() const
     }
     std::snprintf(
         line, sizeof(line),
-        "props' FEM: awake %d of %d engine steps, worst step %.2f ms, %.1f ms in all (game-thread CPU)\n",
-        mAwakeSteps, mSteps, mWorstStepMs, mTotalStepMs);
+        "props' FEM: awake %d of %d engine steps, worst step %.2f ms, %.1f ms in all (game-thread CPU); prop "
+        "steps split to go through %d, given up %d, unconverged %d\n",
+        mAwakeSteps, mSteps, mWorstStepMs, mTotalStepMs, mSplitSteps, mGivenUpSteps, mUnconvergedSteps);
     return summary + line;
 }
 

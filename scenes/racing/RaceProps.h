@@ -133,6 +133,9 @@ class RaceProps
     std::optional<props::HeldPropBodies> mHeld;
     std::vector<Prop> mProps;
     int mSteps = 0, mAwakeSteps = 0;
+    // Prop steps (summed over the props) that split to go through, were given up (restored), or kept
+    // unconverged: PropStepReport's counts, printed so a session shows its solver trouble.
+    int mSplitSteps = 0, mGivenUpSteps = 0, mUnconvergedSteps = 0;
     double mWorstStepMs = 0.0, mTotalStepMs = 0.0; ///< Step() in the game thread's CPU time
     double mLastDrawingMs = 0.0;                   ///< GetLastStepDrawingMs
 };

@@ -38,6 +38,8 @@ struct CRUMPLE_API PropStepReport
     int mSleeping = 0;   ///< Props that were asleep and did nothing (no element work)
     int mFractured = 0;  ///< Props in which links broke this step
     int mDiverged = 0;   ///< Props whose step diverged and was restored (fem::ETetStepEvent::Diverged)
+    int mSplit = 0;      ///< Props whose step diverged in one piece and went through in 2, 4, ... pieces
+                         ///< (fem::ETetStepEvent::Split without Diverged): kept, at several times its cost
     int mNotConverged = 0; ///< Props whose implicit solve stopped at its iteration limits and was kept
                            ///< (fem::ETetStepEvent::SolverNotConverged)
 };
