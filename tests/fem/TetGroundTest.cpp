@@ -70,6 +70,30 @@ double LowestZ(const TetSolver& inSolver)
     return lowest;
 }
 
+// A bar 1 m x 0.1 m x 0.1 m of inYoungsModulus (Pa) and steel's density, 10 x 1 x 1 cells, resting on the
+// ground z = 0 with inFriction under gravity, sent sliding at inSlide (m/s, along the ground) with its top
+// nodes pushed down at inPush (m/s; negative: lifted).
+TetSolver MakeSlidingBar(double inYoungsModulus, double inFriction, const Vec3& inSlide, double inPush)
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(1.0, 0.1, 0.1);
+    grid.mCellCount = {10, 1, 1};
+    FemMaterialSettings material;
+    material.mYoungsModulus = inYoungsModulus;
+    material.mDensity = 7850.0;
+    TetSolverSettings settings;
+    settings.mGravity = Vec3(0.0, 0.0, -cGravity);
+    settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, inFriction};
+    Result<TetSolver> created = TetSolver::Create(TetGrid(grid).Get(), material, settings);
+    REQUIRE(created.IsValid());
+    TetSolver bar = std::move(created).Get();
+    std::vector<Vec3> velocities(bar.GetVelocities().size());
+    for (std::size_t node = 0; node < velocities.size(); ++node)
+        velocities[node] = inSlide + Vec3(0.0, 0.0, bar.GetPositions()[node].z() > 0.05 ? -inPush : 0.0);
+    REQUIRE(bar.SetVelocities(velocities).IsValid());
+    return bar;
+}
+
 } // namespace
 
 TEST_CASE(
@@ -181,23 +205,8 @@ TEST_CASE("Ground: a steel bar driven along it and into it gains no energy and s
     // length at 12 m/s with its top pushed down at 6 m/s (a car's bumper driving a fence rail into the
     // ground). Friction that moved each held node back after the solve pulled it against its neighbours by
     // its whole slowing over the step: kilojoules of strain in a stiff body, steps split and diverged.
-    const double h = 1.0 / 240.0, friction = 0.6, speed = 12.0, push = 6.0;
-    TetGridSettings grid;
-    grid.mSize = Vec3(1.0, 0.1, 0.1);
-    grid.mCellCount = {10, 1, 1};
-    FemMaterialSettings steel;
-    steel.mYoungsModulus = 2.0e11;
-    steel.mDensity = 7850.0;
-    TetSolverSettings settings;
-    settings.mGravity = Vec3(0.0, 0.0, -cGravity);
-    settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, friction};
-    Result<TetSolver> created = TetSolver::Create(TetGrid(grid).Get(), steel, settings);
-    REQUIRE(created.IsValid());
-    TetSolver bar = std::move(created).Get();
-    std::vector<Vec3> velocities(bar.GetVelocities().size());
-    for (std::size_t node = 0; node < velocities.size(); ++node)
-        velocities[node] = Vec3(speed, 0.0, bar.GetPositions()[node].z() > 0.05 ? -push : 0.0);
-    REQUIRE(bar.SetVelocities(velocities).IsValid());
+    const double h = 1.0 / 240.0, friction = 0.6;
+    TetSolver bar = MakeSlidingBar(2.0e11, friction, Vec3(12.0, 0.0, 0.0), 6.0);
     const Vec3 start_velocity = MassMean(bar, bar.GetVelocities());
     const double mass = TotalMass(bar);
     const auto energy = [&]
@@ -255,23 +264,8 @@ TEST_CASE(
         const double speed = 15.0 * random.NextDouble(), heading = 6.283185307179586 * random.NextDouble();
         const double push = -2.0 + 12.0 * random.NextDouble();
         const double h = 1.0 / (30.0 + 210.0 * random.NextDouble());
-        TetGridSettings grid;
-        grid.mSize = Vec3(1.0, 0.1, 0.1);
-        grid.mCellCount = {10, 1, 1};
-        FemMaterialSettings material;
-        material.mYoungsModulus = young;
-        material.mDensity = 7850.0;
-        TetSolverSettings settings;
-        settings.mGravity = Vec3(0.0, 0.0, -cGravity);
-        settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, friction};
-        Result<TetSolver> created = TetSolver::Create(TetGrid(grid).Get(), material, settings);
-        REQUIRE(created.IsValid());
-        TetSolver bar = std::move(created).Get();
-        const Vec3 slide = speed * Vec3(std::cos(heading), std::sin(heading), 0.0);
-        std::vector<Vec3> velocities(bar.GetVelocities().size());
-        for (std::size_t node = 0; node < velocities.size(); ++node)
-            velocities[node] = slide + Vec3(0.0, 0.0, bar.GetPositions()[node].z() > 0.05 ? -push : 0.0);
-        REQUIRE(bar.SetVelocities(velocities).IsValid());
+        TetSolver bar =
+            MakeSlidingBar(young, friction, speed * Vec3(std::cos(heading), std::sin(heading), 0.0), push);
         const double mass = TotalMass(bar);
         const auto energy = [&]
         {
