@@ -78,6 +78,9 @@ void RaceCase(BenchTable& ioTable, const std::string& inEngine, const std::strin
              ";bare_p99_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.99)) +
              ";bare_median_cpu_ms=" + FormatExtra(Quantile(cpu[0], 0.5)) +
              ";props_worst_step_ms=" + FormatExtra(race_props.GetWorstStepMs()) +
+             ";props_steps_split=" + std::to_string(race_props.GetSplitSteps()) +
+             ";props_steps_given_up=" + std::to_string(race_props.GetGivenUpSteps()) +
+             ";props_steps_unconverged=" + std::to_string(race_props.GetUnconvergedSteps()) +
              ";crumple_worst_cpu_ms=" + FormatExtra(*std::max_element(crumple_ms.begin(), crumple_ms.end())) +
              ";crumple_worst_at_s=" + FormatExtra(worst_at(crumple_ms) / 60.0) +
              ";crumple_p99_cpu_ms=" + FormatExtra(Quantile(crumple_ms, 0.99)) +

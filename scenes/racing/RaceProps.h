@@ -100,6 +100,11 @@ class RaceProps
     std::string Summary() const;
     /// The longest Step() so far, in the game thread's CPU time (ms)
     double GetWorstStepMs() const { return mWorstStepMs; }
+    /// Prop steps so far (summed over the props) that split to go through, were given up, were kept
+    /// unconverged (PropStepReport)
+    int GetSplitSteps() const { return mSplitSteps; }
+    int GetGivenUpSteps() const { return mGivenUpSteps; }
+    int GetUnconvergedSteps() const { return mUnconvergedSteps; }
     /// Where the props' hand-overs came from: worked out on their step's task or in the call (off the thread)
     const props::PropHandOverStats& GetHandOverStats() const { return mWorld->GetHandOverStats(); }
     /// Of the last Step(), the time spent making the drawing meshes of new pieces (the game's own work, not
