@@ -96,7 +96,8 @@ class RaceProps
     /// when the replay reproduces the run).
     Status WriteObjs(const std::filesystem::path& inFolder) const;
     /// A line per prop (links broken, pieces loose, bodies made, factorisations) and one for the FEM's steps
-    /// (awake steps, the worst step's time), each ending in a newline.
+    /// (awake steps, the worst step's time, the steps split, given up and unconverged), each ending in a
+    /// newline.
     std::string Summary() const;
     /// The longest Step() so far, in the game thread's CPU time (ms)
     double GetWorstStepMs() const { return mWorstStepMs; }
