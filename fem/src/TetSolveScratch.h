@@ -28,6 +28,7 @@ struct TetSolveScratch
     std::vector<Vec3> mResidual;       ///< #N
     std::vector<Vec3> mDeltaV;         ///< #N
     std::vector<Vec3> mPreconditioned; ///< #N
+    std::vector<Vec3> mLineStart;      ///< #N velocities before the last Newton update (the line search)
     std::vector<Mat3> mBlocks;         ///< #N diagonal blocks for block Jacobi
     std::vector<std::uint8_t> mGroundHeld; ///< #N nodes the ground holds this step (sized with a ground only)
     std::vector<double> mGroundImpulses;   ///< #N the ground's normal impulse on them (N s)

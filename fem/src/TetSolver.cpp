@@ -760,6 +760,14 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         start_energy = std::max(0.0, start_energy - 0.5 * momentum.squaredNorm() / free_mass);
     const double energy_scale = start_energy + load_energy + cEnergyFloor;
 
+    // Newton's line search (see LineSearchMerit): the merit at the last accepted iterate, where there is one.
+    // Not with a ground: a node the update takes through it is projected onto it, which moves the merit by
+    // more than the update did.
+    const bool line_search = held == nullptr;
+    double last_merit = 0.0;
+    bool has_last_merit = false;
+    if (line_search)
+        scratch.mLineStart.resize(node_count);
     bool converged = false;
     for (int iteration = 0; iteration <= mSettings.mImplicitMaxIterations; ++iteration)
     {
@@ -775,6 +783,33 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             mElementWork += mActiveElementCount;
         }
         mPassEnergyValid = true;
+        // Backtracking: where the update raised the merit, halve it (at most cMaxLineSearchHalvings times)
+        // and evaluate again. Newton's step is a descent direction of the merit; taken whole from far away
+        // (a fast-spinning piece extrapolated along its tangents) it overshoots, and the next iterations
+        // swing instead of converging (the step then diverges and is split).
+        if (line_search && !first)
+        {
+            double merit = LineSearchMerit(h, v0);
+            for (int halving = 0; has_last_merit && halving < cMaxLineSearchHalvings &&
+                                  merit > last_merit + cLineSearchSlack * std::abs(last_merit);
+                 ++halving)
+            {
+                for (std::size_t node = 0; node < node_count; ++node)
+                    if (mFree[node] != 0)
+                    {
+                        scratch.mDeltaV[node] *= 0.5;
+                        mVelocities[node] = scratch.mLineStart[node] + scratch.mDeltaV[node];
+                        mPositions[node] = x0[node] + h * mVelocities[node];
+                    }
+                TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces,
+                                 &mPassEnergy);
+                mElementWork += mActiveElementCount;
+                ++ioResult.mLineSearchHalvings;
+                merit = LineSearchMerit(h, v0);
+            }
+            last_merit = merit;
+            has_last_merit = true;
+        }
         if (first || material.mStiffnessDamping > 0.0)
         {
             TetStiffnessProduct(input, mLinearization, mVelocities, scratch.mKv);
@@ -869,6 +904,8 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         if (!cg.mConverged)
             ioResult.mEvents = ioResult.mEvents | ETetStepEvent::SolverNotConverged;
         mPassEnergyValid = false; // the positions move
+        if (line_search)
+            std::copy(mVelocities.begin(), mVelocities.end(), scratch.mLineStart.begin());
         for (std::size_t node = 0; node < node_count; ++node)
             if (mFree[node] != 0)
             {
@@ -899,6 +936,24 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     // The last pass was at the final positions: keep them as the key of mForces, mLinearization, mRotations.
     mForcePositions = mPositions;
     mForcesCached = !ground_moved;
+}
+
+double TetSolver::LineSearchMerit(double inDeltaTime, std::span<const Vec3> inStartVelocities) const
+{
+    const double h = inDeltaTime;
+    const double mass_damping = mMaterial.GetSettings().mMassDamping;
+    double merit = mPassEnergy;
+    for (std::size_t node = 0; node < mVelocities.size(); ++node)
+    {
+        if (mFree[node] == 0)
+            continue;
+        const double m = mMasses[node];
+        const Vec3& v = mVelocities[node];
+        merit += 0.5 * m * (v - inStartVelocities[node]).squaredNorm() +
+                 0.5 * h * mass_damping * m * v.squaredNorm() -
+                 h * v.dot(mExternalForces[node] + m * mSettings.mGravity);
+    }
+    return merit;
 }
 
 bool TetSolver::RefreshesFactor() const

@@ -187,6 +187,33 @@ TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitt
     }
 }
 
+TEST_CASE("Stress: Newton's line search carries a spinning block through a step that overshot without it",
+          "[fem]")
+{
+    // The block above, allowed one split: taken whole, Newton's updates overshoot (a spin extrapolated along
+    // its tangents) and swing, and the step diverged in one piece and in two (given up, before the line
+    // search). Halving an update that raises the implicit step's merit, it goes through in two pieces, with
+    // the energy bound of a kept step.
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.4, 0.2, 0.2);
+    grid.mCellCount = {4, 2, 2};
+    TetSolverSettings settings;
+    settings.mMaxStepSplits = 1;
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), settings).Get();
+    REQUIRE(solver.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, 1.0e3, 0.0)).IsValid());
+    const double start_energy = solver.KineticEnergy() + solver.ElasticEnergy();
+    const Result<TetStepResult> result = solver.Step(1.0 / 30.0);
+    REQUIRE(result.IsValid());
+    WARN("events " << static_cast<unsigned>(result.Get().mEvents) << ", " << result.Get().mSubSteps
+                   << " pieces, " << result.Get().mNewtonIterations << " Newton iterations, "
+                   << result.Get().mLineSearchHalvings << " halvings; energy " << start_energy << " -> "
+                   << result.Get().mEnergy << " J");
+    CHECK_FALSE(HasEvent(result.Get().mEvents, ETetStepEvent::Diverged));
+    CHECK(result.Get().mLineSearchHalvings > 0);
+    CHECK(result.Get().mEnergy <= start_energy * (1.0 + settings.mDivergenceEnergyRatio));
+    CHECK(AllFinite(solver.GetPositions()));
+}
+
 TEST_CASE("Stress: a brittle prop hammered at random cracks, refactors and never produces NaN", "[fem]")
 {
     // A 1 m x 0.2 m x 0.6 m brittle wall (E = 10 GPa, implicit, factored preconditioner), anchored along its

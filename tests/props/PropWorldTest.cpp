@@ -377,29 +377,32 @@ TEST_CASE("PropWorld::Step counts the props whose step split to go through and t
           "[props]")
 {
     // The stress test's spinning block (TetStressTest): a free 1 GPa block hit at a corner by 1e3 N s
-    // diverges in one 1/30 s step. With the default splits it goes through in pieces; allowed one split, it
-    // diverges in one piece and in two and is given up and restored (split, but not through: counted once,
-    // as given up). A third, unhit block steps plainly.
+    // diverges in one 1/30 s step. With the default splits it goes through in pieces. Hit by 1e4 N s and
+    // allowed one split and one Newton iteration a step (no line search, which needs two), it diverges in
+    // one piece and in two and is given up and restored (split, but not through: counted once, as given
+    // up). A third, unhit block steps plainly.
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
     TetGridSettings grid;
     grid.mSize = Vec3(0.4, 0.2, 0.2);
     grid.mCellCount = {4, 2, 2};
-    const auto block = [&](int inSplits, bool inHit)
+    const auto block = [&](int inSplits, double inImpulse,
+                           int inNewtonIterations = TetSolverSettings{}.mImplicitMaxIterations)
     {
         TetSolverSettings settings;
         settings.mMaxStepSplits = inSplits;
+        settings.mImplicitMaxIterations = inNewtonIterations;
         FemProp prop =
             FemProp::Create(nullptr, TetGrid(grid).Get(), FemMaterialSettings{}, settings, FemPropSettings{})
                 .Get();
-        if (inHit)
-            REQUIRE(
-                prop.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, 1.0e3, 0.0)).IsValid());
+        if (inImpulse > 0.0)
+            REQUIRE(prop.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, inImpulse, 0.0))
+                        .IsValid());
         return prop;
     };
-    REQUIRE(props->AddProp(fixture.mWall, block(5, true)).IsValid());
-    REQUIRE(props->AddProp(fixture.mFloor, block(1, true)).IsValid());
-    REQUIRE(props->AddProp(fixture.mCar, block(5, false)).IsValid());
+    REQUIRE(props->AddProp(fixture.mWall, block(5, 1.0e3)).IsValid());
+    REQUIRE(props->AddProp(fixture.mFloor, block(1, 1.0e4, 1)).IsValid());
+    REQUIRE(props->AddProp(fixture.mCar, block(5, 0.0)).IsValid());
     const std::vector<Vec3> given_up = props->GetProp(PropId{1})->GetCpuSolver()->GetPositions();
     const Result<PropStepReport> stepped = props->Step(1.0 / 30.0);
     REQUIRE(stepped.IsValid());

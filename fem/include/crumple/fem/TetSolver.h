@@ -280,6 +280,15 @@ private:
                                                   double inStiffnessScale);
     // True when the implicit solves refresh the factor (mFactorRefreshIterations > 0, corotated, factored).
     bool RefreshesFactor() const;
+    // Newton's line-search merit at the current iterate (the last element pass's energy, mPassEnergy): the
+    // incremental potential of implicit Euler, 1/2 |v - v0|_M^2 + h alpha/2 |v|_M^2 + E(x0 + h v) -
+    // h v . (f_ext + M g), whose gradient in v is minus the momentum residual (stiffness damping left out).
+    // An exact step minimises it, so an update that raises it overshot (J).
+    double LineSearchMerit(double inDeltaTime, std::span<const Vec3> inStartVelocities) const;
+    // At most this many halvings of one Newton update, and the relative rise of the merit they tolerate
+    // (round-off of a merit of large cancelling terms).
+    static constexpr int cMaxLineSearchHalvings = 4;
+    static constexpr double cLineSearchSlack = 1.0e-12;
     // ioFactor refactored at the current element frames mRotations (the rest factor should that fail); false
     // when both failed and ioFactor holds no factor.
     bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,

@@ -62,6 +62,7 @@ struct CRUMPLE_API TetStepResult
     int mSubSteps = 0;            ///< Sub-steps of the last attempt (symplectic: stable sub-steps;
                                   ///< implicit: pieces after splitting, 1 normally; 0 when asleep)
     int mNewtonIterations = 0;    ///< Linear solves (implicit Euler)
+    int mLineSearchHalvings = 0;  ///< Newton updates halved by the line search (implicit Euler, no ground)
     int mSolverIterations = 0;    ///< Conjugate-gradient iterations, all solves together (implicit Euler)
     double mSolverResidual = 0.0; ///< Largest final relative CG residual |r| / |b| (implicit Euler)
     double mKineticEnergy = 0.0;  ///< Kinetic energy after the step (J)
