@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 
 using namespace crumple;
@@ -25,6 +26,27 @@ struct StressOutcome
     int mNotConverged = 0;
     double mLargestSpeed = 0.0;
 };
+
+// The spinning block: a free 1 GPa block (0.4 m x 0.2 m x 0.2 m, 4 x 2 x 2 cells) hit at its corner node
+// StruckCorner() by 1e3 N s along y, split at most inMaxStepSplits times.
+constexpr std::array<int, 3> cBlockCells{4, 2, 2};
+
+int StruckCorner()
+{
+    return TetGridNode(cBlockCells, 4, 2, 2);
+}
+
+TetSolver HitBlock(int inMaxStepSplits)
+{
+    TetGridSettings grid;
+    grid.mSize = Vec3(0.4, 0.2, 0.2);
+    grid.mCellCount = cBlockCells;
+    TetSolverSettings settings;
+    settings.mMaxStepSplits = inMaxStepSplits;
+    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), settings).Get();
+    REQUIRE(solver.ApplyImpulse(StruckCorner(), Vec3(0.0, 1.0e3, 0.0)).IsValid());
+    return solver;
+}
 
 bool AllFinite(const std::vector<Vec3>& inValues)
 {
@@ -133,18 +155,11 @@ TEST_CASE("Stress: random impulses up to 1e5 N s and steps up to 1/30 s never pr
 
 TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitting rescues it", "[fem]")
 {
-    // A free 1 GPa block hit at a corner by 1e3 N s spins at hundreds of rad/s: implicit Euler extrapolates
-    // each node along its tangent for 1/30 s, far beyond what one linearised step can undo.
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.4, 0.2, 0.2);
-    grid.mCellCount = {4, 2, 2};
-    const TetMesh mesh = TetGrid(grid).Get();
+    // The spinning block (HitBlock) spins at hundreds of rad/s: implicit Euler extrapolates each node along
+    // its tangent for 1/30 s, far beyond what one linearised step can undo.
     for (int splits : {0, 5})
     {
-        TetSolverSettings settings;
-        settings.mMaxStepSplits = splits;
-        TetSolver solver = TetSolver::Create(mesh, FemMaterialSettings(), settings).Get();
-        REQUIRE(solver.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, 1.0e3, 0.0)).IsValid());
+        TetSolver solver = HitBlock(splits);
         const std::vector<Vec3> positions = solver.GetPositions();
         const std::vector<Vec3> velocities = solver.GetVelocities();
         const std::vector<Quat> rotations = solver.GetElementRotations();
@@ -170,8 +185,7 @@ TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitt
             CHECK(solver.GetPositions() == positions);
             CHECK(solver.GetVelocities() == velocities);
             // An input (here an impulse that stops the struck node) and it is tried again, and goes through.
-            REQUIRE(
-                solver.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, -1.0e3, 0.0)).IsValid());
+            REQUIRE(solver.ApplyImpulse(StruckCorner(), Vec3(0.0, -1.0e3, 0.0)).IsValid());
             const Result<TetStepResult> tried = solver.Step(1.0 / 30.0);
             REQUIRE(tried.IsValid());
             CHECK(tried.Get().mNewtonIterations > 0);
@@ -194,13 +208,7 @@ TEST_CASE("Stress: Newton's line search carries a spinning block through a step 
     // its tangents) and swing, and the step diverged in one piece and in two (given up, before the line
     // search). Halving an update that raises the implicit step's merit, it goes through in two pieces, with
     // the energy bound of a kept step.
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.4, 0.2, 0.2);
-    grid.mCellCount = {4, 2, 2};
-    TetSolverSettings settings;
-    settings.mMaxStepSplits = 1;
-    TetSolver solver = TetSolver::Create(TetGrid(grid).Get(), FemMaterialSettings(), settings).Get();
-    REQUIRE(solver.ApplyImpulse(TetGridNode(grid.mCellCount, 4, 2, 2), Vec3(0.0, 1.0e3, 0.0)).IsValid());
+    TetSolver solver = HitBlock(1);
     const double start_energy = solver.KineticEnergy() + solver.ElasticEnergy();
     const Result<TetStepResult> result = solver.Step(1.0 / 30.0);
     REQUIRE(result.IsValid());
@@ -210,7 +218,7 @@ TEST_CASE("Stress: Newton's line search carries a spinning block through a step 
                    << result.Get().mEnergy << " J");
     CHECK_FALSE(HasEvent(result.Get().mEvents, ETetStepEvent::Diverged));
     CHECK(result.Get().mLineSearchHalvings > 0);
-    CHECK(result.Get().mEnergy <= start_energy * (1.0 + settings.mDivergenceEnergyRatio));
+    CHECK(result.Get().mEnergy <= start_energy * (1.0 + TetSolverSettings{}.mDivergenceEnergyRatio));
     CHECK(AllFinite(solver.GetPositions()));
 }
 

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "SameBytes.h"
 #include "ThreadJobSystem.h"
 #include "TwoZoneBox.h"
 
@@ -17,6 +18,7 @@
 #include <tuple>
 
 using namespace crumple;
+using crumple::common::SameBytes;
 using namespace crumple::ffd;
 
 namespace
@@ -30,11 +32,6 @@ FfdDeformer MakeDeformer(std::array<int, 3> inControls = {8, 6, 6}, double inMax
     FfdDeformerSettings settings;
     settings.mZones.push_back(plugin::FitZoneToMesh(mesh, inControls, inMaxTotal));
     return FfdDeformer::Create(std::move(mesh), settings).Get();
-}
-
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
 }
 
 // A few points on the front face (x = +2) pushed backwards.

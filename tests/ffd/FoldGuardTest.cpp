@@ -3,6 +3,7 @@
 #include <crumple/ffd/FoldGuard.h>
 
 #include "DrawVec3.h"
+#include "SameBytes.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +14,7 @@
 #include <random>
 
 using namespace crumple;
+using crumple::common::SameBytes;
 using namespace crumple::ffd;
 
 namespace
@@ -63,11 +65,6 @@ double MinRelativeGap(const FfdLattice& inLattice, const std::vector<Vec3>& inDi
                 }
             }
     return smallest;
-}
-
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "SameBytes.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/ByteWriter.h>
@@ -10,6 +11,7 @@
 #include <cstring>
 
 using namespace crumple;
+using crumple::common::SameBytes;
 using namespace crumple::plugin;
 using crumple::common::WorldFixture;
 
@@ -26,11 +28,6 @@ void Crash(WorldFixture& ioFixture, double inSpeed, double inY)
 const std::vector<Vec3>& CarPositions(const WorldFixture& inFixture)
 {
     return inFixture.mWorld.GetObject(inFixture.mCarObject)->GetDeformer().GetPositions();
-}
-
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
 }
 
 // Rewrites the trailing checksum so that a deliberate edit is not caught by the CRC.

@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "SameBytes.h"
 #include "WorldFixture.h"
 
 #include <crumple/plugin/CampbellCrush.h>
@@ -12,6 +13,7 @@
 #include <utility>
 
 using namespace crumple;
+using crumple::common::SameBytes;
 using namespace crumple::plugin;
 using crumple::common::WorldFixture;
 
@@ -50,11 +52,6 @@ Collision CornerHit(WorldFixture& ioFixture, const BodyState& inCar, double inFr
     ioFixture.mWorld.RemoveListener(&listener);
     REQUIRE(listener.mCollisions.size() == 1);
     return listener.mCollisions[0];
-}
-
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
 }
 
 } // namespace

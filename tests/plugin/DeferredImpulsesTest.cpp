@@ -4,6 +4,8 @@
 // their impulses and the dents are bitwise those of a world that solves them in SubmitContacts, one Update
 // later, whatever the job system; ForgetImpacts keeps its place among the steps; Flush and RemoveBody solve
 // what waits.
+#include "DentsInFlight.h"
+#include "SameBytes.h"
 #include "ThreadJobSystem.h"
 #include "WallCrashScene.h"
 #include "WorldFixture.h"
@@ -47,11 +49,6 @@ struct HeardListener : DamageListener
     std::uint64_t mVertices = 0;
 };
 
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
-}
-
 } // namespace
 
 TEST_CASE(
@@ -85,17 +82,8 @@ TEST_CASE(
             scene.GetWorld().AddListener(&listener);
             // The first contacts go to a task at the Update of their step: nothing is grouped or dispatched
             // yet.
-            bool saw_in_flight = false;
-            for (int step = 0; step < 200 && !saw_in_flight; ++step)
-            {
-                scene.Step();
-                if (scene.GetWorld().HasDentsInFlight())
-                {
-                    saw_in_flight = true;
-                    CHECK(listener.mBefore.empty());
-                }
-            }
-            REQUIRE(saw_in_flight);
+            REQUIRE(StepUntilDentsInFlight(scene));
+            CHECK(listener.mBefore.empty());
             CHECK(scene.GetWorld().GetOpenCollisionCount() >
                   0); // waits for the task: its contacts are grouped
             scene.Run();

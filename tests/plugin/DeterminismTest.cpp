@@ -1,8 +1,10 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "WallCrashScene.h"
+#include "DentsInFlight.h"
+#include "SameBytes.h"
 #include "ScratchDirectory.h"
 #include "ThreadJobSystem.h"
+#include "WallCrashScene.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/FileBytes.h>
@@ -36,11 +38,6 @@ Snapshot RunCrash(double inYawDegrees)
     scene.Run();
     const ffd::FfdDeformer& car = scene.GetWorld().GetObject(scene.GetCarObject())->GetDeformer();
     return {car.GetPositions(), car.GetNormals(), scene.GetWorld().SaveDamage()};
-}
-
-bool SameBytes(const std::vector<Vec3>& inA, const std::vector<Vec3>& inB)
-{
-    return inA.size() == inB.size() && std::memcmp(inA.data(), inB.data(), inA.size() * sizeof(Vec3)) == 0;
 }
 
 } // namespace
@@ -139,18 +136,9 @@ TEST_CASE("Deferred dents land one Update later, bitwise as inline, on any threa
             const std::vector<Vec3> rest = car.GetPositions();
             // Step until the first dispatch: its dents are started, not landed, and the game still sees
             // the mesh as it was.
-            bool saw_in_flight = false;
-            for (int step = 0; step < 200 && !saw_in_flight; ++step)
-            {
-                scene.Step();
-                if (scene.GetWorld().HasDentsInFlight())
-                {
-                    saw_in_flight = true;
-                    CHECK(SameBytes(car.GetPositions(), rest));
-                    CHECK(listener.mAfter.size() < listener.mBefore.size());
-                }
-            }
-            REQUIRE(saw_in_flight);
+            REQUIRE(StepUntilDentsInFlight(scene));
+            CHECK(SameBytes(car.GetPositions(), rest));
+            CHECK(listener.mAfter.size() < listener.mBefore.size());
             scene.Run();
             CHECK_FALSE(scene.GetWorld().HasDentsInFlight());
             CHECK(SameBytes(car.GetPositions(), reference.GetPositions()));
