@@ -90,9 +90,7 @@ void DamageWorld::RunDeferredDents(void* inInFlight)
     auto* flight = static_cast<InFlight*>(inInFlight);
     // intent: the impulses of the steps submitted since the last Update, in order (the grouper and the impact
     // memories are the task's until it lands); the dents are of collisions closed before them
-    for (const Submission& submission : flight->mSubmissions)
-        if (flight->mWorld->SolveSubmission(submission).HasError())
-            ++flight->mSubmissionsDropped;
+    flight->mSubmissionsDropped += flight->mWorld->SolveSubmissions(flight->mSubmissions);
     for (std::size_t i = 0; i < flight->mCollisions.size(); ++i)
         for (const DentTarget& target : flight->mTargets[i])
             flight->mDents[i].push_back({target.mObject, DispatchedDent(target.mDeformable->ApplyCollision(
@@ -408,9 +406,16 @@ void DamageWorld::SolvePendingHere()
     // impulse drops it whole, as on the task)
     std::vector<Submission> pending = std::move(mPending);
     mPending.clear();
-    for (const Submission& submission : pending)
+    mLanded.mSubmissionsDropped += SolveSubmissions(pending);
+}
+
+int DamageWorld::SolveSubmissions(std::span<const Submission> inSubmissions)
+{
+    int dropped = 0;
+    for (const Submission& submission : inSubmissions)
         if (SolveSubmission(submission).HasError())
-            ++mLanded.mSubmissionsDropped;
+            ++dropped;
+    return dropped;
 }
 
 Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,

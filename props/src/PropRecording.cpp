@@ -174,13 +174,27 @@ Result<PropSetup> GpuPropSetup(plugin::BodyId inBody, const gpu::GpuTetSolver& i
 }
 #endif
 
+// The node lists of a prop's pieces (FemProp::ComputeFragments), kept while its broken links are: a
+// hand-over records each of its loose pieces in a record of its own, and the pieces' nodes change only where
+// links break (fixing a piece's nodes changes no connectivity).
+struct PieceNodes
+{
+    int mBrokenLinks = -1;
+    std::vector<std::vector<int>> mNodes;
+};
+
 // True when inNodes (a recorded loose piece, in the order it was recorded) are exactly the nodes of one of
 // inProp's pieces now (FemProp::ComputeFragments, which TakeLooseFragments recorded them from).
-bool IsFragmentOf(const FemProp& inProp, const std::vector<int>& inNodes)
+bool IsFragmentOf(const FemProp& inProp, const std::vector<int>& inNodes, PieceNodes& ioPieces)
 {
-    const std::vector<fem::TetFragment> fragments = inProp.ComputeFragments();
-    return std::any_of(fragments.begin(), fragments.end(),
-                       [&](const fem::TetFragment& inFragment) { return inFragment.mNodes == inNodes; });
+    if (ioPieces.mBrokenLinks != inProp.GetBrokenLinkCount())
+    {
+        ioPieces.mNodes.clear();
+        for (fem::TetFragment& fragment : inProp.ComputeFragments())
+            ioPieces.mNodes.push_back(std::move(fragment.mNodes));
+        ioPieces.mBrokenLinks = inProp.GetBrokenLinkCount();
+    }
+    return std::find(ioPieces.mNodes.begin(), ioPieces.mNodes.end(), inNodes) != ioPieces.mNodes.end();
 }
 
 } // namespace
@@ -396,6 +410,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
 {
     std::vector<ReplayedProp> props;
     std::vector<std::size_t> added_after; // per prop: the collisions recorded before it joined
+    std::vector<PieceNodes> pieces;       // per prop: its pieces' nodes, for the loose records' check
     std::size_t next_collision = 0;
     // The collisions before an extension record reach the props that existed when they were dispatched, in
     // dispatch order.
@@ -454,6 +469,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                 return MakeError(EError::CorruptData, where + spread.GetError().mMessage);
             props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop)});
             added_after.push_back(static_cast<std::size_t>(extension.mAfterCollisions));
+            pieces.emplace_back();
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Step))
         {
@@ -488,7 +504,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             // broke). A GPU prop is not checked: on another device or driver, or on the CPU, it replays
             // close, not bitwise.
             if (props[prop].mRecordedBackend == EFemBackend::Cpu && solver.GetBackend() == EFemBackend::Cpu &&
-                !IsFragmentOf(solver, nodes))
+                !IsFragmentOf(solver, nodes, pieces[prop]))
                 return MakeError(
                     EError::CorruptData,
                     where + "a loose piece of prop " + std::to_string(prop) +

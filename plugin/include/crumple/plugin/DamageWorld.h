@@ -228,6 +228,9 @@ private:
     Status SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
                          std::span<const SubmittedBody> inBodies);
     Status SolveSubmission(const Submission& inSubmission);
+    /// Solves inSubmissions in order (on the task or, SolvePendingHere, on the caller's thread); returns how
+    /// many were dropped (an impulse not finite).
+    int SolveSubmissions(std::span<const Submission> inSubmissions);
     /// mDeferImpulses: solves the submissions that wait for the next task here and now (calls that need the
     /// collisions and memories complete: Flush, RemoveBody). Call after Land().
     void SolvePendingHere();
