@@ -1,150 +1,35 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-#include "SeamTwins.h"
-#include "SplitTriangle.h"
+#include "SplitAtFeet.h"
 
 #include <crumple/ffd/SplitCaps.h>
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
-#include <unordered_map>
 
 namespace crumple::ffd
 {
 
-namespace
-{
-
-// A far corner closer to the long edge than this fraction of its length makes a degenerate triangle.
-constexpr double cDegenerate = 1e-9;
-
-// Where a cap's long edge is split: the foot of its far corner, as a fraction along the edge from its end
-// of lower seam twin (the same end on every side of a seam, so every side gets the same point bit for bit).
-struct CapSplit
-{
-    std::uint32_t mFrom = 0; ///< the end the fraction counts from (its seam twin of lowest index)
-    double mFraction = 0.0;  ///< in (0, 1)
-    Vec3 mPoint = Vec3::Zero();
-};
-
-// The corner k (0..2) of a triangle facing its longest edge when that corner is at least the cap angle
-// (cos <= inCosCap), else -1. A degenerate triangle (a zero edge) is no cap.
-int CapCorner(const std::array<Vec3, 3>& inCorners, double inCosCap)
-{
-    int corner = -1;
-    double longest = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-        const double length2 = (inCorners[(k + 2) % 3] - inCorners[(k + 1) % 3]).squaredNorm();
-        if (length2 > longest)
-        {
-            longest = length2;
-            corner = k;
-        }
-    }
-    if (corner < 0)
-        return -1;
-    const Vec3 u = inCorners[(corner + 1) % 3] - inCorners[corner];
-    const Vec3 v = inCorners[(corner + 2) % 3] - inCorners[corner];
-    const double norms = u.norm() * v.norm();
-    if (!(norms > 0.0))
-        return -1;
-    return u.dot(v) / norms <= inCosCap ? corner : -1;
-}
-
-} // namespace
-
 Result<RefinedMesh> SplitCaps(const TriangleMesh& inMesh, double inCapAngle)
 {
-    if (Status valid = ValidateTriangleMesh(inMesh); !valid)
-        return valid.GetError();
     if (!(inCapAngle >= 0.5 * std::numbers::pi && inCapAngle <= std::numbers::pi))
         return MakeError(EError::InvalidArgument, "SplitCaps: the cap angle must be in [pi/2, pi] rad, not " +
                                                       std::to_string(inCapAngle));
-    const std::vector<std::uint32_t> twin = SeamTwins(inMesh.mPositions);
-    const std::vector<Vec3>& rest = inMesh.mPositions;
     const double cos_cap = std::cos(inCapAngle);
-
-    // intent: the split point of each long edge, keyed by its ends' seam twins, the first cap in triangle
-    // order deciding
-    std::unordered_map<std::uint64_t, CapSplit> splits;
-    for (const auto& triangle : inMesh.mTriangles)
-    {
-        const std::array<Vec3, 3> corners = {rest[triangle[0]], rest[triangle[1]], rest[triangle[2]]};
-        const int corner = CapCorner(corners, cos_cap);
-        if (corner < 0)
-            continue;
-        const std::uint32_t a = triangle[(corner + 1) % 3], b = triangle[(corner + 2) % 3];
-        if (twin[a] == twin[b])
-            continue;
-        const std::uint64_t key = UndirectedEdgeKey(twin[a], twin[b]);
-        if (splits.contains(key))
-            continue;
-        const std::uint32_t from = std::min(twin[a], twin[b]), to = std::max(twin[a], twin[b]);
-        const Vec3 edge = rest[to] - rest[from];
-        const double fraction = (corners[corner] - rest[from]).dot(edge) / edge.squaredNorm();
-        // a corner of at least pi/2 faces the longest edge with both other corners acute: its foot is inside
-        if (!(fraction > 0.0 && fraction < 1.0))
-            continue;
-        const Vec3 foot = rest[from] + fraction * edge;
-        // A far corner on the edge to round-off is a degenerate triangle, not a cap: it shows nothing, and
-        // its pieces would be as degenerate, with their orientation left to round-off.
-        if ((corners[corner] - foot).squaredNorm() <= cDegenerate * cDegenerate * edge.squaredNorm())
-            continue;
-        splits.emplace(key, CapSplit{from, fraction, foot});
-    }
-
-    RefinedMesh refined;
-    refined.mMesh.mPositions = inMesh.mPositions;
-    if (splits.empty())
-    {
-        refined.mMesh.mTriangles = inMesh.mTriangles;
-        return refined;
-    }
-    std::vector<Vec3>& positions = refined.mMesh.mPositions;
-    // intent: one added vertex per edge by index (a seam's sides by position get one each)
-    std::unordered_map<std::uint64_t, std::uint32_t> added;
-    std::vector<std::array<std::uint32_t, 3>>& triangles = refined.mMesh.mTriangles;
-    triangles.reserve(inMesh.mTriangles.size() + 4 * splits.size());
-    // intent: look an edge up only when both its ends (by twin) end a split edge: most triangles touch none
-    std::vector<std::uint8_t> on_split(inMesh.mPositions.size(), 0);
-    for (const auto& [key, split] : splits)
-    {
-        on_split[static_cast<std::uint32_t>(key)] = 1;
-        on_split[static_cast<std::uint32_t>(key >> 32)] = 1;
-    }
-    for (const auto& triangle : inMesh.mTriangles)
-    {
-        std::array<std::uint32_t, 3> cut = {cNoSplit, cNoSplit, cNoSplit};
-        for (int k = 0; k < 3; ++k)
+    return SplitAtFeet(
+        inMesh,
+        [cos_cap](const FootOfLongestEdge& inFoot)
         {
-            const std::uint32_t a = triangle[k], b = triangle[(k + 1) % 3];
-            if (on_split[twin[a]] == 0 || on_split[twin[b]] == 0)
-                continue;
-            const auto split = splits.find(UndirectedEdgeKey(twin[a], twin[b]));
-            if (split == splits.end())
-                continue;
-            const auto [it, is_new] =
-                added.try_emplace(UndirectedEdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));
-            if (is_new)
-            {
-                if (positions.size() >= 0xFFFFFFFEu)
-                    return MakeError(EError::OutOfRange,
-                                     "SplitCaps: the split mesh would have more than 2^32 - 2 vertices");
-                const std::uint32_t low = std::min(a, b), high = std::max(a, b);
-                const double fraction = twin[low] == split->second.mFrom ? split->second.mFraction
-                                                                         : 1.0 - split->second.mFraction;
-                positions.push_back(split->second.mPoint);
-                refined.mSplitParents.push_back({low, high});
-                refined.mSplitFractions.push_back(fraction);
-            }
-            cut[k] = it->second;
-        }
-        SplitTriangle(triangle, cut, positions, triangles);
-    }
-    return refined;
+            const Vec3& corner = inFoot.mCorners[inFoot.mCorner];
+            const Vec3 u = inFoot.mCorners[(inFoot.mCorner + 1) % 3] - corner;
+            const Vec3 v = inFoot.mCorners[(inFoot.mCorner + 2) % 3] - corner;
+            const double norms = u.norm() * v.norm();
+            // intent: every cap alike: an edge goes to the first cap on it in triangle order
+            return norms > 0.0 && u.dot(v) / norms <= cos_cap ? std::optional<double>(0.0) : std::nullopt;
+        },
+        "SplitCaps");
 }
 
 } // namespace crumple::ffd
