@@ -25,7 +25,7 @@ ConjugateGradientResult ConjugateGradient(const LinearOperator3& inOperator,
                                           const LinearOperator3& inPreconditioner,
                                           std::span<const Vec3> inRhs, double inTolerance,
                                           int inMaxIterations, std::span<Vec3> ioSolution,
-                                          ConjugateGradientScratch& ioScratch)
+                                          ConjugateGradientScratch& ioScratch, int inLongIterations)
 {
     ConjugateGradientResult result;
     const std::size_t n = inRhs.size();
@@ -90,7 +90,22 @@ ConjugateGradientResult ConjugateGradient(const LinearOperator3& inOperator,
         rz = rz_new;
         for (std::size_t i = 0; i < n; ++i)
             p[i] = z[i] + beta * p[i];
+        const double last_residual = residual;
         residual = std::sqrt(std::max(rz, 0.0)) / rhs_norm;
+        // At the last iteration's rate the solve would end after k + ln(tol / r_k) / ln(r_k / r_k-1)
+        // iterations. The last rate, not the mean: CG speeds up as it works through the spectrum (a
+        // preconditioner off by three factors converges in three iterations, the first two slow). A residual
+        // that did not fall predicts no end at all.
+        if (inLongIterations > 0 && result.mIterations >= 2 && residual > inTolerance)
+        {
+            const double rate = residual / last_residual;
+            if (!(rate < 1.0) ||
+                result.mIterations + std::log(inTolerance / residual) / std::log(rate) > inLongIterations)
+            {
+                result.mPredictedLong = true;
+                break;
+            }
+        }
     }
     result.mRelativeResidual = residual;
     result.mConverged = residual <= inTolerance;

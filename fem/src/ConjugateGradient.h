@@ -20,6 +20,8 @@ struct ConjugateGradientResult
     int mIterations = 0;            ///< Iterations done
     double mRelativeResidual = 0.0; ///< |b - A x|_P / |b|_P at the end, |r|_P = sqrt(r^T P r); 0 when b = 0
     bool mConverged = false;        ///< mRelativeResidual <= the tolerance
+    bool mPredictedLong = false;    ///< Stopped early: its rate so far said it would take more than
+                                    ///< inLongIterations iterations
 };
 
 /// The vectors ConjugateGradient works in, kept by the caller so that repeated solves allocate nothing once
@@ -42,10 +44,16 @@ struct ConjugateGradientScratch
 /// @param[in]     inMaxIterations   at most this many iterations
 /// @param[in,out] ioSolution        initial guess in, solution out, #N
 /// @param[in,out] ioScratch         work vectors, resized to #N
+/// @param[in]     inLongIterations  0, or: stop (mPredictedLong) once, from the second iteration on, the last
+///                                  iteration's rate says the solve would need more iterations than this in
+///                                  all, k + ln(tolerance / r_k) / ln(r_k / r_k-1) after k iterations (or
+///                                  the residual did not fall), so that a caller with a better
+///                                  preconditioner to build (a refreshed factor) builds it without first
+///                                  spending the iterations the poor one would waste
 ConjugateGradientResult ConjugateGradient(const LinearOperator3& inOperator,
                                           const LinearOperator3& inPreconditioner,
                                           std::span<const Vec3> inRhs, double inTolerance,
                                           int inMaxIterations, std::span<Vec3> ioSolution,
-                                          ConjugateGradientScratch& ioScratch);
+                                          ConjugateGradientScratch& ioScratch, int inLongIterations = 0);
 
 } // namespace crumple::fem

@@ -393,6 +393,7 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
     mInverseMasses = std::move(inverse_masses);
     mFree = std::move(free);
     mElementActiveValid = false;
+    FollowFramesAfterNewSystem();
     mForces.resize(new_count);
     mReferenceValid = false; // the energy bookkeeping restarts on the new topology
 }
@@ -419,7 +420,7 @@ void TetSolver::InputChanged()
     mReferenceValid = false;
 }
 
-void TetSolver::FixNode(int inNode, bool inFixed)
+bool TetSolver::FixNode(int inNode, bool inFixed)
 {
     const bool was_fixed = mInverseMasses[inNode] == 0.0;
     if (was_fixed != inFixed)
@@ -429,13 +430,21 @@ void TetSolver::FixNode(int inNode, bool inFixed)
     mElementActiveValid = false;
     if (inFixed)
         mVelocities[inNode].setZero();
+    return was_fixed != inFixed;
+}
+
+void TetSolver::FollowFramesAfterNewSystem()
+{
+    if (RefreshesFactor() && mRotations.size() == mElementNodes.size())
+        KeepFactorFrames(mRotations);
 }
 
 Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
 {
     if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
         return status;
-    FixNode(inNode, inFixed);
+    if (FixNode(inNode, inFixed))
+        FollowFramesAfterNewSystem();
     InputChanged();
     return Status::Ok();
 }
@@ -448,8 +457,11 @@ Status TetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
             return status;
     if (inNodes.empty())
         return Status::Ok();
+    bool changed = false;
     for (int node : inNodes)
-        FixNode(node, inFixed);
+        changed = FixNode(node, inFixed) || changed;
+    if (changed)
+        FollowFramesAfterNewSystem();
     InputChanged();
     return Status::Ok();
 }
@@ -879,14 +891,16 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             build_jacobi();
 
         // Solve A dv = r, then v += dv and x = x0 + h v on the free nodes. A solve the factor's frames no
-        // longer fit stops after mFactorRefreshIterations, refreshes the factor at this linearisation's
-        // frames and goes on from where it stopped.
+        // longer fit stops after mFactorRefreshIterations, or as soon as its rate says it would need more,
+        // refreshes the factor at this linearisation's frames and goes on from where it stopped.
         std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
         const int budget = mSettings.mCgMaxIterations;
         const int first_budget = refreshing && factored != nullptr ? std::min(budget, mSettings.mFactorRefreshIterations) : budget;
-        ConjugateGradientResult cg = ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
-                                                       first_budget, scratch.mDeltaV, scratch.mCg);
-        if (!cg.mConverged && cg.mIterations == first_budget && first_budget < budget)
+        const bool may_refresh = first_budget < budget;
+        ConjugateGradientResult cg =
+            ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
+                              first_budget, scratch.mDeltaV, scratch.mCg, may_refresh ? first_budget : 0);
+        if (may_refresh && !cg.mConverged && (cg.mIterations == first_budget || cg.mPredictedLong))
         {
             if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale))
             {
@@ -970,10 +984,11 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     TetFactoredPreconditioner& factor = mWorkspace.Get().mFactor;
     if (!factor.Matches(mElementNodes, mFree, inMassScale, inStiffnessScale))
     {
-        // intent: the implicit system of a refreshing solver is factored at the frames of its last refresh
-        // (solver state: Prepare, a copy and a replay factor alike), also after a crack; the static one
-        // (mass scale 0) at rest. A breakable solver refactors after every crack and a refreshing one at
-        // every refresh: both keep their elements' rest stiffness.
+        // intent: the implicit system of a refreshing solver is factored at mFactorFrames, those of its last
+        // refresh, crack or change of anchors (solver state: Prepare, a copy and a replay factor alike); the
+        // static one (mass scale 0) at rest. A
+        // breakable solver refactors after every crack and a refreshing one at every refresh: both keep their
+        // elements' rest stiffness.
         const bool framed = inMassScale > 0.0 && RefreshesFactor();
         factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable() || RefreshesFactor(),
                           framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
@@ -982,15 +997,21 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
-                              double inStiffnessScale)
+void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames)
 {
+    // intent: the first change in a step keeps the step's start frames, which a restored step gets back
     if (!mFactorFramesSaved)
     {
         mSavedFactorFrames = mFactorFrames;
         mFactorFramesSaved = true;
     }
-    mFactorFrames = mRotations;
+    mFactorFrames.assign(inFrames.begin(), inFrames.end());
+}
+
+bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
+                              double inMassScale, double inStiffnessScale)
+{
+    KeepFactorFrames(mRotations);
     if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
     {
         ++mFactorRefreshCount;

@@ -3,6 +3,7 @@
 # Tests of the tetrahedral half of crumple::fem (paths relative to tests/).
 set(CRUMPLE_FEM_TET_TESTS
     fem/AllocationCounter.cpp
+    fem/ConjugateGradientTest.cpp
     fem/FemInputBoundsTest.cpp
     fem/FemMaterialTest.cpp
     fem/PolarRotationTest.cpp

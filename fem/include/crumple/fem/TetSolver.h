@@ -264,8 +264,15 @@ private:
     void SaveShape(ShapeState& outShape) const;
     void RestoreShape(const ShapeState& inShape);
 
-    // SetNodeFixed's change of one checked node, without waking the stepper
-    void FixNode(int inNode, bool inFixed);
+    // SetNodeFixed's change of one checked node, without waking the stepper; true when it changed
+    bool FixNode(int inNode, bool inFixed);
+    // After a crack or new anchors, a refreshing solver's next factorisation (a new pattern) is at the
+    // current element frames: mFactorFrames = mRotations, those of the last element pass, where the next
+    // step's first solve is linearised. At its last refresh's frames that solve spent
+    // mFactorRefreshIterations and refreshed anyway (nearly every step after a crack of the racing fence).
+    // Set here, as solver state, and not when the factor is built, so that a copy, a replay and Prepare
+    // factor at the same frames.
+    void FollowFramesAfterNewSystem();
     // Marks that an input changed: wake up and take a new energy reference before the next step.
     void InputChanged();
     // Symplectic Euler over inDeltaTime in inSubSteps sub-steps.
@@ -273,7 +280,7 @@ private:
     // One implicit Euler step; fills the solver statistics of ioResult.
     void StepImplicit(double inDeltaTime, TetStepResult& ioResult);
     // The factored system inMassScale M + inStiffnessScale K for the current connectivity and anchors,
-    // factored again when they or the scales changed (K at the frames of the last refresh, mFactorFrames, for
+    // factored again when they or the scales changed (K at mFactorFrames for
     // a refreshing solver's implicit system; the rest stiffness K0 otherwise); null when the settings ask for
     // block Jacobi or the system cannot be factored.
     TetFactoredPreconditioner* FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
@@ -289,6 +296,8 @@ private:
     // (round-off of a merit of large cancelling terms).
     static constexpr int cMaxLineSearchHalvings = 4;
     static constexpr double cLineSearchSlack = 1.0e-12;
+    // mFactorFrames = inFrames, the step's start frames kept for RestoreStepStart first.
+    void KeepFactorFrames(std::span<const Quat> inFrames);
     // ioFactor refactored at the current element frames mRotations (the rest factor should that fail); false
     // when both failed and ioFactor holds no factor.
     bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
@@ -366,9 +375,10 @@ private:
     std::vector<Vec3> mSavedPositions;
     std::vector<Vec3> mSavedVelocities;
     std::vector<Quat> mSavedRotations;
-    // The element frames the factored system was last refreshed at (empty: the rest frames). Solver state,
+    // The element frames the factored system was last refreshed at, or those of the last element pass before
+    // a crack or a change of anchors (FollowFramesAfterNewSystem; empty: the rest frames). Solver state,
     // not workspace: a copy, or a factor rebuilt after a static solve, factors at the same frames and so
-    // continues bit for bit. Saved (once per step, when a refresh first changes them) for a restore.
+    // continues bit for bit. Saved (once per step, when a refresh or crack first changes them) for a restore.
     std::vector<Quat> mFactorFrames;
     std::vector<Quat> mSavedFactorFrames;
     bool mFactorFramesSaved = false;

@@ -45,10 +45,13 @@ struct CRUMPLE_API TetSolverSettings
     /// ETetStepEvent::SolverNotConverged is set.
     int mCgMaxIterations = 1000;
     /// Implicit Euler with RestFactorization, corotated model: when a conjugate-gradient solve has not
-    /// converged after this many iterations, the factor is refreshed at the current element frames (a
-    /// numeric refactorisation, the ordering kept) and the solve goes on from where it stopped, with a
-    /// preconditioner that is exact for the current linearisation. The factor then stays at those frames
-    /// for the later solves and steps (solver state: copies and replays continue bit for bit). A bent or
+    /// converged after this many iterations, or sooner when from the second iteration on the rate of its last
+    /// iteration says it would need more, the factor is
+    /// refreshed at the current element frames (a numeric refactorisation, the ordering kept) and the solve
+    /// goes on from where it stopped, with a preconditioner that is exact for the current linearisation. The
+    /// factor then stays at those frames for the later solves and steps (solver state: copies and replays
+    /// continue bit for bit); a crack or a change of anchors, which need a new factorisation, take the
+    /// frames of the last element pass for it, where the next solve is linearised. A bent or
     /// crushed prop otherwise costs 5 to 20 iterations per solve (neighbouring elements turned apart, which
     /// the per-node rotation cannot follow). Whether it pays depends on what a refresh costs against an
     /// iteration, which varies with the mesh and the motion. Measured at 3: the Bullet racing fence (4,000
