@@ -986,9 +986,8 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     {
         // intent: the implicit system of a refreshing solver is factored at mFactorFrames, those of its last
         // refresh, crack or change of anchors (solver state: Prepare, a copy and a replay factor alike); the
-        // static one (mass scale 0) at rest. A
-        // breakable solver refactors after every crack and a refreshing one at every refresh: both keep their
-        // elements' rest stiffness.
+        // static one (mass scale 0) at rest. A breakable solver refactors after every crack and a refreshing
+        // one at every refresh: both keep their elements' rest stiffness.
         const bool framed = inMassScale > 0.0 && RefreshesFactor();
         factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable() || RefreshesFactor(),
                           framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});

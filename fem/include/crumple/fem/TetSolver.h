@@ -280,9 +280,9 @@ private:
     // One implicit Euler step; fills the solver statistics of ioResult.
     void StepImplicit(double inDeltaTime, TetStepResult& ioResult);
     // The factored system inMassScale M + inStiffnessScale K for the current connectivity and anchors,
-    // factored again when they or the scales changed (K at mFactorFrames for
-    // a refreshing solver's implicit system; the rest stiffness K0 otherwise); null when the settings ask for
-    // block Jacobi or the system cannot be factored.
+    // factored again when they or the scales changed (K at mFactorFrames for a refreshing solver's implicit
+    // system; the rest stiffness K0 otherwise); null when the settings ask for block Jacobi or the system
+    // cannot be factored.
     TetFactoredPreconditioner* FactoredRestSystem(const TetElementPassInput& inInput, double inMassScale,
                                                   double inStiffnessScale);
     // True when the implicit solves refresh the factor (mFactorRefreshIterations > 0, corotated, factored).

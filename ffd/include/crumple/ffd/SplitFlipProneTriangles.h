@@ -25,7 +25,9 @@ namespace crumple::ffd
 /// over when the car hit the parked car's corner. The two halves have their short edges across the edge's
 /// line and bend limits of order 2 / h: larger triangles need a few rounds (see the return value).
 ///
-/// Seams, claimed edges and degenerate triangles are treated as SplitCaps treats them.
+/// An edge two flip-prone triangles share is split at the foot of the one with the lower bend limit (the other
+/// is looked at again in the next pass; the first in triangle order among equals). Seams and degenerate
+/// triangles are treated as SplitCaps treats them.
 ///
 /// @param[in] inMesh           the mesh; ValidateTriangleMesh must accept it
 /// @param[in] inBendCurvature  the largest curvature of a dent's displacement field the mesh must show
