@@ -8,7 +8,9 @@
 #include <crumple/ffd/SplitCaps.h>
 #include <crumple/ffd/SplitFlipProneTriangles.h>
 
+#include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 namespace crumple::samples
@@ -33,6 +35,12 @@ Result<CapRemoval> RemoveCaps(ffd::TriangleMesh& ioMesh,
                               std::vector<std::vector<std::uint32_t>>& ioRigidParts, double inFlipDeviation,
                               double inBendCurvature)
 {
+    for (const auto& [value, name] :
+         {std::pair{inFlipDeviation, "flip deviation"}, std::pair{inBendCurvature, "bend curvature"}})
+        if (!(std::isfinite(value) && value >= 0.0))
+            return MakeError(std::isfinite(value) ? EError::InvalidArgument : EError::NonFinite,
+                             std::string("RemoveCaps: the ") + name + " must be finite and >= 0, not " +
+                                 std::to_string(value));
     CapRemoval removal;
     if (inFlipDeviation > 0.0)
     {

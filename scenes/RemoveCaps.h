@@ -34,7 +34,8 @@ struct CapRemoval
 /// @param[in]     inFlipDeviation how far a flip may move the surface (m), >= 0
 /// @param[in]     inBendCurvature the dents' largest bend the triangles must show without turning over (1/m);
 ///                                0: caps only
-/// @return what was done, or the first step's error
+/// @return what was done, or the first step's error (a deviation or curvature that is negative or not
+///         finite: refused, the mesh unchanged)
 Result<CapRemoval> RemoveCaps(ffd::TriangleMesh& ioMesh,
                               std::vector<std::vector<std::uint32_t>>& ioRigidParts, double inFlipDeviation,
                               double inBendCurvature = 0.0);
