@@ -5,6 +5,7 @@
 // kappa passes its bend limit 2 h / (L^2 s (1 - s)) is split below that limit and left above it; its pieces
 // take the same bend without turning, the surface keeps its shape, and bad input changes nothing.
 #include "MeshChecks.h"
+#include "ThinFloorPair.h"
 
 #include <crumple/ffd/SplitFlipProneTriangles.h>
 
@@ -16,23 +17,11 @@
 using namespace crumple;
 using namespace crumple::ffd;
 using namespace crumple::ffd::test;
+using crumple::test::cThinFloorBendLimit;
+using crumple::test::ThinFloorPair;
 
 namespace
 {
-
-// A floor panel as the racing car's: in the plane z = 0 (normal +z), a long edge from 0 (0, 0) to 1
-// (0, 0.56) along y, the thin triangle's far corner 2 at (-0.05, 0.448) behind it (s = 0.8, h = 0.05: a
-// 149.5 degree corner, under the cap angle) and a well-shaped triangle on the edge's other side to 3
-// (0.4, 0.28). Bend limit of the thin one: 2 h / (L^2 s (1 - s)) = 0.1 / (0.3136 * 0.16) = 1.993 /m.
-TriangleMesh Floor()
-{
-    TriangleMesh mesh;
-    mesh.mPositions = {Vec3(0.0, 0.0, 0.0), Vec3(0.0, 0.56, 0.0), Vec3(-0.05, 0.448, 0.0),
-                       Vec3(0.4, 0.28, 0.0)};
-    mesh.mTriangles = {{0, 1, 2}, {1, 0, 3}};
-    return mesh;
-}
-constexpr double cBendLimit = 0.1 / (0.56 * 0.56 * 0.8 * 0.2);
 
 // A crush bending the floor in its plane: x moves by kappa / 2 y (0.56 - y), zero at both ends of the edge
 // and most in its middle, a parabola of curvature kappa along y.
@@ -73,14 +62,14 @@ int SplitUntilDone(TriangleMesh& ioMesh, double inKappa)
 TEST_CASE("SplitFlipProneTriangles: the bend that turns a thin triangle over is the one its limit names",
           "[ffd]")
 {
-    const TriangleMesh floor = Floor();
+    const TriangleMesh floor = ThinFloorPair();
     // The analytic threshold, checked on the field itself: just above the limit the triangle turns over, just
     // below it does not.
-    CHECK(TurnedOver(floor, Bent(floor, 1.01 * cBendLimit)) == 1);
-    CHECK(TurnedOver(floor, Bent(floor, 0.99 * cBendLimit)) == 0);
+    CHECK(TurnedOver(floor, Bent(floor, 1.01 * cThinFloorBendLimit)) == 1);
+    CHECK(TurnedOver(floor, Bent(floor, 0.99 * cThinFloorBendLimit)) == 0);
 
     // Asked to stand a bend under its limit, nothing is split.
-    Result<RefinedMesh> kept = SplitFlipProneTriangles(floor, 0.99 * cBendLimit);
+    Result<RefinedMesh> kept = SplitFlipProneTriangles(floor, 0.99 * cThinFloorBendLimit);
     REQUIRE(kept.IsValid());
     CHECK(kept.Get().mSplitParents.empty());
     CHECK(kept.Get().mMesh.mTriangles == floor.mTriangles);
@@ -90,20 +79,20 @@ TEST_CASE("SplitFlipProneTriangles: the bend that turns a thin triangle over is 
     for (const double factor : {3.0, 10.0})
     {
         TriangleMesh split = floor;
-        const int passes = SplitUntilDone(split, factor * cBendLimit);
+        const int passes = SplitUntilDone(split, factor * cThinFloorBendLimit);
         INFO("bend " << factor << " x the limit: " << passes << " passes, " << split.mTriangles.size()
                      << " triangles");
         CHECK(passes >= 1);
         CHECK(passes < 20);
         CHECK(split.mTriangles.size() > floor.mTriangles.size() + 1);
-        CHECK(TurnedOver(split, Bent(split, factor * cBendLimit)) == 0);
+        CHECK(TurnedOver(split, Bent(split, factor * cThinFloorBendLimit)) == 0);
         CHECK(TotalArea(split) == Approx(TotalArea(floor)).epsilon(1.0e-12));
     }
 }
 
 TEST_CASE("SplitFlipProneTriangles: a bad curvature or mesh is refused", "[ffd]")
 {
-    const TriangleMesh floor = Floor();
+    const TriangleMesh floor = ThinFloorPair();
     for (const double bad : {0.0, -1.0})
     {
         const Result<RefinedMesh> refused = SplitFlipProneTriangles(floor, bad);

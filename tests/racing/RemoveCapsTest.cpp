@@ -3,6 +3,7 @@
 // samples::RemoveCaps with a bend curvature: the thin triangle of a floor pair that no cap angle catches is
 // split until none is left that the bend could turn over, and bad parameters are refused, the mesh unchanged.
 #include <RemoveCaps.h>
+#include <ThinFloorPair.h>
 
 #include <crumple/ffd/SplitFlipProneTriangles.h>
 
@@ -13,25 +14,11 @@
 using namespace crumple;
 using namespace crumple::samples;
 
-namespace
-{
-
-// A long edge from (0, 0) to (0, 0.56), a thin triangle behind it (a 149.5 degree corner, bend limit 2.0 /m)
-// and a well-shaped one in front (tests/ffd/SplitFlipProneTrianglesTest.cpp's floor).
-ffd::TriangleMesh Floor()
-{
-    ffd::TriangleMesh mesh;
-    mesh.mPositions = {Vec3(0.0, 0.0, 0.0), Vec3(0.0, 0.56, 0.0), Vec3(-0.05, 0.448, 0.0),
-                       Vec3(0.4, 0.28, 0.0)};
-    mesh.mTriangles = {{0, 1, 2}, {1, 0, 3}};
-    return mesh;
-}
-
-} // namespace
+using crumple::test::ThinFloorPair;
 
 TEST_CASE("RemoveCaps: with a bend curvature no triangle is left that the bend could turn over", "[racing]")
 {
-    ffd::TriangleMesh mesh = Floor();
+    ffd::TriangleMesh mesh = ThinFloorPair();
     std::vector<std::vector<std::uint32_t>> parts;
     const Result<CapRemoval> removed = RemoveCaps(mesh, parts, 0.001, 10.0);
     REQUIRE(removed.IsValid());
@@ -43,7 +30,7 @@ TEST_CASE("RemoveCaps: with a bend curvature no triangle is left that the bend c
     CHECK(again.Get().mSplitParents.empty());
 
     // Without a curvature only caps go: the floor keeps its two triangles.
-    ffd::TriangleMesh caps_only = Floor();
+    ffd::TriangleMesh caps_only = ThinFloorPair();
     const Result<CapRemoval> kept = RemoveCaps(caps_only, parts, 0.001);
     REQUIRE(kept.IsValid());
     CHECK(caps_only.mTriangles.size() == 2);
@@ -58,12 +45,12 @@ TEST_CASE("RemoveCaps: a negative or non-finite deviation or curvature is refuse
           std::tuple{0.001, -1.0, EError::InvalidArgument}, std::tuple{0.001, nan, EError::NonFinite},
           std::tuple{0.001, std::numeric_limits<double>::infinity(), EError::NonFinite}})
     {
-        ffd::TriangleMesh mesh = Floor();
+        ffd::TriangleMesh mesh = ThinFloorPair();
         std::vector<std::vector<std::uint32_t>> parts;
         const Result<CapRemoval> refused = RemoveCaps(mesh, parts, deviation, curvature);
         REQUIRE_FALSE(refused.IsValid());
         CHECK(refused.GetError().mCode == code);
-        CHECK(mesh.mTriangles == Floor().mTriangles);
-        CHECK(mesh.mPositions == Floor().mPositions);
+        CHECK(mesh.mTriangles == ThinFloorPair().mTriangles);
+        CHECK(mesh.mPositions == ThinFloorPair().mPositions);
     }
 }
