@@ -435,7 +435,8 @@ bool TetSolver::FixNode(int inNode, bool inFixed)
 
 void TetSolver::FollowFramesAfterNewSystem()
 {
-    if (RefreshesFactor() && mRotations.size() == mElementNodes.size())
+    // intent: mRotations has one frame per element from Create on (a crack keeps the elements)
+    if (RefreshesFactor())
         KeepFactorFrames(mRotations);
 }
 
