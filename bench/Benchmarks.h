@@ -41,14 +41,16 @@ void RunRaceFrameBudgetBenchmarks(BenchTable& ioTable, const BenchOptions& inOpt
 void RunFemBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 
 /// The factored preconditioner refreshed at the element frames (TetSolverSettings::mFactorRefreshIterations =
-/// 3) against the rest factor alone, on a soft rail (about 800 and 6,400 tetrahedra; --quick the first)
-/// pushed in its middle for six 1/240 s steps and swinging for 18 more, the two stepped alternately: time per
-/// step and conjugate-gradient iterations of each, error: the largest distance of a node from a solve
+/// 3, 6, and 6 with mFactorRefreshByCost) against the rest factor alone, on a soft rail (about 800 and 6,400
+/// tetrahedra; --quick the first) pushed in its middle for six 1/240 s steps, then swinging and settling for
+/// 42 more, the four stepped in turn: time per step and conjugate-gradient iterations of each, the refresh's
+/// cost in iterations (TetSolver::GetFactorRefreshCost); error: the largest distance of a node from a solve
 /// converged to round-off, over the largest displacement. Empty without crumple::fem.
 void RunFemRefreshBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);
 /// The crack-safe Newton bound (TetSolverSettings::mCrackStressTolerance, default 0.5) against the energy
-/// test alone, on the pushed wooden rail (scenes/PushedRail.h; 200 and 300 N s per push step, --quick the
-/// first), the two stepped alternately: time per step in thread CPU and wall time, Newton and CG iterations;
+/// test alone, and with the held props' factor refreshes (after 6 iterations; and by cost), on the pushed
+/// wooden rail (scenes/PushedRail.h; 200 and 300 N s per push step, --quick the first), the four stepped in
+/// turn: time per step in thread CPU and wall time, Newton and CG iterations, refreshes;
 /// error: the links whose state differs from a solve converged to round-off, over the links it cracked. Empty
 /// without crumple::fem.
 void RunCrackBoundBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions);

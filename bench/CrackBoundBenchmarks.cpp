@@ -27,30 +27,33 @@ namespace
 void CrackBoundCase(BenchTable& ioTable, double inImpulse)
 {
     // Side 0 has the crack-safe bound (the default), side 1 the energy test alone, side 2 the bound with the
-    // factor refreshed after 6 iterations, as a held prop's solver (props::HeldPropSolverSettings, the racing
-    // fence's); all pushed and stepped in turn, step by step. The reference converges to round-off and is not
-    // timed.
-    TetSolverSettings bounded, energy_only, refreshing, converged;
-    bounded.mGravity = energy_only.mGravity = refreshing.mGravity = converged.mGravity = Vec3::Zero();
+    // factor refreshed after 6 iterations, side 3 also by cost, as a held prop's solver
+    // (props::HeldPropSolverSettings, the racing fence's); all pushed and stepped in turn, step by step. The
+    // reference converges to round-off and is not timed.
+    TetSolverSettings bounded, energy_only, refreshing, held, converged;
+    bounded.mGravity = energy_only.mGravity = refreshing.mGravity = held.mGravity = converged.mGravity =
+        Vec3::Zero();
     energy_only.mCrackStressTolerance = std::numeric_limits<double>::infinity();
     refreshing.mFactorRefreshIterations = 6;
+    held.mFactorRefreshIterations = 6;
+    held.mFactorRefreshByCost = true;
     converged.mImplicitTolerance = 1.0e-12;
     converged.mImplicitMaxIterations = 40;
     converged.mCgRelativeTolerance = 1.0e-10;
     converged.mCrackStressTolerance = std::numeric_limits<double>::infinity();
-    std::vector<TetSolver> rails = {common::MakePushedRailSolver(bounded).Get(),
-                                    common::MakePushedRailSolver(energy_only).Get(),
-                                    common::MakePushedRailSolver(refreshing).Get()};
-    constexpr int cSides = 3;
+    std::vector<TetSolver> rails = {
+        common::MakePushedRailSolver(bounded).Get(), common::MakePushedRailSolver(energy_only).Get(),
+        common::MakePushedRailSolver(refreshing).Get(), common::MakePushedRailSolver(held).Get()};
+    constexpr int cSides = 4;
     const char* const names[cSides] = {"crack_bound_0.5", "energy_test_alone",
-                                       "crack_bound_0.5/refresh_after_6"};
+                                       "crack_bound_0.5/refresh_after_6", "crack_bound_0.5/refresh_by_cost"};
     TetSolver reference = common::MakePushedRailSolver(converged).Get();
     for (TetSolver& rail : rails)
         (void)rail.Prepare(common::cPushedRailStep);
     (void)reference.Prepare(common::cPushedRailStep);
     const std::vector<int> struck = common::PushedRailNodes(reference.GetPositions());
     std::vector<double> wall[cSides], cpu[cSides];
-    int newton[cSides] = {0, 0, 0}, cg[cSides] = {0, 0, 0}, refreshes[cSides] = {0, 0, 0};
+    int newton[cSides] = {}, cg[cSides] = {}, refreshes[cSides] = {};
     bool failed = false;
     for (int step = 0; step < common::cPushedRailSteps; ++step)
     {

@@ -279,6 +279,19 @@ std::int64_t NodeBlockCholesky::GetBlockCount() const
     return mFactored ? static_cast<std::int64_t>(mLower.size() + mDiagonalInverse.size()) : 0;
 }
 
+std::int64_t NodeBlockCholesky::GetNumericBlockProducts() const
+{
+    if (!mAnalyzed)
+        return 0;
+    std::int64_t products = 0;
+    for (std::size_t column = 0; column + 1 < mColumnStart.size(); ++column)
+    {
+        const std::int64_t below = mColumnStart[column + 1] - mColumnStart[column];
+        products += below * (below + 1) / 2;
+    }
+    return products;
+}
+
 void NodeBlockCholesky::Solve(std::span<Vec3> ioX) const
 {
     const int n = static_cast<int>(mDiagonalInverse.size());

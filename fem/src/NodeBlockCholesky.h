@@ -62,6 +62,10 @@ public:
     /// Number of 3 x 3 blocks in L, diagonal included (0 without a factor)
     std::int64_t GetBlockCount() const;
 
+    /// 3 x 3 block products of a numeric factorisation of the analysed pattern: the sum over the columns of L
+    /// of c (c + 1) / 2, c the column's blocks below the diagonal (the up-looking factorisation's inner loop
+    /// runs over each column's blocks of the rows before the current one). 0 without an analysis.
+    std::int64_t GetNumericBlockProducts() const;
     /// ioX = A^-1 ioX (#n; no allocation).
     void Solve(std::span<Vec3> ioX) const;
 

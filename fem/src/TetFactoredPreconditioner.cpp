@@ -71,6 +71,18 @@ bool TetFactoredPreconditioner::Refresh(const TetElementPassInput& inInput, std:
     return true;
 }
 
+double TetFactoredPreconditioner::GetRefreshCostInIterations() const
+{
+    if (!mFactored)
+        return 0.0;
+    const double elements = static_cast<double>(mTets.size());
+    const double nodes = static_cast<double>(mRhs.size());
+    const double lower_blocks = static_cast<double>(mCholesky.GetBlockCount()) - nodes;
+    const double refresh = 540.0 * elements + 27.0 * static_cast<double>(mCholesky.GetNumericBlockProducts());
+    const double iteration = 130.0 * elements + 18.0 * (lower_blocks + nodes) + 18.0 * nodes + 20.0 * nodes;
+    return refresh / iteration;
+}
+
 void TetFactoredPreconditioner::SetNodeRotations(std::span<const TetIndices> inTets, std::span<const Quat> inRotations,
                                                  bool inWarp)
 {

@@ -76,6 +76,14 @@ public:
 
     /// True after a successful Precompute()
     bool IsFactored() const { return mFactored; }
+    /// What a Refresh() costs in conjugate-gradient iterations of an implicit solve preconditioned by this
+    /// factor, from operation counts (multiply-adds): the refresh assembles each element's rotated rest
+    /// stiffness (10 blocks of F K0 F^T, 540) and runs the numeric factorisation (27 per block product,
+    /// NodeBlockCholesky::GetNumericBlockProducts); an iteration applies the stiffness to a direction (about
+    /// 130 per element), solves with L and L^T (18 per block of L and per node) and turns the nodes (18 per
+    /// node), with about 20 per node of vector work. Counts, not timings, so that a solver's choices, which
+    /// depend on it, repeat bit for bit on any machine. 0 without a factor.
+    double GetRefreshCostInIterations() const;
     /// 3 x 3 blocks of the Cholesky factor L (0 without one)
     std::int64_t GetFactorBlockCount() const { return mCholesky.GetBlockCount(); }
 

@@ -895,6 +895,15 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         // longer fit stops after mFactorRefreshIterations, or as soon as its rate says it would need more,
         // refreshes the factor at this linearisation's frames and goes on from where it stopped.
         std::fill(scratch.mDeltaV.begin(), scratch.mDeltaV.end(), Vec3::Zero());
+        // A factor whose frames cost a few iterations per solve, too few to stop one, is refreshed once the
+        // iterations it has cost add up to a refresh (mFactorRefreshByCost).
+        if (refreshing && factored != nullptr && mSettings.mFactorRefreshByCost &&
+            mRefreshLedger.ShouldRefresh(factored->GetRefreshCostInIterations()) &&
+            !RefreshFactor(*factored, input, mass_scale, stiffness_scale, true))
+        {
+            factored = nullptr;
+            build_jacobi();
+        }
         const int budget = mSettings.mCgMaxIterations;
         const int first_budget = refreshing && factored != nullptr ? std::min(budget, mSettings.mFactorRefreshIterations) : budget;
         const bool may_refresh = first_budget < budget;
@@ -913,7 +922,10 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                 ConjugateGradient(system, preconditioner, scratch.mResidual, mSettings.mCgRelativeTolerance,
                                   budget - cg.mIterations, scratch.mDeltaV, scratch.mCg);
             cg = {cg.mIterations + rest.mIterations, rest.mRelativeResidual, rest.mConverged};
+            mRefreshLedger.CountSolve(rest.mIterations);
         }
+        else if (refreshing && factored != nullptr)
+            mRefreshLedger.CountSolve(cg.mIterations);
         ioResult.mSolverIterations += cg.mIterations;
         ioResult.mSolverResidual = std::max(ioResult.mSolverResidual, cg.mRelativeResidual);
         if (!cg.mConverged)
@@ -971,6 +983,12 @@ double TetSolver::LineSearchMerit(double inDeltaTime, std::span<const Vec3> inSt
     return merit;
 }
 
+double TetSolver::GetFactorRefreshCost() const
+{
+    const TetSolveScratch* scratch = mWorkspace.Find();
+    return scratch != nullptr ? scratch->mFactor.GetRefreshCostInIterations() : 0.0;
+}
+
 bool TetSolver::RefreshesFactor() const
 {
     return mMaterial.GetSettings().mModel == EElasticModel::CorotatedLinear && mSettings.mFactorRefreshIterations > 0 &&
@@ -997,7 +1015,7 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames)
+void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames, bool inByCost)
 {
     // intent: the first change in a step keeps the step's start frames, which a restored step gets back
     if (!mFactorFramesSaved)
@@ -1006,12 +1024,13 @@ void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames)
         mFactorFramesSaved = true;
     }
     mFactorFrames.assign(inFrames.begin(), inFrames.end());
+    mRefreshLedger.FramesSet(inByCost);
 }
 
 bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
-                              double inMassScale, double inStiffnessScale)
+                              double inMassScale, double inStiffnessScale, bool inByCost)
 {
-    KeepFactorFrames(mRotations);
+    KeepFactorFrames(mRotations, inByCost);
     if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
     {
         ++mFactorRefreshCount;
@@ -1056,6 +1075,7 @@ public:
         s.mSavedVelocities = s.mVelocities;
         s.mSavedRotations = s.mRotations;
         s.mFactorFramesSaved = false;
+        s.mSavedRefreshLedger = s.mRefreshLedger;
         if (ChangesShape())
             s.SaveShape(s.mSavedShape);
         s.mPassEnergyValid = false;
@@ -1072,6 +1092,7 @@ public:
         s.mPositions = s.mSavedPositions;
         s.mVelocities = s.mSavedVelocities;
         s.mRotations = s.mSavedRotations;
+        s.mRefreshLedger = s.mSavedRefreshLedger;
         if (s.mFactorFramesSaved)
         {
             // intent: the factor goes back to the step's start frames too, so the next attempt or step

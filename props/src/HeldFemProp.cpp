@@ -35,6 +35,7 @@ fem::TetSolverSettings HeldPropSolverSettings()
     fem::TetSolverSettings solver;
     solver.mGravity = Vec3::Zero();
     solver.mFactorRefreshIterations = 6;
+    solver.mFactorRefreshByCost = true;
     return solver;
 }
 

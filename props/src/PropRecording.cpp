@@ -31,6 +31,10 @@ constexpr std::uint32_t cContactSpreadTag = 0x44525053u;
 // refresh settings and the spread only when it is finite: a record without it was made before the Newton test
 // had that bound, and replays with none.
 constexpr std::uint32_t cCrackToleranceTag = 0x4B435243u;
+// Marks the factor refreshed by cost (TetSolverSettings::mFactorRefreshByCost, "RCST", then 1.0 as a double
+// so that every optional setting but the ground takes 12 bytes), written after the crack stress tolerance
+// only when on: a record without it was made before that policy, and replays without it.
+constexpr std::uint32_t cRefreshByCostTag = 0x54534352u;
 // Marks a ground (TetSolverSettings::mGround, "GRND": normal, offset, friction), written last and only when
 // the prop has one: a record without it replays with none, as it ran.
 constexpr std::uint32_t cGroundTag = 0x444E5247u;
@@ -278,6 +282,11 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
         writer.WriteU32(cCrackToleranceTag);
         writer.WriteDouble(inSetup.mSettings.mCrackStressTolerance);
     }
+    if (inSetup.mSettings.mFactorRefreshByCost)
+    {
+        writer.WriteU32(cRefreshByCostTag);
+        writer.WriteDouble(1.0);
+    }
     if (const fem::GroundPlane& ground = inSetup.mSettings.mGround; ground.mEnabled)
     {
         writer.WriteU32(cGroundTag);
@@ -326,7 +335,9 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     // infinity replay it as it ran
     setup.mSettings.mFactorRefreshIterations = 0;
     setup.mSettings.mCrackStressTolerance = std::numeric_limits<double>::infinity();
-    if (!reader.Failed() && reader.Remaining() >= 8 && reader.Remaining() <= 8 + 12 + 12 + 4 + cGroundBytes)
+    setup.mSettings.mFactorRefreshByCost = false;
+    if (!reader.Failed() && reader.Remaining() >= 8 &&
+        reader.Remaining() <= 8 + 12 + 12 + 12 + 4 + cGroundBytes)
     {
         if (reader.ReadU32() != cRefreshSettingsTag)
             return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
@@ -334,9 +345,9 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
         if (refresh > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
             return MakeError(EError::CorruptData, "prop record: factor refresh iterations out of range");
         setup.mSettings.mFactorRefreshIterations = static_cast<int>(refresh);
-        // intent: the optional tagged settings in the order they are written (each 12 bytes, the ground
-        // 44 and last). A record cut by exactly their bytes reads as one without them; the replay file's CRC
-        // per record is what catches such a cut.
+        // intent: the optional tagged settings in the order they are written (spread, crack tolerance,
+        // refresh by cost: each 12 bytes; the ground 44 and last). A record cut by exactly their bytes reads
+        // as one without them; the replay file's CRC per record is what catches such a cut.
         std::uint32_t last_tag = cRefreshSettingsTag;
         while (!reader.Failed() && reader.Remaining() >= 12 && last_tag != cGroundTag)
         {
@@ -359,11 +370,18 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
                     return MakeError(EError::CorruptData, "prop record: contact spread radius out of range");
                 setup.mContactSpread = value;
             }
-            else if (tag == cCrackToleranceTag && last_tag != cCrackToleranceTag)
+            else if (tag == cCrackToleranceTag && last_tag != cCrackToleranceTag &&
+                     last_tag != cRefreshByCostTag)
             {
                 if (!std::isfinite(value) || value <= 0.0)
                     return MakeError(EError::CorruptData, "prop record: crack stress tolerance out of range");
                 setup.mSettings.mCrackStressTolerance = value;
+            }
+            else if (tag == cRefreshByCostTag && last_tag != cRefreshByCostTag)
+            {
+                if (value != 1.0)
+                    return MakeError(EError::CorruptData, "prop record: factor refresh by cost is corrupt");
+                setup.mSettings.mFactorRefreshByCost = true;
             }
             else
                 return MakeError(EError::CorruptData, "prop record: unknown trailing settings");

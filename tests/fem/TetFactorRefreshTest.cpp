@@ -188,6 +188,35 @@ TEST_CASE("NodeBlockCholesky: Refactor of the same pattern is bitwise a fresh Fa
     }
 }
 
+TEST_CASE("NodeBlockCholesky: the numeric factorisation's block products are counted from the pattern",
+          "[fem]")
+{
+    // A chain of 50 nodes factors without fill (one block below each diagonal but the last's): 49. Twelve
+    // nodes all coupled: column c from the end holds c blocks below its diagonal, sum of c (c + 1) / 2 over
+    // c = 0..11 = 13 * 12 * 11 / 6 = 286.
+    const auto tridiagonal = [](int inNodes)
+    {
+        std::vector<NodeBlock> blocks;
+        for (int node = 0; node < inNodes; ++node)
+        {
+            blocks.push_back({node, node, 4.0 * Mat3::Identity()});
+            if (node > 0)
+                blocks.push_back({node, node - 1, -Mat3::Identity()});
+        }
+        return blocks;
+    };
+    std::vector<NodeBlock> dense;
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j <= i; ++j)
+            dense.push_back({i, j, Mat3((i == j ? 24.0 : 1.0) * Mat3::Identity())});
+    NodeBlockCholesky chain, full, none;
+    REQUIRE(chain.Factor(50, tridiagonal(50)));
+    REQUIRE(full.Factor(12, dense));
+    CHECK(chain.GetNumericBlockProducts() == 49);
+    CHECK(full.GetNumericBlockProducts() == 286);
+    CHECK(none.GetNumericBlockProducts() == 0);
+}
+
 TEST_CASE("Rest system at element frames: the assembled blocks apply the corotated implicit operator of a deformed mesh exactly",
           "[fem]")
 {
@@ -479,4 +508,69 @@ TEST_CASE("Factor refresh: a crack factors a cracking rail at its current frames
     INFO("step " << step << " after the crack: " << after.mSolverIterations << " CG iterations");
     CHECK(rail.GetFactorizationCount() == factorizations + 1);
     CHECK(after.mSolverIterations == 1);
+}
+
+TEST_CASE(
+    "Factor refresh by cost: a rail settling after its push refreshes once its extra iterations add up to "
+    "a refresh, and solves for less",
+    "[fem]")
+{
+    // The held props' setting (refresh after 6) with and without the refresh by cost, stepped alike: the
+    // push, then the rail swinging back and settling at other frames than those of its last refresh.
+    TetSolverSettings after_six;
+    after_six.mFactorRefreshIterations = 6;
+    TetSolverSettings by_cost = after_six;
+    by_cost.mFactorRefreshByCost = true;
+    TetSolver plain = StruckRail(after_six);
+    TetSolver costed = StruckRail(by_cost);
+    int plain_iterations = 0, costed_iterations = 0, plain_tail = 0, costed_tail = 0;
+    constexpr int cSteps = 48, cTailStart = 24;
+    for (int step = 0; step < cSteps; ++step)
+    {
+        REQUIRE(Push(plain, step));
+        REQUIRE(Push(costed, step));
+        const TetStepResult a = plain.Step(1.0 / 240.0).Get();
+        const TetStepResult b = costed.Step(1.0 / 240.0).Get();
+        CHECK_FALSE(HasEvent(b.mEvents, ETetStepEvent::SolverNotConverged));
+        plain_iterations += a.mSolverIterations;
+        costed_iterations += b.mSolverIterations;
+        plain_tail += step >= cTailStart ? a.mSolverIterations : 0;
+        costed_tail += step >= cTailStart ? b.mSolverIterations : 0;
+    }
+    const double cost = costed.GetFactorRefreshCost();
+    REQUIRE(cost > 1.0);
+    const double plain_work = plain_iterations + cost * plain.GetFactorRefreshCount();
+    const double costed_work = costed_iterations + cost * costed.GetFactorRefreshCount();
+    double displacement = 0.0;
+    for (std::size_t node = 0; node < plain.GetPositions().size(); ++node)
+        displacement = std::max(
+            displacement, (plain.GetPositions()[node] - plain.GetMesh().GetRestPositions()[node]).norm());
+    INFO("a refresh costs " << cost << " iterations; CG iterations over " << cSteps << " steps: after 6 "
+                            << plain_iterations << " (" << plain_tail << " in the late half, "
+                            << plain.GetFactorRefreshCount() << " refreshes), by cost " << costed_iterations
+                            << " (" << costed_tail << ", " << costed.GetFactorRefreshCount()
+                            << " refreshes); work " << plain_work << " against " << costed_work
+                            << " iterations");
+    CHECK(costed.GetFactorRefreshCount() > plain.GetFactorRefreshCount());
+    CHECK(costed_tail < plain_tail);
+    CHECK(costed_work < plain_work);
+    // A preconditioner changes the cost of the solves, not their answer (the Newton tolerance sets that).
+    CHECK(MaxDifference(plain.GetPositions(), costed.GetPositions()) <= 1.0e-3 * displacement);
+}
+
+TEST_CASE("Factor refresh by cost: a copy made in the middle of an account continues bit for bit", "[fem]")
+{
+    // The account of extra iterations is solver state: a copy that started a new one would refresh at
+    // another step.
+    TetSolverSettings settings;
+    settings.mFactorRefreshIterations = 6;
+    settings.mFactorRefreshByCost = true;
+    TetSolver rail = StruckRail(settings);
+    for (int step = 0; step < 3; ++step)
+    {
+        REQUIRE(Push(rail, step));
+        REQUIRE(rail.Step(1.0 / 240.0).IsValid());
+    }
+    TetSolver copy = rail;
+    CHECK(ContinueAlike(rail, copy));
 }

@@ -4,6 +4,7 @@
 set(CRUMPLE_FEM_TET_TESTS
     fem/AllocationCounter.cpp
     fem/ConjugateGradientTest.cpp
+    fem/FactorRefreshLedgerTest.cpp
     fem/FemInputBoundsTest.cpp
     fem/FemMaterialTest.cpp
     fem/PolarRotationTest.cpp

@@ -606,6 +606,47 @@ TEST_CASE("Props in a recording: the crack stress bound is recorded, a record wr
     }
 }
 
+TEST_CASE("Props in a recording: the factor refresh by cost is recorded, a record written before it replays "
+          "without it",
+          "[props][replay]")
+{
+    common::WorldFixture fixture;
+    PropSetup setup = MakePropSetup(fixture.mWall, BrittlePanel()).Get();
+    setup.mSettings.mFactorRefreshIterations = 6;
+    const auto by_cost = [](const std::vector<std::byte>& inBytes)
+    { return DecodePropSetup(inBytes).Get().mSettings.mFactorRefreshByCost; };
+
+    // Off writes nothing (the bytes of a prop before the policy existed), and such a record replays without
+    // it.
+    setup.mSettings.mFactorRefreshByCost = false;
+    const std::vector<std::byte> off = EncodePropSetup(setup).Get();
+    CHECK_FALSE(by_cost(off));
+    setup.mSettings.mFactorRefreshByCost = true;
+    const std::vector<std::byte> on = EncodePropSetup(setup).Get();
+    CHECK(on.size() == off.size() + 12);
+    CHECK(std::equal(off.begin(), off.end(), on.begin()));
+    CHECK(by_cost(on));
+    CHECK(DecodePropSetup(on).Get().mSettings.mCrackStressTolerance == setup.mSettings.mCrackStressTolerance);
+    // Before a ground, in the order they are written.
+    setup.mSettings.mGround.mEnabled = true;
+    setup.mSettings.mGround.mOffset = -1.0;
+    const std::vector<std::byte> grounded = EncodePropSetup(setup).Get();
+    CHECK(by_cost(grounded));
+    CHECK(DecodePropSetup(grounded).Get().mSettings.mGround.mEnabled);
+
+    // Refused: a value other than 1, the tag given twice, the crack stress bound after it (out of order).
+    std::vector<std::byte> two = on;
+    two[two.size() - 1] = std::byte{0x40}; // 2.0
+    CHECK(DecodePropSetup(two).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> twice = on;
+    twice.insert(twice.end(), on.end() - 12, on.end());
+    CHECK(DecodePropSetup(twice).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> swapped(on.begin(), on.end() - 24);
+    swapped.insert(swapped.end(), on.end() - 12, on.end());
+    swapped.insert(swapped.end(), on.end() - 24, on.end() - 12);
+    CHECK(DecodePropSetup(swapped).GetError().mCode == EError::CorruptData);
+}
+
 TEST_CASE(
     "Props in a recording: a prop on a ground replays bit for bit, without a ground the record is as before",
     "[props][replay]")

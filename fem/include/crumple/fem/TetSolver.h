@@ -6,16 +6,17 @@
 
 #include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
+#include <crumple/fem/FactorRefreshLedger.h>
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/FractureLinks.h>
+#include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/GroupPrincipalStress.h>
-#include <crumple/fem/TetFragment.h>
 #include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetFragment.h>
 #include <crumple/fem/TetLinearization.h>
 #include <crumple/fem/TetMesh.h>
 #include <crumple/fem/TetSolverSettings.h>
 #include <crumple/fem/TetSolverWorkspace.h>
-#include <crumple/fem/FractureTopology.h>
 #include <crumple/fem/TetStepResult.h>
 #include <crumple/fem/TetStepper.h>
 
@@ -219,12 +220,17 @@ public:
     /// or step length (and after a step that refreshed the factor and was restored, or a refresh that
     /// failed); a cost counter like GetElementWorkCount()
     int GetFactorizationCount() const { return mFactorizationCount; }
-    /// Refreshes of the factor at the current element frames (TetSolverSettings::mFactorRefreshIterations):
-    /// successful numeric refactorisations within a solve whose frames had drifted; a cost counter like
+    /// Refreshes of the factor at the current element frames (TetSolverSettings::mFactorRefreshIterations,
+    /// mFactorRefreshByCost): successful numeric refactorisations within or before a solve whose frames had
+    /// drifted; a cost counter like
     /// GetFactorizationCount()
     int GetFactorRefreshCount() const { return mFactorRefreshCount; }
+    /// What a refresh of the factored system held now costs, in conjugate-gradient iterations of an implicit
+    /// solve (operation counts: TetFactoredPreconditioner::GetRefreshCostInIterations; what
+    /// mFactorRefreshByCost weighs extra iterations against). 0 without a factor.
+    double GetFactorRefreshCost() const;
 
-private:
+  private:
     // Sub-steps of a symplectic step of inDeltaTime, refused beyond mMaxSubSteps.
     Result<int> SymplecticSubSteps(double inDeltaTime) const;
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
@@ -296,12 +302,13 @@ private:
     // (round-off of a merit of large cancelling terms).
     static constexpr int cMaxLineSearchHalvings = 4;
     static constexpr double cLineSearchSlack = 1.0e-12;
-    // mFactorFrames = inFrames, the step's start frames kept for RestoreStepStart first.
-    void KeepFactorFrames(std::span<const Quat> inFrames);
+    // mFactorFrames = inFrames, the step's start frames kept for RestoreStepStart first; inByCost: a refresh
+    // mRefreshLedger asked for (its next solve judges it).
+    void KeepFactorFrames(std::span<const Quat> inFrames, bool inByCost = false);
     // ioFactor refactored at the current element frames mRotations (the rest factor should that fail); false
-    // when both failed and ioFactor holds no factor.
-    bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput, double inMassScale,
-                       double inStiffnessScale);
+    // when both failed and ioFactor holds no factor. inByCost: asked for by mRefreshLedger.
+    bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
+                       double inMassScale, double inStiffnessScale, bool inByCost = false);
     // Gravity plus external force on each free node, zero on anchored ones (N).
     void LoadForces(std::vector<Vec3>& outForces) const;
     // Kinetic, elastic and external-potential energy and the content C at the current state; updates the
@@ -382,6 +389,10 @@ private:
     std::vector<Quat> mFactorFrames;
     std::vector<Quat> mSavedFactorFrames;
     bool mFactorFramesSaved = false;
+    // What the factor's frames have cost since they were set (mFactorRefreshByCost); solver state like the
+    // frames, saved at a step's start.
+    FactorRefreshLedger mRefreshLedger;
+    FactorRefreshLedger mSavedRefreshLedger;
     // #T, 1 for an element with a free corner (the passes skip the others: TetElementPassInput::
     // mElementActive), empty while every element has one; rebuilt by PassInput() after anchors or the
     // connectivity change. mActiveElementCount counts the evaluated ones (GetElementWorkCount()).

@@ -28,8 +28,10 @@ public:
 
     /// The scratch, created on first access
     TetSolveScratch& Get();
+    /// The scratch, or nullptr before its first access
+    const TetSolveScratch* Find() const { return mValue.get(); }
 
-private:
+  private:
     std::unique_ptr<TetSolveScratch> mValue;
 };
 
