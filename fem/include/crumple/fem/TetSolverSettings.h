@@ -66,14 +66,16 @@ struct CRUMPLE_API TetSolverSettings
     /// before every step but the first (a positions readback and 0.2 ms of host work for 17,600 tetrahedra).
     int mFactorRefreshIterations = 0;
     /// With mFactorRefreshIterations > 0: also refresh the factor before a solve once the solves since its
-    /// frames were last set have taken, together, more iterations beyond one each than a refresh costs
+    /// frames were last set have taken, together, more iterations beyond two each than a refresh costs
     /// (TetFactoredPreconditioner::GetRefreshCostInIterations, from operation counts: 5.7 iterations on the
     /// racing fence's 4,000 tetrahedra, 8.4 on a 6,400-tetrahedron rail, measured 5.4 and 10). A factor whose
     /// frames cost a few iterations per solve, too few to stop one (a fence settling after a hit at other
     /// frames than those of its last refresh: 4-5 iterations per step for a hundred steps), is then refreshed
     /// when the iterations it has cost add up to a refresh: rent or buy, at most twice the cost of the best
-    /// choice in hindsight on that part of the solves. False (the default, and recordings made before it):
-    /// only a long solve refreshes.
+    /// choice in hindsight on that part of the solves; a refresh that bought nothing (pieces turning too fast
+    /// between solves for any frames to fit: FactorRefreshLedger) makes the next wait longer. False (the
+    /// default, and recordings made before it): only a long solve refreshes. The GPU solver, which has no
+    /// factor, ignores it.
     bool mFactorRefreshByCost = false;
     /// Implicit Euler: at most this many Newton iterations (linear solves) per step, >= 1. The first is the
     /// classic one-solve linearised step; further ones re-evaluate forces and rotations at the new positions,
