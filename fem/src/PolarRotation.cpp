@@ -16,6 +16,12 @@ namespace crumple::fem
 // happens.
 Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations)
 {
+    Mat3 rotation;
+    return PolarRotation(inF, inWarmStart, rotation, inMaxIterations);
+}
+
+Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, Mat3& outRotation, int inMaxIterations)
+{
     // Converged when the update angle is below this (rad); the corotated strain sym(R^T F) - I is insensitive
     // to a rotation error to first order, so this is far below anything a force can see.
     constexpr double cAngleTolerance = 1.0e-12;
@@ -25,10 +31,14 @@ Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations
     constexpr double cCurvatureFloor = 1.0e-9;
 
     Quat q = inWarmStart.normalized();
+    // intent: the matrix of q as it stands; false once q moved past the last one computed
+    bool matrix_current = false;
     for (int iteration = 0; iteration < inMaxIterations; ++iteration)
     {
         // Gradient and Hessian of tr(R^T F) in the local frame of the current iterate.
-        const Mat3 b = q.toRotationMatrix().transpose() * inF;
+        outRotation = q.toRotationMatrix();
+        matrix_current = true;
+        const Mat3 b = outRotation.transpose() * inF;
         const Vec3 g(b(2, 1) - b(1, 2), b(0, 2) - b(2, 0), b(1, 0) - b(0, 1));
         const double trace = b(0, 0) + b(1, 1) + b(2, 2);
         const double h00 = trace - b(0, 0), h11 = trace - b(1, 1), h22 = trace - b(2, 2);
@@ -56,11 +66,14 @@ Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations
         // O(|omega|^3), which keeps Newton's quadratic convergence without trigonometry.
         q = q * Quat(1.0, 0.5 * omega[0], 0.5 * omega[1], 0.5 * omega[2]);
         q.normalize();
+        matrix_current = false;
 
         // A Newton step this small leaves an error of order angle^2: done without another evaluation.
         if (newton && angle < cNewtonFinish)
             break;
     }
+    if (!matrix_current)
+        outRotation = q.toRotationMatrix();
     return q;
 }
 

@@ -143,8 +143,7 @@ ElementFrame CurrentFrame(const TetElementPassInput& inInput, std::span<const Ve
                        Mat3::Identity()};
     if (inInput.mModel == EElasticModel::CorotatedLinear)
     {
-        ioRotations[inTet] = PolarRotation(frame.mF, ioRotations[inTet]);
-        frame.mRotation = ioRotations[inTet].toRotationMatrix();
+        ioRotations[inTet] = PolarRotation(frame.mF, ioRotations[inTet], frame.mRotation);
     }
     return frame;
 }
@@ -173,8 +172,8 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
             // explicit runs (crash barriers) are chaotic enough that round-off would move their outcome.
             const Mat3 f = InlineDeformationGradient(inPositions[n[0]], inPositions[n[1]], inPositions[n[2]],
                                                      inPositions[n[3]], rest.mRestEdgeInverse);
-            ioRotations[tet] = PolarRotation(f, ioRotations[tet]);
-            const Mat3 r = ioRotations[tet].toRotationMatrix();
+            Mat3 r;
+            ioRotations[tet] = PolarRotation(f, ioRotations[tet], r);
             const Mat3 unrotated = r.transpose() * f;
             Mat3 strain = 0.5 * (unrotated + unrotated.transpose()) - Mat3::Identity();
             if (!inInput.mPlasticStrains.empty())

@@ -25,4 +25,10 @@ namespace crumple::fem
 /// @return R as a unit quaternion
 CRUMPLE_API Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, int inMaxIterations = 40);
 
+/// PolarRotation, and R as a matrix in outRotation: the returned quaternion's toRotationMatrix(), bit for
+/// bit, taken from the last iteration where that ended without an update (most calls from a warm start), so
+/// an element pass that needs both does not turn the quaternion into a matrix twice.
+CRUMPLE_API Quat PolarRotation(const Mat3& inF, const Quat& inWarmStart, Mat3& outRotation,
+                               int inMaxIterations = 40);
+
 } // namespace crumple::fem
