@@ -153,7 +153,7 @@ ElementFrame CurrentFrame(const TetElementPassInput& inInput, std::span<const Ve
 void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
                       std::span<const Vec3> inVelocities, double inStiffnessDamping,
                       std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
-                      std::span<Vec3> outForces, double* outElasticEnergy)
+                      std::span<Vec3> outForces, double* outElasticEnergy, std::span<Mat3> outCauchyStress)
 {
     const Matrix6& c = *inInput.mMaterialMatrix;
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
@@ -182,6 +182,8 @@ void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> 
             if (with_energy)
                 outEnergy = rest.mRestVolume * (0.5 * stress.cwiseProduct(strain).sum()); // V0 sigma : e / 2
             Mat3 p = r * stress;
+            if (!outCauchyStress.empty())
+                outCauchyStress[tet] = p * r.transpose(); // R sigma R^T (each element written by one piece)
             if (viscous)
             {
                 const Mat3 f_dot = InlineDeformationGradient(inVelocities[n[0]], inVelocities[n[1]],
@@ -326,7 +328,7 @@ int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inP
 }
 
 void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
-                     std::span<Quat> ioRotations, std::span<Mat3> outStress)
+                     std::span<Quat> ioRotations, std::span<Mat3> outStress, bool inSkippedOnly)
 {
     const Matrix6& c = *inInput.mMaterialMatrix;
     const bool corotated = inInput.mModel == EElasticModel::CorotatedLinear;
@@ -334,6 +336,8 @@ void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> i
     // elements (once per step, for breakable materials only)
     for (std::size_t tet = 0; tet < inInput.mTets.size(); ++tet)
     {
+        if (inSkippedOnly && inInput.IsActive(tet))
+            continue;
         const auto [f, r] = CurrentFrame(inInput, inPositions, tet, ioRotations);
         if (corotated)
         {

@@ -60,10 +60,16 @@ struct TetElementPassInput
 /// @param[out] outForces          #N (N), overwritten
 /// @param[out] outElasticEnergy   when not null, the elastic energy sum V0 psi(F) at inPositions (J), as
 ///                                TetElasticEnergy computes it, from the same F and rotations (saves a pass)
+/// @param[out] outCauchyStress    #T or empty; corotated model only: each evaluated element's Cauchy stress
+///                                R C:(eps - eps_p) R^T (Pa), as TetCauchyStress gives it, from this pass's
+///                                F and rotations (an implicit step's last pass is at its final positions,
+///                                where fracture judges the stress: saves a pass); the skipped elements' are
+///                                left as they were
 void TetElasticForces(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
                       std::span<const Vec3> inVelocities, double inStiffnessDamping,
                       std::span<Quat> ioRotations, std::span<TetLinearization> outLinearization,
-                      std::span<Vec3> outForces, double* outElasticEnergy = nullptr);
+                      std::span<Vec3> outForces, double* outElasticEnergy = nullptr,
+                      std::span<Mat3> outCauchyStress = {});
 
 /// Product of the linearised stiffness K (= -df/dx) with a direction: outProduct = K inDirection.
 /// @param[in]  inLinearization  #T from TetElasticForces
@@ -95,9 +101,10 @@ int TetPlasticFlow(const TetElementPassInput& inInput, std::span<const Vec3> inP
 /// F S F^T / det F for St. Venant-Kirchhoff. Updates the corotated frames (warm-started).
 /// @param[in]     inPositions  #N (m)
 /// @param[in,out] ioRotations  #T element rotations (unit quaternions)
-/// @param[out]    outStress    #T symmetric 3 by 3, overwritten
+/// @param[out]    outStress    #T symmetric 3 by 3, overwritten (with inSkippedOnly, only the elements the
+///                             other passes skip: the rest came from TetElasticForces' outCauchyStress)
 void TetCauchyStress(const TetElementPassInput& inInput, std::span<const Vec3> inPositions,
-                     std::span<Quat> ioRotations, std::span<Mat3> outStress);
+                     std::span<Quat> ioRotations, std::span<Mat3> outStress, bool inSkippedOnly = false);
 
 /// Elastic energy sum V0 psi(F) (J); updates the corotated frames (warm-started) when ioRotations is
 /// writable.

@@ -328,9 +328,13 @@ int TetSolver::FlowPlastically(double inDeltaTime)
 int TetSolver::Fracture()
 {
     // Rankine's criterion on every group's mean stress, then node duplication along the opened links.
+    // intent: where the implicit step's last force pass was at these positions (no plastic flow or ground
+    // move since), its stresses stand, and only the elements it skipped are evaluated here
     const TetElementPassInput input = PassInput();
-    TetCauchyStress(input, mPositions, mRotations, mElementStress);
-    mElementWork += mRest.size(); // every element: see TetCauchyStress
+    const bool from_pass = mStressFromPass && mForcesCached;
+    mStressFromPass = false;
+    TetCauchyStress(input, mPositions, mRotations, mElementStress, from_pass);
+    mElementWork += from_pass ? mRest.size() - mActiveElementCount : mRest.size(); // see TetCauchyStress
     const Status judged = GroupPrincipalStress(mLinks, mElementStress, mRest, mPrincipal);
     CRUMPLE_ASSERT(judged.IsValid(), "the solver's own groups were refused");
     if (!judged.IsValid())
@@ -685,6 +689,13 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     mStartPositions = mPositions;
     mStartVelocities = mVelocities;
     const std::vector<Vec3>& x0 = mStartPositions;
+    // intent: a breakable corotated solver's passes also give the elements' Cauchy stress, and the last one
+    // is at the step's final positions, where Fracture() judges it
+    const std::span<Mat3> pass_stress =
+        mMaterial.IsBreakable() && mMaterial.GetSettings().mModel == EElasticModel::CorotatedLinear
+            ? std::span<Mat3>(mElementStress)
+            : std::span<Mat3>{};
+    mStressFromPass = false;
     const std::vector<Vec3>& v0 = mStartVelocities;
     // The nodes the ground holds through this step, their normal velocity in the iterate set to end it on the
     // ground, if it has one (the filter below is on for the whole step with one: nodes may join in a Newton
@@ -792,8 +803,10 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         const bool cached = first && mForcesCached && mForcePositions == mPositions;
         if (!cached)
         {
-            TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy);
+            TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces, &mPassEnergy,
+                             pass_stress);
             mElementWork += mActiveElementCount;
+            mStressFromPass = !pass_stress.empty();
         }
         mPassEnergyValid = true;
         // Backtracking: where the update raised the merit, halve it (at most cMaxLineSearchHalvings times)
@@ -815,7 +828,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                         mPositions[node] = x0[node] + h * mVelocities[node];
                     }
                 TetElasticForces(input, mPositions, {}, 0.0, mRotations, mLinearization, mForces,
-                                 &mPassEnergy);
+                                 &mPassEnergy, pass_stress);
                 mElementWork += mActiveElementCount;
                 ++ioResult.mLineSearchHalvings;
                 merit = LineSearchMerit(h, v0);

@@ -345,6 +345,9 @@ public:
     FractureLinks mLinks;                    // empty when unbreakable
     std::vector<std::uint8_t> mBroken;       // #L
     std::vector<Mat3> mElementStress;        // #T scratch of the fracture pass
+    // mElementStress holds the Cauchy stress of the evaluated elements from this implicit step's last force
+    // pass (breakable, corotated): Fracture() takes it while that pass's positions stand (mForcesCached)
+    bool mStressFromPass = false;
     std::vector<PrincipalStress> mPrincipal; // #G
     double mCrackSafeEnergy = std::numeric_limits<double>::infinity(); // J, GetCrackSafeEnergy()
     double mStableTimeStep = 0.0;
