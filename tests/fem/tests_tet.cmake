@@ -21,6 +21,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetGroundTest.cpp
     fem/TetMeshTest.cpp
     fem/TetNodalForcesTest.cpp
+    fem/TetPassStressTest.cpp
     fem/TetPatchTest.cpp
     fem/TetSleepTest.cpp
     fem/TetSolverTest.cpp
