@@ -449,7 +449,10 @@ Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
     if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
         return status;
     if (FixNode(inNode, inFixed))
+    {
         FollowFramesAfterNewSystem();
+        mPassEnergyValid = false; // the passes skip other elements now
+    }
     InputChanged();
     return Status::Ok();
 }
@@ -466,7 +469,10 @@ Status TetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
     for (int node : inNodes)
         changed = FixNode(node, inFixed) || changed;
     if (changed)
+    {
         FollowFramesAfterNewSystem();
+        mPassEnergyValid = false; // the passes skip other elements now
+    }
     InputChanged();
     return Status::Ok();
 }
@@ -532,6 +538,7 @@ Status TetSolver::SetPositions(std::span<const Vec3> inPositions)
     if (!AllWithinStateBound(inPositions))
         return MakeError(EError::OutOfRange, "TetSolver::SetPositions: a position beyond 1e100 m (cMaxStateMagnitude)");
     std::copy(inPositions.begin(), inPositions.end(), mPositions.begin());
+    mPassEnergyValid = false;
     InputChanged();
     return Status::Ok();
 }
@@ -1080,7 +1087,9 @@ public:
         TetSolver& s = mSolver;
         if (!s.mReferenceValid)
         {
-            const EnergyParts parts = s.MeasureEnergy();
+            // intent: after an impulse or a force (the inputs of a hit) the elastic energy of the positions
+            // is the last pass's, which nothing has moved since: no pass of its own
+            const EnergyParts parts = s.MeasuredOrPassEnergy();
             s.mReferenceEnergy = parts.mKinetic + parts.mElastic + parts.mPotential;
             s.mReferenceValid = true;
         }
@@ -1328,6 +1337,7 @@ Result<TetStaticResult> TetSolver::SolveStatic(int inMaxIterations, double inRel
             // Converged: at rest in equilibrium.
             for (Vec3& velocity : mVelocities)
                 velocity.setZero();
+            mPassEnergyValid = false; // the nodes moved since the last step's pass
             InputChanged();
             return result;
         }

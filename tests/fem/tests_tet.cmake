@@ -22,6 +22,7 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetMeshTest.cpp
     fem/TetNodalForcesTest.cpp
     fem/TetPassStressTest.cpp
+    fem/TetReferenceEnergyTest.cpp
     fem/TetPatchTest.cpp
     fem/TetSleepTest.cpp
     fem/TetSolverTest.cpp

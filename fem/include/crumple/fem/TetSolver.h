@@ -356,8 +356,9 @@ public:
     int mStepBrokenLinks = 0;     // links broken by the current step attempt
     ShapeState mSavedShape;
 
-    // Elastic energy of the last force pass of StepImplicit (J), valid while the positions and shape are those
-    // it saw.
+    // Elastic energy of the last force pass of StepImplicit (J), valid while the positions and shape are
+    // those it saw: SetPositions, a change of anchors and a static solve clear it; impulses and forces, which
+    // leave the positions, do not (SaveStepStart's reference energy after a hit takes it).
     double mPassEnergy = 0.0;
     bool mPassEnergyValid = false;
     // mForces, mLinearization, mRotations and mPassEnergy are those of mForcePositions (the end of the last
