@@ -10,6 +10,7 @@
 #include "DrawVec3.h"
 #include "NodeBlockCholesky.h"
 #include "PushedRail.h"
+#include "SmallTetBlock.h"
 #include "TetElementPass.h"
 #include "TetFactoredPreconditioner.h"
 #include "TetRestSystemBlocks.h"
@@ -220,10 +221,7 @@ TEST_CASE("NodeBlockCholesky: the numeric factorisation's block products are cou
 TEST_CASE("Rest system at element frames: the assembled blocks apply the corotated implicit operator of a deformed mesh exactly",
           "[fem]")
 {
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.4, 0.2);
-    grid.mCellCount = {3, 2, 1};
-    const TetMesh mesh = TetGrid(grid).Get();
+    const TetMesh mesh = test::SmallTetBlock();
     const std::vector<TetElementRest> rest = TetRestData(mesh);
     FemMaterialSettings settings;
     settings.mYoungsModulus = 2.0e11;

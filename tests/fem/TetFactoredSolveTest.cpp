@@ -7,6 +7,7 @@
 #include "CantileverScene.h"
 #include "DrawVec3.h"
 #include "NodeBlockCholesky.h"
+#include "SmallTetBlock.h"
 #include "TetElementPass.h"
 #include "TetRestSystemBlocks.h"
 
@@ -96,10 +97,7 @@ TetSolver HitBrittleWall(double inMassDamping)
 TEST_CASE("Rest system: the assembled a M + b K0 blocks apply exactly the matrix-free implicit operator at rest",
           "[fem]")
 {
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.4, 0.2);
-    grid.mCellCount = {3, 2, 1};
-    const TetMesh mesh = TetGrid(grid).Get();
+    const TetMesh mesh = test::SmallTetBlock();
     const std::vector<TetElementRest> rest = TetRestData(mesh);
     std::mt19937 random(7u);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -148,10 +146,7 @@ TEST_CASE("Rest system: the assembled a M + b K0 blocks apply exactly the matrix
 TEST_CASE("Rest system: kept element stiffness gives the blocks bit for bit, and follows a new rest shape and material",
           "[fem]")
 {
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.4, 0.2);
-    grid.mCellCount = {3, 2, 1};
-    const TetMesh mesh = TetGrid(grid).Get();
+    const TetMesh mesh = test::SmallTetBlock();
     std::vector<TetElementRest> rest = TetRestData(mesh);
     FemMaterialSettings settings;
     settings.mYoungsModulus = 2.0e11;

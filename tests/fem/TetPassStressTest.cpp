@@ -4,11 +4,11 @@
 // against the stress pass it replaces (TetCauchyStress), and the stress pass limited to the elements the
 // force passes skip.
 #include "DrawVec3.h"
+#include "SmallTetBlock.h"
 #include "TetElementPass.h"
 
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/TetElementRest.h>
-#include <crumple/fem/TetGrid.h>
 
 #include <catch2/catch.hpp>
 
@@ -24,10 +24,7 @@ TEST_CASE("Pass stress: the force pass's Cauchy stress is the stress pass's at t
           "elements left to it",
           "[fem]")
 {
-    TetGridSettings grid;
-    grid.mSize = Vec3(0.6, 0.4, 0.2);
-    grid.mCellCount = {3, 2, 1};
-    const TetMesh mesh = TetGrid(grid).Get();
+    const TetMesh mesh = test::SmallTetBlock();
     const std::vector<TetElementRest> rest = TetRestData(mesh);
     const FemMaterial material = FemMaterial::Create({}).Get();
     const std::size_t tets = rest.size();
