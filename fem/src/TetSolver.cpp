@@ -1115,6 +1115,7 @@ public:
         s.mVelocities = s.mSavedVelocities;
         s.mRotations = s.mSavedRotations;
         s.mRefreshLedger = s.mSavedRefreshLedger;
+        s.mPassEnergyValid = false; // the attempt's passes saw the positions it threw away
         if (s.mFactorFramesSaved)
         {
             // intent: the factor goes back to the step's start frames too, so the next attempt or step

@@ -184,6 +184,15 @@ TEST_CASE("Stress: a diverging step is restored bit for bit and reported, splitt
             CHECK(again.Get().mNewtonIterations == 0);
             CHECK(solver.GetPositions() == positions);
             CHECK(solver.GetVelocities() == velocities);
+            // An input that leaves the spin (a negligible impulse): tried again, it diverges again, judged
+            // against the energy of its start, not that of the attempt thrown away (whose last pass saw the
+            // blown-up positions).
+            REQUIRE(solver.ApplyImpulse(StruckCorner(), Vec3(0.0, 1.0e-9, 0.0)).IsValid());
+            const Result<TetStepResult> retried = solver.Step(1.0 / 30.0);
+            REQUIRE(retried.IsValid());
+            CHECK(retried.Get().mNewtonIterations > 0);
+            CHECK(HasEvent(retried.Get().mEvents, ETetStepEvent::Diverged));
+            CHECK(solver.GetPositions() == positions);
             // An input (here an impulse that stops the struck node) and it is tried again, and goes through.
             REQUIRE(solver.ApplyImpulse(StruckCorner(), Vec3(0.0, -1.0e3, 0.0)).IsValid());
             const Result<TetStepResult> tried = solver.Step(1.0 / 30.0);
