@@ -141,6 +141,10 @@ void NodeBlockCholesky::Analyze(int inNodeCount, std::span<const NodeBlock> inBl
     }
     FitAssign(mColumnStart, size + 1, 0);
     std::partial_sum(count.begin(), count.end(), mColumnStart.begin() + 1);
+    // intent: counted once per pattern here, not by every caller that weighs a refactorisation
+    mNumericBlockProducts = 0;
+    for (const int below : count)
+        mNumericBlockProducts += static_cast<std::int64_t>(below) * (below + 1) / 2;
     mAnalyzedNodeCount = inNodeCount;
     mAnalyzed = true;
 }
@@ -277,19 +281,6 @@ bool NodeBlockCholesky::FactorNumeric(int inNodeCount, std::span<const NodeBlock
 std::int64_t NodeBlockCholesky::GetBlockCount() const
 {
     return mFactored ? static_cast<std::int64_t>(mLower.size() + mDiagonalInverse.size()) : 0;
-}
-
-std::int64_t NodeBlockCholesky::GetNumericBlockProducts() const
-{
-    if (!mAnalyzed)
-        return 0;
-    std::int64_t products = 0;
-    for (std::size_t column = 0; column + 1 < mColumnStart.size(); ++column)
-    {
-        const std::int64_t below = mColumnStart[column + 1] - mColumnStart[column];
-        products += below * (below + 1) / 2;
-    }
-    return products;
 }
 
 void NodeBlockCholesky::Solve(std::span<Vec3> ioX) const

@@ -65,7 +65,7 @@ public:
     /// 3 x 3 block products of a numeric factorisation of the analysed pattern: the sum over the columns of L
     /// of c (c + 1) / 2, c the column's blocks below the diagonal (the up-looking factorisation's inner loop
     /// runs over each column's blocks of the rows before the current one). 0 without an analysis.
-    std::int64_t GetNumericBlockProducts() const;
+    std::int64_t GetNumericBlockProducts() const { return mAnalyzed ? mNumericBlockProducts : 0; }
     /// ioX = A^-1 ioX (#n; no allocation).
     void Solve(std::span<Vec3> ioX) const;
 
@@ -102,6 +102,7 @@ private:
     bool mFactored = false;
     bool mAnalyzed = false;
     int mAnalyzedNodeCount = 0;
+    std::int64_t mNumericBlockProducts = 0; // GetNumericBlockProducts of the analysed pattern (Analyze)
     std::vector<std::pair<int, int>> mAnalyzedPattern; // (row, column) of each input block
     std::vector<int> mNewOfOld;          // #n permutation P: node i is row mNewOfOld[i] of L
     std::vector<int> mColumnStart;       // #n + 1, strictly lower part of L by column

@@ -444,15 +444,18 @@ void TetSolver::FollowFramesAfterNewSystem()
         KeepFactorFrames(mRotations);
 }
 
+void TetSolver::AnchorsChanged()
+{
+    FollowFramesAfterNewSystem();
+    mPassEnergyValid = false; // the passes skip other elements now
+}
+
 Status TetSolver::SetNodeFixed(int inNode, bool inFixed)
 {
     if (Status status = CheckNode(inNode, GetNodeCount(), "SetNodeFixed"); status.HasError())
         return status;
     if (FixNode(inNode, inFixed))
-    {
-        FollowFramesAfterNewSystem();
-        mPassEnergyValid = false; // the passes skip other elements now
-    }
+        AnchorsChanged();
     InputChanged();
     return Status::Ok();
 }
@@ -469,10 +472,7 @@ Status TetSolver::SetNodesFixed(std::span<const int> inNodes, bool inFixed)
     for (int node : inNodes)
         changed = FixNode(node, inFixed) || changed;
     if (changed)
-    {
-        FollowFramesAfterNewSystem();
-        mPassEnergyValid = false; // the passes skip other elements now
-    }
+        AnchorsChanged();
     InputChanged();
     return Status::Ok();
 }

@@ -7,7 +7,8 @@ namespace crumple::fem
 
 /// When a refreshing implicit solver (TetSolverSettings::mFactorRefreshByCost) refreshes its factor although
 /// no single solve was long: the account of what the factor's frames have cost since they were set, kept as
-/// solver state (integers and one ratio, so a copy or a replay decides alike).
+/// solver state (integers and one ratio, so a copy or a replay decides alike). An implementation detail of
+/// TetSolver, public only because the solver holds it by value (as TetSolverWorkspace).
 ///
 /// Rent or buy (the ski-rental problem, Karlin et al. 1988): each solve at a linearisation other than the
 /// factor's own pays the iterations beyond cBaseIterations (what a solve takes even right after a refresh:

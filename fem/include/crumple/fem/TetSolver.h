@@ -222,15 +222,14 @@ public:
     int GetFactorizationCount() const { return mFactorizationCount; }
     /// Refreshes of the factor at the current element frames (TetSolverSettings::mFactorRefreshIterations,
     /// mFactorRefreshByCost): successful numeric refactorisations within or before a solve whose frames had
-    /// drifted; a cost counter like
-    /// GetFactorizationCount()
+    /// drifted; a cost counter like GetFactorizationCount()
     int GetFactorRefreshCount() const { return mFactorRefreshCount; }
     /// What a refresh of the factored system held now costs, in conjugate-gradient iterations of an implicit
     /// solve (operation counts: TetFactoredPreconditioner::GetRefreshCostInIterations; what
     /// mFactorRefreshByCost weighs extra iterations against). 0 without a factor.
     double GetFactorRefreshCost() const;
 
-  private:
+private:
     // Sub-steps of a symplectic step of inDeltaTime, refused beyond mMaxSubSteps.
     Result<int> SymplecticSubSteps(double inDeltaTime) const;
     TetSolver(const TetMesh& inMesh, const FemMaterial& inMaterial, const TetSolverSettings& inSettings);
@@ -279,6 +278,9 @@ public:
     // Set here, as solver state, and not when the factor is built, so that a copy, a replay and Prepare
     // factor at the same frames.
     void FollowFramesAfterNewSystem();
+    // A node's anchoring changed (SetNodeFixed, SetNodesFixed): the factor's frames follow, and the last
+    // pass's energy no longer counts the elements the passes now evaluate.
+    void AnchorsChanged();
     // Marks that an input changed: wake up and take a new energy reference before the next step.
     void InputChanged();
     // Symplectic Euler over inDeltaTime in inSubSteps sub-steps.
