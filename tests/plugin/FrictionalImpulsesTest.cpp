@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/plugin/FrictionalImpulses.h>
 
+#include "CarFrontOnFenceCrawl.h"
 #include "CarFrontOnFenceStall.h"
 #include "CarOnHeldFence.h"
 #include "DrawVec3.h"
@@ -580,4 +581,71 @@ TEST_CASE("A stalled joint solve stops: the racing car's 16 contacts on the fenc
     const auto [a_after, b_after] = After(bodies[0], bodies[1], contacts, j);
     CHECK(KineticEnergy(a_after) + KineticEnergy(b_after) <=
           (KineticEnergy(bodies[0]) + KineticEnergy(bodies[1])) * (1.0 + 1.0e-9));
+}
+
+TEST_CASE("A crawling joint solve stops at its bound near the converged answer: the car's front on the "
+          "moving fence",
+          "[plugin]")
+{
+    // A batch dumped from the threaded Bullet racing session (common::CarFrontOnFenceCrawl), its costliest
+    // friction solve: Gauss-Seidel trades impulse among nearly coplanar contacts for 2,242 sweeps before only
+    // three push, never stalling (points still move by 1.6e-7 of the approach speed per sweep), and every
+    // subspace step is refused. Known answer: the same solve without subspace steps run until it converges.
+    // The bounded solve's bodies' velocities must be within 2e-4 of that answer's change (measured 1.26e-4:
+    // the bound's cost, not round-off), with no kinetic energy made and every impulse in its cone.
+    const common::CarFrontOnFenceCrawl set = common::MakeCarFrontOnFenceCrawl();
+    const BodyState &car = set.mCar, &fence = set.mFence;
+    const std::vector<ImpulseContact>& contacts = set.mContacts;
+    REQUIRE(contacts.size() == 16u);
+
+    FrictionSolveStats stats;
+    const std::vector<ContactImpulse> j =
+        FrictionalImpulses(car, fence, contacts, set.mRestitution, set.mClosingSpeed, {}, &stats);
+    FrictionSolveSettings converge;
+    converge.mSubspaceInterval = 0;
+    converge.mMaxSweeps = 100000;
+    FrictionSolveStats reference_stats;
+    const std::vector<ContactImpulse> reference = FrictionalImpulses(
+        car, fence, contacts, set.mRestitution, set.mClosingSpeed, converge, &reference_stats);
+    INFO("sweeps " << stats.mSweeps << ", Newton iterations " << stats.mNewtonIterations << ", steps kept "
+                   << stats.mSubspaceSteps << "; reference sweeps " << reference_stats.mSweeps);
+    REQUIRE(reference_stats.mConverged);
+    CHECK(reference_stats.mSweeps > FrictionSolveSettings().mMaxSweeps);
+    // intent: the converged answer's structure: three contacts push, each sliding on its cone's rim
+    int pushing = 0;
+    for (std::size_t i = 0; i < contacts.size(); ++i)
+        if (reference[i].mNormal > 0.0)
+        {
+            ++pushing;
+            CHECK(reference[i].mFriction.norm() ==
+                  Approx(contacts[i].mFriction * reference[i].mNormal).epsilon(1.0e-9));
+        }
+    CHECK(pushing == 3);
+
+    CHECK(stats.mSweeps == FrictionSolveSettings().mMaxSweeps);
+    CHECK_FALSE(stats.mConverged);
+    CHECK_FALSE(stats.mStalled);
+    CHECK(stats.mNewtonIterations <= 4 * 32);
+    const auto [car_after, fence_after] = After(car, fence, contacts, j);
+    const auto [car_reference, fence_reference] = After(car, fence, contacts, reference);
+    const auto change = [&](const BodyState& inAfter, const BodyState& inBefore)
+    {
+        Eigen::Matrix<double, 6, 1> v;
+        v << inAfter.mLinearVelocity - inBefore.mLinearVelocity,
+            inAfter.mAngularVelocity - inBefore.mAngularVelocity;
+        return v;
+    };
+    Eigen::Matrix<double, 12, 1> bounded, converged;
+    bounded << change(car_after, car), change(fence_after, fence);
+    converged << change(car_reference, car), change(fence_reference, fence);
+    const double error = (bounded - converged).cwiseAbs().maxCoeff() / converged.cwiseAbs().maxCoeff();
+    INFO("largest velocity change error " << error << " of the largest change");
+    CHECK(error < 2.0e-4);
+    CHECK(KineticEnergy(car_after) + KineticEnergy(fence_after) <=
+          (KineticEnergy(car) + KineticEnergy(fence)) * (1.0 + 1.0e-9));
+    for (std::size_t i = 0; i < contacts.size(); ++i)
+    {
+        CHECK((std::isfinite(j[i].mNormal) && j[i].mNormal >= 0.0 && IsFinite(j[i].mFriction)));
+        CHECK(j[i].mFriction.norm() <= contacts[i].mFriction * j[i].mNormal * (1.0 + 1.0e-12));
+    }
 }
