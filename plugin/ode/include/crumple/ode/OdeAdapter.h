@@ -44,7 +44,8 @@ struct CRUMPLE_API OdeStepStats
 
 /// Connects an ODE world to a crumple::plugin::DamageWorld with two calls per step:
 ///
-///   near callback:  n = dCollide(o1, o2, ...); adapter.OnCollide(o1, o2, {contacts, n}); ...create joints...
+///   near callback:  n = dCollide(o1, o2, ...); adapter.OnCollide(o1, o2, {contacts, std::size_t(n)});
+///                   ...create joints...
 ///   after step:     dWorldStep(world, dt);  adapter.AfterStep(dt);
 ///
 /// OnCollide snapshots the bodies involved the first time they appear in a step (before dWorldStep, so the

@@ -177,7 +177,7 @@ struct CrashScenario
     std::string mName;                ///< Shown in reports
     EEngine mEngine = EEngine::Bullet;
     double mDuration = 0.6;           ///< Simulated time (s), > 0
-    double mTimeStep = 1.0 / 120.0;   ///< Engine step (s), in (0, 0.05]
+    double mTimeStep = 1.0 / 120.0;   ///< Engine step (s), in [1e-6, 0.05]
     VehicleSpec mVehicle;
     TargetSpec mTarget;
     ImpactSpec mImpact;
