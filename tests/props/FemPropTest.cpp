@@ -9,6 +9,8 @@
 #include <crumple/gpu/ComputeDevice.h>
 #endif
 
+#include "GpuFallback.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -132,6 +134,7 @@ TEST_CASE(
             if (prop.Get().GetBackend() != EFemBackend::Gpu)
             {
                 // Only without a device (the test above covers that fallback).
+                test::RequireNoComputeDevice(provider.Get(), prop.Get().GetFallbackReason());
                 WARN("no compute device: " << prop.Get().GetFallbackReason());
                 CHECK(prop.Get().GetFallbackReason().find("implement") == std::string::npos);
                 continue;
@@ -157,6 +160,7 @@ TEST_CASE("FemProp on the GPU steps like the CPU within float limits, explicit a
     REQUIRE(prop.IsValid());
     if (prop.Get().GetBackend() != EFemBackend::Gpu)
     {
+        test::RequireNoComputeDevice(provider.Get(), prop.Get().GetFallbackReason());
         WARN("skipped: no compute device: " << prop.Get().GetFallbackReason());
         return;
     }
@@ -203,6 +207,7 @@ TEST_CASE("FemProp takes a dispatched collision on either backend and reports it
         REQUIRE(prop.IsValid());
         if (prop.Get().GetBackend() != backend)
         {
+            test::RequireNoComputeDevice(provider.Get(), prop.Get().GetFallbackReason());
             WARN("GPU case skipped: " << prop.Get().GetFallbackReason());
             break;
         }
@@ -244,6 +249,7 @@ TEST_CASE("MakeHeldFemProp on the GPU: anchored as on the CPU, a struck wall mov
     REQUIRE(on_gpu.IsValid());
     if (on_gpu.Get().GetBackend() != EFemBackend::Gpu)
     {
+        test::RequireNoComputeDevice(provider.Get(), on_gpu.Get().GetFallbackReason());
         WARN("skipped: no compute device: " << on_gpu.Get().GetFallbackReason());
         return;
     }

@@ -18,6 +18,8 @@
 #include <crumple/gpu/GpuTetSolver.h>
 #endif
 
+#include "GpuFallback.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -235,6 +237,7 @@ std::optional<RecordedGpuPanel> RecordGpuPanel(const std::array<int, 3>& inCells
         FemProp::Create(run.mDevices.get(), test::WallPanelMesh(inCells), material, inSettings, on_gpu).Get();
     if (panel.GetBackend() != EFemBackend::Gpu)
     {
+        test::RequireNoComputeDevice(run.mDevices.get(), panel.GetFallbackReason());
         WARN("skipped: no compute device: " << panel.GetFallbackReason());
         return std::nullopt;
     }
@@ -361,6 +364,7 @@ TEST_CASE("Props in a recording: a GPU prop's at-rest test reads its state, so l
     FemProp post = FemProp::Create(&devices, mesh, material, settings, on_gpu).Get();
     if (post.GetBackend() != EFemBackend::Gpu)
     {
+        test::RequireNoComputeDevice(&devices, post.GetFallbackReason());
         WARN("skipped: no compute device: " << post.GetFallbackReason());
         return;
     }
@@ -724,6 +728,7 @@ TEST_CASE("Props: a GPU prop asked for with a ground runs on the CPU and says wh
         FemProp::Create(&devices, TetGrid({}).Get(), FemMaterialSettings{}, settings, on_gpu).Get();
     if (without.GetBackend() != EFemBackend::Gpu)
     {
+        test::RequireNoComputeDevice(&devices, without.GetFallbackReason());
         WARN("skipped: no compute device: " << without.GetFallbackReason());
         return;
     }
