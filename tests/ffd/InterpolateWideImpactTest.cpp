@@ -97,7 +97,14 @@ TEST_CASE("Contacts within one spacing are left alone", "[ffd]")
 {
     const std::vector<PointDisplacement> points{{Vec3(0.0, 0.0, 0.0), Vec3(-0.1, 0.0, 0.0)},
                                                 {Vec3(0.0, 0.1, 0.05), Vec3(-0.1, 0.0, 0.0)}};
-    CHECK(InterpolateWideImpact(points, 0.2).size() == 2);
+    const std::vector<PointDisplacement> kept = InterpolateWideImpact(points, 0.2);
+    REQUIRE(kept.size() == 2);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        // intent: the same points with the same displacements, bit for bit, in order
+        CHECK(kept[i].mPoint == points[i].mPoint);
+        CHECK(kept[i].mDisplacement == points[i].mDisplacement);
+    }
 }
 
 TEST_CASE("A collinear contact pair is sampled along its segment", "[ffd]")
