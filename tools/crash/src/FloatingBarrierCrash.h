@@ -30,6 +30,10 @@ struct FloatingBarrierCrashResult
     double mEndSpeed = 0.0;       ///< The car's velocity along x at the end (m/s)
     double mMomentumError = 0.0;  ///< |momentum the car lost - momentum the barrier took| (N s)
     double mMomentumLost = 0.0;   ///< |momentum the car lost| (N s)
+    /// |momentum the car lost - the barrier's free nodes' momentum change over the collisions| (N s): the
+    /// nodes' own velocities, summed m_i dv_i around each Collide, so an impulse that reached no node, the
+    /// wrong node's mass or the wrong sign shows here (anchored nodes would absorb: this barrier has none)
+    double mNodeMomentumError = 0.0;
     int mBrokenLinks = 0;         ///< Links the barrier broke
     double mFrontPastBarrier = 0.0; ///< The car's front x at the end minus the barrier's back face x (m)
 };
