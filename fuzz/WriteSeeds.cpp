@@ -9,6 +9,7 @@
 #include <crumple/plugin/DamageRecorder.h>
 #ifdef CRUMPLE_FUZZ_PROPS
 #include <crumple/fem/TetGrid.h>
+#include <crumple/props/HeldFemProp.h>
 #include <crumple/props/PropWorld.h>
 #endif
 #ifdef CRUMPLE_FUZZ_FEM
@@ -44,9 +45,10 @@ bool Write(const std::filesystem::path& inPath, std::span<const std::byte> inByt
 // A surface file with the target's extension byte in front (see FuzzSurfaceMesh.cpp).
 #ifdef CRUMPLE_FUZZ_PROPS
 // A recording with a brittle panel standing in for the wall, its FEM under inSettings: its setup, the hit,
-// three prop steps, with inTakeLoose the loose pieces taken (a PLOS record), a fourth step.
+// three prop steps, with inTakeLoose the loose pieces taken (a PLOS record), a fourth step. inSpread: the
+// panel's contact spread radius (m; 0: none, and no SPRD tag).
 bool WritePanelSeed(const std::filesystem::path& inPath, const fem::TetSolverSettings& inSettings,
-                    bool inTakeLoose)
+                    bool inTakeLoose, double inSpread = 0.0)
 {
     fuzz::FuzzWorld world;
     Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
@@ -62,7 +64,8 @@ bool WritePanelSeed(const std::filesystem::path& inPath, const fem::TetSolverSet
     material.mTensileStrength = 2.0e5; // weak enough that the hit knocks pieces loose
     Result<props::FemProp> panel = props::FemProp::Create(nullptr, fem::TetGrid(grid).Get(), material,
                                                           inSettings, props::FemPropSettings{});
-    bool ok = panel.IsValid() && prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
+    bool ok = panel.IsValid() && (inSpread == 0.0 || panel.Get().SetContactSpread(inSpread).IsValid()) &&
+              prop_world.Get()->AttachRecorder(recorder.Get().get()).IsValid() &&
               prop_world.Get()->AddProp(world.GetWall(), std::move(panel).Get()).IsValid();
     world.Dent();
     for (int step = 0; ok && step < 3; ++step)
@@ -126,6 +129,10 @@ int main(int argc, char** argv)
     fem::TetSolverSettings grounded;
     grounded.mGround = fem::GroundPlane{true, Vec3::UnitZ(), -1.0, 0.6};
     ok = ok && WritePanelSeed(out / "prop_replay" / "panel_on_ground.crumple", grounded, false);
+    // A held prop's settings (the factored preconditioner refreshed by cost: an RCST tag) and a contact
+    // spread (an SPRD tag): every optional setting's record but the ground's.
+    ok = ok && WritePanelSeed(out / "prop_replay" / "held_panel_spread.crumple",
+                              props::HeldPropSolverSettings(), true, 0.3);
 #endif
 
 #ifdef CRUMPLE_FUZZ_FEM
