@@ -65,9 +65,21 @@ std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody)
         return {};
     const ffd::AlignedBox bounds = ffd::BoundingBox(inBody.mPositions);
     const Vec3 size = bounds.mMax - bounds.mMin;
+    char text[256];
+    // intent: a car is longer than it is tall too: a z-forward, y-up export read with the default axes has
+    // its length along the stated up axis, and would crash 4 m tall and 1.8 m long
+    if (size.x() < size.z() && size.y() <= size.z())
+    {
+        std::snprintf(
+            text, sizeof(text),
+            "the mesh is %.3g tall along the stated up axis and %.3g long along the stated forward "
+            "axis: a car is longer than tall, so its axes are probably wrong (state its forward and "
+            "up axes)",
+            size.z(), size.x());
+        return text;
+    }
     if (size.x() >= size.y())
         return {};
-    char text[256];
     std::snprintf(text, sizeof(text),
                   "the mesh is %.3g wide across the stated forward axis and %.3g long along it: a car is longer "
                   "than wide, so it is probably sideways (state its forward axis)",
@@ -360,9 +372,10 @@ Result<CarBody> LoadCarBody(const CarMeshSettings& inSettings)
     // would be NaN and the first one blamed
     for (std::size_t v = 0; v < mesh.mPositions.size(); ++v)
         if (!IsFinite(mesh.mPositions[v]))
-            return MakeError(EError::NonFinite,
-                             inSettings.mPath.string() + ": vertex " + std::to_string(v) +
-                                 " of the loaded mesh is not finite (nan or inf in the file)");
+            return MakeError(
+                EError::NonFinite,
+                inSettings.mPath.string() + ": vertex " + std::to_string(v) +
+                    " of the loaded mesh is not finite (counting from 0; nan or inf in the file)");
 
     // Centre on the bounding box and scale by the unit or to the wanted length.
     const ffd::AlignedBox bounds = ffd::BoundingBox(mesh.mPositions);

@@ -61,8 +61,10 @@ struct CarBody
     std::vector<std::string> mUnmatchedRigidPartNames;
 };
 
-/// Empty when the body's x extent (the stated forward axis) is its longest horizontal one; otherwise why a
-/// car loaded so is probably sideways (a y-forward file read as x-forward), with both extents.
+/// Empty when the body's x extent (the stated forward axis) is its longest one; otherwise why a car loaded so
+/// has its axes wrong, with the extents: taller than long (its height, the stated up axis, is its longest
+/// extent: a z-forward, y-up file read with z up), or wider than long (probably sideways: a y-forward file
+/// read as x-forward).
 std::string ForwardAxisWarning(const ffd::TriangleMesh& inBody);
 
 /// The shipped Khronos Toy Car (CC0) as a 4.2 m car: its "ToyCar" body mesh, Y up and Z forward in the file.

@@ -54,6 +54,7 @@ set(crash_malformed
     "wrong_unit|/impact/speed_mph"
     "wrong_type|/duration_s: must be a number"
     "missing_mesh|/vehicle/mesh: file not found"
+    "mesh_is_folder|/vehicle/mesh: not a regular file \\(a folder, a device or a pipe\\)"
     "truncated|line"
     "unknown_engine|/engine"
     "nan_speed|/impact/speed_km_h: must be a number"
@@ -72,7 +73,8 @@ set(crash_malformed
     "preset_duplicate_key|crush_A_N_per_m: duplicate key"
     "mesh_face_index_minus_one|mIndices\\[2\\] is out of range"
     "mesh_face_index_beyond|mIndices\\[2\\] is out of range"
-    "mesh_nan_vertex|nan_vertex.obj: vertex [0-9]+ of the loaded mesh is not finite")
+    "mesh_nan_vertex|nan_vertex.obj: vertex [0-9]+ of the loaded mesh is not finite"
+    "mesh_flat|flat_plate.obj measures 4.4 x 1.8 x 0 m \\(length, width, height\\) once scaled: a car body must measure at least 0.1 m along each axis")
 # Campbell's line comes from full-frontal rigid-wall tests: --calibrate refuses a pole scenario, and a sweep.
 add_test(NAME "crash: --calibrate refuses a scenario that is not a full-frontal rigid wall"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${PROJECT_SOURCE_DIR}/samples/scenarios/pole_frontal_32kmh.json
@@ -112,6 +114,21 @@ add_test(NAME "crash: --strict refuses a sideways mesh"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
             -DOUT=${crash_out}/sideways-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=refused by --strict"
             -P ${crash_script})
+# A car that meets nothing in its run (too slow to reach the wall) runs, with a warning saying so.
+add_test(NAME "crash: a car that meets nothing runs with a warning"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/too_slow_to_reach.json
+            -DOUT=${crash_out}/too-slow -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING the car met nothing in 0.1 s"
+            -P ${crash_script})
+# A z-forward, y-up export read with the default axes (x forward, z up) stands on its nose: warned, and
+# refused under --strict.
+add_test(NAME "crash: a mesh taller than long runs with a warning"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/van_no_axes.json
+            -DOUT=${crash_out}/van-no-axes -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING unwelded_van_cm.obj: .*longer than tall"
+            -P ${crash_script})
+add_test(NAME "crash: --strict refuses a mesh taller than long"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/van_no_axes.json
+            -DOUT=${crash_out}/van-no-axes-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=longer than tall.*refused by --strict"
+            -P ${crash_script})
 add_test(NAME "crash: a mesh with its axes and unit stated runs clean under --strict"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stated_mesh_axes.json
             -DOUT=${crash_out}/stated-axes -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING -P ${crash_script})
@@ -146,6 +163,8 @@ add_test(NAME "crash: --strict refuses a rigid-part name that matches nothing"
             -DOUT=${crash_out}/unmatched-parts-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=wheeel.*refused by --strict"
             -P ${crash_script})
 set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
+    "crash: a mesh taller than long runs with a warning" "crash: --strict refuses a mesh taller than long"
+    "crash: a car that meets nothing runs with a warning"
     "crash: a mesh with its axes and unit stated runs clean under --strict"
     "crash: an STL car body in millimetres runs clean under --strict"
     "crash: a low-poly sedan wound carelessly crashes clean in ODE's offset test"

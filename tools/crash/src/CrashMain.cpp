@@ -46,7 +46,7 @@ void PrintUsage(std::FILE* inStream)
         "                 2.5 or 5 x 10^k, as crumple-replay does, so the same damage gets the same "
         "colours)\n"
         "  --strict       refuse a scenario that would run with a warning: a mesh whose stated forward\n"
-        "                 axis is not its longest horizontal extent, rigid-part names that match no part,\n"
+        "                 axis is not its longest extent, rigid-part names that match no part,\n"
         "                 a time step in which the car closes more than it overlaps its target across\n"
         "                 its path (without it the run goes on and the report carries the warning)\n"
         "  --calibrate --b0 B0 --b1 B1 [--preset-name NAME] [--source TEXT]\n"

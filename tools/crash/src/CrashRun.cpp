@@ -152,6 +152,20 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
                           vehicle.mMesh.filename().string().c_str(), (box.mMax - box.mMin).maxCoeff(), scaled, cMinMeshLength, cMaxMeshLength);
             return MakeError(EError::OutOfRange, text);
         }
+        // intent: a flat or paper-thin body (a single sheet, a mesh squashed by a wrong axis or unit) has a
+        // collision box the engines let a wall through, or drop through the ground: refused, not run
+        if (const Vec3 size = ffd::BoundingBox(body.Get().mMesh.mPositions).mMax -
+                              ffd::BoundingBox(body.Get().mMesh.mPositions).mMin;
+            !(size.minCoeff() >= cMinMeshLength))
+        {
+            char text[320];
+            std::snprintf(
+                text, sizeof(text),
+                "%s measures %.3g x %.3g x %.3g m (length, width, height) once scaled: a car body must "
+                "measure at least %g m along each axis (a flat sheet or a squashed mesh cannot crash)",
+                vehicle.mMesh.filename().string().c_str(), size.x(), size.y(), size.z(), cMinMeshLength);
+            return MakeError(EError::OutOfRange, text);
+        }
         if (const std::vector<std::string>& unmatched = body.Get().mUnmatchedRigidPartNames;
             vehicle.mMeshRigidPartsGiven && !unmatched.empty())
         {
@@ -367,6 +381,18 @@ Result<CrashOutcome> RunScene(const common::EngineCrashSettings& inSettings, con
                                                                          : std::max(outcome.mImpactEndTime, collision.mEndTime);
         }
         outcome.mPeakImpulse = std::max(outcome.mPeakImpulse, impulse);
+    }
+    // intent: a run in which the car met nothing (too slow or too short to reach the target) says so: its
+    // expectations on crush would otherwise read as a car that took the hit undamaged
+    if (std::isnan(outcome.mImpactStartTime))
+    {
+        char text[200];
+        std::snprintf(
+            text, sizeof(text),
+            "the car met nothing in %g s (it started at %.3g m/s): it stopped short of the target or "
+            "passed it by; check duration_s, the speed and the target's placement",
+            inSettings.mDuration, outcome.mStartVelocity.norm());
+        outcome.mWarnings.push_back(text);
     }
     const ffd::FfdDeformer& car = scene.GetDamage().GetObject(scene.GetCarObject())->GetDeformer();
     outcome.mRestMesh = car.GetRestMesh();

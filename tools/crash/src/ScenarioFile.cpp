@@ -133,7 +133,10 @@ constexpr double cMaxDuration = 3600.0; // s
 constexpr double cMinTimeStep = 1.0e-6; // s
 constexpr double cMaxSteps = 1.0e7;
 NumberRange BodyMass() { return {0.0, true, plugin::cMaxBodyMass, false}; }  // kg
-NumberRange BodySize() { return {0.0, true, 1000.0, false}; }                // m, each side
+NumberRange BodySize()
+{
+    return {cMinMeshLength, false, cMaxMeshLength, false};
+} // m, each side
 NumberRange MeshLength() { return {cMinMeshLength, false, cMaxMeshLength, false}; } // m, a car body's length
 NumberRange Heading() { return {-360.0, false, 360.0, false}; }              // degrees
 
@@ -496,7 +499,12 @@ class ScenarioReader
                 (file.is_absolute() ? file : mBaseFolder / file).lexically_normal();
             std::error_code error;
             if (!std::filesystem::is_regular_file(resolved, error))
-                return Fail(EError::IoError, pointer, "file not found: " + resolved.string());
+                return Fail(EError::IoError, pointer,
+                            std::string(std::filesystem::exists(resolved, error)
+                                            ? "not a regular file (a folder, a "
+                                              "device or a pipe): "
+                                            : "file not found: ") +
+                                resolved.string());
             if (!std::ifstream(resolved, std::ios::binary))
                 return Fail(EError::IoError, pointer, "cannot read: " + resolved.string());
             ioVehicle.mMesh = resolved;

@@ -117,7 +117,7 @@ struct CrashRunOptions
 {
     std::filesystem::path mReplayFile;
     /// Refuse a scenario that would run with a warning instead of running it: a mesh whose stated forward
-    /// axis is not its longest horizontal extent (samples::ForwardAxisWarning), rigid-part names that match
+    /// axis is not its longest extent (samples::ForwardAxisWarning), rigid-part names that match
     /// no part, a time step too coarse for the car's overlap with its target (StepOverlapWarning)
     bool mStrict = false;
 };
