@@ -181,7 +181,15 @@ Result<ffd::TriangleMesh> ReadSceneTriangles(const CarMeshSettings& inSettings, 
     const aiScene* scene = importer.ReadFile(inSettings.mPath.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                                                               aiProcess_JoinIdenticalVertices);
     if (scene == nullptr || scene->mRootNode == nullptr)
-        return MakeError(EError::IoError, "cannot read " + inSettings.mPath.string() + ": " + importer.GetErrorString());
+    {
+        // intent: assimp's validation names its own structure for a file with no mesh in it (an OBJ of
+        // vertices only, text that is not a mesh): say so in the caller's words, with assimp's beside
+        const std::string why = importer.GetErrorString();
+        const bool no_mesh = why.find("mNumMeshes is 0") != std::string::npos ||
+                             why.find("contains no faces") != std::string::npos;
+        const std::string meshless = no_mesh ? "the file holds no mesh (no faces, or not a mesh file); " : "";
+        return MakeError(EError::IoError, "cannot read " + inSettings.mPath.string() + ": " + meshless + why);
+    }
 
     // Walk the node tree, applying node transforms, keeping meshes whose node or mesh name matches.
     ffd::TriangleMesh mesh;

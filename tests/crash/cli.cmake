@@ -55,6 +55,7 @@ set(crash_malformed
     "wrong_type|/duration_s: must be a number"
     "missing_mesh|/vehicle/mesh: file not found"
     "mesh_is_folder|/vehicle/mesh: not a regular file \\(a folder, a device or a pipe\\)"
+    "mesh_without_faces|vertices_only.obj: the file holds no mesh"
     "truncated|line"
     "unknown_engine|/engine"
     "nan_speed|/impact/speed_km_h: must be a number"
@@ -114,6 +115,15 @@ add_test(NAME "crash: --strict refuses a sideways mesh"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
             -DOUT=${crash_out}/sideways-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=refused by --strict"
             -P ${crash_script})
+# A unit ten times too large (a 40 m car) is within the mesh bounds: it runs with a warning, --strict refuses it.
+add_test(NAME "crash: a car longer than a road vehicle runs with a warning"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/hatchback_unit_tenfold.json
+            -DOUT=${crash_out}/unit-tenfold -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING hatchback.obj is 4[0-9.]+ m long once scaled, outside a road vehicle's 1-30 m"
+            -P ${crash_script})
+add_test(NAME "crash: --strict refuses a car longer than a road vehicle"
+    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/hatchback_unit_tenfold.json
+            -DOUT=${crash_out}/unit-tenfold-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=is the unit right.*refused by --strict"
+            -P ${crash_script})
 # A car that meets nothing in its run (too slow to reach the wall) runs, with a warning saying so.
 add_test(NAME "crash: a car that meets nothing runs with a warning"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/too_slow_to_reach.json
@@ -164,7 +174,8 @@ add_test(NAME "crash: --strict refuses a rigid-part name that matches nothing"
             -P ${crash_script})
 set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
     "crash: a mesh taller than long runs with a warning" "crash: --strict refuses a mesh taller than long"
-    "crash: a car that meets nothing runs with a warning"
+    "crash: a car that meets nothing runs with a warning" "crash: a car longer than a road vehicle runs with a warning"
+    "crash: --strict refuses a car longer than a road vehicle"
     "crash: a mesh with its axes and unit stated runs clean under --strict"
     "crash: an STL car body in millimetres runs clean under --strict"
     "crash: a low-poly sedan wound carelessly crashes clean in ODE's offset test"

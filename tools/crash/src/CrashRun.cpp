@@ -166,6 +166,25 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
                 vehicle.mMesh.filename().string().c_str(), size.x(), size.y(), size.z(), cMinMeshLength);
             return MakeError(EError::OutOfRange, text);
         }
+        // intent: a unit off by ten (millimetres read as centimetres: a 40 m car) runs within the bounds
+        // above; a road vehicle is 1-30 m long, so a body outside that is warned of (a scale model may be
+        // meant)
+        if (const double length = (ffd::BoundingBox(body.Get().mMesh.mPositions).mMax -
+                                   ffd::BoundingBox(body.Get().mMesh.mPositions).mMin)
+                                      .maxCoeff();
+            !(length >= cRoadVehicleMinLength && length <= cRoadVehicleMaxLength))
+        {
+            char text[320];
+            std::snprintf(
+                text, sizeof(text),
+                "%s is %.3g m long once scaled, outside a road vehicle's %g-%g m: is the unit right "
+                "(mesh_unit_m, mesh_length_m)?",
+                vehicle.mMesh.filename().string().c_str(), length, cRoadVehicleMinLength,
+                cRoadVehicleMaxLength);
+            if (inOptions.mStrict)
+                return MakeError(EError::InvalidArgument, std::string(text) + "; refused by --strict");
+            outWarnings.push_back(text);
+        }
         if (const std::vector<std::string>& unmatched = body.Get().mUnmatchedRigidPartNames;
             vehicle.mMeshRigidPartsGiven && !unmatched.empty())
         {

@@ -47,6 +47,10 @@ enum class ETarget : std::uint8_t
 /// mesh_unit_m. Outside them the unit is wrong (a file in millimetres read as metres, or the reverse).
 inline constexpr double cMinMeshLength = 0.1;
 inline constexpr double cMaxMeshLength = 1000.0;
+/// A road vehicle's length (m): a car mesh scaled outside it runs with a warning (is the unit right?), and
+/// --strict refuses it; a scale model may be meant.
+inline constexpr double cRoadVehicleMinLength = 1.0;
+inline constexpr double cRoadVehicleMaxLength = 30.0;
 
 /// The vehicle: a mesh file or a procedural box body, its mass and its damage material. SI units throughout;
 /// the body frame is x forward, y left, z up, centred on the body's bounding box.
