@@ -72,7 +72,10 @@ std::string MeshPreparationText(const MeshPreparation& inMesh)
     if (!(inMesh.mMaxEdge > 0.0))
         return text + ", as they are (mesh_max_edge_m 0)";
     text += ", re-cut to " + std::to_string(inMesh.mTriangles) + " and " + std::to_string(inMesh.mVertices) +
-            " (edges up to " + Number(inMesh.mMaxEdge, 3) + " m; " + std::to_string(inMesh.mFlatFlips) + " flips in flat parts";
+            " (edges up to " + Number(inMesh.mMaxEdge, 3) + " m; ";
+    if (inMesh.mLooseSlivers > 0)
+        text += std::to_string(inMesh.mLooseSlivers) + " zero-area triangles that bounded nothing removed, ";
+    text += std::to_string(inMesh.mFlatFlips) + " flips in flat parts";
     if (inMesh.mFlipDeviation > 0.0)
         text += ", " + std::to_string(inMesh.mNearlyFlatFlips) + " within " + Number(inMesh.mFlipDeviation, 4) + " m";
     return text + ", " + std::to_string(inMesh.mCapSplitVertices) + " vertices added to split caps)";
@@ -142,11 +145,16 @@ Status WriteReportJson(const std::filesystem::path& inPath, const CrashScenario&
     report["folded_triangles"] = inOutcome.mFoldedTriangles;
     report["warnings"] = inOutcome.mWarnings;
     if (const std::optional<MeshPreparation>& mesh = inOutcome.mMeshPreparation)
-        report["mesh_preparation"] = {{"file_triangles", mesh->mFileTriangles}, {"file_vertices", mesh->mFileVertices},
-                                      {"triangles", mesh->mTriangles},         {"vertices", mesh->mVertices},
-                                      {"max_edge_m", mesh->mMaxEdge},          {"flat_flips", mesh->mFlatFlips},
-                                      {"flip_deviation_m", mesh->mFlipDeviation}, {"nearly_flat_flips", mesh->mNearlyFlatFlips},
-                                      {"cap_split_vertices", mesh->mCapSplitVertices}};
+        report["mesh_preparation"] = {{"file_triangles", mesh->mFileTriangles},
+                                      {"file_vertices", mesh->mFileVertices},
+                                      {"triangles", mesh->mTriangles},
+                                      {"vertices", mesh->mVertices},
+                                      {"max_edge_m", mesh->mMaxEdge},
+                                      {"flat_flips", mesh->mFlatFlips},
+                                      {"flip_deviation_m", mesh->mFlipDeviation},
+                                      {"nearly_flat_flips", mesh->mNearlyFlatFlips},
+                                      {"cap_split_vertices", mesh->mCapSplitVertices},
+                                      {"loose_slivers", mesh->mLooseSlivers}};
     else
         report["mesh_preparation"] = nullptr;
     report["crush_profile"] = {{"face", CarFaceName(inOutcome.mCrushProfile.mFace)},

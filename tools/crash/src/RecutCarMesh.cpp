@@ -4,6 +4,7 @@
 #include "RemoveCaps.h"
 
 #include <crumple/crash/RecutCarMesh.h>
+#include <crumple/ffd/DropLooseSlivers.h>
 #include <crumple/ffd/FlipFlatEdges.h>
 #include <crumple/ffd/RefineLongEdges.h>
 
@@ -21,6 +22,10 @@ Result<MeshPreparation> RecutCarMesh(ffd::TriangleMesh& ioMesh, std::vector<std:
     if (inMaxEdge > 0.0)
     {
         preparation.mMaxEdge = inMaxEdge;
+        Result<std::size_t> slivers = ffd::DropLooseSlivers(ioMesh);
+        if (slivers.HasError())
+            return slivers.GetError();
+        preparation.mLooseSlivers = slivers.Get();
         Result<std::size_t> flipped = ffd::FlipFlatEdges(ioMesh);
         if (flipped.HasError())
             return flipped.GetError();
