@@ -105,39 +105,36 @@ foreach(entry IN LISTS crash_malformed)
 endforeach()
 set_tests_properties("crash: a failing expectation exits 1 and names it" PROPERTIES LABELS crash)
 
+# A scenario that would run silently wrong runs with a warning (stdout: WARNING and the text matching
+# inWarning) and exits 2 under --strict (its message matching inRefusal): "crash: <inSubject> runs with a
+# warning" and "crash: --strict refuses <inSubject>".
+function(crash_warned_and_refused inSubject inScenario inOut inWarning inRefusal)
+    add_test(NAME "crash: ${inSubject} runs with a warning"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/${inScenario}
+                -DOUT=${crash_out}/${inOut} -DEXPECT_EXIT=0 "-DEXPECT_TEXT=${inWarning}" -P ${crash_script})
+    add_test(NAME "crash: --strict refuses ${inSubject}"
+        COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/${inScenario}
+                -DOUT=${crash_out}/${inOut}-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=${inRefusal}"
+                -P ${crash_script})
+    set_tests_properties("crash: ${inSubject} runs with a warning" "crash: --strict refuses ${inSubject}"
+        PROPERTIES LABELS crash)
+endfunction()
+
 # Mesh axes: a y-forward file read with the default axes runs with a warning, --strict refuses it, and the
 # same file with its forward axis, up axis and unit stated runs clean under --strict.
-add_test(NAME "crash: a sideways mesh runs with a warning"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
-            -DOUT=${crash_out}/sideways -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING hatchback.obj: .*probably sideways"
-            -P ${crash_script})
-add_test(NAME "crash: --strict refuses a sideways mesh"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/sideways_mesh.json
-            -DOUT=${crash_out}/sideways-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=refused by --strict"
-            -P ${crash_script})
-# A unit ten times too large (a 40 m car) is within the mesh bounds: it runs with a warning, --strict refuses it.
-add_test(NAME "crash: a car longer than a road vehicle runs with a warning"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/hatchback_unit_tenfold.json
-            -DOUT=${crash_out}/unit-tenfold -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING hatchback.obj is 4[0-9.]+ m long once scaled, outside a road vehicle's 1-30 m"
-            -P ${crash_script})
-add_test(NAME "crash: --strict refuses a car longer than a road vehicle"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/hatchback_unit_tenfold.json
-            -DOUT=${crash_out}/unit-tenfold-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=is the unit right.*refused by --strict"
-            -P ${crash_script})
+crash_warned_and_refused("a sideways mesh" sideways_mesh.json sideways "WARNING hatchback.obj: .*probably sideways"
+                         "refused by --strict")
+# A z-forward, y-up export read with the default axes (x forward, z up) stands on its nose.
+crash_warned_and_refused("a mesh taller than long" van_no_axes.json van-no-axes
+                         "WARNING unwelded_van_cm.obj: .*longer than tall" "longer than tall.*refused by --strict")
+# A unit ten times too large (a 40 m car) is within the mesh bounds.
+crash_warned_and_refused("a car longer than a road vehicle" hatchback_unit_tenfold.json unit-tenfold
+                         "WARNING hatchback.obj is 4[0-9.]+ m long once scaled, outside a road vehicle's 1-30 m"
+                         "is the unit right.*refused by --strict")
 # A car that meets nothing in its run (too slow to reach the wall) runs, with a warning saying so.
 add_test(NAME "crash: a car that meets nothing runs with a warning"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/too_slow_to_reach.json
             -DOUT=${crash_out}/too-slow -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING the car met nothing in 0.1 s"
-            -P ${crash_script})
-# A z-forward, y-up export read with the default axes (x forward, z up) stands on its nose: warned, and
-# refused under --strict.
-add_test(NAME "crash: a mesh taller than long runs with a warning"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/van_no_axes.json
-            -DOUT=${crash_out}/van-no-axes -DEXPECT_EXIT=0 "-DEXPECT_TEXT=WARNING unwelded_van_cm.obj: .*longer than tall"
-            -P ${crash_script})
-add_test(NAME "crash: --strict refuses a mesh taller than long"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/van_no_axes.json
-            -DOUT=${crash_out}/van-no-axes-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=longer than tall.*refused by --strict"
             -P ${crash_script})
 add_test(NAME "crash: a mesh with its axes and unit stated runs clean under --strict"
     COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/stated_mesh_axes.json
@@ -167,28 +164,16 @@ add_test(NAME "crash: an unwelded van in centimetres, y up and -z forward, crash
             -DOUT=${crash_out}/unwelded-van -DEXPECT_EXIT=0 -DARGS=--strict -DREJECT_TEXT=WARNING
             "-DEXPECT_TEXT=98 triangles and 51 vertices from the file" -DREPLAY=$<TARGET_FILE:crumple-replay>
             -P ${crash_script})
-# A rigid-part name fragment that finds no part (a typo) runs with a warning that lists the parts found;
-# --strict refuses it.
-add_test(NAME "crash: a rigid-part name that matches nothing runs with a warning"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/unmatched_rigid_parts.json
-            -DOUT=${crash_out}/unmatched-parts -DEXPECT_EXIT=0
-            "-DEXPECT_TEXT=WARNING vehicle-truck-red.glb: mesh_rigid_parts \"wheeel\" names no node or mesh of the file \\(parts found: wheel-back-left"
-            -P ${crash_script})
-add_test(NAME "crash: --strict refuses a rigid-part name that matches nothing"
-    COMMAND ${CMAKE_COMMAND} -DCRASH=$<TARGET_FILE:crumple-crash> -DSCENARIO=${CMAKE_CURRENT_LIST_DIR}/unmatched_rigid_parts.json
-            -DOUT=${crash_out}/unmatched-parts-strict -DEXPECT_EXIT=2 -DARGS=--strict "-DEXPECT_TEXT=wheeel.*refused by --strict"
-            -P ${crash_script})
-set_tests_properties("crash: a sideways mesh runs with a warning" "crash: --strict refuses a sideways mesh"
-    "crash: a mesh taller than long runs with a warning" "crash: --strict refuses a mesh taller than long"
-    "crash: a car that meets nothing runs with a warning" "crash: a car longer than a road vehicle runs with a warning"
-    "crash: --strict refuses a car longer than a road vehicle"
+# A rigid-part name fragment that finds no part (a typo) runs with a warning that lists the parts found.
+crash_warned_and_refused("a rigid-part name that matches nothing" unmatched_rigid_parts.json unmatched-parts
+    "WARNING vehicle-truck-red.glb: mesh_rigid_parts \"wheeel\" names no node or mesh of the file \\(parts found: wheel-back-left"
+    "wheeel.*refused by --strict")
+set_tests_properties("crash: a car that meets nothing runs with a warning"
     "crash: a mesh with its axes and unit stated runs clean under --strict"
     "crash: an STL car body in millimetres runs clean under --strict"
     "crash: a low-poly sedan wound carelessly crashes clean in ODE's offset test"
     "crash: a sedan with zero-area slivers over its edges crashes clean into a pole"
-    "crash: an unwelded van in centimetres, y up and -z forward, crashes clean into a pole"
-    "crash: a rigid-part name that matches nothing runs with a warning"
-    "crash: --strict refuses a rigid-part name that matches nothing" PROPERTIES LABELS crash)
+    "crash: an unwelded van in centimetres, y up and -z forward, crashes clean into a pole" PROPERTIES LABELS crash)
 
 # Calibration: fitting reaches Campbell's line within 10 % over 20-64 km/h, and the shipped mid-size preset,
 # read back from its file, reproduces it (exit 0 within 10 %, 1 otherwise).
