@@ -628,3 +628,69 @@ TEST_CASE("Bullet: a body state carries its collision shape's bounds, a plane's 
     CHECK(ground_state.mShapeMin.y() == -cMaxBodyPosition);
     CHECK(ValidateBodyState(ground_state));
 }
+
+TEST_CASE(
+    "Bullet: a kinematic body made the usual Bullet way (mass 0, CF_KINEMATIC_OBJECT) is kinematic, with "
+    "its velocity, and its hit dents",
+    "[bullet]")
+{
+    // A 1 x 4 x 4 m ram moved by the game through its motion state at 10 m/s into a parked 1,500 kg box car:
+    // btRigidBody marks a zero-mass body CF_STATIC_OBJECT, and the game adds CF_KINEMATIC_OBJECT to it.
+    BulletWorld bullet;
+    bullet.mWorld.setGravity(btVector3(0, 0, 0));
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
+    std::unique_ptr<bullet::BulletAdapter> adapter =
+        std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
+    const Vec3 half(2.0, 0.9, 0.7);
+    btBoxShape car_shape(btVector3(btScalar(half.x()), btScalar(half.y()), btScalar(half.z())));
+    btVector3 inertia;
+    car_shape.calculateLocalInertia(1500, inertia);
+    btDefaultMotionState car_motion(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 2)));
+    btRigidBody car(btRigidBody::btRigidBodyConstructionInfo(1500, &car_motion, &car_shape, inertia));
+    btBoxShape ram_shape(btVector3(0.5, 2, 2));
+    btDefaultMotionState ram_motion(btTransform(btQuaternion::getIdentity(), btVector3(2.6f, 0, 2)));
+    btRigidBody ram(btRigidBody::btRigidBodyConstructionInfo(0, &ram_motion, &ram_shape));
+    ram.setCollisionFlags(ram.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    ram.setActivationState(DISABLE_DEACTIVATION);
+    REQUIRE(ram.isStaticObject()); // what Bullet leaves on it: the case
+    bullet.mWorld.addRigidBody(&car);
+    bullet.mWorld.addRigidBody(&ram);
+    const BodyId car_body = adapter->AddBody(car).Get();
+    const BodyId ram_body = adapter->AddBody(ram).Get();
+    REQUIRE(damage.GetBodyState(ram_body)->mMotionType == EMotionType::Kinematic);
+    DeformableObjectSettings body;
+    body.mMesh = common::MakeBoxMesh(half, {16, 8, 6});
+    const Result<ObjectId> car_object = damage.CreateDeformableObject(car_body, body);
+    REQUIRE(car_object);
+    CrashCounter counter;
+    damage.AddListener(&counter);
+    const double speed = 10.0, step = 1.0 / 60.0;
+    bool moving_seen = false;
+    for (int i = 0; i < 20; ++i)
+    {
+        btTransform pose;
+        ram_motion.getWorldTransform(pose);
+        pose.setOrigin(pose.getOrigin() - btVector3(btScalar(speed * step), 0, 0));
+        ram_motion.setWorldTransform(pose);
+        bullet.mWorld.stepSimulation(btScalar(step), 1, btScalar(step));
+        // intent: the state Crumple holds for the ram is the velocity Bullet gave it from its motion
+        moving_seen = moving_seen || damage.GetBodyState(ram_body)->mLinearVelocity.x() < -0.99 * speed;
+    }
+    damage.Flush();
+    CHECK(moving_seen);
+    REQUIRE(counter.mCollisions >= 1);
+    // The car at rest takes the ram's (1 + e) m v along -x, as from a body of infinite mass.
+    double impulse = 0.0;
+    for (const Collision& collision : counter.mLog)
+        impulse += collision.TotalImpulse();
+    CHECK(impulse == Approx((1.0 + damage.GetSettings().mRestitution) * 1500.0 * speed).epsilon(1.0e-3));
+    const std::vector<Vec3>& positions = damage.GetObject(car_object.Get())->GetDeformer().GetPositions();
+    double front = -1e9;
+    for (const Vec3& p : positions)
+        front = std::max(front, p.x());
+    CHECK(front < half.x() - 0.02); // the struck front crushed back
+    damage.RemoveListener(&counter);
+    bullet.mWorld.removeRigidBody(&ram);
+    bullet.mWorld.removeRigidBody(&car);
+}

@@ -329,7 +329,10 @@ void BulletAdapter::PreTick(double)
     int snapshotted = 0;
     for (const MappedBody& mapped : mBodies)
     {
-        if (!mapped.mObject->isActive() || mapped.mObject->isStaticObject())
+        // intent: kinematic bodies moved by the game are snapshotted too (they carry CF_STATIC_OBJECT when
+        // made with mass 0, as Bullet's examples make them)
+        if (!mapped.mObject->isActive() ||
+            (mapped.mObject->isStaticObject() && !mapped.mObject->isKinematicObject()))
             continue;
         if (mDamage.SetBodyState(mapped.mBody, BulletBodyState(*mapped.mObject)))
             ++snapshotted;

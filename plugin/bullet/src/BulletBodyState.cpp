@@ -55,7 +55,9 @@ plugin::BodyState BulletBodyState(const btCollisionObject& inObject)
     SetShapeBounds(inObject, state);
 
     const btRigidBody* body = btRigidBody::upcast(&inObject);
-    if (body == nullptr || inObject.isStaticObject())
+    // intent: a kinematic body made the usual Bullet way (mass 0, then CF_KINEMATIC_OBJECT added) keeps the
+    // CF_STATIC_OBJECT that btRigidBody gave its zero mass: kinematic wins, as it does in Bullet's own step
+    if (body == nullptr || (inObject.isStaticObject() && !inObject.isKinematicObject()))
     {
         state.mMotionType = plugin::EMotionType::Static;
         return state;
