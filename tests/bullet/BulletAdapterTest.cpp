@@ -694,3 +694,64 @@ TEST_CASE(
     bullet.mWorld.removeRigidBody(&ram);
     bullet.mWorld.removeRigidBody(&car);
 }
+
+TEST_CASE("Bullet: a body the game removes from the damage world itself leaves the other bodies' damage on",
+          "[bullet]")
+{
+    // A crate on the ground and a car driving into a wall at 10 m/s; the game removes the crate's damage body
+    // (DamageWorld::RemoveBody, not the adapter's): the crate's contacts named a dead body, and the world
+    // refused each step's whole batch, the car's with it.
+    BulletWorld bullet;
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create().Get());
+    DamageWorld& damage = *damage_owner;
+    std::unique_ptr<bullet::BulletAdapter> adapter =
+        std::move(bullet::BulletAdapter::Create(bullet.mWorld, damage).Get());
+    btBoxShape ground_shape(btVector3(50, 50, 1)), crate_shape(btVector3(0.3f, 0.3f, 0.3f)),
+        car_shape(btVector3(2, 0.9f, 0.7f)), wall_shape(btVector3(1, 5, 5));
+    const auto make = [&](btCollisionShape& inShape, double inMass, const btVector3& inAt)
+    {
+        btVector3 inertia(0, 0, 0);
+        if (inMass > 0.0)
+            inShape.calculateLocalInertia(btScalar(inMass), inertia);
+        btRigidBody::btRigidBodyConstructionInfo info(btScalar(inMass), nullptr, &inShape, inertia);
+        info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), inAt);
+        auto body = std::make_unique<btRigidBody>(info);
+        bullet.mWorld.addRigidBody(body.get());
+        return body;
+    };
+    const std::unique_ptr<btRigidBody> ground = make(ground_shape, 0.0, btVector3(0, 0, -1));
+    const std::unique_ptr<btRigidBody> crate = make(crate_shape, 20.0, btVector3(-10, 0, 0.3f));
+    const std::unique_ptr<btRigidBody> car = make(car_shape, 1500.0, btVector3(0, 0, 0.7f));
+    const std::unique_ptr<btRigidBody> wall = make(wall_shape, 0.0, btVector3(6, 0, 2));
+    car->setLinearVelocity(btVector3(10, 0, 0));
+    REQUIRE(adapter->AddBody(*ground));
+    const BodyId crate_body = adapter->AddBody(*crate).Get();
+    const BodyId car_body = adapter->AddBody(*car).Get();
+    REQUIRE(adapter->AddBody(*wall));
+    DeformableObjectSettings body;
+    body.mMesh = common::MakeBoxMesh(Vec3(2.0, 0.9, 0.7), {16, 8, 6});
+    REQUIRE(damage.CreateDeformableObject(car_body, body));
+    CrashCounter counter;
+    damage.AddListener(&counter);
+    for (int i = 0; i < 3; ++i)
+        bullet.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+    REQUIRE(damage.RemoveBody(crate_body));
+    int refused = 0;
+    for (int i = 0; i < 60; ++i)
+    {
+        bullet.mWorld.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
+        refused += adapter->GetLastStepStats().mContactsRefused;
+    }
+    damage.Flush();
+    CHECK(refused == 0);
+    REQUIRE(counter.mCollisions >= 1);
+    bool car_hit_wall = false;
+    for (const Collision& collision : counter.mLog)
+        car_hit_wall = car_hit_wall || ((collision.mBodyA == car_body || collision.mBodyB == car_body) &&
+                                        collision.TotalImpulse() > 0.5 * 1500.0 * 10.0);
+    CHECK(car_hit_wall);
+    CHECK(adapter->FindBody(*crate) == crate_body); // still registered with the adapter
+    damage.RemoveListener(&counter);
+    for (btRigidBody* b : {wall.get(), car.get(), crate.get(), ground.get()})
+        bullet.mWorld.removeRigidBody(b);
+}

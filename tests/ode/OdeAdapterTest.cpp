@@ -134,6 +134,45 @@ TEST_CASE("ODE: a sphere dropped on a plane gets (1+e) m v, and agrees with ODE'
     CHECK(std::abs(peak_ode - impact.TotalImpulse()) <= DropScene::cMass * 9.81 * dt + erp_push + 0.01 * impact.TotalImpulse());
 }
 
+TEST_CASE("ODE: a body the game removes from the damage world itself leaves the other bodies' damage on",
+          "[ode]")
+{
+    // The drop scene with a second sphere beside the first; the game removes the second's damage body
+    // (DamageWorld::RemoveBody, not the adapter's) before both land: its contacts with the plane named a dead
+    // body, and the world refused each step's whole batch, the first sphere's landing with it.
+    DropScene scene;
+    DamageWorldSettings settings;
+    settings.mRestitution = 0.0;
+    std::unique_ptr<DamageWorld> damage_owner = std::move(DamageWorld::Create(settings).Get());
+    DamageWorld& damage = *damage_owner;
+    std::unique_ptr<ode::OdeAdapter> adapter = std::move(ode::OdeAdapter::Create(damage).Get());
+    scene.mAdapter = adapter.get();
+    dBodyID other = dBodyCreate(scene.mWorld);
+    dMass mass;
+    dMassSetSphereTotal(&mass, DropScene::cMass, DropScene::cRadius);
+    dBodySetMass(other, &mass);
+    dBodySetPosition(other, 3.0, 0.0, DropScene::cRadius + DropScene::cDrop);
+    dGeomSetBody(dCreateSphere(scene.mSpace, DropScene::cRadius), other);
+    const BodyId sphere_body = adapter->AddBody(scene.mSphere).Get();
+    const BodyId other_body = adapter->AddBody(other).Get();
+    REQUIRE(damage.RemoveBody(other_body));
+    CrashCounter counter;
+    damage.AddListener(&counter);
+    int refused = 0;
+    for (int i = 0; i < 240; ++i)
+    {
+        scene.Step(1.0 / 240.0);
+        refused += adapter->GetLastStepStats().mContactsRefused;
+    }
+    damage.Flush();
+    CHECK(refused == 0);
+    REQUIRE(counter.mCollisions >= 1);
+    CHECK(counter.mLog.front().mBodyB == sphere_body);
+    const double v_fall = std::sqrt(2.0 * 9.81 * DropScene::cDrop);
+    CHECK(counter.mLog.front().TotalImpulse() == Approx(DropScene::cMass * v_fall).epsilon(0.02));
+    damage.RemoveListener(&counter);
+}
+
 TEST_CASE("ODE: the box car crash dents the front, head-on and at 30 degrees", "[ode]")
 {
     for (double yaw : {0.0, 30.0})

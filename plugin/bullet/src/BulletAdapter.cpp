@@ -361,6 +361,10 @@ void BulletAdapter::PostTick(double inTimeStep)
         const auto b = mLookup.find(manifold->getBody1());
         if (a == mLookup.end() || b == mLookup.end())
             continue;
+        // intent: a body the game removed from the damage world itself (DamageWorld::RemoveBody, not ours) is
+        // left out as an unmapped one: its contacts would make the world refuse the whole step's batch
+        if (mDamage.GetBodyState(a->second) == nullptr || mDamage.GetBodyState(b->second) == nullptr)
+            continue;
         for (int p = 0; p < manifold->getNumContacts(); ++p)
         {
             const btManifoldPoint& point = manifold->getContactPoint(p);

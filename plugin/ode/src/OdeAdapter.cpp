@@ -331,7 +331,10 @@ void OdeAdapter::CollectContacts(dGeomID inGeom1, dGeomID inGeom2, const dContac
         return;
     const BodyId a = FindBodyOfGeom(inGeom1);
     const BodyId b = FindBodyOfGeom(inGeom2);
-    if (!a.IsValid() || !b.IsValid())
+    // intent: a body the game removed from the damage world itself (DamageWorld::RemoveBody, not ours) is
+    // left out as an unmapped one: its contacts would make the world refuse the whole step's batch
+    if (!a.IsValid() || !b.IsValid() || mDamage.GetBodyState(a) == nullptr ||
+        mDamage.GetBodyState(b) == nullptr)
         return;
     const double start = CpuSeconds();
     // intent: every return below passes through this, so the step's time has all of its calls

@@ -84,9 +84,12 @@ public:
     BulletAdapter& operator=(const BulletAdapter&) = delete;
 
     /// Registers a rigid body or static collision object with the damage world (its current state).
-    /// Contacts between unregistered objects are ignored. Refused when already registered.
+    /// Contacts between unregistered objects are ignored. Refused when already registered. The adapter reads
+    /// a registered object at every step: unregister it (RemoveBody) before the game destroys it.
     Result<plugin::BodyId> AddBody(btCollisionObject& inObject);
-    /// Unregisters an object and removes its body, deformable objects and open collisions from the damage world.
+    /// Unregisters an object and removes its body, deformable objects and open collisions from the damage
+    /// world. (A body the game removes from the damage world itself, DamageWorld::RemoveBody, stays
+    /// registered here and its contacts are left out, as an unregistered object's.)
     Status RemoveBody(const btCollisionObject& inObject);
     /// The damage body of an object, invalid when not registered.
     plugin::BodyId FindBody(const btCollisionObject& inObject) const;

@@ -59,11 +59,14 @@ public:
     /// Creates the adapter and the static environment body in inDamage (which must outlive it).
     static Result<std::unique_ptr<OdeAdapter>> Create(plugin::DamageWorld& inDamage, const OdeAdapterSettings& inSettings = {});
 
-    /// Registers a dynamic or kinematic body. Refused when already registered.
+    /// Registers a dynamic or kinematic body. Refused when already registered. The adapter reads a registered
+    /// body when its geoms collide: unregister it (RemoveBody) before the game destroys it.
     Result<plugin::BodyId> AddBody(dBodyID inBody);
     /// Registers a body-less geom as its own static damage body (e.g. a wall that can carry dents).
     Result<plugin::BodyId> AddStaticGeom(dGeomID inGeom);
-    /// Unregisters a body and removes it from the damage world.
+    /// Unregisters a body and removes it from the damage world. (A body the game removes from the damage
+    /// world itself, DamageWorld::RemoveBody, stays registered here and its contacts are left out, as an
+    /// unregistered body's.)
     Status RemoveBody(dBodyID inBody);
     /// Creates a rigid body for Crumple (debris: a prop's loose fragment, props::FragmentBody) in inWorld and
     /// registers it with the damage world: a dBody with the settings' mass and principal inertia (its centre of
