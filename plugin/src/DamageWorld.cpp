@@ -453,8 +453,14 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
         contact.mTime = event.mTime;
         const BodyId a = flip ? event.mBodyB : event.mBodyA;
         const BodyId b = flip ? event.mBodyA : event.mBodyB;
+        // intent: one engine step's contacts of a pair are one batch even when their times differ by
+        // round-off (a game that computes each contact's time): solved apart, each would take the pair's
+        // whole impulse
         auto batch = std::find_if(batches.begin(), batches.end(),
-                                  [&](const Batch& x) { return x.mA == a && x.mB == b && x.mTime == event.mTime; });
+                                  [&](const Batch& x) {
+                                      return x.mA == a && x.mB == b &&
+                                             std::abs(x.mTime - event.mTime) <= cSameStepTime;
+                                  });
         if (batch == batches.end())
             batch = batches.insert(batches.end(), Batch{a, b, event.mTime, {}});
         batch->mContacts.push_back(contact);
@@ -472,7 +478,10 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
         BodyState state_a = body_of(batch.mA).mState;
         BodyState state_b = body_of(batch.mB).mState;
         const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);
-        const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 && batch.mTime > previous->mTime &&
+        // intent: the same step's contacts submitted in a later call (a game that submits per manifold) also
+        // continue from what the earlier call's impulse left: they are the same impact, counted once
+        const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 &&
+                               batch.mTime >= previous->mTime - cSameStepTime &&
                                batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
         if (continues)
         {

@@ -99,9 +99,13 @@ public:
 
     /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
     /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
-    /// time together, and groups the closing ones into collisions. Refused whole on any bad contact. With
-    /// DamageWorldSettings::mDeferImpulses only the validation runs here: the contacts and their bodies'
-    /// states (as now) wait for the task the next Update starts, which does the rest.
+    /// time (within 1e-9 s) together, and groups the closing ones into collisions. Submit a step's contacts
+    /// in one call where you can: with a step and DamageWorldSettings::mCountImpactOnce, contacts of a pair
+    /// for a step already submitted (a game that submits per manifold) are solved from what the earlier
+    /// impulse left, as the same impact counted once, but apart from the first ones, not jointly with them.
+    /// Refused whole on any bad contact. With DamageWorldSettings::mDeferImpulses only the validation runs
+    /// here: the contacts and their bodies' states (as now) wait for the task the next Update starts, which
+    /// does the rest.
     /// @param[in] inTimeStep the engine step that produced them (s), or 0. With a step, a contact reported
     ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as
     ///            the engine's speculative contacts do; without one, gap contacts resolve their whole
@@ -193,6 +197,8 @@ private:
         Vec3 mLinearA, mAngularBodyA, mLinearB, mAngularBodyB;
     };
     static constexpr double cImpactMemorySteps = 1.5; ///< In steps: only the immediately following step continues
+    /// Contact times this close (s) are one engine step's: round-off apart, far below any engine's step
+    static constexpr double cSameStepTime = 1.0e-9;
     const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
     /// Drops the memories of every pair the body is in
     void ForgetMemoriesOf(BodyId inBody);
