@@ -111,9 +111,11 @@ void DamageWorld::Land()
     const std::vector<Collision> collisions = std::move(flight.mCollisions);
     const std::vector<std::vector<DentTarget>> targets = std::move(flight.mTargets);
     const std::vector<std::vector<ObjectDent>> dents = std::move(flight.mDents);
+    const std::vector<DamageListener*> listeners = std::move(flight.mListeners);
     flight.mCollisions.clear();
     flight.mTargets.clear();
     flight.mDents.clear();
+    flight.mListeners.clear();
     // Publish every dented object once, then tell the listeners, collision by collision.
     std::vector<DeformableObject*> published;
     for (const std::vector<DentTarget>& collision_targets : targets)
@@ -136,7 +138,6 @@ void DamageWorld::Land()
         }
     if (moved)
         ++mShapeRevision;
-    const std::vector<DamageListener*> listeners = mListeners;
     for (std::size_t i = 0; i < collisions.size(); ++i)
         for (DamageListener* listener : listeners)
             if (IsListening(listener))
@@ -679,6 +680,7 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
         flight.mSubmissions = std::move(mPending);
         mPending.clear();
         flight.mTargets = std::move(targets);
+        flight.mListeners = listeners;
         flight.mCollisions = std::move(inCollisions);
         flight.mDents.assign(flight.mCollisions.size(), {});
         flight.mTicket = mSettings.mJobs->mStartTask(mSettings.mJobs->mHost, &DamageWorld::RunDeferredDents, &flight);

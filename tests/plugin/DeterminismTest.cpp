@@ -214,3 +214,42 @@ TEST_CASE("The wall crash's meshes hash to their committed golden values", "[plu
         CHECK(HashPositions(run.mNormals) == golden.mNormals);
     }
 }
+
+TEST_CASE("Deferred dents: a collision's OnCollision goes to the listeners that had its OnBeforeCollision",
+          "[plugin]")
+{
+    // The dispatch calls OnBeforeCollision at one Update, the landing OnCollision at the next: a listener
+    // added in between heard no OnBeforeCollision of that collision (a recorder captures its objects there),
+    // so it must not hear its OnCollision either; it hears the collisions dispatched after it was added.
+    struct CountingListener : DamageListener
+    {
+        void OnBeforeCollision(const Collision&) override { ++mBefore; }
+        void OnCollision(const Collision&, std::span<const ObjectDent>) override { ++mAfter; }
+        int mBefore = 0, mAfter = 0;
+    };
+    const ThreadJobSystem jobs(2);
+    DamageWorldSettings settings;
+    settings.mJobs = &jobs.Get();
+    settings.mDeferDents = true;
+    WorldFixture fixture(4000, {8, 6, 6}, settings);
+    CountingListener early, late;
+    fixture.mWorld.AddListener(&early);
+    const double dt = 1.0 / 120.0;
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(
+        fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 0.0)}, dt));
+    (void)fixture.mWorld.Update(1.0); // the first collision's window closed: dispatched, its dent in flight
+    REQUIRE(fixture.mWorld.HasDentsInFlight());
+    CHECK(early.mBefore == 1);
+    fixture.mWorld.AddListener(&late);
+    REQUIRE(fixture.mWorld.SetBodyState(fixture.mCar, fixture.CarState(10.0)));
+    REQUIRE(
+        fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.0, 0.0, 2.0)}, dt));
+    (void)fixture.mWorld.Flush(); // lands the first, dispatches and lands the second
+    CHECK(early.mBefore == 2);
+    CHECK(early.mAfter == 2);
+    CHECK(late.mBefore == 1);
+    CHECK(late.mAfter == 1); // the second collision's only
+    fixture.mWorld.RemoveListener(&late);
+    fixture.mWorld.RemoveListener(&early);
+}

@@ -24,7 +24,10 @@ struct CRUMPLE_API ObjectDent
 /// game audio, particles, network replication and recorders (a listener per world, no global callback).
 ///
 /// Threading: called synchronously from DamageWorld::Update/Flush on the calling thread, in dispatch order
-/// (start time, body ids, creation order). A listener must not call back into the same world.
+/// (start time, body ids, creation order). A listener may add or remove listeners of the world (itself
+/// included: a dispatch calls the ones registered when it began that are still registered) and read it, but
+/// must not change its bodies, objects or contacts (no SubmitContacts, SetBodyState, RemoveBody,
+/// ResetDamage, LoadDamage, Update or Flush from a callback).
 class CRUMPLE_API DamageListener
 {
 public:

@@ -114,7 +114,8 @@ public:
     ///            takes to stop it).
     Status SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep = 0.0);
 
-    /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners. With
+    /// Dispatches the collisions whose time window has closed at inTime (s): dents, then listeners. A time
+    /// that is not finite closes no collision (Flush closes them all); work in flight still lands. With
     /// deferred dents it first lands the dents the previous Update started (their objects dented, vertices
     /// moved and OnCollision calls are in this report), then starts the new ones (counted as dispatched).
     /// With deferred impulses the landed task also solved the contacts submitted before the previous Update:
@@ -261,6 +262,9 @@ private:
         std::vector<Collision> mCollisions;
         std::vector<std::vector<DentTarget>> mTargets; ///< Per collision, in dispatch order
         std::vector<std::vector<ObjectDent>> mDents;   ///< Per collision, written by the task
+        /// The listeners registered when the batch was dispatched (OnBeforeCollision): the landing's
+        /// OnCollision goes to those still registered, not to one added since
+        std::vector<DamageListener*> mListeners;
         std::uint64_t mTicket = 0;
         bool mActive = false;
     };
