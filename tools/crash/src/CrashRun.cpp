@@ -35,6 +35,51 @@ namespace crumple::crash
 namespace
 {
 
+// The loaded body's size (m, once scaled) against what a car can be: refused outside 0.1-1000 m (a unit off
+// by a thousand: a 4 mm or a 4 km car runs and fails its sanity checks with no word of the cause) or under
+// 0.1 m along any axis (a flat or squashed body: the engines let a wall through it, or drop it through the
+// ground); warned of outside a road vehicle's 1-30 m (a unit off by ten; a scale model may be meant), and
+// refused so under inStrict.
+Status CheckBodySize(const VehicleSpec& inVehicle, const Vec3& inSize, bool inStrict,
+                     std::vector<std::string>& outWarnings)
+{
+    const std::string file = inVehicle.mMesh.filename().string();
+    char text[320];
+    if (!(inSize.maxCoeff() >= cMinMeshLength && inSize.maxCoeff() <= cMaxMeshLength))
+    {
+        char scaled[64];
+        if (inVehicle.mMeshUnit > 0.0)
+            std::snprintf(scaled, sizeof(scaled), "mesh_unit_m %g", inVehicle.mMeshUnit);
+        else
+            std::snprintf(scaled, sizeof(scaled), "scaled to mesh_length_m %g along x",
+                          inVehicle.mMeshLength);
+        std::snprintf(
+            text, sizeof(text),
+            "%s measures %.3g m across once scaled (%s): a car body must measure %g-%g m; is the unit right?",
+            file.c_str(), inSize.maxCoeff(), scaled, cMinMeshLength, cMaxMeshLength);
+        return MakeError(EError::OutOfRange, text);
+    }
+    if (!(inSize.minCoeff() >= cMinMeshLength))
+    {
+        std::snprintf(text, sizeof(text),
+                      "%s measures %.3g x %.3g x %.3g m (length, width, height) once scaled: a car body must "
+                      "measure at least %g m along each axis (a flat sheet or a squashed mesh cannot crash)",
+                      file.c_str(), inSize.x(), inSize.y(), inSize.z(), cMinMeshLength);
+        return MakeError(EError::OutOfRange, text);
+    }
+    if (!(inSize.maxCoeff() >= cRoadVehicleMinLength && inSize.maxCoeff() <= cRoadVehicleMaxLength))
+    {
+        std::snprintf(text, sizeof(text),
+                      "%s is %.3g m long once scaled, outside a road vehicle's %g-%g m: is the unit right "
+                      "(mesh_unit_m, mesh_length_m)?",
+                      file.c_str(), inSize.maxCoeff(), cRoadVehicleMinLength, cRoadVehicleMaxLength);
+        if (inStrict)
+            return MakeError(EError::InvalidArgument, std::string(text) + "; refused by --strict");
+        outWarnings.push_back(text);
+    }
+    return Status::Ok();
+}
+
 // The collision window of a crash run (s).
 constexpr double cCrashPulseWindow = 0.15;
 // m: how far inside an offset wall's edge its wall gap is measured (MeasureWallGap's WallReach): the crush
@@ -137,54 +182,10 @@ Result<common::EngineCrashSettings> SceneSettings(const CrashScenario& inScenari
         Result<samples::CarBody> body = samples::LoadCarBody(mesh);
         if (body.HasError())
             return body.GetError();
-        // intent: a unit off by a thousand gives a 4 mm or a 4 km car that runs and fails its sanity checks
-        // with no word of the cause
-        if (const ffd::AlignedBox box = ffd::BoundingBox(body.Get().mMesh.mPositions);
-            !((box.mMax - box.mMin).maxCoeff() >= cMinMeshLength && (box.mMax - box.mMin).maxCoeff() <= cMaxMeshLength))
-        {
-            char scaled[64];
-            if (vehicle.mMeshUnit > 0.0)
-                std::snprintf(scaled, sizeof(scaled), "mesh_unit_m %g", vehicle.mMeshUnit);
-            else
-                std::snprintf(scaled, sizeof(scaled), "scaled to mesh_length_m %g along x", vehicle.mMeshLength);
-            char text[320];
-            std::snprintf(text, sizeof(text), "%s measures %.3g m across once scaled (%s): a car body must measure %g-%g m; is the unit right?",
-                          vehicle.mMesh.filename().string().c_str(), (box.mMax - box.mMin).maxCoeff(), scaled, cMinMeshLength, cMaxMeshLength);
-            return MakeError(EError::OutOfRange, text);
-        }
-        // intent: a flat or paper-thin body (a single sheet, a mesh squashed by a wrong axis or unit) has a
-        // collision box the engines let a wall through, or drop through the ground: refused, not run
-        if (const Vec3 size = ffd::BoundingBox(body.Get().mMesh.mPositions).mMax -
-                              ffd::BoundingBox(body.Get().mMesh.mPositions).mMin;
-            !(size.minCoeff() >= cMinMeshLength))
-        {
-            char text[320];
-            std::snprintf(
-                text, sizeof(text),
-                "%s measures %.3g x %.3g x %.3g m (length, width, height) once scaled: a car body must "
-                "measure at least %g m along each axis (a flat sheet or a squashed mesh cannot crash)",
-                vehicle.mMesh.filename().string().c_str(), size.x(), size.y(), size.z(), cMinMeshLength);
-            return MakeError(EError::OutOfRange, text);
-        }
-        // intent: a unit off by ten (millimetres read as centimetres: a 40 m car) runs within the bounds
-        // above; a road vehicle is 1-30 m long, so a body outside that is warned of (a scale model may be
-        // meant)
-        if (const double length = (ffd::BoundingBox(body.Get().mMesh.mPositions).mMax -
-                                   ffd::BoundingBox(body.Get().mMesh.mPositions).mMin)
-                                      .maxCoeff();
-            !(length >= cRoadVehicleMinLength && length <= cRoadVehicleMaxLength))
-        {
-            char text[320];
-            std::snprintf(
-                text, sizeof(text),
-                "%s is %.3g m long once scaled, outside a road vehicle's %g-%g m: is the unit right "
-                "(mesh_unit_m, mesh_length_m)?",
-                vehicle.mMesh.filename().string().c_str(), length, cRoadVehicleMinLength,
-                cRoadVehicleMaxLength);
-            if (inOptions.mStrict)
-                return MakeError(EError::InvalidArgument, std::string(text) + "; refused by --strict");
-            outWarnings.push_back(text);
-        }
+        const ffd::AlignedBox box = ffd::BoundingBox(body.Get().mMesh.mPositions);
+        if (Status sized = CheckBodySize(vehicle, box.mMax - box.mMin, inOptions.mStrict, outWarnings);
+            !sized)
+            return sized.GetError();
         if (const std::vector<std::string>& unmatched = body.Get().mUnmatchedRigidPartNames;
             vehicle.mMeshRigidPartsGiven && !unmatched.empty())
         {
