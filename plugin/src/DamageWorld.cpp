@@ -107,7 +107,8 @@ void DamageWorld::Land()
     mLanded.mSubmissionsDropped += flight.mSubmissionsDropped;
     flight.mSubmissionsDropped = 0;
     flight.mSubmissions.clear();
-    // Take the batch out first: a listener may update the world (and start the next batch) from its callback.
+    // Take the batch out first: a listener that updates the world from its callback (DamageListener says it
+    // must not) would start the next batch in this slot.
     const std::vector<Collision> collisions = std::move(flight.mCollisions);
     const std::vector<std::vector<DentTarget>> targets = std::move(flight.mTargets);
     const std::vector<std::vector<ObjectDent>> dents = std::move(flight.mDents);
@@ -672,8 +673,8 @@ UpdateReport DamageWorld::Dispatch(std::vector<Collision> inCollisions)
                     collision_targets.push_back({id, &mObjects[id.mValue].mObject.front(), side});
             targets.push_back(std::move(collision_targets));
         }
-        // A listener may have landed or dispatched meanwhile (it may call the world): land whatever that
-        // started before this batch takes the slot.
+        // A listener that called the world against DamageListener's contract may have landed or dispatched
+        // meanwhile: land whatever that started before this batch takes the slot.
         Land();
         InFlight& flight = *mInFlight;
         flight.mWorld = this;
