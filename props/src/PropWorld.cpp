@@ -43,9 +43,26 @@ void PropWorld::WaitForStep() const
     mInFlight->mWaited = true;
 }
 
+namespace
+{
+
+// intent: a FemProp that was moved from has no solver left: as a prop it would take its body's collisions
+// and refuse every one, and a recording of it would not replay
+Status CheckNotEmpty(const FemProp& inProp, const char* inWhat)
+{
+    if (inProp.GetNodeCount() > 0)
+        return Status::Ok();
+    return MakeError(EError::InvalidArgument,
+                     std::string(inWhat) + ": the prop is empty (no nodes: a FemProp that was moved from)");
+}
+
+} // namespace
+
 Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
 {
     WaitForStep(); // intent: the list of props may grow (move) only while no task steps them
+    if (Status filled = CheckNotEmpty(ioProp, "PropWorld::AddProp"); filled.HasError())
+        return filled.GetError();
     if (mWorld->GetBodyState(inBody) == nullptr)
         return MakeError(EError::OutOfRange, "PropWorld::AddProp: body " + std::to_string(inBody.mValue) +
                                                  " is not in the world");
@@ -74,6 +91,8 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
 
 Status PropWorld::CheckCanAdd(const FemProp& inProp) const
 {
+    if (Status filled = CheckNotEmpty(inProp, "PropWorld::CheckCanAdd"); filled.HasError())
+        return filled;
     if (mRecorder == nullptr)
         return Status::Ok();
     if (Status recorder = mRecorder->GetStatus(); recorder.HasError())

@@ -323,6 +323,26 @@ TEST_CASE("PropWorld refuses an unknown body, a second prop on a body and a bad 
     CHECK(props->GetProp(PropId{0})->GetCpuSolver()->GetPositions() == positions);
 }
 
+TEST_CASE("PropWorld refuses an empty prop (a FemProp moved from), and CheckCanAdd says so first", "[props]")
+{
+    // Taken, it would hold its body and refuse every collision on it (no elements), and a recording of it
+    // would not replay (a mesh of no node).
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    FemProp panel = Panel(false);
+    const FemProp kept = std::move(panel);
+    REQUIRE(panel.GetNodeCount() == 0);
+    REQUIRE(kept.GetNodeCount() > 0);
+    CHECK(props->CheckCanAdd(panel).GetError().mCode == EError::InvalidArgument);
+    const Result<PropId> added = props->AddProp(fixture.mWall, std::move(panel));
+    REQUIRE(added.HasError());
+    CHECK(added.GetError().mMessage.find("empty") != std::string::npos);
+    CHECK(props->GetPropCount() == 0);
+    CHECK_FALSE(props->FindProp(fixture.mWall).IsValid());
+    // The body is free for a real prop.
+    CHECK(props->AddProp(fixture.mWall, Panel(false)).IsValid());
+}
+
 TEST_CASE("PropWorld::Prepare factors every implicit prop ahead of its first hit, and refuses a bad step", "[props]")
 {
     common::WorldFixture fixture;

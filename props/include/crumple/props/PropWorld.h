@@ -126,12 +126,15 @@ public:
     PropWorld& operator=(const PropWorld&) = delete;
 
     /// Binds inProp to body inBody of the world (one prop per body) and hands a CPU prop the world's job
-    /// system. Refused, and inProp left as it was, when the body does not exist or already has a prop, or,
-    /// while recording, when the prop cannot be recorded (one that has already stepped).
+    /// system. Refused, and inProp left as it was, when the prop is empty (a FemProp moved from), the body
+    /// does not exist or already has a prop, or, while recording, when the prop cannot be recorded (one that
+    /// has already stepped). A prop stays for the PropWorld's lifetime: one whose body the game removes keeps
+    /// its FEM stepping until it sleeps (its pieces are no longer taken).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
-    /// What AddProp would refuse of inProp itself, before its body exists: while recording, a prop that cannot
-    /// be recorded or a recorder that has failed or closed. (AddProp then refuses only a body that is not in
-    /// the world or already has a prop, and a write error.) Changes nothing.
+    /// What AddProp would refuse of inProp itself, before its body exists: an empty prop, and while
+    /// recording, a prop that cannot be recorded or a recorder that has failed or closed. (AddProp then
+    /// refuses only a body that is not in the world or already has a prop, and a write error.) Changes
+    /// nothing.
     Status CheckCanAdd(const FemProp& inProp) const;
 
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
