@@ -3,6 +3,7 @@
 #include <crumple/ffd/DropLooseSlivers.h>
 
 #include "SeamTwins.h"
+#include "SplitTriangle.h"
 
 #include <algorithm>
 #include <array>
@@ -16,12 +17,6 @@ namespace crumple::ffd
 
 namespace
 {
-
-std::uint64_t UndirectedKey(std::uint32_t inA, std::uint32_t inB)
-{
-    const auto [low, high] = std::minmax(inA, inB);
-    return (static_cast<std::uint64_t>(low) << 32) | high;
-}
 
 bool IsSliver(const std::vector<Vec3>& inPositions, const std::array<std::uint32_t, 3>& inTriangle)
 {
@@ -47,7 +42,7 @@ Result<std::size_t> DropLooseSlivers(TriangleMesh& ioMesh)
         {
             const std::uint32_t a = twins[triangle[corner]], b = twins[triangle[(corner + 1) % 3]];
             if (a != b)
-                ++uses[UndirectedKey(a, b)];
+                ++uses[UndirectedEdgeKey(a, b)];
         }
     std::vector<std::array<std::uint32_t, 3>> kept;
     kept.reserve(ioMesh.mTriangles.size());
@@ -58,7 +53,7 @@ Result<std::size_t> DropLooseSlivers(TriangleMesh& ioMesh)
         {
             const std::uint32_t a = twins[triangle[corner]], b = twins[triangle[(corner + 1) % 3]];
             // intent: an edge it shares with exactly one other triangle: without it that edge would open
-            bounds_something = a != b && uses[UndirectedKey(a, b)] == 2;
+            bounds_something = a != b && uses[UndirectedEdgeKey(a, b)] == 2;
         }
         if (bounds_something)
             kept.push_back(triangle);
