@@ -3,6 +3,7 @@
 // The Cauchy stress an implicit step's force pass hands to fracture (TetElasticForces' outCauchyStress)
 // against the stress pass it replaces (TetCauchyStress), and the stress pass limited to the elements the
 // force passes skip.
+#include "AnchorGridLayer.h"
 #include "DrawVec3.h"
 #include "SmallTetBlock.h"
 #include "TetElementPass.h"
@@ -109,9 +110,7 @@ TEST_CASE("Pass stress: after a step in which elements flowed, fracture judges t
     TetSolverSettings solver_settings;
     solver_settings.mGravity = Vec3::Zero();
     TetSolver bar = TetSolver::Create(TetGrid(grid).Get(), settings, solver_settings).Get();
-    for (int j = 0; j <= 1; ++j)
-        for (int k = 0; k <= 1; ++k)
-            REQUIRE(bar.SetNodeFixed(TetGridNode(grid.mCellCount, 0, j, k), true).IsValid());
+    test::AnchorGridLayer(bar, grid.mCellCount, 0);
     int flowed = 0;
     for (int step = 0; step < 4; ++step)
     {
