@@ -95,7 +95,11 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
     {
         const PropId prop{static_cast<std::uint32_t>(index)};
         if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
+        {
+            // its body left the world, or the prop was removed: no shape to give again
+            mShapePending[index] = 0;
             continue;
+        }
         Result<std::optional<std::vector<std::vector<Vec3>>>> shape = mProps->TakeChangedShape(prop, mSettings.mShapeCellSize, mSettings.mShapeTolerance);
         if (!shape)
             return shape.GetError();

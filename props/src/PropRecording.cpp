@@ -438,8 +438,9 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
         {
             const plugin::Collision& collision = inReplay.mCollisions[next_collision];
             for (std::size_t index = 0; index < props.size(); ++index)
-                if (ReplayedProp& prop = props[index]; added_after[index] <= next_collision &&
-                                                       (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB))
+                if (ReplayedProp& prop = props[index];
+                    !prop.mRemoved && added_after[index] <= next_collision &&
+                    (prop.mBody == collision.mBodyA || prop.mBody == collision.mBodyB))
                     if (Status status = prop.mProp.ApplyCollision(collision, prop.mBody); status.HasError())
                         return status;
         }
@@ -467,15 +468,19 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             queued = true;
             continue;
         }
-        const bool prop_record = extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added) || step_record ||
-                                 extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose);
+        const bool prop_record = extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added) ||
+                                 step_record ||
+                                 extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose) ||
+                                 extension.mTag == static_cast<std::uint32_t>(EPropRecord::Removed);
         any_prop_record = any_prop_record || prop_record;
         if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Added))
         {
             Result<PropSetup> setup = DecodePropSetup(extension.mPayload);
             if (setup.HasError())
                 return MakeError(setup.GetError().mCode, where + setup.GetError().mMessage);
-            if (std::any_of(props.begin(), props.end(), [&](const ReplayedProp& p) { return p.mBody == setup.Get().mBody; }))
+            if (std::any_of(props.begin(), props.end(),
+                            [&](const ReplayedProp& p)
+                            { return !p.mRemoved && p.mBody == setup.Get().mBody; }))
                 return MakeError(EError::CorruptData, where + "a second prop for the same body");
             Result<fem::TetSolver> solver = RebuildProp(setup.Get());
             if (solver.HasError())
@@ -485,7 +490,7 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             FemProp prop = FemProp::FromSolver(ioProvider, std::move(solver.Get()), backend);
             if (Status spread = prop.SetContactSpread(setup.Get().mContactSpread); spread.HasError())
                 return MakeError(EError::CorruptData, where + spread.GetError().mMessage);
-            props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop)});
+            props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop), false});
             added_after.push_back(static_cast<std::size_t>(extension.mAfterCollisions));
             pieces.emplace_back();
         }
@@ -496,7 +501,10 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             if (reader.Failed() || reader.Remaining() != 0)
                 return MakeError(EError::CorruptData, where + "a step record of the wrong length");
             for (ReplayedProp& prop : props)
-                if (Result<fem::TetStepResult> result = prop.mProp.Step(step); result.HasError())
+                if (Result<fem::TetStepResult> result = prop.mRemoved
+                                                            ? Result<fem::TetStepResult>(fem::TetStepResult{})
+                                                            : prop.mProp.Step(step);
+                    result.HasError())
                     return MakeError(result.GetError().mCode, where + result.GetError().mMessage);
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose))
@@ -504,8 +512,11 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             ByteReader reader(extension.mPayload);
             const std::uint32_t prop = reader.ReadU32();
             const std::uint32_t count = reader.ReadU32();
-            if (reader.Failed() || prop >= props.size() || reader.Remaining() != 4 * static_cast<std::size_t>(count))
-                return MakeError(EError::CorruptData, where + "a loose-piece record of no known prop or of the wrong length");
+            if (reader.Failed() || prop >= props.size() || props[prop].mRemoved ||
+                reader.Remaining() != 4 * static_cast<std::size_t>(count))
+                return MakeError(
+                    EError::CorruptData,
+                    where + "a loose-piece record of no known prop, of a removed one or of the wrong length");
             FemProp& solver = props[prop].mProp;
             // intent: every node checked before any is fixed
             std::vector<int> nodes(count);
@@ -531,6 +542,16 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
                         "replay its props)");
             if (Status fixed = solver.SetNodesLeft(nodes); fixed.HasError())
                 return MakeError(fixed.GetError().mCode, where + fixed.GetError().mMessage);
+        }
+        else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Removed))
+        {
+            ByteReader reader(extension.mPayload);
+            const std::uint32_t prop = reader.ReadU32();
+            if (reader.Failed() || reader.Remaining() != 0 || prop >= props.size() || props[prop].mRemoved)
+                return MakeError(EError::CorruptData,
+                                 where +
+                                     "a removal of no known prop, of a removed one or of the wrong length");
+            props[prop].mRemoved = true;
         }
         // Other tags belong to other layers.
     }

@@ -89,6 +89,43 @@ Result<PropId> PropWorld::AddProp(plugin::BodyId inBody, FemProp&& ioProp)
     return PropId{static_cast<std::uint32_t>(mProps.size() - 1)};
 }
 
+Status PropWorld::RemoveProp(PropId inProp)
+{
+    // intent: the task of a step in flight reads every prop; the caller lands it first (as StartStep asks)
+    if (HasStepInFlight())
+        return MakeError(EError::InvalidArgument,
+                         "PropWorld::RemoveProp: a step is in flight; LandStep first");
+    if (inProp.mValue >= mProps.size())
+        return MakeError(EError::OutOfRange,
+                         "PropWorld::RemoveProp: no prop " + std::to_string(inProp.mValue));
+    if (mProps[inProp.mValue].mRemoved)
+        return MakeError(EError::InvalidArgument, "PropWorld::RemoveProp: prop " +
+                                                      std::to_string(inProp.mValue) + " was removed already");
+    if (mRecorder != nullptr)
+    {
+        ByteWriter record;
+        record.WriteU32(inProp.mValue);
+        if (Status status = mRecorder->WriteExtension(static_cast<std::uint32_t>(EPropRecord::Removed),
+                                                      record.GetBytes());
+            status.HasError())
+            return status;
+    }
+    const plugin::BodyId body = mProps[inProp.mValue].mBody;
+    // intent: everything of the prop goes (its FEM with its device buffers, hits, shape, forecast); the slot
+    // stays so that no later prop takes its id
+    Prop& prop = mProps[inProp.mValue];
+    {
+        const FemProp released = std::move(prop.mProp); // its solver and device buffers go with this
+    }
+    Prop cleared{.mBody = plugin::BodyId(), .mProp = std::move(prop.mProp)}; // moved from: empty
+    cleared.mRemoved = true;
+    prop = std::move(cleared);
+    // intent: a body the game keeps goes back to the world's time window, as before AddProp
+    if (mWorld->GetBodyState(body) != nullptr)
+        (void)mWorld->SetDispatchEachStep(body, false); // the body exists: checked
+    return Status::Ok();
+}
+
 Status PropWorld::CheckCanAdd(const FemProp& inProp) const
 {
     if (Status filled = CheckNotEmpty(inProp, "PropWorld::CheckCanAdd"); filled.HasError())
@@ -125,6 +162,12 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
         return recorder;
     if (!ioRecorder->IsOpen())
         return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: the recorder is closed");
+    // intent: a replay numbers the props in the order the recording adds them; a removed one would shift the
+    // ids of those after it
+    if (std::any_of(mProps.begin(), mProps.end(), [](const Prop& inProp) { return inProp.mRemoved; }))
+        return MakeError(
+            EError::InvalidArgument,
+            "PropWorld::AttachRecorder: a prop was removed; attach the recorder before the first RemoveProp");
     // intent: collisions dispatched before the recording reach the props at the next step; a replay would
     // not have them
     if (!mQueued.empty())
@@ -155,19 +198,21 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
 FemProp* PropWorld::GetProp(PropId inProp)
 {
     WaitForStep();
-    return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
+    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].mRemoved ? &mProps[inProp.mValue].mProp
+                                                                            : nullptr;
 }
 
 const FemProp* PropWorld::GetProp(PropId inProp) const
 {
     WaitForStep();
-    return inProp.mValue < mProps.size() ? &mProps[inProp.mValue].mProp : nullptr;
+    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].mRemoved ? &mProps[inProp.mValue].mProp
+                                                                            : nullptr;
 }
 
 PropId PropWorld::FindProp(plugin::BodyId inBody) const
 {
     for (std::size_t index = 0; index < mProps.size(); ++index)
-        if (mProps[index].mBody == inBody)
+        if (!mProps[index].mRemoved && mProps[index].mBody == inBody)
             return PropId{static_cast<std::uint32_t>(index)};
     return PropId{};
 }
@@ -187,7 +232,8 @@ Status PropWorld::StartStep(double inDeltaTime)
         return MakeError(EError::InvalidArgument, "PropWorld::Step: a step is in flight; LandStep first");
     // intent: a step some prop refuses is refused before any prop steps or the recording takes it
     for (std::size_t index = 0; index < mProps.size(); ++index)
-        if (Status valid = mProps[index].mProp.CheckStep(inDeltaTime); valid.HasError())
+        if (Status valid = mProps[index].mRemoved ? Status::Ok() : mProps[index].mProp.CheckStep(inDeltaTime);
+            valid.HasError())
         {
             Error error = valid.GetError();
             error.mMessage = "PropWorld::Step: prop " + std::to_string(index) + ": " + error.mMessage;
@@ -251,7 +297,7 @@ void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
         ApplyToProps(collision.mCollision, collision.mPropCount, mine, collision.mStrikerSpeeds,
                      ioFlight.mTally);
     for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
-        if (mine(index))
+        if (mine(index) && !mProps[index].mRemoved)
         {
             const bool integrated = StepProp(ioFlight, index);
             // intent: only where the step runs as a task of its own (inline, the calls would do the same work
@@ -323,7 +369,7 @@ Status PropWorld::Prepare(double inDeltaTime)
         return valid;
     WaitForStep();
     for (Prop& prop : mProps)
-        if (Status prepared = prop.mProp.Prepare(inDeltaTime); !prepared)
+        if (Status prepared = prop.mRemoved ? Status::Ok() : prop.mProp.Prepare(inDeltaTime); !prepared)
             return prepared; // cannot happen for a valid step: kept for a future backend's refusal
     return Status::Ok();
 }
@@ -479,6 +525,9 @@ Status PropWorld::ValidateShapeQuery(PropId inProp, double inCellSize, const cha
 {
     if (inProp.mValue >= mProps.size())
         return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": no prop " + std::to_string(inProp.mValue));
+    if (mProps[inProp.mValue].mRemoved)
+        return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": prop " +
+                                                 std::to_string(inProp.mValue) + " was removed");
     if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))
         return MakeError(std::isfinite(inCellSize) ? EError::InvalidArgument : EError::NonFinite,
                          std::string("PropWorld::") + inWhat + ": the cell size must be finite and > 0 m");

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace crumple::common
 {
@@ -205,6 +206,15 @@ Result<plugin::BodyId> BulletWallCrash::MakeDebrisBody(const plugin::ConvexBodyS
 Result<plugin::BodyId> BulletWallCrash::MakePropBody(const plugin::PropBodySettings& inSettings)
 {
     return mAdapter->CreatePropBody(inSettings);
+}
+
+Status BulletWallCrash::RemoveMadeBody(plugin::BodyId inBody)
+{
+    btRigidBody* body = mAdapter->GetConvexBody(inBody);
+    if (body == nullptr)
+        return MakeError(EError::OutOfRange, "BulletWallCrash::RemoveMadeBody: body " +
+                                                 std::to_string(inBody.mValue) + " is none the scene made");
+    return mAdapter->RemoveBody(*body);
 }
 
 plugin::BodyState BulletWallCrash::GetCarState() const

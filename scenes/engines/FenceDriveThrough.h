@@ -39,6 +39,10 @@ struct FenceDriveSettings
     double mContactSpread = 0.0;   ///< The fence FEM's contact spread radius (m; FemProp::SetContactSpread)
     props::EFemBackend mBackend = props::EFemBackend::Cpu; ///< Where the fence's FEM runs (asked)
     gpu::ComputeDeviceProvider* mProvider = nullptr;       ///< The device for mBackend Gpu (none: the CPU)
+    /// At this step (before the engine's), the fence goes as a restarted level's would and a fresh one takes
+    /// its place: PropWorld::RemoveProp, the adapter's RemoveBody for its held body and its pieces' bodies,
+    /// then the same fence added again (-1: never)
+    int mRestartFenceAtStep = -1;
 };
 
 /// What a drive through the fence did, and what it cost.
@@ -70,6 +74,11 @@ struct FenceRun
     int mNotConverged = 0; ///< Steps whose implicit solve stopped at its iteration limits
     /// #L of the fence's links, 1 where one broke (empty on the GPU backend)
     std::vector<std::uint8_t> mBroken;
+    /// mRestartFenceAtStep: the bodies removed (the fence's and its pieces'), and whether each of them, and
+    /// the removed prop, was gone from the damage world and the prop world afterwards; the fresh fence is the
+    /// one the other figures are of
+    int mRemovedBodies = 0;
+    bool mRemovedGone = false;
 };
 
 /// A 4 m wooden fence across the car's path: 5 cm planks in cubes of 2.5 cm (two across each plank: fracture
@@ -138,7 +147,9 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         props, std::move(engine), {.mShapeCellSize = cShapeSize, .mShapeTolerance = cShapeTolerance, .mMinPieceMass = cMinBodyMass});
     if (!held)
         return held.GetError();
-    if (inSettings.mFence)
+    // The fence: its held body (the adapter's), its FEM and the prop world's prop, prepared as a game does at
+    // level load (the first hit does not factor the fence's implicit system).
+    const auto add_fence = [&]() -> Status
     {
         Result<fem::TetFence> fence = fem::MakeTetFence(DriveThroughFenceSettings());
         Result<fem::PropMaterialPreset> wood = fem::MakePropMaterialPreset(fem::EPropMaterial::Wood);
@@ -156,16 +167,38 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
         fence_body = added.Get().mBody;
         fence_prop = added.Get().mProp;
         const props::PropBody& made = added.Get().mMade;
-        // At level load, as a game would: the first hit does not factor the fence's implicit system.
         const double prepare_start = ThreadCpuMs();
         if (Status prepared = props.Prepare(settings.mTimeStep); !prepared)
-            return prepared.GetError();
+            return prepared;
         run.mPrepareCpuMs = ThreadCpuMs() - prepare_start;
         run.mFenceMass = made.mBody.mMass;
         run.mFenceTets = static_cast<int>(made.mMesh.GetTets().size());
         run.mPiecesBefore = made.mBody.mPieces.size();
         fence_position = made.mBody.mPosition;
-    }
+        return Status::Ok();
+    };
+    if (inSettings.mFence)
+        if (Status added = add_fence(); !added)
+            return added.GetError();
+    std::vector<plugin::BodyId> piece_bodies; // the loose pieces' bodies made so far
+    // A restarted level: the fence, its body and its pieces' bodies go; a fresh fence takes its place.
+    const auto restart_fence = [&]() -> Status
+    {
+        const props::PropId removed_prop = fence_prop;
+        std::vector<plugin::BodyId> removed = piece_bodies;
+        removed.push_back(fence_body);
+        if (Status gone = props.RemoveProp(removed_prop); !gone)
+            return gone;
+        for (const plugin::BodyId body : removed)
+            if (Status gone = scene.RemoveMadeBody(body); !gone)
+                return gone;
+        piece_bodies.clear();
+        run.mRemovedBodies = static_cast<int>(removed.size());
+        run.mRemovedGone = props.GetProp(removed_prop) == nullptr;
+        for (const plugin::BodyId body : removed)
+            run.mRemovedGone = run.mRemovedGone && scene.GetDamage().GetBodyState(body) == nullptr;
+        return add_fence();
+    };
 
     run.mSpeedBefore = scene.GetCarState().mLinearVelocity.x();
     run.mSteps = static_cast<int>(std::lround(settings.mDuration / settings.mTimeStep));
@@ -173,6 +206,9 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     for (int i = 0; i < run.mSteps; ++i)
     {
         const double step_start = ThreadCpuMs();
+        if (inSettings.mFence && i == inSettings.mRestartFenceAtStep)
+            if (Status restarted = restart_fence(); !restarted)
+                return restarted.GetError();
         scene.Step();
         if (inSettings.mFence)
         {
@@ -192,6 +228,8 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
             {
                 ++run.mLoose;
                 run.mBodiesMade += piece.mBody.IsValid() ? 1 : 0;
+                if (piece.mBody.IsValid())
+                    piece_bodies.push_back(piece.mBody);
             }
         }
         const double step_ms = ThreadCpuMs() - step_start;

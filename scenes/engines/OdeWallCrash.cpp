@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace crumple::common
 {
@@ -198,6 +199,17 @@ Result<plugin::BodyId> OdeWallCrash::MakePropBody(const plugin::PropBodySettings
     if (body && inSettings.mHeld)
         mHeldBodies.push_back(mAdapter->GetConvexBody(body.Get()));
     return body;
+}
+
+Status OdeWallCrash::RemoveMadeBody(plugin::BodyId inBody)
+{
+    const dBodyID body = mAdapter->GetConvexBody(inBody);
+    if (body == nullptr)
+        return MakeError(EError::OutOfRange, "OdeWallCrash::RemoveMadeBody: body " +
+                                                 std::to_string(inBody.mValue) + " is none the scene made");
+    // intent: the adapter destroys the body: the near callback must not look for it among the held ones
+    mHeldBodies.erase(std::remove(mHeldBodies.begin(), mHeldBodies.end(), body), mHeldBodies.end());
+    return mAdapter->RemoveBody(body);
 }
 
 plugin::BodyState OdeWallCrash::GetCarState() const

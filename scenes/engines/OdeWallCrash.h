@@ -49,6 +49,9 @@ public:
     Result<plugin::BodyId> MakeDebrisBody(const plugin::ConvexBodySettings& inSettings);
     /// A prop's body (the adapter's CreatePropBody in this scene's world)
     Result<plugin::BodyId> MakePropBody(const plugin::PropBodySettings& inSettings);
+    /// Removes a body MakeDebrisBody or MakePropBody made, from the engine and the damage world (the
+    /// adapter's RemoveBody): a restarted level's props and pieces. Refused for any other id.
+    Status RemoveMadeBody(plugin::BodyId inBody);
     /// The car's state as Crumple reads it (mass, world inertia, frame, velocities)
     plugin::BodyState GetCarState() const;
     /// Sets the car's velocities (m/s, rad/s, world): for contacts solved outside the engine

@@ -92,7 +92,45 @@ void CheckFence(const char* inEngine)
     // the scene's friction (Crumple's impulse is frictionless).
 }
 
+// A restarted level: the fence is removed one step into the drive, before the car meets it (RemoveProp, the
+// adapter's RemoveBody), and the same fence added again in its place meets the car as the first would have.
+template <class Scene> void CheckRestartedFence(const char* inEngine)
+{
+    const double speed = 64.0 / 3.6;
+    const FenceRun first = DriveThrough<Scene>(speed, true);
+    const Result<FenceRun> restarted = DriveThroughFence<Scene>({.mSpeed = speed, .mRestartFenceAtStep = 1});
+    INFO((restarted ? std::string() : restarted.GetError().mMessage));
+    REQUIRE(restarted);
+    const FenceRun& run = restarted.Get();
+    INFO(inEngine << ", first fence: " << Describe(first));
+    INFO(inEngine << ", fresh fence: " << Describe(run));
+    CHECK(run.mRemovedBodies == 1); // the fence's body: no piece had come loose yet
+    CHECK(run.mRemovedGone);
+    CHECK(run.mPiecesAccepted);
+    CHECK(run.mFenceMoved < 1.0e-6);
+    CHECK(run.mBrokenLinks > 0);
+    CHECK(run.mFenceImpulse > 0.0);
+    CHECK(run.mBrokenLinks == first.mBrokenLinks);
+    CHECK(run.mSpeedAfter == first.mSpeedAfter);
+    CHECK(run.mFenceImpulse == first.mFenceImpulse);
+}
+
 } // namespace
+
+TEST_CASE(
+    "Bullet: a restarted level's fence is removed with its body, and a fresh one breaks as the first would "
+    "have",
+    "[bullet][props]")
+{
+    CheckRestartedFence<BulletWallCrash>("Bullet");
+}
+
+TEST_CASE(
+    "ODE: a restarted level's fence is removed with its body, and a fresh one breaks as the first would have",
+    "[ode][props]")
+{
+    CheckRestartedFence<OdeWallCrash>("ODE");
+}
 
 TEST_CASE("Bullet: a car breaks through a held wooden fence, whose shape follows its FEM", "[bullet][props]")
 {

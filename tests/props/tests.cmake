@@ -11,6 +11,7 @@ crumple_add_test(props
     props/LooseFragmentsTest.cpp
     props/PropBodyTest.cpp
     props/PropRecordingTest.cpp
+    props/PropRemoveTest.cpp
     props/PropStepOffThreadTest.cpp
     props/PropWorldTest.cpp
     LINK crumple::props crumple_scenes_fem)

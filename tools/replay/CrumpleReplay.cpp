@@ -255,11 +255,13 @@ int main(int argc, char** argv)
             std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
             return 2;
         }
-        std::printf("prop %zu (body %u, %s): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n", index,
-                    prop.mBody.mValue, props::ToString(prop.mProp.GetBackend()), prop.mProp.GetNodeCount(),
-                    prop.mProp.GetBrokenLinkCount(), prop.mProp.ComputeFragments().size(),
-                    static_cast<unsigned long long>(common::HashPositions(positions)),
-                    meshes ? path.string().c_str() : "(no mesh written)");
+        std::printf(
+            "prop %zu (body %u, %s%s): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n",
+            index, prop.mBody.mValue, props::ToString(prop.mProp.GetBackend()),
+            prop.mRemoved ? ", removed live: as it was then" : "", prop.mProp.GetNodeCount(),
+            prop.mProp.GetBrokenLinkCount(), prop.mProp.ComputeFragments().size(),
+            static_cast<unsigned long long>(common::HashPositions(positions)),
+            meshes ? path.string().c_str() : "(no mesh written)");
     }
 #endif
     // Against the recording's own clock: it runs at least until its last collision closed.

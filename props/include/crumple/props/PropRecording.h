@@ -30,6 +30,8 @@ enum class EPropRecord : std::uint32_t
     /// No payload, before any prop: the props were stepped off the game's thread (PropWorldSettings::
     /// mStepOffThread), so every collision reached them at the next step record, not where it was recorded
     Queued = 0x50515545u, // "PQUE"
+    /// A prop left (PropWorld::RemoveProp): u32 prop index
+    Removed = 0x5052454du, // "PREM"
 };
 
 /// A prop as recorded when it joined a PropWorld: enough to rebuild its solver bit for bit. The state is
@@ -82,15 +84,20 @@ struct CRUMPLE_API ReplayedProp
     /// On the backend it ran on live, where the replayer has it; a GPU prop without a device replays on the CPU
     /// (mProp.GetBackend() and GetFallbackReason() say so): close, not bitwise
     FemProp mProp;
+    /// Removed live (PropWorld::RemoveProp, a Removed record): mProp is as it was then, and it took no
+    /// collision or step after it
+    bool mRemoved = false;
 };
 
 /// Replays the props of a recording without an engine: each prop is rebuilt when it joined, on its recorded
 /// backend (a GPU prop on a device of ioProvider, which makes its context only then; null, or no device: on
 /// the CPU), takes the recorded collisions with its body (FemProp::ApplyCollision) and the recorded steps, in
 /// the recorded order (after a Queued record, each collision at the first step recorded after it; those after
-/// the last step never reach a prop, as live). CPU props end bitwise as they did live, and GPU props on the
-/// same device and driver. Refused with a message naming the record on a corrupt or inconsistent prop record
-/// (among them a second prop for the same body, or records whose collision counts go back), and where a CPU
+/// the last step never reach a prop, as live); a prop removed live stops at its Removed record. CPU props end
+/// bitwise as they did live, and GPU props on the same device and driver. Refused with a message naming the
+/// record on a corrupt or inconsistent prop record (among them a second prop for the same body while the
+/// first is not removed, a removal or loose piece of no prop or of a removed one, or records whose collision
+/// counts go back), and where a CPU
 /// prop breaks otherwise than it did live: a recorded loose piece that is none of
 /// its pieces as replayed (a recording made by a build of Crumple whose FEM gives other results; before, such
 /// a replay fixed those nodes and went on, or stopped at a node past the prop's count).

@@ -128,9 +128,19 @@ public:
     /// Binds inProp to body inBody of the world (one prop per body) and hands a CPU prop the world's job
     /// system. Refused, and inProp left as it was, when the prop is empty (a FemProp moved from), the body
     /// does not exist or already has a prop, or, while recording, when the prop cannot be recorded (one that
-    /// has already stepped). A prop stays for the PropWorld's lifetime: one whose body the game removes keeps
-    /// its FEM stepping until it sleeps (its pieces are no longer taken).
+    /// has already stepped). A prop stays until RemoveProp: one whose body the game removes from the world
+    /// without it keeps its FEM stepping until it sleeps (its pieces are no longer taken).
     Result<PropId> AddProp(plugin::BodyId inBody, FemProp&& ioProp);
+    /// Removes a prop (a race restarted, a prop streamed out): it steps no more and takes no collision, its
+    /// FEM's memory (a GPU prop's device buffers too) is freed, and its id answers as an unknown prop's from
+    /// then on (GetProp nullptr, GetBody invalid). Ids are not reused: GetPropCount still counts it, so a
+    /// stale id never names another prop. The body stays the game's, in its engine and in the damage world
+    /// (its collisions are no longer dispatched every step), and so do the pieces HeldPropBodies or
+    /// TakeLooseFragments handed over; remove those through the adapter. A fresh prop may then be added, on
+    /// the same body or another. While recording, the removal is recorded (EPropRecord::Removed) and
+    /// ReplayProps stops the prop there. Refused, changing nothing, for an unknown or removed prop, while a
+    /// step is in flight (LandStep first), and on the recorder's write error.
+    Status RemoveProp(PropId inProp);
     /// What AddProp would refuse of inProp itself, before its body exists: an empty prop, and while
     /// recording, a prop that cannot be recorded or a recorder that has failed or closed. (AddProp then
     /// refuses only a body that is not in the world or already has a prop, and a write error.) Changes
@@ -140,9 +150,11 @@ public:
     /// Records the props (those added so far now, later ones when added) and every Step() into ioRecorder,
     /// which must be recording the same world and outlive this object or be detached (nullptr) first.
     /// Refused, recording nothing, when a recorder is attached already (detach it first), the recorder has
-    /// failed or is closed, a prop added so far cannot be recorded (one that has stepped), or collisions wait
-    /// for a step (mStepOffThread; the recording would not hold them): attach the recorder before the first
-    /// Step() and the first hit. With mStepOffThread the recording says so first (EPropRecord::Queued).
+    /// failed or is closed, a prop added so far cannot be recorded (one that has stepped), a prop was removed
+    /// (a replay numbers the props in the order the recording adds them: it would not know the ids after it),
+    /// or collisions wait for a step (mStepOffThread; the recording would not hold them): attach the recorder
+    /// before the first Step(), the first hit and the first RemoveProp. With mStepOffThread the recording
+    /// says so first (EPropRecord::Queued).
     Status AttachRecorder(plugin::DamageRecorder* ioRecorder);
     /// The prop, or nullptr for an unknown id
     FemProp* GetProp(PropId inProp);
@@ -156,7 +168,7 @@ public:
     const plugin::DamageWorld& GetWorld() const { return *mWorld; }
     /// The prop bound to inBody, or an invalid id
     PropId FindProp(plugin::BodyId inBody) const;
-    /// Number of props
+    /// Number of props added so far, removed ones included (the next AddProp's id)
     int GetPropCount() const { return static_cast<int>(mProps.size()); }
 
     /// Steps every prop by inDeltaTime (s, finite, > 0), in PropId order. A step some prop would refuse (a
@@ -322,6 +334,7 @@ private:
         double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
         double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
         HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
+        bool mRemoved = false;         ///< RemoveProp: an empty FemProp and no body from then on
         // A step's task writes mProp, mHits, mStruck, mSteppedVelocity, mSteppedMass, the mass scratch and
         // mForecast of the props it steps, nothing else.
     };

@@ -1,0 +1,217 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+// PropWorld::RemoveProp: a race restarted or a prop streamed out. The removed prop steps no more and takes no
+// hit, its id answers as an unknown prop's, a fresh prop may take its body, and a recording replays the
+// removal where it happened.
+#include "BrittlePanel.h"
+#include "ScratchDirectory.h"
+#include "WorldFixture.h"
+
+#include <crumple/base/ByteWriter.h>
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/DamageRecorder.h>
+#include <crumple/props/HeldPropBodies.h>
+#include <crumple/props/PropRecording.h>
+#include <crumple/props/PropWorld.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace crumple;
+using namespace crumple::fem;
+using namespace crumple::plugin;
+using namespace crumple::props;
+
+namespace
+{
+
+// One hit of the car on the wall at 20 m/s (two contacts at inTime), dispatched at once.
+void HitWall(common::WorldFixture& ioFixture, double inTime)
+{
+    REQUIRE(ioFixture.mWorld.SetBodyState(ioFixture.mCar, ioFixture.CarState(20.0)));
+    REQUIRE(ioFixture.mWorld.SubmitContacts(std::vector<ContactEvent>{
+        ioFixture.FrontContact(0.3, 0.2, inTime), ioFixture.FrontContact(-0.4, -0.1, inTime)}));
+    ioFixture.mWorld.Flush();
+}
+
+// inSteps steps of 1/120 s; how many props integrated (awake) over them.
+int StepProps(PropWorld& ioProps, int inSteps)
+{
+    int stepped = 0;
+    for (int step = 0; step < inSteps; ++step)
+    {
+        Result<PropStepReport> report = ioProps.Step(1.0 / 120.0);
+        REQUIRE(report.IsValid());
+        stepped += report.Get().mStepped;
+    }
+    return stepped;
+}
+
+} // namespace
+
+TEST_CASE(
+    "PropWorld::RemoveProp: the prop steps no more and takes no hit, its id answers as an unknown prop's, "
+    "and a fresh prop takes its body",
+    "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(props->GetCollisionCount() == 1u);
+    REQUIRE(StepProps(*props, 3) == 3); // struck: awake
+
+    REQUIRE(props->RemoveProp(wall).IsValid());
+    CHECK(props->GetProp(wall) == nullptr);
+    CHECK_FALSE(props->GetBody(wall).IsValid());
+    CHECK_FALSE(props->FindProp(fixture.mWall).IsValid());
+    CHECK(props->GetPropCount() == 1); // ids are not reused
+    CHECK(props->GetContactVelocity(wall) == Vec3::Zero());
+    CHECK(props->GetTakenElements(wall).empty());
+    CHECK(props->GetCollisionPieces(wall, 0.25).GetError().mCode == EError::OutOfRange);
+    CHECK(props->TakeChangedShape(wall, 0.25, 0.01).GetError().mCode == EError::OutOfRange);
+    CHECK(props->TakeLooseFragments().Get().empty());
+    CHECK(props->Prepare(1.0 / 120.0).IsValid());
+
+    // The struck prop would have stepped on: removed, nothing steps, sleeps or takes the next hit.
+    const PropStepReport after = props->Step(1.0 / 120.0).Get();
+    CHECK(after.mStepped == 0);
+    CHECK(after.mSleeping == 0);
+    HitWall(fixture, 0.1);
+    CHECK(props->GetCollisionCount() == 1u);
+
+    // Removing it again, or an id never handed out, is refused.
+    CHECK(props->RemoveProp(wall).GetError().mCode == EError::InvalidArgument);
+    CHECK(props->RemoveProp(PropId{7}).GetError().mCode == EError::OutOfRange);
+
+    // A fresh prop takes the body under a new id and the next hit.
+    const PropId fresh = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    CHECK(fresh.mValue == 1u);
+    CHECK(props->FindProp(fixture.mWall) == fresh);
+    HitWall(fixture, 0.2);
+    CHECK(props->GetCollisionCount() == 2u);
+    CHECK(StepProps(*props, 1) == 1);
+}
+
+TEST_CASE("PropWorld::RemoveProp is refused while a step is in flight, changing nothing", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(props->StartStep(1.0 / 120.0).IsValid());
+    const Status refused = props->RemoveProp(wall);
+    CHECK(refused.GetError().mCode == EError::InvalidArgument);
+    CHECK(refused.GetError().mMessage.find("LandStep") != std::string::npos);
+    REQUIRE(props->LandStep().IsValid());
+    CHECK(props->GetProp(wall) != nullptr);
+    CHECK(props->RemoveProp(wall).IsValid());
+}
+
+TEST_CASE(
+    "PropWorld::RemoveProp in a recording: the replay stops the prop where it was removed and replays the "
+    "fresh one bit for bit, and refuses bad removal records",
+    "[props][replay]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "props_removed.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+
+    // The first panel cracks, is removed mid-swing (it would have stepped on), and misses the next hit; a
+    // fresh panel on the same body takes it.
+    const PropId first = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(StepProps(*props, 4) == 4);
+    const std::vector<Vec3> removed_positions = props->GetProp(first)->GetCpuSolver()->GetPositions();
+    const int removed_broken = props->GetProp(first)->GetBrokenLinkCount();
+    REQUIRE(removed_broken > 0);
+    REQUIRE(props->RemoveProp(first).IsValid());
+    HitWall(fixture, 0.1);
+    StepProps(*props, 2);
+    const PropId second = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.2);
+    REQUIRE(StepProps(*props, 4) == 4);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+
+    // A recorder attached after a removal would number the props otherwise than the live world.
+    std::unique_ptr<DamageRecorder> late = std::move(
+        DamageRecorder::Create(common::ScratchDirectory() / "props_late.crumple", fixture.mWorld).Get());
+    CHECK(props->AttachRecorder(late.get()).GetError().mMessage.find("RemoveProp") != std::string::npos);
+
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+    const std::vector<ReplayedProp> replayed = ReplayProps(replay).Get();
+    REQUIRE(replayed.size() == 2u);
+    CHECK(replayed[0].mRemoved);
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == removed_positions);
+    CHECK(replayed[0].mProp.GetBrokenLinkCount() == removed_broken);
+    CHECK_FALSE(replayed[1].mRemoved);
+    const TetSolver& live = *props->GetProp(second)->GetCpuSolver();
+    CHECK(replayed[1].mProp.GetCpuSolver()->GetPositions() == live.GetPositions());
+    CHECK(replayed[1].mProp.GetCpuSolver()->GetBrokenLinks() == live.GetBrokenLinks());
+
+    // The removal record: of a prop not yet added, of a removed one, or of the wrong length.
+    std::size_t removal = replay.mExtensions.size();
+    for (std::size_t index = 0; index < replay.mExtensions.size(); ++index)
+        if (replay.mExtensions[index].mTag == static_cast<std::uint32_t>(EPropRecord::Removed))
+            removal = index;
+    REQUIRE(removal < replay.mExtensions.size());
+    const auto refused = [&](const Replay& inReplay)
+    {
+        Result<std::vector<ReplayedProp>> result = ReplayProps(inReplay);
+        REQUIRE(result.HasError());
+        CHECK(result.GetError().mCode == EError::CorruptData);
+        CHECK(result.GetError().mMessage.find("removal") != std::string::npos);
+    };
+    Replay unknown = replay;
+    ByteWriter prop_one;
+    prop_one.WriteU32(1); // prop 1 joins after the removal
+    unknown.mExtensions[removal].mPayload = prop_one.GetBytes();
+    refused(unknown);
+    Replay twice = replay;
+    twice.mExtensions.insert(twice.mExtensions.begin() + static_cast<std::ptrdiff_t>(removal) + 1,
+                             replay.mExtensions[removal]);
+    refused(twice);
+    Replay short_record = replay;
+    short_record.mExtensions[removal].mPayload.pop_back();
+    refused(short_record);
+}
+
+TEST_CASE("HeldPropBodies after RemoveProp: no engine call for the removed prop's body", "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    std::vector<BodyId> called;
+    HeldPropEngine engine{.mCreatePieceBody = [](const ConvexBodySettings&) -> Result<BodyId> {
+                              return BodyId{1000, 0};
+                          },
+                          .mSetPropPieces =
+                              [&](BodyId inBody, const std::vector<std::vector<Vec3>>&)
+                          {
+                              called.push_back(inBody);
+                              return Status::Ok();
+                          },
+                          .mSetHeldVelocity =
+                              [&](BodyId inBody, const Vec3&)
+                          {
+                              called.push_back(inBody);
+                              return Status::Ok();
+                          },
+                          .mSetHeldMass = nullptr,
+                          .mIsHeld = nullptr};
+    HeldPropBodies held = HeldPropBodies::Create(*props, engine).Get();
+    HitWall(fixture, 0.0);
+    HeldPropUpdate update;
+    REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    REQUIRE_FALSE(called.empty()); // the struck prop's body got its shape and velocity
+
+    called.clear();
+    REQUIRE(props->RemoveProp(wall).IsValid());
+    for (int step = 0; step < 3; ++step)
+        REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
+    CHECK(called.empty());
+}
