@@ -45,10 +45,11 @@ bool Write(const std::filesystem::path& inPath, std::span<const std::byte> inByt
 // A surface file with the target's extension byte in front (see FuzzSurfaceMesh.cpp).
 #ifdef CRUMPLE_FUZZ_PROPS
 // A recording with a brittle panel standing in for the wall, its FEM under inSettings: its setup, the hit,
-// three prop steps, with inTakeLoose the loose pieces taken (a PLOS record), a fourth step. inSpread: the
-// panel's contact spread radius (m; 0: none, and no SPRD tag).
+// three prop steps, with inTakeLoose the loose pieces taken (a PLOS record), a fourth step, with inRemove the
+// panel removed (a PREM record) and a fifth step. inSpread: the panel's contact spread radius (m; 0: none,
+// and no SPRD tag).
 bool WritePanelSeed(const std::filesystem::path& inPath, const fem::TetSolverSettings& inSettings,
-                    bool inTakeLoose, double inSpread = 0.0)
+                    bool inTakeLoose, double inSpread = 0.0, bool inRemove = false)
 {
     fuzz::FuzzWorld world;
     Result<std::unique_ptr<plugin::DamageRecorder>> recorder =
@@ -73,6 +74,9 @@ bool WritePanelSeed(const std::filesystem::path& inPath, const fem::TetSolverSet
     if (inTakeLoose)
         ok = ok && prop_world.Get()->TakeLooseFragments().IsValid();
     ok = ok && prop_world.Get()->Step(1.0 / 60.0).IsValid();
+    if (inRemove)
+        ok = ok && prop_world.Get()->RemoveProp(props::PropId{0}).IsValid() &&
+             prop_world.Get()->Step(1.0 / 60.0).IsValid();
     return ok && prop_world.Get()->AttachRecorder(nullptr).IsValid() && recorder.Get()->Close().IsValid();
 }
 #endif
@@ -133,6 +137,8 @@ int main(int argc, char** argv)
     // spread (an SPRD tag): every optional setting's record but the ground's.
     ok = ok && WritePanelSeed(out / "prop_replay" / "held_panel_spread.crumple",
                               props::HeldPropSolverSettings(), true, 0.3);
+    // The panel removed after its pieces were taken (a PREM record; PropWorld::RemoveProp).
+    ok = ok && WritePanelSeed(out / "prop_replay" / "panel_removed.crumple", weightless, true, 0.0, true);
 #endif
 
 #ifdef CRUMPLE_FUZZ_FEM
