@@ -4,7 +4,9 @@
 // hit, its id answers as an unknown prop's, a fresh prop may take its body, and a recording replays the
 // removal where it happened.
 #include "BrittlePanel.h"
+#include "GpuFallback.h"
 #include "ScratchDirectory.h"
+#include "WallPanelMesh.h"
 #include "WorldFixture.h"
 
 #include <crumple/base/ByteWriter.h>
@@ -14,8 +16,13 @@
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
 
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+#include <crumple/gpu/ComputeDevice.h>
+#endif
+
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace crumple;
@@ -214,4 +221,52 @@ TEST_CASE("HeldPropBodies after RemoveProp: no engine call for the removed prop'
     for (int step = 0; step < 3; ++step)
         REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
     CHECK(called.empty());
+}
+
+TEST_CASE("PropWorld::RemoveProp of a GPU prop frees it, and a fresh GPU prop then steps on the same device",
+          "[props][gpu]")
+{
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+    gpu::ComputeDeviceProvider provider;
+    gpu::ComputeDeviceProvider* devices = &provider;
+#else
+    gpu::ComputeDeviceProvider* devices = nullptr;
+#endif
+    TetSolverSettings explicit_steps;
+    explicit_steps.mIntegrator = EIntegrator::SymplecticEuler;
+    explicit_steps.mGravity = Vec3::Zero();
+    const auto gpu_panel = [&]
+    {
+        Result<FemProp> made =
+            FemProp::Create(devices, test::WallPanelMesh({1, 4, 4}), FemMaterialSettings{}, explicit_steps,
+                            {.mBackend = EFemBackend::Gpu, .mLog = nullptr});
+        REQUIRE(made.IsValid());
+        return std::move(made).Get();
+    };
+    FemProp first = gpu_panel();
+    if (first.GetBackend() != EFemBackend::Gpu)
+    {
+        test::RequireNoComputeDevice(devices, first.GetFallbackReason());
+        WARN("skipped: no compute device: " << first.GetFallbackReason());
+        return;
+    }
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    const PropId wall = props->AddProp(fixture.mWall, std::move(first)).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(StepProps(*props, 2) == 2);
+    REQUIRE(props->RemoveProp(wall).IsValid());
+    CHECK(props->GetProp(wall) == nullptr);
+    CHECK(StepProps(*props, 1) == 0);
+
+    const PropId fresh = props->AddProp(fixture.mWall, gpu_panel()).Get();
+    REQUIRE(props->GetProp(fresh)->GetBackend() == EFemBackend::Gpu);
+    HitWall(fixture, 0.1);
+    CHECK(StepProps(*props, 2) == 2);
+    std::vector<Vec3> velocities;
+    props->GetProp(fresh)->ReadVelocities(velocities);
+    double fastest = 0.0;
+    for (const Vec3& velocity : velocities)
+        fastest = std::max(fastest, velocity.norm());
+    CHECK(fastest > 0.0); // the fresh prop took the hit on the device
 }
