@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/ffd/TriangleMesh.h>
 
+#include <algorithm>
 #include <string>
 
 namespace crumple::ffd
@@ -31,6 +32,21 @@ Status ValidateTriangleMesh(const TriangleMesh& inMesh)
                 return MakeError(EError::OutOfRange, "TriangleMesh.mTriangles[" + std::to_string(f) +
                                                          "] uses vertex " + std::to_string(index) + " of " +
                                                          std::to_string(vertex_count));
+    // intent: a mesh with no surface (every vertex on one point or one line) has nothing to dent and no
+    // normal to give; its lattice would span nothing. One triangle of non-zero area is enough.
+    const bool has_area = std::any_of(inMesh.mTriangles.begin(), inMesh.mTriangles.end(),
+                                      [&](const auto& inTriangle)
+                                      {
+                                          const Vec3& a = inMesh.mPositions[inTriangle[0]];
+                                          return (inMesh.mPositions[inTriangle[1]] - a)
+                                                     .cross(inMesh.mPositions[inTriangle[2]] - a)
+                                                     .squaredNorm() > 0.0;
+                                      });
+    if (!has_area)
+        return MakeError(
+            EError::DegenerateGeometry,
+            "TriangleMesh has no surface: every triangle has zero area (its vertices lie on one point "
+            "or one line)");
     return Status::Ok();
 }
 

@@ -320,6 +320,28 @@ TEST_CASE("FfdDeformer refuses bad input and changes nothing", "[ffd]")
         settings.mZones.emplace_back();
         CHECK(FfdDeformer::Create(TriangleMesh{}, settings).GetError().mCode == EError::DegenerateGeometry);
     }
+    SECTION("a mesh with no surface: all vertices on one point, or on one line")
+    {
+        TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
+        FfdDeformerSettings settings;
+        settings.mZones.push_back(plugin::FitZoneToMesh(mesh, {4, 4, 4}, 0.1));
+        TriangleMesh point = mesh;
+        for (Vec3& position : point.mPositions)
+            position = Vec3(0.5, 0.25, -0.1);
+        const Status one_point = ValidateTriangleMesh(point);
+        CHECK(one_point.GetError().mCode == EError::DegenerateGeometry);
+        CHECK(one_point.GetError().mMessage.find("no surface") != std::string::npos);
+        CHECK(FfdDeformer::Create(point, settings).GetError().mCode == EError::DegenerateGeometry);
+        TriangleMesh line = mesh;
+        for (Vec3& position : line.mPositions)
+            position = Vec3(position.x(), 0.0, 0.0);
+        CHECK(FfdDeformer::Create(line, settings).GetError().mCode == EError::DegenerateGeometry);
+        // A flat sheet (one axis of no extent) has a surface: accepted.
+        TriangleMesh sheet = mesh;
+        for (Vec3& position : sheet.mPositions)
+            position.z() = 0.0;
+        CHECK(ValidateTriangleMesh(sheet).IsValid());
+    }
     SECTION("a NaN vertex")
     {
         TriangleMesh mesh = common::MakeBoxMesh(cHalf, {2, 2, 2});
