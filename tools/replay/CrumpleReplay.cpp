@@ -267,11 +267,22 @@ int main(int argc, char** argv)
     // Against the recording's own clock: it runs at least until its last collision closed.
     const auto& collisions = replay.Get().mCollisions;
     const double recorded_s = collisions.empty() ? 0.0 : collisions.back().mEndTime;
-    std::printf("replayed %zu collisions in %.2f ms (building the objects included: %.2f ms of it; writing excluded); "
-                "the last recorded collision closed at t = %.3f s (%.3gx real time)\n",
-                collisions.size(), replay_ms, build_ms, recorded_s, replay_ms > 0.0 ? 1.0e3 * recorded_s / replay_ms : 0.0);
+    // intent: a recording whose collisions all closed at t = 0 (or that has none) has no clock to compare
+    // with
+    const auto speed = [&](double inMs)
+    {
+        if (!(recorded_s > 0.0 && inMs > 0.0))
+            return std::string("no recorded time to compare with");
+        char text[64];
+        std::snprintf(text, sizeof(text), "%.3gx real time", 1.0e3 * recorded_s / inMs);
+        return std::string(text);
+    };
+    std::printf("replayed %zu collisions in %.2f ms (building the objects included: %.2f ms of it; writing "
+                "excluded); "
+                "the last recorded collision closed at t = %.3f s (%s)\n",
+                collisions.size(), replay_ms, build_ms, recorded_s, speed(replay_ms).c_str());
     if (props_ms > 0.0)
-        std::printf("replayed the props in %.2f ms more (their FEM steps again); with them %.3gx real time\n", props_ms,
-                    1.0e3 * recorded_s / (replay_ms + props_ms));
+        std::printf("replayed the props in %.2f ms more (their FEM steps again); with them %s\n", props_ms,
+                    speed(replay_ms + props_ms).c_str());
     return 0;
 }
