@@ -116,6 +116,26 @@ TEST_CASE("PropWorld::RemoveProp is refused while a step is in flight, changing 
     CHECK(props->RemoveProp(wall).IsValid());
 }
 
+TEST_CASE("PropWorld::RemoveProp off the game's thread: a hit queued for the removed prop reaches no prop",
+          "[props]")
+{
+    common::WorldFixture fixture;
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(props->GetQueuedCollisionCount() == 1u); // waits for the next step
+    REQUIRE(props->RemoveProp(wall).IsValid());
+    // A fresh prop on the same body joined after the hit was dispatched: it is not its hit either.
+    const PropId fresh = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    const PropStepReport report = props->Step(1.0 / 120.0).Get();
+    CHECK(props->GetCollisionCount() == 0u);
+    CHECK(report.mStepped == 0);
+    CHECK(props->GetContactVelocity(fresh) == Vec3::Zero());
+    HitWall(fixture, 0.1);
+    CHECK(StepProps(*props, 1) == 1);
+    CHECK(props->GetCollisionCount() == 1u);
+}
+
 TEST_CASE(
     "PropWorld::RemoveProp in a recording: the replay stops the prop where it was removed and replays the "
     "fresh one bit for bit, and refuses bad removal records",
