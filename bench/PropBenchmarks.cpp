@@ -77,6 +77,49 @@ void RunFenceBreak(const char* inEngine, BenchTable& ioTable, const BenchOptions
                      ";speed_after_m_s=" + FormatExtra(last.mSpeedAfter)});
 }
 
+// A restarted level: the same drive with the fence removed one step in (PropWorld::RemoveProp, the adapter's
+// RemoveBody) and added again, interleaved with the plain drive (A, B, A, B, ...). Time: the restart on the
+// game's thread (removal, the fresh fence's body, FEM and Prepare); error: the links that broke differently
+// than in the plain drive, over those that broke.
+template <class Scene>
+void RunFenceRestart(const char* inEngine, BenchTable& ioTable, const BenchOptions& inOptions)
+{
+    const int repetitions = inOptions.mQuick ? 1 : 3;
+    common::FenceDriveSettings plain;
+    plain.mDuration = inOptions.mQuick ? 0.3 : 0.6;
+    common::FenceDriveSettings restarted = plain;
+    restarted.mRestartFenceAtStep = 1;
+    std::vector<double> restart_cpu_ms, restart_wall_ms, prepare_ms;
+    int differing = 0, broken = 0;
+    for (int rep = 0; rep < repetitions; ++rep)
+    {
+        const Result<common::FenceRun> first = common::DriveThroughFence<Scene>(plain);
+        const Result<common::FenceRun> again = common::DriveThroughFence<Scene>(restarted);
+        if (!first || !again)
+        {
+            std::printf("fence_restart/%s: %s\n", inEngine,
+                        (first ? again : first).GetError().mMessage.c_str());
+            return;
+        }
+        restart_cpu_ms.push_back(again.Get().mRestartCpuMs);
+        restart_wall_ms.push_back(again.Get().mRestartWallMs);
+        prepare_ms.push_back(again.Get().mPrepareCpuMs);
+        const std::vector<std::uint8_t>& a = first.Get().mBroken;
+        const std::vector<std::uint8_t>& b = again.Get().mBroken;
+        broken = first.Get().mBrokenLinks;
+        differing = a.size() == b.size() ? 0 : static_cast<int>(std::max(a.size(), b.size()));
+        for (std::size_t link = 0; link < std::min(a.size(), b.size()); ++link)
+            differing += (a[link] != 0) != (b[link] != 0) ? 1 : 0;
+    }
+    const std::string speed = std::to_string(static_cast<int>(std::lround(plain.mSpeed * 3.6))) + "kmh";
+    ioTable.Add({"fence_restart", std::string(inEngine) + "/wood_fence/" + speed, Median(restart_cpu_ms),
+                 broken > 0 ? static_cast<double>(differing) / broken : 0.0, "links_differing_over_broken",
+                 "restart_cpu_ms=" + FormatExtra(Median(restart_cpu_ms)) +
+                     ";restart_wall_ms=" + FormatExtra(Median(restart_wall_ms)) + ";of_it_prepare_cpu_ms=" +
+                     FormatExtra(Median(prepare_ms)) + ";links_broken=" + std::to_string(broken) +
+                     ";links_differing=" + std::to_string(differing)});
+}
+
 // How much the fence's outcome depends on solver settings that should not matter: the same 64 km/h hit with
 // the conjugate-gradient tolerance at 1e-6 (the default), 1e-7 and 1e-8, and with the factor refreshed after 3
 // iterations. A converged answer would not move; today the links broken move by a factor of 4 (README, known
@@ -216,6 +259,7 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 {
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_BULLET)
     RunFenceBreak<common::BulletWallCrash>("bullet", ioTable, inOptions);
+    RunFenceRestart<common::BulletWallCrash>("bullet", ioTable, inOptions);
     if (!inOptions.mQuick)
     {
         for (double spread : {0.0, 0.1})
@@ -225,6 +269,7 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 #endif
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_ODE)
     RunFenceBreak<common::OdeWallCrash>("ode", ioTable, inOptions);
+    RunFenceRestart<common::OdeWallCrash>("ode", ioTable, inOptions);
     if (!inOptions.mQuick)
     {
         for (double spread : {0.0, 0.1})

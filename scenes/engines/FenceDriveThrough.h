@@ -79,6 +79,9 @@ struct FenceRun
     /// one the other figures are of
     int mRemovedBodies = 0;
     bool mRemovedGone = false;
+    /// mRestartFenceAtStep: what the restart cost on the game's thread, the removal and the fresh fence with
+    /// its Prepare (thread CPU and wall, ms)
+    double mRestartCpuMs = 0.0, mRestartWallMs = 0.0;
 };
 
 /// A 4 m wooden fence across the car's path: 5 cm planks in cubes of 2.5 cm (two across each plank: fracture
@@ -207,8 +210,15 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     {
         const double step_start = ThreadCpuMs();
         if (inSettings.mFence && i == inSettings.mRestartFenceAtStep)
+        {
+            const auto restart_wall = std::chrono::steady_clock::now();
             if (Status restarted = restart_fence(); !restarted)
                 return restarted.GetError();
+            run.mRestartCpuMs = ThreadCpuMs() - step_start;
+            run.mRestartWallMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - restart_wall)
+                    .count();
+        }
         scene.Step();
         if (inSettings.mFence)
         {
