@@ -37,6 +37,7 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
     const auto prop_count = static_cast<std::size_t>(mProps->GetPropCount());
     mGivenVelocity.resize(prop_count, Vec3::Zero());
     mGivenMass.resize(prop_count, 0.0);
+    mGivenBody.resize(prop_count);
     const bool new_props = mPropsSeen < prop_count;
 
     // 1. The struck members' velocity and mass. The velocity after a step in which props moved, to every held
@@ -48,6 +49,28 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
         if (!mEngine.mSetHeldVelocity && !mEngine.mSetHeldMass)
             break;
         const PropId prop{static_cast<std::uint32_t>(index)};
+        if (!mProps->GetBody(prop).IsValid())
+        {
+            // intent: a removed prop's held body, if the game keeps it, is left as made (at rest, its own
+            // mass), not moving with the last struck members for ever, nor weighing what they weighed
+            const plugin::BodyId kept = mGivenBody[index];
+            const bool keeps = kept.IsValid() && mProps->GetWorld().GetBodyState(kept) != nullptr &&
+                               (!mEngine.mIsHeld || mEngine.mIsHeld(kept));
+            if (keeps && mEngine.mSetHeldVelocity && mGivenVelocity[index] != Vec3::Zero())
+            {
+                keep(mEngine.mSetHeldVelocity(kept, Vec3::Zero()));
+                ++outUpdate.mVelocitiesGiven;
+            }
+            if (keeps && mEngine.mSetHeldMass && mGivenMass[index] != 0.0)
+            {
+                keep(mEngine.mSetHeldMass(kept, 0.0));
+                ++outUpdate.mMassesGiven;
+            }
+            mGivenBody[index] = plugin::BodyId();
+            mGivenVelocity[index] = Vec3::Zero();
+            mGivenMass[index] = 0.0;
+            continue;
+        }
         const Vec3 velocity = mProps->GetContactVelocity(prop);
         const double mass = mProps->GetContactMass(prop);
         const bool give_velocity =
@@ -59,6 +82,7 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
             continue; // its body left the world
         if (mEngine.mIsHeld && !mEngine.mIsHeld(mProps->GetBody(prop)))
             continue; // a free or static prop body: the engine moves it
+        mGivenBody[index] = mProps->GetBody(prop);
         if (give_mass)
         {
             if (keep(mEngine.mSetHeldMass(mProps->GetBody(prop), mass)))

@@ -120,7 +120,8 @@ Status PropWorld::RemoveProp(PropId inProp)
     Prop cleared{.mBody = plugin::BodyId(), .mProp = std::move(prop.mProp)}; // moved from: empty
     cleared.mRemoved = true;
     prop = std::move(cleared);
-    // intent: a body the game keeps goes back to the world's time window, as before AddProp
+    // intent: a body the game keeps goes back to the world's time window (off, as AddProp found it unless the
+    // game had set it itself)
     if (mWorld->GetBodyState(body) != nullptr)
         (void)mWorld->SetDispatchEachStep(body, false); // the body exists: checked
     return Status::Ok();

@@ -207,9 +207,12 @@ Status OdeWallCrash::RemoveMadeBody(plugin::BodyId inBody)
     if (body == nullptr)
         return MakeError(EError::OutOfRange, "OdeWallCrash::RemoveMadeBody: body " +
                                                  std::to_string(inBody.mValue) + " is none the scene made");
-    // intent: the adapter destroys the body: the near callback must not look for it among the held ones
+    if (Status removed = mAdapter->RemoveBody(body); !removed)
+        return removed; // the body stays, held as it was
+    // intent: the adapter destroyed the body: the near callback must not take a body made later at the same
+    // address for a held one (the list's pointers are compared, never followed)
     mHeldBodies.erase(std::remove(mHeldBodies.begin(), mHeldBodies.end(), body), mHeldBodies.end());
-    return mAdapter->RemoveBody(body);
+    return Status::Ok();
 }
 
 plugin::BodyState OdeWallCrash::GetCarState() const

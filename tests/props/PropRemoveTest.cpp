@@ -207,40 +207,117 @@ TEST_CASE(
     refused(short_record);
 }
 
-TEST_CASE("HeldPropBodies after RemoveProp: no engine call for the removed prop's body", "[props]")
+TEST_CASE(
+    "HeldPropBodies after RemoveProp: the held body the game keeps is put back at rest with its own mass "
+    "once, and then nothing",
+    "[props]")
 {
     common::WorldFixture fixture;
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-    std::vector<BodyId> called;
+    std::vector<BodyId> shapes, velocity_bodies, mass_bodies;
+    std::vector<Vec3> velocities;
+    std::vector<double> masses;
     HeldPropEngine engine{.mCreatePieceBody = [](const ConvexBodySettings&) -> Result<BodyId> {
                               return BodyId{1000, 0};
                           },
                           .mSetPropPieces =
                               [&](BodyId inBody, const std::vector<std::vector<Vec3>>&)
                           {
-                              called.push_back(inBody);
+                              shapes.push_back(inBody);
                               return Status::Ok();
                           },
                           .mSetHeldVelocity =
-                              [&](BodyId inBody, const Vec3&)
+                              [&](BodyId inBody, const Vec3& inVelocity)
                           {
-                              called.push_back(inBody);
+                              velocity_bodies.push_back(inBody);
+                              velocities.push_back(inVelocity);
                               return Status::Ok();
                           },
-                          .mSetHeldMass = nullptr,
+                          .mSetHeldMass =
+                              [&](BodyId inBody, double inMass)
+                          {
+                              mass_bodies.push_back(inBody);
+                              masses.push_back(inMass);
+                              return Status::Ok();
+                          },
                           .mIsHeld = nullptr};
     HeldPropBodies held = HeldPropBodies::Create(*props, engine).Get();
     HitWall(fixture, 0.0);
     HeldPropUpdate update;
     REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
-    REQUIRE_FALSE(called.empty()); // the struck prop's body got its shape and velocity
+    // The struck prop's body got its shape, the struck members' velocity and their mass.
+    REQUIRE_FALSE(shapes.empty());
+    REQUIRE_FALSE(velocities.empty());
+    REQUIRE(velocities.back() != Vec3::Zero());
+    REQUIRE_FALSE(masses.empty());
+    REQUIRE(masses.back() > 0.0);
 
-    called.clear();
+    shapes.clear();
+    velocity_bodies.clear();
+    velocities.clear();
+    mass_bodies.clear();
+    masses.clear();
     REQUIRE(props->RemoveProp(wall).IsValid());
     for (int step = 0; step < 3; ++step)
         REQUIRE(held.Update(props->Step(1.0 / 120.0).Get(), update).IsValid());
-    CHECK(called.empty());
+    CHECK(shapes.empty());
+    REQUIRE(velocities.size() == 1u);
+    CHECK(velocity_bodies[0] == fixture.mWall);
+    CHECK(velocities[0] == Vec3::Zero());
+    REQUIRE(masses.size() == 1u);
+    CHECK(mass_bodies[0] == fixture.mWall);
+    CHECK(masses[0] == 0.0); // its own mass again
+}
+
+TEST_CASE("PropWorld::RemoveProp is refused, changing nothing, while the recorder cannot write", "[props]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "props_closed.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    REQUIRE(recorder->Close().IsValid());
+    CHECK(props->RemoveProp(wall).HasError());
+    CHECK(props->GetProp(wall) != nullptr);
+    CHECK(props->FindProp(fixture.mWall) == wall);
+    // Detached, the prop can go.
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    CHECK(props->RemoveProp(wall).IsValid());
+}
+
+TEST_CASE(
+    "PropWorld::RemoveProp off the game's thread in a recording: the replay drops the hit queued for the "
+    "removed prop as live did",
+    "[props][replay]")
+{
+    const std::filesystem::path path = common::ScratchDirectory() / "props_removed_queued.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId first = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    HitWall(fixture, 0.0);
+    REQUIRE(StepProps(*props, 3) == 3);
+    const std::vector<Vec3> removed_positions = props->GetProp(first)->GetCpuSolver()->GetPositions();
+    HitWall(fixture, 0.1); // queued for the next step: the prop goes before it
+    REQUIRE(props->RemoveProp(first).IsValid());
+    const PropId second = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+    StepProps(*props, 1);
+    HitWall(fixture, 0.2);
+    REQUIRE(StepProps(*props, 3) == 3);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    CHECK(props->GetCollisionCount() == 2u); // the first hit and the third; the second reached no prop
+
+    const std::vector<ReplayedProp> replayed =
+        ReplayProps(DecodeReplay(ReadFileBytes(path).Get()).Get()).Get();
+    REQUIRE(replayed.size() == 2u);
+    CHECK(replayed[0].mRemoved);
+    CHECK(replayed[0].mProp.GetCpuSolver()->GetPositions() == removed_positions);
+    CHECK(replayed[1].mProp.GetCpuSolver()->GetPositions() ==
+          props->GetProp(second)->GetCpuSolver()->GetPositions());
 }
 
 TEST_CASE("PropWorld::RemoveProp of a GPU prop frees it, and a fresh GPU prop then steps on the same device",

@@ -91,9 +91,11 @@ public:
     /// only after a step in which a prop moved): the three things above, in PropId order; outUpdate says what
     /// was done. An engine call that fails does not stop the others (a piece already left its prop and the
     /// engine holds what it made): the first failure is returned, its piece left without a body; a refused
-    /// shape is given again at the next Update. Every prop of the world must be a prop body of the engine; one
-    /// that is not held (a free or static prop body) must be named by HeldPropEngine::mIsHeld, or the engine
-    /// refuses its held velocity at every step.
+    /// shape is given again at the next Update. Every prop of the world must be a prop body of the engine;
+    /// one that is not held (a free or static prop body) must be named by HeldPropEngine::mIsHeld, or the
+    /// engine refuses its held velocity at every step. A prop removed (PropWorld::RemoveProp) whose held body
+    /// the game keeps in the engine gets that body put back at rest with its own mass at the next Update (one
+    /// call each, where a velocity or mass had been given): a fresh prop on the body starts from it as made.
     Status Update(const PropStepReport& inStepped, HeldPropUpdate& outUpdate);
 
 private:
@@ -105,6 +107,7 @@ private:
     HeldPropSettings mSettings;
     std::vector<Vec3> mGivenVelocity; ///< Per prop: the last SetHeldVelocity (zero: at rest, as made)
     std::vector<double> mGivenMass;   ///< Per prop: the last SetHeldMass (zero: its own, as made)
+    std::vector<plugin::BodyId> mGivenBody; ///< Per prop: the body those went to (invalid: none given)
     std::size_t mPropsSeen = 0;       ///< Props whose first shape was given (they join in PropId order)
     std::vector<std::uint8_t> mShapePending; ///< Per prop: the engine refused its last shape (retried)
 };

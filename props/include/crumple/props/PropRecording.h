@@ -18,6 +18,8 @@
 namespace crumple::props
 {
 
+// (clang-format would take each tag's comment above it for a trailing comment of the tag before)
+// clang-format off
 /// The extension-record tags crumple::props writes into a damage recording (plugin::RecordedExtension).
 enum class EPropRecord : std::uint32_t
 {
@@ -30,9 +32,11 @@ enum class EPropRecord : std::uint32_t
     /// No payload, before any prop: the props were stepped off the game's thread (PropWorldSettings::
     /// mStepOffThread), so every collision reached them at the next step record, not where it was recorded
     Queued = 0x50515545u, // "PQUE"
-    /// A prop left (PropWorld::RemoveProp): u32 prop index
+    /// A prop left (PropWorld::RemoveProp): u32 prop index. A replayer older than the record (before a653e03)
+    /// passes over it as another layer's and steps the prop on.
     Removed = 0x5052454du, // "PREM"
 };
+// clang-format on
 
 /// A prop as recorded when it joined a PropWorld: enough to rebuild its solver bit for bit. The state is
 /// the solver's at that moment (positions, velocities, anchors, external forces, gravity) before its first

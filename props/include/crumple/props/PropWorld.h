@@ -137,9 +137,13 @@ public:
     /// stale id never names another prop. The body stays the game's, in its engine and in the damage world
     /// (its collisions are no longer dispatched every step), and so do the pieces HeldPropBodies or
     /// TakeLooseFragments handed over; remove those through the adapter. A fresh prop may then be added, on
-    /// the same body or another. While recording, the removal is recorded (EPropRecord::Removed) and
-    /// ReplayProps stops the prop there. Refused, changing nothing, for an unknown or removed prop, while a
-    /// step is in flight (LandStep first), and on the recorder's write error.
+    /// the same body or another. Collisions the world has not dispatched yet (a static prop body's, within
+    /// the time window) reach whatever prop the body has when they are: a fresh prop added at once may take
+    /// the last hits of the old one. The body's dispatch at every step (DamageWorld::SetDispatchEachStep) is
+    /// set back to off, whoever set it. HeldPropBodies puts a held body the game keeps back at rest with its
+    /// own mass. While recording, the removal is recorded (EPropRecord::Removed) and ReplayProps stops the
+    /// prop there. Refused, changing nothing, for an unknown or removed prop, while a step is in flight
+    /// (LandStep first), and on the recorder's write error (a failed or closed recorder: detach it first).
     Status RemoveProp(PropId inProp);
     /// What AddProp would refuse of inProp itself, before its body exists: an empty prop, and while
     /// recording, a prop that cannot be recorded or a recorder that has failed or closed. (AddProp then
@@ -334,7 +338,7 @@ private:
         double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
         double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
         HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
-        bool mRemoved = false;         ///< RemoveProp: an empty FemProp and no body from then on
+        bool mRemoved = false; ///< RemoveProp: an empty FemProp (call none of its methods) and no body
         // A step's task writes mProp, mHits, mStruck, mSteppedVelocity, mSteppedMass, the mass scratch and
         // mForecast of the props it steps, nothing else.
     };
