@@ -57,6 +57,10 @@ struct PropRun
     int mPieces = 0;
     int mBodiesMade = 0;     ///< Engine bodies made for the pieces handed over
     bool mBodiesFinite = true; ///< Their states after more engine steps
+    /// A restart after that (RemoveProp, the pieces' bodies removed through the adapter, a fresh facing on
+    /// the wall): everything removed was gone and the scene stepped on with the fresh facing, asleep and
+    /// whole
+    bool mRestarted = false;
 };
 
 template <class Scene>
@@ -107,6 +111,23 @@ PropRun HitFacing(const EngineCrashSettings& inSettings)
         const plugin::BodyState* state = scene.GetDamage().GetBodyState(body);
         run.mBodiesFinite = run.mBodiesFinite && state != nullptr && IsFinite(state->mCenterOfMass) && IsFinite(state->mLinearVelocity);
     }
+
+    // A restarted level: the cracked facing and its flying pieces go, a fresh facing goes on the wall.
+    REQUIRE(props->RemoveProp(facing));
+    for (const plugin::BodyId body : bodies)
+        REQUIRE(scene.RemoveMadeBody(body));
+    bool gone = props->GetProp(facing) == nullptr;
+    for (const plugin::BodyId body : bodies)
+        gone = gone && scene.GetDamage().GetBodyState(body) == nullptr;
+    const PropId fresh = props->AddProp(wall, Facing(*scene.GetDamage().GetBodyState(wall))).Get();
+    PropStepReport last;
+    for (int i = 0; i < 12; ++i)
+    {
+        scene.Step();
+        last = props->Step(inSettings.mTimeStep).Get();
+    }
+    run.mRestarted = gone && last.mStepped == 0 && props->GetProp(fresh)->GetBrokenLinkCount() == 0 &&
+                     props->FindProp(wall) == fresh;
     return run;
 }
 
@@ -145,4 +166,6 @@ TEST_CASE("A car cracks a wall's brittle facing through Bullet and through ODE, 
     CHECK(ode.mBodiesMade > 0);
     CHECK(bullet.mBodiesFinite);
     CHECK(ode.mBodiesFinite);
+    CHECK(bullet.mRestarted);
+    CHECK(ode.mRestarted);
 }
