@@ -4,6 +4,11 @@
 
 #if defined(CRUMPLE_BENCH_PROPS)
 #include "FenceDriveThrough.h"
+#include "ThreadJobSystem.h"
+
+#include <crumple/base/FileBytes.h>
+#include <crumple/plugin/ReplayFormat.h>
+#include <crumple/props/PropRecording.h>
 #if defined(CRUMPLE_BENCH_BULLET)
 #include "BulletWallCrash.h"
 #endif
@@ -16,8 +21,10 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -118,6 +125,67 @@ void RunFenceRestart(const char* inEngine, BenchTable& ioTable, const BenchOptio
                      ";restart_wall_ms=" + FormatExtra(Median(restart_wall_ms)) + ";of_it_prepare_cpu_ms=" +
                      FormatExtra(Median(prepare_ms)) + ";links_broken=" + std::to_string(broken) +
                      ";links_differing=" + std::to_string(differing)});
+}
+
+// The drive-through recorded once, then its props replayed with no engine (props::ReplayProps) on the calling
+// thread alone and with a 2-thread job system, alternated three times (A, B, A, B, ...): wall time of each
+// replay (its FEM's element passes are what the workers share), the calling thread's CPU beside it; error:
+// the fence nodes whose replayed positions differ between the two (bitwise the same is the contract).
+template <class Scene>
+void RunFenceReplayThreads(const char* inEngine, BenchTable& ioTable, const BenchOptions& inOptions)
+{
+    common::FenceDriveSettings drive;
+    drive.mDuration = inOptions.mQuick ? 0.1 : 0.6;
+    const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                       ("crumple_bench_fence_replay_" + std::string(inEngine) + ".crumple");
+    drive.mRecordTo = path;
+    const Result<common::FenceRun> live = common::DriveThroughFence<Scene>(drive);
+    Result<std::vector<std::byte>> bytes =
+        live ? ReadFileBytes(path) : Result<std::vector<std::byte>>(live.GetError());
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    Result<plugin::Replay> replay =
+        bytes ? plugin::DecodeReplay(bytes.Get()) : Result<plugin::Replay>(bytes.GetError());
+    if (!replay)
+    {
+        std::printf("fence_replay/%s: %s\n", inEngine, replay.GetError().mMessage.c_str());
+        return;
+    }
+    const common::ThreadJobSystem two(2);
+    std::vector<double> wall_ms[2], cpu_ms[2];
+    std::vector<Vec3> positions[2];
+    const int repetitions = inOptions.mQuick ? 1 : 3;
+    for (int rep = 0; rep < repetitions; ++rep)
+        for (int side = 0; side < 2; ++side)
+        {
+            const double cpu_start = ThreadCpuMs();
+            const auto wall_start = std::chrono::steady_clock::now();
+            Result<std::vector<props::ReplayedProp>> replayed =
+                props::ReplayProps(replay.Get(), nullptr, side == 0 ? nullptr : &two.Get());
+            wall_ms[side].push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start)
+                    .count());
+            cpu_ms[side].push_back(ThreadCpuMs() - cpu_start);
+            if (!replayed || replayed.Get().empty() || replayed.Get()[0].mProp.GetCpuSolver() == nullptr)
+            {
+                std::printf("fence_replay/%s: %s\n", inEngine,
+                            replayed ? "no CPU prop replayed" : replayed.GetError().mMessage.c_str());
+                return;
+            }
+            positions[side] = replayed.Get()[0].mProp.GetCpuSolver()->GetPositions();
+        }
+    int differing = positions[0].size() == positions[1].size() ? 0 : static_cast<int>(positions[0].size());
+    for (std::size_t node = 0; node < std::min(positions[0].size(), positions[1].size()); ++node)
+        differing += positions[0][node] == positions[1][node] ? 0 : 1;
+    const std::string name = std::string(inEngine) + "/" + std::to_string(live.Get().mFenceTets) + "_tets/";
+    ioTable.Add({"fence_replay", name + "1_thread", Median(wall_ms[0]), 0.0, "baseline",
+                 "wall_ms=" + FormatExtra(Median(wall_ms[0])) + ";cpu_ms=" + FormatExtra(Median(cpu_ms[0])) +
+                     ";links_broken=" + std::to_string(live.Get().mBrokenLinks)});
+    ioTable.Add({"fence_replay", name + "2_threads", Median(wall_ms[1]), static_cast<double>(differing),
+                 "nodes_differing_from_1_thread",
+                 "wall_ms=" + FormatExtra(Median(wall_ms[1])) +
+                     ";calling_thread_cpu_ms=" + FormatExtra(Median(cpu_ms[1])) + ";speedup_wall=" +
+                     FormatExtra(Median(wall_ms[0]) / std::max(Median(wall_ms[1]), 1e-9))});
 }
 
 // How much the fence's outcome depends on solver settings that should not matter: the same 64 km/h hit with
@@ -260,6 +328,7 @@ void RunPropBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 #if defined(CRUMPLE_BENCH_PROPS) && defined(CRUMPLE_BENCH_BULLET)
     RunFenceBreak<common::BulletWallCrash>("bullet", ioTable, inOptions);
     RunFenceRestart<common::BulletWallCrash>("bullet", ioTable, inOptions);
+    RunFenceReplayThreads<common::BulletWallCrash>("bullet", ioTable, inOptions);
     if (!inOptions.mQuick)
     {
         for (double spread : {0.0, 0.1})

@@ -424,7 +424,8 @@ Result<fem::TetSolver> RebuildProp(const PropSetup& inSetup)
     return solver;
 }
 
-Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gpu::ComputeDeviceProvider* ioProvider)
+Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
+                                              gpu::ComputeDeviceProvider* ioProvider, const JobSystem* inJobs)
 {
     std::vector<ReplayedProp> props;
     std::vector<std::size_t> added_after; // per prop: the collisions recorded before it joined
@@ -488,6 +489,8 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay, gp
             FemPropSettings backend;
             backend.mBackend = setup.Get().mBackend;
             FemProp prop = FemProp::FromSolver(ioProvider, std::move(solver.Get()), backend);
+            if (fem::TetSolver* cpu = prop.GetCpuSolver(); cpu != nullptr)
+                cpu->SetJobSystem(inJobs);
             if (Status spread = prop.SetContactSpread(setup.Get().mContactSpread); spread.HasError())
                 return MakeError(EError::CorruptData, where + spread.GetError().mMessage);
             props.push_back({setup.Get().mBody, setup.Get().mBackend, std::move(prop), false});

@@ -4,7 +4,8 @@
 # Runs a racing session (the full 7 s the demo runs: a rail tumbling on the road from 4.2 s once blew up the
 # recording, 4.7 s did not reach it) with dents on the game's thread and again with deferred dents on a 2-thread job
 # system: the recordings and the deformed meshes (the cars, the brick wall and the fence the car breaks) must
-# be byte-identical. Then the inline recording is replayed with no engine: the car and the props again.
+# be byte-identical. Then the inline recording is replayed with no engine: the car and the props again, on
+# one thread and with the props' element passes on two.
 # Then the props' FEM off the game's thread (--props-off-thread, landing a step later: another run), with the
 # tasks inline and on 2 threads: byte-identical again, and replayed. Then the impulses on the dents' task too
 # (--defer-impulses: the props hear of a hit a step later still, another run), inline and on 2 threads:
@@ -25,7 +26,7 @@ endfunction()
 # The recording of the run in ${OUT}/${live_dir} replayed with no engine into ${OUT}/${out_dir}: the cars and
 # the props byte for byte as the live run wrote them.
 function(expect_replayed live_dir out_dir why)
-    run(${REPLAY} ${OUT}/${live_dir}/race.crumple --out ${OUT}/${out_dir})
+    run(${REPLAY} ${OUT}/${live_dir}/race.crumple --out ${OUT}/${out_dir} ${ARGN})
     foreach(pair "car.obj;object0.obj" "parked.obj;object1.obj" "fence.obj;prop0.obj" "brick_wall.obj;prop1.obj")
         list(GET pair 0 live)
         list(GET pair 1 replayed)
@@ -40,6 +41,8 @@ foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
     expect_same(${OUT}/inline/${file} ${OUT}/deferred/${file} "${file} differs between inline and deferred dents")
 endforeach()
 expect_replayed(inline replayed "")
+# The props' element passes on a 2-thread job system (crumple-replay --threads 2): the same bytes again.
+expect_replayed(inline replayed_2_threads " (replayed on 2 threads)" --threads 2)
 
 # A mode whose tasks run inline (--threads 1) and on 2 threads: the same bytes, and its recording replays.
 function(same_on_two_threads name what)

@@ -12,10 +12,14 @@
 #include <crumple/props/PropBody.h>
 #include <crumple/props/PropWorld.h>
 
+#include <crumple/plugin/DamageRecorder.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +47,8 @@ struct FenceDriveSettings
     /// its place: PropWorld::RemoveProp, the adapter's RemoveBody for its held body and its pieces' bodies,
     /// then the same fence added again (-1: never)
     int mRestartFenceAtStep = -1;
+    /// Where to record the drive (a DamageRecorder, the props attached before the fence joins); empty: none
+    std::filesystem::path mRecordTo{};
 };
 
 /// What a drive through the fence did, and what it cost.
@@ -124,6 +130,17 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     if (!props_made)
         return props_made.GetError();
     props::PropWorld& props = *props_made.Get();
+    std::unique_ptr<plugin::DamageRecorder> recorder;
+    if (!inSettings.mRecordTo.empty())
+    {
+        Result<std::unique_ptr<plugin::DamageRecorder>> made =
+            plugin::DamageRecorder::Create(inSettings.mRecordTo, scene.GetDamage());
+        if (!made)
+            return made.GetError();
+        recorder = std::move(made).Get();
+        if (Status attached = props.AttachRecorder(recorder.get()); !attached)
+            return attached.GetError();
+    }
 
     FenceRun run;
     plugin::BodyId fence_body;
@@ -248,6 +265,13 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     }
     run.mWallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
     scene.GetDamage().Flush();
+    if (recorder)
+    {
+        if (Status detached = props.AttachRecorder(nullptr); !detached)
+            return detached.GetError();
+        if (Status closed = recorder->Close(); !closed)
+            return closed.GetError();
+    }
     const plugin::BodyState car = scene.GetCarState();
     run.mSpeedAfter = car.mLinearVelocity.x();
     run.mCarX = car.mCenterOfMass.x();

@@ -102,6 +102,51 @@ TEST_CASE("Props in a recording: a cracking prop replays bit for bit without an 
     }
 }
 
+TEST_CASE(
+    "Props in a recording: replayed with the element passes on a 2-thread job system, bit for bit as on one",
+    "[props][replay]")
+{
+    // A panel of 5,400 tetrahedra: more than two pieces' worth of elements, so its passes do split.
+    const std::filesystem::path path = common::ScratchDirectory() / "props_large.crumple";
+    common::WorldFixture fixture;
+    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
+    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    const PropId wall = props->AddProp(fixture.mWall, test::BrittlePanel({1, 30, 30}, 1.0e10, 1.0)).Get();
+    REQUIRE(props->GetProp(wall)->GetElementNodes().size() > 4096u);
+    HitTwice(fixture, *props);
+    REQUIRE(props->AttachRecorder(nullptr).IsValid());
+    REQUIRE(recorder->Close().IsValid());
+    const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
+
+    // The host's parallel fors counted, run on two threads.
+    struct Counted
+    {
+        common::ThreadJobSystem mThreads{2};
+        JobSystem mJobs;
+        int mCalls = 0;
+    } counted;
+    counted.mJobs = counted.mThreads.Get();
+    counted.mJobs.mHost = &counted;
+    counted.mJobs.mParallelFor = [](void* inHost, int inCount, void (*inTask)(void*, int), void* inContext)
+    {
+        auto* self = static_cast<Counted*>(inHost);
+        ++self->mCalls;
+        const JobSystem& threads = self->mThreads.Get();
+        threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
+    };
+    const std::vector<ReplayedProp> serial = ReplayProps(replay).Get();
+    const std::vector<ReplayedProp> parallel = ReplayProps(replay, nullptr, &counted.mJobs).Get();
+    CHECK(counted.mCalls > 0);
+    REQUIRE(serial.size() == 1u);
+    REQUIRE(parallel.size() == 1u);
+    const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();
+    CHECK(serial[0].mProp.GetCpuSolver()->GetPositions() == live.GetPositions());
+    CHECK(parallel[0].mProp.GetCpuSolver()->GetPositions() == live.GetPositions());
+    CHECK(parallel[0].mProp.GetCpuSolver()->GetVelocities() == live.GetVelocities());
+    CHECK(parallel[0].mProp.GetCpuSolver()->GetBrokenLinks() == live.GetBrokenLinks());
+}
+
 TEST_CASE("Props in a recording: a prop that cannot be replayed exactly is refused, and bad records too",
           "[props][replay]")
 {

@@ -4,6 +4,7 @@
 
 #include <crumple/base/Export.h>
 
+#include <crumple/base/JobSystem.h>
 #include <crumple/base/Result.h>
 #include <crumple/fem/TetSolver.h>
 #include <crumple/plugin/Ids.h>
@@ -105,7 +106,10 @@ struct CRUMPLE_API ReplayedProp
 /// prop breaks otherwise than it did live: a recorded loose piece that is none of
 /// its pieces as replayed (a recording made by a build of Crumple whose FEM gives other results; before, such
 /// a replay fixed those nodes and went on, or stopped at a node past the prop's count).
+/// inJobs (null: serial): the CPU props' element passes run on the host's job system
+/// (fem::TetSolver::SetJobSystem), bitwise the same for any number of workers; it must outlive the call.
 CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
-                                                          gpu::ComputeDeviceProvider* ioProvider = nullptr);
+                                                          gpu::ComputeDeviceProvider* ioProvider = nullptr,
+                                                          const JobSystem* inJobs = nullptr);
 
 } // namespace crumple::props
