@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 // Props in a damage recording: a run with a prop that cracks, replayed without an engine, ends bit for bit.
 #include "BrittlePanel.h"
+#include "RecordedPropWorld.h"
 #include "ScratchDirectory.h"
 #include "ThreadJobSystem.h"
 #include "WallPanelMesh.h"
@@ -107,16 +108,14 @@ TEST_CASE(
     "[props][replay]")
 {
     // A panel of 5,400 tetrahedra: more than two pieces' worth of elements, so its passes do split.
-    const std::filesystem::path path = common::ScratchDirectory() / "props_large.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    test::RecordedPropWorld recorded("props_large.crumple");
+    const std::filesystem::path& path = recorded.mPath;
+    common::WorldFixture& fixture = recorded.mFixture;
+    PropWorld* const props = recorded.mProps.get();
     const PropId wall = props->AddProp(fixture.mWall, test::BrittlePanel({1, 30, 30}, 1.0e10, 1.0)).Get();
     REQUIRE(props->GetProp(wall)->GetElementNodes().size() > 4096u);
     HitTwice(fixture, *props);
-    REQUIRE(props->AttachRecorder(nullptr).IsValid());
-    REQUIRE(recorder->Close().IsValid());
+    recorded.Finish();
     const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
 
     // The host's parallel fors counted, run on two threads.

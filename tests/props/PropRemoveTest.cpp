@@ -5,6 +5,7 @@
 // removal where it happened.
 #include "BrittlePanel.h"
 #include "GpuFallback.h"
+#include "RecordedPropWorld.h"
 #include "ScratchDirectory.h"
 #include "WallPanelMesh.h"
 #include "WorldFixture.h"
@@ -141,11 +142,10 @@ TEST_CASE(
     "fresh one bit for bit, and refuses bad removal records",
     "[props][replay]")
 {
-    const std::filesystem::path path = common::ScratchDirectory() / "props_removed.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    test::RecordedPropWorld recorded("props_removed.crumple");
+    const std::filesystem::path& path = recorded.mPath;
+    common::WorldFixture& fixture = recorded.mFixture;
+    PropWorld* const props = recorded.mProps.get();
 
     // The first panel cracks, is removed mid-swing (it would have stepped on), and misses the next hit; a
     // fresh panel on the same body takes it.
@@ -161,8 +161,7 @@ TEST_CASE(
     const PropId second = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     HitWall(fixture, 0.2);
     REQUIRE(StepProps(*props, 4) == 4);
-    REQUIRE(props->AttachRecorder(nullptr).IsValid());
-    REQUIRE(recorder->Close().IsValid());
+    recorded.Finish();
 
     // A recorder attached after a removal would number the props otherwise than the live world.
     std::unique_ptr<DamageRecorder> late = std::move(
@@ -272,11 +271,10 @@ TEST_CASE(
 
 TEST_CASE("PropWorld::RemoveProp is refused, changing nothing, while the recorder cannot write", "[props]")
 {
-    const std::filesystem::path path = common::ScratchDirectory() / "props_closed.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    test::RecordedPropWorld recorded("props_closed.crumple");
+    common::WorldFixture& fixture = recorded.mFixture;
+    DamageRecorder* const recorder = recorded.mRecorder.get();
+    PropWorld* const props = recorded.mProps.get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     REQUIRE(recorder->Close().IsValid());
     CHECK(props->RemoveProp(wall).HasError());
@@ -292,11 +290,10 @@ TEST_CASE(
     "removed prop as live did",
     "[props][replay]")
 {
-    const std::filesystem::path path = common::ScratchDirectory() / "props_removed_queued.crumple";
-    common::WorldFixture fixture;
-    std::unique_ptr<DamageRecorder> recorder = std::move(DamageRecorder::Create(path, fixture.mWorld).Get());
-    std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mStepOffThread = true}).Get();
-    REQUIRE(props->AttachRecorder(recorder.get()).IsValid());
+    test::RecordedPropWorld recorded("props_removed_queued.crumple", {.mStepOffThread = true});
+    const std::filesystem::path& path = recorded.mPath;
+    common::WorldFixture& fixture = recorded.mFixture;
+    PropWorld* const props = recorded.mProps.get();
     const PropId first = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     HitWall(fixture, 0.0);
     REQUIRE(StepProps(*props, 3) == 3);
@@ -307,8 +304,7 @@ TEST_CASE(
     StepProps(*props, 1);
     HitWall(fixture, 0.2);
     REQUIRE(StepProps(*props, 3) == 3);
-    REQUIRE(props->AttachRecorder(nullptr).IsValid());
-    REQUIRE(recorder->Close().IsValid());
+    recorded.Finish();
     CHECK(props->GetCollisionCount() == 2u); // the first hit and the third; the second reached no prop
 
     const std::vector<ReplayedProp> replayed =
