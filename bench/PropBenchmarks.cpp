@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace crumple::bench
 {
 
@@ -153,14 +155,18 @@ void RunFenceReplayThreads(const char* inEngine, BenchTable& ioTable, const Benc
 {
     common::FenceDriveSettings drive;
     drive.mDuration = inOptions.mQuick ? 0.1 : 0.6;
+    // intent: a name of this process's own (two benches at once must not share it)
     const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                       ("crumple_bench_fence_replay_" + std::string(inEngine) + ".crumple");
+                                       ("crumple_bench_fence_replay_" + std::string(inEngine) + "_" +
+                                        std::to_string(static_cast<long>(::getpid())) + ".crumple");
     drive.mRecordTo = path;
     const Result<common::FenceRun> live = common::DriveThroughFence<Scene>(drive);
     Result<std::vector<std::byte>> bytes =
         live ? ReadFileBytes(path) : Result<std::vector<std::byte>>(live.GetError());
+    // intent: the recording and, where the drive stopped before closing it, its partial file: nothing left
     std::error_code ignored;
     std::filesystem::remove(path, ignored);
+    std::filesystem::remove(PartialFilePath(path), ignored);
     Result<plugin::Replay> replay =
         bytes ? plugin::DecodeReplay(bytes.Get()) : Result<plugin::Replay>(bytes.GetError());
     if (!replay)

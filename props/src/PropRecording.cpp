@@ -561,6 +561,11 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
     if (!queued)
         if (Status status = apply_collisions_until(inReplay.mCollisions.size()); status.HasError())
             return status.GetError();
+    // intent: the props handed back keep no pointer to the caller's job system (they may step after it is
+    // gone)
+    for (ReplayedProp& prop : props)
+        if (fem::TetSolver* cpu = prop.mProp.GetCpuSolver(); cpu != nullptr)
+            cpu->SetJobSystem(nullptr);
     return props;
 }
 

@@ -47,7 +47,8 @@ struct FenceDriveSettings
     /// its place: PropWorld::RemoveProp, the adapter's RemoveBody for its held body and its pieces' bodies,
     /// then the same fence added again (-1: never)
     int mRestartFenceAtStep = -1;
-    /// Where to record the drive (a DamageRecorder, the props attached before the fence joins); empty: none
+    /// Where to record the drive (a DamageRecorder, the props attached before the fence joins); empty: none.
+    /// A drive that returns an error leaves the recording closed where it stopped: remove the file then.
     std::filesystem::path mRecordTo{};
 };
 
@@ -125,12 +126,14 @@ Result<FenceRun> DriveThroughFence(const FenceDriveSettings& inSettings)
     settings.mGap = 0.3;
     settings.mTriangles = 2000;
     Scene scene(settings);
+    // intent: declared before the prop world, so destroyed after it on every return (an error return
+    // included)
+    std::unique_ptr<plugin::DamageRecorder> recorder;
     Result<std::unique_ptr<props::PropWorld>> props_made =
         props::PropWorld::Create(scene.GetDamage(), {.mContactMass = inSettings.mMatchMass});
     if (!props_made)
         return props_made.GetError();
     props::PropWorld& props = *props_made.Get();
-    std::unique_ptr<plugin::DamageRecorder> recorder;
     if (!inSettings.mRecordTo.empty())
     {
         Result<std::unique_ptr<plugin::DamageRecorder>> made =

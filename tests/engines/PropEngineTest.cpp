@@ -22,6 +22,16 @@ using namespace crumple::props;
 namespace
 {
 
+// Bodies and geoms in the engine's own world: what the adapter added or removed there.
+int EngineObjects(BulletWallCrash& ioScene)
+{
+    return ioScene.GetWorld().getNumCollisionObjects();
+}
+int EngineObjects(OdeWallCrash& ioScene)
+{
+    return dSpaceGetNumGeoms(ioScene.GetSpace());
+}
+
 // A brittle 0.2 m facing on the wall's face (world x in [0, 0.2] inside the wall, y in [-1.2, 1.2], z in
 // [0.1, 1.5]), in the frame of the wall's damage body.
 FemProp Facing(const plugin::BodyState& inWall)
@@ -58,9 +68,12 @@ struct PropRun
     int mBodiesMade = 0;     ///< Engine bodies made for the pieces handed over
     bool mBodiesFinite = true; ///< Their states after more engine steps
     /// A restart after that (RemoveProp, the pieces' bodies removed through the adapter, a fresh facing on
-    /// the wall): everything removed was gone and the scene stepped on with the fresh facing, asleep and
+    /// the wall): the prop and the bodies gone from the prop and damage worlds, the adapter holding none of
+    /// the bodies (a second removal refused), and the scene stepping on with the fresh facing bound, asleep,
     /// whole
-    bool mRestarted = false;
+    bool mRemovedGone = false;
+    bool mAdapterForgot = false;
+    bool mFreshAsleep = false;
 };
 
 template <class Scene>
@@ -91,6 +104,7 @@ PropRun HitFacing(const EngineCrashSettings& inSettings)
 
     // The loose pieces become bodies of the engine (and of the damage world), then the scene goes on.
     std::vector<plugin::BodyId> bodies;
+    const int engine_objects = EngineObjects(scene);
     const std::vector<LooseFragment> loose = props->TakeLooseFragments().Get();
     for (const LooseFragment& piece : loose)
     {
@@ -101,6 +115,7 @@ PropRun HitFacing(const EngineCrashSettings& inSettings)
         bodies.push_back(body.Get());
     }
     run.mBodiesMade = static_cast<int>(bodies.size());
+    REQUIRE(EngineObjects(scene) == engine_objects + run.mBodiesMade); // one engine object per piece
     for (int i = 0; i < 12; ++i)
     {
         scene.Step();
@@ -116,24 +131,34 @@ PropRun HitFacing(const EngineCrashSettings& inSettings)
     REQUIRE(props->RemoveProp(facing));
     for (const plugin::BodyId body : bodies)
         REQUIRE(scene.RemoveMadeBody(body));
-    bool gone = props->GetProp(facing) == nullptr;
+    run.mRemovedGone = props->GetProp(facing) == nullptr;
+    // intent: each piece was one engine object (a body and its hull, one collision object or geom)
+    run.mAdapterForgot = EngineObjects(scene) == engine_objects;
     for (const plugin::BodyId body : bodies)
-        gone = gone && scene.GetDamage().GetBodyState(body) == nullptr;
-    const PropId fresh = props->AddProp(wall, Facing(*scene.GetDamage().GetBodyState(wall))).Get();
+    {
+        run.mRemovedGone = run.mRemovedGone && scene.GetDamage().GetBodyState(body) == nullptr;
+        run.mAdapterForgot = run.mAdapterForgot && !scene.RemoveMadeBody(body).IsValid();
+    }
+    Result<PropId> fresh = props->AddProp(wall, Facing(*scene.GetDamage().GetBodyState(wall)));
+    REQUIRE(fresh);
     PropStepReport last;
     for (int i = 0; i < 12; ++i)
     {
         scene.Step();
-        last = props->Step(inSettings.mTimeStep).Get();
+        Result<PropStepReport> stepped = props->Step(inSettings.mTimeStep);
+        REQUIRE(stepped);
+        last = stepped.Get();
     }
-    run.mRestarted = gone && last.mStepped == 0 && props->GetProp(fresh)->GetBrokenLinkCount() == 0 &&
-                     props->FindProp(wall) == fresh;
+    run.mFreshAsleep = last.mStepped == 0 && props->GetProp(fresh.Get())->GetBrokenLinkCount() == 0 &&
+                       props->FindProp(wall) == fresh.Get();
     return run;
 }
 
 } // namespace
 
-TEST_CASE("A car cracks a wall's brittle facing through Bullet and through ODE, and its pieces fly as engine bodies",
+TEST_CASE("A car cracks a wall's brittle facing through Bullet and through ODE, its pieces fly as engine "
+          "bodies, and "
+          "a restart removes them",
           "[bullet][ode][props]")
 {
     EngineCrashSettings settings;
@@ -166,6 +191,11 @@ TEST_CASE("A car cracks a wall's brittle facing through Bullet and through ODE, 
     CHECK(ode.mBodiesMade > 0);
     CHECK(bullet.mBodiesFinite);
     CHECK(ode.mBodiesFinite);
-    CHECK(bullet.mRestarted);
-    CHECK(ode.mRestarted);
+    // The restart: the prop and its flying pieces' bodies go from every world, a fresh facing takes the wall.
+    CHECK(bullet.mRemovedGone);
+    CHECK(ode.mRemovedGone);
+    CHECK(bullet.mAdapterForgot);
+    CHECK(ode.mAdapterForgot);
+    CHECK(bullet.mFreshAsleep);
+    CHECK(ode.mFreshAsleep);
 }

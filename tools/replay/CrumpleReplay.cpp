@@ -42,7 +42,8 @@ int main(int argc, char** argv)
     bool pictures = false;
     bool meshes = true;
     double colour_max = 0.0; // 0: per object, its deepest dent rounded up (samples::DentColorScale)
-    int threads = 1;         // the props' element passes (ReplayProps' job system)
+    [[maybe_unused]] int threads =
+        1; // the props' element passes (ReplayProps' job system; unused without props)
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];

@@ -107,7 +107,8 @@ struct CRUMPLE_API ReplayedProp
 /// its pieces as replayed (a recording made by a build of Crumple whose FEM gives other results; before, such
 /// a replay fixed those nodes and went on, or stopped at a node past the prop's count).
 /// inJobs (null: serial): the CPU props' element passes run on the host's job system
-/// (fem::TetSolver::SetJobSystem), bitwise the same for any number of workers; it must outlive the call.
+/// (fem::TetSolver::SetJobSystem), bitwise the same for any number of workers; it must outlive the call, and
+/// the props handed back keep no pointer to it (they step serially unless given one again).
 CRUMPLE_API Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
                                                           gpu::ComputeDeviceProvider* ioProvider = nullptr,
                                                           const JobSystem* inJobs = nullptr);
