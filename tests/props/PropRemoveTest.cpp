@@ -336,6 +336,18 @@ TEST_CASE("PropWorld::RemoveProp of a GPU prop frees it, and a fresh GPU prop th
         REQUIRE(made.IsValid());
         return std::move(made).Get();
     };
+#if defined(CRUMPLE_TEST_PROPS_WITH_GPU)
+    // What holds the device (shared_ptr): the provider, and every buffer and program made on it. Counted the
+    // same way each time (the provider's Result holds one more while it lives).
+    const auto device_holders = [&]() -> long
+    {
+        Result<std::shared_ptr<gpu::ComputeDevice>> device = provider.Acquire();
+        return device ? device.Get().use_count() : 0;
+    };
+#else
+    const auto device_holders = [] { return 0L; };
+#endif
+    const long idle = device_holders();
     FemProp first = gpu_panel();
     if (first.GetBackend() != EFemBackend::Gpu)
     {
@@ -348,8 +360,10 @@ TEST_CASE("PropWorld::RemoveProp of a GPU prop frees it, and a fresh GPU prop th
     const PropId wall = props->AddProp(fixture.mWall, std::move(first)).Get();
     HitWall(fixture, 0.0);
     REQUIRE(StepProps(*props, 2) == 2);
+    CHECK(device_holders() > idle); // the prop's buffers and programs
     REQUIRE(props->RemoveProp(wall).IsValid());
     CHECK(props->GetProp(wall) == nullptr);
+    CHECK(device_holders() == idle); // all of them released with it
     CHECK(StepProps(*props, 1) == 0);
 
     const PropId fresh = props->AddProp(fixture.mWall, gpu_panel()).Get();
