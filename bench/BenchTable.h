@@ -51,6 +51,17 @@ double Quantile(std::vector<double> inValues, double inQuantile);
 /// The middle value of inValues (the upper one of an even count); inValues not empty.
 double Median(std::vector<double> inValues);
 
+/// How many elements of inA and inB differ (compared exactly; the elements past the shorter one count as
+/// differing): links broken in two runs, node positions of two replays.
+template <class T> int CountDiffering(const std::vector<T>& inA, const std::vector<T>& inB)
+{
+    const std::size_t common = inA.size() < inB.size() ? inA.size() : inB.size();
+    int differing = static_cast<int>((inA.size() > inB.size() ? inA.size() : inB.size()) - common);
+    for (std::size_t index = 0; index < common; ++index)
+        differing += inA[index] == inB[index] ? 0 : 1;
+    return differing;
+}
+
 /// Each frame's wall and thread CPU time (ms) of two sides stepped in lockstep: side 0 (bare) and side 1
 /// (attached).
 struct LockstepFrames

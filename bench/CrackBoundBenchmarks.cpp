@@ -83,10 +83,8 @@ void CrackBoundCase(BenchTable& ioTable, double inImpulse)
     }
     for (int side = 0; side < cSides; ++side)
     {
-        const std::vector<std::uint8_t>& broken = rails[static_cast<std::size_t>(side)].GetBrokenLinks();
-        int differing = 0;
-        for (std::size_t link = 0; link < broken.size(); ++link)
-            differing += broken[link] != reference.GetBrokenLinks()[link] ? 1 : 0;
+        const int differing = CountDiffering(rails[static_cast<std::size_t>(side)].GetBrokenLinks(),
+                                             reference.GetBrokenLinks());
         ioTable.Add(
             {"fem_cracks", "pushed_rail/" + std::to_string(static_cast<int>(inImpulse)) + "Ns/" + names[side],
              Median(wall[side]), failed || cracked == 0 ? -1.0 : static_cast<double>(differing) / cracked,

@@ -129,13 +129,8 @@ void RunFenceRestart(const char* inEngine, BenchTable& ioTable, const BenchOptio
         restart_wall_ms.push_back(again.mRestartWallMs);
         prepare_ms.push_back(again.mPrepareCpuMs);
         // intent: the worst repetition's (each pair is its own comparison)
-        const std::vector<std::uint8_t>& a = first.mBroken;
-        const std::vector<std::uint8_t>& b = again.mBroken;
         broken = first.mBrokenLinks;
-        int pair_differing = a.size() == b.size() ? 0 : static_cast<int>(std::max(a.size(), b.size()));
-        for (std::size_t link = 0; link < std::min(a.size(), b.size()); ++link)
-            pair_differing += (a[link] != 0) != (b[link] != 0) ? 1 : 0;
-        differing = std::max(differing, pair_differing);
+        differing = std::max(differing, CountDiffering(first.mBroken, again.mBroken));
     }
     const std::string speed = std::to_string(static_cast<int>(std::lround(plain.mSpeed * 3.6))) + "kmh";
     ioTable.Add({"fence_restart", std::string(inEngine) + "/wood_fence/" + speed, Median(restart_cpu_ms),
@@ -199,11 +194,7 @@ void RunFenceReplayThreads(const char* inEngine, BenchTable& ioTable, const Benc
             }
             positions[side] = replayed.Get()[0].mProp.GetCpuSolver()->GetPositions();
         }
-        int pair_differing =
-            positions[0].size() == positions[1].size() ? 0 : static_cast<int>(positions[0].size());
-        for (std::size_t node = 0; node < std::min(positions[0].size(), positions[1].size()); ++node)
-            pair_differing += positions[0][node] == positions[1][node] ? 0 : 1;
-        differing = std::max(differing, pair_differing);
+        differing = std::max(differing, CountDiffering(positions[0], positions[1]));
     }
     const std::string name = std::string(inEngine) + "/" + std::to_string(live.Get().mFenceTets) + "_tets/";
     ioTable.Add({"fence_replay", name + "1_thread", Median(wall_ms[0]), 0.0, "baseline",

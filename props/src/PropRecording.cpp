@@ -504,11 +504,12 @@ Result<std::vector<ReplayedProp>> ReplayProps(const plugin::Replay& inReplay,
             if (reader.Failed() || reader.Remaining() != 0)
                 return MakeError(EError::CorruptData, where + "a step record of the wrong length");
             for (ReplayedProp& prop : props)
-                if (Result<fem::TetStepResult> result = prop.mRemoved
-                                                            ? Result<fem::TetStepResult>(fem::TetStepResult{})
-                                                            : prop.mProp.Step(step);
-                    result.HasError())
+            {
+                if (prop.mRemoved)
+                    continue;
+                if (Result<fem::TetStepResult> result = prop.mProp.Step(step); result.HasError())
                     return MakeError(result.GetError().mCode, where + result.GetError().mMessage);
+            }
         }
         else if (extension.mTag == static_cast<std::uint32_t>(EPropRecord::Loose))
         {
