@@ -49,19 +49,27 @@ Status ValidateRigidBody(const std::string& inName, double inMass, const Vec3& i
     return Status::Ok();
 }
 
-// Points of one convex hull; inName names them in the messages.
-Status ValidateHull(const std::string& inName, const std::vector<Vec3>& inPoints)
+// Points of one convex hull; inName names them in the messages, with [inPiece] where inPiece >= 0.
+Status ValidateHull(const char* inName, std::ptrdiff_t inPiece, const std::vector<Vec3>& inPoints)
 {
+    // intent: the name is built for a refusal only: a prop's pieces are checked every step its FEM moves
+    const auto name = [&]
+    {
+        std::string named = inName;
+        if (inPiece >= 0)
+            named.append("[").append(std::to_string(inPiece)).append("]");
+        return named;
+    };
     const std::vector<Vec3>& points = inPoints;
     if (points.size() < 4)
-        return MakeError(EError::DegenerateGeometry, inName + ": a hull needs at least 4 points");
+        return MakeError(EError::DegenerateGeometry, name() + ": a hull needs at least 4 points");
     // intent: one square root, not one per point (a loose piece's hull has a point per FEM node: 1,500 in
     // the racing fence's, checked on the game's thread when it breaks)
     double squared_extent = 0.0;
     for (const Vec3& point : points)
     {
         if (!Within(point, cMaxBodyPosition))
-            return MakeError(EError::InvalidArgument, inName + " must be finite, within 1e9 m");
+            return MakeError(EError::InvalidArgument, name() + " must be finite, within 1e9 m");
         squared_extent = std::max(squared_extent, (point - points[0]).squaredNorm());
     }
     const double extent = std::sqrt(squared_extent);
@@ -79,7 +87,7 @@ Status ValidateHull(const std::string& inName, const std::vector<Vec3>& inPoints
                 if (std::abs(unit.dot(point - points[0])) > flat)
                     return Status::Ok();
         }
-    return MakeError(EError::DegenerateGeometry, inName + " are flat: they span no volume");
+    return MakeError(EError::DegenerateGeometry, name() + " are flat: they span no volume");
 }
 
 } // namespace
@@ -91,7 +99,7 @@ Status ValidateConvexBodySettings(const ConvexBodySettings& inSettings)
                                         inSettings.mAngularVelocity);
         !body)
         return body;
-    return ValidateHull("ConvexBodySettings.mHullPoints", inSettings.mHullPoints);
+    return ValidateHull("ConvexBodySettings.mHullPoints", -1, inSettings.mHullPoints);
 }
 
 Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces)
@@ -99,7 +107,9 @@ Status ValidatePropPieces(const std::vector<std::vector<Vec3>>& inPieces)
     if (inPieces.empty())
         return MakeError(EError::DegenerateGeometry, "PropBodySettings.mPieces: a prop body needs at least one piece");
     for (std::size_t piece = 0; piece < inPieces.size(); ++piece)
-        if (Status hull = ValidateHull("PropBodySettings.mPieces[" + std::to_string(piece) + "]", inPieces[piece]); !hull)
+        if (Status hull =
+                ValidateHull("PropBodySettings.mPieces", static_cast<std::ptrdiff_t>(piece), inPieces[piece]);
+            !hull)
             return hull;
     return Status::Ok();
 }

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BulletTickCallbacks.h"
+#include "ReplaceableHull.h"
 
 #include <crumple/bullet/BulletAdapter.h>
 #include <crumple/bullet/BulletBodyState.h>
@@ -24,19 +25,12 @@ Vec3 ToVec3(const btVector3& inV)
     return {static_cast<double>(inV.x()), static_cast<double>(inV.y()), static_cast<double>(inV.z())};
 }
 
-// The convex hull of inPoints, with a margin Bullet adds outside it kept small against the hull's size.
+// The convex hull of inPoints (ReplaceableHull::SetPoints: the same bits as a prop piece's points replaced
+// later).
 std::unique_ptr<btConvexHullShape> MakeHull(const std::vector<Vec3>& inPoints)
 {
-    auto hull = std::make_unique<btConvexHullShape>();
-    Vec3 low = inPoints[0], high = low;
-    for (const Vec3& p : inPoints)
-    {
-        hull->addPoint(btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())), false);
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    hull->setMargin(btScalar(std::min(0.01, 0.05 * (high - low).minCoeff())));
-    hull->recalcLocalAabb();
+    auto hull = std::make_unique<ReplaceableHull>();
+    hull->SetPoints(inPoints);
     return hull;
 }
 
@@ -161,7 +155,7 @@ Result<BodyId> BulletAdapter::CreatePropBody(const plugin::PropBodySettings& inS
     if (Status valid = plugin::ValidatePropBodySettings(inSettings); !valid)
         return valid.GetError();
     OwnedBody owned;
-    owned.mCompound = std::make_unique<btCompoundShape>();
+    owned.mCompound = std::make_unique<ReplaceableCompound>();
     for (const std::vector<Vec3>& piece : inSettings.mPieces)
     {
         owned.mPieces.push_back(MakeHull(piece));
@@ -192,19 +186,34 @@ Status BulletAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector
         return MakeError(EError::OutOfRange, "SetPropPieces: body " + std::to_string(inBody.mValue) + " is not a prop body of this adapter");
     if (Status valid = plugin::ValidatePropPieces(inPieces); !valid)
         return valid;
-    // intent: out of the world (its manifolds and broadphase pairs go with it), new children, back in
-    mWorld.removeRigidBody(owned->mRigidBody.get());
-    auto compound = std::make_unique<btCompoundShape>();
-    std::vector<std::unique_ptr<btConvexHullShape>> pieces;
-    for (const std::vector<Vec3>& piece : inPieces)
+    // intent: the children replaced in place, new ones added and surplus ones removed at the end: the body
+    // stays in the world with its broadphase pairs. The contact algorithms drop the children's manifolds
+    // (MarkChildrenChanged), as a body that left the world and came back has none: kept, their warm-started
+    // impulses pushed the held body's struck pieces again each step (the drive-through fence in Bullet took
+    // 3,468 N s instead of 2,951, ODE's 2,636)
+    auto& compound = static_cast<ReplaceableCompound&>(*owned->mCompound);
+    const std::size_t kept = std::min(owned->mPieces.size(), inPieces.size());
+    for (std::size_t i = 0; i < kept; ++i)
     {
-        pieces.push_back(MakeHull(piece));
-        compound->addChildShape(btTransform::getIdentity(), pieces.back().get());
+        // intent: every piece hull is a ReplaceableHull (MakeHull)
+        auto& hull = static_cast<ReplaceableHull&>(*owned->mPieces[i]);
+        hull.SetPoints(inPieces[i]);
+        compound.getChildList()[i].m_childMargin = hull.getMargin();
+        compound.updateChildTransform(static_cast<int>(i), btTransform::getIdentity(), false);
     }
-    owned->mRigidBody->setCollisionShape(compound.get());
-    owned->mCompound = std::move(compound);
-    owned->mPieces = std::move(pieces);
-    mWorld.addRigidBody(owned->mRigidBody.get());
+    while (owned->mPieces.size() > inPieces.size())
+    {
+        compound.removeChildShapeByIndex(static_cast<int>(owned->mPieces.size() - 1));
+        owned->mPieces.pop_back();
+    }
+    for (std::size_t i = kept; i < inPieces.size(); ++i)
+    {
+        owned->mPieces.push_back(MakeHull(inPieces[i]));
+        compound.addChildShape(btTransform::getIdentity(), owned->mPieces.back().get());
+    }
+    compound.MarkChildrenChanged();
+    compound.recalculateLocalAabb();
+    mWorld.updateSingleAabb(owned->mRigidBody.get());
     owned->mRigidBody->activate(true);
     return Status::Ok();
 }
