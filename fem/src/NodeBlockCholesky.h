@@ -66,6 +66,8 @@ public:
     /// of c (c + 1) / 2, c the column's blocks below the diagonal (the up-looking factorisation's inner loop
     /// runs over each column's blocks of the rows before the current one). 0 without an analysis.
     std::int64_t GetNumericBlockProducts() const { return mAnalyzed ? mNumericBlockProducts : 0; }
+    /// The ordering of the last Factor(): node i is row GetNodeRows()[i] of L (empty before one)
+    const std::vector<int>& GetNodeRows() const { return mNewOfOld; }
     /// ioX = A^-1 ioX (#n; no allocation).
     void Solve(std::span<Vec3> ioX) const;
 
@@ -112,7 +114,6 @@ private:
     mutable std::vector<Vec3> mWork;     // #n, permuted right-hand side
 
     // Factor()'s scratch, kept for the next factorisation.
-    std::vector<Eigen::Triplet<int>> mGraphEntries;
     PermutedRows mRows;
     std::vector<Placed> mPlaced, mPlacedByRow;
     std::vector<int> mRowStart, mRowFill, mParent, mFlag, mCount, mNext, mPattern, mStack;

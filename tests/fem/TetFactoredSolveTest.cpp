@@ -13,6 +13,7 @@
 
 #include <crumple/fem/FemMaterial.h>
 #include <crumple/fem/TetElementRest.h>
+#include <crumple/fem/TetFence.h>
 #include <crumple/fem/TetGrid.h>
 #include <crumple/fem/TetSolver.h>
 
@@ -20,6 +21,8 @@
 #include <SkipTest.h>
 #include <ThreadJobSystem.h>
 
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCore>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -247,6 +250,68 @@ TEST_CASE("NodeBlockCholesky: solves random sparse SPD block systems as a dense 
         CHECK_FALSE(indefinite.Factor(n, blocks));
         CHECK_FALSE(indefinite.IsFactored());
     }
+}
+
+TEST_CASE("NodeBlockCholesky: orders the nodes as Eigen's AMDOrdering orders the node graph", "[fem]")
+{
+    // The ordering hands Eigen's AMD routine the symmetric graph it builds itself; AMDOrdering, given the
+    // graph as triplets, must find the same order (the same factor, bit for bit). Random graphs with repeated
+    // edges, and a fence's element pattern.
+    const auto reference = [](int inNodeCount, const std::vector<NodeBlock>& inBlocks)
+    {
+        std::vector<Eigen::Triplet<int>> entries;
+        for (const NodeBlock& block : inBlocks)
+        {
+            entries.emplace_back(block.mRow, block.mColumn, 1);
+            entries.emplace_back(block.mColumn, block.mRow, 1);
+        }
+        Eigen::SparseMatrix<int> graph(inNodeCount, inNodeCount);
+        graph.setFromTriplets(entries.begin(), entries.end());
+        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+        Eigen::AMDOrdering<int>()(graph, inverse);
+        std::vector<int> rows(static_cast<std::size_t>(inNodeCount));
+        for (int row = 0; row < inNodeCount; ++row)
+            rows[static_cast<std::size_t>(inverse.indices()[row])] = row;
+        return rows;
+    };
+    const auto diagonally_dominant = [](int inNodeCount, std::vector<NodeBlock> ioBlocks)
+    {
+        for (NodeBlock& block : ioBlocks)
+            block.mBlock = block.mRow == block.mColumn ? Mat3(Mat3::Zero()) : Mat3(-Mat3::Identity());
+        for (int node = 0; node < inNodeCount; ++node)
+            ioBlocks.push_back({node, node, (1.0 + static_cast<double>(ioBlocks.size())) * Mat3::Identity()});
+        return ioBlocks;
+    };
+    std::mt19937 random(5u);
+    for (int trial = 0; trial < 30; ++trial)
+    {
+        const int n = 1 + static_cast<int>(random() % 300u);
+        std::vector<NodeBlock> blocks;
+        const int edges = static_cast<int>(random() % static_cast<std::uint32_t>(6 * n + 1));
+        for (int edge = 0; edge < edges; ++edge)
+        {
+            const int i = static_cast<int>(random() % static_cast<std::uint32_t>(n));
+            const int j = static_cast<int>(random() % static_cast<std::uint32_t>(n));
+            blocks.push_back({std::max(i, j), std::min(i, j), Mat3::Zero()});
+        }
+        blocks = diagonally_dominant(n, blocks);
+        NodeBlockCholesky cholesky;
+        REQUIRE(cholesky.Factor(n, blocks));
+        CHECK(cholesky.GetNodeRows() == reference(n, blocks));
+    }
+    TetFenceSettings fence_settings;
+    fence_settings.mLength = 8.0;
+    const TetFence fence = MakeTetFence(fence_settings).Get();
+    std::vector<NodeBlock> blocks;
+    for (const TetIndices& tet : fence.mMesh.GetTets())
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b <= a; ++b)
+                blocks.push_back({std::max(tet[a], tet[b]), std::min(tet[a], tet[b]), Mat3::Zero()});
+    const int nodes = static_cast<int>(fence.mMesh.GetRestPositions().size());
+    blocks = diagonally_dominant(nodes, blocks);
+    NodeBlockCholesky cholesky;
+    REQUIRE(cholesky.Factor(nodes, blocks));
+    CHECK(cholesky.GetNodeRows() == reference(nodes, blocks));
 }
 
 TEST_CASE("Factored solve: the trajectory of the fully converged implicit solve, in a fraction of the iterations",
