@@ -16,9 +16,9 @@ namespace crumple::bullet
 {
 
 /// btConvexHullShape with SetPoints: a prop body's pieces change shape every step its FEM moves, and
-/// replacing a child's points keeps the child, the compound's tree leaf, the body's broadphase entry and its
-/// contact manifolds, where a new shape would have to leave the world and come back (0.2-0.3 ms per step for
-/// the racing fence's 80 pieces, and every manifold of the body lost).
+/// replacing a child's points keeps the child, the compound's tree leaf and the body's broadphase entry,
+/// where a new shape had to leave the world and come back (0.25-0.38 ms per step for the racing fence's
+/// 80-104 pieces).
 class ReplaceableHull final : public btConvexHullShape
 {
   public:
