@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-// A prop body's pieces replaced while it stays in the world: Bullet collides with the new pieces at once.
+// A prop body's pieces replaced: Bullet collides with the new pieces at once, whatever their count.
 
 #include <crumple/bullet/BulletAdapter.h>
 
@@ -90,7 +90,7 @@ bool RestsOnTop(const btRigidBody& inBall)
 
 } // namespace
 
-TEST_CASE("Bullet: a prop body's pieces replaced in place collide where they are now, whatever their count",
+TEST_CASE("Bullet: a prop body's replaced pieces collide where they are now, whatever their count",
           "[bullet][props]")
 {
     PieceWorld world;

@@ -6,7 +6,6 @@
 
 #include <crumple/base/Math.h>
 
-#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
 #include <algorithm>
@@ -16,9 +15,7 @@ namespace crumple::bullet
 {
 
 /// btConvexHullShape with SetPoints: a prop body's pieces change shape every step its FEM moves, and
-/// replacing a child's points keeps the child, the compound's tree leaf and the body's broadphase entry,
-/// where a new shape had to leave the world and come back (0.25-0.38 ms per step for the racing fence's
-/// 80-104 pieces).
+/// replacing a kept hull's points spares a new hull's allocations (the same bits as a new hull of them).
 class ReplaceableHull final : public btConvexHullShape
 {
   public:
@@ -39,14 +36,6 @@ class ReplaceableHull final : public btConvexHullShape
         setMargin(btScalar(std::min(0.01, 0.05 * (high - low).minCoeff())));
         recalcLocalAabb();
     }
-};
-
-/// btCompoundShape that can say its children changed: its contact algorithms then drop their children's
-/// manifolds, as they do when a child is added or removed.
-class ReplaceableCompound final : public btCompoundShape
-{
-  public:
-    void MarkChildrenChanged() { ++m_updateRevision; }
 };
 
 } // namespace crumple::bullet
