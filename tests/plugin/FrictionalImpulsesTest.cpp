@@ -583,16 +583,19 @@ TEST_CASE("A stalled joint solve stops: the racing car's 16 contacts on the fenc
           (KineticEnergy(bodies[0]) + KineticEnergy(bodies[1])) * (1.0 + 1.0e-9));
 }
 
-TEST_CASE("A crawling joint solve stops at its bound near the converged answer: the car's front on the "
-          "moving fence",
+TEST_CASE("A crawling joint solve converges through a subspace step once Newton stops creeping: the car's "
+          "front on the moving fence",
           "[plugin]")
 {
     // A batch dumped from the threaded Bullet racing session (common::CarFrontOnFenceCrawl), its costliest
     // friction solve: Gauss-Seidel trades impulse among nearly coplanar contacts for 2,242 sweeps before only
-    // three push, never stalling (points still move by 1.6e-7 of the approach speed per sweep), and every
-    // subspace step is refused. Known answer: the same solve without subspace steps run until it converges.
-    // The bounded solve's bodies' velocities must be within 2e-4 of that answer's change (measured 1.26e-4:
-    // the bound's cost, not round-off), with no kinetic energy made and every impulse in its cone.
+    // three push, never stalling (points still move by 1.6e-7 of the approach speed per sweep). The subspace
+    // steps' Newton iterations crept towards least-squares points of states that cannot all hold (4-5 step
+    // halvings each) until the 32-iteration bound refused every step, and the solve stopped at its
+    // 1,000-sweep bound 1.26e-4 off; a Newton that stops creeping hands its point to the state changes, and
+    // the step after 620 sweeps lands on the answer. Known answer: the same solve without subspace steps run
+    // until it converges. The bodies' velocities must be within 1e-9 of that answer's change
+    // (measured 1.3e-11), with no kinetic energy made and every impulse in its cone.
     const common::CarFrontOnFenceCrawl set = common::MakeCarFrontOnFenceCrawl();
     const BodyState &car = set.mCar, &fence = set.mFence;
     const std::vector<ImpulseContact>& contacts = set.mContacts;
@@ -622,9 +625,10 @@ TEST_CASE("A crawling joint solve stops at its bound near the converged answer: 
         }
     CHECK(pushing == 3);
 
-    CHECK(stats.mSweeps == FrictionSolveSettings().mMaxSweeps);
-    CHECK_FALSE(stats.mConverged);
+    CHECK(stats.mSweeps < FrictionSolveSettings().mMaxSweeps);
+    CHECK(stats.mConverged);
     CHECK_FALSE(stats.mStalled);
+    CHECK(stats.mSubspaceSteps >= 1);
     CHECK(stats.mNewtonIterations <= 4 * 32);
     const auto [car_after, fence_after] = After(car, fence, contacts, j);
     const auto [car_reference, fence_reference] = After(car, fence, contacts, reference);
@@ -640,7 +644,7 @@ TEST_CASE("A crawling joint solve stops at its bound near the converged answer: 
     converged << change(car_reference, car), change(fence_reference, fence);
     const double error = (bounded - converged).cwiseAbs().maxCoeff() / converged.cwiseAbs().maxCoeff();
     INFO("largest velocity change error " << error << " of the largest change");
-    CHECK(error < 2.0e-4);
+    CHECK(error < 1.0e-9);
     CHECK(KineticEnergy(car_after) + KineticEnergy(fence_after) <=
           (KineticEnergy(car) + KineticEnergy(fence)) * (1.0 + 1.0e-9));
     for (std::size_t i = 0; i < contacts.size(); ++i)
