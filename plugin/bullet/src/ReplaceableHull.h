@@ -9,6 +9,7 @@
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace crumple::bullet

@@ -28,6 +28,8 @@ class btDynamicsWorld;
 namespace crumple::bullet
 {
 
+class ReplaceableHull; // a prop piece's hull (private to the adapter)
+
 /// Settings of a BulletAdapter.
 struct CRUMPLE_API BulletAdapterSettings
 {
@@ -184,7 +186,8 @@ private:
         plugin::BodyId mBody;
         std::unique_ptr<btConvexHullShape> mShape;
         std::unique_ptr<btCompoundShape> mCompound;                ///< A prop body's shape, else null
-        std::vector<std::unique_ptr<btConvexHullShape>> mPieces; ///< Its children
+        std::vector<std::unique_ptr<ReplaceableHull>>
+            mPieces; ///< Its children's hulls, kept from shape to shape
         std::unique_ptr<btDefaultMotionState> mMotion;
         std::unique_ptr<btRigidBody> mRigidBody;
         bool mHeld = false;

@@ -7,7 +7,9 @@
 #include <btBulletDynamicsCommon.h>
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 using namespace crumple;
@@ -97,9 +99,14 @@ TEST_CASE("Bullet: a prop body's replaced pieces collide where they are now, wha
     const int objects = world.mWorld.getNumCollisionObjects();
     const btCollisionShape* const first_child = world.Compound().getChildShape(0);
 
-    // The cube moves 3 m along x: the same count, so the child is kept and its points replaced.
+    // The cube moves 3 m along x: the same count, so the hull is kept and its points replaced. The body left
+    // the world and came back (Bullet's contacts then come in the order a new shape gives them): it is the
+    // world's last object again, after the game's ball added since.
+    btRigidBody* before_call = world.DropBall(10.0);
     REQUIRE(world.mAdapter->SetPropPieces(world.mProp, {CubeAt(3.0)}));
-    CHECK(world.mWorld.getNumCollisionObjects() == objects);
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 1);
+    CHECK(world.mWorld.getCollisionObjectArray()[objects] == world.mAdapter->GetConvexBody(world.mProp));
+    CHECK(world.mWorld.getCollisionObjectArray()[objects - 1] == before_call);
     REQUIRE(world.Compound().getNumChildShapes() == 1);
     CHECK(world.Compound().getChildShape(0) == first_child);
     const auto* hull = static_cast<const btConvexHullShape*>(world.Compound().getChildShape(0));
@@ -109,6 +116,22 @@ TEST_CASE("Bullet: a prop body's replaced pieces collide where they are now, wha
               btVector3(btScalar(CubeAt(3.0)[static_cast<std::size_t>(i)].x()),
                         btScalar(CubeAt(3.0)[static_cast<std::size_t>(i)].y()),
                         btScalar(CubeAt(3.0)[static_cast<std::size_t>(i)].z())));
+    // The replaced hull is a new hull of the same points, bit for bit: margin and bounds.
+    PropBodySettings fresh_settings;
+    fresh_settings.mMass = 100.0;
+    fresh_settings.mPrincipalInertia = Vec3::Constant(20.0);
+    fresh_settings.mPosition = Vec3(0.0, 50.0, 0.0);
+    fresh_settings.mPieces = {CubeAt(3.0)};
+    const BodyId fresh = world.mAdapter->CreatePropBody(fresh_settings).Get();
+    const btCollisionShape& fresh_hull =
+        *static_cast<btCompoundShape*>(world.mAdapter->GetConvexBody(fresh)->getCollisionShape())
+             ->getChildShape(0);
+    CHECK(hull->getMargin() == fresh_hull.getMargin());
+    btVector3 low, high, fresh_low, fresh_high;
+    hull->getAabb(btTransform::getIdentity(), low, high);
+    fresh_hull.getAabb(btTransform::getIdentity(), fresh_low, fresh_high);
+    CHECK((low == fresh_low && high == fresh_high));
+
     btRigidBody* on_new = world.DropBall(3.0);
     btRigidBody* on_old = world.DropBall(0.0);
     world.Step(90);
@@ -127,14 +150,16 @@ TEST_CASE("Bullet: a prop body's replaced pieces collide where they are now, wha
     world.Step(90);
     CHECK(on_new->getCenterOfMassPosition().z() < btScalar(-1.0));
     CHECK(RestsOnTop(*on_added));
-    CHECK(world.mWorld.getNumCollisionObjects() == objects + 3);
+    CHECK(world.mWorld.getNumCollisionObjects() == objects + 5);
 
     // Refused pieces change nothing: the ball still rests on the cube.
     std::vector<Vec3> flat = CubeAt(0.0);
     for (Vec3& point : flat)
         point.z() = 0.0;
-    CHECK(world.mAdapter->SetPropPieces(world.mProp, {CubeAt(0.0), flat}).GetError().mCode ==
-          EError::DegenerateGeometry);
+    const Status refused = world.mAdapter->SetPropPieces(world.mProp, {CubeAt(0.0), flat});
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mCode == EError::DegenerateGeometry);
+    CHECK(refused.GetError().mMessage.find("mPieces[1]") != std::string::npos);
     CHECK(world.Compound().getNumChildShapes() == 1);
     world.Step(30);
     CHECK(RestsOnTop(*on_added));
