@@ -35,11 +35,17 @@ void FitAssign(std::vector<T>& ioVector, std::size_t inSize, const T& inValue)
 
 } // namespace
 
+// The node graph goes to Eigen's AMD routine (internal::minimum_degree_ordering: what AMDOrdering calls once
+// it has formed the symmetric pattern; Eigen 3.3 and 3.4 have it with this signature) as the matrix
+// AMDOrdering would form: compressed columns, each column's rows ascending, each node pair once (an element
+// edge is shared by about five elements, so the blocks repeat its pair), the diagonal where the blocks have
+// it. So AMD's answer is AMDOrdering's bit for bit (TetFactoredSolveTest), without its triplet sort and its
+// transpose and sparse sum (a third of the ordering's time on the cracking racing fence). The graph is
+// symmetric, so a column's rows are its row's columns: each row's distinct columns are counted, then each
+// receives the row, rows visited in ascending order.
 void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const NodeBlock> inBlocks)
 {
-    // intent: each node pair once. An element edge is shared by about five elements, so the blocks repeat its
-    // pair, and setFromTriplets sorted and summed every repeat (half the ordering's time on a cracking
-    // fence). The pattern, and so AMD's answer, is the same.
+    // intent: every block's node pair in both rows, repeats included
     const auto size = static_cast<std::size_t>(inNodeCount);
     FitAssign(mRowStart, size + 1, 0);
     for (const NodeBlock& block : inBlocks)
@@ -58,11 +64,7 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
         if (block.mRow != block.mColumn)
             mPattern[static_cast<std::size_t>(mRowFill[static_cast<std::size_t>(block.mColumn)]++)] = block.mRow;
     }
-    // intent: the graph straight in compressed columns, each column's rows ascending with the diagonal: the
-    // matrix Eigen's AMDOrdering would make of it (it sorts triplets, then forms A^T + A with a transpose and
-    // a sparse sum, about a third of the ordering's time on the cracking racing fence), so AMD's answer is
-    // the same bit for bit. The graph is symmetric, so a column's rows are its row's columns: counted per
-    // row once each, then each row's columns receive the row, rows visited in ascending order.
+    // intent: each row's distinct columns counted: its column's length in the graph
     FitAssign(mFlag, size, -1);
     FitAssign(mCount, size, 0);
     for (int row = 0; row < inNodeCount; ++row)
@@ -81,8 +83,8 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
         outer[column + 1] = outer[column] + mCount[column];
     graph.resizeNonZeros(outer[size]);
     int* const inner = graph.innerIndexPtr();
-    std::fill(graph.valuePtr(), graph.valuePtr() + outer[size], 1);
-    FitSize(mRowFill, size);
+    std::fill(graph.valuePtr(), graph.valuePtr() + outer[size], 1); // intent: defined values (AMD reads none)
+    // intent: each row given to its distinct columns, rows ascending: each column's rows sorted
     std::copy(outer, outer + size, mRowFill.begin());
     std::fill(mFlag.begin(), mFlag.end(), -1);
     for (int row = 0; row < inNodeCount; ++row)
@@ -96,7 +98,6 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
             inner[mRowFill[static_cast<std::size_t>(column)]++] = row;
         }
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-    // intent: Eigen's AMD routine on the symmetric pattern itself (what AMDOrdering calls after forming it)
     Eigen::internal::minimum_degree_ordering(graph, inverse);
     // AMD gives P^-1 (old index of each new row), as Eigen's simplicial solvers use it.
     FitSize(mNewOfOld, static_cast<std::size_t>(inNodeCount));
