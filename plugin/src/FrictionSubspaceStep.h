@@ -14,8 +14,9 @@ enum class ESubspaceOutcome
 {
     Refused, ///< ioRows unchanged
     Kept,    ///< ioRows replaced by the exact answer of their states; Gauss-Seidel goes on from it
-    Settled, ///< ioRows replaced by a least-squares point of states that cannot all hold exactly but meet
-             ///< Coulomb's conditions to within cSettledMerit of the approach speed: the solve ends there
+    Settled, ///< ioRows replaced by a least-squares point of states that cannot all hold exactly (or the
+             ///< point where Newton stagnated on its way to one) that meets Coulomb's conditions to within
+             ///< cSettledMerit of the approach speed: the solve ends there
 };
 
 /// A least-squares point of the subspace system ends the solve when it misses Coulomb's conditions by at most
@@ -37,8 +38,10 @@ constexpr double cSettledMerit = 1.0e-6;
 /// Coulomb's conditions by less than the current impulses do (MeritOfRows). Where the states overdetermine
 /// the bodies' velocities (four sticking contacts and two sliding ones on two bodies: fourteen conditions on
 /// twelve velocities), Newton ends at a least-squares point that Gauss-Seidel cannot improve on either (it
-/// crawls towards a point of its own no closer to the conditions): that point, when it keeps every state,
-/// misses the conditions by at most cSettledMerit and by less than the current impulses, settles the solve.
+/// crawls towards a point of its own no closer to the conditions), or stops where it stagnates on its way to
+/// one (a step that needed two halvings or more and still left 90 % of |F|^2): that point, when it keeps
+/// every state, misses the conditions by at most cSettledMerit and by less than the current impulses,
+/// settles the solve.
 /// Further off, the pushing contact whose normal velocity passes its target furthest (it pushes the bodies
 /// apart more than it must: a piece on more ground contacts than its velocities need) lets go, once per
 /// step, and Newton solves again. Deterministic.

@@ -262,8 +262,9 @@ TEST_CASE("On random contact sets friction stays in its cone and makes no energy
     // than 10 % (all with mu = +inf, 7 with restitution); 31 and 9 without subspace steps
     // (FrictionSolveSettings). What holds whatever the convergence: pushing normals, friction in its cone and
     // in the tangent plane, without restitution no kinetic energy made, and the same bits again. 15 solves
-    // settle at a subspace step's least-squares point (FrictionSolveStats::mSettled; 14 stop at the bound,
-    // 15 before the settling): those meet the conditions to the settling tolerance.
+    // settle at a subspace step's least-squares point (FrictionSolveStats::mSettled): those meet the
+    // conditions to the settling tolerance. (Counted at d9b1caf: 15 settle, 15 stop at the bound, 1 stalls;
+    // the miss counts above are from before it.)
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     CoulombTally tally;
@@ -506,8 +507,8 @@ TEST_CASE("A subspace step takes at most 32 Newton iterations, and crowds reach 
     // per state change and 8 changes: on adversarial sets (10 g to 10 t, inertias 1e4 apart, duplicated
     // contacts, flipped normals, mu = +inf in one in five, speculative contacts) a solve took up to 14 ms of
     // CPU. Known answer: no step past 32 iterations (FrictionSolveStats::mMostStepIterations), steps that
-    // reach it (36 of these 400 sets), and impulses that stay finite, pushing and inside their cones and make
-    // no kinetic energy.
+    // reach it (4 of these 400 sets since a Newton that stops creeping ends, d9b1caf; 36 before), and
+    // impulses that stay finite, pushing and inside their cones and make no kinetic energy.
     std::mt19937 random(12345);
     int bounded = 0;
     for (int trial = 0; trial < 400; ++trial)
@@ -629,7 +630,8 @@ TEST_CASE("A crawling joint solve converges through a subspace step once Newton 
     CHECK(stats.mConverged);
     CHECK_FALSE(stats.mStalled);
     CHECK(stats.mSubspaceSteps >= 1);
-    CHECK(stats.mNewtonIterations <= 4 * 32);
+    CHECK_FALSE(stats.mSettled); // intent: an exact answer of the states, kept (not a least-squares point)
+    CHECK(stats.mNewtonIterations <= 48); // measured 42; 128 when every step ran to its 32 iterations
     const auto [car_after, fence_after] = After(car, fence, contacts, j);
     const auto [car_reference, fence_reference] = After(car, fence, contacts, reference);
     const auto change = [&](const BodyState& inAfter, const BodyState& inBefore)
@@ -639,10 +641,10 @@ TEST_CASE("A crawling joint solve converges through a subspace step once Newton 
             inAfter.mAngularVelocity - inBefore.mAngularVelocity;
         return v;
     };
-    Eigen::Matrix<double, 12, 1> bounded, converged;
-    bounded << change(car_after, car), change(fence_after, fence);
+    Eigen::Matrix<double, 12, 1> solved, converged;
+    solved << change(car_after, car), change(fence_after, fence);
     converged << change(car_reference, car), change(fence_reference, fence);
-    const double error = (bounded - converged).cwiseAbs().maxCoeff() / converged.cwiseAbs().maxCoeff();
+    const double error = (solved - converged).cwiseAbs().maxCoeff() / converged.cwiseAbs().maxCoeff();
     INFO("largest velocity change error " << error << " of the largest change");
     CHECK(error < 1.0e-9);
     CHECK(KineticEnergy(car_after) + KineticEnergy(fence_after) <=

@@ -59,9 +59,10 @@ struct CRUMPLE_API FrictionSolveStats
     /// Stopped at the bound with impulses that made kinetic energy: the frictionless answer
     /// (SimultaneousImpulses' normal impulses, friction zero) was returned instead, as it made less.
     bool mFrictionDropped = false;
-    /// Ended (converged) at a subspace step's least-squares point: the contacts' states overdetermine the
-    /// bodies' velocities a little, and the point meets Coulomb's conditions to within 1e-6 of the largest
-    /// approach speed, closer than Gauss-Seidel comes before it stops
+    /// Ended (converged) at a subspace step's least-squares point, or where its Newton stagnated on its way
+    /// to one: the contacts' states overdetermine the bodies' velocities a little, and the point meets
+    /// Coulomb's conditions to within 1e-6 of the largest approach speed, closer than Gauss-Seidel comes
+    /// before it stops
     bool mSettled = false;
     /// Stopped before its bound (not converged): Gauss-Seidel had stalled (over 50 sweeps no point's velocity
     /// moved by more than 1e-9 of the largest approach speed, the distance from Coulomb's conditions fell by
