@@ -64,18 +64,23 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
         if (block.mRow != block.mColumn)
             mPattern[static_cast<std::size_t>(mRowFill[static_cast<std::size_t>(block.mColumn)]++)] = block.mRow;
     }
-    // intent: each row's distinct columns counted: its column's length in the graph
+    // intent: each row's distinct columns packed at the front of its segment and counted (its column's
+    // length in the graph); the write never passes the read
     FitAssign(mFlag, size, -1);
     FitAssign(mCount, size, 0);
     for (int row = 0; row < inNodeCount; ++row)
-        for (int entry = mRowStart[static_cast<std::size_t>(row)]; entry < mRowStart[static_cast<std::size_t>(row) + 1]; ++entry)
+    {
+        const int first = mRowStart[static_cast<std::size_t>(row)];
+        int& distinct = mCount[static_cast<std::size_t>(row)];
+        for (int entry = first; entry < mRowStart[static_cast<std::size_t>(row) + 1]; ++entry)
         {
             const int column = mPattern[static_cast<std::size_t>(entry)];
             if (mFlag[static_cast<std::size_t>(column)] == row)
                 continue;
             mFlag[static_cast<std::size_t>(column)] = row;
-            ++mCount[static_cast<std::size_t>(row)];
+            mPattern[static_cast<std::size_t>(first + distinct++)] = column;
         }
+    }
     Eigen::SparseMatrix<int> graph(inNodeCount, inNodeCount);
     int* const outer = graph.outerIndexPtr();
     outer[0] = 0;
@@ -86,17 +91,12 @@ void NodeBlockCholesky::OrderMinimumDegree(int inNodeCount, std::span<const Node
     std::fill(graph.valuePtr(), graph.valuePtr() + outer[size], 1); // intent: defined values (AMD reads none)
     // intent: each row given to its distinct columns, rows ascending: each column's rows sorted
     std::copy(outer, outer + size, mRowFill.begin());
-    std::fill(mFlag.begin(), mFlag.end(), -1);
     for (int row = 0; row < inNodeCount; ++row)
-        for (int entry = mRowStart[static_cast<std::size_t>(row)];
-             entry < mRowStart[static_cast<std::size_t>(row) + 1]; ++entry)
-        {
-            const int column = mPattern[static_cast<std::size_t>(entry)];
-            if (mFlag[static_cast<std::size_t>(column)] == row)
-                continue;
-            mFlag[static_cast<std::size_t>(column)] = row;
-            inner[mRowFill[static_cast<std::size_t>(column)]++] = row;
-        }
+    {
+        const int first = mRowStart[static_cast<std::size_t>(row)];
+        for (int entry = first; entry < first + mCount[static_cast<std::size_t>(row)]; ++entry)
+            inner[mRowFill[static_cast<std::size_t>(mPattern[static_cast<std::size_t>(entry)])]++] = row;
+    }
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::internal::minimum_degree_ordering(graph, inverse);
     // AMD gives P^-1 (old index of each new row), as Eigen's simplicial solvers use it.

@@ -261,8 +261,16 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
                 return ESubspaceOutcome::Refused;
             double fraction = 1.0;
             int halvings = 0;
-            while (!(evaluate(x - fraction * step, trial_residual, nullptr) &&
-                     trial_residual.squaredNorm() < (1.0 - 1.0e-4 * fraction) * residual.squaredNorm()))
+            const double residual_norm2 = residual.squaredNorm();
+            double trial_norm2 = 0.0; // |F|^2 of the last step tried (once evaluated)
+            const auto descends = [&]
+            {
+                if (!evaluate(x - fraction * step, trial_residual, nullptr))
+                    return false;
+                trial_norm2 = trial_residual.squaredNorm();
+                return trial_norm2 < (1.0 - 1.0e-4 * fraction) * residual_norm2;
+            };
+            while (!descends())
             {
                 if (++halvings > cMaxHalvings)
                     break;
@@ -271,8 +279,7 @@ ESubspaceOutcome FrictionSubspaceStep(const PairInverseMass& inPair, double inSp
             // intent: no descent, or too little to be worth another least-norm solve (stagnation): a
             // least-squares point of states that cannot all hold, whose breaches name the states to change
             if (halvings > cMaxHalvings ||
-                (halvings >= cStagnantHalvings &&
-                 trial_residual.squaredNorm() > cStagnantResidual * residual.squaredNorm()))
+                (halvings >= cStagnantHalvings && trial_norm2 > cStagnantResidual * residual_norm2))
                 break;
             x -= fraction * step;
         }

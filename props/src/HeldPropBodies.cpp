@@ -44,18 +44,24 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
     // body (the adapter also forgets the body's remembered impact: its velocity is set here, not by the
     // contact solve); while all sleep, only where it changed (a prop that fell asleep gives zero once), so a
     // scene at rest makes no engine call. The mass only where it changed.
+    // intent: a body the engine holds for a prop: still in the world, and held (not free or static)
+    const auto engine_holds = [&](plugin::BodyId inBody)
+    {
+        return mProps->GetWorld().GetBodyState(inBody) != nullptr &&
+               (!mEngine.mIsHeld || mEngine.mIsHeld(inBody));
+    };
     for (std::size_t index = 0; index < prop_count; ++index)
     {
         if (!mEngine.mSetHeldVelocity && !mEngine.mSetHeldMass)
             break;
         const PropId prop{static_cast<std::uint32_t>(index)};
-        if (!mProps->GetBody(prop).IsValid())
+        const plugin::BodyId body = mProps->GetBody(prop);
+        if (!body.IsValid())
         {
             // intent: a removed prop's held body, if the game keeps it, is left as made (at rest, its own
             // mass), not moving with the last struck members for ever, nor weighing what they weighed
             const plugin::BodyId kept = mGivenBody[index];
-            const bool keeps = kept.IsValid() && mProps->GetWorld().GetBodyState(kept) != nullptr &&
-                               (!mEngine.mIsHeld || mEngine.mIsHeld(kept));
+            const bool keeps = kept.IsValid() && engine_holds(kept);
             if (keeps && mEngine.mSetHeldVelocity && mGivenVelocity[index] != Vec3::Zero())
             {
                 keep(mEngine.mSetHeldVelocity(kept, Vec3::Zero()));
@@ -78,20 +84,18 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
         const bool give_mass = mEngine.mSetHeldMass && mass != mGivenMass[index];
         if (!give_velocity && !give_mass)
             continue;
-        if (mProps->GetWorld().GetBodyState(mProps->GetBody(prop)) == nullptr)
-            continue; // its body left the world
-        if (mEngine.mIsHeld && !mEngine.mIsHeld(mProps->GetBody(prop)))
-            continue; // a free or static prop body: the engine moves it
-        mGivenBody[index] = mProps->GetBody(prop);
+        if (!engine_holds(body))
+            continue; // its body left the world, or is free or static: the engine moves it
+        mGivenBody[index] = body;
         if (give_mass)
         {
-            if (keep(mEngine.mSetHeldMass(mProps->GetBody(prop), mass)))
+            if (keep(mEngine.mSetHeldMass(body, mass)))
                 mGivenMass[index] = mass;
             ++outUpdate.mMassesGiven;
         }
         if (give_velocity)
         {
-            if (keep(mEngine.mSetHeldVelocity(mProps->GetBody(prop), velocity)))
+            if (keep(mEngine.mSetHeldVelocity(body, velocity)))
                 mGivenVelocity[index] = velocity;
             ++outUpdate.mVelocitiesGiven;
         }

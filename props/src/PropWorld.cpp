@@ -98,7 +98,7 @@ Status PropWorld::RemoveProp(PropId inProp)
     if (inProp.mValue >= mProps.size())
         return MakeError(EError::OutOfRange,
                          "PropWorld::RemoveProp: no prop " + std::to_string(inProp.mValue));
-    if (mProps[inProp.mValue].mRemoved)
+    if (mProps[inProp.mValue].IsRemoved())
         return MakeError(EError::InvalidArgument, "PropWorld::RemoveProp: prop " +
                                                       std::to_string(inProp.mValue) + " was removed already");
     if (mRecorder != nullptr)
@@ -117,9 +117,7 @@ Status PropWorld::RemoveProp(PropId inProp)
     {
         const FemProp released = std::move(prop.mProp); // its solver and device buffers go with this
     }
-    Prop cleared{.mBody = plugin::BodyId(), .mProp = std::move(prop.mProp)}; // moved from: empty
-    cleared.mRemoved = true;
-    prop = std::move(cleared);
+    prop = Prop{.mBody = plugin::BodyId(), .mProp = std::move(prop.mProp)}; // moved from: empty
     // intent: a body the game keeps goes back to the world's time window (off, as AddProp found it unless the
     // game had set it itself)
     if (mWorld->GetBodyState(body) != nullptr)
@@ -165,7 +163,7 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
         return MakeError(EError::InvalidArgument, "PropWorld::AttachRecorder: the recorder is closed");
     // intent: a replay numbers the props in the order the recording adds them; a removed one would shift the
     // ids of those after it
-    if (std::any_of(mProps.begin(), mProps.end(), [](const Prop& inProp) { return inProp.mRemoved; }))
+    if (std::any_of(mProps.begin(), mProps.end(), [](const Prop& inProp) { return inProp.IsRemoved(); }))
         return MakeError(
             EError::InvalidArgument,
             "PropWorld::AttachRecorder: a prop was removed; attach the recorder before the first RemoveProp");
@@ -199,21 +197,21 @@ Status PropWorld::AttachRecorder(plugin::DamageRecorder* ioRecorder)
 FemProp* PropWorld::GetProp(PropId inProp)
 {
     WaitForStep();
-    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].mRemoved ? &mProps[inProp.mValue].mProp
-                                                                            : nullptr;
+    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].IsRemoved() ? &mProps[inProp.mValue].mProp
+                                                                               : nullptr;
 }
 
 const FemProp* PropWorld::GetProp(PropId inProp) const
 {
     WaitForStep();
-    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].mRemoved ? &mProps[inProp.mValue].mProp
-                                                                            : nullptr;
+    return inProp.mValue < mProps.size() && !mProps[inProp.mValue].IsRemoved() ? &mProps[inProp.mValue].mProp
+                                                                               : nullptr;
 }
 
 PropId PropWorld::FindProp(plugin::BodyId inBody) const
 {
     for (std::size_t index = 0; index < mProps.size(); ++index)
-        if (!mProps[index].mRemoved && mProps[index].mBody == inBody)
+        if (!mProps[index].IsRemoved() && mProps[index].mBody == inBody)
             return PropId{static_cast<std::uint32_t>(index)};
     return PropId{};
 }
@@ -233,7 +231,8 @@ Status PropWorld::StartStep(double inDeltaTime)
         return MakeError(EError::InvalidArgument, "PropWorld::Step: a step is in flight; LandStep first");
     // intent: a step some prop refuses is refused before any prop steps or the recording takes it
     for (std::size_t index = 0; index < mProps.size(); ++index)
-        if (Status valid = mProps[index].mRemoved ? Status::Ok() : mProps[index].mProp.CheckStep(inDeltaTime);
+        if (Status valid =
+                mProps[index].IsRemoved() ? Status::Ok() : mProps[index].mProp.CheckStep(inDeltaTime);
             valid.HasError())
         {
             Error error = valid.GetError();
@@ -273,7 +272,8 @@ Status PropWorld::StartStep(double inDeltaTime)
             flight.mBodyRotations[index] = state->mTransform.mRotation;
         // intent: GPU props on the game's thread, where their context is current; the rest on the task (all
         // of them, in PropId order, when the task runs inline)
-        flight.mOnTask[index] = !flight.mOnJobs || mProps[index].mProp.GetCpuSolver() != nullptr ? 1 : 0;
+        const bool cpu = !mProps[index].IsRemoved() && mProps[index].mProp.GetCpuSolver() != nullptr;
+        flight.mOnTask[index] = !flight.mOnJobs || cpu ? 1 : 0;
     }
     flight.mWaited = false;
     flight.mActive = true;
@@ -298,7 +298,7 @@ void PropWorld::RunPart(InFlight& ioFlight, bool inOnTask)
         ApplyToProps(collision.mCollision, collision.mPropCount, mine, collision.mStrikerSpeeds,
                      ioFlight.mTally);
     for (std::size_t index = 0; index < ioFlight.mOnTask.size() && ioFlight.mStatus.IsValid(); ++index)
-        if (mine(index) && !mProps[index].mRemoved)
+        if (mine(index) && !mProps[index].IsRemoved())
         {
             const bool integrated = StepProp(ioFlight, index);
             // intent: only where the step runs as a task of its own (inline, the calls would do the same work
@@ -370,7 +370,7 @@ Status PropWorld::Prepare(double inDeltaTime)
         return valid;
     WaitForStep();
     for (Prop& prop : mProps)
-        if (Status prepared = prop.mRemoved ? Status::Ok() : prop.mProp.Prepare(inDeltaTime); !prepared)
+        if (Status prepared = prop.IsRemoved() ? Status::Ok() : prop.mProp.Prepare(inDeltaTime); !prepared)
             return prepared; // cannot happen for a valid step: kept for a future backend's refusal
     return Status::Ok();
 }
@@ -526,7 +526,7 @@ Status PropWorld::ValidateShapeQuery(PropId inProp, double inCellSize, const cha
 {
     if (inProp.mValue >= mProps.size())
         return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": no prop " + std::to_string(inProp.mValue));
-    if (mProps[inProp.mValue].mRemoved)
+    if (mProps[inProp.mValue].IsRemoved())
         return MakeError(EError::OutOfRange, std::string("PropWorld::") + inWhat + ": prop " +
                                                  std::to_string(inProp.mValue) + " was removed");
     if (!std::isfinite(inCellSize) || !(inCellSize > 0.0))

@@ -34,6 +34,16 @@ std::unique_ptr<ReplaceableHull> MakeHull(const std::vector<Vec3>& inPoints)
     return hull;
 }
 
+// A prop body's shape: a compound of the first inCount hulls, in index order, each in the body's frame.
+std::unique_ptr<btCompoundShape> CompoundOf(const std::vector<std::unique_ptr<ReplaceableHull>>& inHulls,
+                                            std::size_t inCount)
+{
+    auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(inCount));
+    for (std::size_t i = 0; i < inCount; ++i)
+        compound->addChildShape(btTransform::getIdentity(), inHulls[i].get());
+    return compound;
+}
+
 btTransform ToBulletPose(const Mat3& inRotation, const Vec3& inPosition)
 {
     const Mat3& r = inRotation;
@@ -155,12 +165,9 @@ Result<BodyId> BulletAdapter::CreatePropBody(const plugin::PropBodySettings& inS
     if (Status valid = plugin::ValidatePropBodySettings(inSettings); !valid)
         return valid.GetError();
     OwnedBody owned;
-    owned.mCompound = std::make_unique<btCompoundShape>();
     for (const std::vector<Vec3>& piece : inSettings.mPieces)
-    {
         owned.mPieces.push_back(MakeHull(piece));
-        owned.mCompound->addChildShape(btTransform::getIdentity(), owned.mPieces.back().get());
-    }
+    owned.mCompound = CompoundOf(owned.mPieces, owned.mPieces.size());
     owned.mHeld = inSettings.mHeld;
     owned.mHome = ToBulletPose(inSettings.mOrientation, inSettings.mPosition);
     owned.mMotion = std::make_unique<btDefaultMotionState>(owned.mHome);
@@ -204,9 +211,7 @@ Status BulletAdapter::SetPropPieces(BodyId inBody, const std::vector<std::vector
         owned->mPieces.push_back(MakeHull(inPieces[i]));
     // intent: a new compound of the first inPieces.size() hulls, then the surplus ones go (the old compound,
     // which still names them, goes first)
-    auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(inPieces.size()));
-    for (std::size_t i = 0; i < inPieces.size(); ++i)
-        compound->addChildShape(btTransform::getIdentity(), owned->mPieces[i].get());
+    std::unique_ptr<btCompoundShape> compound = CompoundOf(owned->mPieces, inPieces.size());
     owned->mRigidBody->setCollisionShape(compound.get());
     owned->mCompound = std::move(compound);
     owned->mPieces.resize(inPieces.size());

@@ -312,6 +312,10 @@ private:
 
     struct Prop
     {
+        /// RemoveProp leaves no body (a live prop's is in the world: AddProp checks) and an empty FemProp:
+        /// call none of its methods
+        bool IsRemoved() const { return !mBody.IsValid(); }
+
         plugin::BodyId mBody;
         FemProp mProp;
         /// Per element: of a piece TakeLooseFragments handed over (its nodes fixed). By element, as element
@@ -338,7 +342,6 @@ private:
         double mShapeCellSize = 0.0;   ///< The last TakeChangedShape's cell size, for the forecast
         double mShapeTolerance = -1.0; ///< ... and tolerance; < 0 before the first call
         HandOverForecast mForecast{};  ///< What the last step's task worked out for the hand-over
-        bool mRemoved = false; ///< RemoveProp: an empty FemProp (call none of its methods) and no body
         // A step's task writes mProp, mHits, mStruck, mSteppedVelocity, mSteppedMass, the mass scratch and
         // mForecast of the props it steps, nothing else.
     };
