@@ -1,10 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
+#include "BrickBurst.h"
 #include "CarFrontOnFenceCrawl.h"
 #include "CarFrontOnFenceStall.h"
 #include "CarOnHeldFence.h"
 #include "PieceOnGround.h"
+#include "ThreadJobSystem.h"
 #include "WedgedPiece.h"
 #include "WorldFixture.h"
 
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -262,6 +265,78 @@ void ManifoldCase(BenchTable& ioTable, int inContacts, int inRepetitions)
                      ";cpu_ms=" + FormatExtra(timing.mCpuMs)});
 }
 
+// A brick wall bursting in one engine step (common::MakeBrickBurst: 16 x 10 bricks, 1,240 contacts of 310
+// pairs) through DamageWorld::SubmitContacts, its pairs' solves inline and split over a host's 2 workers
+// (ThreadJobSystem, the caller one of them), interleaved; thread CPU is the calling thread's. The error: how
+// many contacts' impulses differ from the inline solve's in any bit (the split must not change one).
+void BurstCase(BenchTable& ioTable, int inRepetitions)
+{
+    common::ThreadJobSystem two_workers(2);
+    struct Side
+    {
+        const JobSystem* mJobs = nullptr;
+        common::BrickBurst mBurst;
+        std::vector<Collision> mCollisions;
+    };
+    struct Heard : DamageListener
+    {
+        void OnCollision(const Collision& inCollision, std::span<const ObjectDent>) override
+        {
+            mCollisions->push_back(inCollision);
+        }
+        std::vector<Collision>* mCollisions = nullptr;
+    };
+    Side sides[2];
+    sides[1].mJobs = &two_workers.Get();
+    const auto prepare = [&](Side& ioSide)
+    {
+        DamageWorldSettings settings;
+        settings.mJobs = ioSide.mJobs;
+        ioSide.mBurst = common::MakeBrickBurst(16, 10, 7, settings);
+    };
+    const auto submit = [&](Side& ioSide)
+    {
+        if (Status submitted = ioSide.mBurst.mWorld->SubmitContacts(ioSide.mBurst.mContacts, 1.0 / 240.0);
+            !submitted)
+            throw std::runtime_error("contact_burst: " + submitted.GetError().mMessage);
+    };
+    const std::vector<Timing> timing =
+        InterleavedMedians(inRepetitions, {{[&] { prepare(sides[0]); }, [&] { submit(sides[0]); }},
+                                           {[&] { prepare(sides[1]); }, [&] { submit(sides[1]); }}});
+    std::size_t contacts = 0;
+    for (Side& side : sides)
+    {
+        Heard heard;
+        heard.mCollisions = &side.mCollisions;
+        side.mBurst.mWorld->AddListener(&heard);
+        (void)side.mBurst.mWorld->Flush();
+        side.mBurst.mWorld->RemoveListener(&heard);
+    }
+    int differing = sides[0].mCollisions.size() == sides[1].mCollisions.size() ? 0 : 1;
+    for (std::size_t i = 0; i < std::min(sides[0].mCollisions.size(), sides[1].mCollisions.size()); ++i)
+    {
+        const std::vector<CollisionContact>& a = sides[0].mCollisions[i].mContacts;
+        const std::vector<CollisionContact>& b = sides[1].mCollisions[i].mContacts;
+        contacts += a.size();
+        differing += static_cast<int>(std::max(a.size(), b.size()) - std::min(a.size(), b.size()));
+        for (std::size_t c = 0; c < std::min(a.size(), b.size()); ++c)
+            differing += std::memcmp(&a[c].mImpulse, &b[c].mImpulse, sizeof(double)) != 0 ||
+                                 std::memcmp(a[c].mFrictionImpulse.data(), b[c].mFrictionImpulse.data(),
+                                             sizeof(Vec3)) != 0
+                             ? 1
+                             : 0;
+    }
+    const std::string name = "16x10_bricks/" + std::to_string(sides[0].mBurst.mContacts.size()) + "_contacts";
+    ioTable.Add(
+        {"contact_burst", name + "/inline", timing[0].mWallMs, 0.0, "none",
+         "pushing_contacts=" + std::to_string(contacts) + ";cpu_ms=" + FormatExtra(timing[0].mCpuMs)});
+    ioTable.Add({"contact_burst", name + "/2_workers", timing[1].mWallMs, static_cast<double>(differing),
+                 "differing_contacts",
+                 "cpu_ms=" + FormatExtra(timing[1].mCpuMs) +
+                     ";speedup_cpu=" + FormatExtra(timing[0].mCpuMs / timing[1].mCpuMs) +
+                     ";speedup_wall=" + FormatExtra(timing[0].mWallMs / timing[1].mWallMs)});
+}
+
 } // namespace
 
 void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -303,6 +378,7 @@ void RunImpulseBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     for (int contacts : {10, 100, 1000, 10000})
         ManifoldCase(ioTable, contacts, inOptions.mQuick ? 3 : 11);
     IdleCases(ioTable, repetitions);
+    BurstCase(ioTable, repetitions);
 }
 
 } // namespace crumple::bench

@@ -6,7 +6,8 @@
 #include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/FrictionalImpulses.h>
-#include <crumple/plugin/SurfaceContactPoints.h>
+
+#include "ContactBatches.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +91,8 @@ void DamageWorld::RunDeferredDents(void* inInFlight)
     auto* flight = static_cast<InFlight*>(inInFlight);
     // intent: the impulses of the steps submitted since the last Update, in order (the grouper and the impact
     // memories are the task's until it lands); the dents are of collisions closed before them
-    flight->mSubmissionsDropped += flight->mWorld->SolveSubmissions(flight->mSubmissions);
+    // intent: no job system here: a task never calls back into it (JobSystem)
+    flight->mSubmissionsDropped += flight->mWorld->SolveSubmissions(flight->mSubmissions, nullptr);
     for (std::size_t i = 0; i < flight->mCollisions.size(); ++i)
         for (const DentTarget& target : flight->mTargets[i])
             flight->mDents[i].push_back({target.mObject, DispatchedDent(target.mDeformable->ApplyCollision(
@@ -331,19 +333,6 @@ Status DamageWorld::ValidateContact(const ContactEvent& inContact, std::size_t i
     return Status::Ok();
 }
 
-const DamageWorld::ImpactMemory* DamageWorld::FindImpactMemory(BodyId inA, BodyId inB) const
-{
-    for (const ImpactMemory& memory : mImpactMemories)
-        if (memory.mA == inA && memory.mB == inB)
-            return &memory;
-    return nullptr;
-}
-
-DamageWorld::ImpactMemory* DamageWorld::FindImpactMemory(BodyId inA, BodyId inB)
-{
-    return const_cast<ImpactMemory*>(std::as_const(*this).FindImpactMemory(inA, inB));
-}
-
 Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, double inTimeStep)
 {
     if (!(std::isfinite(inTimeStep) && inTimeStep >= 0.0))
@@ -356,7 +345,7 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     if (inContacts.empty())
         return Status::Ok(); // a step without contacts changes nothing (its pairs' memories expire later)
     if (!mSettings.mDeferImpulses)
-        return SolveContacts(inContacts, inTimeStep, SnapshotBodies(inContacts));
+        return SolveContacts(inContacts, inTimeStep, SnapshotBodies(inContacts), mSettings.mJobs);
     mPending.push_back(Submission{.mContacts = {inContacts.begin(), inContacts.end()},
                                   .mTimeStep = inTimeStep,
                                   .mBodies = SnapshotBodies(inContacts)});
@@ -392,14 +381,14 @@ void DamageWorld::ForgetMemoriesOf(BodyId inBody)
     std::erase_if(mImpactMemories, [&](const ImpactMemory& m) { return m.mA == inBody || m.mB == inBody; });
 }
 
-Status DamageWorld::SolveSubmission(const Submission& inSubmission)
+Status DamageWorld::SolveSubmission(const Submission& inSubmission, const JobSystem* inJobs)
 {
     if (inSubmission.mForget.IsValid())
     {
         ForgetMemoriesOf(inSubmission.mForget);
         return Status::Ok();
     }
-    return SolveContacts(inSubmission.mContacts, inSubmission.mTimeStep, inSubmission.mBodies);
+    return SolveContacts(inSubmission.mContacts, inSubmission.mTimeStep, inSubmission.mBodies, inJobs);
 }
 
 void DamageWorld::SolvePendingHere()
@@ -408,20 +397,20 @@ void DamageWorld::SolvePendingHere()
     // impulse drops it whole, as on the task)
     std::vector<Submission> pending = std::move(mPending);
     mPending.clear();
-    mLanded.mSubmissionsDropped += SolveSubmissions(pending);
+    mLanded.mSubmissionsDropped += SolveSubmissions(pending, mSettings.mJobs);
 }
 
-int DamageWorld::SolveSubmissions(std::span<const Submission> inSubmissions)
+int DamageWorld::SolveSubmissions(std::span<const Submission> inSubmissions, const JobSystem* inJobs)
 {
     int dropped = 0;
     for (const Submission& submission : inSubmissions)
-        if (SolveSubmission(submission).HasError())
+        if (SolveSubmission(submission, inJobs).HasError())
             ++dropped;
     return dropped;
 }
 
 Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
-                                  std::span<const SubmittedBody> inBodies)
+                                  std::span<const SubmittedBody> inBodies, const JobSystem* inJobs)
 {
     // intent: the bodies as they were when the contacts came (on the task, the game has moved on since)
     const auto body_of = [&](BodyId inBody) -> const SubmittedBody&
@@ -435,57 +424,48 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
     };
 
     // Canonical orientation (A = lower id), surface points, and batches of the same pair and time.
-    struct Batch
+    std::vector<ContactBatch> batches = GroupContactBatches(inContacts, cSameStepTime);
+    // intent: each pair's impact memory by an index (a pair has at most one): a burst of hundreds of pairs
+    // would otherwise scan every memory for every batch
+    BodyPairIndex memory_of;
+    const auto index_memories = [&](std::size_t inMore)
     {
-        BodyId mA, mB;
-        double mTime;
-        std::vector<CollisionContact> mContacts;
+        memory_of.Reset(mImpactMemories.size() + inMore);
+        for (std::size_t i = 0; i < mImpactMemories.size(); ++i)
+            memory_of.TryInsert(mImpactMemories[i].mA, mImpactMemories[i].mB, static_cast<std::uint32_t>(i));
     };
-    std::vector<Batch> batches;
-    for (const ContactEvent& event : inContacts)
-    {
-        const SurfacePoints surface = SurfaceContactPoints(event);
-        const bool flip = event.mBodyB < event.mBodyA;
-        CollisionContact contact;
-        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
-        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
-        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
-        contact.mPenetrationDepth = event.mPenetrationDepth;
-        contact.mFriction = event.mFriction;
-        contact.mTime = event.mTime;
-        const BodyId a = flip ? event.mBodyB : event.mBodyA;
-        const BodyId b = flip ? event.mBodyA : event.mBodyB;
-        // intent: one engine step's contacts of a pair are one batch even when their times differ by
-        // round-off (a game that computes each contact's time): solved apart, each would take the pair's
-        // whole impulse
-        auto batch = std::find_if(batches.begin(), batches.end(),
-                                  [&](const Batch& x) {
-                                      return x.mA == a && x.mB == b &&
-                                             std::abs(x.mTime - event.mTime) <= cSameStepTime;
-                                  });
-        if (batch == batches.end())
-            batch = batches.insert(batches.end(), Batch{a, b, event.mTime, {}});
-        batch->mContacts.push_back(contact);
-    }
+    index_memories(0);
 
     // Impulses per batch; keep only closing contacts. A pair that already took an impulse at the previous
     // step is solved from the velocities that impulse left it with (ImpactMemory), not from the engine's:
     // a soft engine needs several steps to stop a car, and each of them would otherwise count the closing
     // speed it has not removed yet once more.
-    std::vector<std::vector<CollisionContact>> accepted(batches.size());
-    std::vector<ImpactMemory> memories;
-    for (std::size_t b = 0; b < batches.size(); ++b)
+    struct SolvedBatch
     {
-        Batch& batch = batches[b];
-        BodyState state_a = body_of(batch.mA).mState;
-        BodyState state_b = body_of(batch.mB).mState;
-        const ImpactMemory* previous = FindImpactMemory(batch.mA, batch.mB);
+        BodyState mStateA, mStateB; // as the solve took them (a continued impact: the remembered velocities)
+        bool mContinues = false;
+        std::vector<ImpulseContact> mImpulseContacts;
+        std::vector<ContactImpulse> mImpulses;
+    };
+    std::vector<SolvedBatch> solved(batches.size());
+    // intent: a batch's contacts as its solve takes them; returns how many close faster than resting (the
+    // contacts that make the solve work: one without any returns zeros at once)
+    const auto prepare_batch = [&](std::size_t inBatch)
+    {
+        ContactBatch& batch = batches[inBatch];
+        SolvedBatch& out = solved[inBatch];
+        BodyState& state_a = out.mStateA;
+        BodyState& state_b = out.mStateB;
+        state_a = body_of(batch.mA).mState;
+        state_b = body_of(batch.mB).mState;
+        const std::uint32_t found = memory_of.Find(batch.mA, batch.mB);
+        const ImpactMemory* previous = found == BodyPairIndex::cNone ? nullptr : &mImpactMemories[found];
         // intent: the same step's contacts submitted in a later call (a game that submits per manifold) also
         // continue from what the earlier call's impulse left: they are the same impact, counted once
-        const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 &&
-                               batch.mTime >= previous->mTime - cSameStepTime &&
-                               batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
-        if (continues)
+        out.mContinues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 &&
+                         batch.mTime >= previous->mTime - cSameStepTime &&
+                         batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
+        if (out.mContinues)
         {
             state_a.mLinearVelocity = previous->mLinearA;
             state_a.mAngularVelocity = state_a.mTransform.mRotation * previous->mAngularBodyA;
@@ -519,12 +499,66 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
                     closing.push_back(c);
             batch.mContacts = ReduceContacts(closing, mSettings.mMaxContactsPerPair);
         }
-        std::vector<ImpulseContact> impulse_contacts;
+        std::size_t closing_count = 0;
         for (const CollisionContact& c : batch.mContacts)
-            impulse_contacts.push_back({0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c), c.mFriction});
-        const std::vector<ContactImpulse> impulses =
-            FrictionalImpulses(state_a, state_b, impulse_contacts, mSettings.mRestitution,
+        {
+            const ImpulseContact& contact = out.mImpulseContacts.emplace_back(
+                0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c), c.mFriction);
+            closing_count += RelativeNormalVelocity(state_a, state_b, contact.mPoint, contact.mNormal) +
+                                 contact.mSpeculativeSpeed <
+                             -mSettings.mRestingSpeed;
+        }
+        return closing_count;
+    };
+    // intent: a batch's solve reads its prepared batch and writes only its result, so batches solve in any
+    // order, on any thread, to the same bits
+    const auto solve_batch = [&](std::size_t inBatch)
+    {
+        SolvedBatch& out = solved[inBatch];
+        out.mImpulses =
+            FrictionalImpulses(out.mStateA, out.mStateB, out.mImpulseContacts, mSettings.mRestitution,
                                mSettings.mRestingSpeed, mSettings.mFrictionSolve);
+    };
+    // intent: a burst's closing pairs split over the host's workers, several pieces per worker (one pair's
+    // solve can cost a hundred others'); a step with fewer closing contacts (resting pieces, one car's hit)
+    // solves inline, where handing pieces over would cost more than it saves
+    std::vector<std::size_t> working;
+    std::size_t closing = 0;
+    for (std::size_t b = 0; b < batches.size(); ++b)
+    {
+        const std::size_t closing_here = prepare_batch(b);
+        closing += closing_here;
+        if (closing_here > 0)
+            working.push_back(b);
+        else
+            solve_batch(b);
+    }
+    const std::size_t pieces =
+        inJobs == nullptr || inJobs->mParallelFor == nullptr || inJobs->mWorkerCount <= 1 ||
+                closing < cParallelClosingContacts
+            ? 1
+            : std::min(working.size(), cPiecesPerWorker * static_cast<std::size_t>(inJobs->mWorkerCount));
+    const auto solve_piece = [&](std::size_t inPiece, std::size_t inPieces)
+    {
+        for (std::size_t w = inPiece * working.size() / inPieces;
+             w < (inPiece + 1) * working.size() / inPieces; ++w)
+            solve_batch(working[w]);
+    };
+    if (pieces <= 1)
+        solve_piece(0, 1);
+    else
+        ParallelFor(inJobs, static_cast<int>(pieces),
+                    [&](int inPiece) { solve_piece(static_cast<std::size_t>(inPiece), pieces); });
+
+    std::vector<std::vector<CollisionContact>> accepted(batches.size());
+    std::vector<ImpactMemory> memories;
+    for (std::size_t b = 0; b < batches.size(); ++b)
+    {
+        const ContactBatch& batch = batches[b];
+        const SolvedBatch& result = solved[b];
+        const BodyState& state_a = result.mStateA;
+        const BodyState& state_b = result.mStateB;
+        const std::vector<ContactImpulse>& impulses = result.mImpulses;
         ImpactMemory memory;
         memory.mA = batch.mA;
         memory.mB = batch.mB;
@@ -543,10 +577,12 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
             CollisionContact contact = batch.mContacts[i];
             contact.mImpulse = impulses[i].mNormal;
             contact.mFrictionImpulse = impulses[i].mFriction;
-            contact.mApproachSpeed = -RelativeNormalVelocity(state_a, state_b, impulse_contacts[i].mPoint, contact.mNormal);
+            const ImpulseContact& solved_contact = result.mImpulseContacts[i];
+            contact.mApproachSpeed =
+                -RelativeNormalVelocity(state_a, state_b, solved_contact.mPoint, contact.mNormal);
             // The impulse took the closing speed v beyond the speculative s = gap / dt to a rebound of
             // e (v - s): kinetic energy J (v + s - e (v - s)) / 2 left the pair.
-            const double v = std::max(contact.mApproachSpeed, 0.0), s = impulse_contacts[i].mSpeculativeSpeed;
+            const double v = std::max(contact.mApproachSpeed, 0.0), s = solved_contact.mSpeculativeSpeed;
             const double e = mSettings.mRestitution;
             contact.mAbsorbedEnergy = 0.5 * impulses[i].mNormal * ((1.0 - e) * v + (1.0 + e) * s);
             contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
@@ -558,7 +594,7 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
             accepted[b].push_back(contact);
             // The impulse +J n + t on A and its opposite on B changes the velocities it leaves.
             const Vec3 impulse = contact.ImpulseOnA();
-            const Vec3& point = impulse_contacts[i].mPoint;
+            const Vec3& point = solved_contact.mPoint;
             memory.mLinearA += state_a.InverseMass() * impulse;
             spin_a += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
             memory.mLinearB -= state_b.InverseMass() * impulse;
@@ -566,21 +602,28 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
         }
         memory.mAngularBodyA = state_a.mTransform.mRotation.transpose() * spin_a;
         memory.mAngularBodyB = state_b.mTransform.mRotation.transpose() * spin_b;
-        if (pushed || continues)
+        if (pushed || result.mContinues)
             memories.push_back(memory);
     }
     // Everything validated: commit. Memories of pairs that did not touch within the last steps expire.
-    const double latest = batches.empty() ? 0.0 : std::max_element(batches.begin(), batches.end(), [](const Batch& x, const Batch& y) { return x.mTime < y.mTime; })->mTime;
+    const double latest = batches.empty() ? 0.0
+                                          : std::max_element(batches.begin(), batches.end(),
+                                                             [](const ContactBatch& x, const ContactBatch& y)
+                                                             { return x.mTime < y.mTime; })
+                                                ->mTime;
     if (!batches.empty())
         std::erase_if(mImpactMemories, [&](const ImpactMemory& m) {
             return !(latest - m.mTime <= cImpactMemorySteps * inTimeStep);
         });
+    index_memories(memories.size());
     for (const ImpactMemory& memory : memories)
     {
-        if (ImpactMemory* existing = FindImpactMemory(memory.mA, memory.mB))
-            *existing = memory;
-        else
+        const auto [found, is_new] =
+            memory_of.TryInsert(memory.mA, memory.mB, static_cast<std::uint32_t>(mImpactMemories.size()));
+        if (is_new)
             mImpactMemories.push_back(memory);
+        else
+            mImpactMemories[found] = memory;
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
     {

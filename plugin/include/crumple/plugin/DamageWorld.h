@@ -15,6 +15,7 @@
 #include <crumple/plugin/DeformableObject.h>
 #include <crumple/plugin/Ids.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -200,10 +201,13 @@ private:
     static constexpr double cImpactMemorySteps = 1.5; ///< In steps: only the immediately following step continues
     /// Contact times this close (s) are one engine step's: round-off apart, far below any engine's step
     static constexpr double cSameStepTime = 1.0e-9;
-    const ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB) const;
     /// Drops the memories of every pair the body is in
     void ForgetMemoriesOf(BodyId inBody);
-    ImpactMemory* FindImpactMemory(BodyId inA, BodyId inB);
+    /// A step's pair solves go to the job system when its contacts that close number at least this many (a
+    /// brick wall's burst: hundreds; resting pieces and a car's hit stay inline), in at most
+    /// cPiecesPerWorker pieces per worker (one pair's solve can cost a hundred others')
+    static constexpr std::size_t cParallelClosingContacts = 64;
+    static constexpr std::size_t cPiecesPerWorker = 4;
 
     bool IsLive(BodyId inBody) const
     {
@@ -231,13 +235,14 @@ private:
     std::vector<SubmittedBody> SnapshotBodies(std::span<const ContactEvent> inContacts);
     /// Solves validated contacts' impulses into the grouper and the impact memories, reading the bodies only
     /// from inBodies (so a task can run it while the game moves on); refused whole, changing nothing, where
-    /// an impulse is not finite.
+    /// an impulse is not finite. The pairs' solves split over inJobs' parallel for where given (null on the
+    /// deferred task, which must not call back into the job system), to the same bits.
     Status SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
-                         std::span<const SubmittedBody> inBodies);
-    Status SolveSubmission(const Submission& inSubmission);
-    /// Solves inSubmissions in order (on the task or, SolvePendingHere, on the caller's thread); returns how
-    /// many were dropped (an impulse not finite).
-    int SolveSubmissions(std::span<const Submission> inSubmissions);
+                         std::span<const SubmittedBody> inBodies, const JobSystem* inJobs);
+    Status SolveSubmission(const Submission& inSubmission, const JobSystem* inJobs);
+    /// Solves inSubmissions in order (on the task or, SolvePendingHere, on the caller's thread, with inJobs
+    /// for the pairs' solves there); returns how many were dropped (an impulse not finite).
+    int SolveSubmissions(std::span<const Submission> inSubmissions, const JobSystem* inJobs);
     /// mDeferImpulses: solves the submissions that wait for the next task here and now (calls that need the
     /// collisions and memories complete: Flush, RemoveBody). Call after Land().
     void SolvePendingHere();

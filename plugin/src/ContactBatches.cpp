@@ -1,0 +1,94 @@
+// SPDX-FileCopyrightText: 2026 The Crumple authors
+// SPDX-License-Identifier: MIT
+#include "ContactBatches.h"
+
+#include <crumple/plugin/SurfaceContactPoints.h>
+
+#include <cmath>
+
+namespace crumple::plugin
+{
+
+void BodyPairIndex::Reset(std::size_t inPairs)
+{
+    std::size_t capacity = 16;
+    while (capacity < 2 * inPairs)
+        capacity *= 2;
+    mSlots.assign(capacity, Slot{});
+    mMask = capacity - 1;
+}
+
+std::size_t BodyPairIndex::SlotOf(BodyId inA, BodyId inB) const
+{
+    // intent: the four 32-bit words mixed into 64 bits (splitmix64's finaliser spreads the slot indices,
+    // which are small and dense, over the table), then probed linearly to the pair or an empty slot
+    std::uint64_t h = (std::uint64_t{inA.mValue} << 32 | inB.mValue) ^
+                      (std::uint64_t{inA.mGeneration} << 32 | inB.mGeneration) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+    std::size_t slot = static_cast<std::size_t>(h ^ (h >> 31)) & mMask;
+    while (mSlots[slot].mValue != cNone && !(mSlots[slot].mA == inA && mSlots[slot].mB == inB))
+        slot = (slot + 1) & mMask;
+    return slot;
+}
+
+std::uint32_t BodyPairIndex::Find(BodyId inA, BodyId inB) const
+{
+    return mSlots.empty() ? cNone : mSlots[SlotOf(inA, inB)].mValue;
+}
+
+std::pair<std::uint32_t, bool> BodyPairIndex::TryInsert(BodyId inA, BodyId inB, std::uint32_t inValue)
+{
+    Slot& slot = mSlots[SlotOf(inA, inB)];
+    if (slot.mValue != cNone)
+        return {slot.mValue, false};
+    slot = Slot{inA, inB, inValue};
+    return {inValue, true};
+}
+
+std::vector<ContactBatch> GroupContactBatches(std::span<const ContactEvent> inContacts, double inSameStepTime)
+{
+    constexpr std::uint32_t cNone = BodyPairIndex::cNone;
+    std::vector<ContactBatch> batches;
+    // intent: each pair's batches as a chain in order of creation (first batch in the index, the next one of
+    // the same pair in next_of_pair), so a contact joins the batch a scan of all batches would find first
+    BodyPairIndex first_of_pair;
+    first_of_pair.Reset(inContacts.size());
+    std::vector<std::uint32_t> next_of_pair;
+    for (const ContactEvent& event : inContacts)
+    {
+        const SurfacePoints surface = SurfaceContactPoints(event);
+        const bool flip = event.mBodyB < event.mBodyA;
+        CollisionContact contact;
+        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
+        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
+        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
+        contact.mPenetrationDepth = event.mPenetrationDepth;
+        contact.mFriction = event.mFriction;
+        contact.mTime = event.mTime;
+        const BodyId a = flip ? event.mBodyB : event.mBodyA;
+        const BodyId b = flip ? event.mBodyA : event.mBodyB;
+        // intent: one engine step's contacts of a pair are one batch even when their times differ by
+        // round-off (a game that computes each contact's time): solved apart, each would take the pair's
+        // whole impulse
+        const auto [first, is_new_pair] =
+            first_of_pair.TryInsert(a, b, static_cast<std::uint32_t>(batches.size()));
+        std::uint32_t index = first, last = cNone;
+        if (!is_new_pair)
+            for (; index != cNone; last = index, index = next_of_pair[index])
+                if (std::abs(batches[index].mTime - event.mTime) <= inSameStepTime)
+                    break;
+        if (is_new_pair || index == cNone)
+        {
+            index = static_cast<std::uint32_t>(batches.size());
+            batches.push_back(ContactBatch{a, b, event.mTime, {}});
+            next_of_pair.push_back(cNone);
+            if (last != cNone)
+                next_of_pair[last] = index;
+        }
+        batches[index].mContacts.push_back(contact);
+    }
+    return batches;
+}
+
+} // namespace crumple::plugin
