@@ -2,12 +2,13 @@
 // SPDX-License-Identifier: MIT
 #include <crumple/base/Assert.h>
 #include <crumple/plugin/BaraffImpulse.h>
-#include <crumple/plugin/ContactReduction.h>
 #include <crumple/plugin/CampbellCrush.h>
 #include <crumple/plugin/DamageWorld.h>
 #include <crumple/plugin/FrictionalImpulses.h>
 
+#include "BodyPairIndex.h"
 #include "ContactBatches.h"
+#include "PairSolve.h"
 
 #include <algorithm>
 #include <cmath>
@@ -409,24 +410,25 @@ int DamageWorld::SolveSubmissions(std::span<const Submission> inSubmissions, con
     return dropped;
 }
 
+const DamageWorld::SubmittedBody& DamageWorld::SubmittedBodyOf(std::span<const SubmittedBody> inBodies,
+                                                               BodyId inBody)
+{
+    const auto found =
+        std::lower_bound(inBodies.begin(), inBodies.end(), inBody,
+                         [](const SubmittedBody& inEntry, BodyId inId) { return inEntry.mBody < inId; });
+    CRUMPLE_ASSERT(found != inBodies.end() && found->mBody == inBody,
+                   "a contact's body is not in its submission");
+    return *found;
+}
+
 Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
                                   std::span<const SubmittedBody> inBodies, const JobSystem* inJobs)
 {
-    // intent: the bodies as they were when the contacts came (on the task, the game has moved on since)
-    const auto body_of = [&](BodyId inBody) -> const SubmittedBody&
-    {
-        const auto found =
-            std::lower_bound(inBodies.begin(), inBodies.end(), inBody,
-                             [](const SubmittedBody& inEntry, BodyId inId) { return inEntry.mBody < inId; });
-        CRUMPLE_ASSERT(found != inBodies.end() && found->mBody == inBody,
-                       "a contact's body is not in its submission");
-        return *found;
-    };
-
     // Canonical orientation (A = lower id), surface points, and batches of the same pair and time.
     std::vector<ContactBatch> batches = GroupContactBatches(inContacts, cSameStepTime);
     // intent: each pair's impact memory by an index (a pair has at most one): a burst of hundreds of pairs
-    // would otherwise scan every memory for every batch
+    // would otherwise scan every memory for every batch. Built per call from every live memory, and again
+    // after the expiry below shifts them: O(memories) per call, where the scan cost O(batches x memories)
     BodyPairIndex memory_of;
     const auto index_memories = [&](std::size_t inMore)
     {
@@ -436,174 +438,71 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
     };
     index_memories(0);
 
-    // Impulses per batch; keep only closing contacts. A pair that already took an impulse at the previous
-    // step is solved from the velocities that impulse left it with (ImpactMemory), not from the engine's:
-    // a soft engine needs several steps to stop a car, and each of them would otherwise count the closing
-    // speed it has not removed yet once more.
-    struct SolvedBatch
+    // Impulses per batch, from the bodies as they were when the contacts came (on the task, the game has
+    // moved on since). A pair that already took an impulse at the previous step is solved from the velocities
+    // that impulse left it with (ImpactMemory), not from the engine's: a soft engine needs several steps to
+    // stop a car, and each of them would otherwise count the closing speed it has not removed yet once more.
+    std::vector<PairSolve> solves;
+    solves.reserve(batches.size());
+    std::vector<std::size_t> closing_batches; // intent: the batches whose solve has work
+    std::size_t closing = 0;
+    for (std::size_t b = 0; b < batches.size(); ++b)
     {
-        BodyState mStateA, mStateB; // as the solve took them (a continued impact: the remembered velocities)
-        bool mContinues = false;
-        std::vector<ImpulseContact> mImpulseContacts;
-        std::vector<ContactImpulse> mImpulses;
-    };
-    std::vector<SolvedBatch> solved(batches.size());
-    // intent: a batch's contacts as its solve takes them; returns how many close faster than resting (the
-    // contacts that make the solve work: one without any returns zeros at once)
-    const auto prepare_batch = [&](std::size_t inBatch)
-    {
-        ContactBatch& batch = batches[inBatch];
-        SolvedBatch& out = solved[inBatch];
-        BodyState& state_a = out.mStateA;
-        BodyState& state_b = out.mStateB;
-        state_a = body_of(batch.mA).mState;
-        state_b = body_of(batch.mB).mState;
+        ContactBatch& batch = batches[b];
         const std::uint32_t found = memory_of.Find(batch.mA, batch.mB);
         const ImpactMemory* previous = found == BodyPairIndex::cNone ? nullptr : &mImpactMemories[found];
         // intent: the same step's contacts submitted in a later call (a game that submits per manifold) also
         // continue from what the earlier call's impulse left: they are the same impact, counted once
-        out.mContinues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 &&
-                         batch.mTime >= previous->mTime - cSameStepTime &&
-                         batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
-        if (out.mContinues)
-        {
-            state_a.mLinearVelocity = previous->mLinearA;
-            state_a.mAngularVelocity = state_a.mTransform.mRotation * previous->mAngularBodyA;
-            state_b.mLinearVelocity = previous->mLinearB;
-            state_b.mAngularVelocity = state_b.mTransform.mRotation * previous->mAngularBodyB;
-        }
-        // intent: a contact reported before touching (a gap g within the engine's margin) constrains only the
-        // approach beyond s = g / dt (the rest comes with the next step's contact), unless the engine
-        // resolves a hit it predicts within the step whole (ESpeculativeContacts::ResolveWhole): then such a
-        // contact (closing beyond s faster than resting) is resolved as a touching one, rebound included
-        const bool resolve_whole = mSettings.mSpeculativeContacts == ESpeculativeContacts::ResolveWhole;
-        auto speculative_speed = [&](const CollisionContact& inContact)
-        {
-            if (!(inTimeStep > 0.0))
-                return 0.0;
-            const double s = std::max(-inContact.mPenetrationDepth, 0.0) / inTimeStep;
-            if (!resolve_whole || s == 0.0)
-                return s;
-            const double v = RelativeNormalVelocity(
-                state_a, state_b, 0.5 * (inContact.mPointOnA + inContact.mPointOnB), inContact.mNormal);
-            return v + s < -mSettings.mRestingSpeed ? 0.0 : s;
-        };
-        if (batch.mContacts.size() > mSettings.mMaxContactsPerPair)
-        {
-            // A large manifold: only closing contacts can take an impulse (the solve leaves the others at
-            // zero), so the resting ones go first; the closing ones are then reduced to a bounded set.
-            std::vector<CollisionContact> closing;
-            for (const CollisionContact& c : batch.mContacts)
-                if (RelativeNormalVelocity(state_a, state_b, 0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal) +
-                        speculative_speed(c) < -mSettings.mRestingSpeed)
-                    closing.push_back(c);
-            batch.mContacts = ReduceContacts(closing, mSettings.mMaxContactsPerPair);
-        }
-        std::size_t closing_count = 0;
-        for (const CollisionContact& c : batch.mContacts)
-        {
-            const ImpulseContact& contact = out.mImpulseContacts.emplace_back(
-                0.5 * (c.mPointOnA + c.mPointOnB), c.mNormal, speculative_speed(c), c.mFriction);
-            closing_count += RelativeNormalVelocity(state_a, state_b, contact.mPoint, contact.mNormal) +
-                                 contact.mSpeculativeSpeed <
-                             -mSettings.mRestingSpeed;
-        }
-        return closing_count;
-    };
-    // intent: a batch's solve reads its prepared batch and writes only its result, so batches solve in any
-    // order, on any thread, to the same bits
-    const auto solve_batch = [&](std::size_t inBatch)
-    {
-        SolvedBatch& out = solved[inBatch];
-        out.mImpulses =
-            FrictionalImpulses(out.mStateA, out.mStateB, out.mImpulseContacts, mSettings.mRestitution,
-                               mSettings.mRestingSpeed, mSettings.mFrictionSolve);
-    };
+        const bool continues = mSettings.mCountImpactOnce && previous != nullptr && inTimeStep > 0.0 &&
+                               batch.mTime >= previous->mTime - cSameStepTime &&
+                               batch.mTime - previous->mTime <= cImpactMemorySteps * inTimeStep;
+        const PairVelocities continued = continues
+                                             ? PairVelocities{previous->mLinearA, previous->mAngularBodyA,
+                                                              previous->mLinearB, previous->mAngularBodyB}
+                                             : PairVelocities{};
+        solves.push_back(PreparePairSolve(batch, SubmittedBodyOf(inBodies, batch.mA).mState,
+                                          SubmittedBodyOf(inBodies, batch.mB).mState,
+                                          continues ? &continued : nullptr, inTimeStep, mSettings));
+        closing += solves.back().mClosing;
+        if (solves.back().mClosing > 0)
+            closing_batches.push_back(b);
+        else
+            SolvePair(solves.back(), mSettings);
+    }
     // intent: a burst's closing pairs split over the host's workers, several pieces per worker (one pair's
     // solve can cost a hundred others'); a step with fewer closing contacts (resting pieces, one car's hit)
-    // solves inline, where handing pieces over would cost more than it saves
-    std::vector<std::size_t> working;
-    std::size_t closing = 0;
-    for (std::size_t b = 0; b < batches.size(); ++b)
-    {
-        const std::size_t closing_here = prepare_batch(b);
-        closing += closing_here;
-        if (closing_here > 0)
-            working.push_back(b);
-        else
-            solve_batch(b);
-    }
+    // solves inline, where handing pieces over would cost more than it saves. Each solve writes only its own
+    // answer, so they solve in any order, on any thread, to the same bits.
     const std::size_t pieces =
         inJobs == nullptr || inJobs->mParallelFor == nullptr || inJobs->mWorkerCount <= 1 ||
                 closing < cParallelClosingContacts
             ? 1
-            : std::min(working.size(), cPiecesPerWorker * static_cast<std::size_t>(inJobs->mWorkerCount));
-    const auto solve_piece = [&](std::size_t inPiece, std::size_t inPieces)
+            : std::min(closing_batches.size(),
+                       cPiecesPerWorker * static_cast<std::size_t>(inJobs->mWorkerCount));
+    const auto solve_piece = [&](std::size_t inPiece)
     {
-        for (std::size_t w = inPiece * working.size() / inPieces;
-             w < (inPiece + 1) * working.size() / inPieces; ++w)
-            solve_batch(working[w]);
+        const std::size_t count = closing_batches.size();
+        for (std::size_t i = inPiece * count / pieces; i < (inPiece + 1) * count / pieces; ++i)
+            SolvePair(solves[closing_batches[i]], mSettings);
     };
     if (pieces <= 1)
-        solve_piece(0, 1);
+        solve_piece(0);
     else
         ParallelFor(inJobs, static_cast<int>(pieces),
-                    [&](int inPiece) { solve_piece(static_cast<std::size_t>(inPiece), pieces); });
+                    [&](int inPiece) { solve_piece(static_cast<std::size_t>(inPiece)); });
 
+    // The contacts that push, in batch order; a step with an impulse not finite is refused whole.
     std::vector<std::vector<CollisionContact>> accepted(batches.size());
     std::vector<ImpactMemory> memories;
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
-        const ContactBatch& batch = batches[b];
-        const SolvedBatch& result = solved[b];
-        const BodyState& state_a = result.mStateA;
-        const BodyState& state_b = result.mStateB;
-        const std::vector<ContactImpulse>& impulses = result.mImpulses;
-        ImpactMemory memory;
-        memory.mA = batch.mA;
-        memory.mB = batch.mB;
-        memory.mTime = batch.mTime;
-        memory.mLinearA = state_a.mLinearVelocity;
-        memory.mLinearB = state_b.mLinearVelocity;
-        Vec3 spin_a = state_a.mAngularVelocity, spin_b = state_b.mAngularVelocity; // world frame
-        bool pushed = false;
-        for (std::size_t i = 0; i < batch.mContacts.size(); ++i)
-        {
-            if (!std::isfinite(impulses[i].mNormal) || !IsFinite(impulses[i].mFriction))
-                return MakeError(EError::NonFinite, "contact impulse is not finite: check the bodies' masses");
-            if (!(impulses[i].mNormal > 0.0))
-                continue;
-            pushed = true;
-            CollisionContact contact = batch.mContacts[i];
-            contact.mImpulse = impulses[i].mNormal;
-            contact.mFrictionImpulse = impulses[i].mFriction;
-            const ImpulseContact& solved_contact = result.mImpulseContacts[i];
-            contact.mApproachSpeed =
-                -RelativeNormalVelocity(state_a, state_b, solved_contact.mPoint, contact.mNormal);
-            // The impulse took the closing speed v beyond the speculative s = gap / dt to a rebound of
-            // e (v - s): kinetic energy J (v + s - e (v - s)) / 2 left the pair.
-            const double v = std::max(contact.mApproachSpeed, 0.0), s = solved_contact.mSpeculativeSpeed;
-            const double e = mSettings.mRestitution;
-            contact.mAbsorbedEnergy = 0.5 * impulses[i].mNormal * ((1.0 - e) * v + (1.0 + e) * s);
-            contact.mLocalPointOnA = state_a.mTransform.ToBody(contact.mPointOnA);
-            contact.mLocalPointOnB = state_b.mTransform.ToBody(contact.mPointOnB);
-            contact.mLocalNormalOnA = state_a.mTransform.DirectionToBody(contact.mNormal);
-            contact.mLocalNormalOnB = state_b.mTransform.DirectionToBody(contact.mNormal);
-            contact.mLocalFrictionOnA = state_a.mTransform.DirectionToBody(contact.mFrictionImpulse);
-            contact.mLocalFrictionOnB = state_b.mTransform.DirectionToBody(-contact.mFrictionImpulse);
-            accepted[b].push_back(contact);
-            // The impulse +J n + t on A and its opposite on B changes the velocities it leaves.
-            const Vec3 impulse = contact.ImpulseOnA();
-            const Vec3& point = solved_contact.mPoint;
-            memory.mLinearA += state_a.InverseMass() * impulse;
-            spin_a += state_a.InverseInertia() * (point - state_a.mCenterOfMass).cross(impulse);
-            memory.mLinearB -= state_b.InverseMass() * impulse;
-            spin_b -= state_b.InverseInertia() * (point - state_b.mCenterOfMass).cross(impulse);
-        }
-        memory.mAngularBodyA = state_a.mTransform.mRotation.transpose() * spin_a;
-        memory.mAngularBodyB = state_b.mTransform.mRotation.transpose() * spin_b;
-        if (pushed || result.mContinues)
-            memories.push_back(memory);
+        Result<AcceptedPair> pair = AcceptPairSolve(batches[b], solves[b], mSettings, accepted[b]);
+        if (!pair)
+            return pair.GetError();
+        const PairVelocities& left = pair.Get().mLeft;
+        if (pair.Get().mPushed || solves[b].mContinues)
+            memories.push_back({batches[b].mA, batches[b].mB, batches[b].mTime, left.mLinearA,
+                                left.mAngularBodyA, left.mLinearB, left.mAngularBodyB});
     }
     // Everything validated: commit. Memories of pairs that did not touch within the last steps expire.
     const double latest = batches.empty() ? 0.0
@@ -627,8 +526,8 @@ Status DamageWorld::SolveContacts(std::span<const ContactEvent> inContacts, doub
     }
     for (std::size_t b = 0; b < batches.size(); ++b)
     {
-        const SubmittedBody& slot_a = body_of(batches[b].mA);
-        const SubmittedBody& slot_b = body_of(batches[b].mB);
+        const SubmittedBody& slot_a = SubmittedBodyOf(inBodies, batches[b].mA);
+        const SubmittedBody& slot_b = SubmittedBodyOf(inBodies, batches[b].mB);
         mGrouper.Add(batches[b].mA, batches[b].mB, accepted[b], slot_a.mDispatchEachStep || slot_b.mDispatchEachStep,
                      {ShapeBoxIn(slot_b.mState, slot_a.mState), ShapeBoxIn(slot_a.mState, slot_b.mState)});
     }

@@ -1,15 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
-// One engine step of hundreds of body pairs (a brick wall bursting): the contacts group into the same batches
-// as a scan of every batch would make, and the pairs' impulses, solved inline or split over the host's
-// workers, are the same bits whatever the number of workers, over two steps (the second continues from the
-// impact memories the first left).
+// One engine step of hundreds of body pairs (a brick wall bursting): the pairs' impulses, solved inline or
+// split over the host's workers, are the same bits whatever the number of workers, over two steps (the second
+// continues from the impact memories the first left); with the impulses deferred, the job system's parallel
+// for is called from the game's thread only, never from the task that solves them.
 #include "BrickBurst.h"
-#include "ContactBatches.h"
-#include "DrawVec3.h"
 #include "ThreadJobSystem.h"
-
-#include <crumple/plugin/SurfaceContactPoints.h>
 
 #include <catch2/catch.hpp>
 
@@ -17,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <thread>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -24,36 +21,6 @@ using namespace crumple::common;
 
 namespace
 {
-
-// The grouping as DamageWorld did it before the index: each contact scans every batch made so far for the
-// first one of its pair within inSameStepTime of its time.
-std::vector<ContactBatch> GroupByScan(std::span<const ContactEvent> inContacts, double inSameStepTime)
-{
-    std::vector<ContactBatch> batches;
-    for (const ContactEvent& event : inContacts)
-    {
-        const SurfacePoints surface = SurfaceContactPoints(event);
-        const bool flip = event.mBodyB < event.mBodyA;
-        CollisionContact contact;
-        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
-        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
-        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
-        contact.mPenetrationDepth = event.mPenetrationDepth;
-        contact.mFriction = event.mFriction;
-        contact.mTime = event.mTime;
-        const BodyId a = flip ? event.mBodyB : event.mBodyA;
-        const BodyId b = flip ? event.mBodyA : event.mBodyB;
-        auto batch = std::find_if(batches.begin(), batches.end(),
-                                  [&](const ContactBatch& x) {
-                                      return x.mA == a && x.mB == b &&
-                                             std::abs(x.mTime - event.mTime) <= inSameStepTime;
-                                  });
-        if (batch == batches.end())
-            batch = batches.insert(batches.end(), ContactBatch{a, b, event.mTime, {}});
-        batch->mContacts.push_back(contact);
-    }
-    return batches;
-}
 
 bool SameContact(const CollisionContact& inA, const CollisionContact& inB)
 {
@@ -77,7 +44,8 @@ struct CollisionsHeard : DamageListener
     std::vector<Collision> mCollisions;
 };
 
-// A host job system that counts its parallel-for calls and hands them to inWorkers threads.
+// A host job system that counts its parallel-for calls, notes the threads they came from, and hands them and
+// its started tasks to a ThreadJobSystem of inWorkers threads.
 struct CountingJobs
 {
     explicit CountingJobs(int inWorkers) : mThreads(inWorkers)
@@ -88,18 +56,32 @@ struct CountingJobs
         {
             auto* self = static_cast<CountingJobs*>(inHost);
             ++self->mCalls;
+            self->mOffThreadCalls += std::this_thread::get_id() == self->mGameThread ? 0 : 1;
             const JobSystem& threads = self->mThreads.Get();
             threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
+        };
+        mJobs.mStartTask = [](void* inHost, void (*inTask)(void*), void* inContext)
+        {
+            const JobSystem& threads = static_cast<CountingJobs*>(inHost)->mThreads.Get();
+            return threads.mStartTask(threads.mHost, inTask, inContext);
+        };
+        mJobs.mWaitTask = [](void* inHost, std::uint64_t inTicket)
+        {
+            const JobSystem& threads = static_cast<CountingJobs*>(inHost)->mThreads.Get();
+            threads.mWaitTask(threads.mHost, inTicket);
         };
     }
     ThreadJobSystem mThreads;
     JobSystem mJobs;
-    int mCalls = 0;
+    std::thread::id mGameThread = std::this_thread::get_id();
+    int mCalls = 0;          // written by the calling thread only (the calls it counts are its own)
+    int mOffThreadCalls = 0; // calls from any other thread: there must be none
 };
 
-// The burst's two steps (the second 1/240 s later, the bricks' velocities as the first step's impulses left
-// them, so each pair continues from its impact memory) with inJobs, every collision flushed.
-std::vector<Collision> BurstCollisions(const JobSystem* inJobs)
+// The burst's first inSteps engine steps with inJobs, every collision flushed: the second step 1/240 s later,
+// with the bricks' velocities as the first step's impulses left them (each pair continues from its impact
+// memory).
+std::vector<Collision> BurstCollisions(const JobSystem* inJobs, int inSteps = 2)
 {
     DamageWorldSettings settings;
     settings.mJobs = inJobs;
@@ -107,94 +89,17 @@ std::vector<Collision> BurstCollisions(const JobSystem* inJobs)
     CollisionsHeard heard;
     burst.mWorld->AddListener(&heard);
     constexpr double cStep = 1.0 / 240.0;
-    REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, cStep).IsValid());
-    for (ContactEvent& contact : burst.mContacts)
-        contact.mTime += cStep;
-    REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, cStep).IsValid());
+    for (int step = 0; step < inSteps; ++step)
+    {
+        REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, cStep).IsValid());
+        for (ContactEvent& contact : burst.mContacts)
+            contact.mTime += cStep;
+    }
     (void)burst.mWorld->Flush();
     return heard.mCollisions;
 }
 
 } // namespace
-
-TEST_CASE("A step's contacts group into the batches a scan of every batch makes", "[plugin][burst]")
-{
-    // Six bodies named either way round, four step times (two of them round-off apart from another, within
-    // the same-step tolerance; one just outside it), contacts of a pair interleaved with other pairs'.
-    std::mt19937 random(11);
-    std::uniform_int_distribution<int> body(0, 5), time(0, 4);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    const double times[] = {1.0, 1.0 + 1.0e-12, 2.0, 2.0 + 0.5e-9, 2.0 + 3.0e-9};
-    for (int set = 0; set < 20; ++set)
-    {
-        std::vector<ContactEvent> contacts;
-        for (int i = 0; i < 200; ++i)
-        {
-            ContactEvent contact;
-            const int a = body(random);
-            int b = body(random);
-            if (b == a)
-                b = (a + 1) % 6;
-            contact.mBodyA = BodyId{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(a % 2)};
-            contact.mBodyB = BodyId{static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(b % 2)};
-            contact.mPointOnA = DrawVec3([&] { return unit(random); });
-            contact.mPointOnB = DrawVec3([&] { return unit(random); });
-            contact.mNormal = DrawVec3([&] { return unit(random); }).normalized();
-            contact.mPenetrationDepth = 0.01 * unit(random);
-            contact.mFriction = 0.5;
-            contact.mTime = times[time(random)];
-            contacts.push_back(contact);
-        }
-        const std::vector<ContactBatch> indexed = GroupContactBatches(contacts, 1.0e-9);
-        const std::vector<ContactBatch> scanned = GroupByScan(contacts, 1.0e-9);
-        INFO("set " << set);
-        REQUIRE(indexed.size() == scanned.size());
-        // intent: the sets do exercise several batches of one pair (different steps)
-        CHECK(indexed.size() > 30u);
-        for (std::size_t b = 0; b < indexed.size(); ++b)
-        {
-            CHECK(indexed[b].mA == scanned[b].mA);
-            CHECK(indexed[b].mB == scanned[b].mB);
-            CHECK(indexed[b].mTime == scanned[b].mTime);
-            REQUIRE(indexed[b].mContacts.size() == scanned[b].mContacts.size());
-            for (std::size_t c = 0; c < indexed[b].mContacts.size(); ++c)
-                CHECK(SameContact(indexed[b].mContacts[c], scanned[b].mContacts[c]));
-        }
-    }
-}
-
-TEST_CASE("A body pair index finds every pair it holds and no other", "[plugin][burst]")
-{
-    // 2,000 pairs filling the table to its bound (half its slots), ids dense and sparse, pairs i and i + 1,000
-    // of the same slots told apart only by their generations; the pairs turned round, and pairs never
-    // inserted, are not found
-    BodyPairIndex index;
-    constexpr std::uint32_t cPairs = 2000;
-    index.Reset(cPairs);
-    const auto pair_of = [](std::uint32_t inI) {
-        return std::pair{BodyId{inI % 50, inI / 1000}, BodyId{50 + (inI % 1000u) * 7919u % 100000u, inI % 3}};
-    };
-    for (std::uint32_t i = 0; i < cPairs; ++i)
-    {
-        const auto [a, b] = pair_of(i);
-        const auto [value, inserted] = index.TryInsert(a, b, i);
-        REQUIRE(inserted);
-        CHECK(value == i);
-    }
-    std::uint32_t found = 0, misplaced = 0, turned = 0;
-    for (std::uint32_t i = 0; i < cPairs; ++i)
-    {
-        const auto [a, b] = pair_of(i);
-        found += index.Find(a, b) == i ? 1 : 0;
-        misplaced += index.TryInsert(a, b, cPairs + i).first == i ? 0 : 1;
-        turned += index.Find(b, a) == BodyPairIndex::cNone ? 0 : 1;
-    }
-    CHECK(found == cPairs);
-    CHECK(misplaced == 0);
-    CHECK(turned == 0);
-    CHECK(index.Find(BodyId{0, 7}, BodyId{50, 0}) == BodyPairIndex::cNone);
-    CHECK(BodyPairIndex().Find(BodyId{0, 0}, BodyId{1, 0}) == BodyPairIndex::cNone);
-}
 
 TEST_CASE("A burst's impulses are the same bits inline and on 1, 2 and 4 workers", "[plugin][burst]")
 {
@@ -236,4 +141,37 @@ TEST_CASE("A step of few closing contacts solves without the job system", "[plug
     REQUIRE(burst.mContacts.size() == 12u);
     REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, 1.0 / 240.0).IsValid());
     CHECK(jobs.mCalls == 0);
+}
+
+TEST_CASE("Deferred impulses call the job system from the game's thread only", "[plugin][burst]")
+{
+    // The burst's first step with the impulses deferred: solved on the dents' task (which must not call the
+    // parallel for: a task never calls back into the job system) after an Update, or on the game's thread by
+    // Flush (which may). Both give the inline world's collisions bit for bit.
+    const std::vector<Collision> inline_solved = BurstCollisions(nullptr, 1);
+    for (const bool on_task : {true, false})
+    {
+        INFO((on_task ? "solved on the task" : "solved by Flush"));
+        CountingJobs jobs(2);
+        DamageWorldSettings settings;
+        settings.mJobs = &jobs.mJobs;
+        settings.mDeferDents = true;
+        settings.mDeferImpulses = true;
+        BrickBurst burst = MakeBrickBurst(16, 10, 7, settings);
+        CollisionsHeard heard;
+        burst.mWorld->AddListener(&heard);
+        REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, 1.0 / 240.0).IsValid());
+        if (on_task)
+            (void)burst.mWorld->Update(1.0); // hands the step to the task; Flush lands it
+        (void)burst.mWorld->Flush();
+        CHECK(jobs.mOffThreadCalls == 0);
+        CHECK(jobs.mCalls == (on_task ? 0 : 1));
+        REQUIRE(heard.mCollisions.size() == inline_solved.size());
+        for (std::size_t i = 0; i < heard.mCollisions.size(); ++i)
+        {
+            REQUIRE(heard.mCollisions[i].mContacts.size() == inline_solved[i].mContacts.size());
+            for (std::size_t c = 0; c < heard.mCollisions[i].mContacts.size(); ++c)
+                CHECK(SameContact(heard.mCollisions[i].mContacts[c], inline_solved[i].mContacts[c]));
+        }
+    }
 }

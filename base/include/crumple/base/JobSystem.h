@@ -12,14 +12,15 @@ namespace crumple
 
 /// The host's job system, injected (STYLE rule 5; Box2D's enqueueTask, Jolt's JobSystem): Crumple owns no
 /// thread. Work that splits into independent pieces (the vertices and normals a dent recomputes, the
-/// vertices its bounds are checked on) is handed to mParallelFor; each piece writes only its own elements
-/// and reductions are exact (max, min), so results are bitwise identical whatever the number of workers and
+/// vertices its bounds are checked on, the body pairs' impulse solves of a step with many closing contacts,
+/// a prop's FEM element passes) is handed to mParallelFor; each piece writes only its own elements and
+/// reductions are exact (max, min), so results are bitwise identical whatever the number of workers and
 /// however the host schedules the pieces.
 struct CRUMPLE_API JobSystem
 {
     /// Runs inTask(inTaskContext, i) for every i in [0, inCount), on any threads in any order, and returns
-    /// when all have finished. Called only from the thread that called Crumple; it is never re-entered
-    /// from inside a task.
+    /// when all have finished. Called only from the thread that called Crumple, also while a task started
+    /// by mStartTask runs (a deferred dent, a prop's step); it is never re-entered from inside a task.
     using ParallelForFunction = void (*)(void* inHost, int inCount, void (*inTask)(void* inTaskContext, int inIndex),
                                          void* inTaskContext);
     ParallelForFunction mParallelFor = nullptr; ///< The host's parallel for; null runs everything inline

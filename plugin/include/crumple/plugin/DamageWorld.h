@@ -204,9 +204,10 @@ private:
     /// Drops the memories of every pair the body is in
     void ForgetMemoriesOf(BodyId inBody);
     /// A step's pair solves go to the job system when its contacts that close number at least this many (a
-    /// brick wall's burst: hundreds; resting pieces and a car's hit stay inline), in at most
-    /// cPiecesPerWorker pieces per worker (one pair's solve can cost a hundred others')
+    /// brick wall's burst: hundreds; resting pieces and a car's hit stay inline)
     static constexpr std::size_t cParallelClosingContacts = 64;
+    /// Pieces per worker at most that a step's pair solves split into: several, as one pair's solve can cost
+    /// a hundred others'
     static constexpr std::size_t cPiecesPerWorker = 4;
 
     bool IsLive(BodyId inBody) const
@@ -233,6 +234,8 @@ private:
     };
     /// The bodies inContacts name (validated: live), by ascending id, as they are now.
     std::vector<SubmittedBody> SnapshotBodies(std::span<const ContactEvent> inContacts);
+    /// inBody's entry in inBodies (by ascending id; it must be there)
+    static const SubmittedBody& SubmittedBodyOf(std::span<const SubmittedBody> inBodies, BodyId inBody);
     /// Solves validated contacts' impulses into the grouper and the impact memories, reading the bodies only
     /// from inBodies (so a task can run it while the game moves on); refused whole, changing nothing, where
     /// an impulse is not finite. The pairs' solves split over inJobs' parallel for where given (null on the

@@ -41,9 +41,9 @@ struct CRUMPLE_API DamageWorldSettings
     /// or Box2D. docs/adapters.md says how to tell for another engine.
     ESpeculativeContacts mSpeculativeContacts = ESpeculativeContacts::StopAtSurface;
     /// The host's job system for the per-vertex work of dents and for the pairs' impulse solves of a step
-    /// with at least 64 closing contacts (DamageWorld::cParallelClosingContacts: a brick wall bursting; a
-    /// step of fewer solves inline) (not owned; it must outlive the world); null: everything runs on the
-    /// thread that calls SubmitContacts and Update/Flush. Results are bitwise identical either way.
+    /// with many closing contacts (DamageWorld::cParallelClosingContacts: a brick wall bursting; a step of
+    /// fewer solves inline) (not owned; it must outlive the world); null: everything runs on the thread that
+    /// calls SubmitContacts and Update/Flush. Results are bitwise identical either way.
     const JobSystem* mJobs = nullptr;
     /// Dents run off the game's thread and land one Update later: the Update that closes a collision starts
     /// its dents as one task on mJobs (which needs mStartTask and mWaitTask), and the next Update (or Flush,
