@@ -78,6 +78,10 @@ Result<AcceptedPair> AcceptPairSolve(const ContactBatch& inBatch, const PairSolv
                                      const DamageWorldSettings& inSettings,
                                      std::vector<CollisionContact>& ioAccepted)
 {
+    // intent: a host's parallel for that skipped a piece left its pairs unsolved: refused, not read past
+    if (inSolve.mImpulses.size() != inBatch.mContacts.size())
+        return MakeError(EError::InvalidArgument,
+                         "a pair's impulses were not solved: the job system's parallel for skipped a piece");
     const BodyState& state_a = inSolve.mStateA;
     const BodyState& state_b = inSolve.mStateB;
     const std::vector<ContactImpulse>& impulses = inSolve.mImpulses;

@@ -53,8 +53,9 @@ void SolvePair(PairSolve& ioSolve, const DamageWorldSettings& inSettings);
 
 /// inSolve's contacts that push, appended to ioAccepted as the collision's contacts (impulses, approach
 /// speeds, absorbed energies, body-frame copies), and the velocities the impulses leave the pair moving at
-/// (mPushed: whether any contact pushed). NonFinite where an impulse is not finite (nothing appended then is
-/// to be used: the caller drops the step).
+/// (mPushed: whether any contact pushed). NonFinite where an impulse is not finite, InvalidArgument where the
+/// pair was not solved (a host's parallel for skipped its piece): nothing appended then is to be used, the
+/// caller drops the step.
 struct AcceptedPair
 {
     PairVelocities mLeft; ///< The velocities after the impulses

@@ -175,3 +175,23 @@ TEST_CASE("Deferred impulses call the job system from the game's thread only", "
         }
     }
 }
+
+TEST_CASE("A job system that skips pieces gets the step refused, changing nothing", "[plugin][burst]")
+{
+    // A broken host: its parallel for returns without running anything. The step's pairs are then unsolved:
+    // SubmitContacts refuses the whole step instead of reading impulses never made, and no collision comes of
+    // it.
+    JobSystem lazy;
+    lazy.mParallelFor = [](void*, int, void (*)(void*, int), void*) {};
+    lazy.mWorkerCount = 2;
+    DamageWorldSettings settings;
+    settings.mJobs = &lazy;
+    BrickBurst burst = MakeBrickBurst(16, 10, 7, settings);
+    CollisionsHeard heard;
+    burst.mWorld->AddListener(&heard);
+    const Status refused = burst.mWorld->SubmitContacts(burst.mContacts, 1.0 / 240.0);
+    REQUIRE(refused.HasError());
+    CHECK(refused.GetError().mCode == EError::InvalidArgument);
+    (void)burst.mWorld->Flush();
+    CHECK(heard.mCollisions.empty());
+}
