@@ -11,6 +11,22 @@
 namespace crumple::plugin
 {
 
+OrientedContact CanonicalContact(const ContactEvent& inEvent)
+{
+    const SurfacePoints surface = SurfaceContactPoints(inEvent);
+    const bool flip = inEvent.mBodyB < inEvent.mBodyA;
+    OrientedContact oriented{
+        flip ? inEvent.mBodyB : inEvent.mBodyA, flip ? inEvent.mBodyA : inEvent.mBodyB, {}};
+    CollisionContact& contact = oriented.mContact;
+    contact.mNormal = (flip ? -inEvent.mNormal : inEvent.mNormal).normalized();
+    contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
+    contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
+    contact.mPenetrationDepth = inEvent.mPenetrationDepth;
+    contact.mFriction = inEvent.mFriction;
+    contact.mTime = inEvent.mTime;
+    return oriented;
+}
+
 std::vector<ContactBatch> GroupContactBatches(std::span<const ContactEvent> inContacts, double inSameStepTime)
 {
     constexpr std::uint32_t cNone = BodyPairIndex::cNone;
@@ -22,17 +38,7 @@ std::vector<ContactBatch> GroupContactBatches(std::span<const ContactEvent> inCo
     std::vector<std::uint32_t> next_of_pair;
     for (const ContactEvent& event : inContacts)
     {
-        const SurfacePoints surface = SurfaceContactPoints(event);
-        const bool flip = event.mBodyB < event.mBodyA;
-        CollisionContact contact;
-        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
-        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
-        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
-        contact.mPenetrationDepth = event.mPenetrationDepth;
-        contact.mFriction = event.mFriction;
-        contact.mTime = event.mTime;
-        const BodyId a = flip ? event.mBodyB : event.mBodyA;
-        const BodyId b = flip ? event.mBodyA : event.mBodyB;
+        const auto [a, b, contact] = CanonicalContact(event);
         // intent: one engine step's contacts of a pair are one batch even when their times differ by
         // round-off (a game that computes each contact's time): solved apart, each would take the pair's
         // whole impulse

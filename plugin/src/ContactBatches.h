@@ -24,11 +24,21 @@ struct ContactBatch
     std::vector<CollisionContact> mContacts;
 };
 
-/// Groups inContacts into batches: each contact turned to the canonical orientation (A = lower id), moved
-/// onto the bodies' surfaces (SurfaceContactPoints), and added to the first batch, in order of creation, of
-/// its pair whose time is within inSameStepTime of its own, or to a new one. The batches come in the order of
-/// their first contacts. A pair's batches are found through an index (BodyPairIndex), not by scanning
-/// every batch: a brick wall bursting reports hundreds of pairs in one step.
+/// An engine contact turned to the canonical orientation (A = the lower id: a flipped normal, swapped points)
+/// with its points moved onto the bodies' surfaces (SurfaceContactPoints).
+struct OrientedContact
+{
+    BodyId mA;                 ///< The lower id
+    BodyId mB;                 ///< The higher id
+    CollisionContact mContact; ///< Its normal from B to A, its points on A's and B's surfaces
+};
+OrientedContact CanonicalContact(const ContactEvent& inEvent);
+
+/// Groups inContacts into batches: each contact turned to the canonical orientation (CanonicalContact) and
+/// added to the first batch, in order of creation, of its pair whose time is within inSameStepTime of its
+/// own, or to a new one. The batches come in the order of their first contacts. A pair's batches are found
+/// through an index (BodyPairIndex), not by scanning every batch: a brick wall bursting reports hundreds of
+/// pairs in one step.
 std::vector<ContactBatch> GroupContactBatches(std::span<const ContactEvent> inContacts,
                                               double inSameStepTime);
 

@@ -4,8 +4,7 @@
 // grouping before the index), in the same order, with the same contacts.
 #include "ContactBatches.h"
 #include "DrawVec3.h"
-
-#include <crumple/plugin/SurfaceContactPoints.h>
+#include "SameBytes.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,24 +20,14 @@ using namespace crumple::common;
 namespace
 {
 
-// The grouping as DamageWorld did it before the index: each contact scans every batch made so far for the
-// first one of its pair within inSameStepTime of its time.
+// The grouping as DamageWorld did it before the index: each contact (oriented as the grouping does it) scans
+// every batch made so far for the first one of its pair within inSameStepTime of its time.
 std::vector<ContactBatch> GroupByScan(std::span<const ContactEvent> inContacts, double inSameStepTime)
 {
     std::vector<ContactBatch> batches;
     for (const ContactEvent& event : inContacts)
     {
-        const SurfacePoints surface = SurfaceContactPoints(event);
-        const bool flip = event.mBodyB < event.mBodyA;
-        CollisionContact contact;
-        contact.mNormal = (flip ? -event.mNormal : event.mNormal).normalized();
-        contact.mPointOnA = flip ? surface.mOnB : surface.mOnA;
-        contact.mPointOnB = flip ? surface.mOnA : surface.mOnB;
-        contact.mPenetrationDepth = event.mPenetrationDepth;
-        contact.mFriction = event.mFriction;
-        contact.mTime = event.mTime;
-        const BodyId a = flip ? event.mBodyB : event.mBodyA;
-        const BodyId b = flip ? event.mBodyA : event.mBodyB;
+        const auto [a, b, contact] = CanonicalContact(event);
         auto batch = std::find_if(batches.begin(), batches.end(),
                                   [&](const ContactBatch& x) {
                                       return x.mA == a && x.mB == b &&
@@ -49,18 +38,6 @@ std::vector<ContactBatch> GroupByScan(std::span<const ContactEvent> inContacts, 
         batch->mContacts.push_back(contact);
     }
     return batches;
-}
-
-bool SameContact(const CollisionContact& inA, const CollisionContact& inB)
-{
-    return std::memcmp(inA.mPointOnA.data(), inB.mPointOnA.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mPointOnB.data(), inB.mPointOnB.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mNormal.data(), inB.mNormal.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mFrictionImpulse.data(), inB.mFrictionImpulse.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(&inA.mImpulse, &inB.mImpulse, sizeof(double)) == 0 &&
-           std::memcmp(&inA.mApproachSpeed, &inB.mApproachSpeed, sizeof(double)) == 0 &&
-           std::memcmp(&inA.mAbsorbedEnergy, &inB.mAbsorbedEnergy, sizeof(double)) == 0 &&
-           inA.mTime == inB.mTime;
 }
 
 } // namespace

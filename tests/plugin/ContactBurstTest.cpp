@@ -5,6 +5,7 @@
 // continues from the impact memories the first left); with the impulses deferred, the job system's parallel
 // for is called from the game's thread only, never from the task that solves them.
 #include "BrickBurst.h"
+#include "SameBytes.h"
 #include "ThreadJobSystem.h"
 
 #include <catch2/catch.hpp>
@@ -21,18 +22,6 @@ using namespace crumple::common;
 
 namespace
 {
-
-bool SameContact(const CollisionContact& inA, const CollisionContact& inB)
-{
-    return std::memcmp(inA.mPointOnA.data(), inB.mPointOnA.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mPointOnB.data(), inB.mPointOnB.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mNormal.data(), inB.mNormal.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(inA.mFrictionImpulse.data(), inB.mFrictionImpulse.data(), sizeof(Vec3)) == 0 &&
-           std::memcmp(&inA.mImpulse, &inB.mImpulse, sizeof(double)) == 0 &&
-           std::memcmp(&inA.mApproachSpeed, &inB.mApproachSpeed, sizeof(double)) == 0 &&
-           std::memcmp(&inA.mAbsorbedEnergy, &inB.mAbsorbedEnergy, sizeof(double)) == 0 &&
-           inA.mTime == inB.mTime;
-}
 
 // Every collision the world dispatched, in order.
 struct CollisionsHeard : DamageListener
