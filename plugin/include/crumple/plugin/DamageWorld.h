@@ -104,9 +104,11 @@ public:
     /// in one call where you can: with a step and DamageWorldSettings::mCountImpactOnce, contacts of a pair
     /// for a step already submitted (a game that submits per manifold) are solved from what the earlier
     /// impulse left, as the same impact counted once, but apart from the first ones, not jointly with them.
-    /// Refused whole on any bad contact. With DamageWorldSettings::mDeferImpulses only the validation runs
-    /// here: the contacts and their bodies' states (as now) wait for the task the next Update starts, which
-    /// does the rest.
+    /// Refused whole on any bad contact, on an impulse that is not finite (NonFinite), and on a pair left
+    /// unsolved by a job system whose parallel for skipped a piece (InvalidArgument). A step with many
+    /// closing contacts solves its pairs on DamageWorldSettings::mJobs, to the same bits. With
+    /// DamageWorldSettings::mDeferImpulses only the validation runs here: the contacts and their bodies'
+    /// states (as now) wait for the task the next Update starts, which does the rest.
     /// @param[in] inTimeStep the engine step that produced them (s), or 0. With a step, a contact reported
     ///            before touching (negative penetration depth g) resolves only the approach beyond g/dt, as
     ///            the engine's speculative contacts do; without one, gap contacts resolve their whole
@@ -238,8 +240,9 @@ private:
     static const SubmittedBody& SubmittedBodyOf(std::span<const SubmittedBody> inBodies, BodyId inBody);
     /// Solves validated contacts' impulses into the grouper and the impact memories, reading the bodies only
     /// from inBodies (so a task can run it while the game moves on); refused whole, changing nothing, where
-    /// an impulse is not finite. The pairs' solves split over inJobs' parallel for where given (null on the
-    /// deferred task, which must not call back into the job system), to the same bits.
+    /// an impulse is not finite or a pair was left unsolved. The pairs' solves split over inJobs' parallel
+    /// for where given (null on the deferred task, which must not call back into the job system), to the same
+    /// bits.
     Status SolveContacts(std::span<const ContactEvent> inContacts, double inTimeStep,
                          std::span<const SubmittedBody> inBodies, const JobSystem* inJobs);
     Status SolveSubmission(const Submission& inSubmission, const JobSystem* inJobs);
