@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "SeamTwins.h"
 
+#include <crumple/base/MixBits64.h>
+
 #include <array>
 #include <bit>
 #include <cstring>
@@ -31,11 +33,8 @@ struct PositionKeyHash
     std::size_t operator()(const PositionKey& inKey) const
     {
         // intent: mix the three words (splitmix64's finalizer), so grid-aligned coordinates spread
-        std::uint64_t h =
-            inKey[0] * 0x9E3779B97F4A7C15ull ^ std::rotl(inKey[1], 21) ^ std::rotl(inKey[2], 42);
-        h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-        h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-        return static_cast<std::size_t>(h ^ (h >> 31));
+        return static_cast<std::size_t>(
+            MixBits64(inKey[0] * 0x9E3779B97F4A7C15ull ^ std::rotl(inKey[1], 21) ^ std::rotl(inKey[2], 42)));
     }
 };
 

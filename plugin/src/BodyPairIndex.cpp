@@ -3,6 +3,7 @@
 #include "BodyPairIndex.h"
 
 #include <crumple/base/Assert.h>
+#include <crumple/base/MixBits64.h>
 
 namespace crumple::plugin
 {
@@ -23,11 +24,11 @@ std::size_t BodyPairIndex::SlotOf(BodyId inA, BodyId inB) const
 {
     // intent: the four 32-bit words mixed into 64 bits (splitmix64's finaliser spreads the slot indices,
     // which are small and dense, over the table), then probed linearly to the pair or an empty slot
-    std::uint64_t h = (std::uint64_t{inA.mValue} << 32 | inB.mValue) ^
-                      (std::uint64_t{inA.mGeneration} << 32 | inB.mGeneration) * 0x9E3779B97F4A7C15ull;
-    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-    std::size_t slot = static_cast<std::size_t>(h ^ (h >> 31)) & mMask;
+    std::size_t slot =
+        static_cast<std::size_t>(
+            MixBits64((std::uint64_t{inA.mValue} << 32 | inB.mValue) ^
+                      (std::uint64_t{inA.mGeneration} << 32 | inB.mGeneration) * 0x9E3779B97F4A7C15ull)) &
+        mMask;
     while (mSlots[slot].mValue != cNone && !(mSlots[slot].mA == inA && mSlots[slot].mB == inB))
         slot = (slot + 1) & mMask;
     return slot;

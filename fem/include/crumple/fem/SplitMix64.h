@@ -3,6 +3,7 @@
 #pragma once
 
 #include <crumple/base/Export.h>
+#include <crumple/base/MixBits64.h>
 
 #include <cstdint>
 
@@ -24,10 +25,7 @@ class CRUMPLE_API SplitMix64
     std::uint64_t Next()
     {
         mState += 0x9e3779b97f4a7c15ULL;
-        std::uint64_t z = mState;
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
+        return MixBits64(mState);
     }
 
     /// Uniform double in [0, 1): the top 53 bits times 2^-53 (exact)
