@@ -5,8 +5,8 @@
 // continues from the impact memories the first left); with the impulses deferred, the job system's parallel
 // for is called from the game's thread only, never from the task that solves them.
 #include "BrickBurst.h"
+#include "CountingJobs.h"
 #include "SameBytes.h"
-#include "ThreadJobSystem.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,40 +31,6 @@ struct CollisionsHeard : DamageListener
         mCollisions.push_back(inCollision);
     }
     std::vector<Collision> mCollisions;
-};
-
-// A host job system that counts its parallel-for calls, notes the threads they came from, and hands them and
-// its started tasks to a ThreadJobSystem of inWorkers threads.
-struct CountingJobs
-{
-    explicit CountingJobs(int inWorkers) : mThreads(inWorkers)
-    {
-        mJobs = mThreads.Get();
-        mJobs.mHost = this;
-        mJobs.mParallelFor = [](void* inHost, int inCount, void (*inTask)(void*, int), void* inContext)
-        {
-            auto* self = static_cast<CountingJobs*>(inHost);
-            ++self->mCalls;
-            self->mOffThreadCalls += std::this_thread::get_id() == self->mGameThread ? 0 : 1;
-            const JobSystem& threads = self->mThreads.Get();
-            threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
-        };
-        mJobs.mStartTask = [](void* inHost, void (*inTask)(void*), void* inContext)
-        {
-            const JobSystem& threads = static_cast<CountingJobs*>(inHost)->mThreads.Get();
-            return threads.mStartTask(threads.mHost, inTask, inContext);
-        };
-        mJobs.mWaitTask = [](void* inHost, std::uint64_t inTicket)
-        {
-            const JobSystem& threads = static_cast<CountingJobs*>(inHost)->mThreads.Get();
-            threads.mWaitTask(threads.mHost, inTicket);
-        };
-    }
-    ThreadJobSystem mThreads;
-    JobSystem mJobs;
-    std::thread::id mGameThread = std::this_thread::get_id();
-    int mCalls = 0;          // written by the calling thread only (the calls it counts are its own)
-    int mOffThreadCalls = 0; // calls from any other thread: there must be none
 };
 
 // The burst's first inSteps engine steps with inJobs, every collision flushed: the second step 1/240 s later,
@@ -104,10 +70,10 @@ TEST_CASE("A burst's impulses are the same bits inline and on 1, 2 and 4 workers
     {
         INFO(workers << " workers");
         CountingJobs jobs(workers);
-        const std::vector<Collision> solved = BurstCollisions(&jobs.mJobs);
+        const std::vector<Collision> solved = BurstCollisions(&jobs.Get());
         // intent: with more than one worker the burst's solves went to the job system (the second step's
         // pairs part from what the first left them, fewer closing)
-        CHECK((workers > 1 ? jobs.mCalls >= 1 : jobs.mCalls == 0));
+        CHECK((workers > 1 ? jobs.GetCalls() >= 1 : jobs.GetCalls() == 0));
         REQUIRE(solved.size() == inline_solved.size());
         for (std::size_t i = 0; i < solved.size(); ++i)
         {
@@ -125,11 +91,11 @@ TEST_CASE("A step of few closing contacts solves without the job system", "[plug
     // Two bricks of the burst only: a handful of pairs, not worth handing over
     CountingJobs jobs(2);
     DamageWorldSettings settings;
-    settings.mJobs = &jobs.mJobs;
+    settings.mJobs = &jobs.Get();
     BrickBurst burst = MakeBrickBurst(2, 1, 7, settings);
     REQUIRE(burst.mContacts.size() == 12u);
     REQUIRE(burst.mWorld->SubmitContacts(burst.mContacts, 1.0 / 240.0).IsValid());
-    CHECK(jobs.mCalls == 0);
+    CHECK(jobs.GetCalls() == 0);
 }
 
 TEST_CASE("Deferred impulses call the job system from the game's thread only", "[plugin][burst]")
@@ -143,7 +109,7 @@ TEST_CASE("Deferred impulses call the job system from the game's thread only", "
         INFO((on_task ? "solved on the task" : "solved by Flush"));
         CountingJobs jobs(2);
         DamageWorldSettings settings;
-        settings.mJobs = &jobs.mJobs;
+        settings.mJobs = &jobs.Get();
         settings.mDeferDents = true;
         settings.mDeferImpulses = true;
         BrickBurst burst = MakeBrickBurst(16, 10, 7, settings);
@@ -153,8 +119,8 @@ TEST_CASE("Deferred impulses call the job system from the game's thread only", "
         if (on_task)
             (void)burst.mWorld->Update(1.0); // hands the step to the task; Flush lands it
         (void)burst.mWorld->Flush();
-        CHECK(jobs.mOffThreadCalls == 0);
-        CHECK(jobs.mCalls == (on_task ? 0 : 1));
+        CHECK(jobs.GetOffThreadCalls() == 0);
+        CHECK(jobs.GetCalls() == (on_task ? 0 : 1));
         REQUIRE(heard.mCollisions.size() == inline_solved.size());
         for (std::size_t i = 0; i < heard.mCollisions.size(); ++i)
         {

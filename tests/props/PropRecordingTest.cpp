@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 // Props in a damage recording: a run with a prop that cracks, replayed without an engine, ends bit for bit.
 #include "BrittlePanel.h"
+#include "CountingJobs.h"
 #include "RecordedPropWorld.h"
 #include "ScratchDirectory.h"
 #include "ThreadJobSystem.h"
@@ -119,24 +120,10 @@ TEST_CASE(
     const Replay replay = DecodeReplay(ReadFileBytes(path).Get()).Get();
 
     // The host's parallel fors counted, run on two threads.
-    struct Counted
-    {
-        common::ThreadJobSystem mThreads{2};
-        JobSystem mJobs;
-        int mCalls = 0;
-    } counted;
-    counted.mJobs = counted.mThreads.Get();
-    counted.mJobs.mHost = &counted;
-    counted.mJobs.mParallelFor = [](void* inHost, int inCount, void (*inTask)(void*, int), void* inContext)
-    {
-        auto* self = static_cast<Counted*>(inHost);
-        ++self->mCalls;
-        const JobSystem& threads = self->mThreads.Get();
-        threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
-    };
+    common::CountingJobs counted(2);
     const std::vector<ReplayedProp> serial = ReplayProps(replay).Get();
-    const std::vector<ReplayedProp> parallel = ReplayProps(replay, nullptr, &counted.mJobs).Get();
-    CHECK(counted.mCalls > 0);
+    const std::vector<ReplayedProp> parallel = ReplayProps(replay, nullptr, &counted.Get()).Get();
+    CHECK(counted.GetCalls() > 0);
     REQUIRE(serial.size() == 1u);
     REQUIRE(parallel.size() == 1u);
     const TetSolver& live = *props->GetProp(wall)->GetCpuSolver();

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 // Props in the damage flow: a FEM prop bound to a DamageWorld body takes the opposite of the impulses the
 // world gave the body that hit it.
+#include "CountingJobs.h"
 #include "PropMomentum.h"
 #include "ScratchDirectory.h"
 #include "WallPanelMesh.h"
@@ -13,8 +14,6 @@
 #include <crumple/props/CollisionImpulses.h>
 #include <crumple/props/PropRecording.h>
 #include <crumple/props/PropWorld.h>
-
-#include <ThreadJobSystem.h>
 
 #include <catch2/catch.hpp>
 
@@ -100,42 +99,15 @@ TEST_CASE("PropWorld: a prop takes the opposite of the car's impulses, momentum 
     CHECK(energy > 0.0);
 }
 
-namespace
-{
-
-// A host job system that counts the parallel fors it is given and runs them on a ThreadJobSystem.
-struct CountingJobs
-{
-    explicit CountingJobs(int inThreads) : mThreads(inThreads)
-    {
-        mJobs = mThreads.Get();
-        mJobs.mHost = this;
-        mJobs.mParallelFor = [](void* inHost, int inCount, void (*inTask)(void*, int), void* inContext)
-        {
-            auto* self = static_cast<CountingJobs*>(inHost);
-            ++self->mCalls;
-            const JobSystem& threads = self->mThreads.Get();
-            threads.mParallelFor(threads.mHost, inCount, inTask, inContext);
-        };
-        mJobs.mStartTask = nullptr;
-        mJobs.mWaitTask = nullptr;
-    }
-    common::ThreadJobSystem mThreads;
-    JobSystem mJobs;
-    int mCalls = 0;
-};
-
-} // namespace
-
 TEST_CASE("PropWorld: a prop steps on the world's job system, bitwise the same for 1, 2 and 4 threads", "[props]")
 {
     // 8,424 tetrahedra: enough for the element passes to split into pieces on 2 and on 4 threads.
     std::vector<Vec3> one_thread;
     for (int threads : {1, 2, 4})
     {
-        CountingJobs jobs(threads);
+        common::CountingJobs jobs(threads);
         DamageWorldSettings settings;
-        settings.mJobs = &jobs.mJobs;
+        settings.mJobs = &jobs.Get();
         common::WorldFixture fixture(4000, {8, 6, 6}, settings);
         std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
         const PropId wall = props->AddProp(fixture.mWall, Panel(true, {2, 26, 27})).Get();
@@ -143,10 +115,10 @@ TEST_CASE("PropWorld: a prop steps on the world's job system, bitwise the same f
         REQUIRE(fixture.mWorld.SubmitContacts(std::vector<ContactEvent>{fixture.FrontContact(0.3, 0.2, 0.0),
                                                                         fixture.FrontContact(-0.4, -0.1, 0.0)}));
         fixture.mWorld.Flush();
-        const int calls_before = jobs.mCalls;
+        const int calls_before = jobs.GetCalls();
         for (int step = 0; step < 3; ++step)
             REQUIRE(props->Step(1.0 / 60.0).Get().mStepped == 1);
-        CHECK((jobs.mCalls > calls_before) == (threads > 1)); // its passes went to the host's workers
+        CHECK((jobs.GetCalls() > calls_before) == (threads > 1)); // its passes went to the host's workers
         const std::vector<Vec3>& positions = props->GetProp(wall)->GetCpuSolver()->GetPositions();
         if (threads == 1)
         {
