@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "Benchmarks.h"
 #include "BoxMesh.h"
+#include "BruteForceProbe.h"
 #include "ThreadJobSystem.h"
 
 #include <crumple/plugin/BaraffImpulse.h>
@@ -333,6 +334,82 @@ void PlanCase(BenchTable& ioTable, int inTriangles, int inRepetitions, bool inWa
                      std::to_string(report.mVerticesMoved)});
 }
 
+// A plan on a body crushed before: the struck front and the footprint's probe must skip what an earlier
+// crush moved away from them (the cells' boxes of current positions and of displacements), not scan every
+// cell within the largest move of any vertex. The box body of inTriangles (default lattice) takes inDents of
+// the same 64-contact front crush, then the plan of one more (its probe over the front face, and that probe
+// beside a scan of every vertex and triangle), interleaved with the plan on the pristine body. Error: the
+// share of 40 random probes of the dented front whose indexed answer differs from the full scan's (0: the
+// skips are exact).
+void DentedPlanCase(BenchTable& ioTable, int inTriangles, int inDents, int inRepetitions)
+{
+    const Collision collision = MakeFrontCollision(64);
+    const DeformableObject pristine = MakeCar(inTriangles, 1, 0, ECrushModel::Campbell);
+    DeformableObject dented = pristine;
+    for (int i = 0; i < inDents; ++i)
+        if (dented.ApplyCollision(collision, ECollisionSide::B).Get().mVerticesMoved == 0)
+            throw std::runtime_error("crush_plan: an earlier crush moved nothing");
+    ffd::SurfaceProbe face; // the front face seen along the crush, as the plan's footprint probe sees it
+    face.mDirection = -Vec3::UnitX();
+    face.mSide = Vec3::UnitY();
+    face.mThird = -Vec3::UnitZ();
+    face.mSideMin = -cHalfExtents.y();
+    face.mSideMax = cHalfExtents.y();
+    face.mThirdMin = -cHalfExtents.z();
+    face.mThirdMax = cHalfExtents.z();
+    std::optional<CrushPlan> plan_pristine, plan_dented;
+    ffd::SurfaceProbeResult indexed, scanned;
+    const std::vector<Timing> timing = InterleavedMedians(
+        inRepetitions,
+        {{[] {},
+          [&]
+          {
+              plan_pristine = PlanCampbellCrush(collision, ECollisionSide::B, collision.mCrushEnergyB,
+                                                pristine.GetMaterial(), pristine.GetUpAxis(),
+                                                pristine.GetDeformer(), &pristine.GetCrushBody());
+          }},
+         {[] {},
+          [&]
+          {
+              plan_dented = PlanCampbellCrush(collision, ECollisionSide::B, collision.mCrushEnergyB,
+                                              dented.GetMaterial(), dented.GetUpAxis(), dented.GetDeformer(),
+                                              &dented.GetCrushBody());
+          }},
+         {[] {}, [&] { indexed = dented.GetDeformer().ProbeSurface(face); }},
+         {[] {}, [&] { scanned = common::BruteForceProbe(dented.GetDeformer(), face); }}});
+    if (!plan_pristine || !plan_dented)
+        throw std::runtime_error("crush_plan: the collision planned no crush");
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> y(-1.0, 1.0), z(-0.8, 0.8), width(0.02, 1.5);
+    int differing = 0, probes = 0;
+    for (; probes < 40; ++probes)
+    {
+        ffd::SurfaceProbe probe = face;
+        const double wy = width(random), wz = width(random), cy = y(random), cz = z(random);
+        probe.mSideMin = cy - 0.5 * wy;
+        probe.mSideMax = cy + 0.5 * wy;
+        probe.mThirdMin = cz - 0.5 * wz;
+        probe.mThirdMax = cz + 0.5 * wz;
+        const ffd::SurfaceProbeResult a = dented.GetDeformer().ProbeSurface(probe);
+        const ffd::SurfaceProbeResult b = common::BruteForceProbe(dented.GetDeformer(), probe);
+        differing +=
+            a.mFront == b.mFront && a.mVertexInside == b.mVertexInside && a.mMoved == b.mMoved ? 0 : 1;
+    }
+    differing += indexed.mFront == scanned.mFront && indexed.mMoved == scanned.mMoved ? 0 : 1;
+    ioTable.Add(
+        {"crush_plan",
+         std::to_string(inTriangles / 1000) + "k_tris/campbell/64_contacts/after_" + std::to_string(inDents) +
+             "_crushes",
+         timing[1].mWallMs, static_cast<double>(differing) / (probes + 1), "share_of_probes_unlike_full_scan",
+         "plan_cpu_ms=" + FormatExtra(timing[1].mCpuMs) + ";pristine_plan_ms=" +
+             FormatExtra(timing[0].mWallMs) + ";pristine_plan_cpu_ms=" + FormatExtra(timing[0].mCpuMs) +
+             ";dented_over_pristine_cpu=" + FormatExtra(timing[1].mCpuMs / timing[0].mCpuMs) +
+             ";face_probe_cpu_ms=" + FormatExtra(timing[2].mCpuMs) +
+             ";full_scan_cpu_ms=" + FormatExtra(timing[3].mCpuMs) +
+             ";full_scan_over_probe_cpu=" + FormatExtra(timing[3].mCpuMs / timing[2].mCpuMs) + ";crushed_m=" +
+             FormatExtra(indexed.mFront - face.mDirection.dot(Vec3(cHalfExtents.x(), 0.0, 0.0)))});
+}
+
 } // namespace
 
 void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
@@ -366,6 +443,8 @@ void RunDentBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
     PlanCase(ioTable, triangles, repetitions);
     PlanCase(ioTable, triangles, repetitions, true);
     PlanCase(ioTable, triangles, repetitions, true, true);
+    // On a body crushed three times before.
+    DentedPlanCase(ioTable, triangles, 3, repetitions);
 
     // The same crush on a body four times as fine: time per updated vertex (issue: linear in updated vertices).
     ScalingCase(ioTable, triangles, 4 * triangles, repetitions);

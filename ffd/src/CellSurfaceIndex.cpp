@@ -105,6 +105,8 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
     constexpr double cInf = std::numeric_limits<double>::infinity();
     index.mReachLow.assign(cells, Vec3::Constant(cInf));
     index.mReachHigh.assign(cells, Vec3::Constant(-cInf));
+    index.mLooseCornerLow.assign(cells, Vec3::Constant(cInf));
+    index.mLooseCornerHigh.assign(cells, Vec3::Constant(-cInf));
     for (std::uint32_t v = 0; v < inVertexCell.size(); ++v)
     {
         const int cell = inVertexCell[v];
@@ -126,6 +128,12 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
             const auto c = static_cast<std::size_t>(triangle_cells[t][i]);
             index.mReachLow[c] = index.mReachLow[c].cwiseMin(low);
             index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(high);
+            for (std::uint32_t v : triangle)
+                if (inVertexCell[v] < 0)
+                {
+                    index.mLooseCornerLow[c] = index.mLooseCornerLow[c].cwiseMin(inMesh.mPositions[v]);
+                    index.mLooseCornerHigh[c] = index.mLooseCornerHigh[c].cwiseMax(inMesh.mPositions[v]);
+                }
         }
     }
     return index;

@@ -255,7 +255,12 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
     deformer.mGuardControls = deformer.mScratchControls;
     deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
-    deformer.mCellBound.assign(static_cast<std::size_t>(cell_total), 0.0);
+    // intent: at rest, each cell's vertices stand at their rest positions, moved by nothing
+    deformer.mCellMotion.assign(static_cast<std::size_t>(cell_total), CellMotion{});
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        if (const int cell = deformer.mVertexCell[v]; cell >= 0)
+            deformer.mCellMotion[static_cast<std::size_t>(cell)].Include(deformer.mRestMesh.mPositions[v],
+                                                                         Vec3::Zero());
     // intent: each slice's reach: the union of its cells' reach boxes, per axis
     for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
     {
@@ -775,11 +780,12 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
         double largest = 0.0;
         for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
         {
-            // intent: the largest squared lengths, one square root per cell (sqrt is monotone and correctly
-            // rounded, so this is bitwise the largest length): of the displacement for the zone's bound, and of
-            // the stored position's offset from rest for the cell's (what a probe measures; rounding the sum
-            // can make it longer than the displacement)
-            double cell_largest = 0.0, cell_moved = 0.0;
+            // intent: the largest squared length of a displacement, one square root per cell (sqrt is
+            // monotone and correctly rounded, so this is bitwise the largest length), for the zone's bound;
+            // and the cell's motion from the stored positions and their offsets from rest (what a probe
+            // measures; rounding the sum can make the offset differ from the displacement)
+            double cell_largest = 0.0;
+            CellMotion motion;
             // intent: the cell's bucket, read in memory order; only the outputs are scattered
             const std::size_t first = start[static_cast<std::size_t>(mTouchedCells[c] - offset)];
             // intent: a cell of one vertex sums from the lattice directly (the copy would cost more than it saves)
@@ -799,10 +805,10 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
                 const Vec3 position = rest[k] + displacement;
                 mPositions[v] = position;
                 cell_largest = std::max(cell_largest, displacement.squaredNorm());
-                cell_moved = std::max(cell_moved, (position - rest[k]).squaredNorm());
+                motion.Include(position, position - rest[k]);
                 mDirty[v] = 1;
             }
-            mCellBound[static_cast<std::size_t>(mTouchedCells[c])] = std::sqrt(cell_moved);
+            mCellMotion[static_cast<std::size_t>(mTouchedCells[c])] = motion;
             largest = std::max(largest, cell_largest);
         }
         piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
@@ -899,7 +905,7 @@ void FfdDeformer::RecomputeAll()
         mGuardControls[z] = mZones[z].GetControlDisplacements();
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
-    std::fill(mCellBound.begin(), mCellBound.end(), 0.0);
+    std::fill(mCellMotion.begin(), mCellMotion.end(), CellMotion{});
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const int zone = mVertexZone[v];
@@ -912,9 +918,10 @@ void FfdDeformer::RecomputeAll()
         mPositions[v] = position;
         if (zone >= 0)
         {
-            const double moved = (position - mRestMesh.mPositions[v]).norm();
-            mZoneDisplacementBound[static_cast<std::size_t>(zone)] = std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], moved);
-            mCellBound[static_cast<std::size_t>(mVertexCell[v])] = std::max(mCellBound[static_cast<std::size_t>(mVertexCell[v])], moved);
+            const Vec3 offset = position - mRestMesh.mPositions[v];
+            mZoneDisplacementBound[static_cast<std::size_t>(zone)] =
+                std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], offset.norm());
+            mCellMotion[static_cast<std::size_t>(mVertexCell[v])].Include(position, offset);
         }
     }
     mVertexEvaluations += vertex_count;

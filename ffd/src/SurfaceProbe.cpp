@@ -158,40 +158,62 @@ private:
     double mMoveAcross = 0.0;
 };
 
-// Range of inAxis.p over the box [inLow, inHigh] with every point moved by up to inMoved, widened by a hair
-// for the round-off of the projections.
-std::array<double, 2> BoxRange(const Vec3& inAxis, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+// Where a region's surface may be now: the points q + m, q in its rest box [mLow, mHigh] and m in the box
+// [mMoveLow, mMoveHigh] of how far its points moved.
+struct MovedBox
 {
-    const Vec3 centre = 0.5 * (inLow + inHigh), half = 0.5 * (inHigh - inLow);
-    const double margin = inMoved + 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff());
+    Vec3 mLow, mHigh;
+    Vec3 mMoveLow = Vec3::Zero(), mMoveHigh = Vec3::Zero();
+};
+
+// Range of inAxis.p over the moved box, widened by a hair far over the round-off of a point's projection.
+std::array<double, 2> BoxRange(const Vec3& inAxis, const MovedBox& inBox)
+{
+    const Vec3 centre = 0.5 * (inBox.mLow + inBox.mHigh) + 0.5 * (inBox.mMoveLow + inBox.mMoveHigh);
+    const Vec3 half = 0.5 * (inBox.mHigh - inBox.mLow) + 0.5 * (inBox.mMoveHigh - inBox.mMoveLow);
+    const double margin = 1.0e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff());
     const double middle = inAxis.dot(centre);
     const double extent = inAxis.cwiseAbs().dot(half) + margin;
     return {middle - extent, middle + extent};
 }
 
-// Whether any point of the box, moved by up to inMoved, can lie in the probe's prism.
-bool MeetsPrism(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+// Whether any point of the moved box can lie in the probe's prism.
+bool MeetsPrism(const SurfaceProbe& inProbe, const MovedBox& inBox)
 {
-    const std::array<double, 2> side = BoxRange(inProbe.mSide, inLow, inHigh, inMoved);
-    const std::array<double, 2> third = BoxRange(inProbe.mThird, inLow, inHigh, inMoved);
+    const std::array<double, 2> side = BoxRange(inProbe.mSide, inBox);
+    const std::array<double, 2> third = BoxRange(inProbe.mThird, inBox);
     return !(side[1] < inProbe.mSideMin || side[0] > inProbe.mSideMax || third[1] < inProbe.mThirdMin ||
              third[0] > inProbe.mThirdMax);
 }
 
-// Whether every point of the box, moved by up to inMoved, lies in the probe's prism (so each triangle in it
-// lies wholly inside, and a scan skips it).
-bool InsidePrism(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+// Whether every point of the moved box lies in the probe's prism (so each triangle in it lies wholly inside,
+// and a scan skips it).
+bool InsidePrism(const SurfaceProbe& inProbe, const MovedBox& inBox)
 {
-    const std::array<double, 2> side = BoxRange(inProbe.mSide, inLow, inHigh, inMoved);
-    const std::array<double, 2> third = BoxRange(inProbe.mThird, inLow, inHigh, inMoved);
+    const std::array<double, 2> side = BoxRange(inProbe.mSide, inBox);
+    const std::array<double, 2> third = BoxRange(inProbe.mThird, inBox);
     return side[0] > inProbe.mSideMin && side[1] < inProbe.mSideMax && third[0] > inProbe.mThirdMin &&
            third[1] < inProbe.mThirdMax;
 }
 
-// A lower bound of d.p over the box with every point moved by up to inMoved.
-double NearestAlong(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh, double inMoved)
+// A lower bound of d.p over the moved box.
+double NearestAlong(const SurfaceProbe& inProbe, const MovedBox& inBox)
 {
-    return BoxRange(inProbe.mDirection, inLow, inHigh, inMoved)[0];
+    return BoxRange(inProbe.mDirection, inBox)[0];
+}
+
+// An upper bound of d.m over the displacements m in [inLow, inHigh] (the most a vertex moved along the
+// probe), widened by a hair for the round-off of a vertex's own d.(p - rest).
+double MostMovedAlong(const SurfaceProbe& inProbe, const Vec3& inLow, const Vec3& inHigh)
+{
+    double most = 0.0, scale = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+        const double d = inProbe.mDirection[k];
+        most += std::max(d * inLow[k], d * inHigh[k]);
+        scale += std::abs(d) * std::max(std::abs(inLow[k]), std::abs(inHigh[k]));
+    }
+    return most + 1.0e-9 * scale;
 }
 
 } // namespace
@@ -211,22 +233,43 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
     for (std::uint32_t t : mSurfaceIndex->LooseTriangles())
         scan.Triangle(t);
 
-    // How far any vertex has moved from its rest position, which lies in its cells' reach boxes.
-    double moved = 0.0;
-    for (double bound : mCellBound)
-        moved = std::max(moved, bound);
+    // How far any vertex has moved from its rest position: the union of the cells' displacement boxes, with
+    // zero for the corners in no zone (a slice's rest reach box holds its triangles' corners from other
+    // cells and from no zone)
+    Vec3 move_low = Vec3::Zero(), move_high = Vec3::Zero();
+    for (const CellMotion& motion : mCellMotion)
+        if (motion.mMoveLow.x() <= motion.mMoveHigh.x())
+        {
+            move_low = move_low.cwiseMin(motion.mMoveLow);
+            move_high = move_high.cwiseMax(motion.mMoveHigh);
+        }
+    const double most_moved = MostMovedAlong(inProbe, move_low, move_high);
 
-    // How far a cell's surface moved: its vertices' and those of the cells its triangles reach.
-    auto reach_moved = [&](int inCell) {
-        double bound = mCellBound[static_cast<std::size_t>(inCell)];
+    // Where a cell's surface is now: its rest reach box (its vertices and its triangles' corners) moved by
+    // any displacement of the vertices of the cell and of the cells holding those corners, and by none for
+    // corners in no zone
+    auto current_reach = [&](int inCell)
+    {
+        const CellMotion& own = mCellMotion[static_cast<std::size_t>(inCell)];
+        MovedBox reach{mSurfaceIndex->ReachLow(inCell), mSurfaceIndex->ReachHigh(inCell), own.mMoveLow,
+                       own.mMoveHigh};
         for (int linked : mSurfaceIndex->LinkedCells(inCell))
-            bound = std::max(bound, mCellBound[static_cast<std::size_t>(linked)]);
-        return bound;
+        {
+            reach.mMoveLow = reach.mMoveLow.cwiseMin(mCellMotion[static_cast<std::size_t>(linked)].mMoveLow);
+            reach.mMoveHigh =
+                reach.mMoveHigh.cwiseMax(mCellMotion[static_cast<std::size_t>(linked)].mMoveHigh);
+        }
+        if (mSurfaceIndex->LooseCornerLow(inCell).x() <= mSurfaceIndex->LooseCornerHigh(inCell).x())
+        {
+            reach.mMoveLow = reach.mMoveLow.cwiseMin(Vec3::Zero());
+            reach.mMoveHigh = reach.mMoveHigh.cwiseMax(Vec3::Zero());
+        }
+        return reach;
     };
 
     // intent: zone by zone, slices across the lattice axis nearest the probe's direction, front slice first
-    // (so the front is found early); a slice whose reach misses the prism even moved by the largest move is
-    // skipped at once, and a cell whose reach box, widened by how far its surface moved, misses it too
+    // (so the front is found early); a slice whose reach misses the prism even moved as far as any vertex is
+    // skipped at once, and a cell whose surface, where it is now, misses it too
     std::size_t visited = 0;
     const std::size_t budget = (mPositions.size() + mRestMesh.mTriangles.size()) / 4;
     for (std::size_t z = 0; z < mZones.size(); ++z)
@@ -245,15 +288,18 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
         {
             const int slice = forward ? s : cells[static_cast<std::size_t>(axis)] - 1 - s;
             ijk[static_cast<std::size_t>(axis)] = slice;
-            const Vec3& slice_low = slices.mLow[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)];
-            const Vec3& slice_high = slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)];
-            if (!(slice_low.x() <= slice_high.x()) || !MeetsPrism(inProbe, slice_low, slice_high, moved))
+            const MovedBox slice_box{
+                slices.mLow[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)],
+                slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)], move_low,
+                move_high};
+            if (!(slice_box.mLow.x() <= slice_box.mHigh.x()) || !MeetsPrism(inProbe, slice_box))
                 continue;
-            // intent: a slice wholly behind the front adds nothing once a vertex is inside, unless a vertex moved
-            // further than any inside so far: the cells' test below on the slice's box and the largest move,
-            // which bound every cell's (most slices behind the struck face of a car go at once)
-            if (scan.HasVertexInside() && NearestAlong(inProbe, slice_low, slice_high, moved) > scan.GetFront() &&
-                !(moved * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+            // intent: a slice wholly behind the front adds nothing once a vertex is inside, unless a vertex
+            // moved along the probe further than any inside so far: the cells' test below on the slice's box
+            // and the largest move, which bound every cell's (most slices behind the struck face of a car go
+            // at once)
+            if (scan.HasVertexInside() && NearestAlong(inProbe, slice_box) > scan.GetFront() &&
+                !(most_moved > scan.GetMoveInside()))
                 continue;
             for (int b = 0; b < cells[static_cast<std::size_t>(others[1])]; ++b)
                 for (int a = 0; a < cells[static_cast<std::size_t>(others[0])]; ++a)
@@ -261,23 +307,24 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                     ijk[static_cast<std::size_t>(others[0])] = a;
                     ijk[static_cast<std::size_t>(others[1])] = b;
                     const int cell = offset + zone.CellIndex(ijk);
-                    const Vec3& low = mSurfaceIndex->ReachLow(cell);
-                    const Vec3& high = mSurfaceIndex->ReachHigh(cell);
-                    if (!(low.x() <= high.x()))
+                    const CellMotion& motion = mCellMotion[static_cast<std::size_t>(cell)];
+                    if (!(motion.mLow.x() <= motion.mHigh.x()))
                         continue; // no vertex in the cell
-                    const double cell_moved = reach_moved(cell);
-                    if (!MeetsPrism(inProbe, low, high, cell_moved))
+                    const MovedBox reach = current_reach(cell);
+                    if (!MeetsPrism(inProbe, reach))
                         continue;
                     // intent: a cell wholly behind the front adds nothing once a vertex is inside, except a
-                    // vertex that moved further than any inside so far (its bound, with a hair for round-off)
-                    const bool behind = NearestAlong(inProbe, low, high, cell_moved) > scan.GetFront() && scan.HasVertexInside();
-                    if (behind && !(mCellBound[static_cast<std::size_t>(cell)] * (1.0 + 1.0e-9) > scan.GetMoveInside()))
+                    // vertex that moved along the probe further than any inside so far
+                    const bool behind =
+                        NearestAlong(inProbe, reach) > scan.GetFront() && scan.HasVertexInside();
+                    if (behind &&
+                        !(MostMovedAlong(inProbe, motion.mMoveLow, motion.mMoveHigh) > scan.GetMoveInside()))
                         continue;
                     const auto local = static_cast<std::size_t>(cell - offset);
                     for (std::uint32_t i = mCellStart[z][local]; i < mCellStart[z][local + 1]; ++i)
                         scan.Vertex(mCellVertices[z][i]);
                     visited += mCellStart[z][local + 1] - mCellStart[z][local];
-                    if (!behind && !InsidePrism(inProbe, low, high, cell_moved))
+                    if (!behind && !InsidePrism(inProbe, reach))
                     {
                         for (std::uint32_t triangle : mSurfaceIndex->TrianglesOf(cell))
                             scan.Triangle(triangle);

@@ -34,11 +34,11 @@ void FfdDeformer::ForEachVertexGroup(const Vec3& inFirstAlong, const std::functi
                     if (start[local + 1] == start[local])
                         continue;
                     const int cell = mCellOffset[z] + static_cast<int>(local);
-                    // intent: the reach box holds the cell's vertices at rest (and its triangles' other corners),
-                    // and mCellBound is the largest |position - rest| of the cell's vertices as stored
-                    group.mLow = mSurfaceIndex->ReachLow(cell);
-                    group.mHigh = mSurfaceIndex->ReachHigh(cell);
-                    group.mMoved = mCellBound[static_cast<std::size_t>(cell)];
+                    // intent: the box of the cell's vertices as stored (their own extremes): nothing to widen
+                    const CellMotion& motion = mCellMotion[static_cast<std::size_t>(cell)];
+                    group.mLow = motion.mLow;
+                    group.mHigh = motion.mHigh;
+                    group.mMoved = 0.0;
                     group.mVertices = bucket.subspan(start[local], start[local + 1] - start[local]);
                     inVisit(group);
                 }

@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
 #include "BoxMesh.h"
+#include "BruteForceProbe.h"
 #include "DrawVec3.h"
 #include "TwoZoneBox.h"
 
@@ -22,78 +23,6 @@ namespace
 {
 
 const Vec3 cHalf(2.0, 0.9, 0.7);
-
-// The reference: every vertex and every triangle of the mesh tested against the prism, as a crush planner
-// would scan it without an index.
-struct Corner
-{
-    double mSide, mThird, mDepth;
-};
-
-std::vector<Corner> Clip(const std::vector<Corner>& inPolygon, double Corner::*inCoordinate, double inLimit, double inSign)
-{
-    std::vector<Corner> out;
-    for (std::size_t i = 0; i < inPolygon.size(); ++i)
-    {
-        const Corner& a = inPolygon[i];
-        const Corner& b = inPolygon[(i + 1) % inPolygon.size()];
-        const double da = inSign * (a.*inCoordinate - inLimit), db = inSign * (b.*inCoordinate - inLimit);
-        if (da <= 0.0)
-            out.push_back(a);
-        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
-        {
-            const double t = da / (da - db);
-            out.push_back({a.mSide + t * (b.mSide - a.mSide), a.mThird + t * (b.mThird - a.mThird), a.mDepth + t * (b.mDepth - a.mDepth)});
-        }
-    }
-    return out;
-}
-
-SurfaceProbeResult BruteForceProbe(const FfdDeformer& inDeformer, const SurfaceProbe& inProbe)
-{
-    const std::vector<Vec3>& positions = inDeformer.GetCurrentPositions();
-    const std::vector<Vec3>& rest = inDeformer.GetRestMesh().mPositions;
-    auto project = [&](const Vec3& inPoint) {
-        return Corner{inProbe.mSide.dot(inPoint), inProbe.mThird.dot(inPoint), inProbe.mDirection.dot(inPoint)};
-    };
-    auto outside = [&](const Corner& inCorner) {
-        return (inCorner.mSide < inProbe.mSideMin ? 1 : 0) | (inCorner.mSide > inProbe.mSideMax ? 2 : 0) |
-               (inCorner.mThird < inProbe.mThirdMin ? 4 : 0) | (inCorner.mThird > inProbe.mThirdMax ? 8 : 0);
-    };
-    double front = std::numeric_limits<double>::infinity(), inside_move = 0.0, across_move = 0.0;
-    bool inside = false;
-    for (std::size_t v = 0; v < positions.size(); ++v)
-        if (const Corner c = project(positions[v]); outside(c) == 0)
-        {
-            front = std::min(front, c.mDepth);
-            inside_move = std::max(inside_move, inProbe.mDirection.dot(positions[v] - rest[v]));
-            inside = true;
-        }
-    for (const auto& triangle : inDeformer.GetRestMesh().mTriangles)
-    {
-        std::vector<Corner> polygon;
-        int all = 15, any = 0;
-        for (std::uint32_t v : triangle)
-        {
-            polygon.push_back(project(positions[v]));
-            all &= outside(polygon.back());
-            any |= outside(polygon.back());
-        }
-        if (all != 0 || any == 0)
-            continue;
-        polygon = Clip(polygon, &Corner::mSide, inProbe.mSideMin, -1.0);
-        polygon = Clip(polygon, &Corner::mSide, inProbe.mSideMax, 1.0);
-        polygon = Clip(polygon, &Corner::mThird, inProbe.mThirdMin, -1.0);
-        polygon = Clip(polygon, &Corner::mThird, inProbe.mThirdMax, 1.0);
-        if (polygon.empty())
-            continue;
-        for (const Corner& c : polygon)
-            front = std::min(front, c.mDepth);
-        for (std::uint32_t v : triangle)
-            across_move = std::max(across_move, inProbe.mDirection.dot(positions[v] - rest[v]));
-    }
-    return {front, inside, inside ? inside_move : across_move};
-}
 
 // A random probe: a unit direction, axes across it, and a rectangle somewhere over the body (from a sliver
 // to wider than the body).
@@ -124,7 +53,7 @@ void CheckSameAsBruteForce(const FfdDeformer& inDeformer, std::mt19937_64& ioRan
     {
         const SurfaceProbe probe = RandomProbe(ioRandom);
         const SurfaceProbeResult indexed = inDeformer.ProbeSurface(probe);
-        const SurfaceProbeResult reference = BruteForceProbe(inDeformer, probe);
+        const SurfaceProbeResult reference = common::BruteForceProbe(inDeformer, probe);
         INFO("probe " << i << ": front " << indexed.mFront << " vs " << reference.mFront << ", moved " << indexed.mMoved
                       << " vs " << reference.mMoved);
         // Bit for bit: the same tests on the same values, only fewer of them.
@@ -175,6 +104,15 @@ TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and 
             REQUIRE(deformer.ApplyDent(points));
             CheckSameAsBruteForce(deformer, random, 100, hits);
         }
+        // The state set whole (a loaded damage state) and taken back (a repaired car): the cells' boxes
+        // follow a full recompute as they follow a dent.
+        std::vector<std::vector<Vec3>> controls;
+        for (const FfdLattice& zone : deformer.GetZones())
+            controls.push_back(zone.GetControlDisplacements());
+        deformer.Reset();
+        CheckSameAsBruteForce(deformer, random, 50, hits);
+        REQUIRE(deformer.SetControlDisplacements(controls));
+        CheckSameAsBruteForce(deformer, random, 50, hits);
         CHECK(hits > 300); // most probes meet the body: the comparison is not over empty answers
     }
 }
@@ -236,9 +174,64 @@ TEST_CASE("ProbeSurface bounds a cell by how far its stored positions moved, not
     probe.mSideMin = probe.mThirdMin = -0.1;
     probe.mSideMax = probe.mThirdMax = 0.1;
     const SurfaceProbeResult indexed = deformer.ProbeSurface(probe);
-    const SurfaceProbeResult reference = BruteForceProbe(deformer, probe);
+    const SurfaceProbeResult reference = common::BruteForceProbe(deformer, probe);
     CHECK(indexed.mFront == reference.mFront);
     CHECK(indexed.mVertexInside == reference.mVertexInside);
     CHECK(indexed.mMoved == reference.mMoved);
     CHECK(reference.mMoved > 0.0);
+}
+
+TEST_CASE("ProbeSurface finds a triangle whose corner in no zone stayed while the cell's vertices moved away",
+          "[ffd]")
+{
+    // A triangle with two corners in a zone (x = 0.5) and one outside every zone (x = 0, which never moves).
+    // The zone's vertices all move +0.3 m along x, so the triangle now spans x from 0 to 0.8: a probe at x in
+    // [0.1, 0.2] meets it near its loose corner, which the cell's rest box moved by its vertices' move alone
+    // (x from 0.3) would rule out. 200 slivers elsewhere in the zone keep the probe on its cell-by-cell path.
+    TriangleMesh mesh;
+    auto add = [&](const Vec3& inPoint)
+    {
+        mesh.mPositions.push_back(inPoint);
+        return static_cast<std::uint32_t>(mesh.mPositions.size() - 1);
+    };
+    const std::uint32_t a = add({0.5, 0.0, 0.0}), b = add({0.5, 1.0, 0.0}), c = add({0.0, 0.5, 0.0});
+    mesh.mTriangles = {{a, b, c}};
+    for (int i = 0; i < 200; ++i)
+    {
+        const double x = 0.45 + 0.5 * i / 200.0;
+        const std::uint32_t p = add({x, 1.4, 0.4}), q = add({x + 0.001, 1.41, 0.4}), r = add({x, 1.4, 0.41});
+        mesh.mTriangles.push_back({p, q, r});
+    }
+    FfdDeformerSettings settings;
+    FfdZoneSettings zone;
+    zone.mLattice.mOrigin = Vec3(0.4, -0.5, -0.5);
+    zone.mLattice.mSize = Vec3(0.6, 2.0, 1.0);
+    zone.mLattice.mControlCount = {4, 4, 4};
+    zone.mMaxTotalDeformation = 1.0;
+    settings.mZones = {zone};
+    FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    REQUIRE(deformer.GetVertexZone(c) == -1);
+    REQUIRE(deformer.GetVertexZone(a) == 0);
+    std::vector<int> controls(static_cast<std::size_t>(deformer.GetZones()[0].GetControlCount()));
+    for (std::size_t n = 0; n < controls.size(); ++n)
+        controls[n] = static_cast<int>(n);
+    Eigen::MatrixX3d delta = Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(controls.size()), 3);
+    delta.col(0).setConstant(0.3);
+    REQUIRE(deformer.ApplyControlDelta(0, controls, delta));
+    REQUIRE(deformer.GetCurrentPositions()[a].x() > 0.79);
+
+    SurfaceProbe probe;
+    probe.mDirection = Vec3::UnitZ();
+    probe.mSide = Vec3::UnitX();
+    probe.mThird = Vec3::UnitY();
+    probe.mSideMin = 0.1;
+    probe.mSideMax = 0.2;
+    probe.mThirdMin = 0.4;
+    probe.mThirdMax = 0.6;
+    const SurfaceProbeResult indexed = deformer.ProbeSurface(probe);
+    const SurfaceProbeResult reference = common::BruteForceProbe(deformer, probe);
+    CHECK(reference.mFront == 0.0); // the triangle is met
+    CHECK(indexed.mFront == reference.mFront);
+    CHECK(indexed.mVertexInside == reference.mVertexInside);
+    CHECK(indexed.mMoved == reference.mMoved);
 }

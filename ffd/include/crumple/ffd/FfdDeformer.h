@@ -129,17 +129,18 @@ public:
 
     /// Probes the current (deformed) surface: the foremost point inside a prism along a direction, and how
     /// far the surface there has moved (SurfaceProbe.h). Exactly the answer of a scan over every vertex and
-    /// triangle, found from the cells whose reach box (CellSurfaceIndex), widened by how far any vertex has
-    /// moved, meets the prism, nearest first: cells behind the front found so far are skipped, and so are
-    /// their vertices once no vertex there can have moved further. A probe that is not finite finds nothing.
+    /// triangle, found from the cells whose surface, where it is now (the box of their vertices' current
+    /// positions and of their triangles' other corners), meets the prism, nearest first: cells behind the
+    /// front found so far are skipped, and so are their vertices once none of them can have moved further
+    /// along the probe (by the box of their displacements). A probe that is not finite finds nothing.
     SurfaceProbeResult ProbeSurface(const SurfaceProbe& inProbe) const;
 
     /// Hands inVisit the vertices in groups, each with a box that holds their current positions
-    /// (GetCurrentPositions; VertexGroup): the vertices of each lattice cell that holds any, with the cell's
-    /// reach box (CellSurfaceIndex) and the farthest any of them moved from rest, zone by zone, in slices
-    /// across the lattice axis nearest inFirstAlong, the slice foremost along it first (so a scan that keeps a
-    /// front meets it early); then the vertices in no zone (unbounded: they never moved). Every vertex comes
-    /// once. For a scan over the surface that skips what a box rules out (plugin's struck front), as
+    /// (GetCurrentPositions; VertexGroup): the vertices of each lattice cell that holds any, with the box of
+    /// their current positions (their own extremes, mMoved 0), zone by zone, in slices
+    /// across the lattice axis nearest inFirstAlong, the slice foremost along it first (so a scan that keeps
+    /// a front meets it early); then the vertices in no zone (unbounded: they never moved). Every vertex
+    /// comes once. For a scan over the surface that skips what a box rules out (plugin's struck front), as
     /// ProbeSurface does.
     void ForEachVertexGroup(const Vec3& inFirstAlong, const std::function<void(const VertexGroup&)>& inVisit) const;
 
@@ -230,7 +231,26 @@ private:
     std::vector<std::vector<Vec3>> mScratchControls; ///< Per zone, all zero between calls
     std::vector<std::vector<Vec3>> mGuardControls;   ///< Per zone, equal to its controls between calls (fold guard's trial)
     std::vector<double> mZoneDisplacementBound; ///< Per zone: an upper bound of any vertex's displacement (m)
-    std::vector<double> mCellBound;             ///< Per cell across zones: the largest |position - rest| of its vertices (m)
+    /// Where a cell's vertices are now and how far they moved: the boxes of their current positions and of
+    /// their displacements from rest (body frame, m), each the stored values' own extremes (exact, so a
+    /// region query that skips a cell by them skips nothing it would have found); empty (low > high) for a
+    /// cell without vertices. Kept where positions are written (a dent's cells, a full recompute).
+    struct CellMotion
+    {
+        Vec3 mLow = Vec3::Constant(std::numeric_limits<double>::infinity());
+        Vec3 mHigh = Vec3::Constant(-std::numeric_limits<double>::infinity());
+        Vec3 mMoveLow = Vec3::Constant(std::numeric_limits<double>::infinity());
+        Vec3 mMoveHigh = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+        void Include(const Vec3& inPosition, const Vec3& inDisplacement)
+        {
+            mLow = mLow.cwiseMin(inPosition);
+            mHigh = mHigh.cwiseMax(inPosition);
+            mMoveLow = mMoveLow.cwiseMin(inDisplacement);
+            mMoveHigh = mMoveHigh.cwiseMax(inDisplacement);
+        }
+    };
+    std::vector<CellMotion> mCellMotion; ///< Per cell across zones
     /// Per zone, per lattice axis, per slice of cells across that axis: the union of the slice's reach boxes
     /// (rest, body frame, m), so probes skip whole slices.
     struct SliceReach
