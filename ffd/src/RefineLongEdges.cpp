@@ -45,50 +45,102 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
     };
     const bool any_bend = inMaxBend >= std::numbers::pi;
     const double min_cosine = std::cos(inMaxBend);
-    std::unordered_map<std::uint64_t, EdgeBend> bends;
+    std::unordered_map<std::uint64_t, std::uint32_t> edge_ids; // undirected edge -> index into bends
+    std::vector<EdgeBend> bends;
+    std::vector<std::array<std::uint32_t, 3>> triangle_edges; // per triangle: its edges k = (v[k], v[k+1])
+    std::vector<std::uint8_t> long_edges;                     // per triangle: bit k set when edge k is long
+    std::vector<std::uint32_t> edge_start, edge_triangles;    // per edge: the triangles using it (CSR)
+    std::vector<std::uint8_t> kept_whole;                     // per triangle: found not cuttable
+    std::vector<std::uint32_t> pending;                       // triangles to look at again
     // intent: each pass at least halves every edge longer than inMaxEdge; the new edges inside a triangle are
     // no longer than its longest, so a mesh of edges up to L needs about log2(L / inMaxEdge) passes
     for (;;)
     {
         midpoints.clear();
         cuts.assign(triangles.size(), {cNoSplit, cNoSplit, cNoSplit});
-        bends.clear();
-        for (std::size_t t = 0; !any_bend && t < triangles.size(); ++t)
-        {
-            const std::array<std::uint32_t, 3>& tri = triangles[t];
-            const Vec3 area =
-                (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
-            const bool has_normal = area.squaredNorm() > 0.0;
-            const Vec3 normal = has_normal ? Vec3(area.normalized()) : Vec3::Zero();
+        long_edges.assign(triangles.size(), 0);
+        for (std::size_t t = 0; t < triangles.size(); ++t)
             for (int k = 0; k < 3; ++k)
-            {
-                const auto [it, first] = bends.try_emplace(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]),
-                                                           EdgeBend{normal, has_normal, true});
-                if (!first)
-                    it->second.mFlat =
-                        it->second.mFlat && has_normal && it->second.mNormal.dot(normal) >= min_cosine;
-            }
-        }
-        // intent: a triangle is cut only if every long edge of it is: to a fixed point, as one left whole
-        // keeps its edges whole for its neighbours too
-        for (bool changed = !any_bend; changed;)
+                if ((positions[triangles[t][k]] - positions[triangles[t][(k + 1) % 3]]).squaredNorm() >
+                    max_edge2)
+                    long_edges[t] = static_cast<std::uint8_t>(long_edges[t] | (1u << k));
+        if (!any_bend)
         {
-            changed = false;
-            for (const std::array<std::uint32_t, 3>& tri : triangles)
+            edge_ids.clear();
+            bends.clear();
+            triangle_edges.resize(triangles.size());
+            for (std::size_t t = 0; t < triangles.size(); ++t)
             {
+                const std::array<std::uint32_t, 3>& tri = triangles[t];
+                const Vec3 area =
+                    (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+                const bool has_normal = area.squaredNorm() > 0.0;
+                const Vec3 normal = has_normal ? Vec3(area.normalized()) : Vec3::Zero();
+                for (int k = 0; k < 3; ++k)
+                {
+                    const auto [it, first] = edge_ids.try_emplace(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]),
+                                                                  static_cast<std::uint32_t>(bends.size()));
+                    if (first)
+                        bends.push_back(EdgeBend{normal, has_normal, true});
+                    else
+                    {
+                        EdgeBend& bend = bends[it->second];
+                        bend.mFlat = bend.mFlat && has_normal && bend.mNormal.dot(normal) >= min_cosine;
+                    }
+                    triangle_edges[t][static_cast<std::size_t>(k)] = it->second;
+                }
+            }
+            // intent: the triangles of each edge, for the fixed point below
+            edge_start.assign(bends.size() + 1, 0);
+            for (const std::array<std::uint32_t, 3>& edges : triangle_edges)
+                for (std::uint32_t e : edges)
+                    ++edge_start[e + 1];
+            for (std::size_t e = 0; e < bends.size(); ++e)
+                edge_start[e + 1] += edge_start[e];
+            edge_triangles.resize(edge_start.back());
+            pending.assign(edge_start.begin(), edge_start.end() - 1); // fill positions
+            for (std::size_t t = 0; t < triangles.size(); ++t)
+                for (std::uint32_t e : triangle_edges[t])
+                    edge_triangles[pending[e]++] = static_cast<std::uint32_t>(t);
+
+            // intent: a triangle is cut only if every long edge of it is, to the fixed point: one left whole
+            // keeps its edges whole for its neighbours too. The kept-whole set is the least one closed under
+            // that rule, whatever the order it is found in: each triangle is looked at once, and again only
+            // when one of its edges is newly kept whole (instead of passes over every triangle until none
+            // changes, which the Toy Car's 89k triangles needed a second for).
+            kept_whole.assign(triangles.size(), 0);
+            pending.clear();
+            const auto look_at = [&](std::uint32_t inTriangle)
+            {
+                if (kept_whole[inTriangle] != 0)
+                    return;
                 bool cuttable = true;
                 for (int k = 0; k < 3; ++k)
                 {
-                    const EdgeBend& bend = bends.at(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]));
-                    const bool long_edge =
-                        (positions[tri[k]] - positions[tri[(k + 1) % 3]]).squaredNorm() > max_edge2;
+                    const EdgeBend& bend = bends[triangle_edges[inTriangle][static_cast<std::size_t>(k)]];
+                    const bool long_edge = (long_edges[inTriangle] >> k & 1u) != 0;
                     cuttable = cuttable && (!long_edge || (bend.mFlat && bend.mCuttable));
                 }
-                for (int k = 0; !cuttable && k < 3; ++k)
+                if (cuttable)
+                    return;
+                kept_whole[inTriangle] = 1;
+                for (std::uint32_t e : triangle_edges[inTriangle])
                 {
-                    EdgeBend& bend = bends.at(UndirectedEdgeKey(tri[k], tri[(k + 1) % 3]));
-                    changed = changed || bend.mCuttable;
-                    bend.mCuttable = false;
+                    if (!bends[e].mCuttable)
+                        continue;
+                    bends[e].mCuttable = false;
+                    for (std::uint32_t i = edge_start[e]; i < edge_start[e + 1]; ++i)
+                        pending.push_back(edge_triangles[i]);
+                }
+            };
+            for (std::size_t t = 0; t < triangles.size(); ++t)
+            {
+                look_at(static_cast<std::uint32_t>(t));
+                while (!pending.empty())
+                {
+                    const std::uint32_t next_look = pending.back();
+                    pending.pop_back();
+                    look_at(next_look);
                 }
             }
         }
@@ -96,10 +148,10 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
             for (int k = 0; k < 3; ++k)
             {
                 const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-                if (!((positions[a] - positions[b]).squaredNorm() > max_edge2))
+                if ((long_edges[t] >> k & 1u) == 0)
                     continue;
                 if (!any_bend)
-                    if (const EdgeBend& bend = bends.at(UndirectedEdgeKey(a, b));
+                    if (const EdgeBend& bend = bends[triangle_edges[t][static_cast<std::size_t>(k)]];
                         !bend.mFlat || !bend.mCuttable)
                         continue;
                 const auto [it, added] = midpoints.try_emplace(UndirectedEdgeKey(a, b), static_cast<std::uint32_t>(positions.size()));

@@ -555,6 +555,33 @@ TEST_CASE(
     CHECK(tube_kept.Get().mSplitParents.empty());
     CHECK(LongestEdge(tube_cut.Get().mMesh) <= 0.3);
 
+    // A flat strip of 60 triangles, every edge long, ends at a fold bent 90 degrees: the fold's long edge is
+    // kept whole, so the strip's last triangle is, and through their shared long edges every triangle before
+    // it, back to the first in the mesh's order (a keep found late travels against the order). Unfolded, the
+    // same strip is cut down to the limit.
+    TriangleMesh strip;
+    constexpr std::uint32_t cColumns = 30;
+    for (std::uint32_t i = 0; i <= cColumns; ++i)
+    {
+        strip.mPositions.emplace_back(double(i), 0.0, 0.0); // 2 i: bottom
+        strip.mPositions.emplace_back(double(i), 1.0, 0.0); // 2 i + 1: top
+    }
+    for (std::uint32_t i = 0; i < cColumns; ++i)
+    {
+        strip.mTriangles.push_back({2 * i, 2 * i + 2, 2 * i + 1});
+        strip.mTriangles.push_back({2 * i + 1, 2 * i + 2, 2 * i + 3});
+    }
+    Result<RefinedMesh> unfolded = RefineLongEdges(strip, 0.6, 4'000'000, two_degrees);
+    REQUIRE(unfolded);
+    CHECK(LongestEdge(unfolded.Get().mMesh) <= 0.6);
+    strip.mPositions.emplace_back(double(cColumns) + 0.5, 0.5, 1.0); // the fold's apex, above the last column
+    const auto apex = static_cast<std::uint32_t>(strip.mPositions.size() - 1);
+    strip.mTriangles.push_back({2 * cColumns + 1, 2 * cColumns, apex});
+    Result<RefinedMesh> folded = RefineLongEdges(strip, 0.6, 4'000'000, two_degrees);
+    REQUIRE(folded);
+    CHECK(folded.Get().mSplitParents.empty());
+    CHECK(folded.Get().mMesh.mTriangles == strip.mTriangles);
+
     // Refused: a bend outside [0, pi].
     CHECK_FALSE(RefineLongEdges(square, 0.3, 4'000'000, -0.1));
     CHECK_FALSE(RefineLongEdges(square, 0.3, 4'000'000, 4.0));
