@@ -105,8 +105,7 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
     constexpr double cInf = std::numeric_limits<double>::infinity();
     index.mReachLow.assign(cells, Vec3::Constant(cInf));
     index.mReachHigh.assign(cells, Vec3::Constant(-cInf));
-    index.mLooseCornerLow.assign(cells, Vec3::Constant(cInf));
-    index.mLooseCornerHigh.assign(cells, Vec3::Constant(-cInf));
+    index.mLooseCorner.assign(cells, 0);
     for (std::uint32_t v = 0; v < inVertexCell.size(); ++v)
     {
         const int cell = inVertexCell[v];
@@ -130,10 +129,7 @@ CellSurfaceIndex CellSurfaceIndex::Build(const TriangleMesh& inMesh, std::span<c
             index.mReachHigh[c] = index.mReachHigh[c].cwiseMax(high);
             for (std::uint32_t v : triangle)
                 if (inVertexCell[v] < 0)
-                {
-                    index.mLooseCornerLow[c] = index.mLooseCornerLow[c].cwiseMin(inMesh.mPositions[v]);
-                    index.mLooseCornerHigh[c] = index.mLooseCornerHigh[c].cwiseMax(inMesh.mPositions[v]);
-                }
+                    index.mLooseCorner[c] = 1;
         }
     }
     return index;

@@ -50,15 +50,12 @@ public:
     /// for a cell without vertices
     const Vec3& ReachLow(int inCell) const { return mReachLow[static_cast<std::size_t>(inCell)]; }
     const Vec3& ReachHigh(int inCell) const { return mReachHigh[static_cast<std::size_t>(inCell)]; }
-    /// Rest-frame box of the corners of the cell's triangles that lie in no zone (they never move); empty
-    /// (low > high) when none does
-    const Vec3& LooseCornerLow(int inCell) const { return mLooseCornerLow[static_cast<std::size_t>(inCell)]; }
-    const Vec3& LooseCornerHigh(int inCell) const
-    {
-        return mLooseCornerHigh[static_cast<std::size_t>(inCell)];
-    }
+    /// True when one of the cell's triangles has a corner in no zone (which never moves: a query bounding the
+    /// cell's surface by how far the vertices of its cells moved must also allow no move)
+    bool HasLooseCorner(int inCell) const { return mLooseCorner[static_cast<std::size_t>(inCell)] != 0; }
     /// The other cells that hold a vertex of one of inCell's triangles, ascending: how far inCell's surface
-    /// moved is bounded by how far the vertices of these cells and of inCell moved
+    /// moved is bounded by how far the vertices of these cells and of inCell moved (and, HasLooseCorner, by
+    /// no move)
     std::span<const int> LinkedCells(int inCell) const
     {
         return std::span<const int>(mLinked).subspan(mLinkStart[static_cast<std::size_t>(inCell)],
@@ -75,7 +72,7 @@ private:
     std::vector<std::uint32_t> mRingStart;  ///< #cells + 1: CSR offsets into mRing
     std::vector<std::uint32_t> mRing;       ///< Per cell: vertices outside it sharing a triangle with one inside, ascending
     std::vector<Vec3> mReachLow, mReachHigh; ///< Per cell: reach box (body frame, m)
-    std::vector<Vec3> mLooseCornerLow, mLooseCornerHigh; ///< Per cell: box of its triangles' loose corners
+    std::vector<std::uint8_t> mLooseCorner;  ///< Per cell: HasLooseCorner
     std::vector<std::uint32_t> mLinkStart;  ///< #cells + 1: CSR offsets into mLinked
     std::vector<int> mLinked;               ///< Per cell: LinkedCells
     std::vector<std::uint32_t> mLooseVertices;

@@ -198,7 +198,8 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         for (std::size_t k = 0; k < deformer.mCellVertices[z].size(); ++k)
             deformer.mVertexBucket[deformer.mCellVertices[z][k]] = static_cast<std::uint32_t>(k);
 
-    // Cells numbered across zones, and each vertex's, for the surface index (about 70 bytes per cell).
+    // Cells numbered across zones, and each vertex's, for the surface index (about 70 bytes per cell, and 96
+    // more for a cell that holds vertices: CellMotion).
     int cell_total = 0;
     for (const FfdLattice& zone : deformer.mZones)
     {
@@ -255,12 +256,20 @@ Result<FfdDeformer> FfdDeformer::Create(TriangleMesh inRestMesh, const FfdDeform
         deformer.mScratchControls.emplace_back(static_cast<std::size_t>(zone.GetControlCount()), Vec3::Zero());
     deformer.mGuardControls = deformer.mScratchControls;
     deformer.mZoneDisplacementBound.assign(deformer.mZones.size(), 0.0);
-    // intent: at rest, each cell's vertices stand at their rest positions, moved by nothing
-    deformer.mCellMotion.assign(static_cast<std::size_t>(cell_total), CellMotion{});
+    // intent: a slot for each cell that holds vertices, in cell order; at rest its vertices stand at their
+    // rest positions, moved by nothing
+    deformer.mCellMotionSlot.assign(static_cast<std::size_t>(cell_total), -1);
     for (std::uint32_t v = 0; v < vertex_count; ++v)
         if (const int cell = deformer.mVertexCell[v]; cell >= 0)
-            deformer.mCellMotion[static_cast<std::size_t>(cell)].Include(deformer.mRestMesh.mPositions[v],
-                                                                         Vec3::Zero());
+            deformer.mCellMotionSlot[static_cast<std::size_t>(cell)] = 0;
+    std::int32_t occupied = 0;
+    for (std::int32_t& slot : deformer.mCellMotionSlot)
+        if (slot == 0)
+            slot = occupied++;
+    deformer.mCellMotion.assign(static_cast<std::size_t>(occupied), CellMotion{});
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        if (const int cell = deformer.mVertexCell[v]; cell >= 0)
+            deformer.MotionOf(cell).Include(deformer.mRestMesh.mPositions[v], Vec3::Zero());
     // intent: each slice's reach: the union of its cells' reach boxes, per axis
     for (std::size_t z = 0; z < deformer.mZones.size(); ++z)
     {
@@ -768,6 +777,7 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             static_cast<std::size_t>(std::lower_bound(run.begin(), run.end() - 1, begin) - run.begin());
     }
     std::vector<double> piece_bound(static_cast<std::size_t>(pieces), 0.0);
+    std::vector<CellMotion> piece_moves(static_cast<std::size_t>(pieces)); // each piece's union of moves
     const std::vector<LatticeLocation>& locations = mBucketLocations[static_cast<std::size_t>(inZone)];
     const std::vector<Vec3>& rest = mBucketRest[static_cast<std::size_t>(inZone)];
     // intent: a cell's vertices share its 64 controls: with AVX they are copied once per cell, aligned, and each
@@ -808,13 +818,22 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
                 motion.Include(position, position - rest[k]);
                 mDirty[v] = 1;
             }
-            mCellMotion[static_cast<std::size_t>(mTouchedCells[c])] = motion;
+            MotionOf(mTouchedCells[c]) = motion;
+            CellMotion& moves = piece_moves[static_cast<std::size_t>(inPiece)];
+            moves.mMoveLow = moves.mMoveLow.cwiseMin(motion.mMoveLow);
+            moves.mMoveHigh = moves.mMoveHigh.cwiseMax(motion.mMoveHigh);
             largest = std::max(largest, cell_largest);
         }
         piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
     });
     for (double largest : piece_bound)
         bound = std::max(bound, largest);
+    // intent: the union only grows here (a cell's moves may shrink): still a bound for every probe
+    for (const CellMotion& moves : piece_moves)
+    {
+        mMoveUnionLow = mMoveUnionLow.cwiseMin(moves.mMoveLow);
+        mMoveUnionHigh = mMoveUnionHigh.cwiseMax(moves.mMoveHigh);
+    }
     mVertexEvaluations += inVertices.size();
     ioReport.mVerticesMoved += static_cast<std::uint32_t>(inVertices.size());
     UpdateNormalsAround(inVertices, ioReport);
@@ -906,6 +925,7 @@ void FfdDeformer::RecomputeAll()
     const auto vertex_count = static_cast<std::uint32_t>(mPositions.size());
     std::fill(mZoneDisplacementBound.begin(), mZoneDisplacementBound.end(), 0.0);
     std::fill(mCellMotion.begin(), mCellMotion.end(), CellMotion{});
+    mMoveUnionLow = mMoveUnionHigh = Vec3::Zero();
     for (std::uint32_t v = 0; v < vertex_count; ++v)
     {
         const int zone = mVertexZone[v];
@@ -921,7 +941,9 @@ void FfdDeformer::RecomputeAll()
             const Vec3 offset = position - mRestMesh.mPositions[v];
             mZoneDisplacementBound[static_cast<std::size_t>(zone)] =
                 std::max(mZoneDisplacementBound[static_cast<std::size_t>(zone)], offset.norm());
-            mCellMotion[static_cast<std::size_t>(mVertexCell[v])].Include(position, offset);
+            MotionOf(mVertexCell[v]).Include(position, offset);
+            mMoveUnionLow = mMoveUnionLow.cwiseMin(offset);
+            mMoveUnionHigh = mMoveUnionHigh.cwiseMax(offset);
         }
     }
     mVertexEvaluations += vertex_count;

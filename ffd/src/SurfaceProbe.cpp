@@ -233,33 +233,25 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
     for (std::uint32_t t : mSurfaceIndex->LooseTriangles())
         scan.Triangle(t);
 
-    // How far any vertex has moved from its rest position: the union of the cells' displacement boxes, with
-    // zero for the corners in no zone (a slice's rest reach box holds its triangles' corners from other
-    // cells and from no zone)
-    Vec3 move_low = Vec3::Zero(), move_high = Vec3::Zero();
-    for (const CellMotion& motion : mCellMotion)
-        if (motion.mMoveLow.x() <= motion.mMoveHigh.x())
-        {
-            move_low = move_low.cwiseMin(motion.mMoveLow);
-            move_high = move_high.cwiseMax(motion.mMoveHigh);
-        }
-    const double most_moved = MostMovedAlong(inProbe, move_low, move_high);
+    // How far any vertex has moved from its rest position (the union of the cells' displacement boxes and
+    // zero: a slice's rest reach box holds its triangles' corners from other cells and from no zone)
+    const double most_moved = MostMovedAlong(inProbe, mMoveUnionLow, mMoveUnionHigh);
 
     // Where a cell's surface is now: its rest reach box (its vertices and its triangles' corners) moved by
     // any displacement of the vertices of the cell and of the cells holding those corners, and by none for
     // corners in no zone
-    auto current_reach = [&](int inCell)
+    auto current_reach = [&](int inCell, const CellMotion& inOwn)
     {
-        const CellMotion& own = mCellMotion[static_cast<std::size_t>(inCell)];
-        MovedBox reach{mSurfaceIndex->ReachLow(inCell), mSurfaceIndex->ReachHigh(inCell), own.mMoveLow,
-                       own.mMoveHigh};
+        MovedBox reach{mSurfaceIndex->ReachLow(inCell), mSurfaceIndex->ReachHigh(inCell), inOwn.mMoveLow,
+                       inOwn.mMoveHigh};
         for (int linked : mSurfaceIndex->LinkedCells(inCell))
         {
-            reach.mMoveLow = reach.mMoveLow.cwiseMin(mCellMotion[static_cast<std::size_t>(linked)].mMoveLow);
-            reach.mMoveHigh =
-                reach.mMoveHigh.cwiseMax(mCellMotion[static_cast<std::size_t>(linked)].mMoveHigh);
+            // intent: a linked cell holds a corner of the cell's triangles, so a slot
+            const CellMotion& other = *FindMotion(linked);
+            reach.mMoveLow = reach.mMoveLow.cwiseMin(other.mMoveLow);
+            reach.mMoveHigh = reach.mMoveHigh.cwiseMax(other.mMoveHigh);
         }
-        if (mSurfaceIndex->LooseCornerLow(inCell).x() <= mSurfaceIndex->LooseCornerHigh(inCell).x())
+        if (mSurfaceIndex->HasLooseCorner(inCell))
         {
             reach.mMoveLow = reach.mMoveLow.cwiseMin(Vec3::Zero());
             reach.mMoveHigh = reach.mMoveHigh.cwiseMax(Vec3::Zero());
@@ -290,14 +282,14 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
             ijk[static_cast<std::size_t>(axis)] = slice;
             const MovedBox slice_box{
                 slices.mLow[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)],
-                slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)], move_low,
-                move_high};
+                slices.mHigh[static_cast<std::size_t>(axis)][static_cast<std::size_t>(slice)], mMoveUnionLow,
+                mMoveUnionHigh};
             if (!(slice_box.mLow.x() <= slice_box.mHigh.x()) || !MeetsPrism(inProbe, slice_box))
                 continue;
             // intent: a slice wholly behind the front adds nothing once a vertex is inside, unless a vertex
             // moved along the probe further than any inside so far: the cells' test below on the slice's box
-            // and the largest move, which bound every cell's (most slices behind the struck face of a car go
-            // at once)
+            // moved by the union of every cell's moves (most slices behind the struck face of a car go at
+            // once)
             if (scan.HasVertexInside() && NearestAlong(inProbe, slice_box) > scan.GetFront() &&
                 !(most_moved > scan.GetMoveInside()))
                 continue;
@@ -307,18 +299,18 @@ SurfaceProbeResult FfdDeformer::ProbeSurface(const SurfaceProbe& inProbe) const
                     ijk[static_cast<std::size_t>(others[0])] = a;
                     ijk[static_cast<std::size_t>(others[1])] = b;
                     const int cell = offset + zone.CellIndex(ijk);
-                    const CellMotion& motion = mCellMotion[static_cast<std::size_t>(cell)];
-                    if (!(motion.mLow.x() <= motion.mHigh.x()))
+                    const CellMotion* motion = FindMotion(cell);
+                    if (motion == nullptr)
                         continue; // no vertex in the cell
-                    const MovedBox reach = current_reach(cell);
+                    const MovedBox reach = current_reach(cell, *motion);
                     if (!MeetsPrism(inProbe, reach))
                         continue;
                     // intent: a cell wholly behind the front adds nothing once a vertex is inside, except a
                     // vertex that moved along the probe further than any inside so far
                     const bool behind =
                         NearestAlong(inProbe, reach) > scan.GetFront() && scan.HasVertexInside();
-                    if (behind &&
-                        !(MostMovedAlong(inProbe, motion.mMoveLow, motion.mMoveHigh) > scan.GetMoveInside()))
+                    if (behind && !(MostMovedAlong(inProbe, motion->mMoveLow, motion->mMoveHigh) >
+                                    scan.GetMoveInside()))
                         continue;
                     const auto local = static_cast<std::size_t>(cell - offset);
                     for (std::uint32_t i = mCellStart[z][local]; i < mCellStart[z][local + 1]; ++i)

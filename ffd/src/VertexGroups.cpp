@@ -35,7 +35,7 @@ void FfdDeformer::ForEachVertexGroup(const Vec3& inFirstAlong, const std::functi
                         continue;
                     const int cell = mCellOffset[z] + static_cast<int>(local);
                     // intent: the box of the cell's vertices as stored (their own extremes): nothing to widen
-                    const CellMotion& motion = mCellMotion[static_cast<std::size_t>(cell)];
+                    const CellMotion& motion = *FindMotion(cell); // the cell holds vertices
                     group.mLow = motion.mLow;
                     group.mHigh = motion.mHigh;
                     group.mMoved = 0.0;

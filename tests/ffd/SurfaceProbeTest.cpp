@@ -70,14 +70,17 @@ TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and 
 {
     std::mt19937_64 random(3);
     // {segments per axis, split into two zones with a loose rear}: a fine mesh, and a coarse one whose
-    // triangles span many cells (a probe often holds no vertex, only triangles across it).
+    // triangles span many cells (a probe often holds no vertex, only triangles across it), with slivers
+    // inside so that its probes stay on their cell-by-cell path (12 vertices and 20 triangles alone would
+    // scan everything after a cell or two).
     for (const std::array<int, 3>& segments : {std::array<int, 3>{40, 18, 14}, std::array<int, 3>{2, 1, 1}})
     {
-        FfdDeformer deformer = test::TwoZoneBox(cHalf, segments, {14, 8, 7}, {14, 8, 7}, 0.6);
+        FfdDeformer deformer =
+            test::TwoZoneBox(cHalf, segments, {14, 8, 7}, {14, 8, 7}, 0.6, segments[0] == 2 ? 400 : 0);
         int hits = 0;
         CheckSameAsBruteForce(deformer, random, 300, hits);
 
-        // Dents on the front, the sides and the top, then probes again.
+        // Dents on the front, the sides and the top, and oblique ones, then probes again.
         std::uniform_real_distribution<double> y(-0.85, 0.85), z(-0.65, 0.65), depth(0.05, 0.4);
         for (int dent = 0; dent < 8; ++dent)
         {
@@ -85,20 +88,26 @@ TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and 
             for (int i = 0; i < 3; ++i)
             {
                 // Draws sequenced, last argument first (common::DrawVec3).
-                if (dent % 3 == 0)
+                if (dent % 4 == 0)
                 {
                     const double pz = z(random), py = y(random);
                     points.push_back({Vec3(2.0, py, pz), Vec3(-depth(random), 0.0, 0.0)});
                 }
-                else if (dent % 3 == 1)
+                else if (dent % 4 == 1)
                 {
                     const double pz = z(random), px = 0.8 * y(random);
                     points.push_back({Vec3(px, 0.9, pz), Vec3(0.0, -depth(random), 0.0)});
                 }
-                else
+                else if (dent % 4 == 2)
                 {
                     const double py = y(random), px = 2.0 * y(random);
                     points.push_back({Vec3(px, py, 0.7), Vec3(0.0, 0.0, -depth(random))});
+                }
+                else
+                {
+                    // oblique, and outward along x: moves of either sign in every component
+                    const double pz = z(random), py = y(random), d = depth(random);
+                    points.push_back({Vec3(2.0, py, pz), Vec3(0.5 * d, -0.6 * d, 0.4 * d)});
                 }
             }
             REQUIRE(deformer.ApplyDent(points));
