@@ -64,6 +64,35 @@ void CheckSameAsBruteForce(const FfdDeformer& inDeformer, std::mt19937_64& ioRan
     }
 }
 
+// inCount slivers (triangles 1 mm by 1 cm) along x from inStart over inLength: vertices and triangles
+// enough that a probe of a small mesh stays on its cell-by-cell path instead of scanning everything.
+void AddSlivers(TriangleMesh& ioMesh, const Vec3& inStart, double inLength, int inCount)
+{
+    for (int i = 0; i < inCount; ++i)
+    {
+        const double x = inStart.x() + inLength * i / inCount;
+        const auto p = static_cast<std::uint32_t>(ioMesh.mPositions.size());
+        ioMesh.mPositions.emplace_back(x, inStart.y(), inStart.z());
+        ioMesh.mPositions.emplace_back(x + 0.001, inStart.y() + 0.01, inStart.z());
+        ioMesh.mPositions.emplace_back(x, inStart.y(), inStart.z() + 0.01);
+        ioMesh.mTriangles.push_back({p, p + 1, p + 2});
+    }
+}
+
+// One zone over the box from inOrigin of inSize (m), with inControls controls and up to 1 m of deformation.
+FfdDeformer OneZoneDeformer(TriangleMesh inMesh, const Vec3& inOrigin, const Vec3& inSize,
+                            const std::array<int, 3>& inControls)
+{
+    FfdDeformerSettings settings;
+    FfdZoneSettings zone;
+    zone.mLattice.mOrigin = inOrigin;
+    zone.mLattice.mSize = inSize;
+    zone.mLattice.mControlCount = inControls;
+    zone.mMaxTotalDeformation = 1.0;
+    settings.mZones = {zone};
+    return FfdDeformer::Create(std::move(inMesh), settings).Get();
+}
+
 } // namespace
 
 TEST_CASE("ProbeSurface equals a scan of every vertex and triangle, on fine and coarse meshes, dented or not", "[ffd]")
@@ -154,20 +183,9 @@ TEST_CASE("ProbeSurface bounds a cell by how far its stored positions moved, not
     const std::uint32_t w = add({0.1, 0.0, 0.0}), a = add({0.1, 0.4, 0.01}), b = add({0.1, -0.4, 0.01});
     const std::uint32_t v = add({1.0, 0.0, 0.0}), c = add({1.0, 0.4, 0.01}), e = add({1.0, -0.4, 0.01});
     mesh.mTriangles = {{w, a, b}, {v, c, e}};
-    for (int i = 0; i < 200; ++i)
-    {
-        const double x = 0.05 + 1.9 * i / 200.0;
-        const std::uint32_t p = add({x, 0.45, 0.3}), q = add({x + 0.001, 0.46, 0.3}), r = add({x, 0.45, 0.31});
-        mesh.mTriangles.push_back({p, q, r});
-    }
-    FfdDeformerSettings settings;
-    FfdZoneSettings zone;
-    zone.mLattice.mOrigin = Vec3(0.0, -0.5, -0.5);
-    zone.mLattice.mSize = Vec3(2.0, 1.0, 1.0);
-    zone.mLattice.mControlCount = {8, 4, 4};
-    zone.mMaxTotalDeformation = 1.0;
-    settings.mZones = {zone};
-    FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    AddSlivers(mesh, Vec3(0.05, 0.45, 0.3), 1.9, 200);
+    FfdDeformer deformer =
+        OneZoneDeformer(std::move(mesh), Vec3(0.0, -0.5, -0.5), Vec3(2.0, 1.0, 1.0), {8, 4, 4});
     const FfdLattice& lattice = deformer.GetZones()[0];
     std::vector<int> controls;
     for (int k = 0; k < 4; ++k)
@@ -205,20 +223,9 @@ TEST_CASE("ProbeSurface finds a triangle whose corner in no zone stayed while th
     };
     const std::uint32_t a = add({0.5, 0.0, 0.0}), b = add({0.5, 1.0, 0.0}), c = add({0.0, 0.5, 0.0});
     mesh.mTriangles = {{a, b, c}};
-    for (int i = 0; i < 200; ++i)
-    {
-        const double x = 0.45 + 0.5 * i / 200.0;
-        const std::uint32_t p = add({x, 1.4, 0.4}), q = add({x + 0.001, 1.41, 0.4}), r = add({x, 1.4, 0.41});
-        mesh.mTriangles.push_back({p, q, r});
-    }
-    FfdDeformerSettings settings;
-    FfdZoneSettings zone;
-    zone.mLattice.mOrigin = Vec3(0.4, -0.5, -0.5);
-    zone.mLattice.mSize = Vec3(0.6, 2.0, 1.0);
-    zone.mLattice.mControlCount = {4, 4, 4};
-    zone.mMaxTotalDeformation = 1.0;
-    settings.mZones = {zone};
-    FfdDeformer deformer = FfdDeformer::Create(std::move(mesh), settings).Get();
+    AddSlivers(mesh, Vec3(0.45, 1.4, 0.4), 0.5, 200);
+    FfdDeformer deformer =
+        OneZoneDeformer(std::move(mesh), Vec3(0.4, -0.5, -0.5), Vec3(0.6, 2.0, 1.0), {4, 4, 4});
     REQUIRE(deformer.GetVertexZone(c) == -1);
     REQUIRE(deformer.GetVertexZone(a) == 0);
     std::vector<int> controls(static_cast<std::size_t>(deformer.GetZones()[0].GetControlCount()));
