@@ -76,9 +76,8 @@ TEST_CASE("Vertex groups hand over every vertex once, each group with the exact 
             CHECK(loose_moved == 0);
             CHECK(not_tight == 0);
             CHECK(unbounded == 1); // the rear 0.2 m
-            CHECK(
-                groups ==
-                43); // the two lattices hold 5 x 3 x 2 and 3 x 2 x 2 cells, each with vertices, and the rear
+            // the two lattices hold 5 x 3 x 2 and 3 x 2 x 2 cells, each with vertices, and the rear
+            CHECK(groups == 43);
             CHECK(moved_groups >= inMovedAtLeast);
             CHECK(moved_groups <= inMovedAtMost);
         }

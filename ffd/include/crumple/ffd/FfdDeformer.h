@@ -44,87 +44,86 @@ class CellSurfaceIndex;
 class CRUMPLE_API FfdDeformer
 {
 public:
-  /// Most lattice cells over all zones (each costs about 70 bytes of index, and a cell that holds vertices 96
-  /// more for where they are: CellMotion): 2^24, a 256^3 lattice
-  static constexpr std::int64_t cMaxCellsInZones = std::int64_t{1} << 24;
+    /// Most lattice cells over all zones (each costs about 70 bytes of index, and a cell that holds vertices 96
+    /// more for where they are: CellMotion): 2^24, a 256^3 lattice
+    static constexpr std::int64_t cMaxCellsInZones = std::int64_t{1} << 24;
 
-  /// Validates the mesh and zones (at most cMaxCellsInZones cells in all) and binds vertices.
-  static Result<FfdDeformer> Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings);
+    /// Validates the mesh and zones (at most cMaxCellsInZones cells in all) and binds vertices.
+    static Result<FfdDeformer> Create(TriangleMesh inRestMesh, const FfdDeformerSettings& inSettings);
 
-  /// Moves each point by its displacement (body frame, m), accumulating onto earlier dents.
-  /// Points are assigned to zones, and a zone's points closer than mMergeDistance cells merge (their
-  /// displacements averaged). A zone left with more than 1,024 points merges them further on a grid of
-  /// lattice bins, from 1/4 cell wide up, until they fit (a cubic B-spline follows no finer detail, and the
-  /// solve's cost grows with the square of the points: 4,096 took 4.7 s); DentReport::mPointsMerged counts
-  /// both. Each zone solves its own minimum-norm system dC = B^+ dP. If the
-  /// resulting field would move a vertex by more than inMaxStep, or beyond the zone's maximum total
-  /// deformation, the zone's dC is scaled down uniformly (the dent keeps its shape) to the largest factor
-  /// that respects both on every vertex. Then, unless mMinControlSpacing is 0, the fold guard (FoldGuard.h)
-  /// pushes along any control that the scaled dent would push closer than that to its neighbour on a
-  /// lattice line, and the bounds are checked again on the guarded dent, so the surface cannot fold.
-  /// A NaN/Inf anywhere, or a displacement beyond cMaxMeshCoordinate, refuses the whole dent and changes
-  /// nothing.
-  /// A dent whose displacements are all zero changes no byte.
-  /// @param[in] inMaxStep  bound on how far this dent may move any vertex (m), >= 0
-  Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
-                               double inMaxStep = std::numeric_limits<double>::infinity());
+    /// Moves each point by its displacement (body frame, m), accumulating onto earlier dents.
+    /// Points are assigned to zones, and a zone's points closer than mMergeDistance cells merge (their
+    /// displacements averaged). A zone left with more than 1,024 points merges them further on a grid of
+    /// lattice bins, from 1/4 cell wide up, until they fit (a cubic B-spline follows no finer detail, and the
+    /// solve's cost grows with the square of the points: 4,096 took 4.7 s); DentReport::mPointsMerged counts
+    /// both. Each zone solves its own minimum-norm system dC = B^+ dP. If the
+    /// resulting field would move a vertex by more than inMaxStep, or beyond the zone's maximum total
+    /// deformation, the zone's dC is scaled down uniformly (the dent keeps its shape) to the largest factor
+    /// that respects both on every vertex. Then, unless mMinControlSpacing is 0, the fold guard (FoldGuard.h)
+    /// pushes along any control that the scaled dent would push closer than that to its neighbour on a
+    /// lattice line, and the bounds are checked again on the guarded dent, so the surface cannot fold.
+    /// A NaN/Inf anywhere, or a displacement beyond cMaxMeshCoordinate, refuses the whole dent and changes
+    /// nothing.
+    /// A dent whose displacements are all zero changes no byte.
+    /// @param[in] inMaxStep  bound on how far this dent may move any vertex (m), >= 0
+    Result<DentReport> ApplyDent(std::span<const PointDisplacement> inPoints,
+                                 double inMaxStep = std::numeric_limits<double>::infinity());
 
-  /// Adds inDelta (one row per control, body frame, m) to the displacements of inControls (indices of
-  /// inZone, ascending and unique), for a caller that builds the control field itself (a crush field,
-  /// plugin::CampbellCrush) instead of asking for point displacements. The same bounds as ApplyDent
-  /// follow: the change is scaled down as a whole to respect inMaxStep and the zone's maximum total
-  /// deformation, and the fold guard runs. Bad input refuses the whole change and changes nothing.
-  Result<DentReport> ApplyControlDelta(int inZone, std::span<const int> inControls,
-                                       const Eigen::MatrixX3d& inDelta,
-                                       double inMaxStep = std::numeric_limits<double>::infinity());
+    /// Adds inDelta (one row per control, body frame, m) to the displacements of inControls (indices of
+    /// inZone, ascending and unique), for a caller that builds the control field itself (a crush field,
+    /// plugin::CampbellCrush) instead of asking for point displacements. The same bounds as ApplyDent
+    /// follow: the change is scaled down as a whole to respect inMaxStep and the zone's maximum total
+    /// deformation, and the fold guard runs. Bad input refuses the whole change and changes nothing.
+    Result<DentReport> ApplyControlDelta(int inZone, std::span<const int> inControls, const Eigen::MatrixX3d& inDelta,
+                                         double inMaxStep = std::numeric_limits<double>::infinity());
 
-  /// Restores the undeformed mesh (all control displacements zero). Marks changed vertices dirty.
-  void Reset();
+    /// Restores the undeformed mesh (all control displacements zero). Marks changed vertices dirty.
+    void Reset();
 
-  /// Recomputes every vertex and normal from the control displacements (the reference that the
-  /// incremental update must equal; also used after a load).
-  void RecomputeAll();
+    /// Recomputes every vertex and normal from the control displacements (the reference that the
+    /// incremental update must equal; also used after a load).
+    void RecomputeAll();
 
-  /// Replaces all control displacements (one vector per zone, in ControlIndex order), e.g. from a saved
-  /// state. Refused, changing nothing, when counts differ, a value is not finite or exceeds its zone's
-  /// maximum total deformation.
-  Status SetControlDisplacements(std::span<const std::vector<Vec3>> inPerZone);
-  /// The checks of SetControlDisplacements without the change, so a caller holding several deformers
-  /// can validate all of them before changing any.
-  Status ValidateControlDisplacements(std::span<const std::vector<Vec3>> inPerZone) const;
+    /// Replaces all control displacements (one vector per zone, in ControlIndex order), e.g. from a saved
+    /// state. Refused, changing nothing, when counts differ, a value is not finite or exceeds its zone's
+    /// maximum total deformation.
+    Status SetControlDisplacements(std::span<const std::vector<Vec3>> inPerZone);
+    /// The checks of SetControlDisplacements without the change, so a caller holding several deformers
+    /// can validate all of them before changing any.
+    Status ValidateControlDisplacements(std::span<const std::vector<Vec3>> inPerZone) const;
 
-  /// Deformed positions, body frame (m), #V: the published ones while publishing (SetPublishing)
-  const std::vector<Vec3>& GetPositions() const { return mPublishing ? mPublishedPositions : mPositions; }
-  /// Unit vertex normals (area-weighted), body frame, #V: the published ones while publishing
-  const std::vector<Vec3>& GetNormals() const { return mPublishing ? mPublishedNormals : mNormals; }
-  /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published. The
-  /// array may be another after any change or Publish: take it again rather than keep the reference.
-  const std::vector<Vec3>& GetCurrentPositions() const { return mStale ? mPublishedPositions : mPositions; }
+    /// Deformed positions, body frame (m), #V: the published ones while publishing (SetPublishing)
+    const std::vector<Vec3>& GetPositions() const { return mPublishing ? mPublishedPositions : mPositions; }
+    /// Unit vertex normals (area-weighted), body frame, #V: the published ones while publishing
+    const std::vector<Vec3>& GetNormals() const { return mPublishing ? mPublishedNormals : mNormals; }
+    /// The positions dents work on: ahead of GetPositions() while a deferred dent is not yet published. The
+    /// array may be another after any change or Publish: take it again rather than keep the reference.
+    const std::vector<Vec3>& GetCurrentPositions() const { return mStale ? mPublishedPositions : mPositions; }
 
-  /// Deferred publishing (plugin::DamageWorldSettings::mDeferDents): while on, GetPositions, GetNormals and
-  /// the dirty ranges show the state of the last Publish(), which no dent writes, so the game may read
-  /// them while a worker dents this deformer. Turning it on publishes the current state; off drops the copy.
-  void SetPublishing(bool inOn);
-  /// Makes the dents since the last Publish() the published state and marks their vertices for
-  /// TakeDirtyRanges. RecomputeAll (Reset, SetControlDisplacements) publishes by itself.
-  /// It costs a pass over one byte per vertex, whatever the dents moved: the published and working buffers
-  /// trade places, and the next change to this deformer (on the worker that dents it) first copies the
-  /// vertices the new working buffer lacks. So the arrays behind GetPositions() and GetNormals() may be
-  /// others after a Publish: take them again rather than keep their data pointers.
-  void Publish();
-  bool IsPublishing() const { return mPublishing; }
-  /// The undeformed mesh
-  const TriangleMesh& GetRestMesh() const { return mRestMesh; }
-  /// Zones, in settings order
-  const std::vector<FfdLattice>& GetZones() const { return mZones; }
-  const FfdDeformerSettings& GetSettings() const { return mSettings; }
-  /// Index of the zone a vertex is bound to, -1 when it is in none (it never moves). An index past the mesh
-  /// is a caller's error: the assertions build stops there, a release build answers -1 (no zone moves it)
-  /// instead of reading past the array.
-  int GetVertexZone(std::uint32_t inVertex) const
-  {
-      CRUMPLE_ASSERT(inVertex < mVertexZone.size(), "GetVertexZone: the vertex index is past the mesh");
-      return inVertex < mVertexZone.size() ? mVertexZone[inVertex] : -1;
+    /// Deferred publishing (plugin::DamageWorldSettings::mDeferDents): while on, GetPositions, GetNormals and
+    /// the dirty ranges show the state of the last Publish(), which no dent writes, so the game may read
+    /// them while a worker dents this deformer. Turning it on publishes the current state; off drops the copy.
+    void SetPublishing(bool inOn);
+    /// Makes the dents since the last Publish() the published state and marks their vertices for
+    /// TakeDirtyRanges. RecomputeAll (Reset, SetControlDisplacements) publishes by itself.
+    /// It costs a pass over one byte per vertex, whatever the dents moved: the published and working buffers
+    /// trade places, and the next change to this deformer (on the worker that dents it) first copies the
+    /// vertices the new working buffer lacks. So the arrays behind GetPositions() and GetNormals() may be
+    /// others after a Publish: take them again rather than keep their data pointers.
+    void Publish();
+    bool IsPublishing() const { return mPublishing; }
+    /// The undeformed mesh
+    const TriangleMesh& GetRestMesh() const { return mRestMesh; }
+    /// Zones, in settings order
+    const std::vector<FfdLattice>& GetZones() const { return mZones; }
+    const FfdDeformerSettings& GetSettings() const { return mSettings; }
+    /// Index of the zone a vertex is bound to, -1 when it is in none (it never moves). An index past the mesh
+    /// is a caller's error: the assertions build stops there, a release build answers -1 (no zone moves it)
+    /// instead of reading past the array.
+    int GetVertexZone(std::uint32_t inVertex) const
+    {
+        CRUMPLE_ASSERT(inVertex < mVertexZone.size(), "GetVertexZone: the vertex index is past the mesh");
+        return inVertex < mVertexZone.size() ? mVertexZone[inVertex] : -1;
     }
     /// Smallest control spacing over all zones (m): the scale below which contacts need no interpolation
     double GetMinSpacing() const;
@@ -140,10 +139,10 @@ public:
 
     /// Hands inVisit the vertices in groups, each with a box that holds their current positions
     /// (GetCurrentPositions; VertexGroup): the vertices of each lattice cell that holds any, with the box of
-    /// their current positions (their own extremes, mMoved 0), zone by zone, in slices
-    /// across the lattice axis nearest inFirstAlong, the slice foremost along it first (so a scan that keeps
-    /// a front meets it early); then the vertices in no zone (unbounded: they never moved). Every vertex
-    /// comes once. For a scan over the surface that skips what a box rules out (plugin's struck front), as
+    /// their current positions (their own extremes, mMoved 0), zone by zone, in slices across the lattice axis
+    /// nearest inFirstAlong, the slice foremost along it first (so a scan that keeps a front meets it early);
+    /// then the vertices in no zone (unbounded: they never moved). Every vertex comes once. For a scan over
+    /// the surface that skips what a box rules out (plugin's struck front), as
     /// ProbeSurface does.
     void ForEachVertexGroup(const Vec3& inFirstAlong, const std::function<void(const VertexGroup&)>& inVisit) const;
 
@@ -240,9 +239,9 @@ private:
     /// positions are written (a dent's cells, a full recompute).
     struct CellMotion
     {
-        Vec3 mLow = Vec3::Constant(std::numeric_limits<double>::infinity());   ///< Positions, body frame (m)
-        Vec3 mHigh = Vec3::Constant(-std::numeric_limits<double>::infinity()); ///< (empty: low > high)
-        Vec3 mMoveLow = Vec3::Constant(std::numeric_limits<double>::infinity()); ///< Position - rest (m)
+        Vec3 mLow = Vec3::Constant(std::numeric_limits<double>::infinity());      ///< Positions, body frame (m)
+        Vec3 mHigh = Vec3::Constant(-std::numeric_limits<double>::infinity());    ///< (empty: low > high)
+        Vec3 mMoveLow = Vec3::Constant(std::numeric_limits<double>::infinity());  ///< Position - rest (m)
         Vec3 mMoveHigh = Vec3::Constant(-std::numeric_limits<double>::infinity());
 
         void Include(const Vec3& inPosition, const Vec3& inDisplacement)
@@ -258,14 +257,14 @@ private:
     {
         return mCellMotion[static_cast<std::size_t>(mCellMotionSlot[static_cast<std::size_t>(inCell)])];
     }
+    // The motion of cell inCell, or nullptr for a cell without vertices.
     const CellMotion* FindMotion(int inCell) const
     {
         const std::int32_t slot = mCellMotionSlot[static_cast<std::size_t>(inCell)];
         return slot >= 0 ? &mCellMotion[static_cast<std::size_t>(slot)] : nullptr;
     }
-    std::vector<CellMotion> mCellMotion; ///< Per cell holding vertices, in cell order
-    std::vector<std::int32_t>
-        mCellMotionSlot; ///< Per cell across zones: its slot in mCellMotion, -1 without vertices
+    std::vector<CellMotion> mCellMotion;       ///< Per cell holding vertices, in cell order
+    std::vector<std::int32_t> mCellMotionSlot; ///< Per cell across zones: its slot in mCellMotion, -1 without vertices
     /// A box holding every cell's displacement box and zero (corners in no zone never move), body frame (m):
     /// grown by each dent, made exact again by a full recompute
     Vec3 mMoveUnionLow = Vec3::Zero(), mMoveUnionHigh = Vec3::Zero();
