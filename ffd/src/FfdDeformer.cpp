@@ -777,7 +777,8 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
             static_cast<std::size_t>(std::lower_bound(run.begin(), run.end() - 1, begin) - run.begin());
     }
     std::vector<double> piece_bound(static_cast<std::size_t>(pieces), 0.0);
-    std::vector<CellMotion> piece_moves(static_cast<std::size_t>(pieces)); // each piece's union of moves
+    std::vector<CellMotion> piece_moves(
+        static_cast<std::size_t>(pieces)); // each piece's union of moves (mMove*)
     const std::vector<LatticeLocation>& locations = mBucketLocations[static_cast<std::size_t>(inZone)];
     const std::vector<Vec3>& rest = mBucketRest[static_cast<std::size_t>(inZone)];
     // intent: a cell's vertices share its 64 controls: with AVX they are copied once per cell, aligned, and each
@@ -788,6 +789,7 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
     ParallelFor(mJobs, pieces, [&](int inPiece) {
         PackedCellControls cell_controls;
         double largest = 0.0;
+        CellMotion moves;
         for (std::size_t c = first_cell[static_cast<std::size_t>(inPiece)]; c < first_cell[static_cast<std::size_t>(inPiece) + 1]; ++c)
         {
             // intent: the largest squared length of a displacement, one square root per cell (sqrt is
@@ -819,12 +821,12 @@ void FfdDeformer::UpdateVertices(int inZone, std::span<const std::uint32_t> inVe
                 mDirty[v] = 1;
             }
             MotionOf(mTouchedCells[c]) = motion;
-            CellMotion& moves = piece_moves[static_cast<std::size_t>(inPiece)];
             moves.mMoveLow = moves.mMoveLow.cwiseMin(motion.mMoveLow);
             moves.mMoveHigh = moves.mMoveHigh.cwiseMax(motion.mMoveHigh);
             largest = std::max(largest, cell_largest);
         }
         piece_bound[static_cast<std::size_t>(inPiece)] = std::sqrt(largest);
+        piece_moves[static_cast<std::size_t>(inPiece)] = moves;
     });
     for (double largest : piece_bound)
         bound = std::max(bound, largest);

@@ -51,6 +51,7 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
     std::vector<std::uint8_t> long_edges;                     // per triangle: bit k set when edge k is long
     std::vector<std::uint32_t> edge_start, edge_triangles;    // per edge: the triangles using it (CSR)
     std::vector<std::uint8_t> kept_whole;                     // per triangle: found not cuttable
+    std::vector<std::uint32_t> edge_fill;                     // per edge: where its next triangle goes
     std::vector<std::uint32_t> pending;                       // triangles to look at again
     // intent: each pass at least halves every edge longer than inMaxEdge; the new edges inside a triangle are
     // no longer than its longest, so a mesh of edges up to L needs about log2(L / inMaxEdge) passes
@@ -98,10 +99,10 @@ Result<RefinedMesh> RefineLongEdges(const TriangleMesh& inMesh, double inMaxEdge
             for (std::size_t e = 0; e < bends.size(); ++e)
                 edge_start[e + 1] += edge_start[e];
             edge_triangles.resize(edge_start.back());
-            pending.assign(edge_start.begin(), edge_start.end() - 1); // fill positions
+            edge_fill.assign(edge_start.begin(), edge_start.end() - 1);
             for (std::size_t t = 0; t < triangles.size(); ++t)
                 for (std::uint32_t e : triangle_edges[t])
-                    edge_triangles[pending[e]++] = static_cast<std::uint32_t>(t);
+                    edge_triangles[edge_fill[e]++] = static_cast<std::uint32_t>(t);
 
             // intent: a triangle is cut only if every long edge of it is, to the fixed point: one left whole
             // keeps its edges whole for its neighbours too. The kept-whole set is the least one closed under

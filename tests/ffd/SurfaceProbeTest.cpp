@@ -3,6 +3,7 @@
 #include "BoxMesh.h"
 #include "BruteForceProbe.h"
 #include "DrawVec3.h"
+#include "Slivers.h"
 #include "TwoZoneBox.h"
 
 #include <crumple/ffd/FfdDeformer.h>
@@ -61,21 +62,6 @@ void CheckSameAsBruteForce(const FfdDeformer& inDeformer, std::mt19937_64& ioRan
         REQUIRE(indexed.mVertexInside == reference.mVertexInside);
         REQUIRE(indexed.mMoved == reference.mMoved);
         ioHits += std::isfinite(reference.mFront) ? 1 : 0;
-    }
-}
-
-// inCount slivers (triangles 1 mm by 1 cm) along x from inStart over inLength: vertices and triangles
-// enough that a probe of a small mesh stays on its cell-by-cell path instead of scanning everything.
-void AddSlivers(TriangleMesh& ioMesh, const Vec3& inStart, double inLength, int inCount)
-{
-    for (int i = 0; i < inCount; ++i)
-    {
-        const double x = inStart.x() + inLength * i / inCount;
-        const auto p = static_cast<std::uint32_t>(ioMesh.mPositions.size());
-        ioMesh.mPositions.emplace_back(x, inStart.y(), inStart.z());
-        ioMesh.mPositions.emplace_back(x + 0.001, inStart.y() + 0.01, inStart.z());
-        ioMesh.mPositions.emplace_back(x, inStart.y(), inStart.z() + 0.01);
-        ioMesh.mTriangles.push_back({p, p + 1, p + 2});
     }
 }
 
@@ -183,7 +169,7 @@ TEST_CASE("ProbeSurface bounds a cell by how far its stored positions moved, not
     const std::uint32_t w = add({0.1, 0.0, 0.0}), a = add({0.1, 0.4, 0.01}), b = add({0.1, -0.4, 0.01});
     const std::uint32_t v = add({1.0, 0.0, 0.0}), c = add({1.0, 0.4, 0.01}), e = add({1.0, -0.4, 0.01});
     mesh.mTriangles = {{w, a, b}, {v, c, e}};
-    AddSlivers(mesh, Vec3(0.05, 0.45, 0.3), 1.9, 200);
+    test::AddSlivers(mesh, Vec3(0.05, 0.45, 0.3), 1.9, 200);
     FfdDeformer deformer =
         OneZoneDeformer(std::move(mesh), Vec3(0.0, -0.5, -0.5), Vec3(2.0, 1.0, 1.0), {8, 4, 4});
     const FfdLattice& lattice = deformer.GetZones()[0];
@@ -223,7 +209,7 @@ TEST_CASE("ProbeSurface finds a triangle whose corner in no zone stayed while th
     };
     const std::uint32_t a = add({0.5, 0.0, 0.0}), b = add({0.5, 1.0, 0.0}), c = add({0.0, 0.5, 0.0});
     mesh.mTriangles = {{a, b, c}};
-    AddSlivers(mesh, Vec3(0.45, 1.4, 0.4), 0.5, 200);
+    test::AddSlivers(mesh, Vec3(0.45, 1.4, 0.4), 0.5, 200);
     FfdDeformer deformer =
         OneZoneDeformer(std::move(mesh), Vec3(0.4, -0.5, -0.5), Vec3(0.6, 2.0, 1.0), {4, 4, 4});
     REQUIRE(deformer.GetVertexZone(c) == -1);

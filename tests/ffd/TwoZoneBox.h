@@ -3,11 +3,11 @@
 #pragma once
 
 #include "BoxMesh.h"
+#include "Slivers.h"
 
 #include <crumple/ffd/FfdDeformer.h>
 #include <crumple/plugin/DeformableObjectSettings.h>
 
-#include <algorithm>
 #include <array>
 
 namespace crumple::test
@@ -18,24 +18,15 @@ namespace crumple::test
 /// span the split and the rear 0.2 m lies in no zone (loose vertices).
 /// @param[in] inSegments  the box mesh's segments per axis
 /// @param[in] inMaxTotal  each zone's maximum total deformation (m)
-/// @param[in] inSlivers   tiny triangles added inside the box along its length (y = z = 0, in the zones): a
-///                        coarse box with them has enough vertices and triangles that a probe stays on its
-///                        cell-by-cell path instead of scanning everything
+/// @param[in] inSlivers   slivers (AddSlivers) added inside the box along its length (from y = z = 0, in the
+///                        zones): a coarse box with them stays on a probe's cell-by-cell path
 inline ffd::FfdDeformer TwoZoneBox(const Vec3& inHalf, const std::array<int, 3>& inSegments,
                                    const std::array<int, 3>& inFrontControls,
                                    const std::array<int, 3>& inMiddleControls, double inMaxTotal,
                                    int inSlivers = 0)
 {
     ffd::TriangleMesh mesh = common::MakeBoxMesh(inHalf, inSegments);
-    for (int i = 0; i < inSlivers; ++i)
-    {
-        const double x = -1.7 + (inHalf.x() - 0.1 + 1.7) * i / std::max(inSlivers, 1);
-        const auto p = static_cast<std::uint32_t>(mesh.mPositions.size());
-        mesh.mPositions.push_back(Vec3(x, 0.0, 0.0));
-        mesh.mPositions.push_back(Vec3(x + 0.001, 0.0, 0.0));
-        mesh.mPositions.push_back(Vec3(x, 0.001, 0.0));
-        mesh.mTriangles.push_back({p, p + 1, p + 2});
-    }
+    AddSlivers(mesh, Vec3(-1.7, 0.0, 0.0), inHalf.x() - 0.1 + 1.7, inSlivers);
     ffd::FfdDeformerSettings settings;
     const ffd::FfdZoneSettings whole = plugin::FitZoneToMesh(mesh, inFrontControls, inMaxTotal);
     ffd::FfdZoneSettings front = whole, middle = whole;
