@@ -360,6 +360,7 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
 {
     mForcesCached = false;
     const std::size_t new_count = inConnectivity.mNodeOrigin.size();
+    const std::size_t old_count = mPositions.size();
     std::vector<int> old_of_new(new_count, -1);
     for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
         for (int corner = 0; corner < 4; ++corner)
@@ -397,7 +398,17 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
     mInverseMasses = std::move(inverse_masses);
     mFree = std::move(free);
     mElementActiveValid = false;
-    FollowFramesAfterNewSystem();
+    // The last solve's held nodes, renumbered: a crack on the ground keeps its pieces' nodes held.
+    std::vector<std::uint8_t> held;
+    if (const TetSolveScratch* scratch = mWorkspace.Find();
+        scratch != nullptr && mSettings.mGround.mEnabled && mSettings.mFactorGroundFilter &&
+        scratch->mGroundHeld.size() == old_count)
+    {
+        held.resize(new_count);
+        for (std::size_t node = 0; node < new_count; ++node)
+            held[node] = scratch->mGroundHeld[static_cast<std::size_t>(old_of_new[node])];
+    }
+    FollowFramesAfterNewSystem(held);
     mForces.resize(new_count);
     mReferenceValid = false; // the energy bookkeeping restarts on the new topology
 }
@@ -437,16 +448,17 @@ bool TetSolver::FixNode(int inNode, bool inFixed)
     return was_fixed != inFixed;
 }
 
-void TetSolver::FollowFramesAfterNewSystem()
+void TetSolver::FollowFramesAfterNewSystem(std::span<const std::uint8_t> inHeld)
 {
     // intent: mRotations has one frame per element from Create on (a crack keeps the elements)
     if (RefreshesFactor())
-        KeepFactorFrames(mRotations);
+        KeepFactorFrames(mRotations, inHeld);
 }
 
 void TetSolver::AnchorsChanged()
 {
-    FollowFramesAfterNewSystem();
+    const std::vector<std::uint8_t> held = mFactorHeld; // the same nodes: the ground holds what it held
+    FollowFramesAfterNewSystem(held);
     mPassEnergyValid = false; // the passes skip other elements now
 }
 
@@ -715,6 +727,10 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         HoldGroundNodes(ground, mFree, mNodeRestPositions, x0, h, scratch.mGroundHeld, mVelocities);
     }
     const std::uint8_t* held = ground.mEnabled ? scratch.mGroundHeld.data() : nullptr;
+    // What a refresh factors with (mFactorGroundFilter): the nodes held when it happens.
+    const std::span<const std::uint8_t> held_nodes = ground.mEnabled && mSettings.mFactorGroundFilter
+                                                         ? std::span<const std::uint8_t>(scratch.mGroundHeld)
+                                                         : std::span<const std::uint8_t>{};
     std::uint64_t products = 0;
 
     // Matrix-free system operator A, masked to the free nodes (one captured pointer: std::function keeps it
@@ -919,7 +935,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         // iterations it has cost add up to a refresh (mFactorRefreshByCost).
         if (refreshing && factored != nullptr && mSettings.mFactorRefreshByCost &&
             mRefreshLedger.ShouldRefresh(factored->GetRefreshCostInIterations()) &&
-            !RefreshFactor(*factored, input, mass_scale, stiffness_scale, true))
+            !RefreshFactor(*factored, input, mass_scale, stiffness_scale, held_nodes, true))
         {
             factored = nullptr;
             build_jacobi();
@@ -932,7 +948,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                               first_budget, scratch.mDeltaV, scratch.mCg, may_refresh ? first_budget : 0);
         if (may_refresh && !cg.mConverged && (cg.mIterations == first_budget || cg.mPredictedLong))
         {
-            if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale))
+            if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale, held_nodes))
             {
                 // Round-off failed both factorisations: block Jacobi at this linearisation from here on.
                 factored = nullptr;
@@ -1028,30 +1044,44 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
         // static one (mass scale 0) at rest. A breakable solver refactors after every crack and a refreshing
         // one at every refresh: both keep their elements' rest stiffness.
         const bool framed = inMassScale > 0.0 && RefreshesFactor();
-        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable() || RefreshesFactor(),
-                          framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale,
+                          mMaterial.IsBreakable() || RefreshesFactor(),
+                          framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{},
+                          framed ? FactorGround() : FactorGroundFilter{});
         ++mFactorizationCount;
     }
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames, bool inByCost)
+void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames, std::span<const std::uint8_t> inHeld,
+                                 bool inByCost)
 {
     // intent: the first change in a step keeps the step's start frames, which a restored step gets back
     if (!mFactorFramesSaved)
     {
         mSavedFactorFrames = mFactorFrames;
+        mSavedFactorHeld = mFactorHeld;
         mFactorFramesSaved = true;
     }
     mFactorFrames.assign(inFrames.begin(), inFrames.end());
+    mFactorHeld.assign(inHeld.begin(), inHeld.end());
     mRefreshLedger.FramesSet(inByCost);
 }
 
-bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
-                              double inMassScale, double inStiffnessScale, bool inByCost)
+FactorGroundFilter TetSolver::FactorGround() const
 {
-    KeepFactorFrames(mRotations, inByCost);
-    if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
+    if (!mSettings.mGround.mEnabled || !mSettings.mFactorGroundFilter ||
+        mFactorHeld.size() != mPositions.size())
+        return {};
+    return {mFactorHeld, mSettings.mGround.mNormal};
+}
+
+bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
+                              double inMassScale, double inStiffnessScale,
+                              std::span<const std::uint8_t> inHeld, bool inByCost)
+{
+    KeepFactorFrames(mRotations, inHeld, inByCost);
+    if (ioFactor.Refresh(inInput, mMasses, mFactorFrames, FactorGround()))
     {
         ++mFactorRefreshCount;
         return true;
@@ -1060,7 +1090,8 @@ bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElem
     // masses); should round-off still fail it, the rest factor, which factored before, takes over
     mFactorFrames.clear();
     ++mFactorizationCount;
-    if (!ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, true))
+    if (!ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, true, {},
+                             FactorGround()))
         return false;
     ioFactor.SetNodeRotations(mElementNodes, mRotations, true);
     return true;
@@ -1121,6 +1152,7 @@ public:
             // intent: the factor goes back to the step's start frames too, so the next attempt or step
             // repeats this one bit for bit
             s.mFactorFrames.swap(s.mSavedFactorFrames);
+            s.mFactorHeld.swap(s.mSavedFactorHeld);
             s.mFactorFramesSaved = false;
             s.mWorkspace.Get().mFactor.Invalidate();
         }
