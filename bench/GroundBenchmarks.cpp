@@ -126,10 +126,7 @@ Result<TetSolver> MakeDrivenBar(std::array<int, 2> inCells, bool inFilter, doubl
 
 void RunDrivenBar(BenchTable& ioTable, std::array<int, 2> inCells, int inSteps)
 {
-    // The filter on and off at the default CG tolerance and at 1e-9. Why both: the error against round-off
-    // at the default is that of the discrete decisions a loosely solved step makes (which nodes the ground
-    // holds to the step's end) and swings either way between runs of nearby settings; at 1e-9 it is the
-    // solver's.
+    // The filter on and off at the default CG tolerance and at 1e-9 (what a tighter solve buys each).
     constexpr int cSides = 4;
     const bool filter[cSides] = {true, false, true, false};
     const double cg_tolerance[cSides] = {TetSolverSettings{}.mCgRelativeTolerance,
