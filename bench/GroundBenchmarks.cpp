@@ -3,9 +3,6 @@
 // fem_ground: what a ground (TetSolverSettings::mGround) costs and saves. A wooden rail left hanging at one
 // end swings down under gravity; with the ground it lands, lies still and sleeps, without it swings through
 // where the ground would be for as long as its damping lets it. The two are stepped alternately (A, B, A, B).
-// And what the ground's filter in the factor (TetSolverSettings::mFactorGroundFilter) saves: a steel bar
-// driven along and into the ground, solved as a held prop's solver is, with the filter on and off, stepped
-// alternately; error against the same bar solved to round-off.
 #include "Benchmarks.h"
 
 #if defined(CRUMPLE_BENCH_FEM)
@@ -15,7 +12,6 @@
 #endif
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -84,122 +80,10 @@ Result<TetSolver> MakeRail(bool inGround)
     return solver;
 }
 
-// A steel bar 1 m x 0.1 m x 0.1 m of inCells[0] x inCells[1] x inCells[1] cells on the ground z = 0 under
-// gravity, with a held prop's refresh settings, sent sliding at 12 m/s with its top pushed into the ground at
-// 6 m/s (a bumper driving a fence rail down). CG to inCgTolerance; inTight: CG and Newton to round-off (the
-// reference).
-Result<TetSolver> MakeDrivenBar(std::array<int, 2> inCells, bool inFilter, double inCgTolerance, bool inTight)
-{
-    TetGridSettings grid;
-    grid.mSize = Vec3(1.0, 0.1, 0.1);
-    grid.mCellCount = {inCells[0], inCells[1], inCells[1]};
-    Result<TetMesh> mesh = TetGrid(grid);
-    if (!mesh)
-        return mesh.GetError();
-    FemMaterialSettings material;
-    material.mYoungsModulus = 2.0e11;
-    material.mDensity = 7850.0;
-    TetSolverSettings settings;
-    settings.mGravity = Vec3(0.0, 0.0, -9.81);
-    settings.mGround = GroundPlane{true, Vec3::UnitZ(), 0.0, 0.6};
-    settings.mFactorRefreshIterations = 6;
-    settings.mFactorRefreshByCost = true;
-    settings.mFactorGroundFilter = inFilter;
-    settings.mCgRelativeTolerance = inCgTolerance;
-    if (inTight)
-    {
-        settings.mCgRelativeTolerance = 1.0e-13;
-        settings.mCgMaxIterations = 100000;
-        settings.mImplicitTolerance = 1.0e-14;
-        settings.mImplicitMaxIterations = 40;
-    }
-    Result<TetSolver> solver = TetSolver::Create(mesh.Get(), material, settings);
-    if (!solver)
-        return solver;
-    std::vector<Vec3> velocities(solver.Get().GetVelocities().size());
-    for (std::size_t node = 0; node < velocities.size(); ++node)
-        velocities[node] = Vec3(12.0, 0.0, solver.Get().GetPositions()[node].z() > 0.05 ? -6.0 : 0.0);
-    if (Status set = solver.Get().SetVelocities(velocities); !set)
-        return set.GetError();
-    return solver;
-}
-
-void RunDrivenBar(BenchTable& ioTable, std::array<int, 2> inCells, int inSteps)
-{
-    // The filter on and off at the default CG tolerance and at 1e-9 (what a tighter solve buys each).
-    constexpr int cSides = 4;
-    const bool filter[cSides] = {true, false, true, false};
-    const double cg_tolerance[cSides] = {TetSolverSettings{}.mCgRelativeTolerance,
-                                         TetSolverSettings{}.mCgRelativeTolerance, 1.0e-9, 1.0e-9};
-    std::vector<Result<TetSolver>> sides;
-    for (int side = 0; side < cSides; ++side)
-    {
-        sides.push_back(MakeDrivenBar(inCells, filter[side], cg_tolerance[side], false));
-        if (!sides.back())
-        {
-            std::printf("fem_ground: could not build the driven bar\n");
-            return;
-        }
-    }
-    Result<TetSolver> reference = MakeDrivenBar(inCells, true, 1.0e-13, true);
-    if (!reference)
-    {
-        std::printf("fem_ground: could not build the driven bar's reference\n");
-        return;
-    }
-    std::vector<double> wall[cSides], cpu[cSides];
-    int iterations[cSides] = {}, solves[cSides] = {};
-    for (int step = 0; step < inSteps; ++step)
-    {
-        for (int side = 0; side < cSides; ++side)
-        {
-            TetSolver& solver = sides[side].Get();
-            const double cpu_start = ThreadCpuMs();
-            const auto wall_start = std::chrono::steady_clock::now();
-            const Result<TetStepResult> result = solver.Step(cStep);
-            wall[side].push_back(ElapsedMs(wall_start));
-            cpu[side].push_back(ThreadCpuMs() - cpu_start);
-            if (!result)
-            {
-                std::printf("fem_ground: driven bar step failed: %s\n", result.GetError().mMessage.c_str());
-                return;
-            }
-            iterations[side] += result.Get().mSolverIterations;
-            solves[side] += result.Get().mNewtonIterations;
-        }
-        if (!reference.Get().Step(cStep))
-        {
-            std::printf("fem_ground: driven bar reference step failed\n");
-            return;
-        }
-    }
-    const char* names[cSides] = {"factor_filtered", "factor_unfiltered", "factor_filtered_cg_1e-9",
-                                 "factor_unfiltered_cg_1e-9"};
-    for (int side = 0; side < cSides; ++side)
-    {
-        double error = 0.0;
-        for (std::size_t node = 0; node < reference.Get().GetPositions().size(); ++node)
-            error = std::max(
-                error,
-                (sides[side].Get().GetPositions()[node] - reference.Get().GetPositions()[node]).norm());
-        ioTable.Add({"fem_ground",
-                     "driven_steel_bar/" + std::to_string(sides[side].Get().GetElementNodes().size()) +
-                         "_tets/" + names[side],
-                     Median(wall[side]), error, "m_positions_vs_round_off",
-                     "cpu_ms_per_step=" + FormatExtra(Median(cpu[side])) + ";cg_iterations=" +
-                         std::to_string(iterations[side]) + ";solves=" + std::to_string(solves[side]) +
-                         ";refreshes=" + std::to_string(sides[side].Get().GetFactorRefreshCount()) +
-                         ";steps=" + std::to_string(inSteps)});
-    }
-}
-
 } // namespace
 
 void RunGroundBenchmarks(BenchTable& ioTable, const BenchOptions& inOptions)
 {
-    RunDrivenBar(ioTable, {10, 1}, inOptions.mQuick ? 30 : 120);
-    RunDrivenBar(ioTable, {40, 4}, inOptions.mQuick ? 10 : 60);
-
     Result<TetSolver> sides[2] = {MakeRail(true), MakeRail(false)};
     if (!sides[0] || !sides[1])
     {

@@ -17,11 +17,10 @@ bool TetFactoredPreconditioner::Matches(std::span<const TetIndices> inTets, std:
            std::equal(inTets.begin(), inTets.end(), mTets.begin(), mTets.end());
 }
 
-bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput,
-                                           std::span<const double> inMasses,
+bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
                                            std::span<const std::uint8_t> inFree, double inMassScale,
                                            double inStiffnessScale, bool inKeepElementStiffness,
-                                           std::span<const Quat> inFrames, const FactorGroundFilter& inGround)
+                                           std::span<const Quat> inFrames)
 {
     // Forget the old factor first: a failure leaves none.
     mFactored = false;
@@ -47,7 +46,6 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput,
     mFrames.assign(inFrames.begin(), inFrames.end());
     TetRestSystemBlocks(inInput, inMasses, mFreeIndex, inMassScale, inStiffnessScale, mBlocks,
                         inKeepElementStiffness ? &mElementStiffness : nullptr, mFrames);
-    ApplyGroundFilter(inGround);
     if (!mCholesky.Factor(free_count, mBlocks))
         return false;
     mRhs.assign(free_count, Vec3::Zero());
@@ -57,7 +55,7 @@ bool TetFactoredPreconditioner::Precompute(const TetElementPassInput& inInput,
 }
 
 bool TetFactoredPreconditioner::Refresh(const TetElementPassInput& inInput, std::span<const double> inMasses,
-                                        std::span<const Quat> inFrames, const FactorGroundFilter& inGround)
+                                        std::span<const Quat> inFrames)
 {
     if (!mFactored || inFrames.size() != mTets.size())
         return false;
@@ -65,56 +63,12 @@ bool TetFactoredPreconditioner::Refresh(const TetElementPassInput& inInput, std:
     mFrames.assign(inFrames.begin(), inFrames.end());
     TetRestSystemBlocks(inInput, inMasses, mFreeIndex, mMassScale, mStiffnessScale, mBlocks,
                         mKeepElementStiffness ? &mElementStiffness : nullptr, mFrames);
-    ApplyGroundFilter(inGround);
     // intent: the same connectivity and anchors give the same block sequence, so the analysis is reused
     if (!mCholesky.Refactor(static_cast<int>(mRhs.size()), mBlocks))
         return false;
     mNodeRotations.clear();
     mFactored = true;
     return true;
-}
-
-void TetFactoredPreconditioner::ApplyGroundFilter(const FactorGroundFilter& inGround)
-{
-    if (inGround.mHeld.size() != mFreeIndex.size())
-        return;                             // none held (or not this system's nodes)
-    mHeldFree.assign(mFreeIndex.size(), 0); // by free index; at most #N of them
-    bool any = false;
-    for (std::size_t node = 0; node < mFreeIndex.size(); ++node)
-        if (mFreeIndex[node] >= 0 && inGround.mHeld[node] != 0)
-        {
-            mHeldFree[static_cast<std::size_t>(mFreeIndex[node])] = 1;
-            any = true;
-        }
-    if (!any)
-        return;
-
-    // D's weights: the held normal's own stiffness n^T A_ii n, summed over the diagonal entries in order.
-    const Vec3& n = inGround.mNormal;
-    mHeldNormalStiffness.assign(mHeldFree.size(), 0.0);
-    for (const NodeBlock& block : mBlocks)
-        if (block.mRow == block.mColumn && mHeldFree[static_cast<std::size_t>(block.mRow)] != 0)
-            mHeldNormalStiffness[static_cast<std::size_t>(block.mRow)] += n.dot(block.mBlock * n);
-
-    // S_r B S_c on every entry (the filter is linear: the sums of filtered entries are the filtered sums);
-    // D added to each held node's first diagonal entry.
-    const Mat3 filter = Mat3::Identity() - n * n.transpose();
-    const Mat3 normal_normal = n * n.transpose();
-    for (NodeBlock& block : mBlocks)
-    {
-        const auto row = static_cast<std::size_t>(block.mRow);
-        const bool row_held = mHeldFree[row] != 0;
-        const bool column_held = mHeldFree[static_cast<std::size_t>(block.mColumn)] != 0;
-        if (row_held)
-            block.mBlock = filter * block.mBlock;
-        if (column_held)
-            block.mBlock = block.mBlock * filter;
-        if (row_held && block.mRow == block.mColumn)
-        {
-            block.mBlock += mHeldNormalStiffness[row] * normal_normal;
-            mHeldNormalStiffness[row] = 0.0; // added once
-        }
-    }
 }
 
 double TetFactoredPreconditioner::GetRefreshCostInIterations() const

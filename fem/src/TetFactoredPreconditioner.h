@@ -37,14 +37,6 @@ namespace crumple::fem
 /// Memory: the Cholesky factor (NodeBlockCholesky): GetFactorBlockCount() blocks of 9 doubles and an index;
 /// with frames, one quaternion per element.
 /// Not thread-safe: Apply() uses scratch held here.
-/// Nodes whose velocity along one normal the solve holds at zero (the ground's filter, S = I - n n^T at each
-/// held node: GroundPlane): the factored system is that of the filtered solve.
-struct FactorGroundFilter
-{
-    std::span<const std::uint8_t> mHeld; ///< #N, non-zero where the node is held; empty: none is
-    Vec3 mNormal = Vec3::UnitZ();        ///< Unit normal of the ground
-};
-
 class TetFactoredPreconditioner
 {
 public:
@@ -63,11 +55,9 @@ public:
     /// @param[in] inKeepElementStiffness  keep each element's rest stiffness for the next Precompute (a solver
     ///                                    that refactors after cracks: TetRestStiffnessCache); false drops it
     /// @param[in] inFrames          #T element frames F_e (unit quaternions), or empty for the rest frames
-    /// @param[in] inGround          held nodes whose normal the solve filters out (see ApplyGroundFilter)
     bool Precompute(const TetElementPassInput& inInput, std::span<const double> inMasses,
                     std::span<const std::uint8_t> inFree, double inMassScale, double inStiffnessScale,
-                    bool inKeepElementStiffness = false, std::span<const Quat> inFrames = {},
-                    const FactorGroundFilter& inGround = {});
+                    bool inKeepElementStiffness = false, std::span<const Quat> inFrames = {});
 
     /// Refactors A_F at new element frames inFrames (#T), with the connectivity, anchors, scales and element
     /// stiffness of the last Precompute(): the numeric factorisation only (NodeBlockCholesky::Refactor). The
@@ -75,9 +65,7 @@ public:
     /// when there is no factor to refresh or A_F is not positive definite.
     /// @param[in] inInput   the connectivity and rest data of the last Precompute()
     /// @param[in] inMasses  #N lumped masses (kg), as in the last Precompute()
-    /// @param[in] inGround  held nodes whose normal the solve filters out (see ApplyGroundFilter)
-    bool Refresh(const TetElementPassInput& inInput, std::span<const double> inMasses, std::span<const Quat> inFrames,
-                 const FactorGroundFilter& inGround = {});
+    bool Refresh(const TetElementPassInput& inInput, std::span<const double> inMasses, std::span<const Quat> inFrames);
 
     /// Forgets the factor: the next Matches() is false, so the owner precomputes again.
     void Invalidate()
@@ -114,16 +102,6 @@ public:
     LinearOperator3 AsOperator() const;
 
 private:
-    // Replaces the assembled A by S A S + D, S the ground's filter (I - n n^T at the held nodes, I elsewhere)
-    // and D = (n^T A_ii n) n n^T at each held node i. Why: the implicit solve with a ground is conjugate
-    // gradient on S A S over the filtered vectors (Baraff & Witkin 1998); preconditioned by A^-1 it converges
-    // only as far as A^-1 misses (S A S)^+, a rank-k difference for k held nodes (traced on the racing fence's
-    // pieces on the ground: 19-38 iterations after a refresh with 18-127 nodes held, 1 with none). S A S + D
-    // keeps the held normals apart from every other unknown, so on filtered vectors its inverse is exactly
-    // (S A S)^+ restricted to them, and D (the normal's own stiffness) keeps it positive definite. The block
-    // sequence is unchanged: a refresh with another held set reuses the analysis.
-    void ApplyGroundFilter(const FactorGroundFilter& inGround);
-
     NodeBlockCholesky mCholesky;
     bool mFactored = false;
     bool mAttempted = false;
@@ -141,8 +119,6 @@ private:
     std::vector<Quat> mFrames;        // #T, the frames F_e the factor was made at; empty at rest
     std::vector<Mat3> mNodeRotations; // #N, empty while all are identity
     std::vector<Eigen::Vector4d> mQuaternionSums; // #N scratch of SetNodeRotations
-    std::vector<std::uint8_t> mHeldFree;          // #free scratch of ApplyGroundFilter
-    std::vector<double> mHeldNormalStiffness;     // #free scratch of ApplyGroundFilter
 
     // Scratch of Apply(), #free, sized by Precompute().
     mutable std::vector<Vec3> mRhs;

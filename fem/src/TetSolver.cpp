@@ -360,7 +360,6 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
 {
     mForcesCached = false;
     const std::size_t new_count = inConnectivity.mNodeOrigin.size();
-    const std::size_t old_count = mPositions.size();
     std::vector<int> old_of_new(new_count, -1);
     for (std::size_t tet = 0; tet < mElementNodes.size(); ++tet)
         for (int corner = 0; corner < 4; ++corner)
@@ -398,17 +397,7 @@ void TetSolver::Reconnect(const FractureConnectivity& inConnectivity)
     mInverseMasses = std::move(inverse_masses);
     mFree = std::move(free);
     mElementActiveValid = false;
-    // The last solve's held nodes, renumbered: a crack on the ground keeps its pieces' nodes held.
-    std::vector<std::uint8_t> held;
-    if (const TetSolveScratch* scratch = mWorkspace.Find();
-        scratch != nullptr && mSettings.mGround.mEnabled && mSettings.mFactorGroundFilter &&
-        scratch->mGroundHeld.size() == old_count)
-    {
-        held.resize(new_count);
-        for (std::size_t node = 0; node < new_count; ++node)
-            held[node] = scratch->mGroundHeld[static_cast<std::size_t>(old_of_new[node])];
-    }
-    FollowFramesAfterNewSystem(held);
+    FollowFramesAfterNewSystem();
     mForces.resize(new_count);
     mReferenceValid = false; // the energy bookkeeping restarts on the new topology
 }
@@ -448,17 +437,16 @@ bool TetSolver::FixNode(int inNode, bool inFixed)
     return was_fixed != inFixed;
 }
 
-void TetSolver::FollowFramesAfterNewSystem(std::span<const std::uint8_t> inHeld)
+void TetSolver::FollowFramesAfterNewSystem()
 {
     // intent: mRotations has one frame per element from Create on (a crack keeps the elements)
     if (RefreshesFactor())
-        KeepFactorFrames(mRotations, inHeld);
+        KeepFactorFrames(mRotations);
 }
 
 void TetSolver::AnchorsChanged()
 {
-    const std::vector<std::uint8_t> held = mFactorHeld; // the same nodes: the ground holds what it held
-    FollowFramesAfterNewSystem(held);
+    FollowFramesAfterNewSystem();
     mPassEnergyValid = false; // the passes skip other elements now
 }
 
@@ -727,10 +715,6 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         HoldGroundNodes(ground, mFree, mNodeRestPositions, x0, h, scratch.mGroundHeld, mVelocities);
     }
     const std::uint8_t* held = ground.mEnabled ? scratch.mGroundHeld.data() : nullptr;
-    // What a refresh factors with (mFactorGroundFilter): the nodes held when it happens.
-    const std::span<const std::uint8_t> held_nodes = ground.mEnabled && mSettings.mFactorGroundFilter
-                                                         ? std::span<const std::uint8_t>(scratch.mGroundHeld)
-                                                         : std::span<const std::uint8_t>{};
     std::uint64_t products = 0;
 
     // Matrix-free system operator A, masked to the free nodes (one captured pointer: std::function keeps it
@@ -816,16 +800,6 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
     if (line_search)
         scratch.mLineStart.resize(node_count);
     bool converged = false;
-    // The ground's held nodes changed since the last solve (HoldCrossingNodes after it, ReleasePulledNodes
-    // at this iterate). With the filtered factor (mFactorGroundFilter) such an iterate is not converged,
-    // whatever its residual: the residual's normal part at a held node is read as the ground's impulse, so
-    // the test cannot see how far a node just held (its velocity set, not solved for) or just let go is from
-    // its neighbours' answer, and the friction reads those impulses. (The unfiltered factor's estimate of the
-    // remaining energy, inflated by the held normals it ignores, mostly kept such iterates from passing; the
-    // filtered one's, exact, passed them after one solve. Off, as before, so that recordings made before
-    // replay as they ran.)
-    const bool held_change_unconverged = mSettings.mFactorGroundFilter && refreshing;
-    bool held_changed = false;
     for (int iteration = 0; iteration <= mSettings.mImplicitMaxIterations; ++iteration)
     {
         // Forces, linearisation and elastic energy at the current iterate (x0 itself on the first pass). The
@@ -895,8 +869,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         // would pull: that node leaves it for the rest of the step.
         if (held != nullptr)
         {
-            if (ReleasePulledNodes(ground.mNormal, scratch.mResidual, scratch.mGroundHeld) > 0)
-                held_changed = true;
+            ReleasePulledNodes(ground.mNormal, scratch.mResidual, scratch.mGroundHeld);
             TakeGroundImpulses(ground.mNormal, scratch.mGroundHeld, scratch.mResidual,
                                scratch.mGroundImpulses);
         }
@@ -916,8 +889,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
             double residual_energy = 0.0;
             for (std::size_t node = 0; node < node_count; ++node)
                 residual_energy += 0.5 * scratch.mResidual[node].dot(scratch.mPreconditioned[node]);
-            if (!(held_change_unconverged && held_changed) &&
-                residual_energy <= std::min(mSettings.mImplicitTolerance * energy_scale, mCrackSafeEnergy))
+            if (residual_energy <= std::min(mSettings.mImplicitTolerance * energy_scale, mCrackSafeEnergy))
             {
                 converged = true;
                 break;
@@ -947,7 +919,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
         // iterations it has cost add up to a refresh (mFactorRefreshByCost).
         if (refreshing && factored != nullptr && mSettings.mFactorRefreshByCost &&
             mRefreshLedger.ShouldRefresh(factored->GetRefreshCostInIterations()) &&
-            !RefreshFactor(*factored, input, mass_scale, stiffness_scale, held_nodes, true))
+            !RefreshFactor(*factored, input, mass_scale, stiffness_scale, true))
         {
             factored = nullptr;
             build_jacobi();
@@ -960,7 +932,7 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                               first_budget, scratch.mDeltaV, scratch.mCg, may_refresh ? first_budget : 0);
         if (may_refresh && !cg.mConverged && (cg.mIterations == first_budget || cg.mPredictedLong))
         {
-            if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale, held_nodes))
+            if (!RefreshFactor(*factored, input, mass_scale, stiffness_scale))
             {
                 // Round-off failed both factorisations: block Jacobi at this linearisation from here on.
                 factored = nullptr;
@@ -987,8 +959,9 @@ void TetSolver::StepImplicit(double inDeltaTime, TetStepResult& ioResult)
                 mVelocities[node] += scratch.mDeltaV[node];
                 mPositions[node] = x0[node] + h * mVelocities[node];
             }
-        held_changed = held != nullptr && HoldCrossingNodes(ground, mFree, mNodeRestPositions, x0, h,
-                                                            scratch.mGroundHeld, mPositions, mVelocities) > 0;
+        if (held != nullptr)
+            HoldCrossingNodes(ground, mFree, mNodeRestPositions, x0, h, scratch.mGroundHeld, mPositions,
+                              mVelocities);
         ++ioResult.mNewtonIterations;
     }
     mElementWork += products * mActiveElementCount;
@@ -1055,44 +1028,30 @@ TetFactoredPreconditioner* TetSolver::FactoredRestSystem(const TetElementPassInp
         // static one (mass scale 0) at rest. A breakable solver refactors after every crack and a refreshing
         // one at every refresh: both keep their elements' rest stiffness.
         const bool framed = inMassScale > 0.0 && RefreshesFactor();
-        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale,
-                          mMaterial.IsBreakable() || RefreshesFactor(),
-                          framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{},
-                          framed ? FactorGround() : FactorGroundFilter{});
+        factor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, mMaterial.IsBreakable() || RefreshesFactor(),
+                          framed ? std::span<const Quat>(mFactorFrames) : std::span<const Quat>{});
         ++mFactorizationCount;
     }
     return factor.IsFactored() ? &factor : nullptr;
 }
 
-void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames, std::span<const std::uint8_t> inHeld,
-                                 bool inByCost)
+void TetSolver::KeepFactorFrames(std::span<const Quat> inFrames, bool inByCost)
 {
     // intent: the first change in a step keeps the step's start frames, which a restored step gets back
     if (!mFactorFramesSaved)
     {
         mSavedFactorFrames = mFactorFrames;
-        mSavedFactorHeld = mFactorHeld;
         mFactorFramesSaved = true;
     }
     mFactorFrames.assign(inFrames.begin(), inFrames.end());
-    mFactorHeld.assign(inHeld.begin(), inHeld.end());
     mRefreshLedger.FramesSet(inByCost);
 }
 
-FactorGroundFilter TetSolver::FactorGround() const
-{
-    if (!mSettings.mGround.mEnabled || !mSettings.mFactorGroundFilter ||
-        mFactorHeld.size() != mPositions.size())
-        return {};
-    return {mFactorHeld, mSettings.mGround.mNormal};
-}
-
 bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
-                              double inMassScale, double inStiffnessScale,
-                              std::span<const std::uint8_t> inHeld, bool inByCost)
+                              double inMassScale, double inStiffnessScale, bool inByCost)
 {
-    KeepFactorFrames(mRotations, inHeld, inByCost);
-    if (ioFactor.Refresh(inInput, mMasses, mFactorFrames, FactorGround()))
+    KeepFactorFrames(mRotations, inByCost);
+    if (ioFactor.Refresh(inInput, mMasses, mFactorFrames))
     {
         ++mFactorRefreshCount;
         return true;
@@ -1101,8 +1060,7 @@ bool TetSolver::RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElem
     // masses); should round-off still fail it, the rest factor, which factored before, takes over
     mFactorFrames.clear();
     ++mFactorizationCount;
-    if (!ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, true, {},
-                             FactorGround()))
+    if (!ioFactor.Precompute(inInput, mMasses, mFree, inMassScale, inStiffnessScale, true))
         return false;
     ioFactor.SetNodeRotations(mElementNodes, mRotations, true);
     return true;
@@ -1163,7 +1121,6 @@ public:
             // intent: the factor goes back to the step's start frames too, so the next attempt or step
             // repeats this one bit for bit
             s.mFactorFrames.swap(s.mSavedFactorFrames);
-            s.mFactorHeld.swap(s.mSavedFactorHeld);
             s.mFactorFramesSaved = false;
             s.mWorkspace.Get().mFactor.Invalidate();
         }

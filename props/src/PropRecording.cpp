@@ -35,10 +35,6 @@ constexpr std::uint32_t cCrackToleranceTag = 0x4B435243u;
 // so that every optional setting but the ground takes 12 bytes), written after the crack stress tolerance
 // only when on: a record without it was made before that policy, and replays without it.
 constexpr std::uint32_t cRefreshByCostTag = 0x54534352u;
-// Marks the ground's filter in the factor (TetSolverSettings::mFactorGroundFilter, "GFLT", then 1.0), written
-// after the refresh by cost only when on and the prop has a ground and a refreshed factor (where it acts): a
-// record without it was made before the factor knew of the ground, and replays with a factor that ignores it.
-constexpr std::uint32_t cGroundFilterTag = 0x544C4647u;
 // Marks a ground (TetSolverSettings::mGround, "GRND": normal, offset, friction), written last and only when
 // the prop has one: a record without it replays with none, as it ran.
 constexpr std::uint32_t cGroundTag = 0x444E5247u;
@@ -291,12 +287,6 @@ Result<std::vector<std::byte>> EncodePropSetup(const PropSetup& inSetup)
         writer.WriteU32(cRefreshByCostTag);
         writer.WriteDouble(1.0);
     }
-    if (inSetup.mSettings.mFactorGroundFilter && inSetup.mSettings.mGround.mEnabled &&
-        inSetup.mSettings.mFactorRefreshIterations > 0)
-    {
-        writer.WriteU32(cGroundFilterTag);
-        writer.WriteDouble(1.0);
-    }
     if (const fem::GroundPlane& ground = inSetup.mSettings.mGround; ground.mEnabled)
     {
         writer.WriteU32(cGroundTag);
@@ -346,9 +336,8 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
     setup.mSettings.mFactorRefreshIterations = 0;
     setup.mSettings.mCrackStressTolerance = std::numeric_limits<double>::infinity();
     setup.mSettings.mFactorRefreshByCost = false;
-    setup.mSettings.mFactorGroundFilter = false;
     if (!reader.Failed() && reader.Remaining() >= 8 &&
-        reader.Remaining() <= 8 + 12 + 12 + 12 + 12 + 4 + cGroundBytes)
+        reader.Remaining() <= 8 + 12 + 12 + 12 + 4 + cGroundBytes)
     {
         if (reader.ReadU32() != cRefreshSettingsTag)
             return MakeError(EError::CorruptData, "prop record: unknown trailing settings");
@@ -382,25 +371,17 @@ Result<PropSetup> DecodePropSetup(std::span<const std::byte> inBytes)
                 setup.mContactSpread = value;
             }
             else if (tag == cCrackToleranceTag && last_tag != cCrackToleranceTag &&
-                     last_tag != cRefreshByCostTag && last_tag != cGroundFilterTag)
+                     last_tag != cRefreshByCostTag)
             {
                 if (!std::isfinite(value) || value <= 0.0)
                     return MakeError(EError::CorruptData, "prop record: crack stress tolerance out of range");
                 setup.mSettings.mCrackStressTolerance = value;
             }
-            else if (tag == cRefreshByCostTag && last_tag != cRefreshByCostTag &&
-                     last_tag != cGroundFilterTag)
+            else if (tag == cRefreshByCostTag && last_tag != cRefreshByCostTag)
             {
                 if (value != 1.0)
                     return MakeError(EError::CorruptData, "prop record: factor refresh by cost is corrupt");
                 setup.mSettings.mFactorRefreshByCost = true;
-            }
-            else if (tag == cGroundFilterTag && last_tag != cGroundFilterTag)
-            {
-                if (value != 1.0)
-                    return MakeError(EError::CorruptData,
-                                     "prop record: the factor's ground filter is corrupt");
-                setup.mSettings.mFactorGroundFilter = true;
             }
             else
                 return MakeError(EError::CorruptData, "prop record: unknown trailing settings");

@@ -14,7 +14,6 @@ set(CRUMPLE_FEM_TET_TESTS
     fem/TetCoarseSpaceTest.cpp
     fem/TetContactMassTest.cpp
     fem/TetFactoredSolveTest.cpp
-    fem/TetFactorGroundFilterTest.cpp
     fem/TetFactorRefreshTest.cpp
     fem/TetEnergyTest.cpp
     fem/TetFenceTest.cpp

@@ -684,63 +684,6 @@ TEST_CASE("Props in a recording: the factor refresh by cost is recorded, a recor
 }
 
 TEST_CASE(
-    "Props in a recording: the factor's ground filter is recorded with a ground, a record written before "
-    "it replays without it",
-    "[props][replay]")
-{
-    common::WorldFixture fixture;
-    PropSetup setup = MakePropSetup(fixture.mWall, BrittlePanel()).Get();
-    setup.mSettings.mFactorRefreshIterations = 6;
-    setup.mSettings.mFactorRefreshByCost = true;
-    const auto filtered = [](const std::vector<std::byte>& inBytes)
-    { return DecodePropSetup(inBytes).Get().mSettings.mFactorGroundFilter; };
-
-    // Without a ground, or without refreshes, nothing is written (the filter does nothing there): the bytes
-    // of before.
-    setup.mSettings.mFactorGroundFilter = true;
-    const std::vector<std::byte> no_ground = EncodePropSetup(setup).Get();
-    setup.mSettings.mFactorGroundFilter = false;
-    CHECK(EncodePropSetup(setup).Get() == no_ground);
-    PropSetup never_refreshed = setup;
-    never_refreshed.mSettings.mFactorRefreshIterations = 0;
-    never_refreshed.mSettings.mGround.mEnabled = true;
-    const std::vector<std::byte> unrefreshed_off = EncodePropSetup(never_refreshed).Get();
-    never_refreshed.mSettings.mFactorGroundFilter = true;
-    CHECK(EncodePropSetup(never_refreshed).Get() == unrefreshed_off);
-
-    // With a ground: off writes nothing (a record made before the filter existed, which replays without
-    // it); on writes 12 bytes before the ground's, and reads back on.
-    setup.mSettings.mGround.mEnabled = true;
-    setup.mSettings.mGround.mOffset = -1.0;
-    const std::vector<std::byte> off = EncodePropSetup(setup).Get();
-    CHECK_FALSE(filtered(off));
-    setup.mSettings.mFactorGroundFilter = true;
-    const std::vector<std::byte> on = EncodePropSetup(setup).Get();
-    REQUIRE(on.size() == off.size() + 12);
-    CHECK(filtered(on));
-    CHECK(DecodePropSetup(on).Get().mSettings.mFactorRefreshByCost);
-    CHECK(DecodePropSetup(on).Get().mSettings.mGround.mEnabled);
-    const std::size_t ground = 4 + 5 * 8; // the ground's tag and bytes, last
-    CHECK(std::equal(off.end() - static_cast<std::ptrdiff_t>(ground), off.end(),
-                     on.end() - static_cast<std::ptrdiff_t>(ground)));
-
-    // Refused: a value other than 1, the tag twice, the refresh by cost after it (out of order).
-    const auto at_filter = on.end() - static_cast<std::ptrdiff_t>(ground) - 12;
-    std::vector<std::byte> two = on;
-    two[static_cast<std::size_t>(at_filter - on.begin()) + 11] = std::byte{0x40}; // 2.0
-    CHECK(DecodePropSetup(two).GetError().mCode == EError::CorruptData);
-    std::vector<std::byte> twice(on.begin(), at_filter + 12);
-    twice.insert(twice.end(), at_filter, at_filter + 12);
-    twice.insert(twice.end(), at_filter + 12, on.end());
-    CHECK(DecodePropSetup(twice).GetError().mCode == EError::CorruptData);
-    std::vector<std::byte> swapped(on.begin(), at_filter - 12);
-    swapped.insert(swapped.end(), at_filter, at_filter + 12);
-    swapped.insert(swapped.end(), at_filter - 12, at_filter);
-    swapped.insert(swapped.end(), at_filter + 12, on.end());
-    CHECK(DecodePropSetup(swapped).GetError().mCode == EError::CorruptData);
-}
-
-TEST_CASE(
     "Props in a recording: a prop on a ground replays bit for bit, without a ground the record is as before",
     "[props][replay]")
 {

@@ -30,7 +30,6 @@ namespace crumple::fem
 
 struct TetElementPassInput; // private to the solvers (src/TetElementPass.h)
 class TetFactoredPreconditioner; // private to the solver (src/TetFactoredPreconditioner.h)
-struct FactorGroundFilter;       // private to the solver (src/TetFactoredPreconditioner.h)
 
 /// What TetSolver::ContactEffectiveMass found.
 struct CRUMPLE_API TetContactMass
@@ -278,8 +277,7 @@ private:
     // mFactorRefreshIterations and refreshed anyway (nearly every step after a crack of the racing fence).
     // Set here, as solver state, and not when the factor is built, so that a copy, a replay and Prepare
     // factor at the same frames.
-    // inHeld (#N or empty): the ground's held nodes to factor with (mFactorHeld).
-    void FollowFramesAfterNewSystem(std::span<const std::uint8_t> inHeld = {});
+    void FollowFramesAfterNewSystem();
     // A node's anchoring changed (SetNodeFixed, SetNodesFixed): the factor's frames follow, and the last
     // pass's energy no longer counts the elements the passes now evaluate.
     void AnchorsChanged();
@@ -306,18 +304,13 @@ private:
     // (round-off of a merit of large cancelling terms).
     static constexpr int cMaxLineSearchHalvings = 4;
     static constexpr double cLineSearchSlack = 1.0e-12;
-    // mFactorFrames = inFrames and mFactorHeld = inHeld, the step's start ones kept for RestoreStepStart
-    // first; inByCost: a refresh mRefreshLedger asked for (its next solve judges it).
-    void KeepFactorFrames(std::span<const Quat> inFrames, std::span<const std::uint8_t> inHeld,
-                          bool inByCost = false);
-    // The ground filter the factor is built with: mFactorHeld where a ground is on and it fits the nodes.
-    FactorGroundFilter FactorGround() const;
-    // ioFactor refactored at the current element frames mRotations and the ground's held nodes inHeld (#N,
-    // or empty without a ground; the rest factor should that fail); false when both failed and ioFactor
-    // holds no factor. inByCost: asked for by mRefreshLedger.
+    // mFactorFrames = inFrames, the step's start frames kept for RestoreStepStart first; inByCost: a refresh
+    // mRefreshLedger asked for (its next solve judges it).
+    void KeepFactorFrames(std::span<const Quat> inFrames, bool inByCost = false);
+    // ioFactor refactored at the current element frames mRotations (the rest factor should that fail); false
+    // when both failed and ioFactor holds no factor. inByCost: asked for by mRefreshLedger.
     bool RefreshFactor(TetFactoredPreconditioner& ioFactor, const TetElementPassInput& inInput,
-                       double inMassScale, double inStiffnessScale, std::span<const std::uint8_t> inHeld,
-                       bool inByCost = false);
+                       double inMassScale, double inStiffnessScale, bool inByCost = false);
     // Gravity plus external force on each free node, zero on anchored ones (N).
     void LoadForces(std::vector<Vec3>& outForces) const;
     // Kinetic, elastic and external-potential energy and the content C at the current state; updates the
@@ -401,11 +394,6 @@ private:
     // continues bit for bit. Saved (once per step, when a refresh or crack first changes them) for a restore.
     std::vector<Quat> mFactorFrames;
     std::vector<Quat> mSavedFactorFrames;
-    // The ground's held nodes the factor filters (TetFactoredPreconditioner's FactorGroundFilter), set with
-    // mFactorFrames: those of the solve that refreshed it, or of the step before a crack, renumbered; empty:
-    // none. Solver state for the same reason, saved and restored with the frames.
-    std::vector<std::uint8_t> mFactorHeld;
-    std::vector<std::uint8_t> mSavedFactorHeld;
     bool mFactorFramesSaved = false;
     // What the factor's frames have cost since they were set (mFactorRefreshByCost); solver state like the
     // frames, saved at a step's start.

@@ -77,19 +77,6 @@ struct CRUMPLE_API TetSolverSettings
     /// default, and recordings made before it): only a long solve refreshes. The GPU solver, which has no
     /// factor, ignores it.
     bool mFactorRefreshByCost = false;
-    /// With mFactorRefreshIterations > 0 and a ground: the factor is that of the ground's filtered system
-    /// (the normal of each node the ground held in the solve that refreshed it kept out), so a refreshed
-    /// solve of a prop lying on the ground converges as fast as one of a prop in the air
-    /// (TetFactoredPreconditioner's FactorGroundFilter). Without it the factor ignores the ground: the solves
-    /// after a refresh of the racing fence's pieces on the ground took 19-38 iterations instead of 1, and a
-    /// steel bar of 3,200 tetrahedra driven into the ground 33 instead of 7.5 ms per step, 7.2e-4 instead of
-    /// 4.9e-9 m from the answer solved to round-off after 60 steps (crumple-bench --only fem_ground). With it
-    /// a Newton iterate at which the ground's held nodes changed is never taken as converged: the friction
-    /// reads the ground's impulses from the last iterate, and the filtered factor's exact estimate of the
-    /// remaining energy passed such iterates after one solve (the driven bar then ended 7.2e-3 m from the
-    /// round-off answer). On by default; recorded with a prop, and off for recordings made before it (they
-    /// replay as they ran).
-    bool mFactorGroundFilter = true;
     /// Implicit Euler: at most this many Newton iterations (linear solves) per step, >= 1. The first is the
     /// classic one-solve linearised step; further ones re-evaluate forces and rotations at the new positions,
     /// which a rotating body needs (one solve stretches it by ~(omega h)^2 / 2 per step). Reaching the limit
