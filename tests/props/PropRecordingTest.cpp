@@ -671,9 +671,9 @@ TEST_CASE("Props in a recording: the factor refresh by cost is recorded, a recor
     CHECK(DecodePropSetup(grounded).Get().mSettings.mGround.mEnabled);
 
     // Refused: a value other than 1, the tag given twice, the crack stress bound after it (out of order).
-    std::vector<std::byte> two = on;
-    two[two.size() - 1] = std::byte{0x40}; // 2.0
-    CHECK(DecodePropSetup(two).GetError().mCode == EError::CorruptData);
+    std::vector<std::byte> not_one = on;
+    not_one[not_one.size() - 1] = std::byte{0x40}; // 1.0 (0x3FF0...) becomes 0x40F0...: 65536.0
+    CHECK(DecodePropSetup(not_one).GetError().mCode == EError::CorruptData);
     std::vector<std::byte> twice = on;
     twice.insert(twice.end(), on.end() - 12, on.end());
     CHECK(DecodePropSetup(twice).GetError().mCode == EError::CorruptData);
