@@ -4,9 +4,9 @@
 // deformed meshes. Exit 0 on success, 2 on a bad file or arguments (nothing is written then).
 #include "ObjWriter.h"
 #include "MeshHash.h"
+#include "ThreadCpuTime.h"
 
 #include <crumple/base/FileBytes.h>
-#include <crumple/base/ThreadCpuClock.h>
 #include <crumple/base/Version.h>
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/plugin/ReplayDamage.h>
@@ -130,7 +130,7 @@ int main(int argc, char** argv)
     // Build every object once, before anything is written: a recording whose objects cannot be rebuilt is
     // refused and leaves no output.
     const auto replay_start = std::chrono::steady_clock::now();
-    const double replay_cpu_start = ThreadCpuSeconds();
+    const double replay_cpu_start = common::ThreadCpuMs();
     Result<std::vector<ReplayedObject>> objects = CreateReplayedObjects(replay.Get());
     const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start).count();
     if (!objects)
@@ -214,7 +214,7 @@ int main(int argc, char** argv)
                 }
         });
     const double replay_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start).count();
-    const double replay_cpu_ms = 1.0e3 * (ThreadCpuSeconds() - replay_cpu_start);
+    const double replay_cpu_ms = common::ThreadCpuMs() - replay_cpu_start;
     // intent: unreachable for a read file (DecodeReplay checks every collision), kept for the contract
     if (!applied)
     {
@@ -249,7 +249,7 @@ int main(int argc, char** argv)
     // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
     // recorded; each one's boundary is written as it ended, cracks and all.
     const auto props_start = std::chrono::steady_clock::now();
-    const double props_cpu_start = ThreadCpuSeconds();
+    const double props_cpu_start = common::ThreadCpuMs();
     // intent: a GPU prop replays on a device of its own (the context is made only if a GPU prop asks)
 #if defined(CRUMPLE_REPLAY_GPU)
     gpu::ComputeDeviceProvider devices;
@@ -264,7 +264,7 @@ int main(int argc, char** argv)
     Result<std::vector<props::ReplayedProp>> replayed_props =
         props::ReplayProps(replay.Get(), device_provider, jobs ? &jobs->Get() : nullptr);
     props_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - props_start).count();
-    props_cpu_ms = 1.0e3 * (ThreadCpuSeconds() - props_cpu_start);
+    props_cpu_ms = common::ThreadCpuMs() - props_cpu_start;
     if (!replayed_props)
     {
         std::fprintf(stderr, "crumple-replay: %s\n", replayed_props.GetError().mMessage.c_str());
