@@ -12,19 +12,30 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* inData, std::size_t inSize)
 {
     if (inSize < 1)
         return 0;
     static const std::array<const char*, 6> extensions{".obj", ".ply", ".off", ".stl", ".gltf", ".glb"};
-    static const std::filesystem::path folder = [] {
-        std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("crumple-fuzz-surface-" + std::to_string(static_cast<long>(getpid())));
-        std::filesystem::create_directories(path);
-        return path;
-    }();
-    const std::filesystem::path file = folder / (std::string("input") + extensions[inData[0] % extensions.size()]);
+    // intent: a folder of this process, removed when it exits (each corpus run left one behind before)
+    struct ProcessFolder
+    {
+        std::filesystem::path mPath = std::filesystem::temp_directory_path() /
+                                      ("crumple-fuzz-surface-" + std::to_string(static_cast<long>(getpid())));
+        pid_t mOwner = getpid();
+        ProcessFolder() { std::filesystem::create_directories(mPath); }
+        ~ProcessFolder()
+        {
+            std::error_code ignored;
+            if (getpid() == mOwner) // not in a forked child that exits normally
+                std::filesystem::remove_all(mPath, ignored);
+        }
+    };
+    static const ProcessFolder folder;
+    const std::filesystem::path file =
+        folder.mPath / (std::string("input") + extensions[inData[0] % extensions.size()]);
     {
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(inData + 1), static_cast<std::streamsize>(inSize - 1));
