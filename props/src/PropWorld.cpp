@@ -456,14 +456,23 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         }
         (void)mRecorder->WriteExtensions(static_cast<std::uint32_t>(EPropRecord::Loose), records);
     }
+    // intent: one SetNodesLeft per prop for all its pieces, in their order (the same nodes fixed in the same
+    // order as one call per piece): each call walks every element of the prop, and 56 pieces leaving the
+    // racing fence at once took 1.1 ms of the game's thread one call each
+    std::vector<std::vector<int>> left_nodes(mProps.size());
     for (const LooseFragment& piece : loose)
     {
         Prop& prop = mProps[piece.mProp.mValue];
         ++prop.mPiecesTaken;
-        (void)prop.mProp.SetNodesLeft(piece.mNodes); // the prop's own fragment nodes: cannot be refused
+        std::vector<int>& nodes = left_nodes[piece.mProp.mValue];
+        nodes.insert(nodes.end(), piece.mNodes.begin(), piece.mNodes.end());
         for (int element : piece.mElements)
             prop.mTakenElements[static_cast<std::size_t>(element)] = 1;
     }
+    for (std::size_t index = 0; index < mProps.size(); ++index)
+        if (!left_nodes[index].empty())
+            (void)mProps[index].mProp.SetNodesLeft(
+                left_nodes[index]); // its own fragments' nodes: cannot be refused
     // Every prop looked at has handed over all it had loose: settled until links break or anchors change.
     for (Prop& prop : mProps)
         if (mWorld->GetBodyState(prop.mBody) != nullptr)
