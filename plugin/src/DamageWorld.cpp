@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -173,11 +174,12 @@ Result<BodyId> DamageWorld::CreateBody(const BodyState& inState)
         slot.mState = CanonicalBodyState(inState);
         slot.mAlive = true;
         slot.mDispatchEachStep = false;
+        slot.mQuiet = false;
         return BodyId{index, slot.mGeneration};
     }
     if (mBodies.size() >= BodyId::cInvalid)
         return MakeError(EError::OutOfRange, "too many bodies");
-    mBodies.push_back({CanonicalBodyState(inState), true, 0, false, {}});
+    mBodies.push_back({CanonicalBodyState(inState), true, 0, false, {}, false});
     return BodyId{static_cast<std::uint32_t>(mBodies.size() - 1), 0};
 }
 
@@ -212,6 +214,8 @@ Status DamageWorld::RemoveBody(BodyId inBody)
         mFreeObjects.push_back(object.mValue);
     }
     slot.mObjects.clear();
+    mQuietBodies -= slot.mQuiet ? 1 : 0;
+    slot.mQuiet = false;
     slot.mAlive = false;
     ++slot.mGeneration;
     mFreeBodies.push_back(inBody.mValue);
@@ -239,6 +243,17 @@ Status DamageWorld::SetDispatchEachStep(BodyId inBody, bool inEachStep)
     if (!IsLive(inBody))
         return MakeError(EError::OutOfRange, "SetDispatchEachStep: body " + std::to_string(inBody.mValue) + " does not exist");
     mBodies[inBody.mValue].mDispatchEachStep = inEachStep;
+    return Status::Ok();
+}
+
+Status DamageWorld::SetQuiet(BodyId inBody, bool inQuiet)
+{
+    if (!IsLive(inBody))
+        return MakeError(EError::OutOfRange,
+                         "SetQuiet: body " + std::to_string(inBody.mValue) + " does not exist");
+    bool& quiet = mBodies[inBody.mValue].mQuiet;
+    mQuietBodies += (inQuiet ? 1 : 0) - (quiet ? 1 : 0);
+    quiet = inQuiet;
     return Status::Ok();
 }
 
@@ -343,6 +358,21 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t i = 0; i < inContacts.size(); ++i)
         if (Status valid = ValidateContact(inContacts[i], i); !valid)
             return valid;
+    // intent: the contacts of pairs with a body that is not quiet, in their order; a copy only when some
+    // pair is quiet
+    std::vector<ContactEvent> heard;
+    if (mQuietBodies > 0)
+    {
+        const auto quiet_pair = [&](const ContactEvent& inContact)
+        { return mBodies[inContact.mBodyA.mValue].mQuiet && mBodies[inContact.mBodyB.mValue].mQuiet; };
+        if (std::any_of(inContacts.begin(), inContacts.end(), quiet_pair))
+        {
+            heard.reserve(inContacts.size());
+            std::copy_if(inContacts.begin(), inContacts.end(), std::back_inserter(heard),
+                         [&](const ContactEvent& inContact) { return !quiet_pair(inContact); });
+            inContacts = heard;
+        }
+    }
     if (inContacts.empty())
         return Status::Ok(); // a step without contacts changes nothing (its pairs' memories expire later)
     if (!mSettings.mDeferImpulses)

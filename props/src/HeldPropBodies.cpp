@@ -114,7 +114,12 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
         HeldPiece held{std::move(piece), plugin::BodyId()};
         if (!held.mPiece.mDropped)
             if (Result<plugin::BodyId> body = mEngine.mCreatePieceBody(held.mPiece.mRigidBody.mBody); keep(body.IsValid() ? Status::Ok() : Status(body.GetError())))
+            {
                 held.mBody = body.Get();
+                if (mSettings.mQuietPieces)
+                    keep(mProps->GetWorld().SetQuiet(held.mBody,
+                                                     true)); // refused only for a body the engine did not add
+            }
         outUpdate.mPieces.push_back(std::move(held));
     }
 

@@ -75,14 +75,19 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
             return adapter.GetError();
         s.mAdapter = std::move(adapter).Get();
     }
-    // Crumple's handle of a body, when it is attached.
-    const auto add = [&s](btCollisionObject& ioObject, const std::string& inName) -> Result<BodyId>
+    // Crumple's handle of a body, when it is attached. The ground and the course's barriers are quiet
+    // (DamageWorld::SetQuiet), as the props' loose pieces are: pieces rattling on them make no collisions.
+    const auto add = [&s](btCollisionObject& ioObject, const std::string& inName,
+                          bool inQuiet) -> Result<BodyId>
     {
         if (s.mAdapter == nullptr)
             return BodyId{};
         Result<BodyId> body = s.mAdapter->AddBody(ioObject);
-        if (body)
-            s.mNames[body.Get()] = inName;
+        if (!body)
+            return body;
+        s.mNames[body.Get()] = inName;
+        if (Status quiet = s.mDamage->SetQuiet(body.Get(), inQuiet); !quiet)
+            return quiet.GetError();
         return body;
     };
 
@@ -91,7 +96,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     s.mGround = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, s.mGroundShape.get()));
     s.mGround->setFriction(btScalar(0.9));
     s.mWorld->addRigidBody(s.mGround.get());
-    if (Result<BodyId> added = add(*s.mGround, "ground"); !added)
+    if (Result<BodyId> added = add(*s.mGround, "ground", true); !added)
         return added.GetError();
 
     s.mBarrierShape = std::make_unique<btBoxShape>(ToBullet(RaceCourse::BarrierHalfExtents()));
@@ -103,7 +108,9 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
         // intent: held by the scene before anything can fail, so that its destructor takes it out of the world
         s.mWorld->addCollisionObject(barrier.get());
         s.mBarriers.push_back(std::move(barrier));
-        if (Result<BodyId> added = add(*s.mBarriers.back(), "barrier " + std::to_string(s.mBarriers.size())); !added)
+        if (Result<BodyId> added =
+                add(*s.mBarriers.back(), "barrier " + std::to_string(s.mBarriers.size()), true);
+            !added)
             return added.GetError();
     }
 
@@ -138,7 +145,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
         wheel.m_rollInfluence = 0.1f;
         wheel.m_maxSuspensionForce = 60000.0f; // Bullet's default (6,000 N) cannot hold a 1.2 t car landing
     }
-    Result<BodyId> car_body = add(*s.mCar, "racing car");
+    Result<BodyId> car_body = add(*s.mCar, "racing car", false);
     if (!car_body)
         return car_body.GetError();
     if (s.mDamage != nullptr)
@@ -159,7 +166,7 @@ Result<std::unique_ptr<BulletRaceScene>> BulletRaceScene::Create(const RaceScene
     parked_info.m_friction = 0.8f;
     s.mParked = std::make_unique<btRigidBody>(parked_info);
     s.mWorld->addRigidBody(s.mParked.get());
-    Result<BodyId> parked_body = add(*s.mParked, "parked car");
+    Result<BodyId> parked_body = add(*s.mParked, "parked car", false);
     if (!parked_body)
         return parked_body.GetError();
     if (s.mDamage == nullptr)

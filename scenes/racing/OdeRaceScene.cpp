@@ -113,6 +113,10 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
             return adapter.GetError();
         s.mAdapter = std::move(adapter).Get();
         s.mNames[s.mAdapter->GetEnvironment()] = "ground";
+        // intent: the ground and the course's barriers are quiet (DamageWorld::SetQuiet), as the props' loose
+        // pieces are: pieces rattling on them make no collisions
+        if (Status quiet = s.mDamage->SetQuiet(s.mAdapter->GetEnvironment(), true); !quiet)
+            return quiet.GetError();
     }
 
     dCreatePlane(s.mSpace, 0, 0, 1, 0);
@@ -129,6 +133,8 @@ Result<std::unique_ptr<OdeRaceScene>> OdeRaceScene::Create(const RaceSceneSettin
         Result<BodyId> added = s.mAdapter->AddStaticGeom(barrier);
         if (!added)
             return added.GetError();
+        if (Status quiet = s.mDamage->SetQuiet(added.Get(), true); !quiet)
+            return quiet.GetError();
         s.mNames[added.Get()] = "barrier " + std::to_string(s.mNames.size());
     }
 

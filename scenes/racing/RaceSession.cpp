@@ -315,12 +315,11 @@ Status RaceSession::Finish(DamageWorld& ioDamage, const DeformableObject& inCar,
     }
     if (Status written = inProps.WriteObjs(mOptions.mOut); !written)
         return written;
-    std::printf(
-        "%d collisions (%d of them of the props' pieces with the ground, the course or each other, not "
-        "listed); racing car deepest dent %.3f m, parked "
-        "car %.3f m; %d frames\n",
-        mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar), RaceLog::DeepestDent(inParked),
-        mFrames);
+    std::printf("%d collisions (%d of them of the props' pieces denting nothing, not listed; the pieces, the "
+                "ground and the course are quiet bodies: the pieces' contacts with them make none); racing "
+                "car deepest dent %.3f m, parked car %.3f m; %d frames\n",
+                mLog.GetCount(), mLog.GetUnlistedCount(), RaceLog::DeepestDent(inCar),
+                RaceLog::DeepestDent(inParked), mFrames);
     // A dent must never turn the surface over (tests/CMakeLists' racing checks read this line).
     const ffd::FfdDeformer& car = inCar.GetDeformer();
     const ffd::FfdDeformer& parked = inParked.GetDeformer();

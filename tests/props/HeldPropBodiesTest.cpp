@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -20,11 +21,15 @@ using namespace crumple::props;
 namespace
 {
 
-// The engine's side: every call counted and kept; piece bodies are numbered from 1000 (not world bodies: the
-// calls are what is tested). A body refused when mRefuseBodies.
+// The engine's side: every call counted and kept; each piece body is a body of the damage world, made from
+// the piece's settings as an adapter's CreateConvexBody does. A body refused when mRefuseBodies.
 struct CountingEngine
 {
+    explicit CountingEngine(DamageWorld& ioWorld) : mWorld(&ioWorld) {}
+
+    DamageWorld* mWorld;
     std::vector<ConvexBodySettings> mBodies;
+    std::vector<BodyId> mBodyIds; // the world's id of each body made
     std::vector<std::vector<std::vector<Vec3>>> mShapes;
     std::vector<Vec3> mVelocities;
     std::vector<BodyId> mVelocityBodies; // the body of each velocity given
@@ -32,14 +37,34 @@ struct CountingEngine
     bool mRefuseBodies = false;
     bool mRefuseShapes = false;
 
+    const ConvexBodySettings& BodyMade(BodyId inBody) const
+    {
+        const auto found = std::find(mBodyIds.begin(), mBodyIds.end(), inBody);
+        REQUIRE(found != mBodyIds.end());
+        return mBodies[static_cast<std::size_t>(found - mBodyIds.begin())];
+    }
+
     HeldPropEngine Calls()
     {
         return {.mCreatePieceBody =
                     [this](const ConvexBodySettings& inBody) -> Result<BodyId> {
                         if (mRefuseBodies)
                             return MakeError(EError::InvalidArgument, "the engine refused the piece");
-                        mBodies.push_back(inBody);
-                        return BodyId{static_cast<std::uint32_t>(999 + mBodies.size()), 0};
+                        BodyState state;
+                        state.mMass = inBody.mMass;
+                        state.mInverseInertiaWorld = inBody.WorldInertia().inverse();
+                        state.mTransform.mTranslation = inBody.mPosition;
+                        state.mTransform.mRotation = inBody.mOrientation;
+                        state.mCenterOfMass = inBody.mPosition;
+                        state.mLinearVelocity = inBody.mLinearVelocity;
+                        state.mAngularVelocity = inBody.mAngularVelocity;
+                        Result<BodyId> made = mWorld->CreateBody(state);
+                        if (made)
+                        {
+                            mBodies.push_back(inBody);
+                            mBodyIds.push_back(made.Get());
+                        }
+                        return made;
                     },
                 .mSetPropPieces =
                     [this](BodyId, const std::vector<std::vector<Vec3>>& inPieces) -> Status {
@@ -83,7 +108,7 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-    CountingEngine engine;
+    CountingEngine engine(fixture.mWorld);
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls(), {.mShapeCellSize = 0.5, .mShapeTolerance = 0.005, .mMinPieceMass = 0.0}).Get();
 
     // The first update gives the prop's shape, whatever the step did.
@@ -126,7 +151,8 @@ TEST_CASE("HeldPropBodies: the struck members' velocity, loose pieces as bodies 
                 double mass = 0.0;
                 for (int node : piece.mPiece.mNodes)
                     mass += prop.GetMasses()[static_cast<std::size_t>(node)];
-                const ConvexBodySettings& body = engine.mBodies[piece.mBody.mValue - 1000];
+                const ConvexBodySettings& body = engine.BodyMade(piece.mBody);
+                CHECK(fixture.mWorld.IsQuiet(piece.mBody)); // HeldPropSettings::mQuietPieces' default
                 CHECK(body.mMass == Approx(mass).epsilon(1e-9));
                 CHECK(body.mMass == piece.mPiece.mRigidBody.mBody.mMass);
             }
@@ -171,7 +197,7 @@ TEST_CASE("HeldPropBodies refuses missing engine calls and bad settings, an engi
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-    CountingEngine engine;
+    CountingEngine engine(fixture.mWorld);
 
     HeldPropEngine no_bodies = engine.Calls();
     no_bodies.mCreatePieceBody = nullptr;
@@ -237,7 +263,7 @@ TEST_CASE("HeldPropBodies gives a shape the engine refused again at the next upd
     common::WorldFixture fixture;
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-    CountingEngine engine;
+    CountingEngine engine(fixture.mWorld);
     HeldPropBodies held = HeldPropBodies::Create(*props, engine.Calls()).Get();
     engine.mRefuseShapes = true;
     HeldPropUpdate update;
@@ -264,7 +290,7 @@ TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), an
     std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld, {.mContactMass = true}).Get();
     const PropId wall = props->AddProp(fixture.mWall, test::WeakPanel()).Get();
     const PropId crate = props->AddProp(fixture.mFloor, test::WeakPanel()).Get();
-    CountingEngine engine;
+    CountingEngine engine(fixture.mWorld);
     HeldPropEngine calls = engine.Calls();
     calls.mIsHeld = [&](BodyId inBody) { return inBody == fixture.mWall; };
     HeldPropBodies held = HeldPropBodies::Create(*props, std::move(calls), {.mShapeCellSize = 0.5}).Get();

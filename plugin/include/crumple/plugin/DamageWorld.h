@@ -77,6 +77,15 @@ public:
     /// a hit before the engine goes on (props::PropWorld sets it for props on bodies the engine moves). Off
     /// for every body at first. Refused for an unknown body.
     Status SetDispatchEachStep(BodyId inBody, bool inEachStep);
+    /// Contacts between two quiet bodies are dropped by SubmitContacts once validated: no impulse, collision,
+    /// listener call or recording, and no cost beyond that check. For what nothing dents and no listener
+    /// needs: a prop's loose pieces and the static world they rattle on (props::HeldPropBodies makes its
+    /// pieces quiet unless told otherwise; the game says which of its bodies are). A pair with one body that
+    /// is not quiet (a car, a prop's held body) is solved as before. Off for every body at first; a collision
+    /// of the pair already open closes as usual. Refused for an unknown body.
+    Status SetQuiet(BodyId inBody, bool inQuiet);
+    /// Whether the body is quiet (SetQuiet); false for an unknown body.
+    bool IsQuiet(BodyId inBody) const { return IsLive(inBody) && mBodies[inBody.mValue].mQuiet; }
     /// Removes a body, its deformable objects and its open collisions. Their ids are refused from then on
     /// (their slots are reused with the next generation).
     Status RemoveBody(BodyId inBody);
@@ -99,7 +108,8 @@ public:
     std::size_t GetObjectSlotCount() const { return mObjects.size(); }
 
     /// Takes one engine step's contacts: validates all of them (known bodies, A != B, finite values, unit
-    /// normal), moves them onto the surfaces, solves the impulses of each body pair's contacts of the same
+    /// normal), drops those between two quiet bodies (SetQuiet), moves the others onto the surfaces, solves
+    /// the impulses of each body pair's contacts of the same
     /// time (within 1e-9 s) together, and groups the closing ones into collisions. Submit a step's contacts
     /// in one call where you can: with a step and DamageWorldSettings::mCountImpactOnce, contacts of a pair
     /// for a step already submitted (a game that submits per manifold) are solved from what the earlier
@@ -177,6 +187,7 @@ private:
         std::uint32_t mGeneration = 0; ///< Of the body that holds (or last held) the slot
         bool mDispatchEachStep = false;
         std::vector<ObjectId> mObjects;
+        bool mQuiet = false;
     };
     struct ObjectSlot
     {
@@ -298,6 +309,7 @@ private:
     std::vector<ImpactMemory> mImpactMemories; ///< Pairs that touched at the last step, see ImpactMemory
     std::vector<Submission> mPending;          ///< mDeferImpulses: what the next Update's task solves
     std::vector<std::uint8_t> mNamedScratch;   ///< SnapshotBodies' flag per body slot, all 0 between calls
+    std::size_t mQuietBodies = 0;              ///< Live bodies that are quiet: none, and nothing is checked
     /// mDeferImpulses: the time of the last Update (with a finite time), which handed its submissions to the
     /// task; the next Update closes collisions at it
     double mHandedOverAt = -std::numeric_limits<double>::infinity();

@@ -170,6 +170,7 @@ public:
     }
     /// The damage world the props are in
     const plugin::DamageWorld& GetWorld() const { return *mWorld; }
+    plugin::DamageWorld& GetWorld() { return *mWorld; }
     /// The prop bound to inBody, or an invalid id
     PropId FindProp(plugin::BodyId inBody) const;
     /// Number of props added so far, removed ones included (the next AddProp's id)
