@@ -214,7 +214,8 @@ Status DamageWorld::RemoveBody(BodyId inBody)
         mFreeObjects.push_back(object.mValue);
     }
     slot.mObjects.clear();
-    mQuietBodies -= slot.mQuiet ? 1 : 0;
+    if (slot.mQuiet)
+        --mQuietBodies;
     slot.mQuiet = false;
     slot.mAlive = false;
     ++slot.mGeneration;
@@ -252,7 +253,8 @@ Status DamageWorld::SetQuiet(BodyId inBody, bool inQuiet)
         return MakeError(EError::OutOfRange,
                          "SetQuiet: body " + std::to_string(inBody.mValue) + " does not exist");
     bool& quiet = mBodies[inBody.mValue].mQuiet;
-    mQuietBodies += (inQuiet ? 1 : 0) - (quiet ? 1 : 0);
+    if (inQuiet != quiet)
+        inQuiet ? ++mQuietBodies : --mQuietBodies;
     quiet = inQuiet;
     return Status::Ok();
 }
@@ -358,19 +360,18 @@ Status DamageWorld::SubmitContacts(std::span<const ContactEvent> inContacts, dou
     for (std::size_t i = 0; i < inContacts.size(); ++i)
         if (Status valid = ValidateContact(inContacts[i], i); !valid)
             return valid;
-    // intent: the contacts of pairs with a body that is not quiet, in their order; a copy only when some
-    // pair is quiet
-    std::vector<ContactEvent> heard;
+    // intent: the contacts of pairs with a body that is not quiet, in their order, copied (into a buffer kept
+    // between calls) only when some pair is quiet
     if (mQuietBodies > 0)
     {
         const auto quiet_pair = [&](const ContactEvent& inContact)
         { return mBodies[inContact.mBodyA.mValue].mQuiet && mBodies[inContact.mBodyB.mValue].mQuiet; };
         if (std::any_of(inContacts.begin(), inContacts.end(), quiet_pair))
         {
-            heard.reserve(inContacts.size());
-            std::copy_if(inContacts.begin(), inContacts.end(), std::back_inserter(heard),
+            mHeardScratch.clear();
+            std::copy_if(inContacts.begin(), inContacts.end(), std::back_inserter(mHeardScratch),
                          [&](const ContactEvent& inContact) { return !quiet_pair(inContact); });
-            inContacts = heard;
+            inContacts = mHeardScratch;
         }
     }
     if (inContacts.empty())

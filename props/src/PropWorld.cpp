@@ -459,7 +459,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
     // intent: one SetNodesLeft per prop for all its pieces, in their order (the same nodes fixed in the same
     // order as one call per piece): each call walks every element of the prop, and 56 pieces leaving the
     // racing fence at once took 1.1 ms of the game's thread one call each
-    std::vector<std::vector<int>> left_nodes(mProps.size());
+    std::vector<std::vector<int>> left_nodes(loose.empty() ? 0 : mProps.size());
     for (const LooseFragment& piece : loose)
     {
         Prop& prop = mProps[piece.mProp.mValue];
@@ -469,7 +469,7 @@ Result<std::vector<LooseFragment>> PropWorld::TakeLooseFragments(double inMinMas
         for (int element : piece.mElements)
             prop.mTakenElements[static_cast<std::size_t>(element)] = 1;
     }
-    for (std::size_t index = 0; index < mProps.size(); ++index)
+    for (std::size_t index = 0; index < left_nodes.size(); ++index)
         if (!left_nodes[index].empty())
             (void)mProps[index].mProp.SetNodesLeft(
                 left_nodes[index]); // its own fragments' nodes: cannot be refused

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "ScratchDirectory.h"
 
+#include <cstdlib>
 #include <string>
 #include <system_error>
 
@@ -27,7 +28,8 @@ class ProcessFolder
     ProcessFolder& operator=(const ProcessFolder&) = delete;
     ~ProcessFolder()
     {
-        if (::getpid() != mOwner)
+        // intent: CRUMPLE_KEEP_SCRATCH keeps what a failed test wrote (recordings, meshes) to look at
+        if (::getpid() != mOwner || std::getenv("CRUMPLE_KEEP_SCRATCH") != nullptr)
             return;
         std::error_code ignored; // nothing to report to at exit; a folder left behind is harmless
         std::filesystem::remove_all(mPath, ignored);

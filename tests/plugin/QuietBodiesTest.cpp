@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The Crumple authors
 // SPDX-License-Identifier: MIT
+#include "ThreadJobSystem.h"
 #include "WorldFixture.h"
 
 #include <catch2/catch.hpp>
@@ -61,9 +62,9 @@ std::vector<ContactEvent> CarOnWall(const WorldFixture& inFixture, double inTime
 
 // One step of the car hitting the wall and the piece landing, in one submission with the piece's contacts
 // around the car's; the collisions it dispatches. With inQuiet the floor, the wall and the piece are quiet.
-std::vector<Collision> CarAndPiece(bool inQuiet)
+std::vector<Collision> CarAndPiece(bool inQuiet, const DamageWorldSettings& inSettings = {})
 {
-    WorldFixture fixture;
+    WorldFixture fixture(4000, {8, 6, 6}, inSettings);
     CollisionList listener;
     fixture.mWorld.AddListener(&listener);
     const BodyId piece = fixture.mWorld.CreateBody(FallingPiece()).Get();
@@ -109,6 +110,19 @@ TEST_CASE("Quiet bodies: contacts between two make no collision, those with a bo
     }
     CHECK(quiet[0].mCrushEnergyA == car_hit.mCrushEnergyA);
     CHECK(quiet[0].mCrushEnergyB == car_hit.mCrushEnergyB);
+
+    // With the impulses solved on the dents' task (the quiet contacts are dropped before they wait for it):
+    // the same one collision, the same bits.
+    const common::ThreadJobSystem jobs(2);
+    DamageWorldSettings deferred;
+    deferred.mJobs = &jobs.Get();
+    deferred.mDeferDents = true;
+    deferred.mDeferImpulses = true;
+    const std::vector<Collision> quiet_deferred = CarAndPiece(true, deferred);
+    REQUIRE(quiet_deferred.size() == 1);
+    REQUIRE(quiet_deferred[0].mContacts.size() == car_hit.mContacts.size());
+    for (std::size_t i = 0; i < car_hit.mContacts.size(); ++i)
+        CHECK(quiet_deferred[0].mContacts[i].mImpulse == car_hit.mContacts[i].mImpulse);
 }
 
 TEST_CASE("Quiet bodies: a step of quiet pairs only does nothing, and quietness is per live body", "[plugin]")

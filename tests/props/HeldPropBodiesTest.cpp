@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 
 using namespace crumple;
 using namespace crumple::plugin;
@@ -307,4 +309,74 @@ TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), an
     for (const BodyId& body : engine.mVelocityBodies)
         CHECK(body == fixture.mWall);
     CHECK(engine.mVelocities.back() == props->GetContactVelocity(wall));
+}
+
+namespace
+{
+
+// Hard hits on the panel until an Update hands pieces over: that Update's status and pieces.
+std::pair<Status, std::vector<HeldPiece>> HitUntilPieces(common::WorldFixture& ioFixture, PropWorld& ioProps,
+                                                         HeldPropBodies& ioHeld)
+{
+    HeldPropUpdate update;
+    for (int hit = 0; hit < 12; ++hit)
+    {
+        Hit(ioFixture, hit);
+        for (int step = 0; step < 10; ++step)
+        {
+            const Status status = ioHeld.Update(ioProps.Step(1.0 / 120.0).Get(), update);
+            if (!update.mPieces.empty())
+                return {status, update.mPieces};
+        }
+    }
+    return {Status::Ok(), {}};
+}
+
+} // namespace
+
+TEST_CASE(
+    "HeldPropBodies: pieces stay loud with mQuietPieces off, and a piece body the world does not know is "
+    "kept, loud, with the refusal returned",
+    "[props]")
+{
+    {
+        common::WorldFixture fixture;
+        std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+        (void)props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+        CountingEngine engine(fixture.mWorld);
+        HeldPropEngine calls = engine.Calls();
+        calls.mSetHeldMass = nullptr;
+        HeldPropBodies held =
+            HeldPropBodies::Create(*props, calls, {.mMinPieceMass = 0.0, .mQuietPieces = false}).Get();
+        const auto [status, pieces] = HitUntilPieces(fixture, *props, held);
+        REQUIRE(status.IsValid());
+        REQUIRE_FALSE(pieces.empty());
+        for (const HeldPiece& piece : pieces)
+        {
+            REQUIRE(piece.mBody.IsValid());
+            CHECK_FALSE(fixture.mWorld.IsQuiet(piece.mBody));
+        }
+    }
+    {
+        // The engine's bodies are numbered past the world's: SetQuiet refuses them.
+        common::WorldFixture fixture;
+        std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
+        (void)props->AddProp(fixture.mWall, test::WeakPanel()).Get();
+        CountingEngine engine(fixture.mWorld);
+        HeldPropEngine calls = engine.Calls();
+        calls.mSetHeldMass = nullptr;
+        std::uint32_t made = 0;
+        calls.mCreatePieceBody = [&](const ConvexBodySettings&) -> Result<BodyId> {
+            return BodyId{1000 + made++, 0};
+        };
+        HeldPropBodies held = HeldPropBodies::Create(*props, calls, {.mMinPieceMass = 0.0}).Get();
+        const auto [status, pieces] = HitUntilPieces(fixture, *props, held);
+        REQUIRE_FALSE(pieces.empty());
+        CHECK(status.GetError().mCode == EError::OutOfRange);
+        for (const HeldPiece& piece : pieces)
+        {
+            CHECK(piece.mBody.mValue >= 1000u);
+            CHECK_FALSE(fixture.mWorld.IsQuiet(piece.mBody));
+        }
+    }
 }

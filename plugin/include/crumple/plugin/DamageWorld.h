@@ -78,11 +78,14 @@ public:
     /// for every body at first. Refused for an unknown body.
     Status SetDispatchEachStep(BodyId inBody, bool inEachStep);
     /// Contacts between two quiet bodies are dropped by SubmitContacts once validated: no impulse, collision,
-    /// listener call or recording, and no cost beyond that check. For what nothing dents and no listener
-    /// needs: a prop's loose pieces and the static world they rattle on (props::HeldPropBodies makes its
-    /// pieces quiet unless told otherwise; the game says which of its bodies are). A pair with one body that
-    /// is not quiet (a car, a prop's held body) is solved as before. Off for every body at first; a collision
-    /// of the pair already open closes as usual. Refused for an unknown body.
+    /// listener call or recording (what is left is a check per contact). For what nothing dents and no
+    /// listener needs: a prop's loose pieces and the static world they rattle on (props::HeldPropBodies makes
+    /// its pieces quiet unless told otherwise; the game says which of its bodies are). A pair with one body
+    /// that is not quiet (a car, a prop's held body) is solved as before, bit for bit. A prop on a quiet body
+    /// hears nothing of its contacts with other quiet bodies. Off for every body at first. Takes effect
+    /// from the next SubmitContacts: contacts submitted before (waiting for their task with
+    /// DamageWorldSettings::mDeferImpulses) and a collision of the pair already open go on as usual. Refused
+    /// for an unknown body.
     Status SetQuiet(BodyId inBody, bool inQuiet);
     /// Whether the body is quiet (SetQuiet); false for an unknown body.
     bool IsQuiet(BodyId inBody) const { return IsLive(inBody) && mBodies[inBody.mValue].mQuiet; }
@@ -310,6 +313,7 @@ private:
     std::vector<Submission> mPending;          ///< mDeferImpulses: what the next Update's task solves
     std::vector<std::uint8_t> mNamedScratch;   ///< SnapshotBodies' flag per body slot, all 0 between calls
     std::size_t mQuietBodies = 0;              ///< Live bodies that are quiet: none, and nothing is checked
+    std::vector<ContactEvent> mHeardScratch;   ///< SubmitContacts' contacts of pairs not both quiet
     /// mDeferImpulses: the time of the last Update (with a finite time), which handed its submissions to the
     /// task; the next Update closes collisions at it
     double mHandedOverAt = -std::numeric_limits<double>::infinity();

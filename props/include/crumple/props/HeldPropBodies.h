@@ -20,7 +20,8 @@ namespace crumple::props
 /// The engine calls HeldPropBodies makes: an adapter's, bound by the game (ODE's need its world and space).
 struct CRUMPLE_API HeldPropEngine
 {
-    /// BulletAdapter / OdeAdapter::CreateConvexBody: a loose piece's rigid body. Required.
+    /// BulletAdapter / OdeAdapter::CreateConvexBody: a loose piece's rigid body, a body of the prop world's
+    /// damage world (as the adapters' are: HeldPropSettings::mQuietPieces makes it quiet there). Required.
     std::function<Result<plugin::BodyId>(const plugin::ConvexBodySettings&)> mCreatePieceBody;
     /// SetPropPieces: a held body's new collision shape (body frame). Required.
     std::function<Status(plugin::BodyId, const std::vector<std::vector<Vec3>>&)> mSetPropPieces;
@@ -49,11 +50,10 @@ struct CRUMPLE_API HeldPropSettings
     double mShapeTolerance = 0.01; ///< A held body's shape follows its FEM to this (m, >= 0): TakeChangedShape
     double mMinPieceMass = 0.05;   ///< Lighter loose pieces leave without a body (kg, >= 0): TakeLooseFragments
     /// Loose pieces' bodies are quiet (plugin::DamageWorld::SetQuiet): their contacts with each other and
-    /// with the game's quiet bodies (mark the ground and the static course so) make no collision and cost
-    /// nothing (the threaded Bullet racing session: 907 of its 984 collisions were pieces on the ground, the
-    /// course or each other). Off: every such contact is solved and reaches the listeners (game audio of
-    /// rattling debris). A piece meeting a body that is not quiet (a car, a prop) makes its collision either
-    /// way.
+    /// with the game's quiet bodies (mark the ground and the static course so) make no collision (in the
+    /// threaded Bullet racing session 831 of its 984 collisions were such pairs). Off: every such contact is
+    /// solved and reaches the listeners (game audio of rattling debris). A piece meeting a body that is not
+    /// quiet (a car, a prop) makes its collision either way.
     bool mQuietPieces = true;
 };
 
@@ -97,7 +97,8 @@ public:
     /// After each PropWorld::Step (inStepped is its report; once per step: pieces and shapes are looked at
     /// only after a step in which a prop moved): the three things above, in PropId order; outUpdate says what
     /// was done. An engine call that fails does not stop the others (a piece already left its prop and the
-    /// engine holds what it made): the first failure is returned, its piece left without a body; a refused
+    /// engine holds what it made): the first failure is returned, its piece left without a body (a body the
+    /// damage world does not know, which SetQuiet refuses, stays the piece's, not quiet); a refused
     /// shape is given again at the next Update. Every prop of the world must be a prop body of the engine;
     /// one that is not held (a free or static prop body) must be named by HeldPropEngine::mIsHeld, or the
     /// engine refuses its held velocity at every step. A prop removed (PropWorld::RemoveProp) whose held body
