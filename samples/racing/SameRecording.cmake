@@ -10,6 +10,10 @@
 # tasks inline and on 2 threads: byte-identical again, and replayed. Then the impulses on the dents' task too
 # (--defer-impulses: the props hear of a hit a step later still, another run), inline and on 2 threads:
 # byte-identical, and replayed.
+
+# intent: every output made afresh (a file left by an earlier run would pass for one this run did not write)
+file(REMOVE_RECURSE ${OUT})
+
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_QUIET)
     if(NOT code EQUAL 0)
@@ -41,9 +45,11 @@ foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
     expect_same(${OUT}/inline/${file} ${OUT}/deferred/${file} "${file} differs between inline and deferred dents")
 endforeach()
 expect_replayed(inline replayed "")
-# With --threads 2 the same bytes again: the option is taken, though these props (4,000 and 420 tetrahedra)
-# are too small to split their passes (test_props replays a 4,500-tetrahedron panel that does).
+# With --threads 2 (the props replayed on a thread of their own beside the cars) and 3 (their element passes
+# on 2 workers too, though these props, 4,000 and 420 tetrahedra, are too small to split them: test_props
+# replays a 4,500-tetrahedron panel that does) the same bytes again.
 expect_replayed(inline replayed_2_threads " (replayed on 2 threads)" --threads 2)
+expect_replayed(inline replayed_3_threads " (replayed on 3 threads)" --threads 3)
 
 # A mode whose tasks run inline (--threads 1) and on 2 threads: the same bytes, and its recording replays.
 function(same_on_two_threads name what)

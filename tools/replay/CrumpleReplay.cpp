@@ -11,13 +11,7 @@
 #include <crumple/ffd/BoundingBox.h>
 #include <crumple/plugin/ReplayDamage.h>
 #if defined(CRUMPLE_REPLAY_PROPS)
-#include "TetSurface.h"
-#include "ThreadJobSystem.h"
-
-#include <crumple/props/PropRecording.h>
-#if defined(CRUMPLE_REPLAY_GPU)
-#include <crumple/gpu/ComputeDevice.h>
-#endif
+#include "PropsReplay.h"
 #endif
 
 #include <algorithm>
@@ -26,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -61,7 +56,8 @@ int main(int argc, char** argv)
                 "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n"
                 "  --colour-max M  the dent colour scale's top (m; default: each object's deepest dent at\n"
                 "              the end, rounded up to 1, 2, 2.5 or 5 x 10^k, as crumple-crash does)\n"
-                "  --threads N  the props' FEM element passes on N threads (1-256, default 1): the same\n"
+                "  --threads N  the props' FEM element passes on N threads (1-256, default 1), and above 1\n"
+                "              the props replayed on a thread of their own beside the objects: the same\n"
                 "              results bit for bit, sooner on a machine with the cores\n");
             return 0;
         }
@@ -197,6 +193,24 @@ int main(int argc, char** argv)
         for (const ReplayedObject& object : objects.Get())
             paint(object, out / name(object, "_before.png"));
 
+#if defined(CRUMPLE_REPLAY_PROPS)
+    // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
+    // recorded; each one's boundary is written as it ended, cracks and all. They read the recording only and
+    // share nothing with the objects' replay: with --threads above 1 they replay on a thread of their own
+    // beside it (the same bits, sooner), else after it.
+    std::future<tools::PropsReplayOutcome> props_beside;
+    double props_started_ms = 0.0; // after replay_start, where they replay beside the objects
+    if (threads > 1 && !replay.Get().mExtensions.empty())
+    {
+        props_started_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start)
+                .count();
+        props_beside =
+            std::async(std::launch::async,
+                       [&] { return tools::ReplayAndWriteProps(replay.Get(), out, meshes, threads - 1); });
+    }
+#endif
+
     std::size_t frame = 0;
     const Status applied = ApplyReplayedCollisions(
         replay.Get(), objects.Get(),
@@ -222,7 +236,9 @@ int main(int argc, char** argv)
         return 2;
     }
     double props_ms = 0.0;     // replaying the props (their FEM steps), when the recording has any
-    double props_cpu_ms = 0.0; // the same in this thread's CPU time (workers' time not counted)
+    double props_cpu_ms = 0.0; // the same in the CPU time of the thread that ran them (workers' not counted)
+    bool beside = false;       // they replayed on a thread of their own beside the objects
+    double props_end_ms = 0.0; // wall time from the start until objects and props were both replayed
     for (const ReplayedObject& object : objects.Get())
     {
         const ffd::FfdDeformer& deformer = object.mDeformable.GetDeformer();
@@ -246,55 +262,21 @@ int main(int argc, char** argv)
                     meshes ? path.string().c_str() : "(no mesh written)");
     }
 #if defined(CRUMPLE_REPLAY_PROPS)
-    // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
-    // recorded; each one's boundary is written as it ended, cracks and all.
-    const auto props_start = std::chrono::steady_clock::now();
-    const double props_cpu_start = common::ThreadCpuMs();
-    // intent: a GPU prop replays on a device of its own (the context is made only if a GPU prop asks)
-#if defined(CRUMPLE_REPLAY_GPU)
-    gpu::ComputeDeviceProvider devices;
-    gpu::ComputeDeviceProvider* const device_provider = &devices;
-#else
-    gpu::ComputeDeviceProvider* const device_provider = nullptr;
-#endif
-    // intent: workers only where asked (a replay on one thread makes none)
-    std::optional<common::ThreadJobSystem> jobs;
-    if (threads > 1)
-        jobs.emplace(threads);
-    Result<std::vector<props::ReplayedProp>> replayed_props =
-        props::ReplayProps(replay.Get(), device_provider, jobs ? &jobs->Get() : nullptr);
-    props_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - props_start).count();
-    props_cpu_ms = common::ThreadCpuMs() - props_cpu_start;
-    if (!replayed_props)
+    beside = props_beside.valid();
+    const tools::PropsReplayOutcome props_outcome =
+        beside ? props_beside.get() : tools::ReplayAndWriteProps(replay.Get(), out, meshes, threads);
+    if (!props_outcome.mError.empty())
     {
-        std::fprintf(stderr, "crumple-replay: %s\n", replayed_props.GetError().mMessage.c_str());
+        std::fprintf(stderr, "crumple-replay: %s\n", props_outcome.mError.c_str());
         return 2;
     }
-    for (std::size_t index = 0; index < replayed_props.Get().size(); ++index)
-    {
-        const props::ReplayedProp& prop = replayed_props.Get()[index];
-        if (prop.mRecordedBackend != prop.mProp.GetBackend())
-            std::printf("prop %zu ran on the %s live and replays on the %s (%s): close, not bitwise\n", index,
-                        props::ToString(prop.mRecordedBackend), props::ToString(prop.mProp.GetBackend()),
-                        prop.mProp.GetFallbackReason().c_str());
-        std::vector<Vec3> positions;
-        prop.mProp.ReadPositions(positions);
-        const common::TetSurface surface = common::MakeTetSurface(positions, prop.mProp.GetElementNodes());
-        const std::filesystem::path path = out / ("prop" + std::to_string(index) + ".obj");
-        if (Status written = meshes ? common::WriteObj(path, positions, surface.mNormals, surface.mTriangles) : Status::Ok();
-            !written)
-        {
-            std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
-            return 2;
-        }
-        std::printf(
-            "prop %zu (body %u, %s%s): %d nodes, %d links broken, %zu pieces, position hash %016llx -> %s\n",
-            index, prop.mBody.mValue, props::ToString(prop.mProp.GetBackend()),
-            prop.mRemoved ? ", removed live: as it was then" : "", prop.mProp.GetNodeCount(),
-            prop.mProp.GetBrokenLinkCount(), prop.mProp.ComputeFragments().size(),
-            static_cast<unsigned long long>(common::HashPositions(positions)),
-            meshes ? path.string().c_str() : "(no mesh written)");
-    }
+    for (const std::string& line : props_outcome.mLines)
+        std::printf("%s\n", line.c_str());
+    // intent: a recording without props prints no props line
+    props_ms = props_outcome.mLines.empty() ? 0.0 : props_outcome.mWallMs;
+    props_cpu_ms = props_outcome.mCpuMs;
+    // intent: beside the objects, both were done when the later one was (writing excluded, as above)
+    props_end_ms = beside ? std::max(replay_ms, props_started_ms + props_ms) : replay_ms + props_ms;
 #endif
     // Against the recording's own clock: it runs at least until its last collision closed.
     const auto& collisions = replay.Get().mCollisions;
@@ -319,8 +301,9 @@ int main(int argc, char** argv)
                 collisions.size(), replay_ms, replay_cpu_ms, build_ms, recorded_s, speed(replay_ms).c_str());
     if (props_ms > 0.0)
         std::printf(
-            "replayed the props in %.2f ms more (%.2f ms of this thread's CPU; their FEM steps again); "
-            "with them %s\n",
-            props_ms, props_cpu_ms, speed(replay_ms + props_ms).c_str());
+            "replayed the props in %.2f ms %s (%.2f ms of %s CPU; their FEM steps again); with them %.2f "
+            "ms in all: %s\n",
+            props_ms, beside ? "on a thread of their own beside the objects" : "more", props_cpu_ms,
+            beside ? "that thread's" : "this thread's", props_end_ms, speed(props_end_ms).c_str());
     return 0;
 }
