@@ -71,6 +71,10 @@ BulletWallCrash::BulletWallCrash(const EngineCrashSettings& inSettings)
         add_static(std::make_unique<btBoxShape>(btVector3(200, 200, 1)), btVector3(0, 0, -1),
                    friction > 0 ? btScalar(inSettings.mGroundFriction) / friction : btScalar(0));
         mSolver->SetGround(mObjects.back().get());
+        // intent: the ground is quiet, as the props' loose pieces are: pieces on it make no collisions
+        // (DamageWorld::SetQuiet); the cars' contacts with it are solved as before
+        if (mAdapter != nullptr)
+            (void)mDamage.SetQuiet(mWallBody, true); // the ground's body, just added
     }
     if (inSettings.mTargetVehicle)
     {

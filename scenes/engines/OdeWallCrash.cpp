@@ -42,7 +42,13 @@ OdeWallCrash::OdeWallCrash(const EngineCrashSettings& inSettings)
     }
 
     if (!inSettings.mFloating)
+    {
         dCreatePlane(mSpace, 0, 0, 1, 0);
+        // intent: the ground (the adapter's environment) is quiet, as the props' loose pieces are: pieces on
+        // it make no collisions (DamageWorld::SetQuiet); the cars' contacts with it are solved as before
+        if (mAdapter != nullptr)
+            (void)mDamage.SetQuiet(mAdapter->GetEnvironment(), true);
+    }
     if (inSettings.mTargetVehicle)
     {
         // A second car, a dynamic box on the ground.
