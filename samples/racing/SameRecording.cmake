@@ -5,14 +5,17 @@
 # recording, 4.7 s did not reach it) with dents on the game's thread and again with deferred dents on a 2-thread job
 # system: the recordings and the deformed meshes (the cars, the brick wall and the fence the car breaks) must
 # be byte-identical. Then the inline recording is replayed with no engine: the car and the props again, on
-# one thread and with the props' element passes on two.
+# one thread, on two (the props beside the cars) and on three (their element passes on two of them).
 # Then the props' FEM off the game's thread (--props-off-thread, landing a step later: another run), with the
 # tasks inline and on 2 threads: byte-identical again, and replayed. Then the impulses on the dents' task too
 # (--defer-impulses: the props hear of a hit a step later still, another run), inline and on 2 threads:
 # byte-identical, and replayed.
 
 # intent: every output made afresh (a file left by an earlier run would pass for one this run did not write)
-file(REMOVE_RECURSE ${OUT})
+if(NOT OUT)
+    message(FATAL_ERROR "SameRecording.cmake needs -DOUT=<dir>")
+endif()
+file(REMOVE_RECURSE "${OUT}")
 
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_QUIET)
@@ -46,7 +49,7 @@ foreach(file race.crumple car.obj parked.obj fence.obj brick_wall.obj)
 endforeach()
 expect_replayed(inline replayed "")
 # With --threads 2 (the props replayed on a thread of their own beside the cars) and 3 (their element passes
-# on 2 workers too, though these props, 4,000 and 420 tetrahedra, are too small to split them: test_props
+# on two threads, though these props, 4,000 and 420 tetrahedra, are too small to split them: test_props
 # replays a 4,500-tetrahedron panel that does) the same bytes again.
 expect_replayed(inline replayed_2_threads " (replayed on 2 threads)" --threads 2)
 expect_replayed(inline replayed_3_threads " (replayed on 3 threads)" --threads 3)

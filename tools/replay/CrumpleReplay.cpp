@@ -12,6 +12,7 @@
 #include <crumple/plugin/ReplayDamage.h>
 #if defined(CRUMPLE_REPLAY_PROPS)
 #include "PropsReplay.h"
+#include "TetSurface.h"
 #endif
 
 #include <algorithm>
@@ -22,8 +23,8 @@
 #include <functional>
 #include <future>
 #include <map>
-#include <optional>
 #include <string>
+#include <system_error>
 
 #if defined(CRUMPLE_REPLAY_PICTURES)
 #include "ScenePainter.h"
@@ -38,8 +39,9 @@ int main(int argc, char** argv)
     bool pictures = false;
     bool meshes = true;
     double colour_max = 0.0; // 0: per object, its deepest dent rounded up (samples::DentColorScale)
-    [[maybe_unused]] int threads =
-        1; // the props' element passes (ReplayProps' job system; unused without props)
+    // intent: threads in all: above 1 the props replay beside the objects, their element passes on the rest
+    // (unused without props)
+    [[maybe_unused]] int threads = 1;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -56,9 +58,9 @@ int main(int argc, char** argv)
                 "              DIR/frames/object<ID>_NNNN.png after each collision that dents it\n"
                 "  --colour-max M  the dent colour scale's top (m; default: each object's deepest dent at\n"
                 "              the end, rounded up to 1, 2, 2.5 or 5 x 10^k, as crumple-crash does)\n"
-                "  --threads N  the props' FEM element passes on N threads (1-256, default 1), and above 1\n"
-                "              the props replayed on a thread of their own beside the objects: the same\n"
-                "              results bit for bit, sooner on a machine with the cores\n");
+                "  --threads N  threads in all (1-256, default 1): above 1 the props replay on a thread of\n"
+                "              their own beside the objects, their FEM element passes on N - 1 threads: the\n"
+                "              same results bit for bit, sooner on a machine with the cores\n");
             return 0;
         }
         if (arg == "--version")
@@ -195,19 +197,27 @@ int main(int argc, char** argv)
 
 #if defined(CRUMPLE_REPLAY_PROPS)
     // Destructible props (crumple::props records them beside the collisions): rebuilt, hit and stepped as
-    // recorded; each one's boundary is written as it ended, cracks and all. They read the recording only and
-    // share nothing with the objects' replay: with --threads above 1 they replay on a thread of their own
-    // beside it (the same bits, sooner), else after it.
+    // recorded; each one's boundary is written as it ended, cracks and all (here, after the objects). They
+    // read the recording only and share nothing with the objects' replay: with --threads above 1 they replay
+    // on a thread of their own beside it, their element passes on the other threads (the same bits, sooner),
+    // else after it.
+    const bool has_props = !replay.Get().mExtensions.empty();
     std::future<tools::PropsReplayOutcome> props_beside;
     double props_started_ms = 0.0; // after replay_start, where they replay beside the objects
-    if (threads > 1 && !replay.Get().mExtensions.empty())
+    if (threads > 1 && has_props)
     {
         props_started_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - replay_start)
                 .count();
-        props_beside =
-            std::async(std::launch::async,
-                       [&] { return tools::ReplayAndWriteProps(replay.Get(), out, meshes, threads - 1); });
+        try
+        {
+            props_beside = std::async(std::launch::async,
+                                      [&] { return tools::ReplayPropsOf(replay.Get(), threads - 1); });
+        }
+        catch (const std::system_error&)
+        {
+            props_started_ms = 0.0; // no thread to be had: they replay after the objects
+        }
     }
 #endif
 
@@ -264,16 +274,33 @@ int main(int argc, char** argv)
 #if defined(CRUMPLE_REPLAY_PROPS)
     beside = props_beside.valid();
     const tools::PropsReplayOutcome props_outcome =
-        beside ? props_beside.get() : tools::ReplayAndWriteProps(replay.Get(), out, meshes, threads);
+        beside ? props_beside.get() : tools::ReplayPropsOf(replay.Get(), has_props ? threads : 1);
     if (!props_outcome.mError.empty())
     {
         std::fprintf(stderr, "crumple-replay: %s\n", props_outcome.mError.c_str());
         return 2;
     }
-    for (const std::string& line : props_outcome.mLines)
-        std::printf("%s\n", line.c_str());
+    for (std::size_t index = 0; index < props_outcome.mProps.size(); ++index)
+    {
+        const tools::ReplayedPropSummary& prop = props_outcome.mProps[index];
+        if (!prop.mNote.empty())
+            std::printf("%s\n", prop.mNote.c_str());
+        const std::filesystem::path path = out / ("prop" + std::to_string(index) + ".obj");
+        if (meshes)
+        {
+            const common::TetSurface surface = common::MakeTetSurface(prop.mPositions, prop.mElements);
+            if (Status written =
+                    common::WriteObj(path, prop.mPositions, surface.mNormals, surface.mTriangles);
+                !written)
+            {
+                std::fprintf(stderr, "crumple-replay: %s\n", written.GetError().mMessage.c_str());
+                return 2;
+            }
+        }
+        std::printf("%s%s\n", prop.mReport.c_str(), meshes ? path.string().c_str() : "(no mesh written)");
+    }
     // intent: a recording without props prints no props line
-    props_ms = props_outcome.mLines.empty() ? 0.0 : props_outcome.mWallMs;
+    props_ms = props_outcome.mProps.empty() ? 0.0 : props_outcome.mWallMs;
     props_cpu_ms = props_outcome.mCpuMs;
     // intent: beside the objects, both were done when the later one was (writing excluded, as above)
     props_end_ms = beside ? std::max(replay_ms, props_started_ms + props_ms) : replay_ms + props_ms;
