@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -314,17 +315,28 @@ TEST_CASE("HeldPropBodies gives held velocities to held props only (mIsHeld), an
 namespace
 {
 
-// Hard hits on the panel until an Update hands pieces over: that Update's status and pieces.
-std::pair<Status, std::vector<HeldPiece>> HitUntilPieces(common::WorldFixture& ioFixture, PropWorld& ioProps,
-                                                         HeldPropBodies& ioHeld)
+// A weak panel on the fixture's wall, its held bodies kept with inSettings by a counting engine whose piece
+// bodies inCreateBody makes (none given: bodies of the fixture's world), hit hard until an Update hands
+// pieces over: that Update's status and pieces.
+std::pair<Status, std::vector<HeldPiece>>
+PanelPieces(common::WorldFixture& ioFixture, const HeldPropSettings& inSettings,
+            std::function<Result<BodyId>(const ConvexBodySettings&)> inCreateBody = nullptr)
 {
+    std::unique_ptr<PropWorld> props = PropWorld::Create(ioFixture.mWorld).Get();
+    (void)props->AddProp(ioFixture.mWall, test::WeakPanel()).Get();
+    CountingEngine engine(ioFixture.mWorld);
+    HeldPropEngine calls = engine.Calls();
+    calls.mSetHeldMass = nullptr;
+    if (inCreateBody)
+        calls.mCreatePieceBody = std::move(inCreateBody);
+    HeldPropBodies held = HeldPropBodies::Create(*props, calls, inSettings).Get();
     HeldPropUpdate update;
     for (int hit = 0; hit < 12; ++hit)
     {
         Hit(ioFixture, hit);
         for (int step = 0; step < 10; ++step)
         {
-            const Status status = ioHeld.Update(ioProps.Step(1.0 / 120.0).Get(), update);
+            const Status status = held.Update(props->Step(1.0 / 120.0).Get(), update);
             if (!update.mPieces.empty())
                 return {status, update.mPieces};
         }
@@ -341,14 +353,7 @@ TEST_CASE(
 {
     {
         common::WorldFixture fixture;
-        std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-        (void)props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-        CountingEngine engine(fixture.mWorld);
-        HeldPropEngine calls = engine.Calls();
-        calls.mSetHeldMass = nullptr;
-        HeldPropBodies held =
-            HeldPropBodies::Create(*props, calls, {.mMinPieceMass = 0.0, .mQuietPieces = false}).Get();
-        const auto [status, pieces] = HitUntilPieces(fixture, *props, held);
+        const auto [status, pieces] = PanelPieces(fixture, {.mMinPieceMass = 0.0, .mQuietPieces = false});
         REQUIRE(status.IsValid());
         REQUIRE_FALSE(pieces.empty());
         for (const HeldPiece& piece : pieces)
@@ -360,17 +365,11 @@ TEST_CASE(
     {
         // The engine's bodies are numbered past the world's: SetQuiet refuses them.
         common::WorldFixture fixture;
-        std::unique_ptr<PropWorld> props = PropWorld::Create(fixture.mWorld).Get();
-        (void)props->AddProp(fixture.mWall, test::WeakPanel()).Get();
-        CountingEngine engine(fixture.mWorld);
-        HeldPropEngine calls = engine.Calls();
-        calls.mSetHeldMass = nullptr;
         std::uint32_t made = 0;
-        calls.mCreatePieceBody = [&](const ConvexBodySettings&) -> Result<BodyId> {
-            return BodyId{1000 + made++, 0};
-        };
-        HeldPropBodies held = HeldPropBodies::Create(*props, calls, {.mMinPieceMass = 0.0}).Get();
-        const auto [status, pieces] = HitUntilPieces(fixture, *props, held);
+        const auto [status, pieces] = PanelPieces(fixture, {.mMinPieceMass = 0.0},
+                                                  [&](const ConvexBodySettings&) -> Result<BodyId> {
+                                                      return BodyId{1000 + made++, 0};
+                                                  });
         REQUIRE_FALSE(pieces.empty());
         CHECK(status.GetError().mCode == EError::OutOfRange);
         for (const HeldPiece& piece : pieces)
