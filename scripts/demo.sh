@@ -47,8 +47,11 @@ echo; echo "== The Bullet session as a game runs it: its job system on 2 threads
 echo "   the props' FEM off the game's thread (a different run: each lands a step later)"
 "$bin/crumple-racing-bullet" --threads 2 --defer-dents --props-off-thread --no-pictures --out "$out/racing-bullet-jobs" |
     grep -E "^(fence:|brick wall:|props' FEM:|physics frames|wrote)"
-"$replay" "$out/racing-bullet-jobs/race.crumple" --out "$out/racing-bullet-jobs/replay" > /dev/null
+# replayed on 2 threads too: the props beside the cars
+"$replay" "$out/racing-bullet-jobs/race.crumple" --out "$out/racing-bullet-jobs/replay" --threads 2 > /dev/null
 same_mesh "$out/racing-bullet-jobs/car.obj" "$out/racing-bullet-jobs/replay/object0.obj" "threaded session's car"
+same_mesh "$out/racing-bullet-jobs/fence.obj" "$out/racing-bullet-jobs/replay/prop0.obj" "threaded session's fence"
+same_mesh "$out/racing-bullet-jobs/brick_wall.obj" "$out/racing-bullet-jobs/replay/prop1.obj" "threaded session's brick wall"
 
 echo; echo "== Headless replay of the Bullet recording (no physics engine)"
 "$replay" "$out/racing-bullet/race.crumple" --out "$out/replay"
