@@ -116,9 +116,9 @@ Status HeldPropBodies::Update(const PropStepReport& inStepped, HeldPropUpdate& o
             if (Result<plugin::BodyId> body = mEngine.mCreatePieceBody(held.mPiece.mRigidBody.mBody); keep(body.IsValid() ? Status::Ok() : Status(body.GetError())))
             {
                 held.mBody = body.Get();
+                // intent: refused only for a body the engine did not add to the damage world
                 if (mSettings.mQuietPieces)
-                    keep(mProps->GetWorld().SetQuiet(held.mBody,
-                                                     true)); // refused only for a body the engine did not add
+                    keep(mProps->GetWorld().SetQuiet(held.mBody, true));
             }
         outUpdate.mPieces.push_back(std::move(held));
     }
