@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: MIT
 // Fuzz target: a surface mesh file for a destructible prop (LoadSurfaceMesh, through assimp). The first
 // byte picks the file's extension (assimp chooses its reader by it), the rest is the file.
-#include <crumple/fem_import/LoadSurfaceMesh.h>
+#include "ScratchDirectory.h"
 
-#include <unistd.h>
+#include <crumple/fem_import/LoadSurfaceMesh.h>
 
 #include <array>
 #include <cstddef>
@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <system_error>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* inData, std::size_t inSize)
 {
@@ -20,22 +19,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* inData, std::size_t in
         return 0;
     static const std::array<const char*, 6> extensions{".obj", ".ply", ".off", ".stl", ".gltf", ".glb"};
     // intent: a folder of this process, removed when it exits (each corpus run left one behind before)
-    struct ProcessFolder
-    {
-        std::filesystem::path mPath = std::filesystem::temp_directory_path() /
-                                      ("crumple-fuzz-surface-" + std::to_string(static_cast<long>(getpid())));
-        pid_t mOwner = getpid();
-        ProcessFolder() { std::filesystem::create_directories(mPath); }
-        ~ProcessFolder()
-        {
-            std::error_code ignored;
-            if (getpid() == mOwner) // not in a forked child that exits normally
-                std::filesystem::remove_all(mPath, ignored);
-        }
-    };
-    static const ProcessFolder folder;
+    static const std::filesystem::path folder = crumple::common::ScratchDirectory();
     const std::filesystem::path file =
-        folder.mPath / (std::string("input") + extensions[inData[0] % extensions.size()]);
+        folder / (std::string("input") + extensions[inData[0] % extensions.size()]);
     {
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(inData + 1), static_cast<std::streamsize>(inSize - 1));
