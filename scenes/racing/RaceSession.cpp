@@ -41,7 +41,7 @@ std::vector<Transform> RaceCourse::Barriers()
 
 Transform RaceCourse::ParkedCar()
 {
-    return {Mat3::Identity(), Vec3(60.0, 1.0, ParkedHalfExtents().z())};
+    return {Mat3::Identity(), Vec3(60.0, 0.5, ParkedHalfExtents().z())};
 }
 
 fem::TetFenceSettings RaceCourse::FenceSettings()
