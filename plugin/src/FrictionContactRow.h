@@ -74,49 +74,89 @@ struct VelocityChange
 // dissipation: the slip after, c + M t, is then zero or points against t). Inside the disc t = -M^-1 c; on
 // its rim t = -(M + lambda I)^-1 c with lambda > 0 the root of 1/|t(lambda)| = 1/r, found by Newton's method
 // on that nearly linear secular function (More and Sorensen 1983, the trust-region subproblem), in M's
-// eigenbasis. M is positive definite (ContactRow leaves friction out where it is not); its factor and
+// eigenbasis. M is positive definite (ContactRow leaves friction out where it is not); its inverse and
 // eigenbasis are worked out once per contact, as every sweep solves with the same M.
 class LeastEnergyInDisc
 {
   public:
+    // A Newton step of at most this fraction of lambda + d_max is the last one (quadratic convergence: the
+    // next would be below 1e-16 of it).
+    static constexpr double cLastStep = 1.0e-8;
+
     LeastEnergyInDisc() = default;
-    explicit LeastEnergyInDisc(const Eigen::Matrix2d& inResponse) : mFactor(inResponse), mEigen(inResponse) {}
+    explicit LeastEnergyInDisc(const Eigen::Matrix2d& inResponse) : mInverse(inResponse.inverse())
+    {
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(inResponse);
+        mValues = eigen.eigenvalues();
+        mVectors = eigen.eigenvectors();
+    }
 
     Eigen::Vector2d Solve(const Eigen::Vector2d& inSlip, double inRadius) const
     {
         if (!(inRadius > 0.0))
             return Eigen::Vector2d::Zero();
-        const Eigen::Vector2d free = -mFactor.solve(inSlip);
-        if (!(free.norm() > inRadius))
+        const Eigen::Vector2d free = -(mInverse * inSlip);
+        if (!(free.squaredNorm() > inRadius * inRadius))
             return free;
-        const Eigen::Vector2d d = mEigen.eigenvalues();
-        const Eigen::Vector2d c = mEigen.eigenvectors().transpose() * inSlip;
-        // |t(lambda)|^2 = sum c_k^2 / (d_k + lambda)^2; phi(lambda) = 1/|t| - 1/r rises from phi(0) < 0.
-        double lambda = 0.0;
+        const Eigen::Vector2d& d = mValues;
+        const Eigen::Vector2d c = mVectors.transpose() * inSlip;
+        // |t(lambda)|^2 = sum c_k^2 / (d_k + lambda)^2; phi(lambda) = 1/|t| - 1/r is concave and rises from
+        // phi(0) < 0, so Newton's iterates from a point where phi <= 0 rise to the root without passing it.
+        // |t(lambda)| >= |c| / (d_max + lambda) makes |c| / r - d_max such a point: the root itself where M
+        // is a multiple of the identity, and a few iterations short of it otherwise.
+        const double inverse_radius = 1.0 / inRadius;
+        double lambda = std::max(c.norm() * inverse_radius - d.maxCoeff(), 0.0);
         for (int iteration = 0; iteration < 100; ++iteration)
         {
-            const Eigen::Vector2d t = (c.array() / (d.array() + lambda)).matrix();
-            const double norm = t.norm();
-            const double derivative_of_norm =
-                -(c.array().square() / (d.array() + lambda).cube()).sum() / norm;
-            const double phi = 1.0 / norm - 1.0 / inRadius;
-            const double next = lambda - phi / (-derivative_of_norm / (norm * norm));
-            if (!(next > lambda) || next - lambda <= 1.0e-15 * (lambda + d.maxCoeff()))
-            {
-                lambda = std::max(next, lambda);
-                break;
-            }
+            // intent: with u_k = 1/(d_k + lambda): t_k = c_k u_k, |t|' = -sum t_k^2 u_k / |t|, and the Newton
+            // step -phi / phi' = -phi |t|^3 / sum t_k^2 u_k
+            const Eigen::Array2d u = 1.0 / (d.array() + lambda);
+            const Eigen::Array2d t = c.array() * u;
+            const double norm2 = t.square().sum();
+            const double norm = std::sqrt(norm2);
+            const double phi = 1.0 / norm - inverse_radius;
+            const double next = lambda - phi * norm2 * norm / (t.square() * u).sum();
+            if (!(next > lambda))
+                break; // at the root to round-off
+            // intent: a step this small leaves an error of the order of its square, below round-off of
+            // lambda + d_max: taken without another evaluation
+            const bool last = next - lambda <= cLastStep * (lambda + d.maxCoeff());
             lambda = next;
+            if (last)
+                break;
         }
-        Eigen::Vector2d t = -(mEigen.eigenvectors() * (c.array() / (d.array() + lambda)).matrix());
+        Eigen::Vector2d t = -(mVectors * (c.array() / (d.array() + lambda)).matrix());
         // intent: on the rim exactly, whatever the last Newton step left
         t *= inRadius / t.norm();
         return t;
     }
 
   private:
-    Eigen::LDLT<Eigen::Matrix2d> mFactor;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> mEigen;
+    Eigen::Matrix2d mInverse = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d mValues = Eigen::Vector2d::Zero();  // M's eigenvalues, ascending
+    Eigen::Matrix2d mVectors = Eigen::Matrix2d::Zero(); // its eigenvectors, as columns
+};
+
+// The pair's velocity change as one vector, (v_A, w_A, v_B, w_B) (m/s, rad/s): what the sweeps update.
+using PairVector = Eigen::Matrix<double, 12, 1>;
+
+// One axis of a contact (its normal or a tangent) as the sweeps see it: an impulse p along the axis on A (its
+// opposite on B) changes the pair's velocity by p mMoves, and the change of A's-minus-B's velocity at the
+// point along the axis is mSees . change (the 3-vector forms' lever-arm cross products worked out once).
+struct SweepAxis
+{
+    PairVector mSees = PairVector::Zero();
+    PairVector mMoves = PairVector::Zero();
+
+    SweepAxis() = default;
+    SweepAxis(const PairInverseMass& inPair, const LeverArms& inArms, const Vec3& inAxis)
+    {
+        // intent: a . (w x r) = w . (r x a)
+        const Vec3 turn_a = inArms.mA.cross(inAxis), turn_b = inArms.mB.cross(inAxis);
+        mSees << inAxis, turn_a, -inAxis, -turn_b;
+        mMoves << inPair.mMassA * inAxis, inPair.mInertiaA * turn_a, -inPair.mMassB * inAxis,
+            -(inPair.mInertiaB * turn_b);
+    }
 };
 
 // One contact in the joint solve: its normal row and its friction block.
@@ -133,7 +173,20 @@ struct ContactRow
     double mFriction = 0.0;      // mu; zero where friction cannot act
     double mNormalImpulse = 0.0;
     Vec3 mFrictionImpulse = Vec3::Zero();
+    SweepAxis mSweepNormal, mSweepTangent1, mSweepTangent2;           // the sweeps' forms of the three axes
+    Eigen::Vector2d mTangentVelocityBefore = Eigen::Vector2d::Zero(); // mVelocityBefore along the tangents
 };
+
+// The pair's velocity change that inRows' impulses make together, as the sweeps hold it.
+inline PairVector SweepChangeOfRows(const std::vector<ContactRow>& inRows)
+{
+    PairVector change = PairVector::Zero();
+    for (const ContactRow& row : inRows)
+        change += row.mNormalImpulse * row.mSweepNormal.mMoves +
+                  row.mTangent1.dot(row.mFrictionImpulse) * row.mSweepTangent1.mMoves +
+                  row.mTangent2.dot(row.mFrictionImpulse) * row.mSweepTangent2.mMoves;
+    return change;
+}
 
 // The velocity change that inRows' impulses make together.
 inline VelocityChange ChangeOfRows(const PairInverseMass& inPair, const std::vector<ContactRow>& inRows)
