@@ -118,8 +118,10 @@ class LeastEnergyInDisc
             const double next = lambda - phi * norm2 * norm / (t.square() * u).sum();
             if (!(next > lambda))
                 break; // at the root to round-off
-            // intent: a step this small leaves an error of the order of its square, below round-off of
-            // lambda + d_max: taken without another evaluation
+            // intent: a step this small leaves an error of the order of its square (Newton converges
+            // quadratically here), far below what the rim's direction can show: taken without another
+            // evaluation (FrictionSweepTest: the slip left against t to 1e-12 of its terms, M up to 1e6
+            // anisotropic)
             const bool last = next - lambda <= cLastStep * (lambda + d.maxCoeff());
             lambda = next;
             if (last)
