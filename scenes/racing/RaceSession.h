@@ -38,8 +38,8 @@ struct RaceCourse
     static std::vector<Transform> Barriers();                   ///< Their poses
     static Vec3 ParkedHalfExtents() { return {2.1, 0.9, 0.7}; }   ///< The parked car's box
     /// Its pose, resting on the ground: 0.5 m left of the course line, so that the racing car (2.0 m wide)
-    /// meets 1.4 m of its 1.8 m wide end on the line, and still meets it 1.4 m right or 2.4 m left of the
-    /// line. The fence's pieces knock the car off the line by a chaotic amount: at 1.0 m left (before
+    /// meets 1.4 m of its 1.8 m wide end on the line, and still meets it up to 1.4 m right or 2.4 m left of
+    /// the line. The fence's pieces knock the car off the line by a chaotic amount: at 1.0 m left (before
     /// 2026-12-08) a change of rounding in the friction solve sent Bullet's default session 1.0 m right, past
     /// it.
     static Transform ParkedCar();
