@@ -159,8 +159,10 @@ TEST_CASE("A contact axis in the sweeps' 12-vector form sees and moves what the 
     for (int trial = 0; trial < 200; ++trial)
     {
         BodyState a, b;
-        a.mMotionType = EMotionType::Dynamic;
-        b.mMotionType = trial % 4 == 0 ? EMotionType::Static : EMotionType::Dynamic;
+        // intent: B static or kinematic in some pairs, A kinematic in others (zero inverse mass and inertia)
+        a.mMotionType = trial % 4 == 2 ? EMotionType::Kinematic : EMotionType::Dynamic;
+        b.mMotionType = trial % 4 == 0 ? EMotionType::Static
+                                       : (trial % 8 == 1 ? EMotionType::Kinematic : EMotionType::Dynamic);
         a.mMass = mass(random);
         b.mMass = mass(random);
         a.mInverseInertiaWorld = random_inertia();
@@ -186,5 +188,9 @@ TEST_CASE("A contact axis in the sweeps' 12-vector form sees and moves what the 
               1.0e-13 * as_pair_vector(other).norm() * (1.0 + 2.0 * 3.0 * std::sqrt(3.0)));
         if (b.mMotionType == EMotionType::Static)
             CHECK(sweep.mMoves.tail<6>().isZero(0.0));
+        if (b.mMotionType == EMotionType::Kinematic)
+            CHECK(sweep.mMoves.tail<6>().isZero(0.0));
+        if (a.mMotionType == EMotionType::Kinematic)
+            CHECK(sweep.mMoves.head<6>().isZero(0.0));
     }
 }
